@@ -1,0 +1,54 @@
+#pragma once
+/// @file BasisCache.h
+/// What a precompute produces and the runtime reads (DESIGN §5 "Cache file"): the grid, the
+/// degrees of freedom with their Hodge stars, and the eigenbases. Plain values, no solver types.
+
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "precompute/scene/SceneSpec.h"
+
+namespace modeflow {
+
+struct BasisCache {
+    /// Canonical text of every input that shapes the basis; its hash names the file.
+    std::string key;
+    GridSpec grid;
+    WallKind wall = WallKind::FreeSlip;
+    BoundaryTreatment boundary = BoundaryTreatment::CutCell;
+
+    std::vector<double> cellFraction;  ///< every grid cell's fraction inside Ω (x fastest)
+
+    /// Velocity degrees of freedom: faces (CubicalComplex numbering) and their ⋆(n-1).
+    std::vector<std::int64_t> faces;
+    Eigen::VectorXd faceStar;
+    /// Cells carrying divergence, and their ⋆n.
+    std::vector<std::int64_t> cells;
+    Eigen::VectorXd cellStar;
+
+    struct Velocity {
+        Eigen::VectorXd eigenvalues;   ///< κ², ascending within each range
+        Eigen::MatrixXd modes;         ///< faces × count, ⋆(n-1)-orthonormal fluxes
+        std::vector<int> modeNumbers;  ///< 1-based index in the div-free spectrum
+        int harmonic = 0;
+        double penalty = 0.0;          ///< grad-div penalty used by the solve
+    } velocity;
+
+    struct Scalar {
+        ScalarBoundary boundary = ScalarBoundary::Neumann;
+        std::vector<std::int64_t> cells;  ///< scalar DOFs (Dirichlet: cells with centre inside)
+        Eigen::VectorXd cellStar;
+        Eigen::VectorXd eigenvalues;      ///< μ², ascending
+        Eigen::MatrixXd modes;            ///< cells × count, ⋆n-orthonormal
+        int omittedConstants = 0;
+    } scalar;
+
+    /// Stage name → seconds, in pipeline order.
+    std::vector<std::pair<std::string, double>> timings;
+};
+
+}  // namespace modeflow

@@ -1,0 +1,33 @@
+#pragma once
+/// @file CacheFile.h
+/// The cache file: little-endian binary, versioned, checksummed, written atomically.
+///
+/// Layout: magic "MODEFLOW-BASIS\0\0" (16 bytes) | u32 format version | u32 reserved |
+/// u64 key hash | u64 payload size | payload | u64 FNV-1a checksum of the payload.
+/// A file with another magic, version, size or checksum is refused, never misread.
+
+#include <cstdint>
+#include <filesystem>
+#include <string_view>
+
+#include "engine/format/BasisCache.h"
+
+namespace modeflow {
+
+inline constexpr std::uint32_t kCacheFormatVersion = 1;
+
+/// 64-bit FNV-1a; stable across platforms and runs (it names cache files).
+std::uint64_t fnv1a64(std::string_view bytes, std::uint64_t seed = 0xcbf29ce484222325ull);
+
+/// Writes to a temporary file beside `path`, flushes it, then renames it over `path`, so
+/// readers see the old file or the whole new one.
+/// @throw Error naming the path when it cannot be written.
+void writeCache(const std::filesystem::path& path, const BasisCache& cache);
+
+/// @throw Error saying why the file cannot be used (missing, truncated, corrupt, other version).
+BasisCache readCache(const std::filesystem::path& path);
+
+/// Reads only the header's key hash; @throw Error like readCache for a damaged header.
+std::uint64_t readCacheKeyHash(const std::filesystem::path& path);
+
+}  // namespace modeflow

@@ -1,0 +1,200 @@
+#include "precompute/Precompute.h"
+
+#include <fstream>
+#include <iomanip>
+#include <sstream>
+
+#include <unistd.h>
+
+#include "engine/format/CacheFile.h"
+#include "engine/format/Error.h"
+#include "precompute/dec/CubicalComplex.h"
+#include "precompute/dec/CutCellDec.h"
+#include "precompute/dec/CutCellMeasures.h"
+#include "precompute/dec/DirichletScalarDec.h"
+#include "precompute/geometry/Domain.h"
+#include "precompute/solve/SpectralBasis.h"
+
+namespace modeflow {
+namespace {
+
+/// Bumped whenever the numerics change what a cache holds for the same inputs.
+constexpr const char* kAlgorithmVersion = "cut-cell-dec/1";
+
+std::string fileDigest(const std::filesystem::path& file, const std::string& key) {
+    std::ifstream in(file, std::ios::binary);
+    if (!in) throw Error(key + ": cannot read mesh file " + file.string());
+    const std::string bytes((std::istreambuf_iterator<char>(in)), {});
+    std::ostringstream s;
+    s << std::hex << std::setw(16) << std::setfill('0') << fnv1a64(bytes) << ":" << bytes.size();
+    return s.str();
+}
+
+void writeVec(std::ostream& s, const Vec3& v, int dim) {
+    s << "[";
+    for (int a = 0; a < dim; ++a) s << (a ? "," : "") << v[a];
+    s << "]";
+}
+
+double domainMeasure(const CutCellDec& dec) {
+    double m = 0.0;
+    for (Eigen::Index i = 0; i < dec.cellStar.size(); ++i) m += 1.0 / dec.cellStar[i];
+    return m;
+}
+
+}  // namespace
+
+std::string basisKey(const SceneSpec& scene) {
+    std::ostringstream s;
+    s << std::setprecision(17);
+    const GridSpec& g = scene.grid;
+    s << "format=" << kCacheFormatVersion << " algorithm=" << kAlgorithmVersion << "\n";
+    s << "grid dim=" << g.dim << " resolution=[";
+    for (int a = 0; a < g.dim; ++a) s << (a ? "," : "") << g.resolution[a];
+    s << "] min=";
+    writeVec(s, g.boundsMin, g.dim);
+    s << " max=";
+    writeVec(s, g.boundsMax, g.dim);
+    s << "\n";
+    int index = 0;
+    for (const ShapeSpec& d : scene.domain) {
+        ++index;
+        s << "domain kind=" << int(d.kind) << " op=" << int(d.op) << " center=";
+        writeVec(s, d.center, g.dim);
+        s << " radius=" << d.radius << " radii=";
+        writeVec(s, d.radii, g.dim);
+        s << " min=";
+        writeVec(s, d.min, g.dim);
+        s << " max=";
+        writeVec(s, d.max, g.dim);
+        s << " half_height=" << d.halfHeight << " major=" << d.majorRadius
+          << " minor=" << d.minorRadius;
+        if (d.kind == ShapeKind::Mesh)
+            s << " mesh=" << fileDigest(d.meshFile, "[[domain]] #" + std::to_string(index) + " (mesh).file");
+        s << "\n";
+    }
+    const BasisSpec& b = scene.basis;
+    s << "basis modes=";
+    for (const ModeRange& r : b.velocityModes) s << r.first << "-" << r.last << ",";
+    s << " scalar=" << b.scalarModes << " scalar_boundary=" << int(b.scalarBoundary)
+      << " wall=" << int(b.wall) << " boundary=" << int(b.boundary)
+      << " subsamples=" << b.subsamples << "\n";
+    return s.str();
+}
+
+std::filesystem::path cachePath(const SceneSpec& scene, const std::filesystem::path& cacheDir) {
+    std::ostringstream name;
+    name << std::hex << std::setw(16) << std::setfill('0') << fnv1a64(basisKey(scene)) << ".mfbasis";
+    return cacheDir / name.str();
+}
+
+BasisCache computeBasis(const SceneSpec& scene, Progress& progress) {
+    BasisCache cache;
+    cache.key = basisKey(scene);
+    cache.grid = scene.grid;
+    cache.wall = scene.basis.wall;
+    cache.boundary = scene.basis.boundary;
+    const GridSpec& grid = scene.grid;
+    const int n = grid.dim;
+
+    progress.begin("domain and cut-cell measures");
+    double hMin = grid.spacing(0);
+    for (int a = 1; a < n; ++a) hMin = std::min(hMin, grid.spacing(a));
+    const Domain domain(scene.domain, n, 0.5 * hMin);
+    const CubicalComplex complex(grid);
+    const CutCellMeasures measures =
+        measureCutCells(complex, domain, scene.basis.boundary, scene.basis.subsamples);
+    cache.timings.emplace_back("measures", progress.end());
+
+    progress.begin("operators");
+    const CutCellDec dec = buildCutCellDec(complex, measures, scene.basis.wall);
+    if (dec.cells.size() == 0)
+        throw Error("[[domain]]: no part of the domain lies inside the grid box; check the "
+                    "shapes against [grid].bounds_min/bounds_max");
+    if (dec.faces.size() == 0)
+        throw Error("[[domain]]: the domain is thinner than one grid cell everywhere; refine "
+                    "[grid].resolution");
+    cache.cellFraction = measures.fraction[n];
+    cache.faces = dec.faces.toGlobal;
+    cache.faceStar = dec.faceStar;
+    cache.cells = dec.cells.toGlobal;
+    cache.cellStar = dec.cellStar;
+    cache.timings.emplace_back("operators", progress.end());
+
+    auto counter = [&progress](long ops) { progress.update(std::to_string(ops) + " solves"); };
+
+    // Scalars first: the first Neumann eigenvalue sets the velocity solve's grad-div penalty.
+    progress.begin("scalar eigensolve");
+    const BasisSpec& basis = scene.basis;
+    cache.scalar.boundary = basis.scalarBoundary;
+    const bool neumannBasis = basis.scalarBoundary == ScalarBoundary::Neumann;
+    const ScalarBasisResult firstNeumann =
+        solveNeumannScalarBasis(dec, neumannBasis ? std::max(1, basis.scalarModes) : 1, counter);
+    ScalarBasisResult scalar;
+    if (neumannBasis) {
+        scalar = firstNeumann;
+        cache.scalar.cells = dec.cells.toGlobal;
+        cache.scalar.cellStar = dec.cellStar;
+    } else if (basis.scalarModes > 0) {
+        const DirichletScalarDec ddec = buildDirichletScalarDec(complex, domain, basis.boundary);
+        scalar = solveDirichletScalarBasis(ddec, basis.scalarModes, counter);
+        cache.scalar.cells = ddec.cells.toGlobal;
+        cache.scalar.cellStar = ddec.cellStar;
+    }
+    const int keep = basis.scalarModes;
+    cache.scalar.eigenvalues = scalar.eigenvalues.head(std::min<Eigen::Index>(keep, scalar.eigenvalues.size()));
+    cache.scalar.modes = scalar.modes.leftCols(cache.scalar.eigenvalues.size());
+    cache.scalar.omittedConstants = scalar.omittedConstants;
+    cache.timings.emplace_back("scalar_eigensolve", progress.end());
+
+    progress.begin("velocity eigensolve");
+    const VelocityBasisResult velocity = solveVelocityBasis(
+        dec, basis.velocityModes, firstNeumann.eigenvalues[0], domainMeasure(dec), counter);
+    cache.velocity.eigenvalues = velocity.eigenvalues;
+    cache.velocity.modes = velocity.modes;
+    cache.velocity.modeNumbers = velocity.modeNumbers;
+    cache.velocity.harmonic = velocity.harmonicCount;
+    cache.velocity.penalty = velocity.penalty;
+    cache.timings.emplace_back("velocity_eigensolve", progress.end());
+    return cache;
+}
+
+CacheOutcome ensureCache(const SceneSpec& scene, const std::filesystem::path& cacheDir, bool force,
+                         Progress& progress) {
+    std::error_code ec;
+    std::filesystem::create_directories(cacheDir, ec);
+    if (ec || !std::filesystem::is_directory(cacheDir))
+        throw Error("cache directory " + cacheDir.string() + " cannot be created: " +
+                    (ec ? ec.message() : "a file is in the way"));
+    {
+        // Probe for write permission now rather than after minutes of solving.
+        const auto probe = cacheDir / (".write-probe-" + std::to_string(::getpid()));
+        std::ofstream out(probe);
+        if (!out)
+            throw Error("cache directory " + cacheDir.string() +
+                        " is not writable; choose another with --cache-dir or MODEFLOW_CACHE_DIR");
+        out.close();
+        std::filesystem::remove(probe, ec);
+    }
+
+    CacheOutcome outcome{cachePath(scene, cacheDir), false};
+    const std::string key = basisKey(scene);
+    if (!force && std::filesystem::exists(outcome.path)) {
+        try {
+            if (readCache(outcome.path).key == key) {
+                outcome.reused = true;
+                return outcome;
+            }
+            progress.note("cache " + outcome.path.string() + " belongs to other inputs; rebuilding");
+        } catch (const Error& e) {
+            progress.note(std::string(e.what()) + "; rebuilding");
+        }
+    }
+    BasisCache cache = computeBasis(scene, progress);
+    progress.begin("write cache");
+    writeCache(outcome.path, cache);
+    progress.end();
+    return outcome;
+}
+
+}  // namespace modeflow

@@ -1,0 +1,37 @@
+#pragma once
+/// @file Precompute.h
+/// Scene → cut-cell DEC → eigenbases → cache file (DESIGN §1). The only entry point the
+/// command line needs; every stage below it is a separate module.
+
+#include <filesystem>
+#include <string>
+
+#include "engine/format/BasisCache.h"
+#include "precompute/Progress.h"
+#include "precompute/scene/SceneSpec.h"
+
+namespace modeflow {
+
+/// Canonical text of everything that shapes the basis: grid, domain (mesh files by content),
+/// basis settings, cache format and algorithm versions. Equal keys ⇔ interchangeable caches.
+/// @throw Error when a mesh file cannot be read.
+std::string basisKey(const SceneSpec& scene);
+
+/// `DIR/<16 hex digits of the key's hash>.mfbasis`.
+std::filesystem::path cachePath(const SceneSpec& scene, const std::filesystem::path& cacheDir);
+
+/// Runs the whole pipeline in memory. @throw Error naming the scene key or stage that failed.
+BasisCache computeBasis(const SceneSpec& scene, Progress& progress);
+
+struct CacheOutcome {
+    std::filesystem::path path;
+    bool reused = false;  ///< a valid cache with the same key was already there
+};
+
+/// Returns the scene's cache, computing and writing it on a miss, or always when `force`.
+/// The cache folder is created and checked for writing before any work starts. A damaged or
+/// stale file under the scene's name is reported on the progress stream and rebuilt.
+CacheOutcome ensureCache(const SceneSpec& scene, const std::filesystem::path& cacheDir, bool force,
+                         Progress& progress);
+
+}  // namespace modeflow

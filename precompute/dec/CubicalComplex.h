@@ -1,0 +1,63 @@
+#pragma once
+/// @file CubicalComplex.h
+/// The cubical cell complex of a regular grid in 2 or 3 dimensions (DESIGN §2).
+///
+/// A k-cell is identified by the set of axes it extends along (a bit mask with k bits) and the
+/// integer position of its lower corner. Along an axis in the mask there are n_a positions, along
+/// any other axis n_a + 1. Cells of one dimension are numbered type by type; faces ((n-1)-cells)
+/// are ordered by their normal axis, so face type `a` has normal `a`.
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include <Eigen/SparseCore>
+
+#include "precompute/scene/SceneSpec.h"
+
+namespace modeflow {
+
+using Index3 = std::array<int, 3>;
+using SparseMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor, std::int64_t>;
+
+/// One element of the complex: its axis mask and lower-corner position.
+struct Element {
+    unsigned axes = 0;
+    Index3 pos{0, 0, 0};
+};
+
+class CubicalComplex {
+public:
+    explicit CubicalComplex(const GridSpec& grid);
+
+    const GridSpec& grid() const { return mGrid; }
+    int dim() const { return mGrid.dim; }
+
+    /// Axis masks of the k-cells, in numbering order. For k = n-1 entry a is the face normal a.
+    const std::vector<unsigned>& types(int k) const { return mTypes[k]; }
+    /// Positions per axis for a type (1 along unused axes in 2D).
+    Index3 extent(unsigned axes) const;
+    std::int64_t countOfType(unsigned axes) const;
+    std::int64_t count(int k) const { return mCounts[k]; }
+
+    /// Global number of an element among the k-cells (k = popcount of its mask).
+    std::int64_t index(const Element& e) const;
+    Element element(int k, std::int64_t index) const;
+
+    /// True when the element lies in the grid box's boundary (it is then on a wall).
+    bool onBoxBoundary(const Element& e) const;
+
+    /// Signed incidence d_k from k-cells to (k+1)-cells, d_{k+1} d_k = 0. Faces are oriented so a
+    /// positive value is a flux along +normal: (d_{n-1} Ψ)_cell = Σ outflow through its faces.
+    SparseMatrix incidence(int k) const;
+
+private:
+    GridSpec mGrid;
+    std::array<std::vector<unsigned>, 4> mTypes;
+    std::array<std::int64_t, 4> mCounts{};
+    std::array<std::int64_t, 8> mTypeOffset{};  ///< by mask
+};
+
+inline int popcount(unsigned m) { return __builtin_popcount(m); }
+
+}  // namespace modeflow

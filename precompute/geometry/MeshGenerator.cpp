@@ -1,0 +1,134 @@
+/// @file MeshGenerator.cpp
+#include "precompute/geometry/MeshGenerator.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <fstream>
+#include <map>
+#include <numbers>
+#include <random>
+#include <utility>
+
+#include "engine/format/Error.h"
+
+namespace modeflow {
+namespace {
+
+Vec3 normalized(const Vec3& v) {
+    const double n = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    return {v[0] / n, v[1] / n, v[2] / n};
+}
+
+/// Uniform in [lo, hi) straight from the engine's bits: std::uniform_real_distribution is not
+/// specified exactly, and the shipped blob must not depend on the standard library.
+double uniform(std::mt19937& rng, double lo, double hi) {
+    return lo + (hi - lo) * (static_cast<double>(rng()) / 4294967296.0);
+}
+
+}  // namespace
+
+TriangleMesh makeIcosphere(int subdivisions, double radius, const Vec3& center) {
+    if (subdivisions < 0 || subdivisions > 8)
+        throw Error("icosphere: subdivisions must be in 0..8 (got " +
+                    std::to_string(subdivisions) + ")");
+    const double t = (1.0 + std::sqrt(5.0)) / 2.0;
+    std::vector<Vec3> dirs = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0},
+                              {0, -1, t}, {0, 1, t}, {0, -1, -t}, {0, 1, -t},
+                              {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
+    for (auto& d : dirs) d = normalized(d);
+    std::vector<std::array<int, 3>> tris = {
+        {0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
+        {11, 10, 2}, {10, 7, 6}, {7, 1, 8},  {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
+        {3, 8, 9},  {4, 9, 5},  {2, 4, 11}, {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
+
+    for (int level = 0; level < subdivisions; ++level) {
+        // Shared edges must share their midpoint, or the mesh would not be closed.
+        std::map<std::pair<int, int>, int> midpoints;
+        auto midpoint = [&](int a, int b) {
+            const std::pair<int, int> key{std::min(a, b), std::max(a, b)};
+            const auto it = midpoints.find(key);
+            if (it != midpoints.end()) return it->second;
+            const Vec3& p = dirs[a];
+            const Vec3& q = dirs[b];
+            dirs.push_back(normalized({p[0] + q[0], p[1] + q[1], p[2] + q[2]}));
+            const int index = static_cast<int>(dirs.size()) - 1;
+            midpoints.emplace(key, index);
+            return index;
+        };
+        std::vector<std::array<int, 3>> finer;
+        finer.reserve(tris.size() * 4);
+        for (const auto& [a, b, c] : tris) {
+            const int ab = midpoint(a, b);
+            const int bc = midpoint(b, c);
+            const int ca = midpoint(c, a);
+            finer.push_back({a, ab, ca});
+            finer.push_back({b, bc, ab});
+            finer.push_back({c, ca, bc});
+            finer.push_back({ab, bc, ca});
+        }
+        tris = std::move(finer);
+    }
+
+    TriangleMesh mesh;
+    mesh.vertices.reserve(dirs.size());
+    for (const auto& d : dirs)
+        mesh.vertices.push_back(
+            {center[0] + radius * d[0], center[1] + radius * d[1], center[2] + radius * d[2]});
+    mesh.triangles = std::move(tris);
+    return mesh;
+}
+
+TriangleMesh makeBlobMesh(int subdivisions, unsigned seed) {
+    // r(u) = 0.8 (1 + Σ a_k sin(ω_k w_k·u + φ_k)) with Σ a_k ≤ 0.2: strictly positive, so the
+    // radial graph over the (closed) icosphere stays closed and free of self-intersections.
+    constexpr int kWaves = 4;
+    std::mt19937 rng(seed);
+    std::array<Vec3, kWaves> axis{};
+    std::array<double, kWaves> amplitude{}, frequency{}, phase{};
+    for (int k = 0; k < kWaves; ++k) {
+        Vec3 w;
+        double n2 = 0.0;
+        do {  // rejection sampling keeps the direction uniform on the sphere
+            w = {uniform(rng, -1, 1), uniform(rng, -1, 1), uniform(rng, -1, 1)};
+            n2 = w[0] * w[0] + w[1] * w[1] + w[2] * w[2];
+        } while (n2 > 1.0 || n2 < 1e-4);
+        axis[k] = normalized(w);
+        amplitude[k] = uniform(rng, 0.03, 0.05);
+        frequency[k] = uniform(rng, 1.5, 3.5);  // low: a few bumps around the blob
+        phase[k] = uniform(rng, 0.0, 2.0 * std::numbers::pi);
+    }
+
+    TriangleMesh mesh = makeIcosphere(subdivisions);
+    for (auto& v : mesh.vertices) {
+        double scale = 1.0;
+        for (int k = 0; k < kWaves; ++k) {
+            const double s = v[0] * axis[k][0] + v[1] * axis[k][1] + v[2] * axis[k][2];
+            scale += amplitude[k] * std::sin(frequency[k] * s + phase[k]);
+        }
+        for (double& x : v) x *= 0.8 * scale;
+    }
+    return mesh;
+}
+
+void writeObj(const std::filesystem::path& file, const TriangleMesh& mesh) {
+    std::ofstream out(file);
+    if (!out) throw Error("cannot write mesh file " + file.string());
+    out << "# modeflow generated mesh: " << mesh.vertices.size() << " vertices, "
+        << mesh.triangles.size() << " triangles\n";
+    char line[128];
+    for (const auto& v : mesh.vertices) {
+        std::snprintf(line, sizeof line, "v %.6f %.6f %.6f\n", v[0], v[1], v[2]);
+        out << line;
+    }
+    for (const auto& [a, b, c] : mesh.triangles) out << "f " << a + 1 << ' ' << b + 1 << ' ' << c + 1 << '\n';
+    out.close();
+    if (!out) throw Error("cannot write mesh file " + file.string());
+}
+
+void writeBlobMeshObj(const std::filesystem::path& file, int subdivisions, unsigned seed) {
+    writeObj(file, makeBlobMesh(subdivisions, seed));
+}
+
+}  // namespace modeflow

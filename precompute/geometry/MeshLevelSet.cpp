@@ -1,0 +1,214 @@
+/// @file MeshLevelSet.cpp
+/// The one translation unit with OpenVDB and tinyobjloader includes.
+
+#include "precompute/geometry/MeshLevelSet.h"
+
+#include <openvdb/openvdb.h>
+#include <openvdb/tools/Interpolation.h>
+#include <openvdb/tools/MeshToVolume.h>
+#include <tiny_obj_loader.h>
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <mutex>
+#include <string>
+#include <system_error>
+#include <unordered_map>
+#include <vector>
+
+#include "engine/format/Error.h"
+
+namespace modeflow {
+namespace {
+
+namespace fs = std::filesystem;
+
+/// Beyond this many band voxels the conversion would take gigabytes: the voxel size is a typo
+/// or far too fine for the mesh.
+constexpr double kMaxBandVoxels = 4.0e8;
+
+void initializeOpenVdb() {
+    static std::once_flag once;
+    std::call_once(once, [] { openvdb::initialize(); });
+}
+
+std::string trimmed(std::string s) {
+    while (!s.empty() && (s.back() == '\n' || s.back() == '\r' || s.back() == ' ' ||
+                          s.back() == '.'))
+        s.pop_back();
+    return s;
+}
+
+struct RawMesh {
+    std::vector<openvdb::Vec3s> points;
+    std::vector<openvdb::Vec3I> triangles;
+};
+
+/// Parses the OBJ and triangulates every face (fans for anything tinyobjloader left as a
+/// polygon); drops triangles with a repeated vertex, which have no area.
+RawMesh readObj(const fs::path& file) {
+    const std::string name = file.string();
+    std::error_code ec;
+    if (!fs::exists(file, ec)) throw Error("mesh file " + name + " does not exist");
+    if (!fs::is_regular_file(file, ec)) throw Error("mesh file " + name + " is not a regular file");
+
+    tinyobj::ObjReaderConfig config;
+    config.triangulate = true;
+    config.vertex_color = false;
+    tinyobj::ObjReader reader;
+    if (!reader.ParseFromFile(name, config)) {
+        const std::string why = trimmed(reader.Error());
+        throw Error("mesh file " + name + " is not a valid OBJ file" +
+                    (why.empty() ? std::string() : ": " + why));
+    }
+
+    RawMesh mesh;
+    const auto& coords = reader.GetAttrib().vertices;
+    const std::size_t vertexCount = coords.size() / 3;
+    mesh.points.reserve(vertexCount);
+    for (std::size_t i = 0; i < vertexCount; ++i) {
+        const openvdb::Vec3s p(coords[3 * i], coords[3 * i + 1], coords[3 * i + 2]);
+        if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
+            throw Error("mesh file " + name + ": vertex " + std::to_string(i + 1) +
+                        " has a non-finite coordinate");
+        mesh.points.push_back(p);
+    }
+
+    std::size_t faceCount = 0;
+    for (const auto& shape : reader.GetShapes()) {
+        std::size_t offset = 0;
+        for (const unsigned char corners : shape.mesh.num_face_vertices) {
+            std::vector<std::uint32_t> face;
+            for (unsigned c = 0; c < corners; ++c) {
+                const int v = shape.mesh.indices[offset + c].vertex_index;
+                if (v < 0 || static_cast<std::size_t>(v) >= vertexCount)
+                    throw Error("mesh file " + name + ": a face refers to vertex " +
+                                std::to_string(v + 1) + " but the file has " +
+                                std::to_string(vertexCount) + " vertices");
+                face.push_back(static_cast<std::uint32_t>(v));
+            }
+            offset += corners;
+            ++faceCount;
+            for (std::size_t c = 1; c + 1 < face.size(); ++c) {
+                const std::uint32_t a = face[0], b = face[c], d = face[c + 1];
+                if (a == b || b == d || d == a) continue;
+                mesh.triangles.emplace_back(a, b, d);
+            }
+        }
+    }
+    if (faceCount == 0) {
+        throw Error("mesh file " + name + " has no faces" +
+                    (vertexCount == 0 ? std::string(" and no vertices: not an OBJ mesh")
+                                      : " (only " + std::to_string(vertexCount) + " vertices)") +
+                    "; a closed triangle surface is needed");
+    }
+    if (mesh.triangles.empty())
+        throw Error("mesh file " + name + " has only degenerate faces (repeated vertices)");
+    return mesh;
+}
+
+/// meshToLevelSet silently produces garbage signs for a surface with holes, so demand that every
+/// undirected edge joins exactly two triangles.
+void requireClosed(const RawMesh& mesh, const fs::path& file) {
+    std::unordered_map<std::uint64_t, int> edgeUse;
+    edgeUse.reserve(mesh.triangles.size() * 2);
+    for (const auto& t : mesh.triangles) {
+        for (int k = 0; k < 3; ++k) {
+            std::uint64_t a = t[k], b = t[(k + 1) % 3];
+            if (a > b) std::swap(a, b);
+            ++edgeUse[(a << 32) | b];
+        }
+    }
+    std::size_t boundary = 0, nonManifold = 0;
+    for (const auto& [edge, uses] : edgeUse) {
+        if (uses == 1) ++boundary;
+        else if (uses > 2) ++nonManifold;
+    }
+    if (boundary == 0 && nonManifold == 0) return;
+    std::string what = "mesh file " + file.string() + " is not a closed surface: ";
+    if (boundary > 0)
+        what += std::to_string(boundary) + " boundary edge" + (boundary == 1 ? "" : "s") +
+                " (used by one triangle: the mesh is open)";
+    if (nonManifold > 0)
+        what += std::string(boundary > 0 ? " and " : "") + std::to_string(nonManifold) +
+                " non-manifold edge" + (nonManifold == 1 ? "" : "s") +
+                " (shared by more than two triangles)";
+    what += ". Every edge must join exactly two triangles; vertices are matched by index, so "
+            "duplicated vertices leave seams open";
+    throw Error(what);
+}
+
+double surfaceArea(const RawMesh& mesh) {
+    double area = 0.0;
+    for (const auto& t : mesh.triangles) {
+        const openvdb::Vec3d a(mesh.points[t[0]]), b(mesh.points[t[1]]), c(mesh.points[t[2]]);
+        area += 0.5 * (b - a).cross(c - a).length();
+    }
+    return area;
+}
+
+class MeshLevelSet final : public ImplicitShape {
+public:
+    explicit MeshLevelSet(openvdb::FloatGrid::ConstPtr grid) : mGrid(std::move(grid)) {}
+
+    double value(const Vec3& p) const override {
+        // A fresh *unsafe* accessor per call: the safe kind registers itself with the tree under
+        // a lock, and a shared one would race on its node cache. The tree is never modified
+        // after construction, so concurrent reads through private accessors are safe.
+        auto accessor = mGrid->getConstUnsafeAccessor();
+        const openvdb::Vec3d index = mGrid->transform().worldToIndex(openvdb::Vec3d(p[0], p[1], p[2]));
+        // OpenVDB's level sets are negative inside; χ is positive inside.
+        return -static_cast<double>(openvdb::tools::BoxSampler::sample(accessor, index));
+    }
+
+private:
+    openvdb::FloatGrid::ConstPtr mGrid;
+};
+
+}  // namespace
+
+std::unique_ptr<ImplicitShape> loadMeshShape(const fs::path& objFile, double voxelSize,
+                                             double halfWidthVoxels) {
+    const std::string name = objFile.string();
+    if (!(voxelSize > 0.0) || !std::isfinite(voxelSize))
+        throw Error("mesh file " + name + ": the level-set voxel size must be a positive number");
+    if (!(halfWidthVoxels >= 1.0) || !std::isfinite(halfWidthVoxels))
+        throw Error("mesh file " + name + ": the level-set half width must be at least 1 voxel");
+
+    const RawMesh mesh = readObj(objFile);
+    requireClosed(mesh, objFile);
+
+    const double bandVoxels = surfaceArea(mesh) / (voxelSize * voxelSize) * 2.0 * halfWidthVoxels;
+    if (bandVoxels > kMaxBandVoxels)
+        throw Error("mesh file " + name + ": a level set with voxel size " +
+                    std::to_string(voxelSize) + " would need about " +
+                    std::to_string(static_cast<long long>(bandVoxels)) +
+                    " voxels; use a coarser grid");
+
+    initializeOpenVdb();
+    openvdb::FloatGrid::Ptr grid;
+    try {
+        const auto transform = openvdb::math::Transform::createLinearTransform(voxelSize);
+        grid = openvdb::tools::meshToLevelSet<openvdb::FloatGrid>(
+            *transform, mesh.points, mesh.triangles, static_cast<float>(halfWidthVoxels));
+    } catch (const openvdb::Exception& e) {
+        throw Error("mesh file " + name + ": level-set conversion failed: " + e.what());
+    }
+    // A doubled sheet passes the edge test yet bounds nothing; so does a mesh much thinner than
+    // a voxel. Either way no voxel lies clearly inside (negative in OpenVDB's convention): voxels
+    // on a sheet's plane get float noise of either sign, hence the margin.
+    bool enclosesVolume = false;
+    if (grid) {
+        const float inside = -0.1f * static_cast<float>(voxelSize);
+        for (auto it = grid->cbeginValueOn(); it && !enclosesVolume; ++it)
+            enclosesVolume = *it < inside;
+    }
+    if (!enclosesVolume)
+        throw Error("mesh file " + name + " encloses no volume at voxel size " +
+                    std::to_string(voxelSize) +
+                    " (a flat or doubled surface, or one thinner than a voxel)");
+    return std::make_unique<MeshLevelSet>(std::move(grid));
+}
+
+}  // namespace modeflow

@@ -1,0 +1,27 @@
+#pragma once
+/// @file MeshLevelSet.h
+/// Mesh shapes (`shape = "mesh"`, 3D): a closed OBJ surface turned into a narrow-band signed
+/// distance level set. The OpenVDB machinery stays in MeshLevelSet.cpp, the only translation unit
+/// that includes its headers (they cost 15–30 s of compile time each).
+
+#include <filesystem>
+#include <memory>
+
+#include "precompute/geometry/ImplicitShape.h"
+
+namespace modeflow {
+
+/// Reads a Wavefront OBJ file (polygons are triangulated, vertices matched by index) and returns
+/// its signed distance, positive inside, sampled trilinearly from a level set of voxel size
+/// `voxelSize` (world units, voxel values at integer multiples of it) and a narrow band of
+/// `halfWidthVoxels` voxels on each side of the surface. Beyond the band value() is
+/// ±halfWidthVoxels·voxelSize, still a lower bound of the distance. value() is safe to call from
+/// many threads at once.
+/// @throw Error naming the file when it is missing or not a readable OBJ, has no faces, refers to
+///        vertices it lacks, is open or non-manifold (every edge must join exactly two
+///        triangles), encloses no voxel (flat, doubled, or thinner than a voxel), or the voxel
+///        size is not a positive number.
+std::unique_ptr<ImplicitShape> loadMeshShape(const std::filesystem::path& objFile,
+                                             double voxelSize, double halfWidthVoxels = 3.0);
+
+}  // namespace modeflow

@@ -1,0 +1,130 @@
+#pragma once
+/// @file SceneSpec.h
+/// The validated content of a scene file (DESIGN §5). Plain values only: parsing and validation
+/// live in SceneLoader, so every other module can use a scene without pulling in TOML.
+
+#include <array>
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace modeflow {
+
+using Vec3 = std::array<double, 3>;  ///< 2D scenes leave the third entry at 0.
+
+/// Regular grid of cells between two corners. 2D grids have dim == 2 and resolution[2] == 1.
+struct GridSpec {
+    int dim = 2;
+    std::array<int, 3> resolution{1, 1, 1};
+    Vec3 boundsMin{0.0, 0.0, 0.0};
+    Vec3 boundsMax{1.0, 1.0, 1.0};
+
+    double spacing(int axis) const {
+        return (boundsMax[axis] - boundsMin[axis]) / resolution[axis];
+    }
+    bool operator==(const GridSpec&) const = default;
+};
+
+enum class ShapeKind { Ball, Box, Ellipsoid, Cylinder, Torus, Mesh };
+enum class CsgOp { Union, Subtract, Intersect };
+
+/// One `[[domain]]` entry (or emitter shape). Unused fields keep their defaults.
+struct ShapeSpec {
+    ShapeKind kind = ShapeKind::Ball;
+    Vec3 center{0.0, 0.0, 0.0};
+    double radius = 0.0;              ///< ball, cylinder
+    Vec3 radii{0.0, 0.0, 0.0};        ///< ellipsoid
+    Vec3 min{0.0, 0.0, 0.0};          ///< box
+    Vec3 max{0.0, 0.0, 0.0};          ///< box
+    double halfHeight = 0.0;          ///< cylinder (axis z)
+    double majorRadius = 0.0;         ///< torus (axis z)
+    double minorRadius = 0.0;         ///< torus
+    std::filesystem::path meshFile;   ///< mesh (OBJ, 3D), resolved against the scene's folder
+    CsgOp op = CsgOp::Union;
+    bool operator==(const ShapeSpec&) const = default;
+};
+
+enum class ScalarBoundary { Neumann, Dirichlet };
+enum class WallKind { FreeSlip, NoSlip };
+/// How primal measures see the domain: exact-for-piecewise-linear cut cells, or voxelized.
+enum class BoundaryTreatment { CutCell, Staircase };
+
+/// A 1-based, inclusive range of the divergence-free spectrum ("516-630").
+struct ModeRange {
+    int first = 1;
+    int last = 1;
+    bool operator==(const ModeRange&) const = default;
+};
+
+struct BasisSpec {
+    std::vector<ModeRange> velocityModes;  ///< `velocity_modes = N` becomes {1-N}
+    int scalarModes = 0;
+    ScalarBoundary scalarBoundary = ScalarBoundary::Neumann;
+    WallKind wall = WallKind::FreeSlip;
+    BoundaryTreatment boundary = BoundaryTreatment::CutCell;
+    int subsamples = 4;  ///< sub-cells per element edge when measuring cut fractions
+
+    int velocityCount() const {
+        int n = 0;
+        for (const auto& r : velocityModes) n += r.last - r.first + 1;
+        return n;
+    }
+    int highestVelocityMode() const {
+        int n = 0;
+        for (const auto& r : velocityModes) n = r.last > n ? r.last : n;
+        return n;
+    }
+    bool operator==(const BasisSpec&) const = default;
+};
+
+enum class Integrator { Explicit, Rk4, Midpoint, Trapezoidal };
+
+struct SimulationSpec {
+    double dt = 0.02;
+    Integrator integrator = Integrator::Midpoint;
+    double viscosity = 0.0;
+    double alpha = 0.0;
+};
+
+enum class InitialVelocity { Zero, Random, Modes, Vortices };
+
+struct InitialSpec {
+    InitialVelocity velocity = InitialVelocity::Zero;
+    double energy = 1.0;
+    std::uint64_t seed = 1;
+};
+
+/// A smoke/heat emitter (`[[source]]`).
+struct SourceSpec {
+    ShapeSpec shape;
+    double density = 1.0;      ///< injected per unit time
+    double temperature = 0.0;  ///< injected per unit time
+};
+
+struct SmokeSpec {
+    double buoyancy = 0.0;
+    int resolutionScale = 1;
+};
+
+struct OutputSpec {
+    int frames = 48;
+    int stepsPerFrame = 1;
+};
+
+/// A whole scene, validated: every field holds a meaningful value.
+struct SceneSpec {
+    std::filesystem::path sourceFile;  ///< the TOML file it came from (empty if built in code)
+    std::string name;                  ///< file stem, used to name outputs
+    GridSpec grid;
+    std::vector<ShapeSpec> domain;  ///< empty: the whole grid box is fluid
+    BasisSpec basis;
+    SimulationSpec simulation;
+    InitialSpec initial;
+    std::vector<SourceSpec> sources;
+    SmokeSpec smoke;
+    OutputSpec output;
+};
+
+}  // namespace modeflow

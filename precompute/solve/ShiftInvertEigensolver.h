@@ -1,0 +1,39 @@
+#pragma once
+/// @file ShiftInvertEigensolver.h
+/// Lowest eigenpairs of K x = λ M x (K sparse symmetric positive semi-definite, M diagonal
+/// positive) by shift-invert Lanczos (Spectra) around a sparse Cholesky factorization (CHOLMOD).
+/// Spectra and CHOLMOD headers stay inside the .cpp.
+
+#include <functional>
+#include <string>
+
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+
+namespace modeflow {
+
+struct EigenPairs {
+    Eigen::VectorXd values;   ///< ascending
+    Eigen::MatrixXd vectors;  ///< columns, M-orthonormal
+    long operations = 0;      ///< shift-invert solves performed
+    long restarts = 0;
+};
+
+/// Called with the number of solves done so far (for progress on a terminal).
+using SolveProgress = std::function<void(long operations)>;
+
+struct EigenRequest {
+    int count = 0;
+    /// Shift σ < 0 below the spectrum: K − σM stays positive definite even when K has a
+    /// null space (harmonic fields, constants), which σ = 0 would make singular.
+    double shift = -1.0;
+    double tolerance = 1e-12;
+    std::string what;  ///< named in error messages ("velocity eigensolve")
+    SolveProgress progress;
+};
+
+/// @throw Error naming `what` when the factorization fails or Lanczos does not converge.
+EigenPairs smallestEigenpairs(const Eigen::SparseMatrix<double>& stiffness,
+                              const Eigen::VectorXd& massDiagonal, const EigenRequest& request);
+
+}  // namespace modeflow

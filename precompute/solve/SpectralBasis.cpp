@@ -1,0 +1,159 @@
+#include "precompute/solve/SpectralBasis.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+#include <Eigen/Eigenvalues>
+
+#include "engine/format/Error.h"
+#include "precompute/solve/Laplacians.h"
+
+namespace modeflow {
+namespace {
+
+/// Below this size a dense solve is cheaper and exact for any count.
+constexpr Eigen::Index kDenseLimit = 1200;
+
+EigenPairs lowestPairs(const Eigen::SparseMatrix<double>& k, const Eigen::VectorXd& m,
+                       const EigenRequest& request) {
+    if (k.rows() > kDenseLimit) return smallestEigenpairs(k, m, request);
+    const Eigen::VectorXd s = m.cwiseSqrt().cwiseInverse();
+    const Eigen::MatrixXd a = s.asDiagonal() * Eigen::MatrixXd(k) * s.asDiagonal();
+    Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(a);
+    EigenPairs out;
+    out.values = eig.eigenvalues().head(request.count);
+    out.vectors = s.asDiagonal() * eig.eigenvectors().leftCols(request.count);
+    return out;
+}
+
+int find(std::vector<int>& parent, int i) {
+    while (parent[i] != i) i = parent[i] = parent[parent[i]];
+    return i;
+}
+
+std::string plural(std::int64_t n, const char* word) {
+    return std::to_string(n) + " " + word + (n == 1 ? "" : "s");
+}
+
+}  // namespace
+
+double referenceEigenvalue(const GridSpec& grid) {
+    double l = 0.0;
+    for (int a = 0; a < grid.dim; ++a) l = std::max(l, grid.boundsMax[a] - grid.boundsMin[a]);
+    return (M_PI / l) * (M_PI / l);
+}
+
+double harmonicThreshold(const GridSpec& grid) { return 1e-8 * referenceEigenvalue(grid); }
+
+int connectedComponents(const CutCellDec& dec) {
+    std::vector<int> parent(size_t(dec.cells.size()));
+    std::iota(parent.begin(), parent.end(), 0);
+    const SparseMatrix faceRows = dec.div.transpose();
+    for (std::int64_t f = 0; f < faceRows.outerSize(); ++f) {
+        int first = -1;
+        for (SparseMatrix::InnerIterator it(faceRows, f); it; ++it) {
+            if (first < 0) first = int(it.col());
+            else parent[find(parent, int(it.col()))] = find(parent, first);
+        }
+    }
+    int count = 0;
+    for (size_t i = 0; i < parent.size(); ++i) count += find(parent, int(i)) == int(i);
+    return count;
+}
+
+std::int64_t divergenceFreeDimension(const CutCellDec& dec) {
+    return dec.faces.size() - dec.cells.size() + connectedComponents(dec);
+}
+
+namespace {
+
+ScalarBasisResult fromPairs(EigenPairs pairs, int skip) {
+    ScalarBasisResult r;
+    const int count = int(pairs.values.size()) - skip;
+    r.eigenvalues = pairs.values.tail(count);
+    r.modes = pairs.vectors.rightCols(count);
+    r.omittedConstants = skip;
+    r.solves = pairs.operations;
+    return r;
+}
+
+/// λ_N of the div-free spectrum by Weyl's law (2D: N ≈ |Ω|λ/4π; 3D, two polarizations:
+/// N ≈ |Ω|λ^{3/2}/3π²), used only to pick a first penalty.
+double weylEstimate(int dim, int n, double measure) {
+    if (dim == 2) return 4.0 * M_PI * n / measure;
+    return std::pow(3.0 * M_PI * M_PI * n / measure, 2.0 / 3.0);
+}
+
+}  // namespace
+
+ScalarBasisResult solveNeumannScalarBasis(const CutCellDec& dec, int count,
+                                          const SolveProgress& progress) {
+    const int constants = connectedComponents(dec);
+    const std::int64_t available = dec.cells.size() - constants;
+    if (count > available)
+        throw Error("[basis].scalar_modes = " + std::to_string(count) + ": the domain holds only " +
+                    plural(available, "non-constant Neumann scalar mode"));
+    const EigenRequest request{count + constants, -1e-2 * referenceEigenvalue(dec.grid), 1e-12,
+                               "scalar (Neumann) eigensolve", progress};
+    return fromPairs(lowestPairs(neumannScalarLaplacian(dec), dec.cellStar, request), constants);
+}
+
+ScalarBasisResult solveDirichletScalarBasis(const DirichletScalarDec& dec, int count,
+                                            const SolveProgress& progress) {
+    if (count > dec.cells.size())
+        throw Error("[basis].scalar_modes = " + std::to_string(count) + ": the domain holds only " +
+                    plural(dec.cells.size(), "Dirichlet scalar mode"));
+    const EigenRequest request{count, -1e-2 * referenceEigenvalue(dec.grid), 1e-12,
+                               "scalar (Dirichlet) eigensolve", progress};
+    return fromPairs(lowestPairs(dirichletScalarLaplacian(dec), dec.cellStar, request), 0);
+}
+
+VelocityBasisResult solveVelocityBasis(const CutCellDec& dec, const std::vector<ModeRange>& ranges,
+                                       double firstNeumannEigenvalue, double domainMeasure,
+                                       const SolveProgress& progress) {
+    int highest = 0;
+    for (const ModeRange& r : ranges) highest = std::max(highest, r.last);
+    const std::int64_t available = divergenceFreeDimension(dec);
+    if (highest > available)
+        throw Error("[basis]: asked for divergence-free mode " + std::to_string(highest) +
+                    " but the domain holds only " +
+                    plural(available, "divergence-free field") + " at this resolution");
+
+    const double mu1 = firstNeumannEigenvalue;
+    double penalty = std::max(1.0, 2.0 * weylEstimate(dec.grid.dim, highest, domainMeasure) / mu1);
+    const EigenRequest request{highest, -1e-2 * referenceEigenvalue(dec.grid), 1e-12,
+                               "velocity eigensolve", progress};
+    EigenPairs pairs;
+    long solves = 0;
+    for (int attempt = 0;; ++attempt) {
+        pairs = lowestPairs(velocityLaplacian(dec, penalty), dec.faceStar, request);
+        solves += pairs.operations;
+        const double top = pairs.values[highest - 1];
+        // Every gradient eigenvalue of the penalized operator is at least (1+s)μ₁², so when the
+        // top computed value is below it, all computed modes are divergence-free.
+        if (top < 0.999 * (1.0 + penalty) * mu1) break;
+        if (attempt == 3)
+            throw Error("velocity eigensolve: gradient fields stayed in the low spectrum after "
+                        "raising the grad-div penalty to " + std::to_string(penalty));
+        penalty = 4.0 * top / mu1;
+    }
+
+    VelocityBasisResult r;
+    r.penalty = penalty;
+    r.solves = solves;
+    std::vector<Eigen::Index> keep;
+    for (const ModeRange& range : ranges)
+        for (int m = range.first; m <= range.last; ++m) keep.push_back(m - 1);
+    r.eigenvalues.resize(Eigen::Index(keep.size()));
+    r.modes.resize(pairs.vectors.rows(), Eigen::Index(keep.size()));
+    for (size_t i = 0; i < keep.size(); ++i) {
+        r.eigenvalues[Eigen::Index(i)] = pairs.values[keep[i]];
+        r.modes.col(Eigen::Index(i)) = pairs.vectors.col(keep[i]);
+        r.modeNumbers.push_back(int(keep[i]) + 1);
+        if (pairs.values[keep[i]] < harmonicThreshold(dec.grid)) ++r.harmonicCount;
+    }
+    return r;
+}
+
+}  // namespace modeflow

@@ -1,0 +1,60 @@
+#pragma once
+/// @file SpectralBasis.h
+/// The velocity and scalar eigenbases of a domain (seed §6.3.1, appendix C.1; DESIGN §2).
+
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "precompute/dec/CutCellDec.h"
+#include "precompute/dec/DirichletScalarDec.h"
+#include "precompute/solve/ShiftInvertEigensolver.h"
+
+namespace modeflow {
+
+struct VelocityBasisResult {
+    Eigen::VectorXd eigenvalues;   ///< κ², ascending, one per selected mode
+    Eigen::MatrixXd modes;         ///< face fluxes (DOFs × modes), ⋆(n-1)-orthonormal
+    std::vector<int> modeNumbers;  ///< 1-based position of each mode in the div-free spectrum
+    int harmonicCount = 0;         ///< selected modes with κ = 0
+    double penalty = 0.0;          ///< grad-div penalty s that kept gradients out
+    long solves = 0;
+};
+
+struct ScalarBasisResult {
+    Eigen::VectorXd eigenvalues;  ///< μ², ascending
+    Eigen::MatrixXd modes;        ///< cell values (n-forms), ⋆n-orthonormal
+    int omittedConstants = 0;     ///< Neumann: one constant per connected component, left out
+    long solves = 0;
+};
+
+/// Number of connected components of the DOF cells, linked through DOF faces.
+int connectedComponents(const CutCellDec& dec);
+
+/// Dimension of the divergence-free space: faces − cells + components (rank of d is
+/// cells − components because walls carry no flux).
+std::int64_t divergenceFreeDimension(const CutCellDec& dec);
+
+/// The first `count` non-constant Neumann scalar modes.
+ScalarBasisResult solveNeumannScalarBasis(const CutCellDec& dec, int count,
+                                          const SolveProgress& progress);
+ScalarBasisResult solveDirichletScalarBasis(const DirichletScalarDec& dec, int count,
+                                            const SolveProgress& progress);
+
+/// The div-free modes in `ranges` (1-based, of the div-free spectrum, harmonic ones first).
+/// Gradient eigenfields are pushed above the wanted range with a grad-div penalty chosen from
+/// `firstNeumannEigenvalue` (μ₁²) and checked afterwards: if the top computed eigenvalue reaches
+/// (1+s)μ₁² the solve is repeated with a larger s.
+/// @throw Error when the ranges ask for more modes than the div-free space holds.
+VelocityBasisResult solveVelocityBasis(const CutCellDec& dec, const std::vector<ModeRange>& ranges,
+                                       double firstNeumannEigenvalue, double domainMeasure,
+                                       const SolveProgress& progress);
+
+/// Reference eigenvalue scale (π/L)², L the largest extent of the grid box; shifts and the
+/// harmonic threshold are relative to it.
+double referenceEigenvalue(const GridSpec& grid);
+
+/// κ² below this counts as harmonic (κ = 0).
+double harmonicThreshold(const GridSpec& grid);
+
+}  // namespace modeflow

@@ -1,0 +1,54 @@
+// Harmonic velocity fields (κ = 0) count the domain's tunnels: exactly one for an annulus and for
+// a solid torus, none for a disk.
+
+#include <gtest/gtest.h>
+
+#include "precompute/BasisChecks.h"
+#include "precompute/Precompute.h"
+#include "precompute/solve/SpectralBasis.h"
+#include "tests/precompute/TestScenes.h"
+
+namespace modeflow {
+namespace {
+
+BasisCache solve(SceneSpec scene) {
+    scene.basis.velocityModes = {{1, 6}};
+    scene.basis.scalarModes = 0;
+    Progress quiet = Progress::silent();
+    return computeBasis(scene, quiet);
+}
+
+void expectOneHarmonic(const BasisCache& cache) {
+    EXPECT_EQ(cache.velocity.harmonic, 1);
+    EXPECT_LT(std::abs(cache.velocity.eigenvalues[0]), harmonicThreshold(cache.grid));
+    EXPECT_GT(cache.velocity.eigenvalues[1], 1.0) << "second mode must not be harmonic";
+    const BasisChecks checks = checkBasis(cache);
+    EXPECT_LE(checks.maxDivergence, 1e-10);
+    EXPECT_LE(checks.velocityOrthonormality, 1e-10);
+}
+
+TEST(HarmonicModes, AnnulusHasExactlyOne) {
+    SceneSpec scene = test::gridScene({64, 64, 1}, {-1.1, -1.1, 0.0}, {1.1, 1.1, 0.0}, 2);
+    scene.domain = {test::ball({0.0, 0.0, 0.0}, 1.0),
+                    test::ball({0.0, 0.0, 0.0}, 0.4, CsgOp::Subtract)};
+    expectOneHarmonic(solve(scene));
+}
+
+TEST(HarmonicModes, DiskHasNone) {
+    SceneSpec scene = test::gridScene({48, 48, 1}, {-1.1, -1.1, 0.0}, {1.1, 1.1, 0.0}, 2);
+    scene.domain = {test::ball({0.0, 0.0, 0.0}, 1.0)};
+    EXPECT_EQ(solve(scene).velocity.harmonic, 0);
+}
+
+TEST(HarmonicModes, SolidTorusHasExactlyOne) {
+    SceneSpec scene = test::gridScene({28, 28, 14}, {-1.0, -1.0, -0.5}, {1.0, 1.0, 0.5}, 3);
+    ShapeSpec torus;
+    torus.kind = ShapeKind::Torus;
+    torus.majorRadius = 0.6;
+    torus.minorRadius = 0.3;
+    scene.domain = {torus};
+    expectOneHarmonic(solve(scene));
+}
+
+}  // namespace
+}  // namespace modeflow

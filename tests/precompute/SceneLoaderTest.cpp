@@ -1,0 +1,587 @@
+/// @file SceneLoaderTest.cpp
+/// Scene files → SceneSpec: every field round trips, defaults fill the gaps, and each kind of
+/// mistake is refused with a message naming the file and the key.
+
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "precompute/scene/SceneLoader.h"
+
+namespace modeflow {
+namespace {
+
+namespace fs = std::filesystem;
+
+/// A private temporary folder, removed with the fixture.
+class SceneLoaderTest : public ::testing::Test {
+protected:
+    void SetUp() override {
+        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+        mDir = fs::temp_directory_path() / (std::string("modeflow_scene_") + info->name() + "_" +
+                                            std::to_string(reinterpret_cast<std::uintptr_t>(this)));
+        fs::remove_all(mDir);
+        fs::create_directories(mDir);
+    }
+    void TearDown() override { fs::remove_all(mDir); }
+
+    fs::path write(const std::string& name, const std::string& text) const {
+        const fs::path path = mDir / name;
+        fs::create_directories(path.parent_path());
+        std::ofstream(path) << text;
+        return path;
+    }
+
+    fs::path mDir;
+};
+
+constexpr const char* kGrid2d = R"(
+[grid]
+resolution = [64, 64]
+bounds_min = [-1.1, -1.1]
+bounds_max = [1.1, 1.1]
+)";
+
+constexpr const char* kGrid3d = R"(
+[grid]
+resolution = [16, 16, 16]
+bounds_min = [-1, -1, -1]
+bounds_max = [1, 1, 1]
+)";
+
+constexpr const char* kBasis = R"(
+[basis]
+velocity_modes = 10
+)";
+
+/// The message of the Error that parsing `text` throws, or "" if it parses.
+std::string errorOf(const std::string& text, const fs::path& origin = "scenes/bad.toml") {
+    try {
+        parseScene(text, origin);
+    } catch (const Error& e) {
+        return e.what();
+    }
+    return "";
+}
+
+#define EXPECT_CONTAINS(haystack, needle)                            \
+    EXPECT_NE(std::string(haystack).find(needle), std::string::npos) \
+        << "expected \"" << (needle) << "\" in \"" << (haystack) << "\""
+
+TEST_F(SceneLoaderTest, FullSceneRoundTripsEveryField) {
+    write("meshes/bunny.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    const fs::path file = write("full_scene.toml", R"(
+[grid]
+resolution = [48, 32, 24]
+bounds_min = [-1.5, -1, -0.5]
+bounds_max = [1.5, 1.0, 0.5]
+
+[[domain]]
+shape = "box"
+min = [-1.4, -0.9, -0.4]
+max = [1.4, 0.9, 0.4]
+
+[[domain]]
+shape = "ball"
+center = [0.5, 0.0, 0.0]
+radius = 0.25
+op = "subtract"
+
+[[domain]]
+shape = "ellipsoid"
+center = [0, 0, 0]
+radii = [1.2, 0.8, 0.35]
+op = "intersect"
+
+[[domain]]
+shape = "cylinder"
+center = [-0.5, 0.0, 0.0]
+radius = 0.2
+half_height = 0.3
+op = "subtract"
+
+[[domain]]
+shape = "torus"
+center = [0.0, 0.0, 0.1]
+major_radius = 0.6
+minor_radius = 0.1
+op = "union"
+
+[[domain]]
+shape = "mesh"
+file = "meshes/bunny.obj"
+op = "subtract"
+
+[basis]
+modes = "1-10, 21-25,30"
+scalar_modes = 7
+scalar_boundary = "dirichlet"
+wall = "no-slip"
+boundary = "staircase"
+subsamples = 8
+
+[simulation]
+dt = 0.005
+integrator = "rk4"
+viscosity = 0.01
+alpha = 0.05
+
+[initial]
+velocity = "vortices"
+energy = 2.5
+seed = 123456789012
+
+[[source]]
+shape = "ball"
+center = [0.0, 0.0, -0.3]
+radius = 0.1
+density = 0.5
+temperature = 2.0
+
+[[source]]
+shape = "box"
+min = [-0.1, -0.1, -0.4]
+max = [0.1, 0.1, -0.35]
+density = 3
+temperature = -1
+
+[smoke]
+buoyancy = -0.75
+resolution_scale = 3
+
+[output]
+frames = 10
+steps_per_frame = 5
+)");
+    const SceneSpec scene = loadScene(file);
+
+    EXPECT_EQ(scene.sourceFile, file);
+    EXPECT_EQ(scene.name, "full_scene");
+
+    EXPECT_EQ(scene.grid.dim, 3);
+    EXPECT_EQ(scene.grid.resolution, (std::array<int, 3>{48, 32, 24}));
+    EXPECT_EQ(scene.grid.boundsMin, (Vec3{-1.5, -1.0, -0.5}));
+    EXPECT_EQ(scene.grid.boundsMax, (Vec3{1.5, 1.0, 0.5}));
+
+    ASSERT_EQ(scene.domain.size(), 6u);
+    ShapeSpec box;
+    box.kind = ShapeKind::Box;
+    box.min = {-1.4, -0.9, -0.4};
+    box.max = {1.4, 0.9, 0.4};
+    EXPECT_EQ(scene.domain[0], box);
+
+    ShapeSpec ball;
+    ball.kind = ShapeKind::Ball;
+    ball.center = {0.5, 0.0, 0.0};
+    ball.radius = 0.25;
+    ball.op = CsgOp::Subtract;
+    EXPECT_EQ(scene.domain[1], ball);
+
+    ShapeSpec ellipsoid;
+    ellipsoid.kind = ShapeKind::Ellipsoid;
+    ellipsoid.radii = {1.2, 0.8, 0.35};
+    ellipsoid.op = CsgOp::Intersect;
+    EXPECT_EQ(scene.domain[2], ellipsoid);
+
+    ShapeSpec cylinder;
+    cylinder.kind = ShapeKind::Cylinder;
+    cylinder.center = {-0.5, 0.0, 0.0};
+    cylinder.radius = 0.2;
+    cylinder.halfHeight = 0.3;
+    cylinder.op = CsgOp::Subtract;
+    EXPECT_EQ(scene.domain[3], cylinder);
+
+    ShapeSpec torus;
+    torus.kind = ShapeKind::Torus;
+    torus.center = {0.0, 0.0, 0.1};
+    torus.majorRadius = 0.6;
+    torus.minorRadius = 0.1;
+    EXPECT_EQ(scene.domain[4], torus);
+
+    EXPECT_EQ(scene.domain[5].kind, ShapeKind::Mesh);
+    EXPECT_EQ(scene.domain[5].op, CsgOp::Subtract);
+    EXPECT_TRUE(scene.domain[5].meshFile.is_absolute() == file.is_absolute());
+    EXPECT_TRUE(fs::equivalent(scene.domain[5].meshFile, mDir / "meshes" / "bunny.obj"));
+
+    EXPECT_EQ(scene.basis.velocityModes, (std::vector<ModeRange>{{1, 10}, {21, 25}, {30, 30}}));
+    EXPECT_EQ(scene.basis.velocityCount(), 16);
+    EXPECT_EQ(scene.basis.highestVelocityMode(), 30);
+    EXPECT_EQ(scene.basis.scalarModes, 7);
+    EXPECT_EQ(scene.basis.scalarBoundary, ScalarBoundary::Dirichlet);
+    EXPECT_EQ(scene.basis.wall, WallKind::NoSlip);
+    EXPECT_EQ(scene.basis.boundary, BoundaryTreatment::Staircase);
+    EXPECT_EQ(scene.basis.subsamples, 8);
+
+    EXPECT_EQ(scene.simulation.dt, 0.005);
+    EXPECT_EQ(scene.simulation.integrator, Integrator::Rk4);
+    EXPECT_EQ(scene.simulation.viscosity, 0.01);
+    EXPECT_EQ(scene.simulation.alpha, 0.05);
+
+    EXPECT_EQ(scene.initial.velocity, InitialVelocity::Vortices);
+    EXPECT_EQ(scene.initial.energy, 2.5);
+    EXPECT_EQ(scene.initial.seed, 123456789012u);
+
+    ASSERT_EQ(scene.sources.size(), 2u);
+    EXPECT_EQ(scene.sources[0].shape.kind, ShapeKind::Ball);
+    EXPECT_EQ(scene.sources[0].shape.center, (Vec3{0.0, 0.0, -0.3}));
+    EXPECT_EQ(scene.sources[0].shape.radius, 0.1);
+    EXPECT_EQ(scene.sources[0].density, 0.5);
+    EXPECT_EQ(scene.sources[0].temperature, 2.0);
+    EXPECT_EQ(scene.sources[1].shape.kind, ShapeKind::Box);
+    EXPECT_EQ(scene.sources[1].shape.min, (Vec3{-0.1, -0.1, -0.4}));
+    EXPECT_EQ(scene.sources[1].shape.max, (Vec3{0.1, 0.1, -0.35}));
+    EXPECT_EQ(scene.sources[1].density, 3.0);
+    EXPECT_EQ(scene.sources[1].temperature, -1.0);
+
+    EXPECT_EQ(scene.smoke.buoyancy, -0.75);
+    EXPECT_EQ(scene.smoke.resolutionScale, 3);
+    EXPECT_EQ(scene.output.frames, 10);
+    EXPECT_EQ(scene.output.stepsPerFrame, 5);
+}
+
+TEST_F(SceneLoaderTest, MinimalSceneGetsDefaults) {
+    const SceneSpec scene = parseScene(std::string(kGrid2d) + kBasis, "somewhere/minimal.toml");
+    EXPECT_EQ(scene.name, "minimal");
+    EXPECT_EQ(scene.sourceFile, fs::path("somewhere/minimal.toml"));
+
+    EXPECT_EQ(scene.grid.dim, 2);
+    EXPECT_EQ(scene.grid.resolution, (std::array<int, 3>{64, 64, 1}));
+    EXPECT_EQ(scene.grid.boundsMin, (Vec3{-1.1, -1.1, 0.0}));
+    EXPECT_EQ(scene.grid.boundsMax, (Vec3{1.1, 1.1, 1.0}));
+    EXPECT_TRUE(scene.domain.empty());
+
+    const BasisSpec basisDefaults;
+    EXPECT_EQ(scene.basis.velocityModes, (std::vector<ModeRange>{{1, 10}}));
+    EXPECT_EQ(scene.basis.scalarModes, basisDefaults.scalarModes);
+    EXPECT_EQ(scene.basis.scalarBoundary, ScalarBoundary::Neumann);
+    EXPECT_EQ(scene.basis.wall, WallKind::FreeSlip);
+    EXPECT_EQ(scene.basis.boundary, BoundaryTreatment::CutCell);
+    EXPECT_EQ(scene.basis.subsamples, 4);
+
+    const SimulationSpec sim;
+    EXPECT_EQ(scene.simulation.dt, sim.dt);
+    EXPECT_EQ(scene.simulation.integrator, sim.integrator);
+    EXPECT_EQ(scene.simulation.viscosity, sim.viscosity);
+    EXPECT_EQ(scene.simulation.alpha, sim.alpha);
+    const InitialSpec initial;
+    EXPECT_EQ(scene.initial.velocity, initial.velocity);
+    EXPECT_EQ(scene.initial.energy, initial.energy);
+    EXPECT_EQ(scene.initial.seed, initial.seed);
+    EXPECT_TRUE(scene.sources.empty());
+    EXPECT_EQ(scene.smoke.buoyancy, SmokeSpec{}.buoyancy);
+    EXPECT_EQ(scene.smoke.resolutionScale, SmokeSpec{}.resolutionScale);
+    EXPECT_EQ(scene.output.frames, OutputSpec{}.frames);
+    EXPECT_EQ(scene.output.stepsPerFrame, OutputSpec{}.stepsPerFrame);
+}
+
+TEST_F(SceneLoaderTest, SourceDefaultsAndPartialTables) {
+    const SceneSpec scene = parseScene(std::string(kGrid2d) + kBasis + R"(
+[[domain]]
+shape = "ball"
+center = [0, 0]
+radius = 1
+
+[[source]]
+shape = "ball"
+center = [0, -0.6]
+radius = 0.15
+
+[simulation]
+integrator = "explicit"
+)",
+                                       "s.toml");
+    ASSERT_EQ(scene.domain.size(), 1u);
+    EXPECT_EQ(scene.domain[0].op, CsgOp::Union);
+    EXPECT_EQ(scene.domain[0].center, (Vec3{0.0, 0.0, 0.0}));
+    ASSERT_EQ(scene.sources.size(), 1u);
+    EXPECT_EQ(scene.sources[0].shape.center, (Vec3{0.0, -0.6, 0.0}));
+    EXPECT_EQ(scene.sources[0].density, SourceSpec{}.density);
+    EXPECT_EQ(scene.sources[0].temperature, SourceSpec{}.temperature);
+    EXPECT_EQ(scene.simulation.integrator, Integrator::Explicit);
+    EXPECT_EQ(scene.simulation.dt, SimulationSpec{}.dt);
+}
+
+TEST(ModeRanges, ParsesListsAndSingleModes) {
+    EXPECT_EQ(parseModeRanges("1-115,516-630", "k"),
+              (std::vector<ModeRange>{{1, 115}, {516, 630}}));
+    EXPECT_EQ(parseModeRanges("40", "k"), (std::vector<ModeRange>{{40, 40}}));
+    EXPECT_EQ(parseModeRanges(" 3 - 5 , 6,8-8 ", "k"),
+              (std::vector<ModeRange>{{3, 5}, {6, 6}, {8, 8}}));
+}
+
+TEST(ModeRanges, RejectsBadLists) {
+    const char* bad[] = {"",   "  ",   "0-5",   "5-3", "1-10,5-20", "10,3", "1-",
+                         "-3", "1,,2", "1-10,", "a",   "1.5",       "1 2",  "99999999999999"};
+    for (const char* text : bad) {
+        try {
+            parseModeRanges(text, "[basis].modes");
+            ADD_FAILURE() << "accepted \"" << text << "\"";
+        } catch (const Error& e) {
+            EXPECT_EQ(std::string(e.what()).rfind("[basis].modes: ", 0), 0u) << e.what();
+        }
+    }
+    try {
+        parseModeRanges("1-10,5-20", "[basis].modes");
+    } catch (const Error& e) {
+        EXPECT_CONTAINS(e.what(), "overlaps");
+    }
+}
+
+TEST_F(SceneLoaderTest, ModesStringErrorsNameTheKeyAndFile) {
+    const std::string message = errorOf(std::string(kGrid2d) + "[basis]\nmodes = \"5-3\"\n");
+    EXPECT_EQ(message.rfind("scenes/bad.toml: [basis].modes: ", 0), 0u) << message;
+}
+
+TEST_F(SceneLoaderTest, UnknownKeyIsNamedWithSuggestion) {
+    const std::string message = errorOf(std::string(kGrid2d) + "[basis]\nvelocity_mode = 10\n");
+    EXPECT_EQ(message.rfind("scenes/bad.toml: [basis].velocity_mode: unknown key", 0), 0u)
+        << message;
+    EXPECT_CONTAINS(message, "did you mean velocity_modes?");
+}
+
+TEST_F(SceneLoaderTest, UnknownTableAndShapeKeysAreNamed) {
+    std::string message = errorOf(std::string(kGrid2d) + kBasis + "[grdi]\nx = 1\n");
+    EXPECT_CONTAINS(message, "grdi: unknown table");
+    EXPECT_CONTAINS(message, "did you mean grid?");
+
+    message =
+        errorOf(std::string(kGrid2d) + kBasis +
+                "[[domain]]\nshape = \"ball\"\ncenter = [0, 0]\nradius = 1\nradii = [1, 1]\n");
+    EXPECT_CONTAINS(message, "[[domain]] #1 (ball).radii: not a key of a ball");
+
+    message = errorOf(std::string(kGrid2d) + kBasis + "[output]\nframes = 3\nfps = 24\n");
+    EXPECT_CONTAINS(message, "[output].fps: unknown key");
+}
+
+TEST_F(SceneLoaderTest, WrongTypeNamesKeyAndExpectedType) {
+    std::string message = errorOf(std::string(kGrid2d) + kBasis + "[simulation]\ndt = \"fast\"\n");
+    EXPECT_CONTAINS(message, "[simulation].dt: expected a number, got a string");
+
+    // Floats where integers belong are errors, even when whole.
+    message = errorOf(std::string(kGrid2d) + "[basis]\nvelocity_modes = 40.0\n");
+    EXPECT_CONTAINS(message, "[basis].velocity_modes: expected an integer, got a floating-point");
+
+    message =
+        errorOf("[grid]\nresolution = [64, 64.5]\nbounds_min = [0, 0]\nbounds_max = [1, 1]\n" +
+                std::string(kBasis));
+    EXPECT_CONTAINS(message, "[grid].resolution[1]: expected an integer");
+
+    message = errorOf(std::string(kGrid2d) + kBasis + "[simulation]\nintegrator = \"rk5\"\n");
+    EXPECT_CONTAINS(message, "[simulation].integrator: unknown value \"rk5\"");
+    EXPECT_CONTAINS(message, "did you mean rk4?");
+}
+
+TEST_F(SceneLoaderTest, ResolutionBelowTwoIsRejected) {
+    const std::string message =
+        errorOf("[grid]\nresolution = [64, 1]\nbounds_min = [0, 0]\nbounds_max = [1, 1]\n" +
+                std::string(kBasis));
+    EXPECT_EQ(message.rfind("scenes/bad.toml: [grid].resolution[1]: must be between 2 and", 0), 0u)
+        << message;
+}
+
+TEST_F(SceneLoaderTest, ResolutionEntryCountIsChecked) {
+    const std::string message =
+        errorOf("[grid]\nresolution = [8, 8, 8, 8]\nbounds_min = [0, 0]\nbounds_max = [1, 1]\n" +
+                std::string(kBasis));
+    EXPECT_EQ(message.rfind("scenes/bad.toml: [grid].resolution: expected 2 or 3 integers, got 4 "
+                            "entries",
+                            0),
+              0u)
+        << message;
+}
+
+TEST_F(SceneLoaderTest, AbsurdlyLargeGridIsRejected) {
+    const std::string message = errorOf(
+        "[grid]\nresolution = [4096, 4096, 4096]\nbounds_min = [0, 0, 0]\n"
+        "bounds_max = [1, 1, 1]\n" +
+        std::string(kBasis));
+    EXPECT_CONTAINS(message, "[grid].resolution");
+    EXPECT_CONTAINS(message, "absurdly large");
+
+    const std::string tooWide =
+        errorOf("[grid]\nresolution = [100000, 4]\nbounds_min = [0, 0]\nbounds_max = [1, 1]\n" +
+                std::string(kBasis));
+    EXPECT_CONTAINS(tooWide, "[grid].resolution[0]");
+}
+
+TEST_F(SceneLoaderTest, InvertedBoundsAreRejected) {
+    const std::string message =
+        errorOf("[grid]\nresolution = [8, 8]\nbounds_min = [0, 1]\nbounds_max = [1, -1]\n" +
+                std::string(kBasis));
+    EXPECT_CONTAINS(message, "[grid].bounds_max");
+    EXPECT_CONTAINS(message, "inverted bounds");
+    EXPECT_CONTAINS(message, "axis y");
+}
+
+TEST_F(SceneLoaderTest, BoundsMustMatchDimension) {
+    const std::string message =
+        errorOf("[grid]\nresolution = [8, 8]\nbounds_min = [0, 0, 0]\nbounds_max = [1, 1]\n" +
+                std::string(kBasis));
+    EXPECT_CONTAINS(message, "[grid].bounds_min: expected 2 numbers");
+}
+
+TEST_F(SceneLoaderTest, CylinderIn2dIsRejected) {
+    const std::string message =
+        errorOf(std::string(kGrid2d) + kBasis +
+                "[[domain]]\nshape = \"ball\"\ncenter = [0, 0]\nradius = 1\n"
+                "[[domain]]\nshape = \"cylinder\"\ncenter = [0, 0]\nradius = 1\n"
+                "half_height = 1\n");
+    EXPECT_CONTAINS(message, "[[domain]] #2 (cylinder).shape");
+    EXPECT_CONTAINS(message, "3D only");
+}
+
+TEST_F(SceneLoaderTest, ShapeValuesAreValidated) {
+    std::string message = errorOf(std::string(kGrid3d) + kBasis +
+                                  "[[domain]]\nshape = \"torus\"\ncenter = [0, 0, 0]\n"
+                                  "major_radius = 0.5\nminor_radius = 0.7\n");
+    EXPECT_CONTAINS(message, "[[domain]] #1 (torus).minor_radius: must be less than major_radius");
+
+    message = errorOf(std::string(kGrid3d) + kBasis +
+                      "[[domain]]\nshape = \"ball\"\ncenter = [0, 0]\nradius = 0.5\n");
+    EXPECT_CONTAINS(message, "[[domain]] #1 (ball).center: expected 3 numbers");
+
+    message = errorOf(std::string(kGrid2d) + kBasis +
+                      "[[domain]]\nshape = \"box\"\nmin = [0, 0]\nmax = [1, 0]\n");
+    EXPECT_CONTAINS(message, "[[domain]] #1 (box).max: must exceed min");
+
+    message = errorOf(std::string(kGrid2d) + kBasis +
+                      "[[domain]]\nshape = \"ball\"\ncenter = [0, 0]\nradius = -1\n");
+    EXPECT_CONTAINS(message, "[[domain]] #1 (ball).radius: must be > 0");
+
+    message =
+        errorOf(std::string(kGrid2d) + kBasis + "[[domain]]\nshape = \"ball\"\ncenter = [0, 0]\n");
+    EXPECT_CONTAINS(message, "[[domain]] #1 (ball).radius: missing required key");
+
+    message = errorOf(std::string(kGrid3d) + kBasis +
+                      "[[source]]\nshape = \"torus\"\ncenter = [0, 0, 0]\n"
+                      "major_radius = 0.5\nminor_radius = 0.1\n");
+    EXPECT_CONTAINS(message, "[[source]] #1 (torus).shape: a source must be a ball or a box");
+
+    message = errorOf(std::string(kGrid3d) + kBasis +
+                      "[[domain]]\nshape = \"mesh\"\n"
+                      "file = \"missing.obj\"\n");
+    EXPECT_CONTAINS(message, "[[domain]] #1 (mesh).file: no such file");
+
+    message = errorOf(std::string(kGrid2d) + kBasis +
+                      "[[domain]]\nshape = \"ball\"\ncenter = [0, 0]\nradius = 1\n"
+                      "op = \"subtract\"\n");
+    EXPECT_CONTAINS(message, "[[domain]] #1 (ball).op");
+}
+
+TEST_F(SceneLoaderTest, BothVelocityModesAndModesIsAnError) {
+    const std::string message =
+        errorOf(std::string(kGrid2d) + "[basis]\nvelocity_modes = 10\nmodes = \"1-10\"\n");
+    EXPECT_CONTAINS(message, "[basis].modes");
+    EXPECT_CONTAINS(message, "velocity_modes");
+    EXPECT_CONTAINS(message, "not both");
+}
+
+TEST_F(SceneLoaderTest, RequiredTablesAndKeys) {
+    EXPECT_CONTAINS(errorOf(kBasis), "[grid]: missing required table");
+    EXPECT_CONTAINS(errorOf(kGrid2d), "[basis]: missing required table");
+    EXPECT_CONTAINS(errorOf(std::string(kGrid2d) + "[basis]\nscalar_modes = 3\n"),
+                    "[basis]: missing velocity_modes");
+    EXPECT_CONTAINS(
+        errorOf("[grid]\nresolution = [8, 8]\nbounds_min = [0, 0]\n" + std::string(kBasis)),
+        "[grid].bounds_max: missing required key");
+    EXPECT_CONTAINS(errorOf(std::string(kGrid2d) + "[basis]\nvelocity_modes = 0\n"),
+                    "[basis].velocity_modes: must be at least 1");
+    EXPECT_CONTAINS(errorOf(std::string(kGrid2d) + "[basis]\nvelocity_modes = 100000\n"),
+                    "[basis].velocity_modes: mode 100000 is beyond the discrete space");
+    EXPECT_CONTAINS(errorOf(std::string(kGrid2d) + kBasis + "[domain]\nshape = \"ball\"\n"),
+                    "[[domain]]: expected an array of tables");
+}
+
+TEST_F(SceneLoaderTest, RangeChecksOnScalars) {
+    const std::string base = std::string(kGrid2d) + kBasis;
+    EXPECT_CONTAINS(errorOf(base + "[simulation]\ndt = 0\n"), "[simulation].dt: must be > 0");
+    EXPECT_CONTAINS(errorOf(base + "[simulation]\nviscosity = -1\n"),
+                    "[simulation].viscosity: must be >= 0");
+    EXPECT_CONTAINS(errorOf(base + "[simulation]\ndt = nan\n"), "[simulation].dt: must be finite");
+    EXPECT_CONTAINS(errorOf(base + "[initial]\nseed = -1\n"), "[initial].seed: must be at least 0");
+    EXPECT_CONTAINS(errorOf(base + "[smoke]\nresolution_scale = 9\n"),
+                    "[smoke].resolution_scale: must be between 1 and 8");
+    EXPECT_CONTAINS(
+        errorOf(std::string(kGrid2d) + "[basis]\nvelocity_modes = 4\nsubsamples = 17\n"),
+        "[basis].subsamples: must be between 1 and 16");
+    EXPECT_CONTAINS(errorOf(base + "[output]\nframes = 0\n"),
+                    "[output].frames: must be at least 1");
+    EXPECT_CONTAINS(errorOf(base + "[output]\nsteps_per_frame = 9999999999\n"),
+                    "[output].steps_per_frame: is too large");
+}
+
+TEST_F(SceneLoaderTest, SyntaxErrorGivesFileAndLine) {
+    const std::string message =
+        errorOf("[grid]\nresolution = [64, 64]\nbounds_min = [0, 0\n", "scenes/broken.toml");
+    EXPECT_EQ(message.rfind("scenes/broken.toml: line ", 0), 0u) << message;
+    EXPECT_CONTAINS(message, "syntax error");
+
+    const std::string second = errorOf("[grid]\nresolution = = 3\n", "x.toml");
+    EXPECT_EQ(second.rfind("x.toml: line 2,", 0), 0u) << second;
+}
+
+TEST_F(SceneLoaderTest, MissingFileGivesClearMessage) {
+    try {
+        loadScene(mDir / "nope.toml");
+        FAIL() << "loaded a missing file";
+    } catch (const Error& e) {
+        EXPECT_CONTAINS(e.what(), "nope.toml");
+        EXPECT_CONTAINS(e.what(), "no such scene file");
+    }
+    try {
+        loadScene(mDir);
+        FAIL() << "loaded a folder";
+    } catch (const Error& e) {
+        EXPECT_CONTAINS(e.what(), "not a scene file");
+    }
+}
+
+TEST_F(SceneLoaderTest, ErrorsCarryTheLine) {
+    const std::string message =
+        errorOf(std::string(kGrid2d) + kBasis + "[simulation]\n\ndt = -1\n");
+    // kGrid2d starts with a blank line: [grid] is line 2, so dt sits on line 11.
+    EXPECT_CONTAINS(message, "(line 11)");
+}
+
+TEST(SceneKeywords, MatchTheFileSpelling) {
+    EXPECT_EQ(sceneKeyword(ShapeKind::Torus), "torus");
+    EXPECT_EQ(sceneKeyword(CsgOp::Subtract), "subtract");
+    EXPECT_EQ(sceneKeyword(ScalarBoundary::Dirichlet), "dirichlet");
+    EXPECT_EQ(sceneKeyword(WallKind::FreeSlip), "free-slip");
+    EXPECT_EQ(sceneKeyword(BoundaryTreatment::CutCell), "cut-cell");
+    EXPECT_EQ(sceneKeyword(Integrator::Rk4), "rk4");
+    EXPECT_EQ(sceneKeyword(InitialVelocity::Vortices), "vortices");
+}
+
+TEST(ExampleScenes, EveryRepositorySceneLoads) {
+    const fs::path folder = fs::path(MODEFLOW_SOURCE_DIR) / "scenes";
+    ASSERT_TRUE(fs::is_directory(folder)) << folder;
+    int count = 0;
+    for (const auto& entry : fs::directory_iterator(folder)) {
+        if (entry.path().extension() != ".toml") continue;
+        ++count;
+        SCOPED_TRACE(entry.path().string());
+        try {
+            const SceneSpec scene = loadScene(entry.path());
+            EXPECT_EQ(scene.name, entry.path().stem().string());
+            EXPECT_GE(scene.basis.velocityCount(), 1);
+        } catch (const Error& e) {
+            ADD_FAILURE() << e.what();
+        }
+    }
+    EXPECT_GE(count, 6);
+
+    const SceneSpec def = loadScene(folder / "default.toml");
+    EXPECT_EQ(def.grid.dim, 2);
+    EXPECT_EQ(def.grid.resolution, (std::array<int, 3>{128, 128, 1}));
+    EXPECT_EQ(def.basis.velocityCount(), 40);
+    EXPECT_EQ(def.basis.scalarModes, 20);
+    EXPECT_FALSE(def.sources.empty());
+    EXPECT_GT(def.smoke.buoyancy, 0.0);
+}
+
+}  // namespace
+}  // namespace modeflow

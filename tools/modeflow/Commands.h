@@ -1,0 +1,23 @@
+#pragma once
+/// @file Commands.h
+/// The `modeflow` subcommands (DESIGN §5). Each registers its options on the CLI11 app and
+/// returns the function that runs it; errors propagate as modeflow::Error to main().
+
+#include <filesystem>
+#include <functional>
+#include <optional>
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+namespace modeflow::cli {
+
+using Command = std::function<int()>;
+
+Command addPrecompute(CLI::App& app);
+Command addInspect(CLI::App& app);
+
+/// --cache-dir, else $MODEFLOW_CACHE_DIR, else $XDG_CACHE_HOME/modeflow, else ~/.cache/modeflow.
+std::filesystem::path resolveCacheDir(const std::optional<std::string>& option);
+
+}  // namespace modeflow::cli

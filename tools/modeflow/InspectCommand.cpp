@@ -1,0 +1,113 @@
+#include <iomanip>
+#include <iostream>
+
+#include <nlohmann/json.hpp>
+
+#include "engine/format/CacheFile.h"
+#include "precompute/BasisChecks.h"
+#include "precompute/Precompute.h"
+#include "precompute/scene/SceneLoader.h"
+#include "tools/modeflow/Commands.h"
+
+namespace modeflow::cli {
+namespace {
+
+std::vector<double> toStd(const Eigen::VectorXd& v) { return {v.data(), v.data() + v.size()}; }
+
+nlohmann::json summarize(const BasisCache& c, const std::filesystem::path& path) {
+    const BasisChecks checks = checkBasis(c);
+    const int n = c.grid.dim;
+    nlohmann::json j;
+    j["dim"] = n;
+    j["resolution"] = std::vector<int>(c.grid.resolution.begin(), c.grid.resolution.begin() + n);
+    j["bounds_min"] = std::vector<double>(c.grid.boundsMin.begin(), c.grid.boundsMin.begin() + n);
+    j["bounds_max"] = std::vector<double>(c.grid.boundsMax.begin(), c.grid.boundsMax.begin() + n);
+    j["wall"] = c.wall == WallKind::FreeSlip ? "free-slip" : "no-slip";
+    j["boundary"] = c.boundary == BoundaryTreatment::CutCell ? "cut-cell" : "staircase";
+    j["dofs"] = {{"faces", c.faces.size()}, {"cells", c.cells.size()}};
+    j["velocity"] = {{"count", c.velocity.eigenvalues.size()},
+                     {"eigenvalues", toStd(c.velocity.eigenvalues)},
+                     {"mode_numbers", c.velocity.modeNumbers},
+                     {"harmonic", c.velocity.harmonic},
+                     {"max_divergence", checks.maxDivergence},
+                     {"orthonormality_error", checks.velocityOrthonormality},
+                     {"gradient_penalty", c.velocity.penalty}};
+    j["scalar"] = {{"count", c.scalar.eigenvalues.size()},
+                   {"boundary", c.scalar.boundary == ScalarBoundary::Neumann ? "neumann" : "dirichlet"},
+                   {"eigenvalues", toStd(c.scalar.eigenvalues)},
+                   {"omitted_constants", c.scalar.omittedConstants},
+                   {"orthonormality_error", checks.scalarOrthonormality}};
+    nlohmann::json timings = nlohmann::json::object();
+    for (const auto& [stage, seconds] : c.timings) timings[stage] = seconds;
+    j["timings"] = timings;
+    j["cache"] = {{"path", path.string()},
+                  {"bytes", std::filesystem::file_size(path)},
+                  {"format_version", kCacheFormatVersion}};
+    return j;
+}
+
+void printText(const nlohmann::json& j) {
+    std::cout << "grid       " << j["dim"] << "D " << j["resolution"].dump() << ", "
+              << j["boundary"].get<std::string>() << ", " << j["wall"].get<std::string>() << "\n"
+              << "dofs       " << j["dofs"]["faces"] << " faces, " << j["dofs"]["cells"]
+              << " cells\n";
+    auto list = [](const nlohmann::json& values) {
+        std::ostringstream s;
+        s << std::setprecision(6);
+        size_t i = 0;
+        for (const auto& v : values) {
+            if (i == 8) {
+                s << " ...";
+                break;
+            }
+            s << (i++ ? ", " : "") << v.get<double>();
+        }
+        return s.str();
+    };
+    const auto& v = j["velocity"];
+    std::cout << "velocity   " << v["count"] << " modes (" << v["harmonic"] << " harmonic), κ² = "
+              << list(v["eigenvalues"]) << "\n"
+              << "           max divergence " << v["max_divergence"].get<double>()
+              << ", orthonormality error " << v["orthonormality_error"].get<double>() << "\n";
+    const auto& s = j["scalar"];
+    std::cout << "scalar     " << s["count"] << " " << s["boundary"].get<std::string>()
+              << " modes, μ² = " << list(s["eigenvalues"]) << "\n";
+    std::cout << "timings   ";
+    for (const auto& [stage, seconds] : j["timings"].items())
+        std::cout << " " << stage << " " << std::fixed << std::setprecision(2)
+                  << seconds.get<double>() << " s";
+    std::cout << std::defaultfloat << "\ncache      " << j["cache"]["path"].get<std::string>()
+              << " (" << j["cache"]["bytes"] << " bytes)\n";
+}
+
+}  // namespace
+
+Command addInspect(CLI::App& app) {
+    struct Options {
+        std::string target;
+        std::optional<std::string> cacheDir;
+        bool json = false;
+    };
+    auto opts = std::make_shared<Options>();
+    CLI::App* sub = app.add_subcommand(
+        "inspect", "Summarize a cache file, or a scene's cache (precomputed on a miss)");
+    sub->add_option("CACHE_OR_SCENE", opts->target, "a .mfbasis cache file or a .toml scene")
+        ->required();
+    sub->add_option("--cache-dir", opts->cacheDir, "cache folder used for a scene");
+    sub->add_flag("--json", opts->json, "print one JSON object (DESIGN §5 keys)");
+    return [sub, opts]() {
+        if (!*sub) return -1;
+        std::filesystem::path path = opts->target;
+        if (path.extension() == ".toml") {
+            const SceneSpec scene = loadScene(path);
+            Progress progress = Progress::toStderr();
+            path = ensureCache(scene, resolveCacheDir(opts->cacheDir), false, progress).path;
+        }
+        const nlohmann::json j = summarize(readCache(path), path);
+        if (opts->json) std::cout << j.dump() << std::endl;
+        else printText(j);
+        return 0;
+    };
+}
+
+}  // namespace modeflow::cli

@@ -1,0 +1,36 @@
+#include <iostream>
+
+#include "precompute/Precompute.h"
+#include "precompute/scene/SceneLoader.h"
+#include "tools/modeflow/Commands.h"
+
+namespace modeflow::cli {
+
+Command addPrecompute(CLI::App& app) {
+    struct Options {
+        std::string scene;
+        std::optional<std::string> cacheDir;
+        bool force = false;
+    };
+    auto opts = std::make_shared<Options>();
+    CLI::App* sub = app.add_subcommand(
+        "precompute", "Compute the scene's eigenbases into a cache file (reused when unchanged); "
+                      "prints the cache file's path on the last line");
+    sub->add_option("SCENE", opts->scene, "scene file (TOML)")->required();
+    sub->add_option("--cache-dir", opts->cacheDir,
+                    "cache folder (default: $MODEFLOW_CACHE_DIR, else $XDG_CACHE_HOME/modeflow, "
+                    "else ~/.cache/modeflow)");
+    sub->add_flag("--force", opts->force, "recompute even when a valid cache exists");
+    return [sub, opts]() {
+        if (!*sub) return -1;
+        const SceneSpec scene = loadScene(opts->scene);
+        Progress progress = Progress::toStderr();
+        const CacheOutcome outcome =
+            ensureCache(scene, resolveCacheDir(opts->cacheDir), opts->force, progress);
+        if (outcome.reused) std::cerr << "cache is up to date\n";
+        std::cout << outcome.path.string() << std::endl;
+        return 0;
+    };
+}
+
+}  // namespace modeflow::cli
