@@ -31,9 +31,15 @@ double Domain::chi(const Vec3& p) const {
     for (std::size_t i = 1; i < mShapes.size(); ++i) {
         const double v = mShapes[i]->value(p);
         switch (mOps[i]) {
-            case CsgOp::Union: chi = std::max(chi, v); break;
-            case CsgOp::Intersect: chi = std::min(chi, v); break;
-            case CsgOp::Subtract: chi = std::min(chi, -v); break;
+            case CsgOp::Union:
+                chi = std::max(chi, v);
+                break;
+            case CsgOp::Intersect:
+                chi = std::min(chi, v);
+                break;
+            case CsgOp::Subtract:
+                chi = std::min(chi, -v);
+                break;
         }
     }
     return chi;

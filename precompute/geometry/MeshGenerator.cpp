@@ -31,17 +31,17 @@ double uniform(std::mt19937& rng, double lo, double hi) {
 
 TriangleMesh makeIcosphere(int subdivisions, double radius, const Vec3& center) {
     if (subdivisions < 0 || subdivisions > 8)
-        throw Error("icosphere: subdivisions must be in 0..8 (got " +
-                    std::to_string(subdivisions) + ")");
+        throw Error("icosphere: subdivisions must be in 0..8 (got " + std::to_string(subdivisions) +
+                    ")");
     const double t = (1.0 + std::sqrt(5.0)) / 2.0;
     std::vector<Vec3> dirs = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0},
                               {0, -1, t}, {0, 1, t}, {0, -1, -t}, {0, 1, -t},
                               {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
     for (auto& d : dirs) d = normalized(d);
     std::vector<std::array<int, 3>> tris = {
-        {0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
+        {0, 11, 5},  {0, 5, 1},  {0, 1, 7},  {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
         {11, 10, 2}, {10, 7, 6}, {7, 1, 8},  {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
-        {3, 8, 9},  {4, 9, 5},  {2, 4, 11}, {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
+        {3, 8, 9},   {4, 9, 5},  {2, 4, 11}, {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
 
     for (int level = 0; level < subdivisions; ++level) {
         // Shared edges must share their midpoint, or the mesh would not be closed.
@@ -122,7 +122,8 @@ void writeObj(const std::filesystem::path& file, const TriangleMesh& mesh) {
         std::snprintf(line, sizeof line, "v %.6f %.6f %.6f\n", v[0], v[1], v[2]);
         out << line;
     }
-    for (const auto& [a, b, c] : mesh.triangles) out << "f " << a + 1 << ' ' << b + 1 << ' ' << c + 1 << '\n';
+    for (const auto& [a, b, c] : mesh.triangles)
+        out << "f " << a + 1 << ' ' << b + 1 << ' ' << c + 1 << '\n';
     out.close();
     if (!out) throw Error("cannot write mesh file " + file.string());
 }

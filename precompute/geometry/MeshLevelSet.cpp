@@ -34,8 +34,8 @@ void initializeOpenVdb() {
 }
 
 std::string trimmed(std::string s) {
-    while (!s.empty() && (s.back() == '\n' || s.back() == '\r' || s.back() == ' ' ||
-                          s.back() == '.'))
+    while (!s.empty() &&
+           (s.back() == '\n' || s.back() == '\r' || s.back() == ' ' || s.back() == '.'))
         s.pop_back();
     return s;
 }
@@ -122,8 +122,10 @@ void requireClosed(const RawMesh& mesh, const fs::path& file) {
     }
     std::size_t boundary = 0, nonManifold = 0;
     for (const auto& [edge, uses] : edgeUse) {
-        if (uses == 1) ++boundary;
-        else if (uses > 2) ++nonManifold;
+        if (uses == 1)
+            ++boundary;
+        else if (uses > 2)
+            ++nonManifold;
     }
     if (boundary == 0 && nonManifold == 0) return;
     std::string what = "mesh file " + file.string() + " is not a closed surface: ";
@@ -134,8 +136,9 @@ void requireClosed(const RawMesh& mesh, const fs::path& file) {
         what += std::string(boundary > 0 ? " and " : "") + std::to_string(nonManifold) +
                 " non-manifold edge" + (nonManifold == 1 ? "" : "s") +
                 " (shared by more than two triangles)";
-    what += ". Every edge must join exactly two triangles; vertices are matched by index, so "
-            "duplicated vertices leave seams open";
+    what +=
+        ". Every edge must join exactly two triangles; vertices are matched by index, so "
+        "duplicated vertices leave seams open";
     throw Error(what);
 }
 
@@ -157,7 +160,8 @@ public:
         // a lock, and a shared one would race on its node cache. The tree is never modified
         // after construction, so concurrent reads through private accessors are safe.
         auto accessor = mGrid->getConstUnsafeAccessor();
-        const openvdb::Vec3d index = mGrid->transform().worldToIndex(openvdb::Vec3d(p[0], p[1], p[2]));
+        const openvdb::Vec3d index =
+            mGrid->transform().worldToIndex(openvdb::Vec3d(p[0], p[1], p[2]));
         // OpenVDB's level sets are negative inside; χ is positive inside.
         return -static_cast<double>(openvdb::tools::BoxSampler::sample(accessor, index));
     }

@@ -15,13 +15,14 @@ namespace modeflow {
 /// its signed distance, positive inside, sampled trilinearly from a level set of voxel size
 /// `voxelSize` (world units, voxel values at integer multiples of it) and a narrow band of
 /// `halfWidthVoxels` voxels on each side of the surface. Beyond the band value() is
-/// ±halfWidthVoxels·voxelSize, still a lower bound of the distance. value() is safe to call from
-/// many threads at once.
+/// ±halfWidthVoxels·voxelSize, still a lower bound of the distance. Unlike the analytic shapes,
+/// the zero set and the 1-Lipschitz bound hold only up to the interpolation error (well under a
+/// voxel near the surface). value() is safe to call from many threads at once.
 /// @throw Error naming the file when it is missing or not a readable OBJ, has no faces, refers to
 ///        vertices it lacks, is open or non-manifold (every edge must join exactly two
 ///        triangles), encloses no voxel (flat, doubled, or thinner than a voxel), or the voxel
 ///        size is not a positive number.
-std::unique_ptr<ImplicitShape> loadMeshShape(const std::filesystem::path& objFile,
-                                             double voxelSize, double halfWidthVoxels = 3.0);
+std::unique_ptr<ImplicitShape> loadMeshShape(const std::filesystem::path& objFile, double voxelSize,
+                                             double halfWidthVoxels = 3.0);
 
 }  // namespace modeflow

@@ -39,12 +39,17 @@ void requireFinite(const Vec3& v, int dim, const char* key) {
 
 /// Plain Euclidean norms: std::hypot guards against overflow beyond 1e154, which no scene reaches,
 /// and costs several times more.
-double length(double a, double b) { return std::sqrt(a * a + b * b); }
-double length(double a, double b, double c) { return std::sqrt(a * a + b * b + c * c); }
+double length(double a, double b) {
+    return std::sqrt(a * a + b * b);
+}
+double length(double a, double b, double c) {
+    return std::sqrt(a * a + b * b + c * c);
+}
 
 class Ball final : public ImplicitShape {
 public:
-    Ball(const Vec3& center, double radius, int dim) : mCenter(center), mRadius(radius), mDim(dim) {}
+    Ball(const Vec3& center, double radius, int dim)
+        : mCenter(center), mRadius(radius), mDim(dim) {}
     double value(const Vec3& p) const override {
         const double dx = p[0] - mCenter[0];
         const double dy = p[1] - mCenter[1];
@@ -118,9 +123,12 @@ double distanceGeneric(int n, const double* e, const double* y, const double* z,
             S += r2;
             T += r2 * w;
         }
-        if (S > 1.0) lo = u;
-        else if (S < 1.0) hi = u;
-        else break;
+        if (S > 1.0)
+            lo = u;
+        else if (S < 1.0)
+            hi = u;
+        else
+            break;
         const double step = S * (std::sqrt(S) - 1.0) / T;  // -H/H'
         if (std::abs(step) <= 4.0 * std::numeric_limits<double>::epsilon() * u) break;
         double next = u + step;
@@ -188,8 +196,7 @@ double distanceToEllipsoid(double e0, double e1, double e2, double y0, double y1
         const double xde0 = numer0 / denom0;
         const double xde1 = numer1 / denom1;
         const double discr = 1.0 - xde0 * xde0 - xde1 * xde1;
-        if (discr > 0.0)
-            return length(e0 * xde0 - y0, e1 * xde1 - y1, e2 * std::sqrt(discr));
+        if (discr > 0.0) return length(e0 * xde0 - y0, e1 * xde1 - y1, e2 * std::sqrt(discr));
     }
     return distanceToEllipse(e0, e1, y0, y1);
 }
@@ -269,12 +276,18 @@ private:
 
 std::string_view shapeKindName(ShapeKind kind) {
     switch (kind) {
-        case ShapeKind::Ball: return "ball";
-        case ShapeKind::Box: return "box";
-        case ShapeKind::Ellipsoid: return "ellipsoid";
-        case ShapeKind::Cylinder: return "cylinder";
-        case ShapeKind::Torus: return "torus";
-        case ShapeKind::Mesh: return "mesh";
+        case ShapeKind::Ball:
+            return "ball";
+        case ShapeKind::Box:
+            return "box";
+        case ShapeKind::Ellipsoid:
+            return "ellipsoid";
+        case ShapeKind::Cylinder:
+            return "cylinder";
+        case ShapeKind::Torus:
+            return "torus";
+        case ShapeKind::Mesh:
+            return "mesh";
     }
     return "unknown shape";
 }
@@ -301,8 +314,7 @@ std::unique_ptr<ImplicitShape> makeShape(const ShapeSpec& spec, int dim, double 
             for (int i = 0; i < dim; ++i) requirePositive(spec.radii[i], "every entry of radii");
             return std::make_unique<Ellipsoid>(spec.center, spec.radii, dim);
         case ShapeKind::Cylinder:
-            if (dim != 3)
-                throw Error("cylinder exists only in 3D (axis z); in 2D use a box");
+            if (dim != 3) throw Error("cylinder exists only in 3D (axis z); in 2D use a box");
             requireFinite(spec.center, dim, "center");
             requirePositive(spec.radius, "radius");
             requirePositive(spec.halfHeight, "half_height");

@@ -1,6 +1,9 @@
 #include "precompute/solve/ShiftInvertEigensolver.h"
 
 #include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
 
 #include <Eigen/CholmodSupport>
 #include <Spectra/SymEigsShiftSolver.h>
@@ -26,8 +29,10 @@ public:
     void set_shift(const Scalar& sigma) {
         Eigen::SparseMatrix<double> shifted = mK;
         for (Eigen::Index i = 0; i < mM.size(); ++i) shifted.coeffRef(i, i) -= sigma * mM[i];
+        auto t0 = std::chrono::steady_clock::now();
         mSolver.analyzePattern(shifted);
         mSolver.factorize(shifted);
+        mFactorSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
         if (mSolver.info() != Eigen::Success)
             throw Error(mRequest.what + ": the sparse Cholesky factorization failed (the operator "
                                         "is not positive definite after the shift)");
@@ -38,7 +43,9 @@ public:
     void perform_op(const Scalar* xIn, Scalar* yOut) const {
         Eigen::Map<const Eigen::VectorXd> x(xIn, rows());
         Eigen::Map<Eigen::VectorXd> y(yOut, rows());
+        auto t0 = std::chrono::steady_clock::now();
         y = mScale.cwiseProduct(mSolver.solve(mScale.cwiseProduct(x)));
+        mSolveSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
         ++mOperations;
         if (mRequest.progress && mOperations % 16 == 0) mRequest.progress(mOperations);
     }
@@ -52,6 +59,8 @@ private:
     Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>, Eigen::Lower> mSolver;
     Eigen::VectorXd mScale;
     mutable long mOperations = 0;
+public:
+    mutable double mSolveSeconds = 0, mFactorSeconds = 0;
 };
 
 }  // namespace
@@ -79,6 +88,7 @@ EigenPairs smallestEigenpairs(const Eigen::SparseMatrix<double>& stiffness,
     out.vectors = invScale.asDiagonal() * out.vectors;
     out.operations = op.operations();
     out.restarts = solver.num_iterations();
+    if (std::getenv("MODEFLOW_DEBUG_SOLVER")) std::fprintf(stderr, "[%s] n=%ld nev=%ld ncv=%ld ops=%ld restarts=%ld factor=%.2fs solves=%.2fs\n", request.what.c_str(), long(n), long(nev), long(ncv), out.operations, out.restarts, op.mFactorSeconds, op.mSolveSeconds);
     return out;
 }
 

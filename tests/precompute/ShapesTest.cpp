@@ -47,8 +47,7 @@ ShapeSpec ellipsoid(const Vec3& center, const Vec3& radii) {
     s.radii = radii;
     return s;
 }
-ShapeSpec cylinder(const Vec3& center, double radius, double halfHeight,
-                   CsgOp op = CsgOp::Union) {
+ShapeSpec cylinder(const Vec3& center, double radius, double halfHeight, CsgOp op = CsgOp::Union) {
     ShapeSpec s;
     s.op = op;
     s.kind = ShapeKind::Cylinder;
@@ -92,7 +91,8 @@ std::vector<Reference> references() {
     std::vector<Reference> refs;
     const int n2 = 20000;
     {  // disk
-        Reference r{"disk", ball({0.3, -0.2, 0}, 0.7), 2, nullptr, {}, 0, {-1, -1.5, 0}, {1.5, 1, 0}};
+        Reference r{"disk",     ball({0.3, -0.2, 0}, 0.7), 2, nullptr, {}, 0, {-1, -1.5, 0},
+                    {1.5, 1, 0}};
         r.inside = [](const Vec3& p) { return std::hypot(p[0] - 0.3, p[1] + 0.2) < 0.7; };
         for (int i = 0; i < n2; ++i) {
             const double t = 2 * kPi * i / n2;
@@ -102,8 +102,9 @@ std::vector<Reference> references() {
         refs.push_back(r);
     }
     {  // rectangle
-        Reference r{"rectangle", box({-0.5, -0.25, 0}, {0.75, 0.5, 0}), 2, nullptr, {}, 0,
-                    {-1.2, -1, 0}, {1.4, 1.2, 0}};
+        Reference r{
+            "rectangle",  box({-0.5, -0.25, 0}, {0.75, 0.5, 0}), 2, nullptr, {}, 0, {-1.2, -1, 0},
+            {1.4, 1.2, 0}};
         r.inside = [](const Vec3& p) {
             return p[0] > -0.5 && p[0] < 0.75 && p[1] > -0.25 && p[1] < 0.5;
         };
@@ -120,8 +121,14 @@ std::vector<Reference> references() {
         refs.push_back(r);
     }
     {  // ellipse
-        Reference r{"ellipse", ellipsoid({0.1, 0.2, 0}, {0.9, 0.35, 0}), 2, nullptr, {}, 0,
-                    {-1.2, -0.6, 0}, {1.4, 1.0, 0}};
+        Reference r{"ellipse",
+                    ellipsoid({0.1, 0.2, 0}, {0.9, 0.35, 0}),
+                    2,
+                    nullptr,
+                    {},
+                    0,
+                    {-1.2, -0.6, 0},
+                    {1.4, 1.0, 0}};
         r.inside = [](const Vec3& p) {
             const double x = (p[0] - 0.1) / 0.9, y = (p[1] - 0.2) / 0.35;
             return x * x + y * y < 1;
@@ -142,8 +149,9 @@ std::vector<Reference> references() {
         return pts;
     };
     {  // ball
-        Reference r{"ball", ball({0.1, 0.2, -0.3}, 0.6), 3, nullptr, {}, 0, {-0.8, -0.7, -1.2},
-                    {1, 1.1, 0.6}};
+        Reference r{
+            "ball",       ball({0.1, 0.2, -0.3}, 0.6), 3, nullptr, {}, 0, {-0.8, -0.7, -1.2},
+            {1, 1.1, 0.6}};
         r.inside = [](const Vec3& p) { return norm(p, {0.1, 0.2, -0.3}) < 0.6; };
         r.surface = sampleAngles([](double th, double ph) {
             return Vec3{0.1 + 0.6 * std::sin(th) * std::cos(ph),
@@ -153,8 +161,14 @@ std::vector<Reference> references() {
         refs.push_back(r);
     }
     {  // ellipsoid with three different radii, the largest along y
-        Reference r{"ellipsoid", ellipsoid({0, 0.1, 0.2}, {0.5, 0.8, 0.3}), 3, nullptr, {}, 0,
-                    {-0.9, -1.0, -0.4}, {0.9, 1.2, 0.8}};
+        Reference r{"ellipsoid",
+                    ellipsoid({0, 0.1, 0.2}, {0.5, 0.8, 0.3}),
+                    3,
+                    nullptr,
+                    {},
+                    0,
+                    {-0.9, -1.0, -0.4},
+                    {0.9, 1.2, 0.8}};
         r.inside = [](const Vec3& p) {
             const double x = p[0] / 0.5, y = (p[1] - 0.1) / 0.8, z = (p[2] - 0.2) / 0.3;
             return x * x + y * y + z * z < 1;
@@ -167,8 +181,14 @@ std::vector<Reference> references() {
         refs.push_back(r);
     }
     {  // box
-        Reference r{"box", box({-0.5, -0.25, -0.4}, {0.5, 0.25, 0.3}), 3, nullptr, {}, 0,
-                    {-0.9, -0.6, -0.8}, {0.9, 0.7, 0.7}};
+        Reference r{"box",
+                    box({-0.5, -0.25, -0.4}, {0.5, 0.25, 0.3}),
+                    3,
+                    nullptr,
+                    {},
+                    0,
+                    {-0.9, -0.6, -0.8},
+                    {0.9, 0.7, 0.7}};
         r.inside = [](const Vec3& p) {
             return p[0] > -0.5 && p[0] < 0.5 && p[1] > -0.25 && p[1] < 0.25 && p[2] > -0.4 &&
                    p[2] < 0.3;
@@ -191,8 +211,14 @@ std::vector<Reference> references() {
         refs.push_back(r);
     }
     {  // cylinder
-        Reference r{"cylinder", cylinder({0.1, -0.1, 0.2}, 0.4, 0.5), 3, nullptr, {}, 0,
-                    {-0.6, -0.8, -0.6}, {0.8, 0.6, 1.0}};
+        Reference r{"cylinder",
+                    cylinder({0.1, -0.1, 0.2}, 0.4, 0.5),
+                    3,
+                    nullptr,
+                    {},
+                    0,
+                    {-0.6, -0.8, -0.6},
+                    {0.8, 0.6, 1.0}};
         r.inside = [](const Vec3& p) {
             return std::hypot(p[0] - 0.1, p[1] + 0.1) < 0.4 && std::abs(p[2] - 0.2) < 0.5;
         };
@@ -203,13 +229,14 @@ std::vector<Reference> references() {
             for (double z = -0.3; z <= 0.7 + 1e-12; z += hz)
                 r.surface.push_back({0.1 + 0.4 * c, -0.1 + 0.4 * s, z});
             for (double rad = 0; rad <= 0.4 + 1e-12; rad += hr)
-                for (double z : {-0.3, 0.7}) r.surface.push_back({0.1 + rad * c, -0.1 + rad * s, z});
+                for (double z : {-0.3, 0.7})
+                    r.surface.push_back({0.1 + rad * c, -0.1 + rad * s, z});
         }
         r.spacing = 0.4 * 2 * kPi / na + hz + hr;
         refs.push_back(r);
     }
     {  // torus
-        Reference r{"torus", torus({0.05, 0, -0.1}, 0.6, 0.2), 3, nullptr, {}, 0, {-1, -1, -0.5},
+        Reference r{"torus",    torus({0.05, 0, -0.1}, 0.6, 0.2), 3, nullptr, {}, 0, {-1, -1, -0.5},
                     {1, 1, 0.3}};
         r.inside = [](const Vec3& p) {
             return std::hypot(std::hypot(p[0] - 0.05, p[1]) - 0.6, p[2] + 0.1) < 0.2;
@@ -381,8 +408,8 @@ TEST(Shapes, EllipsoidAxesAndDegenerateCases) {
     const double offsets[] = {0.0, 1e-300, 1e-12, -1e-12, 1e-7, -1e-7};
     std::normal_distribution<double> gauss(0.0, 1.0);
     const ShapeSpec nearRound = ellipsoid({0, 0, 0}, {0.5, 0.5 * (1 + 1e-13), 0.5 * (1 - 1e-14)});
-    for (const auto& [dim, spec] : {std::pair{2, e}, std::pair{3, e}, std::pair{2, nearRound},
-                                    std::pair{3, nearRound}}) {
+    for (const auto& [dim, spec] :
+         {std::pair{2, e}, std::pair{3, e}, std::pair{2, nearRound}, std::pair{3, nearRound}}) {
         const auto shape = makeShape(spec, dim, kVoxel);
         for (int k = 0; k < 20000; ++k) {
             Vec3 a = randomPoint(rng, {-1.5, -1, -0.6}, {1.5, 1, 0.6}, dim);
@@ -483,9 +510,9 @@ TEST(Domain, UnionAndIntersection) {
     EXPECT_DOUBLE_EQ(half.chi({0.1, 0, 0}), 0.1);
 
     // Three ops in sequence: (box ∪ disk) − small disk.
-    const Domain seq({box({-1, -1, 0}, {0, 1, 0}), ball({0, 0, 0}, 1.0),
-                      ball({0, 0, 0}, 0.25, CsgOp::Subtract)},
-                     2, kVoxel);
+    const Domain seq(
+        {box({-1, -1, 0}, {0, 1, 0}), ball({0, 0, 0}, 1.0), ball({0, 0, 0}, 0.25, CsgOp::Subtract)},
+        2, kVoxel);
     EXPECT_LT(seq.chi({0, 0, 0}), 0.0);
     EXPECT_GT(seq.chi({-0.9, 0.9, 0}), 0.0);
     EXPECT_GT(seq.chi({0.6, 0, 0}), 0.0);
