@@ -1,0 +1,259 @@
+// The `modeflow` command line, run as users run it: exit codes, messages that name what is
+// wrong, and no cache file left behind by a failure (DESIGN §5).
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct RunResult {
+    int status = -1;
+    std::string out, err;
+};
+
+std::string slurp(const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+class Cli : public ::testing::Test {
+protected:
+    void SetUp() override {
+        mDir = fs::temp_directory_path() /
+               ("modeflow-cli-" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+        fs::remove_all(mDir);
+        fs::create_directories(mDir);
+        mCache = mDir / "cache";
+    }
+    void TearDown() override { fs::remove_all(mDir); }
+
+    RunResult run(const std::string& args) const {
+        const fs::path out = mDir / "stdout.txt", err = mDir / "stderr.txt";
+        const std::string cmd = "env -u MODEFLOW_CACHE_DIR " + std::string(MODEFLOW_CLI) + " " +
+                                args + " >" + out.string() + " 2>" + err.string() + " </dev/null";
+        const int raw = std::system(cmd.c_str());
+        return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(out), slurp(err)};
+    }
+
+    fs::path scene(const std::string& name, const std::string& text) const {
+        const fs::path p = mDir / name;
+        std::ofstream(p) << text;
+        return p;
+    }
+
+    std::string precompute(const fs::path& s, const std::string& extra = "") const {
+        return "precompute " + s.string() + " --cache-dir " + mCache.string() + " " + extra;
+    }
+
+    int cacheFiles() const {
+        if (!fs::exists(mCache)) return 0;
+        int n = 0;
+        for (const auto& e : fs::directory_iterator(mCache)) n += e.is_regular_file();
+        return n;
+    }
+
+    /// Expects failure with one clear message naming `needle`, and no cache written.
+    void expectRejected(const std::string& args, const std::string& needle) const {
+        const RunResult r = run(args);
+        EXPECT_NE(r.status, 0) << args;
+        EXPECT_NE(r.err.find(needle), std::string::npos) << "stderr: " << r.err;
+        EXPECT_NE(r.err.find("error"), std::string::npos) << "stderr: " << r.err;
+        EXPECT_EQ(cacheFiles(), 0) << args;
+    }
+
+    fs::path mDir, mCache;
+};
+
+const char* kSmallDisk = R"(
+[grid]
+resolution = [24, 24]
+bounds_min = [-1.1, -1.1]
+bounds_max = [1.1, 1.1]
+[[domain]]
+shape = "ball"
+center = [0.0, 0.0]
+radius = 1.0
+[basis]
+velocity_modes = 8
+scalar_modes = 4
+)";
+
+std::string replaced(std::string text, const std::string& from, const std::string& to) {
+    const auto at = text.find(from);
+    if (at == std::string::npos) ADD_FAILURE() << "no '" << from << "' in the scene";
+    else text.replace(at, from.size(), to);
+    return text;
+}
+
+TEST_F(Cli, PrecomputePrintsTheCachePathLastAndReusesIt) {
+    const fs::path s = scene("disk.toml", kSmallDisk);
+    const RunResult first = run(precompute(s));
+    ASSERT_EQ(first.status, 0) << first.err;
+    std::istringstream lines(first.out);
+    std::string line, last;
+    while (std::getline(lines, line)) last = line;
+    ASSERT_TRUE(fs::exists(last)) << "last stdout line: " << last;
+    EXPECT_EQ(fs::path(last).parent_path(), mCache);
+    const auto written = fs::last_write_time(last);
+
+    const RunResult second = run(precompute(s));
+    ASSERT_EQ(second.status, 0);
+    EXPECT_NE(second.err.find("up to date"), std::string::npos) << second.err;
+    EXPECT_EQ(fs::last_write_time(last), written);
+
+    // Simulation settings do not shape the basis: same cache.
+    const fs::path sameBasis = scene("disk2.toml", std::string(kSmallDisk) + "[simulation]\ndt = 0.5\n");
+    EXPECT_NE(run(precompute(sameBasis)).err.find("up to date"), std::string::npos);
+    // A change that matters gives another cache file.
+    const fs::path other = scene("disk3.toml", replaced(kSmallDisk, "radius = 1.0", "radius = 0.9"));
+    ASSERT_EQ(run(precompute(other)).status, 0);
+    EXPECT_EQ(cacheFiles(), 2);
+
+    const RunResult forced = run(precompute(s, "--force"));
+    ASSERT_EQ(forced.status, 0);
+    EXPECT_EQ(forced.err.find("up to date"), std::string::npos);
+}
+
+TEST_F(Cli, InspectJsonReportsTheContractKeys) {
+    const fs::path s = scene("disk.toml", kSmallDisk);
+    const RunResult r = run("inspect " + s.string() + " --cache-dir " + mCache.string() + " --json");
+    ASSERT_EQ(r.status, 0) << r.err;
+    const auto j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j["dim"], 2);
+    EXPECT_EQ(j["resolution"], nlohmann::json({24, 24}));
+    EXPECT_EQ(j["velocity"]["count"], 8);
+    EXPECT_EQ(j["velocity"]["eigenvalues"].size(), 8u);
+    EXPECT_EQ(j["velocity"]["harmonic"], 0);
+    EXPECT_LE(j["velocity"]["max_divergence"].get<double>(), 1e-10);
+    EXPECT_LE(j["velocity"]["orthonormality_error"].get<double>(), 1e-10);
+    EXPECT_EQ(j["scalar"]["count"], 4);
+    EXPECT_EQ(j["scalar"]["boundary"], "neumann");
+    EXPECT_TRUE(j["timings"].contains("velocity_eigensolve"));
+    const auto& ev = j["velocity"]["eigenvalues"];
+    for (size_t i = 1; i < ev.size(); ++i) EXPECT_LE(ev[i - 1].get<double>(), ev[i].get<double>());
+    // The cache path works as the argument too.
+    const RunResult direct = run("inspect " + j["cache"]["path"].get<std::string>() + " --json");
+    ASSERT_EQ(direct.status, 0) << direct.err;
+    EXPECT_EQ(nlohmann::json::parse(direct.out)["velocity"]["eigenvalues"], ev);
+}
+
+TEST_F(Cli, HelpDescribesEverySubcommand) {
+    for (const char* sub : {"precompute", "inspect"}) {
+        const RunResult r = run(std::string(sub) + " --help");
+        EXPECT_EQ(r.status, 0);
+        EXPECT_NE(r.out.find("--cache-dir"), std::string::npos) << sub;
+    }
+    EXPECT_NE(run("").status, 0);
+}
+
+TEST_F(Cli, BadScenesAreRejectedWithTheKeyNamed) {
+    expectRejected(precompute(scene("a.toml", replaced(kSmallDisk, "scalar_modes", "scalar_mode"))),
+                   "scalar_mode");
+    expectRejected(precompute(scene("b.toml", replaced(kSmallDisk, "radius = 1.0", "radius = \"big\""))),
+                   "radius");
+    expectRejected(precompute(scene("c.toml", replaced(kSmallDisk, "[24, 24]", "[1, 24]"))),
+                   "resolution");
+    expectRejected(precompute(scene("d.toml", replaced(kSmallDisk, "[24, 24]", "[4000, 4000, 4000]"))),
+                   "resolution");
+    expectRejected(precompute(scene("e.toml", replaced(kSmallDisk, "bounds_max = [1.1, 1.1]",
+                                                       "bounds_max = [-2.0, 1.1]"))),
+                   "bounds");
+    expectRejected(precompute(mDir / "missing.toml"), "missing.toml");
+}
+
+TEST_F(Cli, EmptyOrMissingDomainsAreRejected) {
+    // A ball far outside the grid box.
+    expectRejected(precompute(scene("miss.toml", replaced(kSmallDisk, "center = [0.0, 0.0]",
+                                                          "center = [5.0, 5.0]"))),
+                   "[[domain]]");
+    // Two disjoint balls intersected: nothing left.
+    const std::string empty = std::string(kSmallDisk) +
+        "[[domain]]\nshape = \"ball\"\ncenter = [0.0, 0.0]\nradius = 0.05\nop = \"subtract\"\n"
+        "[[domain]]\nshape = \"ball\"\ncenter = [0.0, 0.0]\nradius = 0.04\nop = \"intersect\"\n";
+    expectRejected(precompute(scene("empty.toml", empty)), "[[domain]]");
+}
+
+TEST_F(Cli, TooManyModesAreRejected) {
+    const std::string tiny = replaced(kSmallDisk, "[24, 24]", "[6, 6]");
+    expectRejected(precompute(scene("v.toml", replaced(tiny, "velocity_modes = 8", "velocity_modes = 100"))),
+                   "[basis]");
+    expectRejected(precompute(scene("s.toml", replaced(tiny, "scalar_modes = 4", "scalar_modes = 100"))),
+                   "scalar_modes");
+}
+
+TEST_F(Cli, BadMeshesAreRejected) {
+    const std::string meshScene = R"(
+[grid]
+resolution = [8, 8, 8]
+bounds_min = [-1.0, -1.0, -1.0]
+bounds_max = [1.0, 1.0, 1.0]
+[[domain]]
+shape = "mesh"
+file = "MESH"
+[basis]
+velocity_modes = 4
+)";
+    expectRejected(precompute(scene("m1.toml", replaced(meshScene, "MESH", "nowhere.obj"))),
+                   "nowhere.obj");
+    std::ofstream(mDir / "garbage.obj") << "this is not\x01 an obj file\nf 7 8 9\n";
+    expectRejected(precompute(scene("m2.toml", replaced(meshScene, "MESH", "garbage.obj"))),
+                   "garbage.obj");
+    // A cube missing its top face.
+    std::ofstream(mDir / "open.obj") << "v -.5 -.5 -.5\nv .5 -.5 -.5\nv .5 .5 -.5\nv -.5 .5 -.5\n"
+                                        "v -.5 -.5 .5\nv .5 -.5 .5\nv .5 .5 .5\nv -.5 .5 .5\n"
+                                        "f 1 4 3 2\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\n";
+    expectRejected(precompute(scene("m3.toml", replaced(meshScene, "MESH", "open.obj"))), "open.obj");
+}
+
+TEST_F(Cli, UnwritableCacheDirectoryIsRejectedBeforeAnyWork) {
+    const fs::path s = scene("disk.toml", kSmallDisk);
+    std::ofstream(mDir / "plainfile") << "x";
+    const RunResult r = run("precompute " + s.string() + " --cache-dir " + (mDir / "plainfile" / "sub").string());
+    EXPECT_NE(r.status, 0);
+    EXPECT_NE(r.err.find("cache directory"), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find("eigensolve"), std::string::npos) << "work started: " << r.err;
+}
+
+TEST_F(Cli, DamagedCachesAreRefusedAndRebuilt) {
+    const fs::path s = scene("disk.toml", kSmallDisk);
+    const RunResult first = run(precompute(s));
+    ASSERT_EQ(first.status, 0) << first.err;
+    const fs::path cache = first.out.substr(0, first.out.find('\n'));
+    const std::string good = slurp(cache);
+
+    // Truncated.
+    std::ofstream(cache, std::ios::binary | std::ios::trunc) << good.substr(0, good.size() / 2);
+    RunResult r = run("inspect " + cache.string() + " --json");
+    EXPECT_NE(r.status, 0);
+    EXPECT_NE(r.err.find("truncated"), std::string::npos) << r.err;
+    EXPECT_TRUE(r.out.empty());
+    r = run(precompute(s));
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.err.find("rebuilding"), std::string::npos) << r.err;
+    EXPECT_EQ(slurp(cache).size(), good.size());
+
+    // One flipped byte in the payload.
+    std::string corrupt = good;
+    corrupt[corrupt.size() / 2] ^= 0x5a;
+    std::ofstream(cache, std::ios::binary | std::ios::trunc) << corrupt;
+    r = run("inspect " + cache.string());
+    EXPECT_NE(r.status, 0);
+    EXPECT_NE(r.err.find("corrupt"), std::string::npos) << r.err;
+
+    // Not a cache at all.
+    std::ofstream(mDir / "x.mfbasis") << "hello";
+    r = run("inspect " + (mDir / "x.mfbasis").string());
+    EXPECT_NE(r.status, 0);
+    EXPECT_NE(r.err.find("not a modeflow basis cache"), std::string::npos) << r.err;
+}
+
+}  // namespace
