@@ -42,6 +42,19 @@ double domainMeasure(const CutCellDec& dec) {
     return m;
 }
 
+/// One line per eigensolve, and its factorization/solve split in the cache's timings.
+void reportSolver(Progress& progress, const std::string& what, const SolverStats& s,
+                  BasisCache& cache) {
+    if (s.operations == 0) return;  // dense path: nothing worth reporting
+    std::ostringstream line;
+    line << std::fixed << std::setprecision(2) << "  " << what << ": " << s.operations
+         << " shift-invert solves, " << s.restarts << " Lanczos restarts, factorization "
+         << s.factorSeconds << " s, solves " << s.solveSeconds << " s";
+    progress.note(line.str());
+    cache.timings.emplace_back(what + "_factorization", s.factorSeconds);
+    cache.timings.emplace_back(what + "_solves", s.solveSeconds);
+}
+
 }  // namespace
 
 std::string basisKey(const SceneSpec& scene) {
@@ -145,6 +158,9 @@ BasisCache computeBasis(const SceneSpec& scene, Progress& progress) {
     cache.scalar.eigenvalues = scalar.eigenvalues.head(std::min<Eigen::Index>(keep, scalar.eigenvalues.size()));
     cache.scalar.modes = scalar.modes.leftCols(cache.scalar.eigenvalues.size());
     cache.scalar.omittedConstants = scalar.omittedConstants;
+    SolverStats scalarStats = firstNeumann.stats;
+    if (!neumannBasis) scalarStats += scalar.stats;
+    reportSolver(progress, "scalar", scalarStats, cache);
     cache.timings.emplace_back("scalar_eigensolve", progress.end());
 
     progress.begin("velocity eigensolve");
@@ -155,6 +171,7 @@ BasisCache computeBasis(const SceneSpec& scene, Progress& progress) {
     cache.velocity.modeNumbers = velocity.modeNumbers;
     cache.velocity.harmonic = velocity.harmonicCount;
     cache.velocity.penalty = velocity.penalty;
+    reportSolver(progress, "velocity", velocity.stats, cache);
     cache.timings.emplace_back("velocity_eigensolve", progress.end());
     return cache;
 }

@@ -8,7 +8,7 @@ packages=(
     libeigen3-dev libspectra-dev libsuitesparse-dev libopenblas0-pthread
     libopenvdb-dev libboost-iostreams-dev libtbb-dev
     libtomlplusplus-dev libcli11-dev nlohmann-json3-dev libtinyobjloader-dev
-    libgtest-dev libbenchmark-dev
+    libgtest-dev libbenchmark-dev time bc
 )
 
 missing=()

@@ -60,6 +60,7 @@ CutCellDec buildCutCellDec(const CubicalComplex& cx, const CutCellMeasures& meas
     const int n = grid.dim;
     CutCellDec dec;
     dec.grid = grid;
+    dec.wall = wall;
     dec.cells = DofMap::fromMask(positive(measures.fraction[n]));
     dec.faces = DofMap::fromMask(positive(measures.fraction[n - 1]));
 

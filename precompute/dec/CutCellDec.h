@@ -25,6 +25,7 @@ struct DofMap {
 
 struct CutCellDec {
     GridSpec grid;
+    WallKind wall = WallKind::FreeSlip;
     DofMap cells;      ///< n-cells with positive measure
     DofMap faces;      ///< (n-1)-cells with positive measure, not on the grid box
     DofMap vorticity;  ///< (n-2)-cells with a non-zero ⋆⁻¹ (see buildCutCellDec)

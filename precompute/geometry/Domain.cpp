@@ -6,6 +6,7 @@
 #include <string>
 
 #include "engine/format/Error.h"
+#include "precompute/scene/SceneLoader.h"
 
 namespace modeflow {
 
@@ -17,7 +18,7 @@ Domain::Domain(const std::vector<ShapeSpec>& shapes, int dim, double voxelSize) 
             mShapes.push_back(makeShape(shapes[i], dim, voxelSize));
         } catch (const Error& e) {
             throw Error("[[domain]] #" + std::to_string(i + 1) + " (" +
-                        std::string(shapeKindName(shapes[i].kind)) + "): " + e.what());
+                        std::string(sceneKeyword(shapes[i].kind)) + "): " + e.what());
         }
         mOps.push_back(shapes[i].op);
     }

@@ -23,7 +23,4 @@ public:
 /// @throw Error when the kind does not exist in this dimension or the mesh cannot be used.
 std::unique_ptr<ImplicitShape> makeShape(const ShapeSpec& spec, int dim, double voxelSize);
 
-/// The scene-file name of a kind ("ball", "box", ...), for messages.
-std::string_view shapeKindName(ShapeKind kind);
-
 }  // namespace modeflow

@@ -274,23 +274,6 @@ private:
 
 }  // namespace
 
-std::string_view shapeKindName(ShapeKind kind) {
-    switch (kind) {
-        case ShapeKind::Ball:
-            return "ball";
-        case ShapeKind::Box:
-            return "box";
-        case ShapeKind::Ellipsoid:
-            return "ellipsoid";
-        case ShapeKind::Cylinder:
-            return "cylinder";
-        case ShapeKind::Torus:
-            return "torus";
-        case ShapeKind::Mesh:
-            return "mesh";
-    }
-    return "unknown shape";
-}
 
 std::unique_ptr<ImplicitShape> makeShape(const ShapeSpec& spec, int dim, double voxelSize) {
     if (dim != 2 && dim != 3)

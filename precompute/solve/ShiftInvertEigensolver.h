@@ -12,11 +12,26 @@
 
 namespace modeflow {
 
+/// What a solve cost, for progress lines and `inspect` timings.
+struct SolverStats {
+    long operations = 0;  ///< shift-invert solves performed
+    long restarts = 0;    ///< Lanczos restarts
+    double factorSeconds = 0.0;
+    double solveSeconds = 0.0;
+
+    SolverStats& operator+=(const SolverStats& o) {
+        operations += o.operations;
+        restarts += o.restarts;
+        factorSeconds += o.factorSeconds;
+        solveSeconds += o.solveSeconds;
+        return *this;
+    }
+};
+
 struct EigenPairs {
     Eigen::VectorXd values;   ///< ascending
     Eigen::MatrixXd vectors;  ///< columns, M-orthonormal
-    long operations = 0;      ///< shift-invert solves performed
-    long restarts = 0;
+    SolverStats stats;
 };
 
 /// Called with the number of solves done so far (for progress on a terminal).

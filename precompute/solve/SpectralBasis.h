@@ -18,14 +18,14 @@ struct VelocityBasisResult {
     std::vector<int> modeNumbers;  ///< 1-based position of each mode in the div-free spectrum
     int harmonicCount = 0;         ///< selected modes with κ = 0
     double penalty = 0.0;          ///< grad-div penalty s that kept gradients out
-    long solves = 0;
+    SolverStats stats;
 };
 
 struct ScalarBasisResult {
     Eigen::VectorXd eigenvalues;  ///< μ², ascending
     Eigen::MatrixXd modes;        ///< cell values (n-forms), ⋆n-orthonormal
     int omittedConstants = 0;     ///< Neumann: one constant per connected component, left out
-    long solves = 0;
+    SolverStats stats;
 };
 
 /// Number of connected components of the DOF cells, linked through DOF faces.

@@ -22,8 +22,8 @@ nlohmann::json summarize(const BasisCache& c, const std::filesystem::path& path)
     j["resolution"] = std::vector<int>(c.grid.resolution.begin(), c.grid.resolution.begin() + n);
     j["bounds_min"] = std::vector<double>(c.grid.boundsMin.begin(), c.grid.boundsMin.begin() + n);
     j["bounds_max"] = std::vector<double>(c.grid.boundsMax.begin(), c.grid.boundsMax.begin() + n);
-    j["wall"] = c.wall == WallKind::FreeSlip ? "free-slip" : "no-slip";
-    j["boundary"] = c.boundary == BoundaryTreatment::CutCell ? "cut-cell" : "staircase";
+    j["wall"] = sceneKeyword(c.wall);
+    j["boundary"] = sceneKeyword(c.boundary);
     j["dofs"] = {{"faces", c.faces.size()}, {"cells", c.cells.size()}};
     j["velocity"] = {{"count", c.velocity.eigenvalues.size()},
                      {"eigenvalues", toStd(c.velocity.eigenvalues)},
@@ -33,7 +33,7 @@ nlohmann::json summarize(const BasisCache& c, const std::filesystem::path& path)
                      {"orthonormality_error", checks.velocityOrthonormality},
                      {"gradient_penalty", c.velocity.penalty}};
     j["scalar"] = {{"count", c.scalar.eigenvalues.size()},
-                   {"boundary", c.scalar.boundary == ScalarBoundary::Neumann ? "neumann" : "dirichlet"},
+                   {"boundary", sceneKeyword(c.scalar.boundary)},
                    {"eigenvalues", toStd(c.scalar.eigenvalues)},
                    {"omitted_constants", c.scalar.omittedConstants},
                    {"orthonormality_error", checks.scalarOrthonormality}};
