@@ -47,6 +47,19 @@ struct BasisCache {
         int omittedConstants = 0;
     } scalar;
 
+    /// Structural coefficients C[k][i][j] of the velocity modes (seed eq. 6.7), k < j only.
+    struct Coefficients {
+        enum class Storage { Dense, Sparse };
+        Storage storage = Storage::Dense;
+        /// Dense: packed as in engine/dynamics/PackedLayout.h (pair (k,j) by pair, i fastest).
+        std::vector<double> packed;
+        /// Sparse: the entries kept, as parallel arrays (k < j).
+        std::vector<std::int32_t> k, i, j;
+        std::vector<double> value;
+        /// Fraction of the k < j half that is non-zero (|C| > 1e-12 max |C|).
+        double density = 0.0;
+    } coefficients;
+
     /// Stage name → seconds, in pipeline order.
     std::vector<std::pair<std::string, double>> timings;
 };

@@ -131,6 +131,13 @@ std::string serialize(const BasisCache& c) {
     w.vector(c.scalar.eigenvalues);
     w.matrix(c.scalar.modes);
     w.pod<std::int32_t>(c.scalar.omittedConstants);
+    w.pod<std::int32_t>(int(c.coefficients.storage));
+    w.vector(c.coefficients.packed);
+    w.vector(c.coefficients.k);
+    w.vector(c.coefficients.i);
+    w.vector(c.coefficients.j);
+    w.vector(c.coefficients.value);
+    w.pod(c.coefficients.density);
     w.pod<std::uint64_t>(c.timings.size());
     for (const auto& [name, seconds] : c.timings) {
         w.string(name);
@@ -165,6 +172,13 @@ BasisCache deserialize(std::string_view payload, const std::filesystem::path& pa
     c.scalar.eigenvalues = r.eigenVector();
     c.scalar.modes = r.matrix();
     c.scalar.omittedConstants = r.pod<std::int32_t>();
+    c.coefficients.storage = BasisCache::Coefficients::Storage(r.pod<std::int32_t>());
+    c.coefficients.packed = r.vector<double>();
+    c.coefficients.k = r.vector<std::int32_t>();
+    c.coefficients.i = r.vector<std::int32_t>();
+    c.coefficients.j = r.vector<std::int32_t>();
+    c.coefficients.value = r.vector<double>();
+    c.coefficients.density = r.pod<double>();
     const auto timings = r.pod<std::uint64_t>();
     for (std::uint64_t i = 0; i < timings && !r.atEnd(); ++i) {
         std::string name = r.string();

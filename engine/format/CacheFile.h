@@ -14,7 +14,7 @@
 
 namespace modeflow {
 
-inline constexpr std::uint32_t kCacheFormatVersion = 1;
+inline constexpr std::uint32_t kCacheFormatVersion = 2;
 
 /// 64-bit FNV-1a; stable across platforms and runs (it names cache files).
 std::uint64_t fnv1a64(std::string_view bytes, std::uint64_t seed = 0xcbf29ce484222325ull);

@@ -138,6 +138,9 @@ TEST_F(Cli, InspectJsonReportsTheContractKeys) {
     EXPECT_EQ(j["scalar"]["count"], 4);
     EXPECT_EQ(j["scalar"]["boundary"], "neumann");
     EXPECT_TRUE(j["timings"].contains("velocity_eigensolve"));
+    EXPECT_EQ(j["coefficients"]["storage"], "dense");
+    EXPECT_EQ(j["coefficients"]["antisymmetry_error"], 0.0);
+    EXPECT_EQ(j["coefficients"]["stored"], 8 * 8 * 7 / 2);
     const auto& ev = j["velocity"]["eigenvalues"];
     for (size_t i = 1; i < ev.size(); ++i) EXPECT_LE(ev[i - 1].get<double>(), ev[i].get<double>());
     // The cache path works as the argument too.

@@ -14,10 +14,10 @@ namespace {
 
 std::vector<double> toStd(const Eigen::VectorXd& v) { return {v.data(), v.data() + v.size()}; }
 
-nlohmann::json summarize(const BasisCache& c, const std::filesystem::path& path) {
+nlohmann::ordered_json summarize(const BasisCache& c, const std::filesystem::path& path) {
     const BasisChecks checks = checkBasis(c);
     const int n = c.grid.dim;
-    nlohmann::json j;
+    nlohmann::ordered_json j;
     j["dim"] = n;
     j["resolution"] = std::vector<int>(c.grid.resolution.begin(), c.grid.resolution.begin() + n);
     j["bounds_min"] = std::vector<double>(c.grid.boundsMin.begin(), c.grid.boundsMin.begin() + n);
@@ -37,7 +37,16 @@ nlohmann::json summarize(const BasisCache& c, const std::filesystem::path& path)
                    {"eigenvalues", toStd(c.scalar.eigenvalues)},
                    {"omitted_constants", c.scalar.omittedConstants},
                    {"orthonormality_error", checks.scalarOrthonormality}};
-    nlohmann::json timings = nlohmann::json::object();
+    const auto& co = c.coefficients;
+    const bool dense = co.storage == BasisCache::Coefficients::Storage::Dense;
+    j["coefficients"] = {
+        {"storage", dense ? "dense" : "sparse"},
+        {"modes", c.velocity.modes.cols()},
+        {"stored", dense ? co.packed.size() : co.value.size()},
+        {"density", co.density},
+        // Only k < j is stored; C[j][i][k] = −C[k][i][j] is implied, so exactly antisymmetric.
+        {"antisymmetry_error", 0.0}};
+    nlohmann::ordered_json timings = nlohmann::ordered_json::object();
     for (const auto& [stage, seconds] : c.timings) timings[stage] = seconds;
     j["timings"] = timings;
     j["cache"] = {{"path", path.string()},
@@ -46,12 +55,12 @@ nlohmann::json summarize(const BasisCache& c, const std::filesystem::path& path)
     return j;
 }
 
-void printText(const nlohmann::json& j) {
+void printText(const nlohmann::ordered_json& j) {
     std::cout << "grid       " << j["dim"] << "D " << j["resolution"].dump() << ", "
               << j["boundary"].get<std::string>() << ", " << j["wall"].get<std::string>() << "\n"
               << "dofs       " << j["dofs"]["faces"] << " faces, " << j["dofs"]["cells"]
               << " cells\n";
-    auto list = [](const nlohmann::json& values) {
+    auto list = [](const nlohmann::ordered_json& values) {
         std::ostringstream s;
         s << std::setprecision(6);
         size_t i = 0;
@@ -72,6 +81,9 @@ void printText(const nlohmann::json& j) {
     const auto& s = j["scalar"];
     std::cout << "scalar     " << s["count"] << " " << s["boundary"].get<std::string>()
               << " modes, μ² = " << list(s["eigenvalues"]) << "\n";
+    const auto& co = j["coefficients"];
+    std::cout << "C          " << co["storage"].get<std::string>() << ", " << co["stored"]
+              << " stored entries (density " << co["density"].get<double>() << ")\n";
     std::cout << "timings   ";
     for (const auto& [stage, seconds] : j["timings"].items())
         std::cout << " " << stage << " " << std::fixed << std::setprecision(2)
@@ -103,7 +115,7 @@ Command addInspect(CLI::App& app) {
             Progress progress = Progress::toStderr();
             path = ensureCache(scene, resolveCacheDir(opts->cacheDir), false, progress).path;
         }
-        const nlohmann::json j = summarize(readCache(path), path);
+        const nlohmann::ordered_json j = summarize(readCache(path), path);
         if (opts->json) std::cout << j.dump() << std::endl;
         else printText(j);
         return 0;

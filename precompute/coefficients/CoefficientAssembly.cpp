@@ -1,0 +1,127 @@
+#include "precompute/coefficients/CoefficientAssembly.h"
+
+#include <algorithm>
+
+#include <Eigen/SparseCore>
+
+#include "engine/dynamics/PackedLayout.h"
+
+namespace modeflow {
+namespace {
+
+using Triplet = Eigen::Triplet<double>;
+using ColSparse = Eigen::SparseMatrix<double>;
+
+/// Linear maps from face fluxes to weighted vorticity and to the two velocity components at the
+/// vorticity elements of one type (only elements with positive weight are kept).
+struct ElementSampling {
+    ColSparse vorticity;  ///< w_e ω(e)
+    ColSparse velocityB;  ///< u_b(e)
+    ColSparse velocityC;  ///< u_c(e)
+};
+
+ElementSampling sampleElements(const CubicalComplex& cx, const CutCellMeasures& measures,
+                               const CutCellDec& dec, unsigned axes, int b, int c) {
+    const GridSpec& grid = cx.grid();
+    const int n = grid.dim;
+    const unsigned all = (1u << n) - 1;
+    std::vector<Triplet> omega, ub, uc;
+    std::int64_t rows = 0;
+
+    // Face DOF beside `pos` with the given normal, or -1 (outside the grid or not a DOF).
+    auto faceDof = [&](Index3 pos, int normal) -> std::int64_t {
+        for (int a = 0; a < n; ++a)
+            if (pos[a] < 0 || pos[a] > grid.resolution[a] - ((a == normal) ? 0 : 1)) return -1;
+        return dec.faces.toLocal[cx.index(Element{all & ~(1u << normal), pos})];
+    };
+    auto faceStar = [&](std::int64_t dof) { return dec.faceStar[dof]; };
+    auto faceVelocity = [&](std::int64_t dof) {
+        // flux / |face ∩ Ω| = ⋆Ψ / |dual edge|
+        const Element f = cx.element(n - 1, dec.faces.toGlobal[dof]);
+        return faceStar(dof) / dualMeasure(grid, f);
+    };
+
+    const Index3 extent = cx.extent(axes);
+    for (int k = 0; k < extent[2]; ++k)
+        for (int j = 0; j < extent[1]; ++j)
+            for (int i = 0; i < extent[0]; ++i) {
+                const Element e{axes, {i, j, k}};
+                const double fraction = measures.fraction[n - 2][cx.index(e)];
+                if (fraction <= 0.0) continue;
+                const double dualArea = dualMeasure(grid, e);
+                const double weight = fraction * primalMeasure(grid, axes) * dualArea;
+                Index3 minusB = e.pos, minusC = e.pos;
+                --minusB[b];
+                --minusC[c];
+                // ∂_b u_c: c-normal faces on the +b side (at pos) and -b side (pos - e_b).
+                // −∂_c u_b: b-normal faces on the +c side (at pos) and -c side (pos - e_c).
+                const std::pair<std::int64_t, double> circulation[4] = {
+                    {faceDof(e.pos, c), 1.0}, {faceDof(minusB, c), -1.0},
+                    {faceDof(e.pos, b), -1.0}, {faceDof(minusC, b), 1.0}};
+                for (const auto& [dof, sign] : circulation)
+                    if (dof >= 0) omega.emplace_back(rows, dof, weight * sign * faceStar(dof) / dualArea);
+                for (std::int64_t dof : {faceDof(e.pos, b), faceDof(minusC, b)})
+                    if (dof >= 0) ub.emplace_back(rows, dof, 0.5 * faceVelocity(dof));
+                for (std::int64_t dof : {faceDof(e.pos, c), faceDof(minusB, c)})
+                    if (dof >= 0) uc.emplace_back(rows, dof, 0.5 * faceVelocity(dof));
+                ++rows;
+            }
+    ElementSampling s;
+    const auto cols = Eigen::Index(dec.faces.size());
+    s.vorticity.resize(rows, cols);
+    s.vorticity.setFromTriplets(omega.begin(), omega.end());
+    s.velocityB.resize(rows, cols);
+    s.velocityB.setFromTriplets(ub.begin(), ub.end());
+    s.velocityC.resize(rows, cols);
+    s.velocityC.setFromTriplets(uc.begin(), uc.end());
+    return s;
+}
+
+/// packed(:, pair(k,j)) += Ωᵀ R(k,j), R_e(k,j) = P_ek Q_ej − Q_ek P_ej, in blocks of pairs so the
+/// products are matrix-matrix (cache friendly, threaded by Eigen).
+void accumulate(const Eigen::MatrixXd& omega, const Eigen::MatrixXd& p, const Eigen::MatrixXd& q,
+                std::vector<double>& packed) {
+    const int modes = int(p.cols());
+    const Eigen::Index elements = p.rows();
+    const std::size_t pairs = pairCount(std::size_t(modes));
+    std::vector<int> pairK(pairs), pairJ(pairs);
+    for (int k = 0, at = 0; k < modes; ++k)
+        for (int j = k + 1; j < modes; ++j, ++at) pairK[at] = k, pairJ[at] = j;
+
+    Eigen::Map<Eigen::MatrixXd> out(packed.data(), modes, Eigen::Index(pairs));
+    constexpr Eigen::Index kBlock = 256;
+    Eigen::MatrixXd r(elements, kBlock);
+    for (Eigen::Index start = 0; start < Eigen::Index(pairs); start += kBlock) {
+        const Eigen::Index count = std::min<Eigen::Index>(kBlock, Eigen::Index(pairs) - start);
+#pragma omp parallel for schedule(static)
+        for (Eigen::Index m = 0; m < count; ++m) {
+            const int k = pairK[size_t(start + m)], j = pairJ[size_t(start + m)];
+            r.col(m) = p.col(k).cwiseProduct(q.col(j)) - q.col(k).cwiseProduct(p.col(j));
+        }
+        out.middleCols(start, count).noalias() += omega.transpose() * r.leftCols(count);
+    }
+}
+
+}  // namespace
+
+std::vector<double> assembleStructuralCoefficients(const CubicalComplex& complex,
+                                                   const CutCellMeasures& measures,
+                                                   const CutCellDec& dec,
+                                                   const Eigen::MatrixXd& modes) {
+    const int n = complex.dim();
+    std::vector<double> packed(packedSize(std::size_t(modes.cols())), 0.0);
+    if (modes.cols() < 2) return packed;
+    for (unsigned axes : complex.types(n - 2)) {
+        // 3D: edge along a, (b, c) = (a+1, a+2) mod 3. 2D: vertices, (b, c) = (x, y).
+        const int a = n == 3 ? __builtin_ctz(axes) : 2;
+        const int b = (a + 1) % 3, c = (a + 2) % 3;
+        const ElementSampling s = sampleElements(complex, measures, dec, axes, b, c);
+        const Eigen::MatrixXd omega = s.vorticity * modes;
+        const Eigen::MatrixXd p = s.velocityB * modes;
+        const Eigen::MatrixXd q = s.velocityC * modes;
+        accumulate(omega, p, q, packed);
+    }
+    return packed;
+}
+
+}  // namespace modeflow

@@ -1,0 +1,30 @@
+#pragma once
+/// @file CoefficientAssembly.h
+/// The structural coefficients C[k][i][j] = ∫(∇×Ψi)·(Ψk×Ψj) (seed eq. 6.7, DESIGN §3) of a
+/// velocity basis on a cut-cell grid, by quadrature over the vorticity elements (3D edges,
+/// 2D vertices).
+///
+/// At each element e (axis a; b, c the next axes in cyclic order; in 2D a = z, b = x, c = y):
+///   ω_i(e)  = (∂_b u_c − ∂_c u_b)(e): circulation of ⋆Ψi around the dual face / its area,
+///   u_b, u_c: the mean velocity of the two b-normal and the two c-normal faces touching e,
+///   C[k][i][j] += w_e ω_i(e) (u_kb u_jc − u_kc u_jb),   w_e = |e ∩ Ω| · |dual of e|.
+/// The cross product makes C exactly antisymmetric in k ↔ j; only k < j is computed and stored,
+/// in the packed layout of engine/dynamics/PackedLayout.h.
+
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "precompute/dec/CutCellDec.h"
+#include "precompute/dec/CutCellMeasures.h"
+
+namespace modeflow {
+
+/// Packed k < j coefficients of the columns of `modes` (face fluxes on dec.faces).
+/// Cost: N²(N−1)/2 · E multiply-adds, run as blocked matrix products.
+std::vector<double> assembleStructuralCoefficients(const CubicalComplex& complex,
+                                                   const CutCellMeasures& measures,
+                                                   const CutCellDec& dec,
+                                                   const Eigen::MatrixXd& modes);
+
+}  // namespace modeflow
