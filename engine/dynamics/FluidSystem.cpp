@@ -1,0 +1,55 @@
+#include "engine/dynamics/FluidSystem.h"
+
+#include <string>
+
+#include "engine/format/Error.h"
+
+namespace modeflow {
+
+FluidSystem::FluidSystem(const StructuralCoefficients& coefficients, FluidParameters parameters)
+    : mCoefficients(coefficients), mFiltered(parameters.alpha != 0.0) {
+    const int n = coefficients.size();
+    if (!(parameters.viscosity >= 0.0) || !(parameters.alpha >= 0.0)) {
+        throw Error("fluid dynamics: viscosity and alpha must be non-negative");
+    }
+    const bool needsKappa = parameters.viscosity > 0.0 || parameters.alpha > 0.0;
+    const Eigen::Index given = parameters.kappaSquared.size();
+    if ((needsKappa || given != 0) && given != n) {
+        throw Error("fluid dynamics: the kappa^2 list has " + std::to_string(given) +
+                    " entries for " + std::to_string(n) + " modes" +
+                    (needsKappa ? " (viscosity and alpha need one per mode)" : ""));
+    }
+    if (given != 0 && (parameters.kappaSquared.array() < 0.0).any()) {
+        throw Error("fluid dynamics: kappa^2 values must be non-negative");
+    }
+    const double alpha2 = parameters.alpha * parameters.alpha;
+    mMass = needsKappa ? Eigen::VectorXd(1.0 + alpha2 * parameters.kappaSquared.array())
+                       : Eigen::VectorXd::Ones(n);
+    mDecay = needsKappa ? Eigen::VectorXd(parameters.viscosity * parameters.kappaSquared)
+                        : Eigen::VectorXd::Zero(n);
+}
+
+void FluidSystem::rhs(const Eigen::VectorXd& v, Eigen::VectorXd& out) const {
+    if (mFiltered) {
+        mCoefficients.apply(mMass.cwiseProduct(v), v, out);
+    } else {
+        mCoefficients.apply(v, v, out);
+    }
+}
+
+void FluidSystem::linearize(const Eigen::VectorXd& v, Eigen::VectorXd& out,
+                            Eigen::MatrixXd& jac) const {
+    // R(v) = apply(Mv, v): ∂R/∂v = byJ(v)·M + byI(Mv), and R = byI(Mv)·v.
+    Eigen::MatrixXd byJ;
+    if (mFiltered) {
+        mCoefficients.linearize(mMass.cwiseProduct(v), v, jac, byJ);
+        out.noalias() = jac * v;
+        jac += byJ * mMass.asDiagonal();
+    } else {
+        mCoefficients.linearize(v, v, jac, byJ);
+        out.noalias() = jac * v;
+        jac += byJ;
+    }
+}
+
+}  // namespace modeflow

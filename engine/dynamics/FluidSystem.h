@@ -1,0 +1,46 @@
+#pragma once
+/// @file FluidSystem.h
+/// The reduced Euler / Navier–Stokes / LANS-α model over the modal velocity v (DESIGN §3):
+///
+///     (1 + α²κ_k²) v̇_k = Σ_ij (1 + α²κ_i²) C[k][i][j] v_i v_j + f_k,  then  v_k ← e^{−νκ_k²h} v_k.
+///
+/// With α = 0 this is seed eq. 6.6. With α > 0 it is the LANS-α model of seed §6.3.5: the left side
+/// is the momentum m_k = (1 + α²κ_k²) v_k, forces act on m, and the energy ½Σ(1 + α²κ_i²)v_i² is
+/// conserved because vᵀ apply(m, v) = 0 by the k↔j antisymmetry — for the midpoint rule too, as the
+/// identity holds at the midpoint state. κ² may come in any order (frequency-shaped bases).
+
+#include <Eigen/Core>
+
+#include "engine/dynamics/ModalSystem.h"
+#include "engine/dynamics/StructuralCoefficients.h"
+
+namespace modeflow {
+
+struct FluidParameters {
+    /// κ_i² of each basis mode; needed when viscosity or alpha is non-zero.
+    Eigen::VectorXd kappaSquared;
+    double viscosity = 0.0;  ///< ν
+    double alpha = 0.0;      ///< LANS-α filter length
+};
+
+class FluidSystem final : public ModalSystem {
+public:
+    /// Keeps a reference to `coefficients`, which must outlive the system. Throws
+    /// modeflow::Error for negative parameters or a κ² list of the wrong length.
+    FluidSystem(const StructuralCoefficients& coefficients, FluidParameters parameters = {});
+
+    int dimension() const override { return mCoefficients.size(); }
+    const Eigen::VectorXd& mass() const override { return mMass; }
+    const Eigen::VectorXd& decayRates() const override { return mDecay; }
+    void rhs(const Eigen::VectorXd& v, Eigen::VectorXd& out) const override;
+    void linearize(const Eigen::VectorXd& v, Eigen::VectorXd& out,
+                   Eigen::MatrixXd& jac) const override;
+
+private:
+    const StructuralCoefficients& mCoefficients;
+    bool mFiltered = false;  ///< α > 0, so the mass is not the identity
+    Eigen::VectorXd mMass;
+    Eigen::VectorXd mDecay;
+};
+
+}  // namespace modeflow

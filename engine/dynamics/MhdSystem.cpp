@@ -1,0 +1,75 @@
+#include "engine/dynamics/MhdSystem.h"
+
+#include <string>
+
+#include "engine/format/Error.h"
+
+namespace modeflow {
+
+MhdSystem::MhdSystem(const StructuralCoefficients& coefficients, MhdParameters parameters)
+    : mCoefficients(coefficients) {
+    const int n = coefficients.size();
+    if (!(parameters.viscosity >= 0.0) || !(parameters.magneticDiffusivity >= 0.0)) {
+        throw Error("MHD dynamics: viscosity and magnetic diffusivity must be non-negative");
+    }
+    const bool needsKappa = parameters.viscosity > 0.0 || parameters.magneticDiffusivity > 0.0;
+    const Eigen::Index given = parameters.kappaSquared.size();
+    if ((needsKappa || given != 0) && given != n) {
+        throw Error("MHD dynamics: the kappa^2 list has " + std::to_string(given) +
+                    " entries for " + std::to_string(n) + " modes");
+    }
+    if (given != 0 && (parameters.kappaSquared.array() < 0.0).any()) {
+        throw Error("MHD dynamics: kappa^2 values must be non-negative");
+    }
+    mMass = Eigen::VectorXd::Ones(2 * n);
+    mDecay = Eigen::VectorXd::Zero(2 * n);
+    if (needsKappa) {
+        mDecay << parameters.viscosity * parameters.kappaSquared,
+            parameters.magneticDiffusivity * parameters.kappaSquared;
+    }
+}
+
+Eigen::VectorXd MhdSystem::state(const Eigen::VectorXd& v, const Eigen::VectorXd& f) const {
+    const int n = mCoefficients.size();
+    if (v.size() != n || f.size() != n) {
+        throw Error("MHD dynamics: velocity and field need " + std::to_string(n) +
+                    " coefficients each, got " + std::to_string(v.size()) + " and " +
+                    std::to_string(f.size()));
+    }
+    Eigen::VectorXd x(2 * n);
+    x << v, f;
+    return x;
+}
+
+void MhdSystem::rhs(const Eigen::VectorXd& x, Eigen::VectorXd& out) const {
+    const int n = mCoefficients.size();
+    const Eigen::VectorXd v = x.head(n), f = x.tail(n);
+    Eigen::VectorXd fluid, lorentz, induction;
+    mCoefficients.apply(v, v, fluid);
+    mCoefficients.apply(f, f, lorentz);
+    mCoefficients.advect(v, f, induction);
+    out.resize(2 * n);
+    out << fluid - lorentz, induction;
+}
+
+void MhdSystem::linearize(const Eigen::VectorXd& x, Eigen::VectorXd& out,
+                          Eigen::MatrixXd& jac) const {
+    // With S(a) = byI and M(b) = byJ of StructuralCoefficients::linearize:
+    //   vᵀC v = S(v)v, FᵀC F = S(F)F, the induction term is −M(v)ᵀF (it is linear in F), so
+    //   ∂v̇/∂v = S(v) + M(v), ∂v̇/∂F = −S(F) − M(F), ∂Ḟ/∂v = M(F)ᵀ, ∂Ḟ/∂F = −M(v)ᵀ.
+    const int n = mCoefficients.size();
+    const Eigen::VectorXd v = x.head(n), f = x.tail(n);
+    Eigen::MatrixXd sv, mv, sf, mf;
+    mCoefficients.linearize(v, v, sv, mv);
+    mCoefficients.linearize(f, f, sf, mf);
+    out.resize(2 * n);
+    out.head(n).noalias() = sv * v - sf * f;
+    out.tail(n).noalias() = -mv.transpose() * f;
+    jac.resize(2 * n, 2 * n);
+    jac.topLeftCorner(n, n) = sv + mv;
+    jac.topRightCorner(n, n) = -(sf + mf);
+    jac.bottomLeftCorner(n, n) = mf.transpose();
+    jac.bottomRightCorner(n, n) = -mv.transpose();
+}
+
+}  // namespace modeflow

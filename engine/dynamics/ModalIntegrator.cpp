@@ -1,0 +1,170 @@
+#include "engine/dynamics/ModalIntegrator.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "engine/dynamics/ThreadCount.h"
+#include "engine/format/Error.h"
+
+namespace modeflow {
+
+ModalIntegrator::ModalIntegrator(const ModalSystem& system, IntegratorSettings settings)
+    : mSystem(system), mSettings(settings), mDecays((system.decayRates().array() != 0.0).any()) {
+    if (!(settings.relativeTolerance > 0.0) || settings.maxIterations < 1) {
+        throw Error("integrator: the Newton tolerance and iteration limit must be positive");
+    }
+    if (!(settings.jacobianReuseBelow >= 0.0) || settings.threads < 0) {
+        throw Error("integrator: the Jacobian reuse threshold and thread count must not be "
+                    "negative");
+    }
+}
+
+StepReport ModalIntegrator::step(Eigen::VectorXd& x, double h) {
+    return advance(x, 0.0, h, nullptr);
+}
+
+StepReport ModalIntegrator::step(Eigen::VectorXd& x, double h, const Eigen::VectorXd& force) {
+    const ForceFunction constant = [&force](double) { return force; };
+    return advance(x, 0.0, h, &constant);
+}
+
+StepReport ModalIntegrator::step(Eigen::VectorXd& x, double t, double h,
+                                 const ForceFunction& force) {
+    return advance(x, t, h, force ? &force : nullptr);
+}
+
+StepReport ModalIntegrator::advance(Eigen::VectorXd& x, double t, double h,
+                                    const ForceFunction* force) {
+    if (x.size() != mSystem.dimension()) {
+        throw Error("integrator: the state has " + std::to_string(x.size()) +
+                    " entries, the system " + std::to_string(mSystem.dimension()));
+    }
+    if (!std::isfinite(h)) throw Error("integrator: the time step must be finite");
+    const ThreadCount threads(mSettings.threads);
+    decay(x, 0.5 * h);
+    StepReport report;
+    switch (mSettings.scheme) {
+        case TimeScheme::ExplicitEuler: explicitEuler(x, t, h, force); break;
+        case TimeScheme::RungeKutta4: rungeKutta4(x, t, h, force); break;
+        case TimeScheme::Midpoint: report = midpoint(x, t, h, force); break;
+        case TimeScheme::Trapezoidal: report = trapezoidal(x, t, h, force); break;
+    }
+    decay(x, 0.5 * h);
+    return report;
+}
+
+void ModalIntegrator::explicitEuler(Eigen::VectorXd& x, double t, double h,
+                                    const ForceFunction* force) {
+    x += h * velocity(x, t, force);
+}
+
+void ModalIntegrator::rungeKutta4(Eigen::VectorXd& x, double t, double h,
+                                  const ForceFunction* force) {
+    const Eigen::VectorXd k1 = velocity(x, t, force);
+    const Eigen::VectorXd k2 = velocity(x + 0.5 * h * k1, t + 0.5 * h, force);
+    const Eigen::VectorXd k3 = velocity(x + 0.5 * h * k2, t + 0.5 * h, force);
+    const Eigen::VectorXd k4 = velocity(x + h * k3, t + h, force);
+    x += (h / 6.0) * (k1 + 2.0 * k2 + 2.0 * k3 + k4);
+}
+
+StepReport ModalIntegrator::midpoint(Eigen::VectorXd& x, double t, double h,
+                                     const ForceFunction* force) {
+    // Starting from w = x, the first Newton update is the linearly implicit midpoint step.
+    Eigen::VectorXd w = x;
+    const StepReport report = newton(x, w, h, true, h * forceAt(t + 0.5 * h, force));
+    x = w;
+    return report;
+}
+
+StepReport ModalIntegrator::trapezoidal(Eigen::VectorXd& x, double t, double h,
+                                        const ForceFunction* force) {
+    Eigen::VectorXd r0;
+    mSystem.rhs(x, r0);
+    const Eigen::VectorXd f0 = forceAt(t, force);
+    const Eigen::VectorXd known = 0.5 * h * (r0 + f0 + forceAt(t + h, force));
+    // R(x) is at hand, so the explicit Euler predictor costs nothing.
+    Eigen::VectorXd w = x + h * (r0 + f0).cwiseQuotient(mSystem.mass());
+    const StepReport report = newton(x, w, h, false, known);
+    x = w;
+    return report;
+}
+
+StepReport ModalIntegrator::newton(const Eigen::VectorXd& x, Eigen::VectorXd& w, double h,
+                                   bool atMidpoint, const Eigen::VectorXd& constantPart) {
+    // Solves G(w) = M(w − x) − c·R(y) − constantPart = 0 with y = (x + w)/2, c = h (midpoint) or
+    // y = w, c = h/2 (trapezoidal); in both cases ∂G/∂w = M − (h/2)·∂R/∂y.
+    const Eigen::VectorXd& mass = mSystem.mass();
+    const double c = atMidpoint ? h : 0.5 * h;
+    const double momentum = mass.cwiseProduct(x).norm();
+    const double nearSolution = std::sqrt(mSettings.relativeTolerance);
+    Eigen::VectorXd y, r, residual;
+    Eigen::MatrixXd jac;
+    StepReport report;
+    double previous = INFINITY;  // relative residual of the last evaluation
+    bool freshJacobian = true;
+    for (;;) {
+        y = atMidpoint ? Eigen::VectorXd(0.5 * (x + w)) : w;
+        if (freshJacobian) {
+            mSystem.linearize(y, r, jac);
+        } else {
+            mSystem.rhs(y, r);
+        }
+        residual = mass.cwiseProduct(w - x) - c * r - constantPart;
+        const double scale = std::max(momentum, mass.cwiseProduct(w).norm());
+        const double norm = residual.norm();
+        if (!std::isfinite(norm)) {
+            throw Error("integrator: Newton diverged (the state is no longer finite); reduce dt");
+        }
+        report.residual = scale > 0.0 ? norm / scale : norm;
+        if (norm <= mSettings.relativeTolerance * scale) return report;
+        // Close to the solution a residual that stops falling is round-off, not slow
+        // convergence: further iterations cannot help, so stop there.
+        const bool stalled = report.residual >= previous && report.residual <= nearSolution;
+        if (report.iterations == mSettings.maxIterations || stalled) {
+            report.converged = false;
+            return report;
+        }
+        if (freshJacobian) {
+            jac *= -0.5 * h;
+            jac.diagonal() += mass;
+            {
+                // Eigen would fork threads for each blocked update of this small LU: a net loss
+                // at these sizes, and a large one when the machine is busy.
+                const ThreadCount serial(1);
+                mLu.compute(jac);
+            }
+            ++report.jacobians;
+        }
+        // Keep this factorization next time only if it is already accurate to the residual's
+        // order and, after a reuse, it still cut the residual by at least 100.
+        const bool reusePaidOff = freshJacobian || report.residual <= 0.01 * previous;
+        freshJacobian = !(report.residual <= mSettings.jacobianReuseBelow && reusePaidOff);
+        previous = report.residual;
+        w -= mLu.solve(residual);
+        ++report.iterations;
+    }
+}
+
+Eigen::VectorXd ModalIntegrator::velocity(const Eigen::VectorXd& x, double t,
+                                          const ForceFunction* force) const {
+    Eigen::VectorXd r;
+    mSystem.rhs(x, r);
+    return (r + forceAt(t, force)).cwiseQuotient(mSystem.mass());
+}
+
+Eigen::VectorXd ModalIntegrator::forceAt(double t, const ForceFunction* force) const {
+    if (!force) return Eigen::VectorXd::Zero(mSystem.dimension());
+    Eigen::VectorXd f = (*force)(t);
+    if (f.size() != mSystem.dimension()) {
+        throw Error("integrator: the force has " + std::to_string(f.size()) +
+                    " entries, the system " + std::to_string(mSystem.dimension()));
+    }
+    return f;
+}
+
+void ModalIntegrator::decay(Eigen::VectorXd& x, double h) const {
+    if (mDecays) x.array() *= (-h * mSystem.decayRates().array()).exp();
+}
+
+}  // namespace modeflow

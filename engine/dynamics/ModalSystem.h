@@ -1,0 +1,32 @@
+#pragma once
+/// @file ModalSystem.h
+/// A reduced model in the form the integrators advance:
+///
+///     M ẋ = R(x) + f(t),   then   ẋ_i = −r_i x_i   (operator split)
+///
+/// with a constant diagonal mass M (ones for Euler and MHD, 1 + α²κ² for LANS-α), a quadratic
+/// right-hand side R built from the structural coefficients (seed eq. 6.6), its analytic Jacobian
+/// for Newton, and decay rates r (νκ² for viscosity, seed §6.3.5) applied as exact exponentials.
+
+#include <Eigen/Core>
+
+namespace modeflow {
+
+class ModalSystem {
+public:
+    virtual ~ModalSystem() = default;
+
+    /// Length of the state x.
+    virtual int dimension() const = 0;
+    /// Diagonal of M.
+    virtual const Eigen::VectorXd& mass() const = 0;
+    /// Decay rates r_i ≥ 0.
+    virtual const Eigen::VectorXd& decayRates() const = 0;
+    /// out = R(x).
+    virtual void rhs(const Eigen::VectorXd& x, Eigen::VectorXd& out) const = 0;
+    /// out = R(x) and jac = ∂R/∂x, in as few passes over the coefficients as possible.
+    virtual void linearize(const Eigen::VectorXd& x, Eigen::VectorXd& out,
+                           Eigen::MatrixXd& jac) const = 0;
+};
+
+}  // namespace modeflow

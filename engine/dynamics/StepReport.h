@@ -1,0 +1,19 @@
+#pragma once
+/// @file StepReport.h
+/// What one integrator step reports. Explicit schemes report zero iterations and residual.
+
+namespace modeflow {
+
+struct StepReport {
+    /// Newton iterations (updates of the state) the implicit scheme took.
+    int iterations = 0;
+    /// Jacobians evaluated and factorized; the other iterations reused the last one.
+    int jacobians = 0;
+    /// |residual| of the scheme's equation at the accepted state, relative to |M x|.
+    double residual = 0.0;
+    /// false if Newton stopped at the iteration limit or stalled above the tolerance (the state is
+    /// still the best iterate, so the caller may go on, warn, or reduce the step).
+    bool converged = true;
+};
+
+}  // namespace modeflow

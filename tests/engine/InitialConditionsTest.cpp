@@ -1,0 +1,56 @@
+/// @file InitialConditionsTest.cpp
+/// Random band-limited and explicit modal initial velocities.
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Core>
+
+#include "engine/dynamics/Diagnostics.h"
+#include "engine/dynamics/InitialConditions.h"
+#include "engine/format/Error.h"
+
+namespace modeflow {
+namespace {
+
+TEST(RandomVelocity, HasTheEnergyAndTheBand) {
+    const Eigen::VectorXd v = randomVelocity(40, {5, 19, 2.5, 7});
+    EXPECT_NEAR(energy(v), 2.5, 1e-14);
+    for (int i = 0; i < 40; ++i) {
+        if (i < 5 || i > 19) {
+            EXPECT_EQ(v[i], 0.0) << "mode " << i << " is outside the band";
+        } else {
+            EXPECT_NE(v[i], 0.0) << "mode " << i << " is inside the band";
+        }
+    }
+}
+
+TEST(RandomVelocity, IsReproducibleAndSeedDependent) {
+    const RandomVelocitySpec spec{0, -1, 1.0, 42};
+    EXPECT_EQ(randomVelocity(30, spec), randomVelocity(30, spec));
+    RandomVelocitySpec other = spec;
+    other.seed = 43;
+    EXPECT_GT((randomVelocity(30, spec) - randomVelocity(30, other)).norm(), 0.1);
+    // Standard-normal amplitudes: over many modes the sample kurtosis is near 3.
+    const Eigen::VectorXd many = randomVelocity(20000, spec);
+    const double m2 = many.array().square().mean(), m4 = many.array().pow(4).mean();
+    EXPECT_NEAR(m4 / (m2 * m2), 3.0, 0.2);
+}
+
+TEST(RandomVelocity, RejectsBadBands) {
+    EXPECT_THROW(randomVelocity(10, {5, 10, 1.0, 1}), Error);
+    EXPECT_THROW(randomVelocity(10, {6, 5, 1.0, 1}), Error);
+    EXPECT_THROW(randomVelocity(10, {-1, 5, 1.0, 1}), Error);
+    EXPECT_THROW(randomVelocity(10, {0, 5, -1.0, 1}), Error);
+}
+
+TEST(ModalAmplitudes, SetsTheGivenModes) {
+    const Eigen::VectorXd v = modalAmplitudes(6, {{0, 1.5}, {4, -2.0}});
+    Eigen::VectorXd expected(6);
+    expected << 1.5, 0, 0, 0, -2.0, 0;
+    EXPECT_EQ(v, expected);
+    EXPECT_THROW(modalAmplitudes(6, {{6, 1.0}}), Error);
+    EXPECT_THROW(modalAmplitudes(6, {{2, 1.0}, {2, 3.0}}), Error);
+}
+
+}  // namespace
+}  // namespace modeflow

@@ -1,0 +1,175 @@
+/// @file LansMhdTest.cpp
+/// LANS-α and MHD (seed §6.3.5): analytic Jacobians, and the invariants the midpoint rule must
+/// keep to solver tolerance — ½Σ(1 + α²κ²)v², and ½(|v|² + |F|²) with Σ v_i F_i.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "engine/dynamics/DenseCoefficients.h"
+#include "engine/dynamics/Diagnostics.h"
+#include "engine/dynamics/FluidSystem.h"
+#include "engine/dynamics/MhdSystem.h"
+#include "engine/dynamics/ModalIntegrator.h"
+#include "engine/dynamics/PackedLayout.h"
+#include "engine/dynamics/SparseCoefficients.h"
+#include "engine/format/Error.h"
+#include "tests/engine/RandomCoefficients.h"
+
+namespace modeflow {
+namespace {
+
+using testing::randomDense;
+using testing::randomVector;
+
+Eigen::VectorXd shapedKappaSquared(int n) {
+    Eigen::VectorXd k2(n);
+    for (int i = 0; i < n; ++i) k2[i] = (i % 3 == 0) ? 2.0 + i : 400.0 - 5.0 * i;
+    return k2;
+}
+
+/// Largest relative difference between the analytic Jacobian and central differences (exact
+/// for a quadratic R, up to round-off).
+double jacobianError(const ModalSystem& system, const Eigen::VectorXd& x) {
+    Eigen::VectorXd r, plus, minus;
+    Eigen::MatrixXd jac;
+    system.linearize(x, r, jac);
+    system.rhs(x, plus);
+    double worst = (r - plus).norm() / plus.norm();
+    const double eps = 1e-6;
+    for (int l = 0; l < x.size(); ++l) {
+        Eigen::VectorXd dx = Eigen::VectorXd::Zero(x.size());
+        dx[l] = eps;
+        system.rhs(x + dx, plus);
+        system.rhs(x - dx, minus);
+        worst = std::max(worst, ((plus - minus) / (2 * eps) - jac.col(l)).norm() / jac.norm());
+    }
+    return worst;
+}
+
+/// A step with h·|R(x)|/|Mx| = 0.3.
+double largeStep(const ModalSystem& system, const Eigen::VectorXd& x) {
+    Eigen::VectorXd r;
+    system.rhs(x, r);
+    return 0.3 * system.mass().cwiseProduct(x).norm() / r.norm();
+}
+
+TEST(Lans, JacobianIsAnalytic) {
+    const DenseCoefficients c = randomDense(12, 501);
+    const FluidSystem system(c, {shapedKappaSquared(12), 0.0, 0.07});
+    EXPECT_LT(jacobianError(system, randomVector(12, 502)), 1e-8);
+}
+
+TEST(Lans, MidpointConservesTheFilteredEnergy) {
+    const int n = 40;
+    const DenseCoefficients c = randomDense(n, 503);
+    const Eigen::VectorXd k2 = shapedKappaSquared(n);
+    const double alpha = 0.05;
+    const FluidSystem system(c, {k2, 0.0, alpha});
+    ModalIntegrator midpoint(system, {TimeScheme::Midpoint});
+    Eigen::VectorXd v = randomVector(n, 504);
+    const double h = largeStep(system, v), lans0 = lansEnergy(v, k2, alpha), plain0 = energy(v);
+    double worst = 0.0, plainChange = 0.0;
+    int maxIterations = 0;
+    for (int s = 0; s < 3000; ++s) {
+        maxIterations = std::max(maxIterations, midpoint.step(v, h).iterations);
+        worst = std::max(worst, std::abs(lansEnergy(v, k2, alpha) / lans0 - 1.0));
+        plainChange = std::max(plainChange, std::abs(energy(v) / plain0 - 1.0));
+    }
+    EXPECT_LE(worst, 1e-10);
+    EXPECT_LE(maxIterations, 8);
+    EXPECT_GT(plainChange, 1e-3) << "½|v|² is not the invariant, so it must move";
+}
+
+TEST(Lans, ForcesActOnTheMomentum) {
+    const int n = 6;
+    const DenseCoefficients zero(n, std::vector<double>(packedSize(n), 0.0));
+    const Eigen::VectorXd k2 = shapedKappaSquared(n);
+    const FluidSystem system(zero, {k2, 0.0, 0.1});
+    const Eigen::VectorXd v0 = randomVector(n, 505), f = randomVector(n, 506);
+    for (TimeScheme scheme : {TimeScheme::ExplicitEuler, TimeScheme::RungeKutta4,
+                              TimeScheme::Midpoint, TimeScheme::Trapezoidal}) {
+        ModalIntegrator integrator(system, {scheme});
+        Eigen::VectorXd v = v0;
+        for (int s = 0; s < 20; ++s) integrator.step(v, 0.1, f);
+        const Eigen::VectorXd expected = v0 + 2.0 * f.cwiseQuotient(system.mass());
+        EXPECT_LT((v - expected).norm() / expected.norm(), 1e-13) << timeSchemeName(scheme);
+    }
+}
+
+TEST(Mhd, JacobianIsAnalytic) {
+    const DenseCoefficients c = randomDense(10, 601);
+    const MhdSystem system(c);
+    EXPECT_LT(jacobianError(system, system.state(randomVector(10, 602), randomVector(10, 603))),
+              1e-8);
+}
+
+TEST(Mhd, MidpointConservesEnergyAndCrossHelicity) {
+    const int n = 30;
+    const DenseCoefficients c = randomDense(n, 604);
+    const MhdSystem system(c);
+    ModalIntegrator midpoint(system, {TimeScheme::Midpoint});
+    Eigen::VectorXd x = system.state(randomVector(n, 605), 0.7 * randomVector(n, 606));
+    const double h = largeStep(system, x), e0 = energy(x);
+    const double scale = x.head(n).norm() * x.tail(n).norm();
+    const double h0 = crossHelicity(x.head(n), x.tail(n));
+    double worstE = 0.0, worstH = 0.0, fieldChange = 0.0;
+    int maxIterations = 0;
+    const Eigen::VectorXd f0 = x.tail(n);
+    for (int s = 0; s < 3000; ++s) {
+        maxIterations = std::max(maxIterations, midpoint.step(x, h).iterations);
+        worstE = std::max(worstE, std::abs(energy(x) / e0 - 1.0));
+        worstH = std::max(worstH, std::abs(crossHelicity(x.head(n), x.tail(n)) - h0) / scale);
+        fieldChange = std::max(fieldChange, (x.tail(n) - f0).norm() / f0.norm());
+    }
+    EXPECT_LE(worstE, 1e-10);
+    EXPECT_LE(worstH, 1e-10) << "relative to |v||F|";
+    EXPECT_LE(maxIterations, 8);
+    EXPECT_GT(fieldChange, 0.5) << "the field must actually be advected";
+}
+
+TEST(Mhd, WithoutFieldItIsTheEulerFlow) {
+    const int n = 15;
+    const DenseCoefficients c = randomDense(n, 607);
+    const MhdSystem mhd(c);
+    const FluidSystem euler(c);
+    const Eigen::VectorXd v0 = randomVector(n, 608);
+    ModalIntegrator a(mhd), b(euler);
+    Eigen::VectorXd x = mhd.state(v0, Eigen::VectorXd::Zero(n)), v = v0;
+    for (int s = 0; s < 50; ++s) {
+        a.step(x, 0.01);
+        b.step(v, 0.01);
+    }
+    EXPECT_LT((x.head(n) - v).norm() / v.norm(), 1e-12);
+    EXPECT_EQ(x.tail(n).norm(), 0.0);
+}
+
+TEST(Mhd, SparseStorageGivesTheSameTrajectory) {
+    const int n = 20;
+    const DenseCoefficients dense = randomDense(n, 609, 0.1);
+    const SparseCoefficients sparse = SparseCoefficients::fromDense(dense);
+    const MhdSystem a(dense), b(sparse);
+    Eigen::VectorXd x = a.state(randomVector(n, 610), randomVector(n, 611)), y = x;
+    ModalIntegrator ia(a), ib(b);
+    for (int s = 0; s < 20; ++s) {
+        ia.step(x, 0.02);
+        ib.step(y, 0.02);
+    }
+    EXPECT_LT((x - y).norm() / x.norm(), 1e-12);
+}
+
+TEST(Mhd, BadInputThrows) {
+    const DenseCoefficients c = randomDense(5, 612);
+    const MhdSystem system(c);
+    EXPECT_THROW(system.state(Eigen::VectorXd::Ones(5), Eigen::VectorXd::Ones(4)), Error);
+    EXPECT_THROW(MhdSystem(c, {Eigen::VectorXd::Ones(5), 0.0, -1.0}), Error);
+    EXPECT_THROW(MhdSystem(c, {Eigen::VectorXd(), 0.0, 1.0}), Error);
+    EXPECT_THROW(crossHelicity(Eigen::VectorXd::Ones(5), Eigen::VectorXd::Ones(4)), Error);
+}
+
+}  // namespace
+}  // namespace modeflow
