@@ -67,7 +67,29 @@ constexpr std::string_view kGridKeys[] = {"resolution", "bounds_min", "bounds_ma
 constexpr std::string_view kBasisKeys[] = {
     "velocity_modes", "modes", "scalar_modes", "scalar_boundary", "wall", "boundary", "subsamples"};
 constexpr std::string_view kSimulationKeys[] = {"dt", "integrator", "viscosity", "alpha"};
-constexpr std::string_view kInitialKeys[] = {"velocity", "energy", "seed"};
+constexpr std::string_view kInitialKeys[] = {"velocity", "energy",     "seed",
+                                             "band",     "amplitudes", "vortex"};
+constexpr std::string_view kVortexKeys2d[] = {"center", "strength", "radius"};
+constexpr std::string_view kVortexKeys3d[] = {"center", "normal", "ring_radius", "radius",
+                                              "strength"};
+
+/// The `[initial]` keys each velocity choice reads besides `velocity`.
+std::span<const std::string_view> initialKeys(InitialVelocity velocity) {
+    static constexpr std::string_view random[] = {"energy", "seed", "band"};
+    static constexpr std::string_view modes[] = {"amplitudes"};
+    static constexpr std::string_view vortices[] = {"vortex", "energy"};
+    switch (velocity) {
+        case InitialVelocity::Zero:
+            return {};
+        case InitialVelocity::Random:
+            return random;
+        case InitialVelocity::Modes:
+            return modes;
+        case InitialVelocity::Vortices:
+            return vortices;
+    }
+    return {};
+}
 constexpr std::string_view kSmokeKeys[] = {"buoyancy", "resolution_scale"};
 constexpr std::string_view kOutputKeys[] = {"frames", "steps_per_frame"};
 constexpr std::string_view kSourceExtraKeys[] = {"density", "temperature"};
@@ -272,7 +294,7 @@ public:
             scene.simulation = readSimulation({*t, "[simulation]"});
         }
         if (const toml::table* t = optionalTable(root, "initial")) {
-            scene.initial = readInitial({*t, "[initial]"});
+            scene.initial = readInitial({*t, "[initial]"}, scene.basis);
         }
         forEachEntry(root, "source", [&](const toml::table& t, int index) {
             scene.sources.push_back(readSource(t, index));
@@ -804,16 +826,167 @@ private:
         return sim;
     }
 
-    InitialSpec readInitial(const Section& s) const {
+    InitialSpec readInitial(const Section& s, const BasisSpec& basis) const {
         checkKeys(s, kInitialKeys);
         InitialSpec initial;
         initial.velocity = readChoice(s, "velocity", initial.velocity,
                                       Choices<InitialVelocity>(kInitialVelocities));
-        initial.energy = readNumber(s, "energy", initial.energy, Sign::NonNegative);
-        if (auto seed = integer(s, "seed", 0, std::numeric_limits<std::int64_t>::max())) {
-            initial.seed = static_cast<std::uint64_t>(*seed);
+        // A key of another choice would be silently ignored, which hides a mistaken choice.
+        const std::string chosen(keywordOf(Choices<InitialVelocity>(kInitialVelocities),
+                                           initial.velocity));
+        const auto own = initialKeys(initial.velocity);
+        for (const auto& [key, node] : s.table) {
+            const std::string_view name = key.str();
+            if (name == "velocity" || contains(own, name)) continue;
+            fail(s, name,
+                 "not used with velocity = \"" + chosen + "\"" +
+                     (own.empty() ? std::string(" (it takes no other key)")
+                                  : " (it takes " + joinWords(own, "and") + ")"),
+                 &node);
+        }
+
+        const int modeCount = basis.velocityCount();
+        switch (initial.velocity) {
+            case InitialVelocity::Zero:
+                break;
+            case InitialVelocity::Random:
+                initial.energy = readNumber(s, "energy", initial.energy, Sign::NonNegative);
+                if (auto seed = integer(s, "seed", 0, std::numeric_limits<std::int64_t>::max())) {
+                    initial.seed = static_cast<std::uint64_t>(*seed);
+                }
+                initial.band = readBand(s, modeCount);
+                break;
+            case InitialVelocity::Modes:
+                initial.amplitudes = readAmplitudes(s, modeCount);
+                break;
+            case InitialVelocity::Vortices:
+                initial.energy = readNumber(s, "energy", 0.0, Sign::NonNegative);
+                initial.vortices = readVortices(s);
+                break;
         }
         return initial;
+    }
+
+    /// `band = [first, last]`: 1-based, inclusive, inside the basis.
+    std::optional<ModeRange> readBand(const Section& s, int modeCount) const {
+        const toml::node* node = s.table.get("band");
+        if (node == nullptr) return std::nullopt;
+        const std::string where = s.name + ".band";
+        const toml::array* array = node->as_array();
+        if (array == nullptr || array->size() != 2) {
+            fail(where,
+                 "expected [first, last] (two 1-based mode numbers), got " +
+                     (array == nullptr ? describeType(*node)
+                                       : std::to_string(array->size()) + " entries"),
+                 node);
+        }
+        const std::int64_t first = integerValue((*array)[0], where + "[0]");
+        const std::int64_t last = integerValue((*array)[1], where + "[1]");
+        if (first < 1) fail(where, "modes are numbered from 1, got " + std::to_string(first), node);
+        if (last < first) {
+            fail(where,
+                 "ends before it starts ([" + std::to_string(first) + ", " +
+                     std::to_string(last) + "])",
+                 node);
+        }
+        if (last > modeCount) {
+            fail(where,
+                 "mode " + std::to_string(last) + " is beyond the basis ([basis] has " +
+                     std::to_string(modeCount) + " velocity modes)",
+                 node);
+        }
+        return ModeRange{static_cast<int>(first), static_cast<int>(last)};
+    }
+
+    /// `amplitudes = [[mode, amplitude], ...]`, required; modes 1-based, each at most once.
+    std::vector<std::pair<int, double>> readAmplitudes(const Section& s, int modeCount) const {
+        const toml::node* node = s.table.get("amplitudes");
+        if (node == nullptr) {
+            fail(s, "amplitudes",
+                 "missing required key for velocity = \"modes\" (e.g. [[1, 0.5], [3, -0.2]])");
+        }
+        const std::string where = s.name + ".amplitudes";
+        const toml::array* array = node->as_array();
+        if (array == nullptr || array->empty()) {
+            fail(where,
+                 "expected a non-empty array of [mode, amplitude] pairs, got " +
+                     (array == nullptr ? describeType(*node) : std::string("an empty array")),
+                 node);
+        }
+        std::vector<std::pair<int, double>> out;
+        for (std::size_t e = 0; e < array->size(); ++e) {
+            const toml::node& entry = (*array)[e];
+            const std::string at = where + "[" + std::to_string(e) + "]";
+            const toml::array* pair = entry.as_array();
+            if (pair == nullptr || pair->size() != 2) {
+                fail(at,
+                     "expected a [mode, amplitude] pair, got " +
+                         (pair == nullptr ? describeType(entry)
+                                          : std::to_string(pair->size()) + " entries"),
+                     &entry);
+            }
+            const std::int64_t mode = integerValue((*pair)[0], at + "[0]");
+            if (mode < 1 || mode > modeCount) {
+                fail(at,
+                     "mode " + std::to_string(mode) + " is outside the basis (modes 1 to " +
+                         std::to_string(modeCount) + ")",
+                     &entry);
+            }
+            for (const auto& [m, a] : out) {
+                if (m == mode) fail(at, "mode " + std::to_string(mode) + " is given twice", &entry);
+            }
+            out.emplace_back(static_cast<int>(mode), numberValue((*pair)[1], at + "[1]"));
+        }
+        return out;
+    }
+
+    /// `[[initial.vortex]]` entries, at least one.
+    std::vector<VortexSpec> readVortices(const Section& s) const {
+        const toml::node* node = s.table.get("vortex");
+        const std::string where = "[[initial.vortex]]";
+        if (node == nullptr) {
+            fail(where, "missing: velocity = \"vortices\" needs at least one [[initial.vortex]]",
+                 &s.table);
+        }
+        const toml::array* array = node->as_array();
+        if (array == nullptr || !array->is_array_of_tables() || array->empty()) {
+            fail(where,
+                 "expected an array of tables (write [[initial.vortex]]), got " +
+                     describeType(*node),
+                 node);
+        }
+        const auto keys = mDim == 2 ? std::span<const std::string_view>(kVortexKeys2d)
+                                    : std::span<const std::string_view>(kVortexKeys3d);
+        std::vector<VortexSpec> out;
+        int index = 0;
+        for (const toml::node& entry : *array) {
+            ++index;
+            const Section v{*entry.as_table(), where + " #" + std::to_string(index)};
+            for (const auto& [key, value] : v.table) {
+                if (mDim == 2 && (key.str() == "normal" || key.str() == "ring_radius")) {
+                    fail(v, key.str(),
+                         "only 3D vortex rings take it, but this scene is 2D ([grid].resolution "
+                         "has 2 entries)",
+                         &value);
+                }
+            }
+            checkKeys(v, keys);
+            VortexSpec vortex;
+            vortex.center = requireVector(v, "center");
+            if (!v.table.contains("strength")) fail(v, "strength", "missing required key");
+            vortex.strength = readNumber(v, "strength", 0.0);
+            vortex.radius = requireNumber(v, "radius", Sign::Positive);
+            if (mDim == 3) {
+                vortex.normal = requireVector(v, "normal");
+                const Vec3& n = vortex.normal;
+                if (!(n[0] * n[0] + n[1] * n[1] + n[2] * n[2] > 0.0)) {
+                    fail(v, "normal", "must be a non-zero vector", v.table.get("normal"));
+                }
+                vortex.ringRadius = requireNumber(v, "ring_radius", Sign::Positive);
+            }
+            out.push_back(vortex);
+        }
+        return out;
     }
 
     SourceSpec readSource(const toml::table& table, int index) const {

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace modeflow {
@@ -90,10 +91,28 @@ struct SimulationSpec {
 
 enum class InitialVelocity { Zero, Random, Modes, Vortices };
 
+/// One `[[initial.vortex]]`: a Gaussian-cored point vortex in 2D, a vortex ring in 3D.
+struct VortexSpec {
+    Vec3 center{0.0, 0.0, 0.0};
+    double strength = 0.0;    ///< circulation Γ (counter-clockwise / right-handed about normal)
+    double radius = 0.0;      ///< Gaussian core σ > 0
+    Vec3 normal{0.0, 0.0, 1.0};  ///< 3D: the ring's axis (not normalized by the loader)
+    double ringRadius = 0.0;  ///< 3D: radius of the ring's centre line
+    bool operator==(const VortexSpec&) const = default;
+};
+
 struct InitialSpec {
     InitialVelocity velocity = InitialVelocity::Zero;
+    /// random: ½|v|² of the result. vortices: rescale the projected state to it when > 0 (the
+    /// loader leaves 0, "keep the projection's own energy", when the key is absent).
     double energy = 1.0;
     std::uint64_t seed = 1;
+    /// random: the excited modes, 1-based inclusive positions in the basis; none means all.
+    std::optional<ModeRange> band;
+    /// modes: (1-based position in the basis, amplitude) pairs.
+    std::vector<std::pair<int, double>> amplitudes;
+    /// vortices: summed, then projected on the basis.
+    std::vector<VortexSpec> vortices;
 };
 
 /// A smoke/heat emitter (`[[source]]`).

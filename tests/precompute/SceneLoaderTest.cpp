@@ -8,6 +8,8 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "precompute/scene/SceneLoader.h"
 
@@ -132,7 +134,13 @@ alpha = 0.05
 [initial]
 velocity = "vortices"
 energy = 2.5
-seed = 123456789012
+
+[[initial.vortex]]
+center = [0.1, 0.0, -0.2]
+normal = [0, 0, 2]
+ring_radius = 0.3
+radius = 0.05
+strength = -1.5
 
 [[source]]
 shape = "ball"
@@ -222,7 +230,13 @@ steps_per_frame = 5
 
     EXPECT_EQ(scene.initial.velocity, InitialVelocity::Vortices);
     EXPECT_EQ(scene.initial.energy, 2.5);
-    EXPECT_EQ(scene.initial.seed, 123456789012u);
+    ASSERT_EQ(scene.initial.vortices.size(), 1u);
+    const VortexSpec& ring = scene.initial.vortices[0];
+    EXPECT_EQ(ring.center, (Vec3{0.1, 0.0, -0.2}));
+    EXPECT_EQ(ring.normal, (Vec3{0.0, 0.0, 2.0}));
+    EXPECT_EQ(ring.ringRadius, 0.3);
+    EXPECT_EQ(ring.radius, 0.05);
+    EXPECT_EQ(ring.strength, -1.5);
 
     ASSERT_EQ(scene.sources.size(), 2u);
     EXPECT_EQ(scene.sources[0].shape.kind, ShapeKind::Ball);
@@ -501,7 +515,8 @@ TEST_F(SceneLoaderTest, RangeChecksOnScalars) {
     EXPECT_CONTAINS(errorOf(base + "[simulation]\nviscosity = -1\n"),
                     "[simulation].viscosity: must be >= 0");
     EXPECT_CONTAINS(errorOf(base + "[simulation]\ndt = nan\n"), "[simulation].dt: must be finite");
-    EXPECT_CONTAINS(errorOf(base + "[initial]\nseed = -1\n"), "[initial].seed: must be at least 0");
+    EXPECT_CONTAINS(errorOf(base + "[initial]\nvelocity = \"random\"\nseed = -1\n"),
+                    "[initial].seed: must be at least 0");
     EXPECT_CONTAINS(errorOf(base + "[smoke]\nresolution_scale = 9\n"),
                     "[smoke].resolution_scale: must be between 1 and 8");
     EXPECT_CONTAINS(
@@ -511,6 +526,113 @@ TEST_F(SceneLoaderTest, RangeChecksOnScalars) {
                     "[output].frames: must be at least 1");
     EXPECT_CONTAINS(errorOf(base + "[output]\nsteps_per_frame = 9999999999\n"),
                     "[output].steps_per_frame: is too large");
+}
+
+TEST_F(SceneLoaderTest, RandomInitialVelocityTakesEnergySeedAndBand) {
+    const std::string base = std::string(kGrid2d) + kBasis + "[initial]\nvelocity = \"random\"\n";
+    const SceneSpec all = parseScene(base + "energy = 0.5\nseed = 9\n", "s.toml");
+    EXPECT_EQ(all.initial.energy, 0.5);
+    EXPECT_EQ(all.initial.seed, 9u);
+    EXPECT_FALSE(all.initial.band.has_value());
+    const SceneSpec band = parseScene(base + "band = [3, 10]\n", "s.toml");
+    ASSERT_TRUE(band.initial.band.has_value());
+    EXPECT_EQ(*band.initial.band, (ModeRange{3, 10}));
+
+    EXPECT_CONTAINS(errorOf(base + "energy = -1\n"), "[initial].energy: must be >= 0");
+    EXPECT_CONTAINS(errorOf(base + "band = [0, 4]\n"), "[initial].band: modes are numbered from 1");
+    EXPECT_CONTAINS(errorOf(base + "band = [5, 4]\n"), "[initial].band: ends before it starts");
+    EXPECT_CONTAINS(errorOf(base + "band = [1, 11]\n"),
+                    "[initial].band: mode 11 is beyond the basis ([basis] has 10");
+    EXPECT_CONTAINS(errorOf(base + "band = 3\n"), "[initial].band: expected [first, last]");
+    EXPECT_CONTAINS(errorOf(base + "band = [1, 2.5]\n"), "[initial].band[1]: expected an integer");
+    EXPECT_CONTAINS(errorOf(base + "bnad = [1, 2]\n"),
+                    "[initial].bnad: unknown key (did you mean band?)");
+    EXPECT_CONTAINS(errorOf(base + "amplitudes = [[1, 1.0]]\n"),
+                    "[initial].amplitudes: not used with velocity = \"random\" (it takes energy, "
+                    "seed and band)");
+}
+
+TEST_F(SceneLoaderTest, ModalAmplitudesAreRequiredAndChecked) {
+    const std::string base = std::string(kGrid2d) + kBasis + "[initial]\nvelocity = \"modes\"\n";
+    const SceneSpec scene = parseScene(base + "amplitudes = [[1, 0.5], [3, -0.2], [10, 2]]\n", "s.toml");
+    const std::vector<std::pair<int, double>> expected{{1, 0.5}, {3, -0.2}, {10, 2.0}};
+    EXPECT_EQ(scene.initial.amplitudes, expected);
+
+    EXPECT_CONTAINS(errorOf(base), "[initial].amplitudes: missing required key for velocity = \"modes\"");
+    EXPECT_CONTAINS(errorOf(base + "amplitudes = []\n"), "[initial].amplitudes: expected a non-empty array");
+    EXPECT_CONTAINS(errorOf(base + "amplitudes = [1, 0.5]\n"),
+                    "[initial].amplitudes[0]: expected a [mode, amplitude] pair, got an integer");
+    EXPECT_CONTAINS(errorOf(base + "amplitudes = [[1, 0.5, 2]]\n"),
+                    "[initial].amplitudes[0]: expected a [mode, amplitude] pair, got 3 entries");
+    EXPECT_CONTAINS(errorOf(base + "amplitudes = [[0, 0.5]]\n"),
+                    "[initial].amplitudes[0]: mode 0 is outside the basis (modes 1 to 10)");
+    EXPECT_CONTAINS(errorOf(base + "amplitudes = [[2, 1], [11, 0.5]]\n"),
+                    "[initial].amplitudes[1]: mode 11 is outside the basis");
+    EXPECT_CONTAINS(errorOf(base + "amplitudes = [[2, 1], [2, 0.5]]\n"),
+                    "[initial].amplitudes[1]: mode 2 is given twice");
+    EXPECT_CONTAINS(errorOf(base + "amplitudes = [[1.5, 1]]\n"),
+                    "[initial].amplitudes[0][0]: expected an integer");
+    EXPECT_CONTAINS(errorOf(base + "amplitudes = [[1, \"big\"]]\n"),
+                    "[initial].amplitudes[0][1]: expected a number, got a string");
+    EXPECT_CONTAINS(errorOf(base + "amplitudes = [[1, 1]]\nseed = 3\n"),
+                    "[initial].seed: not used with velocity = \"modes\" (it takes amplitudes)");
+    EXPECT_CONTAINS(errorOf(std::string(kGrid2d) + kBasis + "[initial]\nenergy = 1\n"),
+                    "[initial].energy: not used with velocity = \"zero\" (it takes no other key)");
+}
+
+TEST_F(SceneLoaderTest, VorticesAreReadIn2dAnd3d) {
+    const std::string base2 =
+        std::string(kGrid2d) + kBasis + "[initial]\nvelocity = \"vortices\"\n";
+    const SceneSpec two = parseScene(base2 + R"(
+[[initial.vortex]]
+center = [0.1, -0.2]
+strength = 2
+radius = 0.1
+[[initial.vortex]]
+center = [-0.3, 0.0]
+strength = -1.5
+radius = 0.2
+)",
+                                     "s.toml");
+    EXPECT_EQ(two.initial.energy, 0.0) << "no energy key: keep the projection's own energy";
+    ASSERT_EQ(two.initial.vortices.size(), 2u);
+    EXPECT_EQ(two.initial.vortices[0].center, (Vec3{0.1, -0.2, 0.0}));
+    EXPECT_EQ(two.initial.vortices[0].strength, 2.0);
+    EXPECT_EQ(two.initial.vortices[0].radius, 0.1);
+    EXPECT_EQ(two.initial.vortices[1].strength, -1.5);
+
+    const std::string vortex = "[[initial.vortex]]\ncenter = [0, 0]\nstrength = 1\nradius = 0.1\n";
+    EXPECT_CONTAINS(errorOf(base2), "[[initial.vortex]]: missing");
+    EXPECT_CONTAINS(errorOf(base2 + "vortex = 3\n"), "[[initial.vortex]]: expected an array of tables");
+    EXPECT_CONTAINS(errorOf(base2 + "energy = 2\nseed = 1\n" + vortex),
+                    "[initial].seed: not used with velocity = \"vortices\" (it takes vortex and energy)");
+    EXPECT_CONTAINS(errorOf(base2 + "[[initial.vortex]]\ncenter = [0, 0]\nradius = 0.1\n"),
+                    "[[initial.vortex]] #1.strength: missing required key");
+    EXPECT_CONTAINS(errorOf(base2 + vortex + "[[initial.vortex]]\ncenter = [0, 0]\nstrength = 1\nradius = 0\n"),
+                    "[[initial.vortex]] #2.radius: must be > 0");
+    EXPECT_CONTAINS(errorOf(base2 + "[[initial.vortex]]\ncenter = [0, 0, 0]\nstrength = 1\nradius = 0.1\n"),
+                    "[[initial.vortex]] #1.center: expected 2 numbers (the scene is 2D)");
+    EXPECT_CONTAINS(errorOf(base2 + vortex + "strenght = 2\n"),
+                    "[[initial.vortex]] #1.strenght: unknown key (did you mean strength?)");
+    EXPECT_CONTAINS(errorOf(base2 + vortex + "ring_radius = 0.5\n"),
+                    "[[initial.vortex]] #1.ring_radius: only 3D vortex rings take it");
+    EXPECT_CONTAINS(
+        errorOf(base2 + "[[initial.vortex]]\ncenter = [0, 0]\nstrength = \"big\"\nradius = 0.1\n"),
+        "[[initial.vortex]] #1.strength: expected a number, got a string");
+
+    const std::string base3 =
+        std::string(kGrid3d) + kBasis + "[initial]\nvelocity = \"vortices\"\nenergy = 0.7\n";
+    const std::string ring = "[[initial.vortex]]\ncenter = [0, 0, 0]\nring_radius = 0.4\nradius = 0.1\nstrength = 3\n";
+    const SceneSpec three = parseScene(base3 + ring + "normal = [1, 0, 0]\n", "s.toml");
+    EXPECT_EQ(three.initial.energy, 0.7);
+    ASSERT_EQ(three.initial.vortices.size(), 1u);
+    EXPECT_EQ(three.initial.vortices[0].normal, (Vec3{1.0, 0.0, 0.0}));
+    EXPECT_EQ(three.initial.vortices[0].ringRadius, 0.4);
+    EXPECT_CONTAINS(errorOf(base3 + ring), "[[initial.vortex]] #1.normal: missing required key");
+    EXPECT_CONTAINS(errorOf(base3 + ring + "normal = [0, 0, 0]\n"),
+                    "[[initial.vortex]] #1.normal: must be a non-zero vector");
+    EXPECT_CONTAINS(errorOf(base3 + "[[initial.vortex]]\ncenter = [0, 0, 0]\nnormal = [0, 0, 1]\nradius = 0.1\nstrength = 3\n"),
+                    "[[initial.vortex]] #1.ring_radius: missing required key");
 }
 
 TEST_F(SceneLoaderTest, SyntaxErrorGivesFileAndLine) {

@@ -8,6 +8,8 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -257,6 +259,108 @@ TEST_F(Cli, DamagedCachesAreRefusedAndRebuilt) {
     r = run("inspect " + (mDir / "x.mfbasis").string());
     EXPECT_NE(r.status, 0);
     EXPECT_NE(r.err.find("not a modeflow basis cache"), std::string::npos) << r.err;
+}
+
+TEST_F(Cli, ModesRunsTheReducedDynamicsAsCsv) {
+    const fs::path s = scene("modes.toml", std::string(kSmallDisk) +
+                                               "[initial]\nvelocity = \"random\"\nenergy = 2.0\n");
+    const RunResult r = run("modes " + s.string() + " --cache-dir " + mCache.string() +
+                            " --steps 200 --dt 0.05 --integrator midpoint --csv");
+    ASSERT_EQ(r.status, 0) << r.err;
+    std::istringstream lines(r.out);
+    std::string line;
+    std::getline(lines, line);
+    EXPECT_EQ(line.rfind("step,time,energy", 0), 0u) << line;
+    int rows = 0;
+    double first = -1.0, worst = 0.0;
+    while (std::getline(lines, line)) {
+        std::istringstream fields(line);
+        std::string step, time, energy;
+        std::getline(fields, step, ',');
+        std::getline(fields, time, ',');
+        std::getline(fields, energy, ',');
+        const double e = std::stod(energy);
+        if (first < 0) first = e;
+        worst = std::max(worst, std::abs(e / first - 1.0));
+        ++rows;
+    }
+    EXPECT_EQ(rows, 201);
+    EXPECT_NEAR(first, 2.0, 1e-12);
+    EXPECT_LE(worst, 1e-12) << "midpoint must conserve energy";
+
+    const RunResult bad = run("modes " + s.string() + " --cache-dir " + (mDir / "c2").string() +
+                              " --integrator leapfrog");
+    EXPECT_NE(bad.status, 0);
+    EXPECT_NE(bad.err.find("leapfrog"), std::string::npos) << bad.err;
+    EXPECT_FALSE(fs::exists(mDir / "c2")) << "work started before the option was checked";
+    const RunResult gpu = run("modes " + s.string() + " --cache-dir " + mCache.string() +
+                              " --device vulkan --steps 2");
+    EXPECT_NE(gpu.status, 0);
+    EXPECT_NE(gpu.err.find("--device"), std::string::npos) << gpu.err;
+}
+
+/// The energy column of each CSV row printed by `modes --csv`.
+std::vector<double> csvEnergies(const std::string& out) {
+    std::istringstream lines(out);
+    std::string line;
+    std::getline(lines, line);  // header
+    std::vector<double> energies;
+    while (std::getline(lines, line)) {
+        std::istringstream fields(line);
+        std::string step, time, energy;
+        std::getline(fields, step, ',');
+        std::getline(fields, time, ',');
+        std::getline(fields, energy, ',');
+        energies.push_back(std::stod(energy));
+    }
+    return energies;
+}
+
+TEST_F(Cli, ModesStartsFromVorticesAndFromModalAmplitudes) {
+    const std::string vortices = std::string(kSmallDisk) + R"(
+[initial]
+velocity = "vortices"
+energy = 0.8
+[[initial.vortex]]
+center = [-0.2, 0.0]
+strength = 1.0
+radius = 0.2
+[[initial.vortex]]
+center = [0.2, 0.0]
+strength = 1.0
+radius = 0.2
+)";
+    const std::string args = " --cache-dir " + mCache.string() + " --steps 20 --dt 0.05 --csv";
+    RunResult r = run("modes " + scene("vortices.toml", vortices).string() + args);
+    ASSERT_EQ(r.status, 0) << r.err;
+    std::vector<double> e = csvEnergies(r.out);
+    ASSERT_EQ(e.size(), 21u) << r.out;
+    EXPECT_NEAR(e.front(), 0.8, 1e-12) << "the projected state is rescaled to [initial].energy";
+    EXPECT_NEAR(e.back() / e.front(), 1.0, 1e-10) << "midpoint conserves it";
+
+    const std::string modes = std::string(kSmallDisk) +
+                              "[initial]\nvelocity = \"modes\"\namplitudes = [[1, 1.0], [3, -0.5]]\n";
+    r = run("modes " + scene("modes.toml", modes).string() + args);
+    ASSERT_EQ(r.status, 0) << r.err;
+    e = csvEnergies(r.out);
+    ASSERT_FALSE(e.empty());
+    EXPECT_NEAR(e.front(), 0.5 * (1.0 + 0.25), 1e-12) << "energy = ½Σa²";
+
+    const std::string band = std::string(kSmallDisk) +
+                             "[initial]\nvelocity = \"random\"\nenergy = 0.3\nband = [2, 5]\n";
+    r = run("modes " + scene("band.toml", band).string() + args);
+    ASSERT_EQ(r.status, 0) << r.err;
+    e = csvEnergies(r.out);
+    ASSERT_FALSE(e.empty());
+    EXPECT_NEAR(e.front(), 0.3, 1e-12);
+
+    r = run("modes " + scene("beyond.toml", replaced(modes, "[3, -0.5]", "[9, -0.5]")).string() +
+            " --cache-dir " + (mDir / "c3").string());
+    EXPECT_NE(r.status, 0);
+    EXPECT_NE(r.err.find("[initial].amplitudes[1]: mode 9 is outside the basis"),
+              std::string::npos)
+        << r.err;
+    EXPECT_FALSE(fs::exists(mDir / "c3")) << "the scene is checked before any precompute";
 }
 
 }  // namespace

@@ -8,11 +8,13 @@
 
 int main(int argc, char** argv) {
     CLI::App app("modeflow " MODEFLOW_VERSION
-                 ": model-reduced fluid simulation (precompute spectral bases, inspect caches)");
+                 ": model-reduced fluid simulation (precompute spectral bases, inspect caches, run the "
+                 "reduced dynamics)");
     app.set_version_flag("--version", std::string(MODEFLOW_VERSION));
     app.require_subcommand(1);
     const modeflow::cli::Command commands[] = {modeflow::cli::addPrecompute(app),
-                                               modeflow::cli::addInspect(app)};
+                                               modeflow::cli::addInspect(app),
+                                               modeflow::cli::addModes(app)};
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

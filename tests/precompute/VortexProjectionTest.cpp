@@ -1,0 +1,187 @@
+/// @file VortexProjectionTest.cpp
+/// Analytic vortices → modal states: the projection is the ⋆-inner product with each mode (a round
+/// trip for fields in the basis), a centred Lamb–Oseen vortex in a disk lands on the axisymmetric
+/// modes with the right sense of rotation, and a 3D ring projects linearly in its circulation.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+#include <numbers>
+#include <tuple>
+
+#include "engine/format/Error.h"
+#include "precompute/Precompute.h"
+#include "precompute/dec/CubicalComplex.h"
+#include "precompute/dec/CutCellDec.h"
+#include "precompute/initial/VortexProjection.h"
+#include "tests/precompute/TestScenes.h"
+
+namespace modeflow {
+namespace {
+
+constexpr int kDiskCells = 32;
+
+/// A unit disk on a grid symmetric about the origin (so a 90° turn maps faces onto faces).
+const BasisCache& disk() {
+    static const BasisCache cache = [] {
+        SceneSpec scene =
+            test::gridScene({kDiskCells, kDiskCells, 1}, {-1.1, -1.1, 0.0}, {1.1, 1.1, 0.0}, 2);
+        scene.domain = {test::ball({0.0, 0.0, 0.0}, 1.0)};
+        scene.basis.velocityModes = {{1, 10}};
+        scene.basis.scalarModes = 0;
+        Progress quiet = Progress::silent();
+        return computeBasis(scene, quiet);
+    }();
+    return cache;
+}
+
+VortexSpec vortex2d(Vec3 centre, double strength, double sigma) {
+    VortexSpec v;
+    v.center = centre;
+    v.strength = strength;
+    v.radius = sigma;
+    return v;
+}
+
+/// Face velocities u·n = ⋆F / |dual face| of a flux field, keyed by (normal, i, j).
+std::map<std::tuple<int, int, int>, double> faceVelocities(const BasisCache& cache,
+                                                           const Eigen::VectorXd& flux) {
+    const CubicalComplex cx(cache.grid);
+    std::map<std::tuple<int, int, int>, double> u;
+    for (std::size_t f = 0; f < cache.faces.size(); ++f) {
+        const Element e = cx.element(1, cache.faces[f]);
+        const int normal = (e.axes & 1u) ? 1 : 0;
+        const auto i = static_cast<Eigen::Index>(f);
+        u[{normal, e.pos[0], e.pos[1]}] = flux[i] * cache.faceStar[i] / dualMeasure(cache.grid, e);
+    }
+    return u;
+}
+
+/// How far a mode is from its own 90° turn about the origin, relative to its size.
+double turnDefect(const BasisCache& cache, int mode) {
+    const auto u = faceVelocities(cache, cache.velocity.modes.col(mode));
+    double diff = 0.0, size = 0.0;
+    for (const auto& [key, value] : u) {
+        const auto [normal, i, j] = key;
+        // (x, y) → (−y, x): an x-flux at (i, j) becomes a +y flux at (N−1−j, i); a y-flux at
+        // (i, j) becomes a −x flux at (N−j, i).
+        const auto turned = normal == 0 ? std::tuple{1, kDiskCells - 1 - j, i}
+                                        : std::tuple{0, kDiskCells - j, i};
+        const double sign = normal == 0 ? 1.0 : -1.0;
+        const auto it = u.find(turned);
+        const double image = it == u.end() ? 0.0 : sign * it->second;
+        diff += (image - value) * (image - value);
+        size += value * value;
+    }
+    return std::sqrt(diff / size);
+}
+
+TEST(VortexProjection, ABasisModeRoundTripsToItsUnitVector) {
+    const BasisCache& cache = disk();
+    const Eigen::VectorXd v = projectFluxes(cache, cache.velocity.modes.col(2));
+    Eigen::VectorXd e3 = Eigen::VectorXd::Zero(v.size());
+    e3[2] = 1.0;
+    EXPECT_LE((v - e3).cwiseAbs().maxCoeff(), 1e-12) << v.transpose();
+    EXPECT_THROW(projectFluxes(cache, Eigen::VectorXd::Zero(3)), Error);
+}
+
+TEST(VortexProjection, LambOseenVelocityHasTheAnalyticProfile) {
+    const VortexSpec v = vortex2d({0.2, -0.1, 0.0}, 2.0, 0.3);
+    const VortexSpec list[] = {v};
+    // At r = σ to the right of the centre: speed Γ/(2πσ)(1 − 1/e), pointing +y for Γ > 0.
+    const Vec3 u = vortexVelocity(list, 2, {0.5, -0.1, 0.0});
+    EXPECT_NEAR(u[0], 0.0, 1e-15);
+    EXPECT_NEAR(u[1], 2.0 / (2.0 * std::numbers::pi * 0.3) * (1.0 - std::exp(-1.0)), 1e-14);
+    // The core rotates rigidly at Γ/(2πσ²); the centre itself is still.
+    const Vec3 centre = vortexVelocity(list, 2, v.center);
+    EXPECT_EQ(centre[0], 0.0);
+    EXPECT_EQ(centre[1], 0.0);
+    const Vec3 nearCentre = vortexVelocity(list, 2, {0.2, -0.1 + 1e-9, 0.0});
+    const double rigid = -2.0 / (2.0 * std::numbers::pi * 0.09) * 1e-9;
+    EXPECT_NEAR(nearCentre[0], rigid, 1e-6 * std::abs(rigid));
+}
+
+TEST(VortexProjection, CentredVortexLandsOnAxisymmetricModesTurningTheRightWay) {
+    const BasisCache& cache = disk();
+    const VortexSpec list[] = {vortex2d({0.0, 0.0, 0.0}, 1.0, 0.25)};
+    const Eigen::VectorXd v = projectVortices(cache, list, 0.0);
+    ASSERT_GT(v.squaredNorm(), 0.0);
+
+    double axisymmetric = 0.0;
+    int count = 0;
+    for (int k = 0; k < v.size(); ++k) {
+        if (turnDefect(cache, k) < 1e-6) {
+            axisymmetric += v[k] * v[k];
+            ++count;
+        }
+    }
+    EXPECT_GE(count, 1);
+    EXPECT_GE(axisymmetric / v.squaredNorm(), 0.9)
+        << count << " turn-invariant modes; state " << v.transpose();
+
+    // Reconstructed: to the right of the centre the flow goes up, to the left down.
+    const Eigen::VectorXd flux = cache.velocity.modes * v;
+    const auto u = faceVelocities(cache, flux);
+    // y-normal faces on the row y = 0 (j = N/2), x ≈ ±0.34.
+    EXPECT_GT(u.at({1, 20, kDiskCells / 2}), 0.0);
+    EXPECT_LT(u.at({1, kDiskCells - 1 - 20, kDiskCells / 2}), 0.0);
+
+    // Asking for an energy rescales; a negative circulation flips the state.
+    const Eigen::VectorXd scaled = projectVortices(cache, list, 3.0);
+    EXPECT_NEAR(0.5 * scaled.squaredNorm(), 3.0, 1e-12);
+    EXPECT_NEAR((scaled.normalized() - v.normalized()).norm(), 0.0, 1e-12);
+    const VortexSpec reversed[] = {vortex2d({0.0, 0.0, 0.0}, -1.0, 0.25)};
+    EXPECT_LE((projectVortices(cache, reversed, 0.0) + v).norm(), 1e-12 * v.norm());
+}
+
+TEST(VortexProjection, VorticesOutsideTheDomainCannotBeRescaled) {
+    const BasisCache& cache = disk();
+    const VortexSpec none[] = {vortex2d({0.0, 0.0, 0.0}, 0.0, 0.25)};
+    EXPECT_THROW(projectVortices(cache, none, 1.0), Error);
+    EXPECT_THROW(projectVortices(cache, {}, 0.0), Error);
+}
+
+VortexSpec ring(double strength) {
+    VortexSpec v;
+    v.center = {0.0, 0.0, 0.1};
+    v.normal = {0.0, 0.0, 1.0};
+    v.ringRadius = 0.4;
+    v.radius = 0.15;
+    v.strength = strength;
+    return v;
+}
+
+TEST(VortexProjection, RingVelocityAtItsCentreFollowsTheNormal) {
+    // Rosenhead–Moore at the centre: u = Γ R² / (2 (R² + σ²)^{3/2}) along +normal.
+    const VortexSpec list[] = {ring(1.5)};
+    const Vec3 u = vortexVelocity(list, 3, list[0].center);
+    const double R = 0.4, s = 0.15;
+    const double expected = 1.5 * R * R / (2.0 * std::pow(R * R + s * s, 1.5));
+    EXPECT_NEAR(u[0], 0.0, 1e-12);
+    EXPECT_NEAR(u[1], 0.0, 1e-12);
+    // Chords sit at R cos(π/128) from the centre: a relative error ~ (π/128)².
+    EXPECT_NEAR(u[2], expected, 1e-3 * expected);
+}
+
+TEST(VortexProjection, RingProjectsWithEnergyQuadraticInCirculation) {
+    SceneSpec scene = test::gridScene({14, 14, 14}, {-1.1, -1.1, -1.1}, {1.1, 1.1, 1.1}, 3);
+    scene.domain = {test::ball({0.0, 0.0, 0.0}, 1.0)};
+    scene.basis.velocityModes = {{1, 24}};
+    scene.basis.scalarModes = 0;
+    Progress quiet = Progress::silent();
+    const BasisCache cache = computeBasis(scene, quiet);
+
+    const VortexSpec one[] = {ring(1.0)};
+    const VortexSpec two[] = {ring(2.5)};
+    const Eigen::VectorXd v1 = projectVortices(cache, one, 0.0);
+    const Eigen::VectorXd v2 = projectVortices(cache, two, 0.0);
+    const double e1 = 0.5 * v1.squaredNorm(), e2 = 0.5 * v2.squaredNorm();
+    // 24 modes reach the ball's first axisymmetric poloidal modes, which carry the ring's flow
+    // (the first 8 are orthogonal to it).
+    EXPECT_GT(e1, 1e-2);
+    EXPECT_NEAR(e2 / e1, 2.5 * 2.5, 1e-10);
+}
+
+}  // namespace
+}  // namespace modeflow
