@@ -7,7 +7,7 @@
 namespace modeflow {
 
 MhdSystem::MhdSystem(const StructuralCoefficients& coefficients, MhdParameters parameters)
-    : mCoefficients(coefficients) {
+    : mCoefficients(coefficients), mLorentzForce(parameters.lorentzForce) {
     const int n = coefficients.size();
     if (!(parameters.viscosity >= 0.0) || !(parameters.magneticDiffusivity >= 0.0)) {
         throw Error("MHD dynamics: viscosity and magnetic diffusivity must be non-negative");
@@ -44,12 +44,16 @@ Eigen::VectorXd MhdSystem::state(const Eigen::VectorXd& v, const Eigen::VectorXd
 void MhdSystem::rhs(const Eigen::VectorXd& x, Eigen::VectorXd& out) const {
     const int n = mCoefficients.size();
     const Eigen::VectorXd v = x.head(n), f = x.tail(n);
-    Eigen::VectorXd fluid, lorentz, induction;
+    Eigen::VectorXd fluid, induction;
     mCoefficients.apply(v, v, fluid);
-    mCoefficients.apply(f, f, lorentz);
     mCoefficients.advect(v, f, induction);
+    if (mLorentzForce) {
+        Eigen::VectorXd lorentz;
+        mCoefficients.apply(f, f, lorentz);
+        fluid -= lorentz;
+    }
     out.resize(2 * n);
-    out << fluid - lorentz, induction;
+    out << fluid, induction;
 }
 
 void MhdSystem::linearize(const Eigen::VectorXd& x, Eigen::VectorXd& out,
@@ -63,11 +67,13 @@ void MhdSystem::linearize(const Eigen::VectorXd& x, Eigen::VectorXd& out,
     mCoefficients.linearize(v, v, sv, mv);
     mCoefficients.linearize(f, f, sf, mf);
     out.resize(2 * n);
-    out.head(n).noalias() = sv * v - sf * f;
+    out.head(n).noalias() = sv * v;
+    if (mLorentzForce) out.head(n).noalias() -= sf * f;
     out.tail(n).noalias() = -mv.transpose() * f;
     jac.resize(2 * n, 2 * n);
     jac.topLeftCorner(n, n) = sv + mv;
-    jac.topRightCorner(n, n) = -(sf + mf);
+    if (mLorentzForce) jac.topRightCorner(n, n) = -(sf + mf);
+    else jac.topRightCorner(n, n).setZero();
     jac.bottomLeftCorner(n, n) = mf.transpose();
     jac.bottomRightCorner(n, n) = -mv.transpose();
 }

@@ -22,6 +22,10 @@ struct MhdParameters {
     Eigen::VectorXd kappaSquared;
     double viscosity = 0.0;            ///< ν, damping v
     double magneticDiffusivity = 0.0;  ///< η, damping F
+    /// false: F is only carried by the flow and does not act back on it (the Lorentz term
+    /// −FᵀC_k F is dropped). F is then a spectral Kelvin loop Γ = Σγ_i⋆A_i (appendix C.3), whose
+    /// pairing Σ v_i γ_i with the velocity is the conserved circulation, or a passive field.
+    bool lorentzForce = true;
 };
 
 class MhdSystem final : public ModalSystem {
@@ -42,6 +46,7 @@ public:
 
 private:
     const StructuralCoefficients& mCoefficients;
+    bool mLorentzForce = true;
     Eigen::VectorXd mMass;
     Eigen::VectorXd mDecay;
 };

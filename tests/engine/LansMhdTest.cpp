@@ -132,6 +132,43 @@ TEST(Mhd, MidpointConservesEnergyAndCrossHelicity) {
     EXPECT_GT(fieldChange, 0.5) << "the field must actually be advected";
 }
 
+TEST(Kelvin, MidpointConservesTheSpectralCirculationOfAnAdvectedLoop) {
+    // Appendix C.3: a loop Γ = Σ γ_i ⋆A_i carried by the flow, γ̇_k = Σ_ij γ_i v_j C[j][k][i],
+    // keeps its circulation ⟨A, Γ⟩ = Σ v_i γ_i while the Euler flow v evolves on its own.
+    const int n = 30;
+    const DenseCoefficients c = randomDense(n, 607);
+    MhdParameters passive;
+    passive.lorentzForce = false;
+    const MhdSystem system(c, passive);
+    EXPECT_LT(jacobianError(system, system.state(randomVector(n, 608), randomVector(n, 609))), 1e-8);
+    ModalIntegrator midpoint(system, {TimeScheme::Midpoint});
+    Eigen::VectorXd x = system.state(randomVector(n, 610), randomVector(n, 611));
+    const Eigen::VectorXd v0 = x.head(n), loop0 = x.tail(n);
+    // A passive loop is stretched exponentially (only its circulation is conserved), so a few
+    // turnovers, not the MHD test's 3000 steps.
+    const double h = largeStep(system, x), e0 = energy(x.head(n));
+    const double circulation0 = crossHelicity(x.head(n), x.tail(n));
+    const double scale = x.head(n).norm() * x.tail(n).norm();
+    double worstCirculation = 0.0, worstEnergy = 0.0, loopChange = 0.0;
+    for (int s = 0; s < 40; ++s) {
+        midpoint.step(x, h);
+        worstCirculation = std::max(
+            worstCirculation, std::abs(crossHelicity(x.head(n), x.tail(n)) - circulation0) / scale);
+        worstEnergy = std::max(worstEnergy, std::abs(energy(x.head(n)) / e0 - 1.0));
+        loopChange = std::max(loopChange, (x.tail(n) - loop0).norm() / loop0.norm());
+    }
+    EXPECT_LE(worstCirculation, 1e-10) << "relative to |v||γ|";
+    EXPECT_LE(worstEnergy, 1e-10) << "the loop must not act on the flow";
+    EXPECT_GT(loopChange, 0.5) << "the loop must actually be advected";
+
+    // The velocity alone follows the Euler flow: the same steps without the loop agree.
+    const FluidSystem euler(c);
+    ModalIntegrator eulerStep(euler, {TimeScheme::Midpoint});
+    Eigen::VectorXd v = v0;
+    for (int s = 0; s < 40; ++s) eulerStep.step(v, h);
+    EXPECT_LE((v - x.head(n)).norm(), 1e-9 * v.norm());
+}
+
 TEST(Mhd, WithoutFieldItIsTheEulerFlow) {
     const int n = 15;
     const DenseCoefficients c = randomDense(n, 607);
