@@ -66,9 +66,13 @@ constexpr std::string_view kTopLevelTables[] = {"grid",    "domain", "basis", "s
 constexpr std::string_view kGridKeys[] = {"resolution", "bounds_min", "bounds_max"};
 constexpr std::string_view kBasisKeys[] = {
     "velocity_modes", "modes", "scalar_modes", "scalar_boundary", "wall", "boundary", "subsamples"};
-constexpr std::string_view kSimulationKeys[] = {"dt", "integrator", "viscosity", "alpha"};
-constexpr std::string_view kInitialKeys[] = {"velocity", "energy",     "seed",
-                                             "band",     "amplitudes", "vortex"};
+constexpr std::string_view kSimulationKeys[] = {"dt",    "integrator", "viscosity",
+                                                "alpha", "mhd",        "magnetic_diffusivity"};
+constexpr std::string_view kInitialKeys[] = {"velocity", "energy",          "seed",
+                                             "band",     "amplitudes",      "vortex",
+                                             "magnetic_energy", "magnetic_seed"};
+/// [initial] keys that go with any velocity choice.
+constexpr std::string_view kInitialFieldKeys[] = {"magnetic_energy", "magnetic_seed"};
 constexpr std::string_view kVortexKeys2d[] = {"center", "strength", "radius"};
 constexpr std::string_view kVortexKeys3d[] = {"center", "normal", "ring_radius", "radius",
                                               "strength"};
@@ -295,6 +299,10 @@ public:
         }
         if (const toml::table* t = optionalTable(root, "initial")) {
             scene.initial = readInitial({*t, "[initial]"}, scene.basis);
+            for (std::string_view key : kInitialFieldKeys)
+                if (!scene.simulation.mhd && t->contains(key))
+                    fail(std::string("[initial].") + std::string(key),
+                         "only used with [simulation] mhd = true", t->get(key));
         }
         forEachEntry(root, "source", [&](const toml::table& t, int index) {
             scene.sources.push_back(readSource(t, index));
@@ -823,6 +831,20 @@ private:
             readChoice(s, "integrator", sim.integrator, Choices<Integrator>(kIntegrators));
         sim.viscosity = readNumber(s, "viscosity", sim.viscosity, Sign::NonNegative);
         sim.alpha = readNumber(s, "alpha", sim.alpha, Sign::NonNegative);
+        if (const toml::node* node = s.table.get("mhd")) {
+            const auto* flag = node->as_boolean();
+            if (flag == nullptr)
+                fail(s, "mhd", "expected true or false, got " + describeType(*node), node);
+            sim.mhd = flag->get();
+        }
+        sim.magneticDiffusivity =
+            readNumber(s, "magnetic_diffusivity", sim.magneticDiffusivity, Sign::NonNegative);
+        if (sim.mhd && sim.alpha > 0.0)
+            fail(s, "alpha", "LANS-alpha and MHD cannot be combined (set one of them)",
+                 s.table.get("alpha"));
+        if (!sim.mhd && s.table.contains("magnetic_diffusivity"))
+            fail(s, "magnetic_diffusivity", "only used with mhd = true",
+                 s.table.get("magnetic_diffusivity"));
         return sim;
     }
 
@@ -837,7 +859,9 @@ private:
         const auto own = initialKeys(initial.velocity);
         for (const auto& [key, node] : s.table) {
             const std::string_view name = key.str();
-            if (name == "velocity" || contains(own, name)) continue;
+            if (name == "velocity" || contains(own, name) ||
+                contains(std::span<const std::string_view>(kInitialFieldKeys), name))
+                continue;
             fail(s, name,
                  "not used with velocity = \"" + chosen + "\"" +
                      (own.empty() ? std::string(" (it takes no other key)")
@@ -864,6 +888,10 @@ private:
                 initial.vortices = readVortices(s);
                 break;
         }
+        initial.magneticEnergy =
+            readNumber(s, "magnetic_energy", initial.magneticEnergy, Sign::NonNegative);
+        if (auto seed = integer(s, "magnetic_seed", 0, std::numeric_limits<std::int64_t>::max()))
+            initial.magneticSeed = static_cast<std::uint64_t>(*seed);
         return initial;
     }
 

@@ -87,6 +87,10 @@ struct SimulationSpec {
     Integrator integrator = Integrator::Midpoint;
     double viscosity = 0.0;
     double alpha = 0.0;
+    /// Ideal MHD (seed §6.3.5): a magnetic field in the velocity basis, advected by the flow and
+    /// acting back on it through the Lorentz term.
+    bool mhd = false;
+    double magneticDiffusivity = 0.0;  ///< η: F_i decays as exp(−ηκ_i²t)
 };
 
 enum class InitialVelocity { Zero, Random, Modes, Vortices };
@@ -113,6 +117,9 @@ struct InitialSpec {
     std::vector<std::pair<int, double>> amplitudes;
     /// vortices: summed, then projected on the basis.
     std::vector<VortexSpec> vortices;
+    /// MHD only: the initial magnetic field, random over all modes with this energy ½|F|².
+    double magneticEnergy = 0.0;
+    std::uint64_t magneticSeed = 2;
 };
 
 /// A smoke/heat emitter (`[[source]]`).

@@ -363,4 +363,38 @@ radius = 0.2
     EXPECT_FALSE(fs::exists(mDir / "c3")) << "the scene is checked before any precompute";
 }
 
+TEST_F(Cli, ModesRunsMhdConservingEnergyAndCrossHelicity) {
+    expectRejected(precompute(scene("m1.toml", std::string(kSmallDisk) +
+                                                   "[initial]\nmagnetic_energy = 1.0\n")),
+                   "mhd = true");
+    expectRejected(precompute(scene("m2.toml", std::string(kSmallDisk) +
+                                                   "[simulation]\nmhd = true\nalpha = 0.1\n")),
+                   "alpha");
+    const fs::path s = scene("mhd.toml", std::string(kSmallDisk) +
+                                             "[simulation]\nmhd = true\n"
+                                             "[initial]\nvelocity = \"random\"\nenergy = 1.0\n"
+                                             "magnetic_energy = 0.5\n");
+    const RunResult r = run("modes " + s.string() + " --cache-dir " + mCache.string() +
+                            " --steps 100 --dt 0.05 --integrator midpoint --csv");
+    ASSERT_EQ(r.status, 0) << r.err;
+    std::istringstream lines(r.out);
+    std::string line;
+    std::getline(lines, line);
+    EXPECT_EQ(line, "step,time,energy,enstrophy,cross_helicity,iterations,residual");
+    std::vector<std::vector<double>> rows;
+    while (std::getline(lines, line)) {
+        std::istringstream fields(line);
+        std::vector<double> row;
+        for (std::string f; std::getline(fields, f, ',');) row.push_back(std::stod(f));
+        rows.push_back(row);
+    }
+    ASSERT_EQ(rows.size(), 101u);
+    EXPECT_NEAR(rows[0][2], 1.5, 1e-12) << "½|v|² + ½|F|²";
+    for (const auto& row : rows) {
+        EXPECT_NEAR(row[2], rows[0][2], 1e-12);
+        EXPECT_NEAR(row[4], rows[0][4], 1e-12) << "cross helicity";
+    }
+
+}
+
 }  // namespace

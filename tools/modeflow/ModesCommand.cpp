@@ -10,6 +10,7 @@
 #include "engine/dynamics/Diagnostics.h"
 #include "engine/dynamics/FluidSystem.h"
 #include "engine/dynamics/InitialConditions.h"
+#include "engine/dynamics/MhdSystem.h"
 #include "engine/dynamics/ModalIntegrator.h"
 #include "engine/dynamics/SparseCoefficients.h"
 #include "engine/format/CacheFile.h"
@@ -103,7 +104,8 @@ Command addModes(CLI::App& app) {
     sub->add_option("--integrator", opts->integrator,
                     "explicit | rk4 | midpoint | trapezoidal (default: [simulation].integrator)");
     sub->add_option("--device", opts->device, "cpu (double-precision reference)");
-    sub->add_flag("--csv", opts->csv, "CSV on stdout: step,time,energy,enstrophy,iterations,residual");
+    sub->add_flag("--csv", opts->csv,
+                  "CSV on stdout: step,time,energy,enstrophy,cross_helicity,iterations,residual");
     sub->add_option("--cache-dir", opts->cacheDir, "cache folder");
     return [sub, opts]() {
         if (!*sub) return -1;
@@ -121,41 +123,60 @@ Command addModes(CLI::App& app) {
         const auto coefficients = loadCoefficients(cache);
         const int n = coefficients->size();
 
-        FluidParameters parameters;
-        parameters.kappaSquared = cache.velocity.eigenvalues;
-        parameters.viscosity = scene.simulation.viscosity;
-        parameters.alpha = scene.simulation.alpha;
-        const FluidSystem system(*coefficients, parameters);
-        ModalIntegrator integrator(system, settings);
-
-        const double h = opts->dt.value_or(scene.simulation.dt);
-        const int steps = opts->steps.value_or(scene.output.frames * scene.output.stepsPerFrame);
-        Eigen::VectorXd v = initialVelocity(scene, cache, n);
+        const SimulationSpec& sim = scene.simulation;
         const auto& k2 = cache.velocity.eigenvalues;
+        std::unique_ptr<ModalSystem> system;
+        Eigen::VectorXd x = initialVelocity(scene, cache, n);
+        if (sim.mhd) {
+            MhdParameters parameters{k2, sim.viscosity, sim.magneticDiffusivity};
+            auto mhd = std::make_unique<MhdSystem>(*coefficients, parameters);
+            RandomVelocitySpec field;
+            field.energy = scene.initial.magneticEnergy;
+            field.seed = scene.initial.magneticSeed;
+            x = mhd->state(x, randomVelocity(n, field));
+            system = std::move(mhd);
+        } else {
+            system = std::make_unique<FluidSystem>(
+                *coefficients, FluidParameters{k2, sim.viscosity, sim.alpha});
+        }
+        ModalIntegrator integrator(*system, settings);
+
+        const double h = opts->dt.value_or(sim.dt);
+        const int steps = opts->steps.value_or(scene.output.frames * scene.output.stepsPerFrame);
         const bool twoD = cache.grid.dim == 2;
-        const double e0 = lansEnergy(v, k2, scene.simulation.alpha);
+        // Conserved by the midpoint rule: ½Σ(1+α²κ²)v² (Euler, LANS-α) or ½(|v|²+|F|²) (MHD).
+        auto totalEnergy = [&]() {
+            return sim.mhd ? energy(x) : lansEnergy(x, k2, sim.alpha);
+        };
+        const double e0 = totalEnergy();
 
         auto row = [&](int step, const StepReport& r) {
-            const double e = lansEnergy(v, k2, scene.simulation.alpha);
+            const double e = totalEnergy();
+            const Eigen::VectorXd v = x.head(n);
+            const double helicity = sim.mhd ? crossHelicity(v, x.tail(n)) : std::nan("");
             if (opts->csv) {
-                std::printf("%d,%.17g,%.17g,%.17g,%d,%.3e\n", step, step * h, e,
-                            twoD ? enstrophy(v, k2) : std::nan(""), r.iterations, r.residual);
+                std::printf("%d,%.17g,%.17g,%.17g,%.17g,%d,%.3e\n", step, step * h, e,
+                            twoD ? enstrophy(v, k2) : std::nan(""), helicity, r.iterations,
+                            r.residual);
             } else if (step % std::max(1, steps / 20) == 0 || step == steps) {
-                std::printf("%8d  t=%-10.4g energy %.15g  (drift %+.2e)  newton %d\n", step,
-                            step * h, e, e0 > 0 ? e / e0 - 1.0 : 0.0, r.iterations);
+                std::printf("%8d  t=%-10.4g energy %.15g  (drift %+.2e)", step, step * h, e,
+                            e0 > 0 ? e / e0 - 1.0 : 0.0);
+                if (sim.mhd) std::printf("  cross helicity %.15g", helicity);
+                std::printf("  newton %d\n", r.iterations);
             }
         };
-        if (opts->csv) std::printf("step,time,energy,enstrophy,iterations,residual\n");
+        if (opts->csv)
+            std::printf("step,time,energy,enstrophy,cross_helicity,iterations,residual\n");
         else
-            std::printf("%d modes, %s, dt %g, %d steps\n", n,
+            std::printf("%d modes%s, %s, dt %g, %d steps\n", n, sim.mhd ? " (MHD)" : "",
                         std::string(timeSchemeName(settings.scheme)).c_str(), h, steps);
         row(0, StepReport{});
         int unconverged = 0;
         for (int s = 1; s <= steps; ++s) {
-            const StepReport r = integrator.step(v, h);
+            const StepReport r = integrator.step(x, h);
             unconverged += !r.converged;
             row(s, r);
-            if (!v.allFinite())
+            if (!x.allFinite())
                 throw Error("the modal state diverged at step " + std::to_string(s) + " (t = " +
                             std::to_string(s * h) + "); " +
                             std::string(timeSchemeName(settings.scheme)) +
