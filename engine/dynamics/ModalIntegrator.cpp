@@ -45,10 +45,10 @@ StepReport ModalIntegrator::advance(Eigen::VectorXd& x, double t, double h,
     decay(x, 0.5 * h);
     StepReport report;
     switch (mSettings.scheme) {
-        case TimeScheme::ExplicitEuler: explicitEuler(x, t, h, force); break;
-        case TimeScheme::RungeKutta4: rungeKutta4(x, t, h, force); break;
-        case TimeScheme::Midpoint: report = midpoint(x, t, h, force); break;
-        case TimeScheme::Trapezoidal: report = trapezoidal(x, t, h, force); break;
+        case Integrator::Explicit: explicitEuler(x, t, h, force); break;
+        case Integrator::Rk4: rungeKutta4(x, t, h, force); break;
+        case Integrator::Midpoint: report = midpoint(x, t, h, force); break;
+        case Integrator::Trapezoidal: report = trapezoidal(x, t, h, force); break;
     }
     decay(x, 0.5 * h);
     return report;

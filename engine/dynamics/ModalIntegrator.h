@@ -1,6 +1,6 @@
 #pragma once
 /// @file ModalIntegrator.h
-/// Advances a ModalSystem M ẋ = R(x) + f(t) by one step h with the chosen TimeScheme:
+/// Advances a ModalSystem M ẋ = R(x) + f(t) by one step h with the chosen Integrator:
 ///
 ///   explicit     x' = x + h M⁻¹(R(x) + f(t))
 ///   rk4          classical Runge–Kutta with forces sampled at t, t + h/2, t + h
@@ -24,12 +24,12 @@
 #include "engine/dynamics/ModalForce.h"
 #include "engine/dynamics/ModalSystem.h"
 #include "engine/dynamics/StepReport.h"
-#include "engine/dynamics/TimeScheme.h"
+#include "precompute/scene/SceneSpec.h"
 
 namespace modeflow {
 
 struct IntegratorSettings {
-    TimeScheme scheme = TimeScheme::Midpoint;
+    Integrator scheme = Integrator::Midpoint;
     /// Newton residual, relative to the momentum |Mx|. At 1e-13 the accepted residual already
     /// leaves a systematic energy error of ~3e-15 per midpoint step (3e-11 over 10⁴ steps of a
     /// random N = 50 state); 1e-14 brings that to round-off for ~10% more passes.

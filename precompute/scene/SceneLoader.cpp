@@ -1108,6 +1108,17 @@ std::string_view sceneKeyword(BoundaryTreatment treatment) {
 std::string_view sceneKeyword(Integrator integrator) {
     return keywordOf(Choices<Integrator>(kIntegrators), integrator);
 }
+Integrator parseIntegrator(std::string_view text, std::string_view key) {
+    std::vector<std::string_view> names;
+    for (const auto& [name, value] : kIntegrators) {
+        if (name == text) return value;
+        names.push_back(name);
+    }
+    std::string what = std::string(key) + ": unknown integrator \"" + std::string(text) + "\"";
+    if (auto guess = closest(text, names)) what += " (did you mean " + std::string(*guess) + "?)";
+    throw Error(what + "; expected " + joinWords(names));
+}
+
 std::string_view sceneKeyword(InitialVelocity velocity) {
     return keywordOf(Choices<InitialVelocity>(kInitialVelocities), velocity);
 }

@@ -46,6 +46,11 @@ std::string_view sceneKeyword(ScalarBoundary boundary);
 std::string_view sceneKeyword(WallKind wall);
 std::string_view sceneKeyword(BoundaryTreatment treatment);
 std::string_view sceneKeyword(Integrator integrator);
+
+/// The integrator a scene keyword names ("explicit", "rk4", "midpoint", "trapezoidal"), for
+/// command-line options that override [simulation].integrator. `key` prefixes the message.
+/// @throw Error naming the value, the closest keyword and the choices.
+Integrator parseIntegrator(std::string_view text, std::string_view key);
 std::string_view sceneKeyword(InitialVelocity velocity);
 
 }  // namespace modeflow

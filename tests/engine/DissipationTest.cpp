@@ -13,6 +13,7 @@
 #include "engine/dynamics/Diagnostics.h"
 #include "engine/dynamics/FluidSystem.h"
 #include "engine/dynamics/ModalIntegrator.h"
+#include "precompute/scene/SceneLoader.h"
 #include "engine/format/Error.h"
 #include "tests/engine/RandomCoefficients.h"
 
@@ -41,8 +42,8 @@ TEST(Viscosity, LoneModeDecaysExactlyForAnyStep) {
     const Eigen::VectorXd k2 = shapedKappaSquared(n);
     const FluidSystem system(c, {k2, nu, 0.0});
     const double time = 10.0, amplitude = 1.7;
-    for (TimeScheme scheme : {TimeScheme::ExplicitEuler, TimeScheme::RungeKutta4,
-                              TimeScheme::Midpoint, TimeScheme::Trapezoidal}) {
+    for (Integrator scheme : {Integrator::Explicit, Integrator::Rk4,
+                              Integrator::Midpoint, Integrator::Trapezoidal}) {
         for (int steps : {1, 3, 100, 10000}) {
             ModalIntegrator integrator(system, {scheme});
             Eigen::VectorXd v = Eigen::VectorXd::Zero(n);
@@ -51,7 +52,7 @@ TEST(Viscosity, LoneModeDecaysExactlyForAnyStep) {
             const double expected = amplitude * std::exp(-nu * k2[lone] * time);
             // Exact up to the round-off of 2·steps multiplications by e^{−νκ²h/2}.
             EXPECT_NEAR(v[lone] / expected, 1.0, 1e-14 + 1e-16 * 2 * steps)
-                << timeSchemeName(scheme) << ", " << steps << " steps";
+                << sceneKeyword(scheme) << ", " << steps << " steps";
             v[lone] = 0.0;
             EXPECT_EQ(v.norm(), 0.0) << "other modes were excited";
         }
@@ -64,7 +65,7 @@ TEST(Viscosity, EnergyFallsEveryStepAndAtLeastAtTheSlowestRate) {
     const Eigen::VectorXd k2 = shapedKappaSquared(n);
     const double nu = 1e-3, h = 0.01;
     const FluidSystem system(c, {k2, nu, 0.0});
-    ModalIntegrator midpoint(system, {TimeScheme::Midpoint});
+    ModalIntegrator midpoint(system, {Integrator::Midpoint});
     Eigen::VectorXd v = randomVector(n, 403);
     const double e0 = energy(v), slowest = 2.0 * nu * k2.minCoeff();
     double previous = e0;

@@ -17,6 +17,7 @@
 #include "engine/dynamics/Diagnostics.h"
 #include "engine/dynamics/FluidSystem.h"
 #include "engine/dynamics/ModalIntegrator.h"
+#include "precompute/scene/SceneLoader.h"
 #include "engine/dynamics/PackedLayout.h"
 #include "engine/format/Error.h"
 #include "tests/engine/RandomCoefficients.h"
@@ -71,7 +72,7 @@ protected:
 };
 
 TEST_F(RandomState, MidpointConservesEnergyAtALargeStep) {
-    ModalIntegrator midpoint(mSystem, {TimeScheme::Midpoint});
+    ModalIntegrator midpoint(mSystem, {Integrator::Midpoint});
     Eigen::VectorXd v = mV0;
     const RunSummary s = run(midpoint, v, mH, 10000);
     EXPECT_LE(s.maxEnergyDrift, 1e-10);
@@ -100,19 +101,19 @@ TEST_F(RandomState, ImplicitRulesAreTimeReversible) {
     // trips span ~10 turnovers (1000 small steps, or 30 large ones), enough to leave the start
     // far behind.
     const double small = stepFor(mC, mV0, 0.01);
-    for (TimeScheme scheme : {TimeScheme::Midpoint, TimeScheme::Trapezoidal}) {
+    for (Integrator scheme : {Integrator::Midpoint, Integrator::Trapezoidal}) {
         ModalIntegrator integrator(mSystem, {scheme});
         for (const auto& [h, steps] : {std::pair{small, 1000}, std::pair{mH, 30}}) {
             double travelled = 0.0;
             const double back = roundTrip(integrator, mV0, h, steps, travelled);
-            EXPECT_LE(back, 1e-9) << timeSchemeName(scheme) << ", " << steps << " steps";
+            EXPECT_LE(back, 1e-9) << sceneKeyword(scheme) << ", " << steps << " steps";
             EXPECT_GT(travelled, 0.5) << "the round trip must actually move the state";
         }
     }
 }
 
 TEST_F(RandomState, TrapezoidalEnergyStaysBounded) {
-    ModalIntegrator trapezoidal(mSystem, {TimeScheme::Trapezoidal});
+    ModalIntegrator trapezoidal(mSystem, {Integrator::Trapezoidal});
     Eigen::VectorXd v = mV0;
     const double e0 = energy(v);
     const int steps = 10000, window = 1000;
@@ -137,10 +138,10 @@ TEST_F(RandomState, ExplicitEulerEnergyGrowsWithTheStep) {
     // |v + hR|² = |v|² + h²|R|² since v·R = 0: explicit Euler gains energy every step, and over a
     // fixed time the gain is about proportional to h.
     const double time = 100 * mH;
-    ModalIntegrator midpoint(mSystem, {TimeScheme::Midpoint});
+    ModalIntegrator midpoint(mSystem, {Integrator::Midpoint});
     Eigen::VectorXd reference = mV0;
     const double midpointDrift = run(midpoint, reference, mH, 100).maxEnergyDrift;
-    ModalIntegrator euler(mSystem, {TimeScheme::ExplicitEuler});
+    ModalIntegrator euler(mSystem, {Integrator::Explicit});
     std::vector<double> drifts;
     for (int refinement : {32, 64, 128}) {
         Eigen::VectorXd v = mV0;
@@ -163,7 +164,7 @@ TEST_F(RandomState, ExplicitEulerEnergyGrowsWithTheStep) {
 }
 
 /// Error at time T of scheme with n steps against a fine RK4 reference.
-double trajectoryError(const FluidSystem& system, TimeScheme scheme, const Eigen::VectorXd& v0,
+double trajectoryError(const FluidSystem& system, Integrator scheme, const Eigen::VectorXd& v0,
                        double time, int steps, const Eigen::VectorXd& reference) {
     ModalIntegrator integrator(system, {scheme});
     Eigen::VectorXd v = v0;
@@ -176,17 +177,17 @@ TEST(Integrators, ConvergeAtTheirOrders) {
     const FluidSystem system(c);
     const Eigen::VectorXd v0 = randomVector(20, 204);
     const double time = 4 * stepFor(c, v0, 1.0);
-    ModalIntegrator fine(system, {TimeScheme::RungeKutta4});
+    ModalIntegrator fine(system, {Integrator::Rk4});
     Eigen::VectorXd reference = v0;
     for (int n = 0; n < 4096; ++n) fine.step(reference, time / 4096);
-    const std::vector<std::pair<TimeScheme, double>> orders{
-        {TimeScheme::RungeKutta4, 4.0}, {TimeScheme::Midpoint, 2.0},
-        {TimeScheme::Trapezoidal, 2.0}, {TimeScheme::ExplicitEuler, 1.0}};
+    const std::vector<std::pair<Integrator, double>> orders{
+        {Integrator::Rk4, 4.0}, {Integrator::Midpoint, 2.0},
+        {Integrator::Trapezoidal, 2.0}, {Integrator::Explicit, 1.0}};
     for (const auto& [scheme, order] : orders) {
         const double coarse = trajectoryError(system, scheme, v0, time, 64, reference);
         const double finer = trajectoryError(system, scheme, v0, time, 128, reference);
         const double measured = std::log2(coarse / finer);
-        EXPECT_NEAR(measured, order, 0.2) << timeSchemeName(scheme) << ": errors " << coarse
+        EXPECT_NEAR(measured, order, 0.2) << sceneKeyword(scheme) << ": errors " << coarse
                                           << " -> " << finer;
     }
 }
@@ -206,7 +207,7 @@ TEST(EulerTop, MidpointKeepsBothQuadraticInvariants) {
     const Eigen::Vector3d lambda(1.0, 2.0, 3.5);
     const DenseCoefficients c = eulerTop(lambda);
     const FluidSystem system(c);
-    ModalIntegrator midpoint(system, {TimeScheme::Midpoint});
+    ModalIntegrator midpoint(system, {Integrator::Midpoint});
     Eigen::VectorXd v(3);
     v << 0.3, 1.0, 0.2;
     const double e0 = v.squaredNorm(), q0 = v.dot(lambda.cwiseProduct(v));
@@ -220,10 +221,10 @@ TEST(EulerTop, MidpointKeepsBothQuadraticInvariants) {
     EXPECT_LE(worstQ, 1e-12);  // the midpoint rule keeps every quadratic invariant
 
     // The top is integrable, so errors grow slowly and even long round trips come back.
-    for (TimeScheme scheme : {TimeScheme::Midpoint, TimeScheme::Trapezoidal}) {
+    for (Integrator scheme : {Integrator::Midpoint, Integrator::Trapezoidal}) {
         ModalIntegrator integrator(system, {scheme});
         double travelled = 0.0;
-        EXPECT_LE(roundTrip(integrator, v, 0.2, 1000, travelled), 1e-10) << timeSchemeName(scheme);
+        EXPECT_LE(roundTrip(integrator, v, 0.2, 1000, travelled), 1e-10) << sceneKeyword(scheme);
         EXPECT_GT(travelled, 0.01);  // the orbit is periodic: 1000 steps end somewhere on it
     }
 }
@@ -238,7 +239,7 @@ TEST(EulerTop, SymmetricTopMatchesClosedForms) {
     Eigen::VectorXd v0(3);
     v0 << radius * std::cos(theta0), radius * std::sin(theta0), v2;
 
-    ModalIntegrator midpoint(system, {TimeScheme::Midpoint});
+    ModalIntegrator midpoint(system, {Integrator::Midpoint});
     Eigen::VectorXd v = v0;
     const int steps = 1000;
     for (int n = 0; n < steps; ++n) midpoint.step(v, h);
@@ -250,7 +251,7 @@ TEST(EulerTop, SymmetricTopMatchesClosedForms) {
     // RK4 against the exact solution at t = 2: fourth order.
     std::vector<double> errors;
     for (int steps4 : {20, 40}) {
-        ModalIntegrator rk4(system, {TimeScheme::RungeKutta4});
+        ModalIntegrator rk4(system, {Integrator::Rk4});
         Eigen::VectorXd w = v0;
         for (int n = 0; n < steps4; ++n) rk4.step(w, 2.0 / steps4);
         Eigen::VectorXd exact(3);
@@ -268,13 +269,13 @@ TEST(Forces, ConstantForceWithoutCouplingIsExactForEveryScheme) {
     const FluidSystem system(zero);
     const Eigen::VectorXd v0 = randomVector(n, 301), f = randomVector(n, 302);
     const double h = 0.05;
-    for (TimeScheme scheme : {TimeScheme::ExplicitEuler, TimeScheme::RungeKutta4,
-                              TimeScheme::Midpoint, TimeScheme::Trapezoidal}) {
+    for (Integrator scheme : {Integrator::Explicit, Integrator::Rk4,
+                              Integrator::Midpoint, Integrator::Trapezoidal}) {
         ModalIntegrator integrator(system, {scheme});
         Eigen::VectorXd v = v0;
         for (int s = 0; s < 100; ++s) integrator.step(v, h, f);
         const Eigen::VectorXd expected = v0 + f * (100 * h);
-        EXPECT_LT((v - expected).norm() / expected.norm(), 1e-13) << timeSchemeName(scheme);
+        EXPECT_LT((v - expected).norm() / expected.norm(), 1e-13) << sceneKeyword(scheme);
     }
 }
 
@@ -286,14 +287,14 @@ TEST(Forces, LinearInTimeForceIsExactForSecondOrderSchemes) {
                           f1 = randomVector(n, 305);
     const ForceFunction force = [&](double t) { return Eigen::VectorXd(f0 + t * f1); };
     const double h = 0.1;
-    for (TimeScheme scheme :
-         {TimeScheme::RungeKutta4, TimeScheme::Midpoint, TimeScheme::Trapezoidal}) {
+    for (Integrator scheme :
+         {Integrator::Rk4, Integrator::Midpoint, Integrator::Trapezoidal}) {
         ModalIntegrator integrator(system, {scheme});
         Eigen::VectorXd v = v0;
         double t = 1.0;
         for (int s = 0; s < 50; ++s, t += h) integrator.step(v, t, h, force);
         const Eigen::VectorXd expected = v0 + f0 * (t - 1.0) + 0.5 * f1 * (t * t - 1.0);
-        EXPECT_LT((v - expected).norm() / expected.norm(), 1e-13) << timeSchemeName(scheme);
+        EXPECT_LT((v - expected).norm() / expected.norm(), 1e-13) << sceneKeyword(scheme);
     }
 }
 
@@ -304,10 +305,10 @@ TEST(Integrators, RejectBadInput) {
     Eigen::VectorXd wrong = Eigen::VectorXd::Ones(5), v = Eigen::VectorXd::Ones(6);
     EXPECT_THROW(integrator.step(wrong, 0.1), Error);
     EXPECT_THROW(integrator.step(v, 0.1, Eigen::VectorXd::Ones(7)), Error);
-    EXPECT_THROW(ModalIntegrator(system, {TimeScheme::Midpoint, 0.0, 10}), Error);
-    EXPECT_EQ(parseTimeScheme("trapezoidal"), TimeScheme::Trapezoidal);
-    EXPECT_EQ(timeSchemeName(parseTimeScheme("rk4")), "rk4");
-    EXPECT_THROW(parseTimeScheme("leapfrog"), Error);
+    EXPECT_THROW(ModalIntegrator(system, {Integrator::Midpoint, 0.0, 10}), Error);
+    EXPECT_EQ(parseIntegrator("trapezoidal", "--integrator"), Integrator::Trapezoidal);
+    EXPECT_EQ(sceneKeyword(parseIntegrator("rk4", "--integrator")), "rk4");
+    EXPECT_THROW(parseIntegrator("leapfrog", "--integrator"), Error);
 }
 
 }  // namespace

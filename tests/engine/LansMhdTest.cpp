@@ -15,6 +15,7 @@
 #include "engine/dynamics/FluidSystem.h"
 #include "engine/dynamics/MhdSystem.h"
 #include "engine/dynamics/ModalIntegrator.h"
+#include "precompute/scene/SceneLoader.h"
 #include "engine/dynamics/PackedLayout.h"
 #include "engine/dynamics/SparseCoefficients.h"
 #include "engine/format/Error.h"
@@ -70,7 +71,7 @@ TEST(Lans, MidpointConservesTheFilteredEnergy) {
     const Eigen::VectorXd k2 = shapedKappaSquared(n);
     const double alpha = 0.05;
     const FluidSystem system(c, {k2, 0.0, alpha});
-    ModalIntegrator midpoint(system, {TimeScheme::Midpoint});
+    ModalIntegrator midpoint(system, {Integrator::Midpoint});
     Eigen::VectorXd v = randomVector(n, 504);
     const double h = largeStep(system, v), lans0 = lansEnergy(v, k2, alpha), plain0 = energy(v);
     double worst = 0.0, plainChange = 0.0;
@@ -91,13 +92,13 @@ TEST(Lans, ForcesActOnTheMomentum) {
     const Eigen::VectorXd k2 = shapedKappaSquared(n);
     const FluidSystem system(zero, {k2, 0.0, 0.1});
     const Eigen::VectorXd v0 = randomVector(n, 505), f = randomVector(n, 506);
-    for (TimeScheme scheme : {TimeScheme::ExplicitEuler, TimeScheme::RungeKutta4,
-                              TimeScheme::Midpoint, TimeScheme::Trapezoidal}) {
+    for (Integrator scheme : {Integrator::Explicit, Integrator::Rk4,
+                              Integrator::Midpoint, Integrator::Trapezoidal}) {
         ModalIntegrator integrator(system, {scheme});
         Eigen::VectorXd v = v0;
         for (int s = 0; s < 20; ++s) integrator.step(v, 0.1, f);
         const Eigen::VectorXd expected = v0 + 2.0 * f.cwiseQuotient(system.mass());
-        EXPECT_LT((v - expected).norm() / expected.norm(), 1e-13) << timeSchemeName(scheme);
+        EXPECT_LT((v - expected).norm() / expected.norm(), 1e-13) << sceneKeyword(scheme);
     }
 }
 
@@ -112,7 +113,7 @@ TEST(Mhd, MidpointConservesEnergyAndCrossHelicity) {
     const int n = 30;
     const DenseCoefficients c = randomDense(n, 604);
     const MhdSystem system(c);
-    ModalIntegrator midpoint(system, {TimeScheme::Midpoint});
+    ModalIntegrator midpoint(system, {Integrator::Midpoint});
     Eigen::VectorXd x = system.state(randomVector(n, 605), 0.7 * randomVector(n, 606));
     const double h = largeStep(system, x), e0 = energy(x);
     const double scale = x.head(n).norm() * x.tail(n).norm();
@@ -141,7 +142,7 @@ TEST(Kelvin, MidpointConservesTheSpectralCirculationOfAnAdvectedLoop) {
     passive.lorentzForce = false;
     const MhdSystem system(c, passive);
     EXPECT_LT(jacobianError(system, system.state(randomVector(n, 608), randomVector(n, 609))), 1e-8);
-    ModalIntegrator midpoint(system, {TimeScheme::Midpoint});
+    ModalIntegrator midpoint(system, {Integrator::Midpoint});
     Eigen::VectorXd x = system.state(randomVector(n, 610), randomVector(n, 611));
     const Eigen::VectorXd v0 = x.head(n), loop0 = x.tail(n);
     // A passive loop is stretched exponentially (only its circulation is conserved), so a few
@@ -163,7 +164,7 @@ TEST(Kelvin, MidpointConservesTheSpectralCirculationOfAnAdvectedLoop) {
 
     // The velocity alone follows the Euler flow: the same steps without the loop agree.
     const FluidSystem euler(c);
-    ModalIntegrator eulerStep(euler, {TimeScheme::Midpoint});
+    ModalIntegrator eulerStep(euler, {Integrator::Midpoint});
     Eigen::VectorXd v = v0;
     for (int s = 0; s < 40; ++s) eulerStep.step(v, h);
     EXPECT_LE((v - x.head(n)).norm(), 1e-9 * v.norm());

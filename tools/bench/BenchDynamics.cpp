@@ -81,7 +81,7 @@ void contraction(benchmark::State& state, Storage storage, bool withJacobian) {
     state.counters["MB"] = double(c.storedBytes()) * 1e-6;
 }
 
-void step(benchmark::State& state, Storage storage, TimeScheme scheme) {
+void step(benchmark::State& state, Storage storage, Integrator scheme) {
     const int n = int(state.range(0));
     const StructuralCoefficients& c = coefficients(n, storage);
     const FluidSystem system(c);
@@ -97,7 +97,7 @@ void step(benchmark::State& state, Storage storage, TimeScheme scheme) {
         const StepReport report = integrator.step(v, h);
         iterations += report.iterations;
         jacobians += report.jacobians;
-        passes += scheme == TimeScheme::Midpoint ? report.iterations + 1 : 1;
+        passes += scheme == Integrator::Midpoint ? report.iterations + 1 : 1;
     }
     state.counters["GB/s"] = benchmark::Counter(passes * double(c.storedBytes()) * 1e-9,
                                                 benchmark::Counter::kIsRate);
@@ -116,11 +116,11 @@ BENCHMARK_CAPTURE(contraction, apply_dense, Storage::Dense, false)->Apply(sizes)
 BENCHMARK_CAPTURE(contraction, apply_sparse, Storage::Sparse, false)->Apply(sizes);
 BENCHMARK_CAPTURE(contraction, linearize_dense, Storage::Dense, true)->Apply(sizes);
 BENCHMARK_CAPTURE(contraction, linearize_sparse, Storage::Sparse, true)->Apply(sizes);
-BENCHMARK_CAPTURE(step, explicit_dense, Storage::Dense, TimeScheme::ExplicitEuler)->Apply(sizes);
-BENCHMARK_CAPTURE(step, explicit_sparse, Storage::Sparse, TimeScheme::ExplicitEuler)
+BENCHMARK_CAPTURE(step, explicit_dense, Storage::Dense, Integrator::Explicit)->Apply(sizes);
+BENCHMARK_CAPTURE(step, explicit_sparse, Storage::Sparse, Integrator::Explicit)
     ->Apply(sizes);
-BENCHMARK_CAPTURE(step, midpoint_dense, Storage::Dense, TimeScheme::Midpoint)->Apply(sizes);
-BENCHMARK_CAPTURE(step, midpoint_sparse, Storage::Sparse, TimeScheme::Midpoint)->Apply(sizes);
+BENCHMARK_CAPTURE(step, midpoint_dense, Storage::Dense, Integrator::Midpoint)->Apply(sizes);
+BENCHMARK_CAPTURE(step, midpoint_sparse, Storage::Sparse, Integrator::Midpoint)->Apply(sizes);
 
 }  // namespace
 

@@ -33,10 +33,6 @@ std::unique_ptr<StructuralCoefficients> loadCoefficients(const BasisCache& cache
     return std::make_unique<SparseCoefficients>(n, std::move(entries));
 }
 
-TimeScheme schemeOf(Integrator integrator) {
-    return parseTimeScheme(sceneKeyword(integrator));
-}
-
 /// The scene's [initial] velocity as a modal state on this basis. Mode numbers in the scene are
 /// 1-based positions in the basis; the engine takes 0-based ones.
 Eigen::VectorXd initialVelocity(const SceneSpec& scene, const BasisCache& cache, int modes) {
@@ -115,8 +111,8 @@ Command addModes(CLI::App& app) {
         const SceneSpec scene = loadScene(opts->scene);
         IntegratorSettings settings;
         // Checked before any precompute work.
-        settings.scheme = opts->integrator ? parseTimeScheme(*opts->integrator)
-                                           : schemeOf(scene.simulation.integrator);
+        settings.scheme = opts->integrator ? parseIntegrator(*opts->integrator, "--integrator")
+                                           : scene.simulation.integrator;
         Progress progress = Progress::toStderr();
         const auto cachePath = ensureCache(scene, resolveCacheDir(opts->cacheDir), false, progress).path;
         const BasisCache cache = readCache(cachePath);
@@ -169,7 +165,7 @@ Command addModes(CLI::App& app) {
             std::printf("step,time,energy,enstrophy,cross_helicity,iterations,residual\n");
         else
             std::printf("%d modes%s, %s, dt %g, %d steps\n", n, sim.mhd ? " (MHD)" : "",
-                        std::string(timeSchemeName(settings.scheme)).c_str(), h, steps);
+                        std::string(sceneKeyword(settings.scheme)).c_str(), h, steps);
         row(0, StepReport{});
         int unconverged = 0;
         for (int s = 1; s <= steps; ++s) {
@@ -179,7 +175,7 @@ Command addModes(CLI::App& app) {
             if (!x.allFinite())
                 throw Error("the modal state diverged at step " + std::to_string(s) + " (t = " +
                             std::to_string(s * h) + "); " +
-                            std::string(timeSchemeName(settings.scheme)) +
+                            std::string(sceneKeyword(settings.scheme)) +
                             " is unstable at this step size: lower --dt or use midpoint");
         }
         std::fflush(stdout);
