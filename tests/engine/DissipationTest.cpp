@@ -22,13 +22,7 @@ namespace {
 
 using testing::randomFullTensor;
 using testing::randomVector;
-
-/// κ² of a frequency-shaped basis: a low band and a high band, not sorted.
-Eigen::VectorXd shapedKappaSquared(int n) {
-    Eigen::VectorXd k2(n);
-    for (int i = 0; i < n; ++i) k2[i] = (i % 2 == 0) ? 5.0 + 3.0 * i : 900.0 - 7.0 * i;
-    return k2;
-}
+using testing::shapedKappaSquared;
 
 TEST(Viscosity, LoneModeDecaysExactlyForAnyStep) {
     const int n = 20, lone = 7;

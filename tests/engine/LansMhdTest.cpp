@@ -26,12 +26,7 @@ namespace {
 
 using testing::randomDense;
 using testing::randomVector;
-
-Eigen::VectorXd shapedKappaSquared(int n) {
-    Eigen::VectorXd k2(n);
-    for (int i = 0; i < n; ++i) k2[i] = (i % 3 == 0) ? 2.0 + i : 400.0 - 5.0 * i;
-    return k2;
-}
+using testing::shapedKappaSquared;
 
 /// Largest relative difference between the analytic Jacobian and central differences (exact
 /// for a quadratic R, up to round-off).

@@ -52,6 +52,13 @@ inline Eigen::VectorXd randomVector(int n, std::uint64_t seed) {
     return v;
 }
 
+/// κ² of a frequency-shaped basis: a low band and a high band, interleaved, not sorted.
+inline Eigen::VectorXd shapedKappaSquared(int n) {
+    Eigen::VectorXd k2(n);
+    for (int i = 0; i < n; ++i) k2[i] = (i % 2 == 0) ? 5.0 + 3.0 * i : 900.0 - 7.0 * i;
+    return k2;
+}
+
 /// Σ_ij C[k][i][j] a_i b_j from entry().
 inline Eigen::VectorXd bruteApply(const StructuralCoefficients& c, const Eigen::VectorXd& a,
                                   const Eigen::VectorXd& b) {

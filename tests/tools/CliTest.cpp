@@ -96,6 +96,31 @@ std::string replaced(std::string text, const std::string& from, const std::strin
     return text;
 }
 
+/// The table `modes --csv` prints: its header line and each row's numbers.
+struct Csv {
+    std::string header;
+    std::vector<std::vector<double>> rows;
+};
+
+Csv parseCsv(const std::string& out) {
+    std::istringstream lines(out);
+    Csv csv;
+    std::getline(lines, csv.header);
+    for (std::string line; std::getline(lines, line);) {
+        std::istringstream fields(line);
+        std::vector<double>& row = csv.rows.emplace_back();
+        for (std::string f; std::getline(fields, f, ',');) row.push_back(std::stod(f));
+    }
+    return csv;
+}
+
+/// The energy column (the third) of `modes --csv`.
+std::vector<double> csvEnergies(const std::string& out) {
+    std::vector<double> energies;
+    for (const auto& row : parseCsv(out).rows) energies.push_back(row.at(2));
+    return energies;
+}
+
 TEST_F(Cli, PrecomputePrintsTheCachePathLastAndReusesIt) {
     const fs::path s = scene("disk.toml", kSmallDisk);
     const RunResult first = run(precompute(s));
@@ -267,25 +292,12 @@ TEST_F(Cli, ModesRunsTheReducedDynamicsAsCsv) {
     const RunResult r = run("modes " + s.string() + " --cache-dir " + mCache.string() +
                             " --steps 200 --dt 0.05 --integrator midpoint --csv");
     ASSERT_EQ(r.status, 0) << r.err;
-    std::istringstream lines(r.out);
-    std::string line;
-    std::getline(lines, line);
-    EXPECT_EQ(line.rfind("step,time,energy", 0), 0u) << line;
-    int rows = 0;
-    double first = -1.0, worst = 0.0;
-    while (std::getline(lines, line)) {
-        std::istringstream fields(line);
-        std::string step, time, energy;
-        std::getline(fields, step, ',');
-        std::getline(fields, time, ',');
-        std::getline(fields, energy, ',');
-        const double e = std::stod(energy);
-        if (first < 0) first = e;
-        worst = std::max(worst, std::abs(e / first - 1.0));
-        ++rows;
-    }
-    EXPECT_EQ(rows, 201);
-    EXPECT_NEAR(first, 2.0, 1e-12);
+    EXPECT_EQ(parseCsv(r.out).header.rfind("step,time,energy", 0), 0u) << r.out.substr(0, 80);
+    const std::vector<double> energies = csvEnergies(r.out);
+    ASSERT_EQ(energies.size(), 201u);
+    double worst = 0.0;
+    for (double e : energies) worst = std::max(worst, std::abs(e / energies[0] - 1.0));
+    EXPECT_NEAR(energies[0], 2.0, 1e-12);
     EXPECT_LE(worst, 1e-12) << "midpoint must conserve energy";
 
     const RunResult bad = run("modes " + s.string() + " --cache-dir " + (mDir / "c2").string() +
@@ -297,23 +309,6 @@ TEST_F(Cli, ModesRunsTheReducedDynamicsAsCsv) {
                               " --device vulkan --steps 2");
     EXPECT_NE(gpu.status, 0);
     EXPECT_NE(gpu.err.find("--device"), std::string::npos) << gpu.err;
-}
-
-/// The energy column of each CSV row printed by `modes --csv`.
-std::vector<double> csvEnergies(const std::string& out) {
-    std::istringstream lines(out);
-    std::string line;
-    std::getline(lines, line);  // header
-    std::vector<double> energies;
-    while (std::getline(lines, line)) {
-        std::istringstream fields(line);
-        std::string step, time, energy;
-        std::getline(fields, step, ',');
-        std::getline(fields, time, ',');
-        std::getline(fields, energy, ',');
-        energies.push_back(std::stod(energy));
-    }
-    return energies;
 }
 
 TEST_F(Cli, ModesStartsFromVorticesAndFromModalAmplitudes) {
@@ -377,24 +372,15 @@ TEST_F(Cli, ModesRunsMhdConservingEnergyAndCrossHelicity) {
     const RunResult r = run("modes " + s.string() + " --cache-dir " + mCache.string() +
                             " --steps 100 --dt 0.05 --integrator midpoint --csv");
     ASSERT_EQ(r.status, 0) << r.err;
-    std::istringstream lines(r.out);
-    std::string line;
-    std::getline(lines, line);
-    EXPECT_EQ(line, "step,time,energy,enstrophy,cross_helicity,iterations,residual");
-    std::vector<std::vector<double>> rows;
-    while (std::getline(lines, line)) {
-        std::istringstream fields(line);
-        std::vector<double> row;
-        for (std::string f; std::getline(fields, f, ',');) row.push_back(std::stod(f));
-        rows.push_back(row);
-    }
+    const Csv csv = parseCsv(r.out);
+    EXPECT_EQ(csv.header, "step,time,energy,enstrophy,cross_helicity,iterations,residual");
+    const auto& rows = csv.rows;
     ASSERT_EQ(rows.size(), 101u);
     EXPECT_NEAR(rows[0][2], 1.5, 1e-12) << "½|v|² + ½|F|²";
     for (const auto& row : rows) {
         EXPECT_NEAR(row[2], rows[0][2], 1e-12);
         EXPECT_NEAR(row[4], rows[0][4], 1e-12) << "cross helicity";
     }
-
 }
 
 }  // namespace
