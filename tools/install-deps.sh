@@ -8,6 +8,7 @@ packages=(
     libeigen3-dev libspectra-dev libsuitesparse-dev libopenblas0-pthread
     libopenvdb-dev libboost-iostreams-dev libtbb-dev
     libtomlplusplus-dev libcli11-dev nlohmann-json3-dev libtinyobjloader-dev
+    libvulkan-dev mesa-vulkan-drivers vulkan-tools glslang-tools spirv-tools vulkan-validationlayers
     libgtest-dev libbenchmark-dev time bc
 )
 

@@ -1,0 +1,124 @@
+#include "engine/vulkan/CommandSequence.h"
+
+#include <cstdint>
+
+#include "engine/format/Error.h"
+#include "engine/vulkan/ComputeKernel.h"
+#include "engine/vulkan/VulkanContext.h"
+#include "engine/vulkan/VulkanError.h"
+
+namespace modeflow::vulkan {
+namespace {
+
+void memoryBarrier(VkCommandBuffer commandBuffer, VkPipelineStageFlags dstStage, VkAccessFlags dstAccess) {
+    VkMemoryBarrier barrier{};
+    barrier.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER;
+    barrier.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
+    barrier.dstAccessMask = dstAccess;
+    vkCmdPipelineBarrier(commandBuffer, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, dstStage, 0, 1, &barrier, 0,
+                         nullptr, 0, nullptr);
+}
+
+}  // namespace
+
+CommandSequence::CommandSequence(const VulkanContext& context, bool timestamps,
+                                 std::uint32_t maxTimedDispatches)
+    : mContext(context), mMaxTimed(maxTimedDispatches) {
+    const VkDevice device = context.device();
+    VkCommandPoolCreateInfo poolInfo{};
+    poolInfo.sType = VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO;
+    poolInfo.flags = VK_COMMAND_POOL_CREATE_TRANSIENT_BIT;
+    poolInfo.queueFamilyIndex = context.queueFamily();
+    VkCommandPool pool = VK_NULL_HANDLE;
+    check(vkCreateCommandPool(device, &poolInfo, nullptr, &pool), "vkCreateCommandPool");
+    mPool = DeviceHandle<VkCommandPool>(device, pool, vkDestroyCommandPool);
+
+    VkCommandBufferAllocateInfo allocate{};
+    allocate.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO;
+    allocate.commandPool = pool;
+    allocate.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+    allocate.commandBufferCount = 1;
+    check(vkAllocateCommandBuffers(device, &allocate, &mCommandBuffer), "vkAllocateCommandBuffers");
+
+    VkFenceCreateInfo fenceInfo{};
+    fenceInfo.sType = VK_STRUCTURE_TYPE_FENCE_CREATE_INFO;
+    VkFence fence = VK_NULL_HANDLE;
+    check(vkCreateFence(device, &fenceInfo, nullptr, &fence), "vkCreateFence");
+    mFence = DeviceHandle<VkFence>(device, fence, vkDestroyFence);
+
+    if (timestamps && context.timestampValidBits() > 0 && maxTimedDispatches > 0) {
+        VkQueryPoolCreateInfo queryInfo{};
+        queryInfo.sType = VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO;
+        queryInfo.queryType = VK_QUERY_TYPE_TIMESTAMP;
+        queryInfo.queryCount = 2 * maxTimedDispatches;
+        VkQueryPool queryPool = VK_NULL_HANDLE;
+        check(vkCreateQueryPool(device, &queryInfo, nullptr, &queryPool), "vkCreateQueryPool");
+        mQueryPool = DeviceHandle<VkQueryPool>(device, queryPool, vkDestroyQueryPool);
+    }
+}
+
+void CommandSequence::beginIfNeeded() {
+    if (mRecording) return;
+    VkCommandBufferBeginInfo begin{};
+    begin.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO;
+    begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+    check(vkBeginCommandBuffer(mCommandBuffer, &begin), "vkBeginCommandBuffer");
+    if (isTiming()) vkCmdResetQueryPool(mCommandBuffer, mQueryPool.get(), 0, 2 * mMaxTimed);
+    mRecording = true;
+    mDispatchCount = 0;
+}
+
+void CommandSequence::dispatch(const ComputeKernel& kernel, std::span<const DeviceBuffer* const> buffers,
+                               std::span<const std::byte> pushConstants, std::uint32_t groupCount) {
+    if (isTiming() && mDispatchCount >= mMaxTimed)
+        throw Error("CommandSequence: more than " + std::to_string(mMaxTimed) +
+                    " timed dispatches in one submission (raise maxTimedDispatches)");
+    beginIfNeeded();
+    // Every dispatch may read what an earlier one wrote; one global barrier is enough for that
+    // and costs little next to a dispatch.
+    if (mDispatchCount > 0)
+        memoryBarrier(mCommandBuffer, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                      VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
+    const auto query = std::uint32_t(2 * mDispatchCount);
+    if (isTiming())
+        vkCmdWriteTimestamp(mCommandBuffer, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, mQueryPool.get(), query);
+    kernel.record(mCommandBuffer, buffers, pushConstants, groupCount);
+    if (isTiming())
+        vkCmdWriteTimestamp(mCommandBuffer, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, mQueryPool.get(), query + 1);
+    ++mDispatchCount;
+}
+
+void CommandSequence::submitAndWait() {
+    if (!mRecording || mDispatchCount == 0) throw Error("CommandSequence: nothing recorded to submit");
+    // Make the last writes visible to the host reads that follow the fence.
+    memoryBarrier(mCommandBuffer, VK_PIPELINE_STAGE_HOST_BIT, VK_ACCESS_HOST_READ_BIT);
+    mRecording = false;
+    check(vkEndCommandBuffer(mCommandBuffer), "vkEndCommandBuffer");
+
+    VkSubmitInfo submit{};
+    submit.sType = VK_STRUCTURE_TYPE_SUBMIT_INFO;
+    submit.commandBufferCount = 1;
+    submit.pCommandBuffers = &mCommandBuffer;
+    const VkDevice device = mContext.device();
+    const VkFence fence = mFence.get();
+    check(vkQueueSubmit(mContext.queue(), 1, &submit, fence), "vkQueueSubmit");
+    check(vkWaitForFences(device, 1, &fence, VK_TRUE, UINT64_MAX), "vkWaitForFences");
+    check(vkResetFences(device, 1, &fence), "vkResetFences");
+
+    mTimesMs.clear();
+    if (isTiming()) {
+        std::vector<std::uint64_t> ticks(2 * mDispatchCount);
+        check(vkGetQueryPoolResults(device, mQueryPool.get(), 0, std::uint32_t(ticks.size()),
+                                    ticks.size() * sizeof(std::uint64_t), ticks.data(), sizeof(std::uint64_t),
+                                    VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT),
+              "vkGetQueryPoolResults");
+        const unsigned bits = mContext.timestampValidBits();
+        const std::uint64_t mask = bits >= 64 ? ~std::uint64_t(0) : (std::uint64_t(1) << bits) - 1;
+        const double msPerTick = double(mContext.properties().limits.timestampPeriod) * 1e-6;
+        for (std::size_t d = 0; d < mDispatchCount; ++d)
+            mTimesMs.push_back(double(((ticks[2 * d + 1] & mask) - (ticks[2 * d] & mask)) & mask) * msPerTick);
+    }
+    check(vkResetCommandPool(device, mPool.get(), 0), "vkResetCommandPool");
+}
+
+}  // namespace modeflow::vulkan

@@ -1,0 +1,68 @@
+#pragma once
+/// @file CommandSequence.h
+/// Several kernel dispatches recorded into one command buffer, with a barrier between each pair
+/// (every dispatch sees what the previous ones wrote), submitted once and waited on with a fence
+/// (Kompute's Sequence). With timestamps on, each dispatch is bracketed by two GPU timestamps and
+/// dispatchTimesMs() gives its duration after the submission. After submitAndWait() the sequence
+/// is empty again and can be recorded anew.
+
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include <vulkan/vulkan.h>
+
+#include "engine/vulkan/DeviceHandle.h"
+
+namespace modeflow::vulkan {
+
+class ComputeKernel;
+class DeviceBuffer;
+class VulkanContext;
+
+class CommandSequence {
+public:
+    /// `timestamps`: time each dispatch, up to `maxTimedDispatches` per submission. Ignored (and
+    /// isTiming() false) when the queue cannot write timestamps.
+    /// @throw modeflow::Error if a creation call fails.
+    explicit CommandSequence(const VulkanContext& context, bool timestamps = false,
+                             std::uint32_t maxTimedDispatches = 64);
+
+    /// Records one dispatch of `kernel` (see ComputeKernel::record), after a barrier when it is
+    /// not the first of the submission.
+    /// @throw modeflow::Error when more than maxTimedDispatches are recorded with timing on.
+    void dispatch(const ComputeKernel& kernel, std::span<const DeviceBuffer* const> buffers,
+                  std::span<const std::byte> pushConstants, std::uint32_t groupCount);
+
+    template <typename Params>
+    void dispatch(const ComputeKernel& kernel, std::span<const DeviceBuffer* const> buffers,
+                  const Params& params, std::uint32_t groupCount) {
+        dispatch(kernel, buffers, std::as_bytes(std::span(&params, 1)), groupCount);
+    }
+
+    /// Ends recording, submits once, waits on the fence (then the host may read the buffers),
+    /// reads the timestamps and makes the sequence ready for new recording.
+    /// @throw modeflow::Error if nothing was recorded or a call fails (e.g. VK_ERROR_DEVICE_LOST).
+    void submitAndWait();
+
+    bool isTiming() const { return mQueryPool.isValid(); }
+    std::size_t dispatchCount() const { return mDispatchCount; }
+    /// Duration of each dispatch of the last submission, in milliseconds (empty without timing).
+    const std::vector<double>& dispatchTimesMs() const { return mTimesMs; }
+
+private:
+    void beginIfNeeded();
+
+    const VulkanContext& mContext;
+    std::uint32_t mMaxTimed;
+    DeviceHandle<VkCommandPool> mPool;  // frees its command buffer with it
+    VkCommandBuffer mCommandBuffer = VK_NULL_HANDLE;
+    DeviceHandle<VkFence> mFence;
+    DeviceHandle<VkQueryPool> mQueryPool;
+    bool mRecording = false;
+    std::size_t mDispatchCount = 0;
+    std::vector<double> mTimesMs;
+};
+
+}  // namespace modeflow::vulkan

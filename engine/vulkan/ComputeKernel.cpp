@@ -1,0 +1,109 @@
+#include "engine/vulkan/ComputeKernel.h"
+
+#include <vector>
+
+#include "engine/format/Error.h"
+#include "engine/vulkan/DeviceBuffer.h"
+#include "engine/vulkan/VulkanContext.h"
+#include "engine/vulkan/VulkanError.h"
+
+namespace modeflow::vulkan {
+
+ComputeKernel::ComputeKernel(const VulkanContext& context, const ComputeKernelSpec& spec)
+    : mContext(context), mSpec(spec) {
+    const VkDevice device = context.device();
+    const VkPhysicalDeviceLimits& limits = context.properties().limits;
+    if (spec.workgroupSize == 0 || spec.workgroupSize > limits.maxComputeWorkGroupSize[0] ||
+        spec.workgroupSize > limits.maxComputeWorkGroupInvocations)
+        throw Error("kernel " + spec.name + ": workgroup size " + std::to_string(spec.workgroupSize) +
+                    " is outside 1…" + std::to_string(limits.maxComputeWorkGroupInvocations) + " on " +
+                    context.deviceName());
+    if (spec.pushConstantBytes > limits.maxPushConstantsSize || spec.pushConstantBytes % 4 != 0)
+        throw Error("kernel " + spec.name + ": " + std::to_string(spec.pushConstantBytes) +
+                    " bytes of push constants (must be a multiple of 4 and at most " +
+                    std::to_string(limits.maxPushConstantsSize) + ")");
+
+    std::vector<VkDescriptorSetLayoutBinding> bindings(spec.bufferCount);
+    for (std::uint32_t b = 0; b < spec.bufferCount; ++b) {
+        bindings[b].binding = b;
+        bindings[b].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+        bindings[b].descriptorCount = 1;
+        bindings[b].stageFlags = VK_SHADER_STAGE_COMPUTE_BIT;
+    }
+    VkDescriptorSetLayoutCreateInfo setInfo{};
+    setInfo.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO;
+    setInfo.flags = VK_DESCRIPTOR_SET_LAYOUT_CREATE_PUSH_DESCRIPTOR_BIT_KHR;
+    setInfo.bindingCount = spec.bufferCount;
+    setInfo.pBindings = bindings.data();
+    VkDescriptorSetLayout setLayout = VK_NULL_HANDLE;
+    check(vkCreateDescriptorSetLayout(device, &setInfo, nullptr, &setLayout), "vkCreateDescriptorSetLayout");
+    mSetLayout = DeviceHandle<VkDescriptorSetLayout>(device, setLayout, vkDestroyDescriptorSetLayout);
+
+    VkPushConstantRange range{VK_SHADER_STAGE_COMPUTE_BIT, 0, spec.pushConstantBytes};
+    VkPipelineLayoutCreateInfo layoutInfo{};
+    layoutInfo.sType = VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO;
+    layoutInfo.setLayoutCount = 1;
+    layoutInfo.pSetLayouts = &setLayout;
+    layoutInfo.pushConstantRangeCount = spec.pushConstantBytes > 0 ? 1 : 0;
+    layoutInfo.pPushConstantRanges = &range;
+    VkPipelineLayout pipelineLayout = VK_NULL_HANDLE;
+    check(vkCreatePipelineLayout(device, &layoutInfo, nullptr, &pipelineLayout), "vkCreatePipelineLayout");
+    mPipelineLayout = DeviceHandle<VkPipelineLayout>(device, pipelineLayout, vkDestroyPipelineLayout);
+
+    VkShaderModuleCreateInfo shaderInfo{};
+    shaderInfo.sType = VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO;
+    shaderInfo.codeSize = spec.spirv.size_bytes();
+    shaderInfo.pCode = spec.spirv.data();
+    VkShaderModule shader = VK_NULL_HANDLE;
+    check(vkCreateShaderModule(device, &shaderInfo, nullptr, &shader), "vkCreateShaderModule");
+    mShader = DeviceHandle<VkShaderModule>(device, shader, vkDestroyShaderModule);
+
+    const VkSpecializationMapEntry entry{0, 0, sizeof(std::uint32_t)};
+    VkSpecializationInfo specialization{1, &entry, sizeof(std::uint32_t), &mSpec.workgroupSize};
+    VkComputePipelineCreateInfo pipelineInfo{};
+    pipelineInfo.sType = VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO;
+    pipelineInfo.stage.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
+    pipelineInfo.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
+    pipelineInfo.stage.module = shader;
+    pipelineInfo.stage.pName = "main";
+    pipelineInfo.stage.pSpecializationInfo = &specialization;
+    pipelineInfo.layout = pipelineLayout;
+    VkPipeline pipeline = VK_NULL_HANDLE;
+    check(vkCreateComputePipelines(device, VK_NULL_HANDLE, 1, &pipelineInfo, nullptr, &pipeline),
+          "vkCreateComputePipelines");
+    mPipeline = DeviceHandle<VkPipeline>(device, pipeline, vkDestroyPipeline);
+}
+
+void ComputeKernel::record(VkCommandBuffer commandBuffer, std::span<const DeviceBuffer* const> buffers,
+                           std::span<const std::byte> pushConstants, std::uint32_t groupCount) const {
+    if (buffers.size() != mSpec.bufferCount)
+        throw Error("kernel " + mSpec.name + ": " + std::to_string(buffers.size()) + " buffers given, " +
+                    std::to_string(mSpec.bufferCount) + " expected");
+    if (pushConstants.size() != mSpec.pushConstantBytes)
+        throw Error("kernel " + mSpec.name + ": " + std::to_string(pushConstants.size()) +
+                    " bytes of push constants given, " + std::to_string(mSpec.pushConstantBytes) + " expected");
+    const std::uint32_t maxGroups = mContext.properties().limits.maxComputeWorkGroupCount[0];
+    if (groupCount == 0 || groupCount > maxGroups)
+        throw Error("kernel " + mSpec.name + ": group count " + std::to_string(groupCount) +
+                    " is outside 1…" + std::to_string(maxGroups));
+
+    std::vector<VkDescriptorBufferInfo> infos(buffers.size());
+    std::vector<VkWriteDescriptorSet> writes(buffers.size());
+    for (std::size_t b = 0; b < buffers.size(); ++b) {
+        infos[b] = {buffers[b]->handle(), 0, VK_WHOLE_SIZE};
+        writes[b].sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
+        writes[b].dstBinding = std::uint32_t(b);
+        writes[b].descriptorCount = 1;
+        writes[b].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+        writes[b].pBufferInfo = &infos[b];
+    }
+    vkCmdBindPipeline(commandBuffer, VK_PIPELINE_BIND_POINT_COMPUTE, mPipeline.get());
+    mContext.cmdPushDescriptorSet()(commandBuffer, VK_PIPELINE_BIND_POINT_COMPUTE, mPipelineLayout.get(), 0,
+                                    std::uint32_t(writes.size()), writes.data());
+    if (!pushConstants.empty())
+        vkCmdPushConstants(commandBuffer, mPipelineLayout.get(), VK_SHADER_STAGE_COMPUTE_BIT, 0,
+                           std::uint32_t(pushConstants.size()), pushConstants.data());
+    vkCmdDispatch(commandBuffer, groupCount, 1, 1);
+}
+
+}  // namespace modeflow::vulkan

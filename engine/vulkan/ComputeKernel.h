@@ -1,0 +1,65 @@
+#pragma once
+/// @file ComputeKernel.h
+/// One compute pipeline built from embedded SPIR-V (Kompute's Algorithm): a descriptor set
+/// layout of N storage buffers (bindings 0…N−1 of set 0), a push-constant block, and the
+/// workgroup size as specialization constant 0. Shaders declare
+/// `layout(local_size_x = 64, local_size_x_id = 0) in;` so the size written there is also the
+/// default (see PLATFORM.md). Buffers are bound by push descriptors at record time, so recording
+/// needs no descriptor pool and a kernel can be recorded any number of times.
+
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <string>
+
+#include <vulkan/vulkan.h>
+
+#include "engine/vulkan/DeviceHandle.h"
+
+namespace modeflow::vulkan {
+
+class DeviceBuffer;
+class VulkanContext;
+
+struct ComputeKernelSpec {
+    std::string name;                          ///< for error messages
+    std::span<const std::uint32_t> spirv;      ///< SPIR-V words (a glslangValidator --vn array)
+    std::uint32_t bufferCount = 0;             ///< storage buffers at bindings 0…N−1
+    std::uint32_t pushConstantBytes = 0;       ///< size of the push-constant block (multiple of 4)
+    std::uint32_t workgroupSize = 64;          ///< local_size_x, specialization constant 0
+};
+
+class ComputeKernel {
+public:
+    /// @throw modeflow::Error if the workgroup size exceeds the device's limits, the push
+    /// constants exceed maxPushConstantsSize, or a creation call fails (with its VkResult).
+    ComputeKernel(const VulkanContext& context, const ComputeKernelSpec& spec);
+
+    /// Binds the pipeline and `buffers` (exactly bufferCount, in binding order), pushes
+    /// `pushConstants` (exactly pushConstantBytes) and dispatches `groupCount` workgroups along x.
+    /// Records only: barriers and submission belong to CommandSequence.
+    /// @throw modeflow::Error on a wrong buffer count, push size or a group count over the limit.
+    void record(VkCommandBuffer commandBuffer, std::span<const DeviceBuffer* const> buffers,
+                std::span<const std::byte> pushConstants, std::uint32_t groupCount) const;
+
+    /// record() with a push-constant struct (e.g. a shaders/*Params.h struct).
+    template <typename Params>
+    void record(VkCommandBuffer commandBuffer, std::span<const DeviceBuffer* const> buffers,
+                const Params& params, std::uint32_t groupCount) const {
+        record(commandBuffer, buffers, std::as_bytes(std::span(&params, 1)), groupCount);
+    }
+
+    const std::string& name() const { return mSpec.name; }
+    std::uint32_t workgroupSize() const { return mSpec.workgroupSize; }
+
+private:
+    const VulkanContext& mContext;
+    ComputeKernelSpec mSpec;
+    // Dependency order: the pipeline needs its layout, the layout needs the set layout.
+    DeviceHandle<VkDescriptorSetLayout> mSetLayout;
+    DeviceHandle<VkPipelineLayout> mPipelineLayout;
+    DeviceHandle<VkShaderModule> mShader;
+    DeviceHandle<VkPipeline> mPipeline;
+};
+
+}  // namespace modeflow::vulkan

@@ -1,0 +1,160 @@
+#include "engine/vulkan/VulkanContext.h"
+
+#include <cstdlib>
+#include <cstring>
+#include <sstream>
+
+#include "engine/format/Error.h"
+#include "engine/vulkan/VulkanError.h"
+
+namespace modeflow::vulkan {
+namespace {
+
+constexpr const char* kValidationLayer = "VK_LAYER_KHRONOS_validation";
+
+bool hasInstanceLayer(const char* name) {
+    std::uint32_t count = 0;
+    vkEnumerateInstanceLayerProperties(&count, nullptr);
+    std::vector<VkLayerProperties> layers(count);
+    vkEnumerateInstanceLayerProperties(&count, layers.data());
+    for (const auto& l : layers)
+        if (std::strcmp(l.layerName, name) == 0) return true;
+    return false;
+}
+
+}  // namespace
+
+bool VulkanContext::validationRequestedByEnvironment() {
+    const char* value = std::getenv("MODEFLOW_VULKAN_VALIDATION");
+    return value && std::strcmp(value, "1") == 0;
+}
+
+VulkanContext::VulkanContext(const VulkanContextOptions& options) {
+    // The constructor owns raw handles until it returns, so a failure part way releases what
+    // was made before rethrowing (the destructor does not run for a throwing constructor).
+    struct Cleanup {
+        VulkanContext* context;
+        ~Cleanup() {
+            if (context) context->release();
+        }
+    } cleanup{this};
+
+    const bool validation = options.validation || validationRequestedByEnvironment();
+    if (validation) {
+        if (!hasInstanceLayer(kValidationLayer))
+            throw Error(std::string("Vulkan validation was asked for but ") + kValidationLayer +
+                        " is not installed (Debian: vulkan-validationlayers)");
+        mValidationLog = std::make_unique<ValidationLog>();
+    }
+
+    VkApplicationInfo app{};
+    app.sType = VK_STRUCTURE_TYPE_APPLICATION_INFO;
+    app.pApplicationName = "modeflow";
+    app.pEngineName = "modeflow";
+    app.apiVersion = VK_API_VERSION_1_2;  // shaders target SPIR-V 1.5 (Vulkan 1.2)
+
+    std::vector<const char*> layers, extensions;
+    VkDebugUtilsMessengerCreateInfoEXT messengerInfo{};
+    if (validation) {
+        layers.push_back(kValidationLayer);
+        extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
+        messengerInfo = mValidationLog->messengerCreateInfo();
+    }
+    VkInstanceCreateInfo instanceInfo{};
+    instanceInfo.sType = VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO;
+    instanceInfo.pNext = validation ? &messengerInfo : nullptr;
+    instanceInfo.pApplicationInfo = &app;
+    instanceInfo.enabledLayerCount = std::uint32_t(layers.size());
+    instanceInfo.ppEnabledLayerNames = layers.data();
+    instanceInfo.enabledExtensionCount = std::uint32_t(extensions.size());
+    instanceInfo.ppEnabledExtensionNames = extensions.data();
+    const VkResult created = vkCreateInstance(&instanceInfo, nullptr, &mInstance);
+    if (created == VK_ERROR_INCOMPATIBLE_DRIVER)
+        throw Error("no Vulkan device found: vkCreateInstance failed: VK_ERROR_INCOMPATIBLE_DRIVER "
+                    "(no driver is installed; Debian: mesa-vulkan-drivers gives the lavapipe CPU device)");
+    check(created, "vkCreateInstance");
+
+    if (validation) {
+        auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
+            vkGetInstanceProcAddr(mInstance, "vkCreateDebugUtilsMessengerEXT"));
+        if (!create) throw Error("vkGetInstanceProcAddr(vkCreateDebugUtilsMessengerEXT) returned null");
+        check(create(mInstance, &messengerInfo, nullptr, &mMessenger), "vkCreateDebugUtilsMessengerEXT");
+    }
+
+    DeviceSelector selector(mInstance);
+    selector.requireApiVersion(VK_API_VERSION_1_2).requireExtension(VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME);
+    if (options.deviceIndex) selector.requireIndex(*options.deviceIndex);
+    if (!options.deviceName.empty()) selector.requireName(options.deviceName);
+    mSelection = selector.select();
+    vkGetPhysicalDeviceProperties(mSelection.device, &mProperties);
+    vkGetPhysicalDeviceMemoryProperties(mSelection.device, &mMemoryProperties);
+    std::uint32_t familyCount = 0;
+    vkGetPhysicalDeviceQueueFamilyProperties(mSelection.device, &familyCount, nullptr);
+    std::vector<VkQueueFamilyProperties> families(familyCount);
+    vkGetPhysicalDeviceQueueFamilyProperties(mSelection.device, &familyCount, families.data());
+    mTimestampValidBits = families[mSelection.queueFamily].timestampValidBits;
+
+    const float priority = 1.0f;
+    VkDeviceQueueCreateInfo queueInfo{};
+    queueInfo.sType = VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO;
+    queueInfo.queueFamilyIndex = mSelection.queueFamily;
+    queueInfo.queueCount = 1;
+    queueInfo.pQueuePriorities = &priority;
+    const char* deviceExtensions[] = {VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME};
+    VkDeviceCreateInfo deviceInfo{};
+    deviceInfo.sType = VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO;
+    deviceInfo.queueCreateInfoCount = 1;
+    deviceInfo.pQueueCreateInfos = &queueInfo;
+    deviceInfo.enabledExtensionCount = 1;
+    deviceInfo.ppEnabledExtensionNames = deviceExtensions;
+    check(vkCreateDevice(mSelection.device, &deviceInfo, nullptr, &mDevice), "vkCreateDevice");
+    vkGetDeviceQueue(mDevice, mSelection.queueFamily, 0, &mQueue);
+    mCmdPushDescriptorSet = reinterpret_cast<PFN_vkCmdPushDescriptorSetKHR>(
+        vkGetDeviceProcAddr(mDevice, "vkCmdPushDescriptorSetKHR"));
+    if (!mCmdPushDescriptorSet) throw Error("vkGetDeviceProcAddr(vkCmdPushDescriptorSetKHR) returned null");
+
+    cleanup.context = nullptr;
+}
+
+VulkanContext::~VulkanContext() { release(); }
+
+void VulkanContext::release() noexcept {
+    if (mDevice) {
+        vkDeviceWaitIdle(mDevice);
+        vkDestroyDevice(mDevice, nullptr);
+        mDevice = VK_NULL_HANDLE;
+    }
+    if (mMessenger) {
+        auto destroy = reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(
+            vkGetInstanceProcAddr(mInstance, "vkDestroyDebugUtilsMessengerEXT"));
+        if (destroy) destroy(mInstance, mMessenger, nullptr);
+        mMessenger = VK_NULL_HANDLE;
+    }
+    if (mInstance) {
+        vkDestroyInstance(mInstance, nullptr);
+        mInstance = VK_NULL_HANDLE;
+    }
+}
+
+std::string VulkanContext::describe() const {
+    std::ostringstream out;
+    out << "Vulkan device: " << mSelection.name << " ("
+        << DeviceSelector::typeName(mProperties.deviceType) << ", Vulkan "
+        << VK_API_VERSION_MAJOR(mProperties.apiVersion) << "." << VK_API_VERSION_MINOR(mProperties.apiVersion)
+        << "." << VK_API_VERSION_PATCH(mProperties.apiVersion) << ", queue family " << mSelection.queueFamily
+        << ", validation " << (isValidationEnabled() ? "on" : "off") << ")\n"
+        << mSelection.report;
+    return out.str();
+}
+
+std::size_t VulkanContext::validationMessageCount() const {
+    return mValidationLog ? mValidationLog->warningCount() + mValidationLog->errorCount() : 0;
+}
+
+std::vector<std::string> VulkanContext::validationMessages() const {
+    return mValidationLog ? mValidationLog->messages() : std::vector<std::string>{};
+}
+
+void VulkanContext::waitIdle() const { check(vkDeviceWaitIdle(mDevice), "vkDeviceWaitIdle"); }
+
+}  // namespace modeflow::vulkan

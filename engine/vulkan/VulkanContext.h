@@ -1,0 +1,86 @@
+#pragma once
+/// @file VulkanContext.h
+/// The Vulkan instance, the chosen device and its compute queue: what every buffer and kernel is
+/// created from. Compute only, no surface (the display layer will bring its own).
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <vulkan/vulkan.h>
+
+#include "engine/vulkan/DeviceSelector.h"
+#include "engine/vulkan/ValidationLog.h"
+
+namespace modeflow::vulkan {
+
+struct VulkanContextOptions {
+    /// Enable VK_LAYER_KHRONOS_validation and count its messages (see ValidationLog). Also on
+    /// when the environment has MODEFLOW_VULKAN_VALIDATION=1.
+    bool validation = false;
+    /// Only this device (position in vkEnumeratePhysicalDevices) may be chosen.
+    std::optional<std::uint32_t> deviceIndex;
+    /// Only devices whose name contains this fragment (case-insensitive) may be chosen.
+    std::string deviceName;
+};
+
+class VulkanContext {
+public:
+    /// @throw modeflow::Error when the loader, the validation layer (if asked for) or a suitable
+    /// device is missing, or a creation call fails; the message names the call and VkResult.
+    explicit VulkanContext(const VulkanContextOptions& options = {});
+    ~VulkanContext();
+
+    // Buffers and kernels keep the device handle: the context stays where it was made.
+    VulkanContext(const VulkanContext&) = delete;
+    VulkanContext& operator=(const VulkanContext&) = delete;
+
+    /// True when MODEFLOW_VULKAN_VALIDATION is set to 1 in the environment.
+    static bool validationRequestedByEnvironment();
+
+    VkInstance instance() const { return mInstance; }
+    VkPhysicalDevice physicalDevice() const { return mSelection.device; }
+    VkDevice device() const { return mDevice; }
+    VkQueue queue() const { return mQueue; }
+    std::uint32_t queueFamily() const { return mSelection.queueFamily; }
+    const VkPhysicalDeviceProperties& properties() const { return mProperties; }
+    const VkPhysicalDeviceMemoryProperties& memoryProperties() const { return mMemoryProperties; }
+    /// Valid bits of the queue's timestamps; 0 when the queue cannot write timestamps.
+    std::uint32_t timestampValidBits() const { return mTimestampValidBits; }
+
+    /// The chosen device's name.
+    const std::string& deviceName() const { return mSelection.name; }
+    /// Which device runs and why the others were rejected, several lines.
+    std::string describe() const;
+
+    bool isValidationEnabled() const { return mValidationLog != nullptr; }
+    /// Validation warnings and errors so far (0 when validation is off).
+    std::size_t validationMessageCount() const;
+    /// The first validation messages, for test failure output.
+    std::vector<std::string> validationMessages() const;
+
+    /// vkCmdPushDescriptorSetKHR of this device (kernels bind their buffers with it).
+    PFN_vkCmdPushDescriptorSetKHR cmdPushDescriptorSet() const { return mCmdPushDescriptorSet; }
+
+    void waitIdle() const;
+
+private:
+    /// Destroys the raw handles (device, messenger, instance) made so far, newest first.
+    void release() noexcept;
+
+    // Declared in creation order; the destructor releases them in reverse.
+    std::unique_ptr<ValidationLog> mValidationLog;  ///< fixed address: the messenger's user data
+    VkInstance mInstance = VK_NULL_HANDLE;
+    VkDebugUtilsMessengerEXT mMessenger = VK_NULL_HANDLE;
+    DeviceSelection mSelection;
+    VkPhysicalDeviceProperties mProperties{};
+    VkPhysicalDeviceMemoryProperties mMemoryProperties{};
+    std::uint32_t mTimestampValidBits = 0;
+    VkDevice mDevice = VK_NULL_HANDLE;
+    VkQueue mQueue = VK_NULL_HANDLE;
+    PFN_vkCmdPushDescriptorSetKHR mCmdPushDescriptorSet = nullptr;
+};
+
+}  // namespace modeflow::vulkan

@@ -1,0 +1,161 @@
+/// @file VulkanContextTest.cpp
+/// The Vulkan foundation: device choice and its explanation, validation switch, buffers.
+
+#include <numeric>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "engine/vulkan/DeviceBuffer.h"
+#include "engine/vulkan/DeviceSelector.h"
+#include "engine/vulkan/VulkanError.h"
+#include "tests/engine/VulkanTestContext.h"
+
+namespace modeflow {
+namespace {
+
+using testing::VulkanTest;
+using vulkan::DeviceBuffer;
+using vulkan::DeviceSelector;
+using vulkan::VulkanContext;
+using vulkan::VulkanContextOptions;
+
+class VulkanContextTest : public VulkanTest {};
+
+TEST_P(VulkanContextTest, FindsADeviceAndSaysWhyItWasChosen) {
+    const std::string text = context().describe();
+    std::cout << text;
+    EXPECT_NE(text.find("Vulkan device: " + context().deviceName()), std::string::npos) << text;
+    EXPECT_NE(text.find("chosen   #"), std::string::npos) << text;
+    EXPECT_NE(text.find(GetParam() ? "validation on" : "validation "), std::string::npos) << text;
+    EXPECT_NE(context().device(), VK_NULL_HANDLE);
+    EXPECT_NE(context().queue(), VK_NULL_HANDLE);
+}
+
+TEST_P(VulkanContextTest, DeviceNameOptionPicksTheNamedDevice) {
+    VulkanContextOptions options;
+    options.validation = GetParam();
+    options.deviceName = context().deviceName().substr(0, 4);
+    const VulkanContext named(options);
+    EXPECT_EQ(named.deviceName(), context().deviceName());
+    EXPECT_EQ(named.validationMessageCount(), 0u);
+}
+
+TEST_P(VulkanContextTest, UnknownDeviceNameIsRefusedWithReasons) {
+    VulkanContextOptions options;
+    options.validation = GetParam();
+    options.deviceName = "no-such-gpu-xyz";
+    try {
+        const VulkanContext named(options);
+        FAIL() << "a context was made on " << named.deviceName();
+    } catch (const Error& e) {
+        const std::string message = e.what();
+        EXPECT_NE(message.find("no suitable Vulkan device"), std::string::npos) << message;
+        EXPECT_NE(message.find("rejected #0"), std::string::npos) << message;
+        EXPECT_NE(message.find("name does not contain \"no-such-gpu-xyz\""), std::string::npos) << message;
+    }
+}
+
+TEST_P(VulkanContextTest, DeviceIndexOutOfRangeIsRefusedWithReasons) {
+    VulkanContextOptions options;
+    options.validation = GetParam();
+    options.deviceIndex = 99;
+    try {
+        const VulkanContext indexed(options);
+        FAIL() << "a context was made on " << indexed.deviceName();
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("not the requested device index 99"), std::string::npos)
+            << e.what();
+    }
+}
+
+TEST_P(VulkanContextTest, DeviceIndexZeroIsAccepted) {
+    VulkanContextOptions options;
+    options.validation = GetParam();
+    options.deviceIndex = 0;
+    const VulkanContext indexed(options);
+    EXPECT_NE(indexed.describe().find("chosen   #0"), std::string::npos) << indexed.describe();
+}
+
+TEST_P(VulkanContextTest, BufferRoundTripsItsContents) {
+    {
+        std::vector<float> values(1000);
+        std::iota(values.begin(), values.end(), -3.5f);
+        DeviceBuffer buffer = DeviceBuffer::fromValues<float>(context(), values, "round trip");
+        EXPECT_EQ(buffer.bytes(), values.size() * sizeof(float));
+        std::vector<float> back(values.size(), 0.0f);
+        buffer.download<float>(back);
+        EXPECT_EQ(back, values);
+
+        // A partial upload at an offset changes only its range.
+        const std::vector<float> patch{7.0f, 8.0f};
+        buffer.upload<float>(patch, 10 * sizeof(float));
+        buffer.download<float>(back);
+        EXPECT_EQ(back[9], values[9]);
+        EXPECT_EQ(back[10], 7.0f);
+        EXPECT_EQ(back[11], 8.0f);
+        EXPECT_EQ(back[12], values[12]);
+        EXPECT_THROW(buffer.upload<float>(patch, 999 * sizeof(float)), Error);
+    }
+    expectNoValidationMessages();
+}
+
+TEST_P(VulkanContextTest, BufferOverMaxStorageBufferRangeIsRefusedClearly) {
+    const VkDeviceSize limit = context().properties().limits.maxStorageBufferRange;
+    try {
+        const DeviceBuffer buffer(context(), limit + 1, "too big");
+        FAIL() << "a buffer of " << buffer.bytes() << " bytes was made";
+    } catch (const Error& e) {
+        const std::string message = e.what();
+        EXPECT_NE(message.find("maxStorageBufferRange"), std::string::npos) << message;
+        EXPECT_NE(message.find(std::to_string(limit)), std::string::npos) << message;
+        EXPECT_NE(message.find("too big"), std::string::npos) << message;
+    }
+    EXPECT_THROW(DeviceBuffer(context(), 0, "empty"), Error);
+}
+
+INSTANTIATE_TEST_SUITE_P(Vulkan, VulkanContextTest, ::testing::Bool(), testing::validationName);
+
+TEST(VulkanValidationTest, MisuseIsCountedSoZeroCountsMeanSomething) {
+    // The zero-message assertions elsewhere are only worth something if the counter sees real
+    // messages: a buffer with no usage bits breaks VUID-VkBufferCreateInfo-usage-requiredbitmask.
+    auto context = testing::makeVulkanContext(true);
+    ASSERT_NE(context, nullptr);
+    VkBufferCreateInfo info{};
+    info.sType = VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO;
+    info.size = 64;
+    info.usage = 0;
+    info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
+    VkBuffer buffer = VK_NULL_HANDLE;
+    const VkResult result = vkCreateBuffer(context->device(), &info, nullptr, &buffer);
+    if (result == VK_SUCCESS && buffer != VK_NULL_HANDLE) vkDestroyBuffer(context->device(), buffer, nullptr);
+    EXPECT_GE(context->validationMessageCount(), 1u);
+    const auto messages = context->validationMessages();
+    ASSERT_FALSE(messages.empty());
+    EXPECT_NE(messages.front().find("usage"), std::string::npos) << messages.front();
+}
+
+TEST(VulkanErrorTest, NamesTheFailingCallAndItsResult) {
+    try {
+        vulkan::check(VK_ERROR_DEVICE_LOST, "vkQueueSubmit");
+        FAIL() << "no exception";
+    } catch (const Error& e) {
+        EXPECT_STREQ(e.what(), "vkQueueSubmit failed: VK_ERROR_DEVICE_LOST");
+    }
+    EXPECT_NO_THROW(vulkan::check(VK_SUCCESS, "vkQueueSubmit"));
+    EXPECT_EQ(vulkan::resultName(VkResult(12345)), "VkResult(12345)");
+}
+
+TEST(DeviceSelectorTest, PrefersDiscreteThenIntegratedThenCpu) {
+    EXPECT_LT(DeviceSelector::typeRank(VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU),
+              DeviceSelector::typeRank(VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU));
+    EXPECT_LT(DeviceSelector::typeRank(VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU),
+              DeviceSelector::typeRank(VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU));
+    EXPECT_LT(DeviceSelector::typeRank(VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU),
+              DeviceSelector::typeRank(VK_PHYSICAL_DEVICE_TYPE_CPU));
+    EXPECT_LT(DeviceSelector::typeRank(VK_PHYSICAL_DEVICE_TYPE_CPU),
+              DeviceSelector::typeRank(VK_PHYSICAL_DEVICE_TYPE_OTHER));
+}
+
+}  // namespace
+}  // namespace modeflow
