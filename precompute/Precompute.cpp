@@ -129,15 +129,18 @@ std::string basisKey(const SceneSpec& scene) {
     return s.str();
 }
 
-std::filesystem::path cachePath(const SceneSpec& scene, const std::filesystem::path& cacheDir) {
+std::filesystem::path cachePath(const std::string& key, const std::filesystem::path& cacheDir) {
     std::ostringstream name;
-    name << std::hex << std::setw(16) << std::setfill('0') << fnv1a64(basisKey(scene)) << ".mfbasis";
+    name << std::hex << std::setw(16) << std::setfill('0') << fnv1a64(key) << ".mfbasis";
     return cacheDir / name.str();
 }
 
-BasisCache computeBasis(const SceneSpec& scene, Progress& progress) {
+namespace {
+
+/// The pipeline for a key already computed (hashing mesh files once per run).
+BasisCache computeBasis(const SceneSpec& scene, std::string key, Progress& progress) {
     BasisCache cache;
-    cache.key = basisKey(scene);
+    cache.key = std::move(key);
     cache.grid = scene.grid;
     cache.wall = scene.basis.wall;
     cache.boundary = scene.basis.boundary;
@@ -216,6 +219,12 @@ BasisCache computeBasis(const SceneSpec& scene, Progress& progress) {
     return cache;
 }
 
+}  // namespace
+
+BasisCache computeBasis(const SceneSpec& scene, Progress& progress) {
+    return computeBasis(scene, basisKey(scene), progress);
+}
+
 CacheOutcome ensureCache(const SceneSpec& scene, const std::filesystem::path& cacheDir, bool force,
                          Progress& progress) {
     std::error_code ec;
@@ -234,8 +243,8 @@ CacheOutcome ensureCache(const SceneSpec& scene, const std::filesystem::path& ca
         std::filesystem::remove(probe, ec);
     }
 
-    CacheOutcome outcome{cachePath(scene, cacheDir), false};
     const std::string key = basisKey(scene);
+    CacheOutcome outcome{cachePath(key, cacheDir), false};
     if (!force && std::filesystem::exists(outcome.path)) {
         try {
             if (readCache(outcome.path).key == key) {
@@ -247,7 +256,7 @@ CacheOutcome ensureCache(const SceneSpec& scene, const std::filesystem::path& ca
             progress.note(std::string(e.what()) + "; rebuilding");
         }
     }
-    BasisCache cache = computeBasis(scene, progress);
+    BasisCache cache = computeBasis(scene, key, progress);
     progress.begin("write cache");
     writeCache(outcome.path, cache);
     progress.end();

@@ -17,8 +17,8 @@ namespace modeflow {
 /// @throw Error when a mesh file cannot be read.
 std::string basisKey(const SceneSpec& scene);
 
-/// `DIR/<16 hex digits of the key's hash>.mfbasis`.
-std::filesystem::path cachePath(const SceneSpec& scene, const std::filesystem::path& cacheDir);
+/// `DIR/<16 hex digits of the key's hash>.mfbasis`, for a key from basisKey().
+std::filesystem::path cachePath(const std::string& key, const std::filesystem::path& cacheDir);
 
 /// Runs the whole pipeline in memory. @throw Error naming the scene key or stage that failed.
 BasisCache computeBasis(const SceneSpec& scene, Progress& progress);

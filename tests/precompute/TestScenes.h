@@ -1,6 +1,9 @@
 #pragma once
 // Scenes built in code for the precompute tests.
 
+#include <gtest/gtest.h>
+
+#include "precompute/BasisChecks.h"
 #include "precompute/scene/SceneSpec.h"
 
 namespace modeflow::test {
@@ -33,6 +36,14 @@ inline ShapeSpec box(Vec3 lo, Vec3 hi) {
     b.min = lo;
     b.max = hi;
     return b;
+}
+
+/// The contract every velocity basis meets (DESIGN §2): max |dΨ|/|Ψ| and |ΨᵀMΨ − I| ≤ 1e-10,
+/// recomputed from the stored data.
+inline void expectValidVelocityBasis(const BasisCache& cache) {
+    const BasisChecks checks = checkBasis(cache);
+    EXPECT_LE(checks.maxDivergence, 1e-10);
+    EXPECT_LE(checks.velocityOrthonormality, 1e-10);
 }
 
 }  // namespace modeflow::test
