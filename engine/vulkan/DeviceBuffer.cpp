@@ -28,7 +28,7 @@ std::optional<std::uint32_t> hostVisibleType(const VkPhysicalDeviceMemoryPropert
 
 DeviceBuffer::DeviceBuffer(const VulkanContext& context, VkDeviceSize bytes, std::string name)
     : mName(std::move(name)), mBytes(bytes) {
-    const VkDeviceSize limit = context.properties().limits.maxStorageBufferRange;
+    const VkDeviceSize limit = context.storageBufferLimit();
     if (bytes == 0) throw Error("DeviceBuffer \"" + mName + "\": size 0 (Vulkan buffers cannot be empty)");
     if (bytes > limit)
         throw Error("DeviceBuffer \"" + mName + "\": " + std::to_string(bytes) +

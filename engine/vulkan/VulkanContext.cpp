@@ -1,5 +1,6 @@
 #include "engine/vulkan/VulkanContext.h"
 
+#include <algorithm>
 #include <cstdlib>
 #include <cstring>
 #include <sstream>
@@ -93,6 +94,9 @@ VulkanContext::VulkanContext(const VulkanContextOptions& options) {
     std::vector<VkQueueFamilyProperties> families(familyCount);
     vkGetPhysicalDeviceQueueFamilyProperties(mSelection.device, &familyCount, families.data());
     mTimestampValidBits = families[mSelection.queueFamily].timestampValidBits;
+    mStorageBufferLimit = mProperties.limits.maxStorageBufferRange;
+    if (options.storageBufferLimit > 0)
+        mStorageBufferLimit = std::min(mStorageBufferLimit, options.storageBufferLimit);
 
     const float priority = 1.0f;
     VkDeviceQueueCreateInfo queueInfo{};

@@ -24,6 +24,9 @@ struct VulkanContextOptions {
     std::optional<std::uint32_t> deviceIndex;
     /// Only devices whose name contains this fragment (case-insensitive) may be chosen.
     std::string deviceName;
+    /// Treat the device's maxStorageBufferRange as at most this many bytes (0: the device's own
+    /// limit). Tests use it to exercise the paths that split large arrays on any device.
+    VkDeviceSize storageBufferLimit = 0;
 };
 
 class VulkanContext {
@@ -49,6 +52,9 @@ public:
     const VkPhysicalDeviceMemoryProperties& memoryProperties() const { return mMemoryProperties; }
     /// Valid bits of the queue's timestamps; 0 when the queue cannot write timestamps.
     std::uint32_t timestampValidBits() const { return mTimestampValidBits; }
+    /// The largest storage buffer a kernel may bind: maxStorageBufferRange, or the smaller
+    /// VulkanContextOptions::storageBufferLimit.
+    VkDeviceSize storageBufferLimit() const { return mStorageBufferLimit; }
 
     /// The chosen device's name.
     const std::string& deviceName() const { return mSelection.name; }
@@ -78,6 +84,7 @@ private:
     VkPhysicalDeviceProperties mProperties{};
     VkPhysicalDeviceMemoryProperties mMemoryProperties{};
     std::uint32_t mTimestampValidBits = 0;
+    VkDeviceSize mStorageBufferLimit = 0;
     VkDevice mDevice = VK_NULL_HANDLE;
     VkQueue mQueue = VK_NULL_HANDLE;
     PFN_vkCmdPushDescriptorSetKHR mCmdPushDescriptorSet = nullptr;

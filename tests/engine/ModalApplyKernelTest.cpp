@@ -10,7 +10,7 @@
 
 #include "engine/vulkan/CommandSequence.h"
 #include "engine/vulkan/DeviceBuffer.h"
-#include "engine/vulkan/ModalApply.h"
+#include "engine/kernels/ModalApply.h"
 #include "tests/engine/RandomCoefficients.h"
 #include "tests/engine/VulkanTestContext.h"
 

@@ -1,4 +1,4 @@
-#include "engine/vulkan/ModalApply.h"
+#include "engine/kernels/ModalApply.h"
 
 #include <array>
 // The generated header uses uint32_t without including <cstdint>.
