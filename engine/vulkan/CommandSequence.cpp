@@ -1,6 +1,7 @@
 #include "engine/vulkan/CommandSequence.h"
 
 #include <cstdint>
+#include <functional>
 
 #include "engine/format/Error.h"
 #include "engine/vulkan/ComputeKernel.h"
@@ -70,19 +71,29 @@ void CommandSequence::beginIfNeeded() {
 
 void CommandSequence::dispatch(const ComputeKernel& kernel, std::span<const DeviceBuffer* const> buffers,
                                std::span<const std::byte> pushConstants, std::uint32_t groupCount) {
+    recordTimed([&] { kernel.record(mCommandBuffer, buffers, pushConstants, groupCount); });
+}
+
+void CommandSequence::dispatchIndirect(const ComputeKernel& kernel, std::span<const DeviceBuffer* const> buffers,
+                                       std::span<const std::byte> pushConstants, const DeviceBuffer& arguments,
+                                       VkDeviceSize offset) {
+    recordTimed([&] { kernel.recordIndirect(mCommandBuffer, buffers, pushConstants, arguments, offset); });
+}
+
+void CommandSequence::recordTimed(const std::function<void()>& recordDispatch) {
     if (isTiming() && mDispatchCount >= mMaxTimed)
         throw Error("CommandSequence: more than " + std::to_string(mMaxTimed) +
                     " timed dispatches in one submission (raise maxTimedDispatches)");
     beginIfNeeded();
-    // Every dispatch may read what an earlier one wrote; one global barrier is enough for that
-    // and costs little next to a dispatch.
+    // Every dispatch may read what an earlier one wrote, as data or as indirect dispatch
+    // arguments; one global barrier is enough for that and costs little next to a dispatch.
     if (mDispatchCount > 0)
-        memoryBarrier(mCommandBuffer, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
-                      VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
+        memoryBarrier(mCommandBuffer, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT,
+                      VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_INDIRECT_COMMAND_READ_BIT);
     const auto query = std::uint32_t(2 * mDispatchCount);
     if (isTiming())
         vkCmdWriteTimestamp(mCommandBuffer, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, mQueryPool.get(), query);
-    kernel.record(mCommandBuffer, buffers, pushConstants, groupCount);
+    recordDispatch();
     if (isTiming())
         vkCmdWriteTimestamp(mCommandBuffer, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, mQueryPool.get(), query + 1);
     ++mDispatchCount;

@@ -8,6 +8,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -41,6 +42,17 @@ public:
         dispatch(kernel, buffers, std::as_bytes(std::span(&params, 1)), groupCount);
     }
 
+    /// dispatch() with group counts read from `arguments` at `offset` (ComputeKernel::recordIndirect).
+    void dispatchIndirect(const ComputeKernel& kernel, std::span<const DeviceBuffer* const> buffers,
+                          std::span<const std::byte> pushConstants, const DeviceBuffer& arguments,
+                          VkDeviceSize offset);
+
+    template <typename Params>
+    void dispatchIndirect(const ComputeKernel& kernel, std::span<const DeviceBuffer* const> buffers,
+                          const Params& params, const DeviceBuffer& arguments, VkDeviceSize offset) {
+        dispatchIndirect(kernel, buffers, std::as_bytes(std::span(&params, 1)), arguments, offset);
+    }
+
     /// Ends recording, submits once, waits on the fence (then the host may read the buffers),
     /// reads the timestamps and makes the sequence ready for new recording.
     /// @throw modeflow::Error if nothing was recorded or a call fails (e.g. VK_ERROR_DEVICE_LOST).
@@ -53,6 +65,8 @@ public:
 
 private:
     void beginIfNeeded();
+    /// The barrier after the previous dispatch, the timestamps around this one, the count.
+    void recordTimed(const std::function<void()>& recordDispatch);
 
     const VulkanContext& mContext;
     std::uint32_t mMaxTimed;

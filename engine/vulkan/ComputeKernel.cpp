@@ -74,18 +74,14 @@ ComputeKernel::ComputeKernel(const VulkanContext& context, const ComputeKernelSp
     mPipeline = DeviceHandle<VkPipeline>(device, pipeline, vkDestroyPipeline);
 }
 
-void ComputeKernel::record(VkCommandBuffer commandBuffer, std::span<const DeviceBuffer* const> buffers,
-                           std::span<const std::byte> pushConstants, std::uint32_t groupCount) const {
+void ComputeKernel::bind(VkCommandBuffer commandBuffer, std::span<const DeviceBuffer* const> buffers,
+                         std::span<const std::byte> pushConstants) const {
     if (buffers.size() != mSpec.bufferCount)
         throw Error("kernel " + mSpec.name + ": " + std::to_string(buffers.size()) + " buffers given, " +
                     std::to_string(mSpec.bufferCount) + " expected");
     if (pushConstants.size() != mSpec.pushConstantBytes)
         throw Error("kernel " + mSpec.name + ": " + std::to_string(pushConstants.size()) +
                     " bytes of push constants given, " + std::to_string(mSpec.pushConstantBytes) + " expected");
-    const std::uint32_t maxGroups = mContext.properties().limits.maxComputeWorkGroupCount[0];
-    if (groupCount == 0 || groupCount > maxGroups)
-        throw Error("kernel " + mSpec.name + ": group count " + std::to_string(groupCount) +
-                    " is outside 1…" + std::to_string(maxGroups));
 
     std::vector<VkDescriptorBufferInfo> infos(buffers.size());
     std::vector<VkWriteDescriptorSet> writes(buffers.size());
@@ -103,7 +99,26 @@ void ComputeKernel::record(VkCommandBuffer commandBuffer, std::span<const Device
     if (!pushConstants.empty())
         vkCmdPushConstants(commandBuffer, mPipelineLayout.get(), VK_SHADER_STAGE_COMPUTE_BIT, 0,
                            std::uint32_t(pushConstants.size()), pushConstants.data());
+}
+
+void ComputeKernel::record(VkCommandBuffer commandBuffer, std::span<const DeviceBuffer* const> buffers,
+                           std::span<const std::byte> pushConstants, std::uint32_t groupCount) const {
+    const std::uint32_t maxGroups = mContext.properties().limits.maxComputeWorkGroupCount[0];
+    if (groupCount == 0 || groupCount > maxGroups)
+        throw Error("kernel " + mSpec.name + ": group count " + std::to_string(groupCount) +
+                    " is outside 1…" + std::to_string(maxGroups));
+    bind(commandBuffer, buffers, pushConstants);
     vkCmdDispatch(commandBuffer, groupCount, 1, 1);
+}
+
+void ComputeKernel::recordIndirect(VkCommandBuffer commandBuffer, std::span<const DeviceBuffer* const> buffers,
+                                   std::span<const std::byte> pushConstants, const DeviceBuffer& arguments,
+                                   VkDeviceSize offset) const {
+    if (offset % 4 != 0 || offset + sizeof(VkDispatchIndirectCommand) > arguments.bytes())
+        throw Error("kernel " + mSpec.name + ": indirect arguments at byte " + std::to_string(offset) +
+                    " do not fit buffer \"" + arguments.name() + "\" (or are not 4-byte aligned)");
+    bind(commandBuffer, buffers, pushConstants);
+    vkCmdDispatchIndirect(commandBuffer, arguments.handle(), offset);
 }
 
 }  // namespace modeflow::vulkan

@@ -49,10 +49,22 @@ public:
         record(commandBuffer, buffers, std::as_bytes(std::span(&params, 1)), groupCount);
     }
 
+    /// record() with the group counts read by the device from `arguments` at byte `offset`
+    /// (a VkDispatchIndirectCommand, e.g. written by an earlier kernel: a count of 0 skips the
+    /// dispatch, which is how iterations stop on the device without a host round trip).
+    /// @throw modeflow::Error on a wrong buffer count or push size, or arguments out of range.
+    void recordIndirect(VkCommandBuffer commandBuffer, std::span<const DeviceBuffer* const> buffers,
+                        std::span<const std::byte> pushConstants, const DeviceBuffer& arguments,
+                        VkDeviceSize offset) const;
+
     const std::string& name() const { return mSpec.name; }
     std::uint32_t workgroupSize() const { return mSpec.workgroupSize; }
 
 private:
+    /// Binds the pipeline and buffers and pushes the constants, after checking their counts.
+    void bind(VkCommandBuffer commandBuffer, std::span<const DeviceBuffer* const> buffers,
+              std::span<const std::byte> pushConstants) const;
+
     const VulkanContext& mContext;
     ComputeKernelSpec mSpec;
     // Dependency order: the pipeline needs its layout, the layout needs the set layout.

@@ -95,6 +95,15 @@ VulkanContext::VulkanContext(const VulkanContextOptions& options) {
     vkGetPhysicalDeviceQueueFamilyProperties(mSelection.device, &familyCount, families.data());
     mTimestampValidBits = families[mSelection.queueFamily].timestampValidBits;
     mStorageBufferLimit = mProperties.limits.maxStorageBufferRange;
+    VkPhysicalDeviceSubgroupProperties subgroup{};
+    subgroup.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SUBGROUP_PROPERTIES;
+    VkPhysicalDeviceProperties2 properties2{};
+    properties2.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2;
+    properties2.pNext = &subgroup;
+    vkGetPhysicalDeviceProperties2(mSelection.device, &properties2);
+    mSubgroupSize = subgroup.subgroupSize;
+    mSubgroupArithmetic = (subgroup.supportedStages & VK_SHADER_STAGE_COMPUTE_BIT) &&
+                          (subgroup.supportedOperations & VK_SUBGROUP_FEATURE_ARITHMETIC_BIT);
     if (options.storageBufferLimit > 0)
         mStorageBufferLimit = std::min(mStorageBufferLimit, options.storageBufferLimit);
 

@@ -52,6 +52,10 @@ public:
     const VkPhysicalDeviceMemoryProperties& memoryProperties() const { return mMemoryProperties; }
     /// Valid bits of the queue's timestamps; 0 when the queue cannot write timestamps.
     std::uint32_t timestampValidBits() const { return mTimestampValidBits; }
+    /// Invocations per subgroup (lavapipe: the SIMD width, 8 with AVX2; NVIDIA 32; AMD 32/64).
+    std::uint32_t subgroupSize() const { return mSubgroupSize; }
+    /// True when compute shaders may use subgroupAdd and friends (GL_KHR_shader_subgroup_arithmetic).
+    bool hasSubgroupArithmetic() const { return mSubgroupArithmetic; }
     /// The largest storage buffer a kernel may bind: maxStorageBufferRange, or the smaller
     /// VulkanContextOptions::storageBufferLimit.
     VkDeviceSize storageBufferLimit() const { return mStorageBufferLimit; }
@@ -85,6 +89,8 @@ private:
     VkPhysicalDeviceMemoryProperties mMemoryProperties{};
     std::uint32_t mTimestampValidBits = 0;
     VkDeviceSize mStorageBufferLimit = 0;
+    std::uint32_t mSubgroupSize = 1;
+    bool mSubgroupArithmetic = false;
     VkDevice mDevice = VK_NULL_HANDLE;
     VkQueue mQueue = VK_NULL_HANDLE;
     PFN_vkCmdPushDescriptorSetKHR mCmdPushDescriptorSet = nullptr;

@@ -1,0 +1,83 @@
+#pragma once
+/// @file DeviceCoefficients.h
+/// Structural coefficients on the device, float32, and the contraction out = C(a, b), i.e.
+/// out_k = Σ_ij C[k][i][j] a_i b_j (CPU reference: StructuralCoefficients::apply), in two passes
+/// that read every stored coefficient once:
+///   1. pair sums  s(k,j) = Σ_i C[k][i][j] a_i for every pair k < j (a GEMV over the packed rows),
+///   2. combine    out_k = Σ_{j>k} s(k,j) b_j − Σ_{j<k} s(j,k) b_j   (antisymmetry).
+/// Dense coefficients are split into chunks of whole pairs when they exceed the device's storage
+/// buffer limit (lavapipe: 128 MiB, i.e. N ≳ 400); sparse ones are uploaded as their CSR rows.
+
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "engine/vulkan/DeviceBuffer.h"
+
+namespace modeflow {
+class StructuralCoefficients;
+}
+
+namespace modeflow::vulkan {
+
+class CommandSequence;
+struct ModalKernels;
+class VulkanContext;
+
+/// Where a contraction takes its group counts from: nullptr for fixed counts, or a buffer of
+/// VkDispatchIndirectCommand whose entry `first` (and the next ones) the device may have zeroed.
+struct IndirectArguments {
+    const DeviceBuffer* buffer = nullptr;
+    std::uint32_t first = 0;
+};
+
+/// Floats of a modal vector buffer: N rounded up to a multiple of 4. The pair-sum kernel reads
+/// rows and the vector `a` as vec4 (four floats per load: lavapipe turns each load into a
+/// per-lane access, so wider loads are what gets it near memory bandwidth); rows and vectors are
+/// zero-padded to that length.
+constexpr std::size_t paddedSize(int n) { return (std::size_t(n) + 3) / 4 * 4; }
+
+class DeviceCoefficients {
+public:
+    /// Uploads `coefficients` (DenseCoefficients or SparseCoefficients) rounded to float32.
+    /// @throw modeflow::Error for another storage, fewer than 2 modes, a single pair row or the
+    /// sparse arrays above the storage buffer limit, or a failed allocation.
+    DeviceCoefficients(const VulkanContext& context, const StructuralCoefficients& coefficients);
+
+    int size() const { return mN; }
+    bool isSparse() const { return mSparse.has_value(); }
+    std::size_t chunkCount() const { return mChunks.size(); }
+    /// Bytes of coefficient data (values and indices) one contraction reads.
+    std::size_t streamedBytes() const { return mStreamedBytes; }
+
+    /// Group counts of the dispatches recordApply makes, in order (pair-sum dispatches, then
+    /// combine): what an IndirectArguments buffer must hold.
+    std::vector<std::uint32_t> dispatchGroups() const;
+
+    /// Records out = C(a, b) (dispatchGroups().size() dispatches).
+    /// @throw modeflow::Error if `a` holds fewer than paddedSize(N) floats (zeros past N) or b, out
+    /// fewer than N.
+    void recordApply(CommandSequence& sequence, const ModalKernels& kernels, const DeviceBuffer& a,
+                     const DeviceBuffer& b, const DeviceBuffer& out, IndirectArguments indirect = {}) const;
+
+private:
+    struct Chunk {
+        DeviceBuffer values;
+        std::uint32_t firstPair = 0;
+        std::uint32_t pairs = 0;
+    };
+    struct SparseRows {
+        DeviceBuffer rowPair, rowStart, columns, values;
+        std::uint32_t rows = 0;
+    };
+
+    int mN = 0;
+    std::uint32_t mSubgroupsPerGroup = 1;
+    std::uint32_t mMaxGroups = 1;
+    std::vector<Chunk> mChunks;
+    std::optional<SparseRows> mSparse;
+    std::optional<DeviceBuffer> mPairSums;
+    std::size_t mStreamedBytes = 0;
+};
+
+}  // namespace modeflow::vulkan

@@ -1,0 +1,112 @@
+#version 450
+// The state updates of the modal integrators (DESIGN section 3), float32, one workgroup over the
+// N modes. x is the state, y the point where r = R(y) was evaluated (modal_combine.comp), a = M y
+// the weighted point modal_pair_sums.comp contracts next, f the modal force (constant over the
+// step), M the diagonal mass (1 + alpha^2 kappa^2 for LANS-alpha), d the decay rates (nu kappa^2).
+// As in engine/dynamics/ModalIntegrator.h the decay is Strang-split: x_i <- exp(-d_i h/2) x_i
+// before (BEGIN) and after the step.
+//
+//   BEGIN         x <- exp(-d h/2) x;  y = x;  indirect arguments reset (live = full)
+//   EXPLICIT      x <- exp(-d h/2) (x + h M^-1 (r + f))
+//   RK4_STAGE s   k_s = M^-1 (r + f);  acc += w_s k_s (w = 1 2 2 1);  y = x + c_s h k_s (c = 1/2 1/2 1),
+//                 after stage 3: x <- exp(-d h/2) (x + h/6 acc)
+//   MIDPOINT      fixed point of seed eq. 6.8 in the midpoint ybar = (x + x')/2:
+//                 y <- x + h/2 M^-1 (R(y) + f); when max|change| <= tolerance max|y| (or the change
+//                 stalls at the round-off floor below 16 tolerance) the step has converged and the
+//                 live indirect arguments are zeroed, so the remaining recorded iterations
+//                 dispatch no work (no host round trip).
+//   MIDPOINT_END  x <- exp(-d h/2) (2 y - x)
+//
+// The fixed point converges when h |dR/dy| / 2 < 1 (the step's CFL-like number); the status block
+// counts steps that reached the iteration limit so the host can report them.
+#extension GL_GOOGLE_include_directive : require
+#include "ModalStepParams.h"
+
+layout(local_size_x = 256, local_size_x_id = 0) in;
+
+layout(std430, set = 0, binding = 0) buffer State { float x[]; };
+layout(std430, set = 0, binding = 1) buffer Point { float y[]; };
+layout(std430, set = 0, binding = 2) buffer Weighted { float a[]; };
+layout(std430, set = 0, binding = 3) readonly buffer Rhs { float r[]; };
+layout(std430, set = 0, binding = 4) readonly buffer Force { float f[]; };
+layout(std430, set = 0, binding = 5) readonly buffer Mass { float mass[]; };
+layout(std430, set = 0, binding = 6) readonly buffer Decay { float decay[]; };
+layout(std430, set = 0, binding = 7) buffer Accumulator { float acc[]; };
+layout(std430, set = 0, binding = 8) buffer Status { ModalStatus status; };
+layout(std430, set = 0, binding = 9) buffer Arguments { uint arguments[]; };
+layout(push_constant) uniform Push { ModalUpdateParams params; };
+
+shared float changeMax[gl_WorkGroupSize.x];
+shared float sizeMax[gl_WorkGroupSize.x];
+
+void setPoint(uint k, float value) {
+    y[k] = value;
+    a[k] = mass[k] * value;
+}
+
+void main() {
+    const uint n = params.n;
+    const uint lane = gl_LocalInvocationID.x;
+    const uint size = gl_WorkGroupSize.x;
+    const float h = params.h;
+    const uint op = params.op;
+
+    float change = 0.0, magnitude = 0.0;
+    for (uint k = lane; k < n; k += size) {
+        const float halfDecay = exp(-0.5 * h * decay[k]);
+        if (op == MODAL_OP_BEGIN) {
+            x[k] *= halfDecay;
+            setPoint(k, x[k]);
+        } else if (op == MODAL_OP_EXPLICIT) {
+            x[k] = halfDecay * (x[k] + h * (r[k] + f[k]) / mass[k]);
+        } else if (op == MODAL_OP_RK4_STAGE) {
+            const float slope = (r[k] + f[k]) / mass[k];
+            const uint s = params.stage;
+            acc[k] = (s == 0 ? 0.0 : acc[k]) + (s == 0 || s == 3 ? 1.0 : 2.0) * slope;
+            if (s < 3) setPoint(k, x[k] + (s == 2 ? 1.0 : 0.5) * h * slope);
+            else x[k] = halfDecay * (x[k] + h / 6.0 * acc[k]);
+        } else if (op == MODAL_OP_MIDPOINT) {
+            const float next = x[k] + 0.5 * h * (r[k] + f[k]) / mass[k];
+            change = max(change, abs(next - y[k]));
+            magnitude = max(magnitude, abs(next));
+            setPoint(k, next);
+        } else if (op == MODAL_OP_MIDPOINT_END) {
+            x[k] = halfDecay * (2.0 * y[k] - x[k]);
+        }
+    }
+
+    if (op == MODAL_OP_BEGIN && lane == 0) {
+        status.iterations = 0;
+        status.converged = 0;
+        const uint words = 3 * params.argumentCount;
+        for (uint e = 0; e < words; ++e) arguments[words + e] = arguments[e];
+    }
+    if (op == MODAL_OP_MIDPOINT_END && lane == 0 && status.converged == 0) status.unconverged += 1;
+    if (op != MODAL_OP_MIDPOINT) return;
+
+    // Max-reduce the change and the size of y across the workgroup (any size, not only 2^k).
+    changeMax[lane] = change;
+    sizeMax[lane] = magnitude;
+    barrier();
+    for (uint stride = 1; stride < size; stride *= 2) {
+        if (lane % (2 * stride) == 0 && lane + stride < size) {
+            changeMax[lane] = max(changeMax[lane], changeMax[lane + stride]);
+            sizeMax[lane] = max(sizeMax[lane], sizeMax[lane + stride]);
+        }
+        barrier();
+    }
+    if (lane == 0) {
+        const float residual = sizeMax[0] > 0.0 ? changeMax[0] / sizeMax[0] : 0.0;
+        // Converged at the tolerance, or at float32's round-off floor just above it: the change
+        // no longer halves, so more iterations would only shuffle the last bits.
+        const bool stalled = status.iterations > 0 && residual <= 16.0 * params.tolerance &&
+                             residual > 0.5 * status.residual;
+        status.iterations += 1;
+        status.residual = residual;
+        if (residual <= params.tolerance || stalled) {
+            status.converged = 1;
+            const uint words = 3 * params.argumentCount;
+            for (uint e = 0; e < params.argumentCount; ++e) arguments[words + 3 * e] = 0;
+        }
+    }
+}

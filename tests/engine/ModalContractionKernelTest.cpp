@@ -1,0 +1,125 @@
+/// @file ModalContractionKernelTest.cpp
+/// DeviceCoefficients::recordApply (shaders/modal_pair_sums*.comp + modal_combine.comp) against
+/// the CPU reference StructuralCoefficients::apply: dense, sparse, and dense split into chunks.
+
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "engine/dynamics/SparseCoefficients.h"
+#include "engine/kernels/DeviceCoefficients.h"
+#include "engine/kernels/ModalKernels.h"
+#include "engine/vulkan/CommandSequence.h"
+#include "engine/vulkan/DeviceBuffer.h"
+#include "tests/engine/RandomCoefficients.h"
+#include "tests/engine/VulkanTestContext.h"
+
+namespace modeflow {
+namespace {
+
+using vulkan::CommandSequence;
+using vulkan::DeviceBuffer;
+using vulkan::DeviceCoefficients;
+using vulkan::ModalKernels;
+
+/// The vector in float32, zero-padded as the kernels read it.
+std::vector<float> toFloat(const Eigen::VectorXd& v) {
+    std::vector<float> values(vulkan::paddedSize(int(v.size())), 0.0f);
+    std::copy(v.begin(), v.end(), values.begin());
+    return values;
+}
+Eigen::VectorXd roundedToFloat(const Eigen::VectorXd& v) { return v.cast<float>().cast<double>(); }
+
+/// The coefficients rounded to float32, so the reference sees what the device sees and the
+/// comparison measures the device's float32 accumulation alone.
+DenseCoefficients roundedDense(const DenseCoefficients& c) {
+    std::vector<double> packed(c.packed().size());
+    for (std::size_t e = 0; e < packed.size(); ++e) packed[e] = double(float(c.packed()[e]));
+    return DenseCoefficients(c.size(), std::move(packed));
+}
+
+/// max_k |device − reference| / max_k |reference| for out = C(a, b), a and b random.
+double contractionError(const vulkan::VulkanContext& context, const StructuralCoefficients& c,
+                        std::size_t* chunks = nullptr, std::vector<double>* timesMs = nullptr) {
+    const int n = c.size();
+    const Eigen::VectorXd a = roundedToFloat(testing::randomVector(n, 7)),
+                          b = roundedToFloat(testing::randomVector(n, 8));
+    Eigen::VectorXd reference;
+    c.apply(a, b, reference);
+
+    const ModalKernels kernels(context);
+    const DeviceCoefficients device(context, c);
+    if (chunks) *chunks = device.chunkCount();
+    const DeviceBuffer aBuffer = DeviceBuffer::fromValues<float>(context, toFloat(a), "a");
+    const DeviceBuffer bBuffer = DeviceBuffer::fromValues<float>(context, toFloat(b), "b");
+    // NaN first: an output the kernels never write shows up as a failure, not as a stale value.
+    const std::vector<float> nan(n, std::numeric_limits<float>::quiet_NaN());
+    DeviceBuffer out = DeviceBuffer::fromValues<float>(context, nan, "out");
+    CommandSequence sequence(context, timesMs != nullptr);
+    device.recordApply(sequence, kernels, aBuffer, bBuffer, out);
+    sequence.submitAndWait();
+    if (timesMs) *timesMs = sequence.dispatchTimesMs();
+
+    std::vector<float> result(n);
+    out.download<float>(result);
+    const Eigen::VectorXd got = Eigen::Map<const Eigen::VectorXf>(result.data(), n).cast<double>();
+    if (got.hasNaN()) return std::numeric_limits<double>::infinity();
+    return (got - reference).lpNorm<Eigen::Infinity>() / reference.lpNorm<Eigen::Infinity>();
+}
+
+class ModalContractionKernelTest : public testing::VulkanTest {};
+
+TEST_P(ModalContractionKernelTest, DenseEqualsCpuApplyInFloat32) {
+    for (const int n : {2, 20, 64, 150}) {
+        const double error = contractionError(context(), roundedDense(testing::randomDense(n, 1000 + n)));
+        std::cout << "dense N = " << n << ": relative error " << error << "\n";
+        EXPECT_LE(error, 1e-5) << "N = " << n;
+    }
+}
+
+TEST_P(ModalContractionKernelTest, SparseEqualsCpuApplyInFloat32) {
+    for (const int n : {20, 90}) {
+        const SparseCoefficients sparse =
+            SparseCoefficients::fromDense(roundedDense(testing::randomDense(n, 300 + n, 0.1)));
+        const double error = contractionError(context(), sparse);
+        std::cout << "sparse N = " << n << " (" << sparse.nonZeros() << " entries): relative error " << error << "\n";
+        EXPECT_LE(error, 1e-5) << "N = " << n;
+    }
+}
+
+TEST(ModalContractionSplit, ChunksAboveTheStorageLimitGiveTheSameResult) {
+    // 64 modes: 2016 pairs of 256 bytes. A 100 kB limit splits them into 6 chunks.
+    vulkan::VulkanContextOptions options;
+    options.storageBufferLimit = 100'000;
+    options.validation = true;
+    std::unique_ptr<vulkan::VulkanContext> context;
+    ASSERT_NO_THROW(context = std::make_unique<vulkan::VulkanContext>(options));
+    {
+        std::size_t chunks = 0;
+        const double error = contractionError(*context, roundedDense(testing::randomDense(64, 9)), &chunks);
+        EXPECT_EQ(chunks, 6u);
+        EXPECT_LE(error, 1e-5);
+    }
+    EXPECT_EQ(context->validationMessageCount(), 0u);
+}
+
+TEST_P(ModalContractionKernelTest, TimestampsGiveOneDurationPerDispatch) {
+    std::vector<double> times;
+    EXPECT_LE(contractionError(context(), roundedDense(testing::randomDense(150, 4)), nullptr, &times), 1e-5);
+    if (context().timestampValidBits() == 0) {
+        EXPECT_TRUE(times.empty());
+    } else {
+        ASSERT_EQ(times.size(), 2u);  // pair sums, combine
+        std::cout << "N = 150 on " << context().deviceName() << ": pair sums " << times[0] << " ms, combine "
+                  << times[1] << " ms\n";
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(PlainAndValidated, ModalContractionKernelTest, ::testing::Bool(),
+                         testing::validationName);
+
+}  // namespace
+}  // namespace modeflow
