@@ -305,10 +305,29 @@ TEST_F(Cli, ModesRunsTheReducedDynamicsAsCsv) {
     EXPECT_NE(bad.status, 0);
     EXPECT_NE(bad.err.find("leapfrog"), std::string::npos) << bad.err;
     EXPECT_FALSE(fs::exists(mDir / "c2")) << "work started before the option was checked";
-    const RunResult gpu = run("modes " + s.string() + " --cache-dir " + mCache.string() +
-                              " --device vulkan --steps 2");
-    EXPECT_NE(gpu.status, 0);
-    EXPECT_NE(gpu.err.find("--device"), std::string::npos) << gpu.err;
+    const RunResult badDevice = run("modes " + s.string() + " --cache-dir " + mCache.string() + " --device gpu0");
+    EXPECT_NE(badDevice.status, 0);
+    EXPECT_NE(badDevice.err.find("--device gpu0"), std::string::npos) << badDevice.err;
+}
+
+TEST_F(Cli, ModesRunsOnTheVulkanDeviceLikeTheCpuReference) {
+    const fs::path s = scene("modes.toml", std::string(kSmallDisk) +
+                                               "[initial]\nvelocity = \"random\"\nenergy = 2.0\n");
+    const std::string args = " --cache-dir " + mCache.string() + " --steps 100 --dt 0.02 --integrator midpoint --csv";
+    const RunResult cpu = run("modes " + s.string() + args);
+    const RunResult gpu = run("modes " + s.string() + args + " --device vulkan");
+    ASSERT_EQ(cpu.status, 0) << cpu.err;
+    ASSERT_EQ(gpu.status, 0) << gpu.err;
+    EXPECT_NE(gpu.err.find("Vulkan device:"), std::string::npos) << "the run must say which device runs";
+    const std::vector<double> expected = csvEnergies(cpu.out), got = csvEnergies(gpu.out);
+    ASSERT_EQ(got.size(), expected.size());
+    for (std::size_t step = 0; step < got.size(); ++step)
+        EXPECT_NEAR(got[step] / expected[step], 1.0, 1e-5) << "step " << step;
+
+    const RunResult trapezoidal = run("modes " + s.string() + " --cache-dir " + mCache.string() +
+                                      " --steps 2 --integrator trapezoidal --device vulkan");
+    EXPECT_NE(trapezoidal.status, 0);
+    EXPECT_NE(trapezoidal.err.find("CPU reference only"), std::string::npos) << trapezoidal.err;
 }
 
 TEST_F(Cli, ModesStartsFromVorticesAndFromModalAmplitudes) {

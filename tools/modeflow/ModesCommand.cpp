@@ -1,4 +1,5 @@
 #include <cmath>
+#include <functional>
 #include <cstdio>
 #include <iostream>
 #include <memory>
@@ -15,10 +16,13 @@
 #include "engine/dynamics/SparseCoefficients.h"
 #include "engine/format/CacheFile.h"
 #include "engine/format/Error.h"
+#include "engine/kernels/ModalStepper.h"
+#include "engine/vulkan/CommandSequence.h"
 #include "precompute/Precompute.h"
 #include "precompute/initial/VortexProjection.h"
 #include "precompute/scene/SceneLoader.h"
 #include "tools/modeflow/Commands.h"
+#include "tools/modeflow/DeviceOption.h"
 
 namespace modeflow::cli {
 namespace {
@@ -99,21 +103,25 @@ Command addModes(CLI::App& app) {
         ->check(CLI::PositiveNumber);
     sub->add_option("--integrator", opts->integrator,
                     "explicit | rk4 | midpoint | trapezoidal (default: [simulation].integrator)");
-    sub->add_option("--device", opts->device, "cpu (double-precision reference)");
+    sub->add_option("--device", opts->device, kDeviceHelp);
     sub->add_flag("--csv", opts->csv,
                   "CSV on stdout: step,time,energy,enstrophy,cross_helicity,iterations,residual");
     sub->add_option("--cache-dir", opts->cacheDir, "cache folder");
     return [sub, opts]() {
         if (!*sub) return -1;
-        if (opts->device != "cpu")
-            throw Error("--device " + opts->device +
-                        ": only the CPU reference runs the reduced dynamics so far");
+        const auto deviceOptions = parseDevice(opts->device);
         const SceneSpec scene = loadScene(opts->scene);
         IntegratorSettings settings;
         // Checked before any precompute work.
         settings.scheme = opts->integrator ? parseIntegrator(*opts->integrator, "--integrator")
                                            : scene.simulation.integrator;
         Progress progress = Progress::toStderr();
+        if (deviceOptions && scene.simulation.mhd)
+            throw Error(scene.sourceFile.string() +
+                        ": [simulation].mhd runs on the CPU reference only; use --device cpu");
+        if (deviceOptions && settings.scheme == Integrator::Trapezoidal)
+            throw Error("--integrator trapezoidal runs on the CPU reference only; on a Vulkan device use explicit, "
+                        "rk4 or midpoint");
         const auto cachePath = ensureCache(scene, resolveCacheDir(opts->cacheDir), false, progress).path;
         const BasisCache cache = readCache(cachePath);
         const auto coefficients = loadCoefficients(cache);
@@ -135,10 +143,33 @@ Command addModes(CLI::App& app) {
             system = std::make_unique<FluidSystem>(
                 *coefficients, FluidParameters{k2, sim.viscosity, sim.alpha});
         }
-        ModalIntegrator integrator(*system, settings);
-
         const double h = opts->dt.value_or(sim.dt);
         const int steps = opts->steps.value_or(scene.output.frames * scene.output.stepsPerFrame);
+
+        // One step of the chosen device; it updates x and says how the step went.
+        std::function<StepReport()> advance;
+        std::unique_ptr<vulkan::VulkanContext> context;
+        std::unique_ptr<vulkan::ModalStepper> stepper;
+        std::unique_ptr<vulkan::CommandSequence> sequence;
+        ModalIntegrator integrator(*system, settings);
+        if (deviceOptions) {
+            context = std::make_unique<vulkan::VulkanContext>(*deviceOptions);
+            std::cerr << context->describe();
+            stepper = std::make_unique<vulkan::ModalStepper>(
+                *context, *coefficients, FluidParameters{k2, sim.viscosity, sim.alpha},
+                vulkan::DeviceStepSettings{settings.scheme});
+            stepper->setState(x);
+            sequence = std::make_unique<vulkan::CommandSequence>(*context);
+            advance = [&]() {
+                stepper->recordStep(*sequence, h);
+                sequence->submitAndWait();
+                x = stepper->state();
+                const vulkan::DeviceStepStatus status = stepper->status();
+                return StepReport{status.iterations, 0, status.residual, status.converged};
+            };
+        } else {
+            advance = [&]() { return integrator.step(x, h); };
+        }
         const bool twoD = cache.grid.dim == 2;
         // Conserved by the midpoint rule: ½Σ(1+α²κ²)v² (Euler, LANS-α) or ½(|v|²+|F|²) (MHD).
         auto totalEnergy = [&]() {
@@ -158,7 +189,7 @@ Command addModes(CLI::App& app) {
                 std::printf("%8d  t=%-10.4g energy %.15g  (drift %+.2e)", step, step * h, e,
                             e0 > 0 ? e / e0 - 1.0 : 0.0);
                 if (sim.mhd) std::printf("  cross helicity %.15g", helicity);
-                std::printf("  newton %d\n", r.iterations);
+                std::printf("  iterations %d\n", r.iterations);
             }
         };
         if (opts->csv)
@@ -169,7 +200,7 @@ Command addModes(CLI::App& app) {
         row(0, StepReport{});
         int unconverged = 0;
         for (int s = 1; s <= steps; ++s) {
-            const StepReport r = integrator.step(x, h);
+            const StepReport r = advance();
             unconverged += !r.converged;
             row(s, r);
             if (!x.allFinite())
@@ -180,8 +211,8 @@ Command addModes(CLI::App& app) {
         }
         std::fflush(stdout);
         if (unconverged)
-            std::cerr << "warning: Newton did not converge in " << unconverged
-                      << " steps; try a smaller --dt\n";
+            std::cerr << "warning: the " << (deviceOptions ? "fixed-point" : "Newton")
+                      << " iteration did not converge in " << unconverged << " steps; try a smaller --dt\n";
         return 0;
     };
 }
