@@ -1,5 +1,6 @@
 #include "engine/vulkan/DeviceBuffer.h"
 
+#include <cstring>
 #include <optional>
 
 #include "engine/vulkan/VulkanContext.h"
@@ -8,12 +9,10 @@
 namespace modeflow::vulkan {
 namespace {
 
-/// A memory type allowed by `typeBits` with HOST_VISIBLE | HOST_COHERENT; device-local ones
-/// first (lavapipe, integrated GPUs, resizable BAR), since kernels then read it at full speed.
-std::optional<std::uint32_t> hostVisibleType(const VkPhysicalDeviceMemoryProperties& memory,
-                                             std::uint32_t typeBits) {
-    const VkMemoryPropertyFlags required =
-        VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
+/// A memory type allowed by `typeBits` with all of `required`, preferring device-local ones
+/// (lavapipe, integrated GPUs and resizable BAR put host-visible memory there too).
+std::optional<std::uint32_t> memoryType(const VkPhysicalDeviceMemoryProperties& memory, std::uint32_t typeBits,
+                                        VkMemoryPropertyFlags required) {
     std::optional<std::uint32_t> found;
     for (std::uint32_t t = 0; t < memory.memoryTypeCount; ++t) {
         const VkMemoryPropertyFlags flags = memory.memoryTypes[t].propertyFlags;
@@ -26,8 +25,8 @@ std::optional<std::uint32_t> hostVisibleType(const VkPhysicalDeviceMemoryPropert
 
 }  // namespace
 
-DeviceBuffer::DeviceBuffer(const VulkanContext& context, VkDeviceSize bytes, std::string name)
-    : mName(std::move(name)), mBytes(bytes) {
+DeviceBuffer::DeviceBuffer(const VulkanContext& context, VkDeviceSize bytes, std::string name, Placement placement)
+    : mContext(&context), mName(std::move(name)), mBytes(bytes) {
     const VkDeviceSize limit = context.storageBufferLimit();
     if (bytes == 0) throw Error("DeviceBuffer \"" + mName + "\": size 0 (Vulkan buffers cannot be empty)");
     if (bytes > limit)
@@ -48,10 +47,14 @@ DeviceBuffer::DeviceBuffer(const VulkanContext& context, VkDeviceSize bytes, std
 
     VkMemoryRequirements requirements;
     vkGetBufferMemoryRequirements(device, buffer, &requirements);
-    const auto type = hostVisibleType(context.memoryProperties(), requirements.memoryTypeBits);
+    const bool mapped = placement == Placement::HostVisible || !context.usesStaging();
+    const VkMemoryPropertyFlags required =
+        mapped ? VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT
+               : VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT;
+    const auto type = memoryType(context.memoryProperties(), requirements.memoryTypeBits, required);
     if (!type)
-        throw Error("DeviceBuffer \"" + mName + "\": " + context.deviceName() +
-                    " has no host-visible, host-coherent memory type for storage buffers");
+        throw Error("DeviceBuffer \"" + mName + "\": " + context.deviceName() + " has no " +
+                    (mapped ? "host-visible, host-coherent" : "device-local") + " memory type for storage buffers");
     VkMemoryAllocateInfo allocate{};
     allocate.sType = VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO;
     allocate.allocationSize = requirements.size;
@@ -60,7 +63,77 @@ DeviceBuffer::DeviceBuffer(const VulkanContext& context, VkDeviceSize bytes, std
     check(vkAllocateMemory(device, &allocate, nullptr, &memory), "vkAllocateMemory");
     mMemory = DeviceHandle<VkDeviceMemory>(device, memory, vkFreeMemory);
     check(vkBindBufferMemory(device, buffer, memory, 0), "vkBindBufferMemory");
-    check(vkMapMemory(device, memory, 0, VK_WHOLE_SIZE, 0, &mMapped), "vkMapMemory");
+    if (mapped) check(vkMapMemory(device, memory, 0, VK_WHOLE_SIZE, 0, &mMapped), "vkMapMemory");
+}
+
+void DeviceBuffer::write(const void* source, VkDeviceSize offset, VkDeviceSize bytes) {
+    checkRange("upload", offset, bytes);
+    if (bytes == 0) return;
+    if (mMapped) {
+        std::memcpy(static_cast<std::byte*>(mMapped) + offset, source, bytes);
+        return;
+    }
+    DeviceBuffer staging(*mContext, bytes, mName + " (staging)", Placement::HostVisible);
+    std::memcpy(staging.mMapped, source, bytes);
+    copyWithStaging(staging, offset, bytes, true);
+}
+
+void DeviceBuffer::read(void* destination, VkDeviceSize offset, VkDeviceSize bytes) const {
+    checkRange("download", offset, bytes);
+    if (bytes == 0) return;
+    if (mMapped) {
+        std::memcpy(destination, static_cast<const std::byte*>(mMapped) + offset, bytes);
+        return;
+    }
+    DeviceBuffer staging(*mContext, bytes, mName + " (staging)", Placement::HostVisible);
+    copyWithStaging(staging, offset, bytes, false);
+    std::memcpy(destination, staging.mMapped, bytes);
+}
+
+void DeviceBuffer::copyWithStaging(const DeviceBuffer& staging, VkDeviceSize offset, VkDeviceSize bytes,
+                                   bool toThis) const {
+    const VkDevice device = mContext->device();
+    VkCommandPoolCreateInfo poolInfo{};
+    poolInfo.sType = VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO;
+    poolInfo.flags = VK_COMMAND_POOL_CREATE_TRANSIENT_BIT;
+    poolInfo.queueFamilyIndex = mContext->queueFamily();
+    VkCommandPool rawPool = VK_NULL_HANDLE;
+    check(vkCreateCommandPool(device, &poolInfo, nullptr, &rawPool), "vkCreateCommandPool");
+    const DeviceHandle<VkCommandPool> pool(device, rawPool, vkDestroyCommandPool);
+    VkFenceCreateInfo fenceInfo{};
+    fenceInfo.sType = VK_STRUCTURE_TYPE_FENCE_CREATE_INFO;
+    VkFence rawFence = VK_NULL_HANDLE;
+    check(vkCreateFence(device, &fenceInfo, nullptr, &rawFence), "vkCreateFence");
+    const DeviceHandle<VkFence> fence(device, rawFence, vkDestroyFence);
+
+    VkCommandBufferAllocateInfo allocate{};
+    allocate.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO;
+    allocate.commandPool = rawPool;
+    allocate.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+    allocate.commandBufferCount = 1;
+    VkCommandBuffer commands = VK_NULL_HANDLE;
+    check(vkAllocateCommandBuffers(device, &allocate, &commands), "vkAllocateCommandBuffers");
+    VkCommandBufferBeginInfo begin{};
+    begin.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO;
+    begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+    check(vkBeginCommandBuffer(commands, &begin), "vkBeginCommandBuffer");
+    const VkBufferCopy region{toThis ? 0 : offset, toThis ? offset : 0, bytes};
+    vkCmdCopyBuffer(commands, toThis ? staging.handle() : handle(), toThis ? handle() : staging.handle(), 1, &region);
+    // The copy's writes must reach the kernels (upload) or the host (download) that come next.
+    VkMemoryBarrier barrier{};
+    barrier.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER;
+    barrier.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+    barrier.dstAccessMask = toThis ? VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT : VK_ACCESS_HOST_READ_BIT;
+    vkCmdPipelineBarrier(commands, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                         toThis ? VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT : VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &barrier, 0,
+                         nullptr, 0, nullptr);
+    check(vkEndCommandBuffer(commands), "vkEndCommandBuffer");
+    VkSubmitInfo submit{};
+    submit.sType = VK_STRUCTURE_TYPE_SUBMIT_INFO;
+    submit.commandBufferCount = 1;
+    submit.pCommandBuffers = &commands;
+    check(vkQueueSubmit(mContext->queue(), 1, &submit, rawFence), "vkQueueSubmit (staging copy)");
+    check(vkWaitForFences(device, 1, &rawFence, VK_TRUE, UINT64_MAX), "vkWaitForFences (staging copy)");
 }
 
 void DeviceBuffer::checkRange(const char* what, VkDeviceSize offset, VkDeviceSize bytes) const {

@@ -1,12 +1,12 @@
 #pragma once
 /// @file DeviceBuffer.h
-/// A storage buffer the kernels read and write, in host-visible, host-coherent memory that stays
-/// mapped, so upload and download are plain copies. On lavapipe (and integrated GPUs) that memory
-/// is also device-local; on discrete GPUs it is not, and a staging path (device-local buffer,
-/// transfer through a host-visible one) is future work.
+/// A storage buffer the kernels read and write. Where the device's memory is the host's (lavapipe,
+/// integrated GPUs) the buffer lives in host-visible memory that stays mapped, and upload and
+/// download are plain copies. On a discrete GPU it lives in device-local memory, which kernels
+/// read at full speed but the host cannot map: upload and download then go through a temporary
+/// host-visible staging buffer and a copy command (VulkanContext::usesStaging()).
 
 #include <cstddef>
-#include <cstring>
 #include <span>
 #include <string>
 #include <type_traits>
@@ -22,11 +22,17 @@ class VulkanContext;
 
 class DeviceBuffer {
 public:
+    enum class Placement {
+        Automatic,    ///< device-local on discrete GPUs (staged copies), else mapped
+        HostVisible,  ///< always mapped host-visible memory (staging buffers, small readbacks)
+    };
+
     /// A buffer of `bytes` bytes (contents undefined). `name` appears in error messages.
-    /// @throw modeflow::Error if `bytes` is 0 or exceeds the device's maxStorageBufferRange (the
-    /// message gives both sizes), if no host-visible coherent memory type exists, or if a
-    /// creation call fails.
-    DeviceBuffer(const VulkanContext& context, VkDeviceSize bytes, std::string name = "buffer");
+    /// @throw modeflow::Error if `bytes` is 0 or exceeds VulkanContext::storageBufferLimit()
+    /// (the message gives both sizes), if no suitable memory type exists, or if a creation call
+    /// fails.
+    DeviceBuffer(const VulkanContext& context, VkDeviceSize bytes, std::string name = "buffer",
+                 Placement placement = Placement::Automatic);
 
     /// A buffer holding a copy of `values`.
     template <typename T>
@@ -40,28 +46,33 @@ public:
     VkBuffer handle() const { return mBuffer.get(); }
     VkDeviceSize bytes() const { return mBytes; }
     const std::string& name() const { return mName; }
+    /// True when the host reads and writes the memory directly (no staging copy).
+    bool isMapped() const { return mMapped != nullptr; }
 
     /// Copies `values` into the buffer at byte `offset`. Call between submissions only.
-    /// @throw modeflow::Error if the range does not fit.
+    /// @throw modeflow::Error if the range does not fit or a staging copy fails.
     template <typename T>
     void upload(std::span<const T> values, VkDeviceSize offset = 0) {
         static_assert(std::is_trivially_copyable_v<T>);
-        checkRange("upload", offset, values.size_bytes());
-        std::memcpy(static_cast<std::byte*>(mMapped) + offset, values.data(), values.size_bytes());
+        write(values.data(), offset, values.size_bytes());
     }
 
     /// Copies bytes starting at `offset` into `values`. Call after the writing submission's fence.
-    /// @throw modeflow::Error if the range does not fit.
+    /// @throw modeflow::Error if the range does not fit or a staging copy fails.
     template <typename T>
     void download(std::span<T> values, VkDeviceSize offset = 0) const {
         static_assert(std::is_trivially_copyable_v<T>);
-        checkRange("download", offset, values.size_bytes());
-        std::memcpy(values.data(), static_cast<const std::byte*>(mMapped) + offset, values.size_bytes());
+        read(values.data(), offset, values.size_bytes());
     }
 
 private:
     void checkRange(const char* what, VkDeviceSize offset, VkDeviceSize bytes) const;
+    void write(const void* source, VkDeviceSize offset, VkDeviceSize bytes);
+    void read(void* destination, VkDeviceSize offset, VkDeviceSize bytes) const;
+    /// Copies `bytes` between this buffer at `offset` and a staging buffer, through the queue.
+    void copyWithStaging(const DeviceBuffer& staging, VkDeviceSize offset, VkDeviceSize bytes, bool toThis) const;
 
+    const VulkanContext* mContext = nullptr;
     std::string mName;
     VkDeviceSize mBytes = 0;
     // Memory before buffer: the buffer is destroyed first, then its memory is freed (which unmaps).

@@ -95,6 +95,7 @@ VulkanContext::VulkanContext(const VulkanContextOptions& options) {
     vkGetPhysicalDeviceQueueFamilyProperties(mSelection.device, &familyCount, families.data());
     mTimestampValidBits = families[mSelection.queueFamily].timestampValidBits;
     mStorageBufferLimit = mProperties.limits.maxStorageBufferRange;
+    mUsesStaging = options.forceStaging || mProperties.deviceType == VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU;
     VkPhysicalDeviceSubgroupProperties subgroup{};
     subgroup.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SUBGROUP_PROPERTIES;
     VkPhysicalDeviceProperties2 properties2{};
@@ -155,7 +156,8 @@ std::string VulkanContext::describe() const {
         << DeviceSelector::typeName(mProperties.deviceType) << ", Vulkan "
         << VK_API_VERSION_MAJOR(mProperties.apiVersion) << "." << VK_API_VERSION_MINOR(mProperties.apiVersion)
         << "." << VK_API_VERSION_PATCH(mProperties.apiVersion) << ", queue family " << mSelection.queueFamily
-        << ", validation " << (isValidationEnabled() ? "on" : "off") << ")\n"
+        << ", " << (mUsesStaging ? "device-local buffers with staging" : "mapped buffers") << ", validation "
+        << (isValidationEnabled() ? "on" : "off") << ")\n"
         << mSelection.report;
     return out.str();
 }

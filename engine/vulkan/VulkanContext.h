@@ -27,6 +27,9 @@ struct VulkanContextOptions {
     /// Treat the device's maxStorageBufferRange as at most this many bytes (0: the device's own
     /// limit). Tests use it to exercise the paths that split large arrays on any device.
     VkDeviceSize storageBufferLimit = 0;
+    /// Keep buffers in device-local memory reached through staging copies even where host-visible
+    /// memory would do (always so on discrete GPUs); tests use it to exercise that path anywhere.
+    bool forceStaging = false;
 };
 
 class VulkanContext {
@@ -52,6 +55,9 @@ public:
     const VkPhysicalDeviceMemoryProperties& memoryProperties() const { return mMemoryProperties; }
     /// Valid bits of the queue's timestamps; 0 when the queue cannot write timestamps.
     std::uint32_t timestampValidBits() const { return mTimestampValidBits; }
+    /// True when DeviceBuffers live in device-local memory behind staging copies: on discrete
+    /// GPUs (whose host-visible memory is system RAM across the bus) or when forced.
+    bool usesStaging() const { return mUsesStaging; }
     /// Invocations per subgroup (lavapipe: the SIMD width, 8 with AVX2; NVIDIA 32; AMD 32/64).
     std::uint32_t subgroupSize() const { return mSubgroupSize; }
     /// True when compute shaders may use subgroupAdd and friends (GL_KHR_shader_subgroup_arithmetic).
@@ -89,6 +95,7 @@ private:
     VkPhysicalDeviceMemoryProperties mMemoryProperties{};
     std::uint32_t mTimestampValidBits = 0;
     VkDeviceSize mStorageBufferLimit = 0;
+    bool mUsesStaging = false;
     std::uint32_t mSubgroupSize = 1;
     bool mSubgroupArithmetic = false;
     VkDevice mDevice = VK_NULL_HANDLE;

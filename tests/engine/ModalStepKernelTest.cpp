@@ -171,9 +171,10 @@ TEST_P(ModalStepKernelTest, RefusesWhatOnlyTheCpuRuns) {
     EXPECT_THROW(stepper.setState(Eigen::VectorXd::Zero(kModes + 1)), Error);
 }
 
-TEST(ModalStepSplit, SplitCoefficientsStepLikeWholeOnes) {
+TEST(ModalStepSplit, SplitStagedCoefficientsStepLikeWholeMappedOnes) {
     vulkan::VulkanContextOptions options;
     options.validation = true;
+    options.forceStaging = true;          // device-local buffers, as on a discrete GPU
     options.storageBufferLimit = 20'000;  // 40 modes: 780 pairs of 160 bytes, 7 chunks
     std::unique_ptr<vulkan::VulkanContext> split;
     ASSERT_NO_THROW(split = std::make_unique<vulkan::VulkanContext>(options));

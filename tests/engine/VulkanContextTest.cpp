@@ -77,27 +77,46 @@ TEST_P(VulkanContextTest, DeviceIndexZeroIsAccepted) {
     EXPECT_NE(indexed.describe().find("chosen   #0"), std::string::npos) << indexed.describe();
 }
 
-TEST_P(VulkanContextTest, BufferRoundTripsItsContents) {
-    {
-        std::vector<float> values(1000);
-        std::iota(values.begin(), values.end(), -3.5f);
-        DeviceBuffer buffer = DeviceBuffer::fromValues<float>(context(), values, "round trip");
-        EXPECT_EQ(buffer.bytes(), values.size() * sizeof(float));
-        std::vector<float> back(values.size(), 0.0f);
-        buffer.download<float>(back);
-        EXPECT_EQ(back, values);
+/// Whole and partial uploads and downloads give back what went in.
+void expectRoundTrip(const vulkan::VulkanContext& context) {
+    std::vector<float> values(1000);
+    std::iota(values.begin(), values.end(), -3.5f);
+    DeviceBuffer buffer = DeviceBuffer::fromValues<float>(context, values, "round trip");
+    EXPECT_EQ(buffer.bytes(), values.size() * sizeof(float));
+    EXPECT_EQ(buffer.isMapped(), !context.usesStaging());
+    std::vector<float> back(values.size(), 0.0f);
+    buffer.download<float>(back);
+    EXPECT_EQ(back, values);
 
-        // A partial upload at an offset changes only its range.
-        const std::vector<float> patch{7.0f, 8.0f};
-        buffer.upload<float>(patch, 10 * sizeof(float));
-        buffer.download<float>(back);
-        EXPECT_EQ(back[9], values[9]);
-        EXPECT_EQ(back[10], 7.0f);
-        EXPECT_EQ(back[11], 8.0f);
-        EXPECT_EQ(back[12], values[12]);
-        EXPECT_THROW(buffer.upload<float>(patch, 999 * sizeof(float)), Error);
-    }
+    // A partial upload at an offset changes only its range.
+    const std::vector<float> patch{7.0f, 8.0f};
+    buffer.upload<float>(patch, 10 * sizeof(float));
+    buffer.download<float>(back);
+    EXPECT_EQ(back[9], values[9]);
+    EXPECT_EQ(back[10], 7.0f);
+    EXPECT_EQ(back[11], 8.0f);
+    EXPECT_EQ(back[12], values[12]);
+    std::vector<float> two(2);
+    buffer.download<float>(two, 11 * sizeof(float));
+    EXPECT_EQ(two[0], 8.0f);
+    EXPECT_THROW(buffer.upload<float>(patch, 999 * sizeof(float)), Error);
+}
+
+TEST_P(VulkanContextTest, BufferRoundTripsItsContents) {
+    expectRoundTrip(context());
     expectNoValidationMessages();
+}
+
+TEST(VulkanStagingTest, DeviceLocalBuffersRoundTripThroughStaging) {
+    // What discrete GPUs do, forced on whatever device runs the tests.
+    vulkan::VulkanContextOptions options;
+    options.forceStaging = true;
+    options.validation = true;
+    const vulkan::VulkanContext context(options);
+    ASSERT_TRUE(context.usesStaging());
+    EXPECT_NE(context.describe().find("staging"), std::string::npos);
+    expectRoundTrip(context);
+    EXPECT_EQ(context.validationMessageCount(), 0u);
 }
 
 TEST_P(VulkanContextTest, BufferOverMaxStorageBufferRangeIsRefusedClearly) {
