@@ -14,18 +14,20 @@
 namespace modeflow::vulkan {
 namespace {
 
-const VulkanContext& requireSubgroupArithmetic(const VulkanContext& context) {
-    if (!context.hasSubgroupArithmetic())
-        throw Error("Vulkan device " + context.deviceName() +
-                    " lacks subgroup arithmetic in compute shaders, which the modal step needs; "
-                    "run with --device cpu");
+const VulkanContext& requireFeatures(const VulkanContext& context) {
+    const char* missing = !context.hasSubgroupArithmetic() ? "subgroup arithmetic in compute shaders"
+                          : !context.hasShaderInt64()     ? "64-bit integers in shaders (shaderInt64)"
+                                                          : nullptr;
+    if (missing)
+        throw Error("Vulkan device " + context.deviceName() + " lacks " + missing +
+                    ", which the modal step needs; run with --device cpu");
     return context;
 }
 
 }  // namespace
 
 ModalKernels::ModalKernels(const VulkanContext& context)
-    : pairSums(requireSubgroupArithmetic(context),
+    : pairSums(requireFeatures(context),
                {"modal_pair_sums", modal_pair_sums_spv, 3, sizeof(shaders::PairSumsParams), 64}),
       sparsePairSums(context, {"modal_pair_sums_sparse", modal_pair_sums_sparse_spv, 6,
                                sizeof(shaders::SparsePairSumsParams), 64}),

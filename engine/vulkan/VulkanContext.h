@@ -60,6 +60,8 @@ public:
     bool usesStaging() const { return mUsesStaging; }
     /// Invocations per subgroup (lavapipe: the SIMD width, 8 with AVX2; NVIDIA 32; AMD 32/64).
     std::uint32_t subgroupSize() const { return mSubgroupSize; }
+    /// True when shaders may use 64-bit integers (shaderInt64, enabled whenever supported).
+    bool hasShaderInt64() const { return mShaderInt64; }
     /// True when compute shaders may use subgroupAdd and friends (GL_KHR_shader_subgroup_arithmetic).
     bool hasSubgroupArithmetic() const { return mSubgroupArithmetic; }
     /// The largest storage buffer a kernel may bind: maxStorageBufferRange, or the smaller
@@ -96,6 +98,7 @@ private:
     std::uint32_t mTimestampValidBits = 0;
     VkDeviceSize mStorageBufferLimit = 0;
     bool mUsesStaging = false;
+    bool mShaderInt64 = false;
     std::uint32_t mSubgroupSize = 1;
     bool mSubgroupArithmetic = false;
     VkDevice mDevice = VK_NULL_HANDLE;
