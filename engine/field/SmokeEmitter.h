@@ -1,0 +1,43 @@
+#pragma once
+/// @file SmokeEmitter.h
+/// A smoke and heat source (DESIGN §4, a scene's `[[source]]`): a ball or a box (a disk or a
+/// rectangle in 2D) that adds `densityRate · dt` and `temperatureRate · dt` to every fluid smoke
+/// cell whose centre lies inside it. A plain value type, so the device kernels can copy it as is.
+
+#include <cstdint>
+#include <span>
+
+#include "engine/field/MacGrid.h"
+#include "precompute/scene/SceneSpec.h"
+
+namespace modeflow {
+
+enum class EmitterShape { Ball, Box };
+
+struct SmokeEmitter {
+    EmitterShape shape = EmitterShape::Ball;
+    Vec3 centre{0.0, 0.0, 0.0};  ///< ball
+    double radius = 0.0;         ///< ball
+    Vec3 min{0.0, 0.0, 0.0};     ///< box
+    Vec3 max{0.0, 0.0, 0.0};     ///< box
+    double densityRate = 0.0;      ///< concentration added per unit time
+    double temperatureRate = 0.0;  ///< temperature added per unit time
+
+    /// Whether the world point is inside (boundary included); only the first `dim` axes count.
+    bool contains(const Vec3& point, int dim) const;
+};
+
+/// The most emitters one device step takes (the kernels' emitter buffer).
+inline constexpr int maxSmokeEmitters = 8;
+
+/// The emitter of a scene's `[[source]]`.
+/// @throw modeflow::Error when its shape is not a ball or a box.
+SmokeEmitter emitterFromSource(const SourceSpec& source);
+
+/// Adds each emitter's rates · dt to the fluid cells (fluidMask ≠ 0) of `smokeGrid` whose centre
+/// it contains; `density` and `temperature` hold one value per smoke cell.
+void applyEmitters(const MacGrid& smokeGrid, std::span<const std::uint8_t> fluidMask,
+                   std::span<const SmokeEmitter> emitters, double dt, std::span<double> density,
+                   std::span<double> temperature);
+
+}  // namespace modeflow

@@ -1,0 +1,277 @@
+/// @file SmokeKernelTest.cpp
+/// shaders/smoke_advect.comp (SmokeAdvectionKernels, SmokeState) against the CPU reference
+/// SmokeAdvection on the same float-rounded inputs: both schemes, 2D and 3D, smoke scale 1 and
+/// 2, emitters, several steps in one submission, any workgroup size, grids split over several
+/// dispatches; smoke outside Ω is exactly 0 and never read.
+
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "engine/field/SmokeAdvection.h"
+#include "engine/kernels/SmokeAdvection.h"
+#include "engine/kernels/SmokeState.h"
+#include "engine/vulkan/CommandSequence.h"
+#include "engine/vulkan/DeviceBuffer.h"
+#include "tests/engine/SmokeTestFields.h"
+#include "tests/engine/VulkanTestContext.h"
+
+namespace modeflow {
+namespace {
+
+using testing::kAdvectionSchemes;
+using testing::schemeName;
+using vulkan::CommandSequence;
+using vulkan::DeviceBuffer;
+using vulkan::SmokeAdvectionKernels;
+using vulkan::SmokeState;
+
+std::vector<float> toFloat(const std::vector<double>& v) { return std::vector<float>(v.begin(), v.end()); }
+std::vector<double> toDouble(const std::vector<float>& v) { return std::vector<double>(v.begin(), v.end()); }
+void roundToFloat(std::vector<double>& v) {
+    for (double& x : v) x = double(float(x));
+}
+
+struct SmokeSetup {
+    int dim = 2;
+    int cells = 32;  ///< basis cells per axis
+    int scale = 1;
+    AdvectionScheme scheme = AdvectionScheme::SemiLagrangian;
+    int steps = 3;
+    std::uint32_t workgroupSize = 64;
+    bool timestamps = false;
+};
+
+/// Emitters with binary-fraction parameters (exact in float32), one crossing the wall of Ω.
+std::vector<SmokeEmitter> testEmitters() {
+    return {{EmitterShape::Ball, {0.25, -0.5, 0.125}, 0.3, {}, {}, 1.5, 0.75},
+            {EmitterShape::Box, {}, 0.0, {-0.875, -0.3, -0.3}, {-0.5, 0.2, 0.2}, 0.5, 2.0}};
+}
+
+struct SmokeRun {
+    SmokeFields device;     ///< the kernels' result
+    SmokeFields reference;  ///< SmokeAdvection on the float-rounded inputs, rounded after each step
+    std::vector<std::uint8_t> mask;
+    std::vector<double> timesMs;
+    std::size_t dispatches = 0;
+};
+
+/// `steps` steps of a random divergence-free swirl in a ball (disk) of radius 0.85, smoke blobs
+/// and two emitters, recorded into one submission. Cells outside Ω start as NaN: reading one
+/// would show in the result.
+SmokeRun runSmoke(const vulkan::VulkanContext& context, const SmokeSetup& s, double dt = 0.02) {
+    const MacGrid basis = testing::smokeTestGrid(s.dim, s.cells);
+    const MacGrid smoke = basis.refined(s.scale);
+    SmokeRun run;
+    run.mask = testing::ballMask(smoke, 0.85);
+    std::vector<double> velocity = testing::unitSwirlVelocity(basis, 0.8, 5);
+    roundToFloat(velocity);
+    SmokeFields fields{testing::gaussianBlob(smoke, {0.2, -0.1, 0.05}, 0.2),
+                       testing::gaussianBlob(smoke, {-0.3, 0.25, 0.0}, 0.15)};
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    for (std::size_t c = 0; c < run.mask.size(); ++c)
+        if (!run.mask[c]) fields.density[c] = fields.temperature[c] = nan;
+    roundToFloat(fields.density);
+    roundToFloat(fields.temperature);
+    const std::vector<SmokeEmitter> emitters = testEmitters();
+
+    const SmokeAdvection reference(basis, s.scale, run.mask);
+    run.reference = fields;
+    for (int step = 0; step < s.steps; ++step) {
+        reference.step(velocity, dt, s.scheme, emitters, run.reference);
+        roundToFloat(run.reference.density);  // the device stores float32 between steps
+        roundToFloat(run.reference.temperature);
+    }
+
+    const SmokeAdvectionKernels kernels(context, s.workgroupSize);
+    SmokeState state(context, basis, s.scale, run.mask);
+    state.upload(toFloat(fields.density), toFloat(fields.temperature));
+    state.setEmitters(emitters);
+    const DeviceBuffer velocityBuffer = DeviceBuffer::fromValues<float>(context, toFloat(velocity), "velocity");
+    CommandSequence sequence(context, s.timestamps);
+    for (int step = 0; step < s.steps; ++step) kernels.record(sequence, state, velocityBuffer, dt, s.scheme);
+    run.dispatches = sequence.dispatchCount();
+    sequence.submitAndWait();
+    run.timesMs = sequence.dispatchTimesMs();
+    std::vector<float> density(run.mask.size()), temperature(run.mask.size());
+    state.download(density, temperature);
+    run.device = {toDouble(density), toDouble(temperature)};
+    return run;
+}
+
+/// max |device − reference| / max |reference|.
+double relativeError(const std::vector<double>& device, const std::vector<double>& reference) {
+    double error = 0.0, scale = 0.0;
+    for (std::size_t c = 0; c < device.size(); ++c) {
+        error = std::max(error, std::abs(device[c] - reference[c]));
+        scale = std::max(scale, std::abs(reference[c]));
+    }
+    return error / scale;
+}
+
+/// No NaN anywhere and exactly 0 outside Ω.
+void expectCleanOutside(const std::vector<double>& field, const std::vector<std::uint8_t>& mask,
+                        const std::string& what) {
+    for (std::size_t c = 0; c < field.size(); ++c) {
+        ASSERT_FALSE(std::isnan(field[c])) << what << ": cell " << c << " is NaN (read outside Ω or never written)";
+        if (!mask[c]) {
+            ASSERT_EQ(field[c], 0.0) << what << ": smoke outside Ω at cell " << c;
+        }
+    }
+}
+
+double worstError(const SmokeRun& run, const std::string& what) {
+    expectCleanOutside(run.device.density, run.mask, what + " density");
+    expectCleanOutside(run.device.temperature, run.mask, what + " temperature");
+    return std::max(relativeError(run.device.density, run.reference.density),
+                    relativeError(run.device.temperature, run.reference.temperature));
+}
+
+class SmokeKernelTest : public testing::VulkanTest {};
+
+TEST_P(SmokeKernelTest, EqualsTheCpuReferenceInFloat32) {
+    for (const int dim : {2, 3})
+        for (const int scale : {1, 2})
+            for (const AdvectionScheme scheme : kAdvectionSchemes) {
+                const std::string what = std::to_string(dim) + "D x" + std::to_string(scale) + " " + schemeName(scheme);
+                {
+                    const SmokeRun run = runSmoke(context(), {dim, dim == 2 ? 32 : 12, scale, scheme});
+                    const double error = worstError(run, what);
+                    std::cout << what << ", 3 steps: relative max error " << error << "\n";
+                    EXPECT_LE(error, 1e-5) << what;
+                }
+                expectNoValidationMessages();
+            }
+}
+
+TEST_P(SmokeKernelTest, AnyWorkgroupSizeGivesTheSameResult) {
+    // 48 and 100 do not divide the 64² cells, so the last workgroup is partly idle.
+    for (const std::uint32_t size : {1u, 48u, 100u, 256u}) {
+        {
+            SmokeSetup setup{2, 32, 2, AdvectionScheme::MacCormack};
+            setup.workgroupSize = size;
+            const SmokeRun run = runSmoke(context(), setup);
+            EXPECT_LE(worstError(run, "workgroup size " + std::to_string(size)), 1e-5) << "workgroup size " << size;
+        }
+        expectNoValidationMessages();
+    }
+}
+
+TEST_P(SmokeKernelTest, LargeGridsAreSplitOverSeveralDispatches) {
+    // 256² = 65536 smoke cells with one invocation a workgroup: more groups than lavapipe's
+    // maxComputeWorkGroupCount (65535), so each stage takes two dispatches there.
+    {
+        SmokeSetup setup{2, 128, 2, AdvectionScheme::MacCormack};
+        setup.steps = 1;
+        setup.workgroupSize = 1;
+        const SmokeRun run = runSmoke(context(), setup);
+        const std::uint64_t limit = context().properties().limits.maxComputeWorkGroupCount[0];
+        EXPECT_EQ(run.dispatches, 2 * ((65536 + limit - 1) / limit));
+        EXPECT_LE(worstError(run, "256² in chunks"), 1e-5);
+    }
+    expectNoValidationMessages();
+}
+
+/// The device's mass drift over 100 steps in one submission: the same as the CPU's.
+TEST_P(SmokeKernelTest, MassDriftPer100StepsMatchesTheCpu) {
+    for (const AdvectionScheme scheme : kAdvectionSchemes) {
+        {
+            // The CPU test's closed-disk set-up at 64², without emitters.
+            const MacGrid basis = testing::smokeTestGrid(2, 32);
+            const std::vector<std::uint8_t> mask = testing::ballMask(basis.refined(2), 0.9);
+            std::vector<double> velocity = testing::unitSwirlVelocity(basis, 0.85, 11);
+            roundToFloat(velocity);
+            const SmokeAdvection reference(basis, 2, mask);
+            std::vector<double> blob = testing::gaussianBlob(reference.smokeGrid(), {0.2, -0.1, 0.0}, 0.1);
+            for (std::size_t c = 0; c < mask.size(); ++c)
+                if (!mask[c]) blob[c] = 0.0;
+            roundToFloat(blob);
+            std::vector<double> cpu = blob;
+            for (int step = 0; step < 100; ++step) cpu = reference.advect(velocity, cpu, 0.02, scheme);
+
+            const SmokeAdvectionKernels kernels(context());
+            SmokeState state(context(), basis, 2, mask);
+            state.upload(toFloat(blob), toFloat(blob));
+            const DeviceBuffer velocityBuffer =
+                DeviceBuffer::fromValues<float>(context(), toFloat(velocity), "velocity");
+            CommandSequence sequence(context());
+            for (int step = 0; step < 100; ++step) kernels.record(sequence, state, velocityBuffer, 0.02, scheme);
+            sequence.submitAndWait();
+            std::vector<float> density(mask.size()), temperature(mask.size());
+            state.download(density, temperature);
+            const double m0 = reference.mass(blob);
+            const double deviceDrift = reference.mass(toDouble(density)) / m0 - 1.0;
+            const double cpuDrift = reference.mass(cpu) / m0 - 1.0;
+            std::cout << schemeName(scheme) << ", 64² disk, 100 steps of dt 0.02, max|u| 1: mass change device "
+                      << deviceDrift << ", CPU " << cpuDrift << "\n";
+            EXPECT_NEAR(deviceDrift, cpuDrift, 1e-4) << schemeName(scheme);
+            EXPECT_LT(std::abs(deviceDrift), 0.01) << schemeName(scheme);
+        }
+        expectNoValidationMessages();
+    }
+}
+
+TEST_P(SmokeKernelTest, AZeroStepGivesBackTheInputExactly) {
+    for (const AdvectionScheme scheme : kAdvectionSchemes) {
+        {
+            SmokeSetup setup{3, 8, 2, scheme};
+            setup.steps = 2;
+            const SmokeRun run = runSmoke(context(), setup, 0.0);  // traces end on cell centres
+            EXPECT_EQ(worstError(run, "dt 0"), 0.0) << schemeName(scheme);
+        }
+        expectNoValidationMessages();
+    }
+}
+
+TEST_P(SmokeKernelTest, TimestampsGiveTheDurationOfEachStage) {
+    for (const int dim : {2, 3})
+        for (const AdvectionScheme scheme : kAdvectionSchemes) {
+            {
+                SmokeSetup setup{dim, dim == 2 ? 64 : 16, 2, scheme};
+                setup.steps = 1;
+                setup.timestamps = true;
+                const SmokeRun run = runSmoke(context(), setup);
+                EXPECT_LE(worstError(run, "timed"), 1e-5);
+                if (context().timestampValidBits() != 0) {
+                    ASSERT_EQ(run.timesMs.size(), run.dispatches);
+                    double total = 0.0;
+                    for (const double t : run.timesMs) total += t;
+                    std::cout << "smoke_advect " << dim << "D " << run.mask.size() << " cells, "
+                              << schemeName(scheme) << ": " << total << " ms a step on " << context().deviceName()
+                              << "\n";
+                }
+            }
+            expectNoValidationMessages();
+        }
+}
+
+TEST_P(SmokeKernelTest, BadInputsAreRefusedWithTheirNames) {
+    {
+        const MacGrid basis = testing::smokeTestGrid(2, 8);
+        const std::vector<std::uint8_t> mask = testing::wholeMask(basis.refined(2));
+        EXPECT_THROW(SmokeState(context(), basis, 2, std::vector<std::uint8_t>(10, 1)), Error);
+        SmokeState state(context(), basis, 2, mask);
+        EXPECT_THROW(state.upload(std::vector<float>(5), std::vector<float>(mask.size())), Error);
+        EXPECT_THROW(state.setEmitters(std::vector<SmokeEmitter>(maxSmokeEmitters + 1)), Error);
+        const SmokeAdvectionKernels kernels(context());
+        const DeviceBuffer small(context(), 16, "tiny velocity");
+        CommandSequence sequence(context());
+        try {
+            kernels.record(sequence, state, small, 0.1, AdvectionScheme::SemiLagrangian);
+            FAIL() << "recorded with a too small velocity buffer";
+        } catch (const Error& e) {
+            EXPECT_NE(std::string(e.what()).find("\"tiny velocity\""), std::string::npos) << e.what();
+        }
+    }
+    expectNoValidationMessages();
+}
+
+INSTANTIATE_TEST_SUITE_P(Vulkan, SmokeKernelTest, ::testing::Bool(), testing::validationName);
+
+}  // namespace
+}  // namespace modeflow
