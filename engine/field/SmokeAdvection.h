@@ -36,7 +36,6 @@
 
 namespace modeflow {
 
-enum class AdvectionScheme { SemiLagrangian, MacCormack };
 
 /// Density and temperature, one value per smoke cell each.
 struct SmokeFields {

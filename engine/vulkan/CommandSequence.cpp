@@ -11,13 +11,18 @@
 namespace modeflow::vulkan {
 namespace {
 
-void memoryBarrier(VkCommandBuffer commandBuffer, VkPipelineStageFlags dstStage, VkAccessFlags dstAccess) {
+/// Makes the writes of every earlier dispatch or copy on the queue (in this submission or an
+/// earlier one: a barrier's first scope covers all commands before it in submission order)
+/// visible to what follows.
+void memoryBarrier(VkCommandBuffer commandBuffer, VkPipelineStageFlags dstStage,
+                   VkAccessFlags dstAccess) {
     VkMemoryBarrier barrier{};
     barrier.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER;
-    barrier.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
+    barrier.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_WRITE_BIT;
     barrier.dstAccessMask = dstAccess;
-    vkCmdPipelineBarrier(commandBuffer, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, dstStage, 0, 1, &barrier, 0,
-                         nullptr, 0, nullptr);
+    vkCmdPipelineBarrier(commandBuffer,
+                         VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT,
+                         dstStage, 0, 1, &barrier, 0, nullptr, 0, nullptr);
 }
 
 }  // namespace
@@ -66,18 +71,20 @@ void CommandSequence::beginIfNeeded() {
     check(vkBeginCommandBuffer(mCommandBuffer, &begin), "vkBeginCommandBuffer");
     if (isTiming()) vkCmdResetQueryPool(mCommandBuffer, mQueryPool.get(), 0, 2 * mMaxTimed);
     mRecording = true;
-    mDispatchCount = 0;
 }
 
-void CommandSequence::dispatch(const ComputeKernel& kernel, std::span<const DeviceBuffer* const> buffers,
+void CommandSequence::dispatch(const ComputeKernel& kernel,
+                               std::span<const DeviceBuffer* const> buffers,
                                std::span<const std::byte> pushConstants, std::uint32_t groupCount) {
     recordTimed([&] { kernel.record(mCommandBuffer, buffers, pushConstants, groupCount); });
 }
 
-void CommandSequence::dispatchIndirect(const ComputeKernel& kernel, std::span<const DeviceBuffer* const> buffers,
-                                       std::span<const std::byte> pushConstants, const DeviceBuffer& arguments,
-                                       VkDeviceSize offset) {
-    recordTimed([&] { kernel.recordIndirect(mCommandBuffer, buffers, pushConstants, arguments, offset); });
+void CommandSequence::dispatchIndirect(const ComputeKernel& kernel,
+                                       std::span<const DeviceBuffer* const> buffers,
+                                       std::span<const std::byte> pushConstants,
+                                       const DeviceBuffer& arguments, VkDeviceSize offset) {
+    recordTimed(
+        [&] { kernel.recordIndirect(mCommandBuffer, buffers, pushConstants, arguments, offset); });
 }
 
 void CommandSequence::recordTimed(const std::function<void()>& recordDispatch) {
@@ -86,21 +93,27 @@ void CommandSequence::recordTimed(const std::function<void()>& recordDispatch) {
                     " timed dispatches in one submission (raise maxTimedDispatches)");
     beginIfNeeded();
     // Every dispatch may read what an earlier one wrote, as data or as indirect dispatch
-    // arguments; one global barrier is enough for that and costs little next to a dispatch.
-    if (mDispatchCount > 0)
-        memoryBarrier(mCommandBuffer, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT,
-                      VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_INDIRECT_COMMAND_READ_BIT);
+    // arguments, in this submission or the previous ones (waiting on their fence does not make
+    // their writes visible to this one; lavapipe really does read stale data without it). One
+    // global barrier is enough and costs little next to a dispatch.
+    memoryBarrier(mCommandBuffer,
+                  VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT,
+                  VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT |
+                      VK_ACCESS_INDIRECT_COMMAND_READ_BIT);
     const auto query = std::uint32_t(2 * mDispatchCount);
     if (isTiming())
-        vkCmdWriteTimestamp(mCommandBuffer, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, mQueryPool.get(), query);
+        vkCmdWriteTimestamp(mCommandBuffer, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, mQueryPool.get(),
+                            query);
     recordDispatch();
     if (isTiming())
-        vkCmdWriteTimestamp(mCommandBuffer, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, mQueryPool.get(), query + 1);
+        vkCmdWriteTimestamp(mCommandBuffer, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, mQueryPool.get(),
+                            query + 1);
     ++mDispatchCount;
 }
 
 void CommandSequence::submitAndWait() {
-    if (!mRecording || mDispatchCount == 0) throw Error("CommandSequence: nothing recorded to submit");
+    if (!mRecording || mDispatchCount == 0)
+        throw Error("CommandSequence: nothing recorded to submit");
     // Make the last writes visible to the host reads that follow the fence.
     memoryBarrier(mCommandBuffer, VK_PIPELINE_STAGE_HOST_BIT, VK_ACCESS_HOST_READ_BIT);
     mRecording = false;
@@ -120,16 +133,19 @@ void CommandSequence::submitAndWait() {
     if (isTiming()) {
         std::vector<std::uint64_t> ticks(2 * mDispatchCount);
         check(vkGetQueryPoolResults(device, mQueryPool.get(), 0, std::uint32_t(ticks.size()),
-                                    ticks.size() * sizeof(std::uint64_t), ticks.data(), sizeof(std::uint64_t),
+                                    ticks.size() * sizeof(std::uint64_t), ticks.data(),
+                                    sizeof(std::uint64_t),
                                     VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT),
               "vkGetQueryPoolResults");
         const unsigned bits = mContext.timestampValidBits();
         const std::uint64_t mask = bits >= 64 ? ~std::uint64_t(0) : (std::uint64_t(1) << bits) - 1;
         const double msPerTick = double(mContext.properties().limits.timestampPeriod) * 1e-6;
         for (std::size_t d = 0; d < mDispatchCount; ++d)
-            mTimesMs.push_back(double(((ticks[2 * d + 1] & mask) - (ticks[2 * d] & mask)) & mask) * msPerTick);
+            mTimesMs.push_back(double(((ticks[2 * d + 1] & mask) - (ticks[2 * d] & mask)) & mask) *
+                               msPerTick);
     }
     check(vkResetCommandPool(device, mPool.get(), 0), "vkResetCommandPool");
+    mDispatchCount = 0;
 }
 
 }  // namespace modeflow::vulkan

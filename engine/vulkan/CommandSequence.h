@@ -59,6 +59,7 @@ public:
     void submitAndWait();
 
     bool isTiming() const { return mQueryPool.isValid(); }
+    /// Dispatches recorded since the last submission (0 right after submitAndWait()).
     std::size_t dispatchCount() const { return mDispatchCount; }
     /// Duration of each dispatch of the last submission, in milliseconds (empty without timing).
     const std::vector<double>& dispatchTimesMs() const { return mTimesMs; }

@@ -66,8 +66,8 @@ constexpr std::string_view kTopLevelTables[] = {"grid",    "domain", "basis", "s
 constexpr std::string_view kGridKeys[] = {"resolution", "bounds_min", "bounds_max"};
 constexpr std::string_view kBasisKeys[] = {
     "velocity_modes", "modes", "scalar_modes", "scalar_boundary", "wall", "boundary", "subsamples"};
-constexpr std::string_view kSimulationKeys[] = {"dt",    "integrator", "viscosity",
-                                                "alpha", "mhd",        "magnetic_diffusivity"};
+constexpr std::string_view kSimulationKeys[] = {"dt",  "integrator",           "viscosity",      "alpha",
+                                                "mhd", "magnetic_diffusivity", "basis_precision"};
 constexpr std::string_view kInitialKeys[] = {"velocity", "energy",          "seed",
                                              "band",     "amplitudes",      "vortex",
                                              "magnetic_energy", "magnetic_seed"};
@@ -94,7 +94,10 @@ std::span<const std::string_view> initialKeys(InitialVelocity velocity) {
     }
     return {};
 }
-constexpr std::string_view kSmokeKeys[] = {"buoyancy", "resolution_scale"};
+constexpr std::string_view kSmokeKeys[] = {"buoyancy", "resolution_scale", "advection"};
+constexpr std::pair<std::string_view, AdvectionScheme> kAdvectionSchemes[] = {
+    {"maccormack", AdvectionScheme::MacCormack}, {"semi-lagrangian", AdvectionScheme::SemiLagrangian}};
+constexpr std::pair<std::string_view, bool> kBasisPrecisions[] = {{"float32", false}, {"float16", true}};
 constexpr std::string_view kOutputKeys[] = {"frames", "steps_per_frame"};
 constexpr std::string_view kSourceExtraKeys[] = {"density", "temperature"};
 
@@ -831,6 +834,8 @@ private:
             readChoice(s, "integrator", sim.integrator, Choices<Integrator>(kIntegrators));
         sim.viscosity = readNumber(s, "viscosity", sim.viscosity, Sign::NonNegative);
         sim.alpha = readNumber(s, "alpha", sim.alpha, Sign::NonNegative);
+        sim.halfPrecisionBasis =
+            readChoice(s, "basis_precision", sim.halfPrecisionBasis, Choices<bool>(kBasisPrecisions));
         if (const toml::node* node = s.table.get("mhd")) {
             const auto* flag = node->as_boolean();
             if (flag == nullptr)
@@ -1034,6 +1039,7 @@ private:
         SmokeSpec smoke;
         smoke.buoyancy = readNumber(s, "buoyancy", smoke.buoyancy);
         smoke.resolutionScale = readInt(s, "resolution_scale", smoke.resolutionScale, 1, 8);
+        smoke.advection = readChoice(s, "advection", smoke.advection, Choices<AdvectionScheme>(kAdvectionSchemes));
         std::int64_t cells = 1;
         for (int a = 0; a < grid.dim; ++a) {
             cells *= std::int64_t{grid.resolution[a]} * smoke.resolutionScale;

@@ -91,6 +91,9 @@ struct SimulationSpec {
     /// acting back on it through the Lorentz term.
     bool mhd = false;
     double magneticDiffusivity = 0.0;  ///< η: F_i decays as exp(−ηκ_i²t)
+    /// Store the velocity basis in float16 on the device (half the memory and bandwidth of the
+    /// reconstruction and force projection, ~1e-3 relative error in the grid velocity).
+    bool halfPrecisionBasis = false;
 };
 
 enum class InitialVelocity { Zero, Random, Modes, Vortices };
@@ -129,9 +132,14 @@ struct SourceSpec {
     double temperature = 0.0;  ///< injected per unit time
 };
 
+/// How smoke is carried (DESIGN §4): RK2 semi-Lagrangian, or MacCormack with clamping (less
+/// diffusive; engine/field/SmokeAdvection.h).
+enum class AdvectionScheme { SemiLagrangian, MacCormack };
+
 struct SmokeSpec {
     double buoyancy = 0.0;
     int resolutionScale = 1;
+    AdvectionScheme advection = AdvectionScheme::MacCormack;
 };
 
 struct OutputSpec {

@@ -159,6 +159,7 @@ temperature = -1
 [smoke]
 buoyancy = -0.75
 resolution_scale = 3
+advection = "semi-lagrangian"
 
 [output]
 frames = 10
@@ -252,6 +253,7 @@ steps_per_frame = 5
 
     EXPECT_EQ(scene.smoke.buoyancy, -0.75);
     EXPECT_EQ(scene.smoke.resolutionScale, 3);
+    EXPECT_EQ(scene.smoke.advection, AdvectionScheme::SemiLagrangian);
     EXPECT_EQ(scene.output.frames, 10);
     EXPECT_EQ(scene.output.stepsPerFrame, 5);
 }
@@ -519,6 +521,8 @@ TEST_F(SceneLoaderTest, RangeChecksOnScalars) {
                     "[initial].seed: must be at least 0");
     EXPECT_CONTAINS(errorOf(base + "[smoke]\nresolution_scale = 9\n"),
                     "[smoke].resolution_scale: must be between 1 and 8");
+    EXPECT_CONTAINS(errorOf(base + "[smoke]\nadvection = \"bfecc\"\n"), "[smoke].advection");
+    EXPECT_CONTAINS(errorOf(base + "[simulation]\nbasis_precision = \"float8\"\n"), "[simulation].basis_precision");
     EXPECT_CONTAINS(
         errorOf(std::string(kGrid2d) + "[basis]\nvelocity_modes = 4\nsubsamples = 17\n"),
         "[basis].subsamples: must be between 1 and 16");

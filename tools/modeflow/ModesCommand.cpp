@@ -7,13 +7,12 @@
 #include <utility>
 #include <vector>
 
-#include "engine/dynamics/DenseCoefficients.h"
+#include "engine/dynamics/CachedCoefficients.h"
 #include "engine/dynamics/Diagnostics.h"
 #include "engine/dynamics/FluidSystem.h"
 #include "engine/dynamics/InitialConditions.h"
 #include "engine/dynamics/MhdSystem.h"
 #include "engine/dynamics/ModalIntegrator.h"
-#include "engine/dynamics/SparseCoefficients.h"
 #include "engine/format/CacheFile.h"
 #include "engine/format/Error.h"
 #include "engine/kernels/ModalStepper.h"
@@ -26,16 +25,6 @@
 
 namespace modeflow::cli {
 namespace {
-
-std::unique_ptr<StructuralCoefficients> loadCoefficients(const BasisCache& cache) {
-    const auto& c = cache.coefficients;
-    const int n = int(cache.velocity.modes.cols());
-    if (c.storage == BasisCache::Coefficients::Storage::Dense)
-        return std::make_unique<DenseCoefficients>(n, c.packed);
-    std::vector<CoefficientEntry> entries(c.value.size());
-    for (size_t e = 0; e < entries.size(); ++e) entries[e] = {c.k[e], c.i[e], c.j[e], c.value[e]};
-    return std::make_unique<SparseCoefficients>(n, std::move(entries));
-}
 
 /// The scene's [initial] velocity as a modal state on this basis. Mode numbers in the scene are
 /// 1-based positions in the basis; the engine takes 0-based ones.
@@ -124,7 +113,7 @@ Command addModes(CLI::App& app) {
                         "rk4 or midpoint");
         const auto cachePath = ensureCache(scene, resolveCacheDir(opts->cacheDir), false, progress).path;
         const BasisCache cache = readCache(cachePath);
-        const auto coefficients = loadCoefficients(cache);
+        const auto coefficients = coefficientsFromCache(cache);
         const int n = coefficients->size();
 
         const SimulationSpec& sim = scene.simulation;
