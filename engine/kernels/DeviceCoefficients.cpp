@@ -82,7 +82,7 @@ DeviceCoefficients::DeviceCoefficients(const VulkanContext& context, const Struc
 std::vector<std::uint32_t> DeviceCoefficients::dispatchGroups() const {
     std::vector<std::uint32_t> groups;
     if (mSparse) groups.push_back(groupsFor(mSparse->rows, 64, mMaxGroups));
-    for (const Chunk& chunk : mChunks) groups.push_back(groupsFor(chunk.pairs, 64, mMaxGroups));
+    for (const Chunk& chunk : mChunks) groups.push_back(groupsFor(chunk.pairs, 4 * 64, mMaxGroups));  // 4 rows per invocation
     groups.push_back(groupsFor(std::size_t(mN), mSubgroupsPerGroup, mMaxGroups));
     return groups;
 }

@@ -3,10 +3,17 @@
 /// time of the dense pair-sum pass (the bandwidth-bound GEMV over the packed coefficients) and of
 /// the combine pass, their GB/s over the float32 coefficient bytes, and the same contraction by
 /// Eigen's GEMV on the same float32 data in the same run (1 thread), as a ratio; then the GPU time
-/// of whole steps per scheme. Times are medians over repeated dispatches in one submission.
-/// Run: bench_runtime [--device INDEX] [--repeat R].
+/// of whole steps per scheme; then the whole runtime step (Simulation: forces, midpoint step,
+/// reconstruction, MacCormack advection) per stage on 2D 256² and 3D 48³, 64³ grids, with the
+/// reconstruction's GB/s over the float32 basis against Eigen's GEMV Ψv on the same data. Times
+/// are medians over repeated dispatches or steps. The runtime table uses synthetic bases (random
+/// modes on every interior face, random coefficients): kernel speed does not depend on the
+/// basis being an eigenbasis, and a 64³ eigenbasis takes minutes to compute.
+/// Run: bench_runtime [--device INDEX] [--repeat R] [--skip-grids].
 
 #include <algorithm>
+#include <array>
+#include <memory>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -22,6 +29,7 @@
 #include "engine/kernels/DeviceCoefficients.h"
 #include "engine/kernels/ModalKernels.h"
 #include "engine/kernels/ModalStepper.h"
+#include "engine/simulation/Simulation.h"
 #include "engine/vulkan/CommandSequence.h"
 #include "engine/vulkan/VulkanContext.h"
 
@@ -124,20 +132,124 @@ void stepTable(const VulkanContext& context, int repeat) {
     }
 }
 
+/// A box grid with `modes` random unit-norm modes on every interior face and random dense
+/// coefficients (see the file comment).
+struct SyntheticScene {
+    BasisCache cache;
+    std::unique_ptr<DenseCoefficients> coefficients;
+};
+
+SyntheticScene syntheticScene(int dim, int cells, int modes) {
+    SyntheticScene scene;
+    BasisCache& cache = scene.cache;
+    cache.grid.dim = dim;
+    cache.grid.resolution = {cells, cells, dim == 3 ? cells : 1};
+    cache.grid.boundsMin = {-1.0, -1.0, dim == 3 ? -1.0 : 0.0};
+    cache.grid.boundsMax = {1.0, 1.0, dim == 3 ? 1.0 : 0.0};
+    const MacGrid grid = MacGrid::fromSpec(cache.grid);
+    std::vector<double> star;
+    for (int axis = 0; axis < dim; ++axis) {
+        const std::array<int, 3> e = grid.faceExtent(axis);
+        for (int z = 0; z < e[2]; ++z)
+            for (int y = 0; y < e[1]; ++y)
+                for (int x = 0; x < e[0]; ++x) {
+                    const std::array<int, 3> p{x, y, z};
+                    if (p[axis] == 0 || p[axis] == grid.cells[axis]) continue;  // walls carry no flux
+                    cache.faces.push_back(grid.faceIndex(axis, x, y, z));
+                    star.push_back(grid.spacing[axis] / grid.faceArea(axis));
+                }
+    }
+    cache.faceStar = Eigen::Map<const Eigen::VectorXd>(star.data(), Eigen::Index(star.size()));
+    cache.velocity.modes = Eigen::MatrixXd::Random(Eigen::Index(star.size()), modes);
+    cache.velocity.modes.colwise().normalize();
+    cache.velocity.eigenvalues = Eigen::VectorXd::LinSpaced(modes, 1.0, double(modes));
+    scene.coefficients = std::make_unique<DenseCoefficients>(randomCoefficients(modes));
+    return scene;
+}
+
+/// Median seconds of Eigen's float GEMV Ψv over the DOFs × N basis.
+double eigenReconstructionSeconds(const Eigen::MatrixXd& modes, int repeat) {
+    const Eigen::MatrixXf basis = modes.cast<float>();
+    const Eigen::VectorXf v = Eigen::VectorXf::Random(basis.cols());
+    Eigen::VectorXf fluxes(basis.rows());
+    std::vector<double> seconds;
+    for (int r = 0; r < repeat; ++r) {
+        const auto start = std::chrono::steady_clock::now();
+        fluxes.noalias() = basis * v;
+        seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    }
+    volatile float sink = fluxes.sum();
+    (void)sink;
+    return median(seconds);
+}
+
+void runtimeTable(const VulkanContext& context, int repeat) {
+    std::printf("\nWhole runtime step (Simulation, midpoint, MacCormack, smoke scale 1, buoyancy + one emitter):\n"
+                "GPU ms per step by stage; reconstruction GB/s over the float32 basis vs Eigen GEMV\n");
+    std::printf("%-6s %4s %9s %8s %8s %6s %8s %8s %8s %9s %9s %6s\n", "grid", "N", "DOFs", "forces", "modal", "iters",
+                "recon", "advect", "step", "dev GB/s", "Eigen", "ratio");
+    struct Grid {
+        const char* name;
+        int dim, cells;
+    };
+    for (const Grid g : {Grid{"256^2", 2, 256}, Grid{"48^3", 3, 48}, Grid{"64^3", 3, 64}}) {
+        for (const int n : {50, 100, 200}) {
+            const SyntheticScene scene = syntheticScene(g.dim, g.cells, n);
+            SimulationSettings settings;
+            settings.fluid.kappaSquared = scene.cache.velocity.eigenvalues;
+            settings.buoyancy = 1.0;
+            SmokeEmitter emitter;
+            emitter.radius = 0.2;
+            emitter.densityRate = emitter.temperatureRate = 1.0;
+            settings.emitters = {emitter};
+            const MacGrid smokeGrid = MacGrid::fromSpec(scene.cache.grid);
+            const std::vector<std::uint8_t> mask(std::size_t(smokeGrid.cellCount()), 1);
+            Simulation simulation(context, scene.cache, *scene.coefficients, settings, mask, true);
+            Eigen::VectorXd v = Eigen::VectorXd::Random(n);
+            Eigen::VectorXd r;
+            scene.coefficients->apply(v, v, r);
+            v *= 0.05 / (settings.dt * r.norm() / v.norm());  // a twentieth of a turnover per step
+            simulation.setVelocity(v);
+            simulation.advanceFrame();  // warm-up
+            std::vector<double> forces, modal, recon, advect, step;
+            int iterations = 0;
+            for (int r2 = 0; r2 < repeat; ++r2) {
+                const FrameStats stats = simulation.advanceFrame();
+                forces.push_back(stats.forcesMs);
+                modal.push_back(stats.modalMs);
+                recon.push_back(stats.reconstructionMs);
+                advect.push_back(stats.advectionMs);
+                step.push_back(stats.forcesMs + stats.modalMs + stats.reconstructionMs + stats.advectionMs);
+                iterations = std::max(iterations, stats.maxIterations);
+            }
+            const double basisBytes = double(scene.cache.faces.size()) * n * sizeof(float);
+            const double deviceRate = basisBytes / (median(recon) * 1e-3) * 1e-9;
+            const double eigenRate = basisBytes / eigenReconstructionSeconds(scene.cache.velocity.modes, repeat) * 1e-9;
+            std::printf("%-6s %4d %9zu %8.2f %8.2f %6d %8.2f %8.2f %8.2f %9.2f %9.2f %5.0f%%\n", g.name, n,
+                        scene.cache.faces.size(), median(forces), median(modal), iterations, median(recon),
+                        median(advect), median(step), deviceRate, eigenRate, 100.0 * deviceRate / eigenRate);
+            std::fflush(stdout);
+        }
+    }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
     VulkanContextOptions options;
     int repeat = 20;
-    for (int i = 1; i + 1 < argc; i += 2) {
-        if (!std::strcmp(argv[i], "--device")) options.deviceIndex = std::uint32_t(std::atoi(argv[i + 1]));
-        else if (!std::strcmp(argv[i], "--repeat")) repeat = std::max(3, std::atoi(argv[i + 1]));
+    bool grids = true;
+    for (int i = 1; i < argc; ++i) {
+        if (!std::strcmp(argv[i], "--skip-grids")) grids = false;
+        else if (i + 1 < argc && !std::strcmp(argv[i], "--device")) options.deviceIndex = std::uint32_t(std::atoi(argv[++i]));
+        else if (i + 1 < argc && !std::strcmp(argv[i], "--repeat")) repeat = std::max(3, std::atoi(argv[++i]));
     }
     try {
         const VulkanContext context(options);
         std::printf("%s", context.describe().c_str());
         contractionTable(context, repeat);
         stepTable(context, repeat);
+        if (grids) runtimeTable(context, std::max(3, repeat / 4));
     } catch (const std::exception& e) {
         std::fprintf(stderr, "bench_runtime: %s\n", e.what());
         return 1;

@@ -1,0 +1,81 @@
+#include "engine/kernels/ForceField.h"
+
+#include <array>
+#include <cstdint>  // the generated header uses uint32_t without including it
+#include <vector>
+
+#include "engine/format/Error.h"
+#include "engine/kernels/DofFaces.h"
+#include "engine/vulkan/CommandSequence.h"
+#include "engine/vulkan/VulkanContext.h"
+#include "shaders/ForceFieldParams.h"
+#include "shaders/force_field.spv.h"
+
+namespace modeflow::vulkan {
+namespace {
+
+std::uint32_t checkedSplatCapacity(std::uint32_t maxSplats) {
+    if (maxSplats < 1) throw Error("force_field: room for at least one splat is needed, got " + std::to_string(maxSplats));
+    return maxSplats;
+}
+
+}  // namespace
+
+ForceFieldKernel::ForceFieldKernel(const VulkanContext& context, const BasisCache& cache, int scale,
+                                   std::uint32_t maxSplats, std::uint32_t workgroupSize)
+    : mGrid(MacGrid::fromSpec(cache.grid)),
+      mSmoke(mGrid.refined(scale)),
+      mScale(scale),
+      mDofCount(std::uint32_t(cache.faces.size())),
+      mMaxSplats(checkedSplatCapacity(maxSplats)),
+      mGroups(groupsFor(context, cache.faces.size(), workgroupSize)),
+      mFaces(uploadDofFaces(context, cache)),
+      mSplats(context, VkDeviceSize(mMaxSplats) * sizeof(shaders::ForceSplatRecord), "force splats"),
+      mKernel(context, ComputeKernelSpec{"force_field", force_field_spv, 5, sizeof(shaders::ForceFieldParams),
+                                         workgroupSize}) {}
+
+void ForceFieldKernel::setSplats(std::span<const ForceSplat> splats) {
+    if (splats.size() > mMaxSplats)
+        throw Error("force_field: " + std::to_string(splats.size()) + " splats, room for " + std::to_string(mMaxSplats));
+    std::vector<shaders::ForceSplatRecord> records(splats.size());
+    for (std::size_t k = 0; k < splats.size(); ++k) {
+        if (!(splats[k].radius > 0.0))
+            throw Error("force_field: a splat radius must be positive, got " + std::to_string(splats[k].radius));
+        for (int a = 0; a < 3; ++a) {
+            records[k].centre[a] = float(splats[k].centre[a]);
+            records[k].force[a] = float(splats[k].force[a]);
+        }
+        records[k].radius = float(splats[k].radius);
+    }
+    mSplats.upload<shaders::ForceSplatRecord>(records);
+    mSplatCount = std::uint32_t(splats.size());
+}
+
+void ForceFieldKernel::record(CommandSequence& sequence, double buoyancy, const DeviceBuffer& temperature,
+                              const DeviceBuffer* fluidMask, const DeviceBuffer& g) const {
+    const auto smokeCells = std::uint64_t(mSmoke.cellCount());
+    requireWords("force_field", temperature, smokeCells);
+    if (fluidMask) requireWords("force_field", *fluidMask, (smokeCells + 3) / 4);
+    requireWords("force_field", g, mDofCount);
+
+    shaders::ForceFieldParams params{};
+    params.dofCount = mDofCount;
+    params.dim = std::uint32_t(mGrid.dim);
+    params.scale = std::uint32_t(mScale);
+    params.splatCount = mSplatCount;
+    params.useMask = fluidMask != nullptr;
+    params.faceStart1 = std::uint32_t(mGrid.faceOffset(1));
+    params.faceStart2 = std::uint32_t(mGrid.faceOffset(2));
+    params.buoyancy = float(buoyancy);
+    for (int a = 0; a < 3; ++a) {
+        params.cells[a] = std::uint32_t(mGrid.cells[a]);
+        params.origin[a] = float(mGrid.origin[a]);
+        params.spacing[a] = float(mGrid.spacing[a]);
+    }
+    // Without a mask the temperature buffer fills the mask's binding; the shader never reads it.
+    const std::array<const DeviceBuffer*, 5> buffers{&mFaces, &temperature, fluidMask ? fluidMask : &temperature,
+                                                     &mSplats, &g};
+    sequence.dispatch(mKernel, buffers, params, mGroups);
+}
+
+}  // namespace modeflow::vulkan

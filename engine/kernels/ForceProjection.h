@@ -1,0 +1,66 @@
+#pragma once
+/// @file ForceProjection.h
+/// Grid forces → modal forces on the device (shaders/project_force.comp and
+/// project_force_sum.comp; CPU reference: engine/field/ForceProjection.h):
+/// f_k = Σ_d Ψ_k[d] w_d q_d, float32, deterministic (no atomics).
+///
+/// Pass 1 splits the DOFs into blocks and gives each workgroup 8 modes × one block, writing one
+/// partial sum per mode and block (one dispatch per chunk of the ModeBuffer); pass 2 adds each
+/// mode's partial sums in a fixed order and applies the mode's scale. Blocks keep a projection
+/// parallel across a GPU however few modes there are: a 64³ basis (~750k DOFs) with 100 modes
+/// makes ~9.5k workgroups of 1024 DOFs. f stays on the device for the next modal step.
+
+#include <cstdint>
+
+#include "engine/field/ForceProjection.h"
+#include "engine/format/BasisCache.h"
+#include "engine/vulkan/ComputeKernel.h"
+#include "engine/vulkan/DeviceBuffer.h"
+
+namespace modeflow::vulkan {
+
+class CommandSequence;
+class ModeBuffer;
+class VulkanContext;
+
+struct ForceProjectionOptions {
+    std::uint32_t workgroupSize = 64;
+    /// DOFs per workgroup of pass 1 (rounded up to a multiple of the workgroup size, raised when
+    /// the group count would pass the device limit).
+    std::uint32_t dofsPerGroup = 1024;
+};
+
+class ForceProjectionKernel {
+public:
+    /// For the DOFs, grid and mode count of `cache`. `quantity` says what the input is:
+    /// Density: one force density per DOF (ForceFieldKernel's output), weights h_axis;
+    /// FaceField: a whole-grid face field (ReconstructionKernel's layout) read at the DOF faces,
+    /// weights area × ⋆ (the exact inverse of the reconstruction).
+    /// @throw modeflow::Error if there are more modes than the device's group count limit, or a
+    /// creation call fails.
+    ForceProjectionKernel(const VulkanContext& context, const BasisCache& cache, FaceQuantity quantity,
+                          const ForceProjectionOptions& options = {});
+
+    /// Records f = Ψᵀ (w ∘ q) (N floats) with the modes in `modes`.
+    /// @throw modeflow::Error if `modes` is not a basis of this kernel's DOFs and mode count, or a
+    /// buffer is too small.
+    void record(CommandSequence& sequence, const ModeBuffer& modes, const DeviceBuffer& q, const DeviceBuffer& f) const;
+
+    std::uint32_t blockCount() const { return mBlockCount; }
+    std::uint32_t blockSize() const { return mBlockSize; }
+
+private:
+    FaceQuantity mQuantity;
+    std::uint32_t mDofCount = 0;
+    std::uint32_t mModeCount = 0;
+    std::uint64_t mFaceTotal = 0;
+    std::uint32_t mBlockSize = 0;
+    std::uint32_t mBlockCount = 0;
+    DeviceBuffer mFaces;
+    DeviceBuffer mWeights;
+    DeviceBuffer mPartials;
+    ComputeKernel mPartialKernel;
+    ComputeKernel mSumKernel;
+};
+
+}  // namespace modeflow::vulkan

@@ -1,0 +1,50 @@
+#pragma once
+/// @file VelocityReconstruction.h
+/// Modal velocity → face field on the device (shaders/reconstruct_velocity.comp; CPU reference:
+/// engine/field/VelocityReconstruction.h): field[face(d)] = (Σ_i v_i Ψ_i)[d] / area(axis), one
+/// dispatch per chunk of the ModeBuffer. v stays on the device, so a modal step's output can be
+/// reconstructed in the same submission.
+
+#include <cstdint>
+#include <string>
+
+#include "engine/field/MacGrid.h"
+#include "engine/format/BasisCache.h"
+#include "engine/vulkan/ComputeKernel.h"
+#include "engine/vulkan/DeviceBuffer.h"
+
+namespace modeflow::vulkan {
+
+class CommandSequence;
+class ModeBuffer;
+class VulkanContext;
+
+class ReconstructionKernel {
+public:
+    /// For the DOFs and grid of `cache` (uploads the DOF → face table).
+    /// @throw modeflow::Error if the grid has 2^32 faces or more, or a creation call fails.
+    ReconstructionKernel(const VulkanContext& context, const BasisCache& cache, std::uint32_t workgroupSize = 64);
+
+    /// A face field for this grid (one float per face), zero-filled: the kernel writes only the
+    /// DOF faces, so the others stay 0 as the face-field convention wants.
+    DeviceBuffer makeFaceField(std::string name = "face field") const;
+
+    /// Records faceField = the face field of Σ v_i Ψ_i. v holds modes.paddedModeCount() floats
+    /// (N values, then anything: the kernel reads them four at a time but uses only the first N).
+    /// @throw modeflow::Error if `modes` is not a basis on this kernel's DOFs, or a buffer is too small.
+    void record(CommandSequence& sequence, const ModeBuffer& modes, const DeviceBuffer& v,
+                const DeviceBuffer& faceField) const;
+
+    const MacGrid& grid() const { return mGrid; }
+    std::uint32_t dofCount() const { return mDofCount; }
+
+private:
+    const VulkanContext& mContext;
+    MacGrid mGrid;
+    std::uint32_t mDofCount = 0;
+    std::uint32_t mGroups = 1;
+    DeviceBuffer mFaces;
+    ComputeKernel mKernel;
+};
+
+}  // namespace modeflow::vulkan

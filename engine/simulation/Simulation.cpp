@@ -1,0 +1,95 @@
+#include "engine/simulation/Simulation.h"
+
+#include <algorithm>
+#include <array>
+
+#include "engine/format/Error.h"
+
+namespace modeflow {
+namespace {
+
+/// Dispatches one step may record, for the timestamp pool: the midpoint iterations dominate.
+std::uint32_t maxDispatchesPerStep(const vulkan::ModalStepper& stepper) {
+    return std::uint32_t(stepper.dispatchesPerStep() + 64);
+}
+
+std::vector<double> widened(const std::vector<float>& values) { return {values.begin(), values.end()}; }
+
+}  // namespace
+
+Simulation::Simulation(const vulkan::VulkanContext& context, const BasisCache& cache,
+                       const StructuralCoefficients& coefficients, SimulationSettings settings,
+                       std::span<const std::uint8_t> smokeMask, bool timestamps)
+    : mSettings(std::move(settings)),
+      mStepper(context, coefficients, mSettings.fluid, vulkan::DeviceStepSettings{mSettings.integrator}),
+      mModes(context, cache.velocity.modes, mSettings.basisPrecision),
+      mReconstruction(context, cache),
+      mFaceVelocity(mReconstruction.makeFaceField("grid velocity")),
+      mForceField(context, cache, mSettings.smokeScale),
+      mProjection(context, cache, FaceQuantity::Density),
+      mForceDensity(context, std::max<std::size_t>(cache.faces.size(), 1) * sizeof(float), "force density"),
+      mSmoke(context, MacGrid::fromSpec(cache.grid), mSettings.smokeScale, smokeMask),
+      mAdvection(context),
+      mSequence(context, timestamps, maxDispatchesPerStep(mStepper)) {
+    if (!(mSettings.dt > 0.0)) throw Error("simulation: dt must be positive");
+    if (mSettings.stepsPerFrame < 1) throw Error("simulation: steps per frame must be at least 1");
+    mSmoke.setEmitters(mSettings.emitters);
+}
+
+void Simulation::setSplats(std::span<const ForceSplat> splats) {
+    mForceField.setSplats(splats);
+    // Without forces the step reads the force buffer as it is: make it zero.
+    if (!forcesActive()) mStepper.setForce(Eigen::VectorXd::Zero(mStepper.size()));
+}
+
+void Simulation::recordStep(std::vector<std::size_t>& boundaries) {
+    const double dt = mSettings.dt;
+    boundaries.push_back(mSequence.dispatchCount());
+    if (forcesActive()) {
+        mForceField.record(mSequence, mSettings.buoyancy, mSmoke.temperature(), &mSmoke.mask(), mForceDensity);
+        mProjection.record(mSequence, mModes, mForceDensity, mStepper.forceBuffer());
+    }
+    boundaries.push_back(mSequence.dispatchCount());
+    mStepper.recordStep(mSequence, dt);
+    boundaries.push_back(mSequence.dispatchCount());
+    mReconstruction.record(mSequence, mModes, mStepper.stateBuffer(), mFaceVelocity);
+    boundaries.push_back(mSequence.dispatchCount());
+    mAdvection.record(mSequence, mSmoke, mFaceVelocity, dt, mSettings.advection);
+    boundaries.push_back(mSequence.dispatchCount());
+}
+
+FrameStats Simulation::advanceFrame() {
+    FrameStats stats;
+    for (int s = 0; s < mSettings.stepsPerFrame; ++s) {
+        std::vector<std::size_t> boundaries;
+        recordStep(boundaries);
+        mSequence.submitAndWait();
+        mTime += mSettings.dt;
+        ++stats.steps;
+
+        const vulkan::DeviceStepStatus status = mStepper.status();
+        stats.maxIterations = std::max(stats.maxIterations, status.iterations);
+        stats.unconvergedSteps += status.converged ? 0 : 1;
+        const std::vector<double>& times = mSequence.dispatchTimesMs();
+        if (times.empty()) continue;
+        const std::array<double*, 4> stages{&stats.forcesMs, &stats.modalMs, &stats.reconstructionMs,
+                                            &stats.advectionMs};
+        for (std::size_t stage = 0; stage < stages.size(); ++stage)
+            for (std::size_t d = boundaries[stage]; d < boundaries[stage + 1]; ++d) *stages[stage] += times[d];
+    }
+    return stats;
+}
+
+SmokeFields Simulation::smoke() const {
+    std::vector<float> density(std::size_t(mSmoke.cellCount())), temperature(density.size());
+    mSmoke.download(density, temperature);
+    return {widened(density), widened(temperature)};
+}
+
+std::vector<double> Simulation::faceVelocity() const {
+    std::vector<float> faces(std::size_t(mReconstruction.grid().faceTotal()));
+    mFaceVelocity.download<float>(faces);
+    return widened(faces);
+}
+
+}  // namespace modeflow

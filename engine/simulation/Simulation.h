@@ -1,0 +1,68 @@
+#pragma once
+/// @file Simulation.h
+/// One scene on a Vulkan device (issue 4's runtime): the modal state, the velocity basis, the
+/// grid velocity and the smoke all live in device buffers, and each step is one queue submission
+///
+///     force field (buoyancy from the smoke temperature + stirring splats) → projection f = Ψᵀ⋆F
+///     → modal step (viscosity, LANS-α) → reconstruction u = Σ v_i Ψ_i → smoke advection + emitters
+///
+/// with nothing read back; the host reads the velocity, smoke or grid velocity only when it asks
+/// (display, export). CPU reference of the whole chain: ReferenceSimulation.
+
+#include <cstdint>
+#include <vector>
+
+#include "engine/kernels/ForceField.h"
+#include "engine/kernels/ForceProjection.h"
+#include "engine/kernels/ModalStepper.h"
+#include "engine/kernels/ModeBuffer.h"
+#include "engine/kernels/SmokeAdvection.h"
+#include "engine/kernels/SmokeState.h"
+#include "engine/kernels/VelocityReconstruction.h"
+#include "engine/simulation/Simulator.h"
+#include "engine/vulkan/CommandSequence.h"
+#include "engine/vulkan/DeviceBuffer.h"
+
+namespace modeflow {
+
+class Simulation final : public Simulator {
+public:
+    /// Uploads the basis and coefficients. `smokeMask`: one byte per cell of the smoke grid
+    /// (basis grid refined by settings.smokeScale), non-zero inside Ω (precompute's fluidMask).
+    /// `timestamps`: time each stage on the device (FrameStats), where the queue can.
+    /// @throw modeflow::Error for settings the device does not run (trapezoidal), a mask of the
+    /// wrong size, or a device error.
+    Simulation(const vulkan::VulkanContext& context, const BasisCache& cache,
+               const StructuralCoefficients& coefficients, SimulationSettings settings,
+               std::span<const std::uint8_t> smokeMask, bool timestamps = false);
+
+    void setVelocity(const Eigen::VectorXd& v) override { mStepper.setState(v); }
+    Eigen::VectorXd velocity() const override { return mStepper.state(); }
+    void setSplats(std::span<const ForceSplat> splats) override;
+    FrameStats advanceFrame() override;
+    SmokeFields smoke() const override;
+    std::vector<double> faceVelocity() const override;
+    const SimulationSettings& settings() const override { return mSettings; }
+    const MacGrid& smokeGrid() const override { return mSmoke.smokeGrid(); }
+    double time() const override { return mTime; }
+
+private:
+    /// Records one whole step; adds each stage's dispatch range to `ranges`.
+    void recordStep(std::vector<std::size_t>& boundaries);
+    bool forcesActive() const { return mSettings.buoyancy != 0.0 || mForceField.splatCount() > 0; }
+
+    SimulationSettings mSettings;
+    vulkan::ModalStepper mStepper;
+    vulkan::ModeBuffer mModes;
+    vulkan::ReconstructionKernel mReconstruction;
+    vulkan::DeviceBuffer mFaceVelocity;
+    vulkan::ForceFieldKernel mForceField;
+    vulkan::ForceProjectionKernel mProjection;
+    vulkan::DeviceBuffer mForceDensity;
+    vulkan::SmokeState mSmoke;
+    vulkan::SmokeAdvectionKernels mAdvection;
+    vulkan::CommandSequence mSequence;
+    double mTime = 0.0;
+};
+
+}  // namespace modeflow

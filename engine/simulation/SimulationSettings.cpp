@@ -1,0 +1,32 @@
+#include "engine/simulation/SimulationSettings.h"
+
+#include <string>
+
+#include "engine/format/Error.h"
+
+namespace modeflow {
+
+SimulationSettings SimulationSettings::fromScene(const SceneSpec& scene, const BasisCache& cache) {
+    const SimulationSpec& sim = scene.simulation;
+    if (sim.mhd)
+        throw Error(scene.sourceFile.string() +
+                    ": [simulation].mhd: the smoke runtime simulates Euler, Navier-Stokes and LANS-alpha "
+                    "flows; run MHD scenes with `modeflow modes`");
+    if (scene.sources.size() > std::size_t(maxSmokeEmitters))
+        throw Error(scene.sourceFile.string() + ": " + std::to_string(scene.sources.size()) +
+                    " [[source]] entries; the runtime takes at most " + std::to_string(maxSmokeEmitters));
+    SimulationSettings settings;
+    settings.dt = sim.dt;
+    settings.stepsPerFrame = scene.output.stepsPerFrame;
+    settings.integrator = sim.integrator;
+    settings.fluid = {cache.velocity.eigenvalues, sim.viscosity, sim.alpha};
+    settings.buoyancy = scene.smoke.buoyancy;
+    settings.smokeScale = scene.smoke.resolutionScale;
+    settings.advection = scene.smoke.advection;
+    settings.basisPrecision = sim.halfPrecisionBasis ? vulkan::ModePrecision::Float16
+                                                             : vulkan::ModePrecision::Float32;
+    for (const SourceSpec& source : scene.sources) settings.emitters.push_back(emitterFromSource(source));
+    return settings;
+}
+
+}  // namespace modeflow

@@ -1,0 +1,45 @@
+#pragma once
+/// @file SimulationSettings.h
+/// Everything a simulation of one scene needs besides its basis (DESIGN §1): the step, the
+/// fluid's parameters, forces and smoke. Built from a scene and its basis, so the device
+/// Simulation and the CPU ReferenceSimulation of one scene run the same model.
+
+#include <vector>
+
+#include "engine/dynamics/FluidSystem.h"
+#include "engine/field/SmokeAdvection.h"
+#include "engine/field/SmokeEmitter.h"
+#include "engine/format/BasisCache.h"
+#include "engine/kernels/ModeBuffer.h"
+#include "precompute/scene/SceneSpec.h"
+
+namespace modeflow {
+
+struct SimulationSettings {
+    double dt = 0.02;
+    int stepsPerFrame = 1;
+    Integrator integrator = Integrator::Midpoint;
+    FluidParameters fluid;  ///< κ² of the basis, viscosity ν, LANS-α
+    double buoyancy = 0.0;  ///< upward acceleration per unit temperature
+    int smokeScale = 1;     ///< smoke cells per basis cell and axis
+    AdvectionScheme advection = AdvectionScheme::MacCormack;
+    vulkan::ModePrecision basisPrecision = vulkan::ModePrecision::Float32;  ///< device only
+    std::vector<SmokeEmitter> emitters;
+
+    /// The scene's [simulation], [smoke], [[source]] and [output] values on this basis.
+    /// @throw modeflow::Error for MHD scenes (the smoke runtime simulates Euler, Navier–Stokes
+    /// and LANS-α flows; `modeflow modes` runs MHD) or more emitters than the runtime takes.
+    static SimulationSettings fromScene(const SceneSpec& scene, const BasisCache& cache);
+};
+
+/// What advancing one frame did.
+struct FrameStats {
+    int steps = 0;
+    int maxIterations = 0;     ///< implicit schemes: most iterations a step took
+    int unconvergedSteps = 0;  ///< steps whose implicit solve missed its tolerance
+    /// Device time per stage over the frame, milliseconds (0 on the CPU reference or without
+    /// timestamps): forces (force field + projection), modal step, reconstruction, advection.
+    double forcesMs = 0.0, modalMs = 0.0, reconstructionMs = 0.0, advectionMs = 0.0;
+};
+
+}  // namespace modeflow

@@ -1,0 +1,46 @@
+#pragma once
+/// @file Simulator.h
+/// One scene advancing frame by frame (DESIGN §1): modal velocity, forces from the smoke, and the
+/// smoke it carries. Two implementations run the same model: Simulation on a Vulkan device
+/// (float32) and ReferenceSimulation on the CPU (double), so any run can be made on both and
+/// compared (`--device cpu`).
+
+#include <span>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "engine/field/ForceField.h"
+#include "engine/field/MacGrid.h"
+#include "engine/field/SmokeAdvection.h"
+#include "engine/simulation/SimulationSettings.h"
+
+namespace modeflow {
+
+class Simulator {
+public:
+    virtual ~Simulator() = default;
+
+    /// The modal velocity v (N values).
+    /// @throw modeflow::Error on a wrong size.
+    virtual void setVelocity(const Eigen::VectorXd& v) = 0;
+    virtual Eigen::VectorXd velocity() const = 0;
+    /// Stirring splats acting from the next step on (replacing earlier ones).
+    virtual void setSplats(std::span<const ForceSplat> splats) = 0;
+
+    /// settings().stepsPerFrame steps: forces from the current smoke, the modal step, the grid
+    /// velocity, smoke advection and emitters.
+    virtual FrameStats advanceFrame() = 0;
+
+    /// The smoke now (one value per cell of smokeGrid()).
+    virtual SmokeFields smoke() const = 0;
+    /// The velocity now as a face field of the basis grid (MacGrid.h).
+    virtual std::vector<double> faceVelocity() const = 0;
+
+    virtual const SimulationSettings& settings() const = 0;
+    virtual const MacGrid& smokeGrid() const = 0;
+    /// Simulated time since the start.
+    virtual double time() const = 0;
+};
+
+}  // namespace modeflow

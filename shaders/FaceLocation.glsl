@@ -1,0 +1,19 @@
+/* FaceLocation.glsl: a face number of MacGrid's numbering taken apart, the device twin of
+   engine/field/FaceLocation.h. Faces are grouped by normal axis (faceStart1, faceStart2: the
+   first normal-y and normal-z faces; in 2D faceStart2 is the total), x fastest inside a group,
+   with cells + 1 positions along the normal axis. */
+#ifndef MODEFLOW_SHADERS_FACE_LOCATION_GLSL
+#define MODEFLOW_SHADERS_FACE_LOCATION_GLSL
+
+uint faceAxis(uint face, uint faceStart1, uint faceStart2) {
+    return face >= faceStart2 ? 2u : (face >= faceStart1 ? 1u : 0u);
+}
+
+/* Lower-corner position of the normal-`axis` face `local` faces after the first one of its group. */
+uvec3 facePosition(uint local, uint axis, uvec3 cells) {
+    const uint ex = cells.x + (axis == 0u ? 1u : 0u);
+    const uint ey = cells.y + (axis == 1u ? 1u : 0u);
+    return uvec3(local % ex, (local / ex) % ey, local / (ex * ey));
+}
+
+#endif

@@ -1,0 +1,40 @@
+/* ProjectForceParams.h: push constants of project_force.comp (partial sums) and
+   project_force_sum.comp (their total), shared by C++ and GLSL (ASCII, no C++-only syntax outside
+   the __cplusplus blocks); padded to 16 bytes. */
+#ifndef MODEFLOW_SHADERS_PROJECT_FORCE_PARAMS_H
+#define MODEFLOW_SHADERS_PROJECT_FORCE_PARAMS_H
+
+#ifdef __cplusplus
+#include <cstdint>
+namespace modeflow::shaders {
+using uint = std::uint32_t;
+#endif
+
+/* Modes one workgroup of the partial-sum pass handles (two vec4s of sums). */
+#define PROJECT_FORCE_MODES_PER_GROUP 8
+
+struct ProjectForceParams {
+    uint dofCount;       /* velocity DOFs */
+    uint firstMode;      /* the chunk's first mode: row of the partial sums */
+    uint modeCount;      /* modes in the chunk */
+    uint modeStride;     /* 32-bit words per mode */
+    uint halfPrecision;  /* 1: float16 pairs, 0: float32 */
+    uint gatherFaces;    /* 1: the input is a whole-grid face field read at the DOF faces */
+    uint blockCount;     /* DOF blocks, one partial sum per mode and block */
+    uint blockSize;      /* DOFs per block */
+};
+
+struct ProjectForceSumParams {
+    uint modeCount;   /* N: one workgroup per mode */
+    uint blockCount;  /* partial sums per mode */
+    uint pad0;
+    uint pad1;
+};
+
+#ifdef __cplusplus
+static_assert(sizeof(ProjectForceParams) == 32, "push constants are padded to 16 bytes");
+static_assert(sizeof(ProjectForceSumParams) == 16, "push constants are padded to 16 bytes");
+}  // namespace modeflow::shaders
+#endif
+
+#endif

@@ -1,0 +1,31 @@
+/* ReconstructVelocityParams.h: push constants of reconstruct_velocity.comp, shared by C++ and
+   GLSL (ASCII, no C++-only syntax outside the __cplusplus blocks). One dispatch per chunk of
+   modes (engine/kernels/ModeBuffer); padded to 16 bytes. */
+#ifndef MODEFLOW_SHADERS_RECONSTRUCT_VELOCITY_PARAMS_H
+#define MODEFLOW_SHADERS_RECONSTRUCT_VELOCITY_PARAMS_H
+
+#ifdef __cplusplus
+#include <cstdint>
+namespace modeflow::shaders {
+using uint = std::uint32_t;
+#endif
+
+struct ReconstructVelocityParams {
+    uint dofCount;       /* velocity DOFs; one invocation per DOF (grid-stride loop) */
+    uint firstMode;      /* the chunk's first mode: index into v and the mode scales */
+    uint modeCount;      /* modes in the chunk */
+    uint modeStride;     /* 32-bit words per mode */
+    uint halfPrecision;  /* 1: float16 pairs, 0: float32 */
+    uint accumulate;     /* 0: the first chunk writes, 1: later chunks add */
+    uint faceStart1;     /* first normal-y face */
+    uint faceStart2;     /* first normal-z face (the face total in 2D) */
+    float inverseArea[3]; /* 1 / whole face area per normal axis */
+    uint pad0;
+};
+
+#ifdef __cplusplus
+static_assert(sizeof(ReconstructVelocityParams) == 48, "push constants are padded to 16 bytes");
+}  // namespace modeflow::shaders
+#endif
+
+#endif
