@@ -2,22 +2,30 @@
 
 #include <algorithm>
 
+#include "engine/field/MacGrid.h"
+#include "engine/format/Error.h"
 #include "precompute/geometry/Domain.h"
 
 namespace modeflow {
 
-std::vector<std::uint8_t> fluidMask(const SceneSpec& scene, const MacGrid& grid) {
-    std::vector<std::uint8_t> mask(std::size_t(grid.cellCount()), 1);
-    if (scene.domain.empty()) return mask;
-    // Mesh level sets at half the finest spacing, as the precompute builds them.
+std::vector<std::uint8_t> fluidMask(const SceneSpec& scene, const BasisCache& cache, int scale) {
+    const MacGrid basis = MacGrid::fromSpec(cache.grid);
+    const MacGrid grid = basis.refined(scale);
+    if (cache.cellFraction.size() != std::size_t(basis.cellCount()))
+        throw Error("fluid mask: the basis has " + std::to_string(cache.cellFraction.size()) + " cell fractions for " +
+                    std::to_string(basis.cellCount()) + " cells");
+    std::vector<std::uint8_t> mask(std::size_t(grid.cellCount()), 0);
+    // Mesh level sets at half the finest smoke spacing, as the precompute builds them.
     const double voxel = 0.5 * *std::min_element(grid.spacing.begin(), grid.spacing.begin() + grid.dim);
     const Domain domain(scene.domain, grid.dim, voxel);
+    const bool checkCentres = scale > 1 && !domain.isWholeBox();
     for (int z = 0; z < grid.cells[2]; ++z)
         for (int y = 0; y < grid.cells[1]; ++y)
             for (int x = 0; x < grid.cells[0]; ++x) {
+                if (cache.cellFraction[std::size_t(basis.cellIndex(x / scale, y / scale, z / scale))] <= 0.0) continue;
                 Vec3 centre{grid.cellCentre(0, x), grid.cellCentre(1, y), 0.0};
                 if (grid.dim == 3) centre[2] = grid.cellCentre(2, z);
-                mask[std::size_t(grid.cellIndex(x, y, z))] = domain.chi(centre) > 0.0 ? 1 : 0;
+                if (!checkCentres || domain.chi(centre) > 0.0) mask[std::size_t(grid.cellIndex(x, y, z))] = 1;
             }
     return mask;
 }

@@ -1,19 +1,21 @@
 #pragma once
 /// @file FluidMask.h
-/// Which cells of a grid (typically the smoke grid, finer than the basis grid) are fluid: the
-/// runtime keeps smoke at exactly zero in the others, so nothing appears outside Ω.
+/// Which cells of the smoke grid (the basis grid refined by a scale) are fluid: the runtime keeps
+/// smoke at exactly zero in the others, so nothing appears outside Ω.
 
 #include <cstdint>
 #include <vector>
 
-#include "engine/field/MacGrid.h"
-#include "precompute/scene/SceneSpec.h"
+#include "engine/format/BasisCache.h"
 
 namespace modeflow {
 
-/// One byte per cell of `grid` (MacGrid::cellIndex order): 1 where the cell centre is inside the
-/// scene's domain (χ > 0, DESIGN §2), else 0. A scene without [[domain]] is fluid everywhere.
+/// One byte per cell of MacGrid::fromSpec(cache.grid).refined(scale) (cellIndex order), 1 where
+/// smoke may be. A smoke cell is fluid when its basis cell has a positive fraction inside Ω (the
+/// basis's own notion of fluid: at scale 1 a uniform temperature's buoyancy, a gradient, then
+/// projects to round-off, where a cell-centre test leaves 1–2% spurious flow along cut walls)
+/// and, on a finer smoke grid, when its centre is inside Ω as well (χ > 0, DESIGN §2).
 /// @throw modeflow::Error when a domain shape cannot be built (e.g. a missing mesh file).
-std::vector<std::uint8_t> fluidMask(const SceneSpec& scene, const MacGrid& grid);
+std::vector<std::uint8_t> fluidMask(const SceneSpec& scene, const BasisCache& cache, int scale);
 
 }  // namespace modeflow

@@ -56,7 +56,7 @@ struct HotDisk {
         Progress quiet = Progress::silent();
         cache = computeBasis(scene, quiet);
         coefficients = coefficientsFromCache(cache);
-        mask = fluidMask(scene, MacGrid::fromSpec(scene.grid).refined(scene.smoke.resolutionScale));
+        mask = fluidMask(scene, cache, scene.smoke.resolutionScale);
     }
 };
 
