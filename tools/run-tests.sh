@@ -1,8 +1,14 @@
 #!/usr/bin/env bash
 # Builds modeflow and runs the whole test suite (set-up included). Extra arguments go to ctest,
-# e.g. `tools/run-tests.sh -LE slow` or `-R Cli`.
+# e.g. `tools/run-tests.sh -LE slow` or `-R Cli`. Without arguments the Vulkan tests (labels
+# engine and tools) then run a second time with the Khronos validation layer forced on for every
+# context (MODEFLOW_VULKAN_VALIDATION=1); their tests fail on any validation message.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 "$root/tools/build.sh"
 cd "$root/build"
 ctest --output-on-failure -j "$(nproc)" "$@"
+if [ $# -eq 0 ]; then
+    echo "== again with the Vulkan validation layer on every context =="
+    MODEFLOW_VULKAN_VALIDATION=1 ctest --output-on-failure -j "$(nproc)" -L "engine|tools"
+fi

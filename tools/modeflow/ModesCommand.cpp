@@ -199,6 +199,9 @@ Command addModes(CLI::App& app) {
                             " is unstable at this step size: lower --dt or use midpoint");
         }
         std::fflush(stdout);
+        if (context && context->validationMessageCount() > 0)
+            throw Error("the Vulkan validation layer reported " + std::to_string(context->validationMessageCount()) +
+                        " problems; the first: " + context->validationMessages().front());
         if (unconverged)
             std::cerr << "warning: the " << (deviceOptions ? "fixed-point" : "Newton")
                       << " iteration did not converge in " << unconverged << " steps; try a smaller --dt\n";
