@@ -8,9 +8,11 @@ namespace modeflow {
 std::unique_ptr<StructuralCoefficients> coefficientsFromCache(const BasisCache& cache) {
     const auto& c = cache.coefficients;
     const int n = int(cache.velocity.modes.cols());
-    if (c.storage == BasisCache::Coefficients::Storage::Dense) return std::make_unique<DenseCoefficients>(n, c.packed);
+    if (c.storage == BasisCache::Coefficients::Storage::Dense)
+        return std::make_unique<DenseCoefficients>(n, c.packed);
     std::vector<CoefficientEntry> entries(c.value.size());
-    for (std::size_t e = 0; e < entries.size(); ++e) entries[e] = {c.k[e], c.i[e], c.j[e], c.value[e]};
+    for (std::size_t e = 0; e < entries.size(); ++e)
+        entries[e] = {c.k[e], c.i[e], c.j[e], c.value[e]};
     return std::make_unique<SparseCoefficients>(n, std::move(entries));
 }
 

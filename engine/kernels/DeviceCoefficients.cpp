@@ -23,8 +23,9 @@ std::vector<To> converted(const std::vector<From>& values) {
 
 void requireFloats(const DeviceBuffer& buffer, int n) {
     if (buffer.bytes() < std::size_t(n) * sizeof(float))
-        throw Error("modal contraction: buffer \"" + buffer.name() + "\" holds " + std::to_string(buffer.bytes()) +
-                    " bytes, " + std::to_string(n * sizeof(float)) + " needed for N = " + std::to_string(n));
+        throw Error("modal contraction: buffer \"" + buffer.name() + "\" holds " +
+                    std::to_string(buffer.bytes()) + " bytes, " +
+                    std::to_string(n * sizeof(float)) + " needed for N = " + std::to_string(n));
 }
 
 std::uint32_t groupsFor(std::size_t items, std::size_t perGroup, std::uint32_t maxGroups) {
@@ -33,46 +34,53 @@ std::uint32_t groupsFor(std::size_t items, std::size_t perGroup, std::uint32_t m
 
 }  // namespace
 
-DeviceCoefficients::DeviceCoefficients(const VulkanContext& context, const StructuralCoefficients& coefficients)
+DeviceCoefficients::DeviceCoefficients(const VulkanContext& context,
+                                       const StructuralCoefficients& coefficients)
     : mN(coefficients.size()),
       mSubgroupsPerGroup(std::max(1u, 64u / context.subgroupSize())),
       mMaxGroups(context.properties().limits.maxComputeWorkGroupCount[0]) {
     if (mN < 2) throw Error("modal contraction: needs at least 2 modes, got " + std::to_string(mN));
     const std::size_t n = std::size_t(mN);
     // Zero first: sparse storage leaves the sums of pairs without entries untouched.
-    mPairSums.emplace(DeviceBuffer::fromValues<float>(context, std::vector<float>(pairCount(n), 0.0f), "pair sums"));
+    mPairSums.emplace(DeviceBuffer::fromValues<float>(
+        context, std::vector<float>(pairCount(n), 0.0f), "pair sums"));
 
     if (const auto* dense = dynamic_cast<const DenseCoefficients*>(&coefficients)) {
         const std::size_t rowFloats = paddedSize(mN), rowBytes = rowFloats * sizeof(float);
         const std::size_t rowsPerChunk = context.storageBufferLimit() / rowBytes;
         if (rowsPerChunk == 0)
-            throw Error("modal contraction: one row of N = " + std::to_string(n) + " coefficients exceeds the " +
-                        std::to_string(context.storageBufferLimit()) + "-byte storage buffer limit of " +
-                        context.deviceName());
+            throw Error("modal contraction: one row of N = " + std::to_string(n) +
+                        " coefficients exceeds the " +
+                        std::to_string(context.storageBufferLimit()) +
+                        "-byte storage buffer limit of " + context.deviceName());
         const std::vector<double>& packed = dense->packed();
         for (std::size_t first = 0; first < pairCount(n); first += rowsPerChunk) {
             const std::size_t rows = std::min(rowsPerChunk, pairCount(n) - first);
             std::vector<float> values(rows * rowFloats, 0.0f);
             for (std::size_t r = 0; r < rows; ++r)
-                std::copy_n(packed.begin() + std::ptrdiff_t((first + r) * n), n, values.begin() + std::ptrdiff_t(r * rowFloats));
+                std::copy_n(packed.begin() + std::ptrdiff_t((first + r) * n), n,
+                            values.begin() + std::ptrdiff_t(r * rowFloats));
             mChunks.push_back({DeviceBuffer::fromValues<float>(context, values, "coefficients"),
                                std::uint32_t(first), std::uint32_t(rows)});
         }
         mStreamedBytes = pairCount(n) * rowBytes;
     } else if (const auto* sparse = dynamic_cast<const SparseCoefficients*>(&coefficients)) {
         if (sparse->nonZeros() == 0)
-            throw Error("modal contraction: the sparse coefficients have no entries (a basis without interactions)");
+            throw Error(
+                "modal contraction: the sparse coefficients have no entries (a basis without "
+                "interactions)");
         std::vector<std::uint32_t> rowPair(sparse->pairK().size());
         for (std::size_t r = 0; r < rowPair.size(); ++r)
             rowPair[r] = std::uint32_t(pairIndex(n, sparse->pairK()[r], sparse->pairJ()[r]));
         const auto rowStart = converted<std::uint32_t>(sparse->rowStart());
         const auto columns = converted<std::uint32_t>(sparse->columns());
         const auto values = converted<float>(sparse->values());
-        mSparse.emplace(SparseRows{DeviceBuffer::fromValues<std::uint32_t>(context, rowPair, "sparse row pairs"),
-                                   DeviceBuffer::fromValues<std::uint32_t>(context, rowStart, "sparse row starts"),
-                                   DeviceBuffer::fromValues<std::uint32_t>(context, columns, "sparse columns"),
-                                   DeviceBuffer::fromValues<float>(context, values, "sparse values"),
-                                   std::uint32_t(rowPair.size())});
+        mSparse.emplace(SparseRows{
+            DeviceBuffer::fromValues<std::uint32_t>(context, rowPair, "sparse row pairs"),
+            DeviceBuffer::fromValues<std::uint32_t>(context, rowStart, "sparse row starts"),
+            DeviceBuffer::fromValues<std::uint32_t>(context, columns, "sparse columns"),
+            DeviceBuffer::fromValues<float>(context, values, "sparse values"),
+            std::uint32_t(rowPair.size())});
         mStreamedBytes = (rowPair.size() + rowStart.size() + columns.size() + values.size()) * 4;
     } else {
         throw Error("modal contraction: the device takes dense or sparse coefficients only");
@@ -82,37 +90,43 @@ DeviceCoefficients::DeviceCoefficients(const VulkanContext& context, const Struc
 std::vector<std::uint32_t> DeviceCoefficients::dispatchGroups() const {
     std::vector<std::uint32_t> groups;
     if (mSparse) groups.push_back(groupsFor(mSparse->rows, 64, mMaxGroups));
-    for (const Chunk& chunk : mChunks) groups.push_back(groupsFor(chunk.pairs, 4 * 64, mMaxGroups));  // 4 rows per invocation
+    for (const Chunk& chunk : mChunks)
+        groups.push_back(groupsFor(chunk.pairs, 4 * 64, mMaxGroups));  // 4 rows per invocation
     groups.push_back(groupsFor(std::size_t(mN), mSubgroupsPerGroup, mMaxGroups));
     return groups;
 }
 
-void DeviceCoefficients::recordApply(CommandSequence& sequence, const ModalKernels& kernels, const DeviceBuffer& a,
-                                     const DeviceBuffer& b, const DeviceBuffer& out, IndirectArguments indirect) const {
+void DeviceCoefficients::recordApply(CommandSequence& sequence, const ModalKernels& kernels,
+                                     const DeviceBuffer& a, const DeviceBuffer& b,
+                                     const DeviceBuffer& out, IndirectArguments indirect) const {
     requireFloats(a, int(paddedSize(mN)));
     requireFloats(b, mN);
     requireFloats(out, mN);
     const std::vector<std::uint32_t> groups = dispatchGroups();
     std::size_t d = 0;
-    const auto dispatch = [&](const ComputeKernel& kernel, std::span<const DeviceBuffer* const> buffers,
-                              const auto& params) {
+    const auto dispatch = [&](const ComputeKernel& kernel,
+                              std::span<const DeviceBuffer* const> buffers, const auto& params) {
         if (indirect.buffer)
-            sequence.dispatchIndirect(kernel, buffers, params, *indirect.buffer,
-                                      VkDeviceSize(indirect.first + d) * sizeof(VkDispatchIndirectCommand));
+            sequence.dispatchIndirect(
+                kernel, buffers, params, *indirect.buffer,
+                VkDeviceSize(indirect.first + d) * sizeof(VkDispatchIndirectCommand));
         else
             sequence.dispatch(kernel, buffers, params, groups[d]);
         ++d;
     };
     const auto n = std::uint32_t(mN);
     if (mSparse) {
-        const std::array<const DeviceBuffer*, 6> buffers{&mSparse->rowPair, &mSparse->rowStart, &mSparse->columns,
-                                                        &mSparse->values,  &a,                  &*mPairSums};
-        dispatch(kernels.sparsePairSums, buffers, shaders::SparsePairSumsParams{n, mSparse->rows, 0, 0});
+        const std::array<const DeviceBuffer*, 6> buffers{
+            &mSparse->rowPair, &mSparse->rowStart, &mSparse->columns, &mSparse->values, &a,
+            &*mPairSums};
+        dispatch(kernels.sparsePairSums, buffers,
+                 shaders::SparsePairSumsParams{n, mSparse->rows, 0, 0});
     }
     for (const Chunk& chunk : mChunks) {
         const std::array<const DeviceBuffer*, 3> buffers{&chunk.values, &a, &*mPairSums};
         dispatch(kernels.pairSums, buffers,
-                 shaders::PairSumsParams{std::uint32_t(paddedSize(mN) / 4), chunk.firstPair, chunk.pairs, 0});
+                 shaders::PairSumsParams{std::uint32_t(paddedSize(mN) / 4), chunk.firstPair,
+                                         chunk.pairs, 0});
     }
     const std::array<const DeviceBuffer*, 3> buffers{&*mPairSums, &b, &out};
     dispatch(kernels.combine, buffers, shaders::CombineParams{n, 0, 0, 0});

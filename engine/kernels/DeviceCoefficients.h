@@ -35,7 +35,9 @@ struct IndirectArguments {
 /// rows and the vector `a` as vec4 (four floats per load: lavapipe turns each load into a
 /// per-lane access, so wider loads are what gets it near memory bandwidth); rows and vectors are
 /// zero-padded to that length.
-constexpr std::size_t paddedSize(int n) { return (std::size_t(n) + 3) / 4 * 4; }
+constexpr std::size_t paddedSize(int n) {
+    return (std::size_t(n) + 3) / 4 * 4;
+}
 
 class DeviceCoefficients {
 public:
@@ -58,7 +60,8 @@ public:
     /// @throw modeflow::Error if `a` holds fewer than paddedSize(N) floats (zeros past N) or b, out
     /// fewer than N.
     void recordApply(CommandSequence& sequence, const ModalKernels& kernels, const DeviceBuffer& a,
-                     const DeviceBuffer& b, const DeviceBuffer& out, IndirectArguments indirect = {}) const;
+                     const DeviceBuffer& b, const DeviceBuffer& out,
+                     IndirectArguments indirect = {}) const;
 
 private:
     struct Chunk {

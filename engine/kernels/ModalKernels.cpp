@@ -15,9 +15,10 @@ namespace modeflow::vulkan {
 namespace {
 
 const VulkanContext& requireFeatures(const VulkanContext& context) {
-    const char* missing = !context.hasSubgroupArithmetic() ? "subgroup arithmetic in compute shaders"
-                          : !context.hasShaderInt64()     ? "64-bit integers in shaders (shaderInt64)"
-                                                          : nullptr;
+    const char* missing = !context.hasSubgroupArithmetic()
+                              ? "subgroup arithmetic in compute shaders"
+                          : !context.hasShaderInt64() ? "64-bit integers in shaders (shaderInt64)"
+                                                      : nullptr;
     if (missing)
         throw Error("Vulkan device " + context.deviceName() + " lacks " + missing +
                     ", which the modal step needs; run with --device cpu");
@@ -32,6 +33,7 @@ ModalKernels::ModalKernels(const VulkanContext& context)
       sparsePairSums(context, {"modal_pair_sums_sparse", modal_pair_sums_sparse_spv, 6,
                                sizeof(shaders::SparsePairSumsParams), 64}),
       combine(context, {"modal_combine", modal_combine_spv, 3, sizeof(shaders::CombineParams), 64}),
-      update(context, {"modal_update", modal_update_spv, 10, sizeof(shaders::ModalUpdateParams), 256}) {}
+      update(context,
+             {"modal_update", modal_update_spv, 10, sizeof(shaders::ModalUpdateParams), 256}) {}
 
 }  // namespace modeflow::vulkan

@@ -13,8 +13,9 @@ namespace {
 
 DeviceStepSettings checked(DeviceStepSettings settings) {
     if (settings.scheme == Integrator::Trapezoidal)
-        throw Error("the trapezoidal integrator runs on the CPU reference only (--device cpu); the device "
-                    "offers explicit, rk4 and midpoint");
+        throw Error(
+            "the trapezoidal integrator runs on the CPU reference only (--device cpu); the device "
+            "offers explicit, rk4 and midpoint");
     if (!(settings.tolerance > 0.0f)) throw Error("device midpoint tolerance must be positive");
     if (settings.maxIterations < 1) throw Error("device midpoint iterations must be at least 1");
     return settings;
@@ -26,7 +27,8 @@ DeviceBuffer floats(const VulkanContext& context, int n, const char* name) {
 }
 
 DeviceBuffer floats(const VulkanContext& context, const Eigen::VectorXd& values, const char* name) {
-    return DeviceBuffer::fromValues<float>(context, std::vector<float>(values.begin(), values.end()), name);
+    return DeviceBuffer::fromValues<float>(context,
+                                           std::vector<float>(values.begin(), values.end()), name);
 }
 
 /// The full indirect arguments (one VkDispatchIndirectCommand per dispatch of an iteration),
@@ -58,23 +60,30 @@ ModalStepper::ModalStepper(const VulkanContext& context, const StructuralCoeffic
       mRhs(floats(context, coefficients.size(), "modal right-hand side")),
       mForce(floats(context, coefficients.size(), "modal force")),
       mMass(floats(context, FluidSystem(coefficients, parameters).mass(), "modal mass")),
-      mDecay(floats(context, FluidSystem(coefficients, parameters).decayRates(), "modal decay rates")),
+      mDecay(
+          floats(context, FluidSystem(coefficients, parameters).decayRates(), "modal decay rates")),
       mAccumulator(floats(context, coefficients.size(), "modal RK4 accumulator")),
-      mStatus(DeviceBuffer::fromValues<shaders::ModalStatus>(context, std::vector<shaders::ModalStatus>(1),
-                                                             "modal status")),
-      mArguments(DeviceBuffer::fromValues<std::uint32_t>(context, indirectArguments(iterationGroups(mCoefficients)),
-                                                         "modal indirect arguments")) {}
+      mStatus(DeviceBuffer::fromValues<shaders::ModalStatus>(
+          context, std::vector<shaders::ModalStatus>(1), "modal status")),
+      mArguments(DeviceBuffer::fromValues<std::uint32_t>(
+          context, indirectArguments(iterationGroups(mCoefficients)), "modal indirect arguments")) {
+}
 
-void ModalStepper::upload(DeviceBuffer& buffer, const Eigen::VectorXd& values, const char* what) const {
+void ModalStepper::upload(DeviceBuffer& buffer, const Eigen::VectorXd& values,
+                          const char* what) const {
     if (values.size() != size())
-        throw Error(std::string("modal ") + what + " has " + std::to_string(values.size()) + " entries, the basis " +
-                    std::to_string(size()));
+        throw Error(std::string("modal ") + what + " has " + std::to_string(values.size()) +
+                    " entries, the basis " + std::to_string(size()));
     const std::vector<float> rounded(values.begin(), values.end());
     buffer.upload<float>(rounded);
 }
 
-void ModalStepper::setState(const Eigen::VectorXd& v) { upload(mState, v, "state"); }
-void ModalStepper::setForce(const Eigen::VectorXd& f) { upload(mForce, f, "force"); }
+void ModalStepper::setState(const Eigen::VectorXd& v) {
+    upload(mState, v, "state");
+}
+void ModalStepper::setForce(const Eigen::VectorXd& f) {
+    upload(mForce, f, "force");
+}
 
 Eigen::VectorXd ModalStepper::state() const {
     std::vector<float> values(static_cast<std::size_t>(size()));
@@ -89,16 +98,19 @@ DeviceStepStatus ModalStepper::status() const {
     return {int(raw.iterations), double(raw.residual), raw.converged != 0, int(raw.unconverged)};
 }
 
-void ModalStepper::recordUpdate(CommandSequence& sequence, std::uint32_t op, std::uint32_t stage, double h,
-                                bool indirect) const {
-    const std::array<const DeviceBuffer*, 10> buffers{&mState, &mPoint,       &mWeighted, &mRhs,   &mForce,
-                                                      &mMass,  &mDecay,       &mAccumulator, &mStatus, &mArguments};
-    const shaders::ModalUpdateParams params{std::uint32_t(size()), op, stage, mApplyDispatches + 1,
-                                            float(h), mSettings.tolerance, 0, 0};
+void ModalStepper::recordUpdate(CommandSequence& sequence, std::uint32_t op, std::uint32_t stage,
+                                double h, bool indirect) const {
+    const std::array<const DeviceBuffer*, 10> buffers{
+        &mState, &mPoint, &mWeighted,    &mRhs,    &mForce,
+        &mMass,  &mDecay, &mAccumulator, &mStatus, &mArguments};
+    const shaders::ModalUpdateParams params{
+        std::uint32_t(size()), op, stage, mApplyDispatches + 1, float(h),
+        mSettings.tolerance,   0,  0};
     if (indirect)
         // The update is the last dispatch of an iteration; its live entry follows the full copy.
-        sequence.dispatchIndirect(mKernels.update, buffers, params, mArguments,
-                                  VkDeviceSize(2 * mApplyDispatches + 1) * sizeof(VkDispatchIndirectCommand));
+        sequence.dispatchIndirect(
+            mKernels.update, buffers, params, mArguments,
+            VkDeviceSize(2 * mApplyDispatches + 1) * sizeof(VkDispatchIndirectCommand));
     else
         sequence.dispatch(mKernels.update, buffers, params, 1);
 }
@@ -106,33 +118,36 @@ void ModalStepper::recordUpdate(CommandSequence& sequence, std::uint32_t op, std
 void ModalStepper::recordStep(CommandSequence& sequence, double h) const {
     recordUpdate(sequence, MODAL_OP_BEGIN, 0, h, false);
     switch (mSettings.scheme) {
-    case Integrator::Explicit:
-        mCoefficients.recordApply(sequence, mKernels, mWeighted, mPoint, mRhs);
-        recordUpdate(sequence, MODAL_OP_EXPLICIT, 0, h, false);
-        break;
-    case Integrator::Rk4:
-        for (std::uint32_t stage = 0; stage < 4; ++stage) {
+        case Integrator::Explicit:
             mCoefficients.recordApply(sequence, mKernels, mWeighted, mPoint, mRhs);
-            recordUpdate(sequence, MODAL_OP_RK4_STAGE, stage, h, false);
-        }
-        break;
-    default:  // midpoint (the constructor refused the trapezoidal rule)
-        for (int m = 0; m < mSettings.maxIterations; ++m) {
-            mCoefficients.recordApply(sequence, mKernels, mWeighted, mPoint, mRhs,
-                                      {&mArguments, mApplyDispatches + 1});
-            recordUpdate(sequence, MODAL_OP_MIDPOINT, 0, h, true);
-        }
-        recordUpdate(sequence, MODAL_OP_MIDPOINT_END, 0, h, false);
-        break;
+            recordUpdate(sequence, MODAL_OP_EXPLICIT, 0, h, false);
+            break;
+        case Integrator::Rk4:
+            for (std::uint32_t stage = 0; stage < 4; ++stage) {
+                mCoefficients.recordApply(sequence, mKernels, mWeighted, mPoint, mRhs);
+                recordUpdate(sequence, MODAL_OP_RK4_STAGE, stage, h, false);
+            }
+            break;
+        default:  // midpoint (the constructor refused the trapezoidal rule)
+            for (int m = 0; m < mSettings.maxIterations; ++m) {
+                mCoefficients.recordApply(sequence, mKernels, mWeighted, mPoint, mRhs,
+                                          {&mArguments, mApplyDispatches + 1});
+                recordUpdate(sequence, MODAL_OP_MIDPOINT, 0, h, true);
+            }
+            recordUpdate(sequence, MODAL_OP_MIDPOINT_END, 0, h, false);
+            break;
     }
 }
 
 std::size_t ModalStepper::dispatchesPerStep() const {
     const std::size_t iteration = mApplyDispatches + 1;
     switch (mSettings.scheme) {
-    case Integrator::Explicit: return 1 + iteration;
-    case Integrator::Rk4: return 1 + 4 * iteration;
-    default: return 2 + std::size_t(mSettings.maxIterations) * iteration;
+        case Integrator::Explicit:
+            return 1 + iteration;
+        case Integrator::Rk4:
+            return 1 + 4 * iteration;
+        default:
+            return 2 + std::size_t(mSettings.maxIterations) * iteration;
     }
 }
 

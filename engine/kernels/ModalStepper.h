@@ -80,7 +80,8 @@ private:
     ModalKernels mKernels;
     DeviceCoefficients mCoefficients;
     std::uint32_t mApplyDispatches = 0;  ///< dispatches of one contraction
-    DeviceBuffer mState, mPoint, mWeighted, mRhs, mForce, mMass, mDecay, mAccumulator, mStatus, mArguments;
+    DeviceBuffer mState, mPoint, mWeighted, mRhs, mForce, mMass, mDecay, mAccumulator, mStatus,
+        mArguments;
 };
 
 }  // namespace modeflow::vulkan

@@ -8,8 +8,10 @@
 
 namespace modeflow {
 
-ReferenceSimulation::ReferenceSimulation(const BasisCache& cache, const StructuralCoefficients& coefficients,
-                                         SimulationSettings settings, std::vector<std::uint8_t> smokeMask)
+ReferenceSimulation::ReferenceSimulation(const BasisCache& cache,
+                                         const StructuralCoefficients& coefficients,
+                                         SimulationSettings settings,
+                                         std::vector<std::uint8_t> smokeMask)
     : mCache(cache),
       mSettings(std::move(settings)),
       mSystem(coefficients, mSettings.fluid),
@@ -26,8 +28,8 @@ ReferenceSimulation::ReferenceSimulation(const BasisCache& cache, const Structur
 
 void ReferenceSimulation::setVelocity(const Eigen::VectorXd& v) {
     if (v.size() != mVelocity.size())
-        throw Error("simulation: velocity of " + std::to_string(v.size()) + " modes, the basis has " +
-                    std::to_string(mVelocity.size()));
+        throw Error("simulation: velocity of " + std::to_string(v.size()) +
+                    " modes, the basis has " + std::to_string(mVelocity.size()));
     mVelocity = v;
 }
 
@@ -37,15 +39,17 @@ FrameStats ReferenceSimulation::advanceFrame() {
     for (int s = 0; s < mSettings.stepsPerFrame; ++s) {
         Eigen::VectorXd force = Eigen::VectorXd::Zero(mVelocity.size());
         if (mSettings.buoyancy != 0.0 || !mSplats.empty()) {
-            const BuoyancyInput buoyancy{mSettings.buoyancy, mSettings.smokeScale, mFields.temperature,
-                                         mAdvection.fluidMask()};
-            force = projectForce(mCache, forceDensity(mCache, buoyancy, mSplats), FaceQuantity::Density);
+            const BuoyancyInput buoyancy{mSettings.buoyancy, mSettings.smokeScale,
+                                         mFields.temperature, mAdvection.fluidMask()};
+            force = projectForce(mCache, forceDensity(mCache, buoyancy, mSplats),
+                                 FaceQuantity::Density);
         }
         const StepReport report = mIntegrator.step(mVelocity, dt, force);
         stats.maxIterations = std::max(stats.maxIterations, report.iterations);
         stats.unconvergedSteps += report.converged ? 0 : 1;
         mFaceVelocity = reconstructFaceField(mCache, mVelocity);
-        mAdvection.step(std::span<const double>(mFaceVelocity), dt, mSettings.advection, mSettings.emitters, mFields);
+        mAdvection.step(std::span<const double>(mFaceVelocity), dt, mSettings.advection,
+                        mSettings.emitters, mFields);
         mTime += dt;
         ++stats.steps;
     }

@@ -21,7 +21,9 @@ public:
 
     void setVelocity(const Eigen::VectorXd& v) override;
     Eigen::VectorXd velocity() const override { return mVelocity; }
-    void setSplats(std::span<const ForceSplat> splats) override { mSplats.assign(splats.begin(), splats.end()); }
+    void setSplats(std::span<const ForceSplat> splats) override {
+        mSplats.assign(splats.begin(), splats.end());
+    }
     FrameStats advanceFrame() override;
     SmokeFields smoke() const override { return mFields; }
     std::vector<double> faceVelocity() const override { return mFaceVelocity; }

@@ -13,7 +13,9 @@ std::uint32_t maxDispatchesPerStep(const vulkan::ModalStepper& stepper) {
     return std::uint32_t(stepper.dispatchesPerStep() + 64);
 }
 
-std::vector<double> widened(const std::vector<float>& values) { return {values.begin(), values.end()}; }
+std::vector<double> widened(const std::vector<float>& values) {
+    return {values.begin(), values.end()};
+}
 
 }  // namespace
 
@@ -21,13 +23,15 @@ Simulation::Simulation(const vulkan::VulkanContext& context, const BasisCache& c
                        const StructuralCoefficients& coefficients, SimulationSettings settings,
                        std::span<const std::uint8_t> smokeMask, bool timestamps)
     : mSettings(std::move(settings)),
-      mStepper(context, coefficients, mSettings.fluid, vulkan::DeviceStepSettings{mSettings.integrator}),
+      mStepper(context, coefficients, mSettings.fluid,
+               vulkan::DeviceStepSettings{mSettings.integrator}),
       mModes(context, cache.velocity.modes, mSettings.basisPrecision),
       mReconstruction(context, cache),
       mFaceVelocity(mReconstruction.makeFaceField("grid velocity")),
       mForceField(context, cache, mSettings.smokeScale),
       mProjection(context, cache, FaceQuantity::Density),
-      mForceDensity(context, std::max<std::size_t>(cache.faces.size(), 1) * sizeof(float), "force density"),
+      mForceDensity(context, std::max<std::size_t>(cache.faces.size(), 1) * sizeof(float),
+                    "force density"),
       mSmoke(context, MacGrid::fromSpec(cache.grid), mSettings.smokeScale, smokeMask),
       mAdvection(context),
       mSequence(context, timestamps, maxDispatchesPerStep(mStepper)) {
@@ -46,7 +50,8 @@ void Simulation::recordStep(std::vector<std::size_t>& boundaries) {
     const double dt = mSettings.dt;
     boundaries.push_back(mSequence.dispatchCount());
     if (forcesActive()) {
-        mForceField.record(mSequence, mSettings.buoyancy, mSmoke.temperature(), &mSmoke.mask(), mForceDensity);
+        mForceField.record(mSequence, mSettings.buoyancy, mSmoke.temperature(), &mSmoke.mask(),
+                           mForceDensity);
         mProjection.record(mSequence, mModes, mForceDensity, mStepper.forceBuffer());
     }
     boundaries.push_back(mSequence.dispatchCount());
@@ -72,10 +77,11 @@ FrameStats Simulation::advanceFrame() {
         stats.unconvergedSteps += status.converged ? 0 : 1;
         const std::vector<double>& times = mSequence.dispatchTimesMs();
         if (times.empty()) continue;
-        const std::array<double*, 4> stages{&stats.forcesMs, &stats.modalMs, &stats.reconstructionMs,
-                                            &stats.advectionMs};
+        const std::array<double*, 4> stages{&stats.forcesMs, &stats.modalMs,
+                                            &stats.reconstructionMs, &stats.advectionMs};
         for (std::size_t stage = 0; stage < stages.size(); ++stage)
-            for (std::size_t d = boundaries[stage]; d < boundaries[stage + 1]; ++d) *stages[stage] += times[d];
+            for (std::size_t d = boundaries[stage]; d < boundaries[stage + 1]; ++d)
+                *stages[stage] += times[d];
     }
     return stats;
 }

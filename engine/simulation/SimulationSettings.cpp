@@ -9,12 +9,14 @@ namespace modeflow {
 SimulationSettings SimulationSettings::fromScene(const SceneSpec& scene, const BasisCache& cache) {
     const SimulationSpec& sim = scene.simulation;
     if (sim.mhd)
-        throw Error(scene.sourceFile.string() +
-                    ": [simulation].mhd: the smoke runtime simulates Euler, Navier-Stokes and LANS-alpha "
-                    "flows; run MHD scenes with `modeflow modes`");
+        throw Error(
+            scene.sourceFile.string() +
+            ": [simulation].mhd: the smoke runtime simulates Euler, Navier-Stokes and LANS-alpha "
+            "flows; run MHD scenes with `modeflow modes`");
     if (scene.sources.size() > std::size_t(maxSmokeEmitters))
         throw Error(scene.sourceFile.string() + ": " + std::to_string(scene.sources.size()) +
-                    " [[source]] entries; the runtime takes at most " + std::to_string(maxSmokeEmitters));
+                    " [[source]] entries; the runtime takes at most " +
+                    std::to_string(maxSmokeEmitters));
     SimulationSettings settings;
     settings.dt = sim.dt;
     settings.stepsPerFrame = scene.output.stepsPerFrame;
@@ -23,9 +25,10 @@ SimulationSettings SimulationSettings::fromScene(const SceneSpec& scene, const B
     settings.buoyancy = scene.smoke.buoyancy;
     settings.smokeScale = scene.smoke.resolutionScale;
     settings.advection = scene.smoke.advection;
-    settings.basisPrecision = sim.halfPrecisionBasis ? vulkan::ModePrecision::Float16
-                                                             : vulkan::ModePrecision::Float32;
-    for (const SourceSpec& source : scene.sources) settings.emitters.push_back(emitterFromSource(source));
+    settings.basisPrecision =
+        sim.halfPrecisionBasis ? vulkan::ModePrecision::Float16 : vulkan::ModePrecision::Float32;
+    for (const SourceSpec& source : scene.sources)
+        settings.emitters.push_back(emitterFromSource(source));
     return settings;
 }
 

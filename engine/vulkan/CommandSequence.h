@@ -42,14 +42,16 @@ public:
         dispatch(kernel, buffers, std::as_bytes(std::span(&params, 1)), groupCount);
     }
 
-    /// dispatch() with group counts read from `arguments` at `offset` (ComputeKernel::recordIndirect).
+    /// dispatch() with group counts read from `arguments` at `offset`
+    /// (ComputeKernel::recordIndirect).
     void dispatchIndirect(const ComputeKernel& kernel, std::span<const DeviceBuffer* const> buffers,
                           std::span<const std::byte> pushConstants, const DeviceBuffer& arguments,
                           VkDeviceSize offset);
 
     template <typename Params>
     void dispatchIndirect(const ComputeKernel& kernel, std::span<const DeviceBuffer* const> buffers,
-                          const Params& params, const DeviceBuffer& arguments, VkDeviceSize offset) {
+                          const Params& params, const DeviceBuffer& arguments,
+                          VkDeviceSize offset) {
         dispatchIndirect(kernel, buffers, std::as_bytes(std::span(&params, 1)), arguments, offset);
     }
 

@@ -15,8 +15,9 @@ ComputeKernel::ComputeKernel(const VulkanContext& context, const ComputeKernelSp
     const VkPhysicalDeviceLimits& limits = context.properties().limits;
     if (spec.workgroupSize == 0 || spec.workgroupSize > limits.maxComputeWorkGroupSize[0] ||
         spec.workgroupSize > limits.maxComputeWorkGroupInvocations)
-        throw Error("kernel " + spec.name + ": workgroup size " + std::to_string(spec.workgroupSize) +
-                    " is outside 1…" + std::to_string(limits.maxComputeWorkGroupInvocations) + " on " +
+        throw Error("kernel " + spec.name + ": workgroup size " +
+                    std::to_string(spec.workgroupSize) + " is outside 1…" +
+                    std::to_string(limits.maxComputeWorkGroupInvocations) + " on " +
                     context.deviceName());
     if (spec.pushConstantBytes > limits.maxPushConstantsSize || spec.pushConstantBytes % 4 != 0)
         throw Error("kernel " + spec.name + ": " + std::to_string(spec.pushConstantBytes) +
@@ -36,8 +37,10 @@ ComputeKernel::ComputeKernel(const VulkanContext& context, const ComputeKernelSp
     setInfo.bindingCount = spec.bufferCount;
     setInfo.pBindings = bindings.data();
     VkDescriptorSetLayout setLayout = VK_NULL_HANDLE;
-    check(vkCreateDescriptorSetLayout(device, &setInfo, nullptr, &setLayout), "vkCreateDescriptorSetLayout");
-    mSetLayout = DeviceHandle<VkDescriptorSetLayout>(device, setLayout, vkDestroyDescriptorSetLayout);
+    check(vkCreateDescriptorSetLayout(device, &setInfo, nullptr, &setLayout),
+          "vkCreateDescriptorSetLayout");
+    mSetLayout =
+        DeviceHandle<VkDescriptorSetLayout>(device, setLayout, vkDestroyDescriptorSetLayout);
 
     VkPushConstantRange range{VK_SHADER_STAGE_COMPUTE_BIT, 0, spec.pushConstantBytes};
     VkPipelineLayoutCreateInfo layoutInfo{};
@@ -47,8 +50,10 @@ ComputeKernel::ComputeKernel(const VulkanContext& context, const ComputeKernelSp
     layoutInfo.pushConstantRangeCount = spec.pushConstantBytes > 0 ? 1 : 0;
     layoutInfo.pPushConstantRanges = &range;
     VkPipelineLayout pipelineLayout = VK_NULL_HANDLE;
-    check(vkCreatePipelineLayout(device, &layoutInfo, nullptr, &pipelineLayout), "vkCreatePipelineLayout");
-    mPipelineLayout = DeviceHandle<VkPipelineLayout>(device, pipelineLayout, vkDestroyPipelineLayout);
+    check(vkCreatePipelineLayout(device, &layoutInfo, nullptr, &pipelineLayout),
+          "vkCreatePipelineLayout");
+    mPipelineLayout =
+        DeviceHandle<VkPipelineLayout>(device, pipelineLayout, vkDestroyPipelineLayout);
 
     VkShaderModuleCreateInfo shaderInfo{};
     shaderInfo.sType = VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO;
@@ -74,14 +79,16 @@ ComputeKernel::ComputeKernel(const VulkanContext& context, const ComputeKernelSp
     mPipeline = DeviceHandle<VkPipeline>(device, pipeline, vkDestroyPipeline);
 }
 
-void ComputeKernel::bind(VkCommandBuffer commandBuffer, std::span<const DeviceBuffer* const> buffers,
+void ComputeKernel::bind(VkCommandBuffer commandBuffer,
+                         std::span<const DeviceBuffer* const> buffers,
                          std::span<const std::byte> pushConstants) const {
     if (buffers.size() != mSpec.bufferCount)
-        throw Error("kernel " + mSpec.name + ": " + std::to_string(buffers.size()) + " buffers given, " +
-                    std::to_string(mSpec.bufferCount) + " expected");
+        throw Error("kernel " + mSpec.name + ": " + std::to_string(buffers.size()) +
+                    " buffers given, " + std::to_string(mSpec.bufferCount) + " expected");
     if (pushConstants.size() != mSpec.pushConstantBytes)
         throw Error("kernel " + mSpec.name + ": " + std::to_string(pushConstants.size()) +
-                    " bytes of push constants given, " + std::to_string(mSpec.pushConstantBytes) + " expected");
+                    " bytes of push constants given, " + std::to_string(mSpec.pushConstantBytes) +
+                    " expected");
 
     std::vector<VkDescriptorBufferInfo> infos(buffers.size());
     std::vector<VkWriteDescriptorSet> writes(buffers.size());
@@ -94,15 +101,18 @@ void ComputeKernel::bind(VkCommandBuffer commandBuffer, std::span<const DeviceBu
         writes[b].pBufferInfo = &infos[b];
     }
     vkCmdBindPipeline(commandBuffer, VK_PIPELINE_BIND_POINT_COMPUTE, mPipeline.get());
-    mContext.cmdPushDescriptorSet()(commandBuffer, VK_PIPELINE_BIND_POINT_COMPUTE, mPipelineLayout.get(), 0,
-                                    std::uint32_t(writes.size()), writes.data());
+    mContext.cmdPushDescriptorSet()(commandBuffer, VK_PIPELINE_BIND_POINT_COMPUTE,
+                                    mPipelineLayout.get(), 0, std::uint32_t(writes.size()),
+                                    writes.data());
     if (!pushConstants.empty())
         vkCmdPushConstants(commandBuffer, mPipelineLayout.get(), VK_SHADER_STAGE_COMPUTE_BIT, 0,
                            std::uint32_t(pushConstants.size()), pushConstants.data());
 }
 
-void ComputeKernel::record(VkCommandBuffer commandBuffer, std::span<const DeviceBuffer* const> buffers,
-                           std::span<const std::byte> pushConstants, std::uint32_t groupCount) const {
+void ComputeKernel::record(VkCommandBuffer commandBuffer,
+                           std::span<const DeviceBuffer* const> buffers,
+                           std::span<const std::byte> pushConstants,
+                           std::uint32_t groupCount) const {
     const std::uint32_t maxGroups = mContext.properties().limits.maxComputeWorkGroupCount[0];
     if (groupCount == 0 || groupCount > maxGroups)
         throw Error("kernel " + mSpec.name + ": group count " + std::to_string(groupCount) +
@@ -111,12 +121,14 @@ void ComputeKernel::record(VkCommandBuffer commandBuffer, std::span<const Device
     vkCmdDispatch(commandBuffer, groupCount, 1, 1);
 }
 
-void ComputeKernel::recordIndirect(VkCommandBuffer commandBuffer, std::span<const DeviceBuffer* const> buffers,
-                                   std::span<const std::byte> pushConstants, const DeviceBuffer& arguments,
-                                   VkDeviceSize offset) const {
+void ComputeKernel::recordIndirect(VkCommandBuffer commandBuffer,
+                                   std::span<const DeviceBuffer* const> buffers,
+                                   std::span<const std::byte> pushConstants,
+                                   const DeviceBuffer& arguments, VkDeviceSize offset) const {
     if (offset % 4 != 0 || offset + sizeof(VkDispatchIndirectCommand) > arguments.bytes())
-        throw Error("kernel " + mSpec.name + ": indirect arguments at byte " + std::to_string(offset) +
-                    " do not fit buffer \"" + arguments.name() + "\" (or are not 4-byte aligned)");
+        throw Error("kernel " + mSpec.name + ": indirect arguments at byte " +
+                    std::to_string(offset) + " do not fit buffer \"" + arguments.name() +
+                    "\" (or are not 4-byte aligned)");
     bind(commandBuffer, buffers, pushConstants);
     vkCmdDispatchIndirect(commandBuffer, arguments.handle(), offset);
 }

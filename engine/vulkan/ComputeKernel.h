@@ -22,11 +22,11 @@ class DeviceBuffer;
 class VulkanContext;
 
 struct ComputeKernelSpec {
-    std::string name;                          ///< for error messages
-    std::span<const std::uint32_t> spirv;      ///< SPIR-V words (a glslangValidator --vn array)
-    std::uint32_t bufferCount = 0;             ///< storage buffers at bindings 0…N−1
-    std::uint32_t pushConstantBytes = 0;       ///< size of the push-constant block (multiple of 4)
-    std::uint32_t workgroupSize = 64;          ///< local_size_x, specialization constant 0
+    std::string name;                      ///< for error messages
+    std::span<const std::uint32_t> spirv;  ///< SPIR-V words (a glslangValidator --vn array)
+    std::uint32_t bufferCount = 0;         ///< storage buffers at bindings 0…N−1
+    std::uint32_t pushConstantBytes = 0;   ///< size of the push-constant block (multiple of 4)
+    std::uint32_t workgroupSize = 64;      ///< local_size_x, specialization constant 0
 };
 
 class ComputeKernel {

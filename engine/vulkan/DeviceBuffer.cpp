@@ -11,8 +11,8 @@ namespace {
 
 /// A memory type allowed by `typeBits` with all of `required`, preferring device-local ones
 /// (lavapipe, integrated GPUs and resizable BAR put host-visible memory there too).
-std::optional<std::uint32_t> memoryType(const VkPhysicalDeviceMemoryProperties& memory, std::uint32_t typeBits,
-                                        VkMemoryPropertyFlags required) {
+std::optional<std::uint32_t> memoryType(const VkPhysicalDeviceMemoryProperties& memory,
+                                        std::uint32_t typeBits, VkMemoryPropertyFlags required) {
     std::optional<std::uint32_t> found;
     for (std::uint32_t t = 0; t < memory.memoryTypeCount; ++t) {
         const VkMemoryPropertyFlags flags = memory.memoryTypes[t].propertyFlags;
@@ -25,14 +25,17 @@ std::optional<std::uint32_t> memoryType(const VkPhysicalDeviceMemoryProperties& 
 
 }  // namespace
 
-DeviceBuffer::DeviceBuffer(const VulkanContext& context, VkDeviceSize bytes, std::string name, Placement placement)
+DeviceBuffer::DeviceBuffer(const VulkanContext& context, VkDeviceSize bytes, std::string name,
+                           Placement placement)
     : mContext(&context), mName(std::move(name)), mBytes(bytes) {
     const VkDeviceSize limit = context.storageBufferLimit();
-    if (bytes == 0) throw Error("DeviceBuffer \"" + mName + "\": size 0 (Vulkan buffers cannot be empty)");
+    if (bytes == 0)
+        throw Error("DeviceBuffer \"" + mName + "\": size 0 (Vulkan buffers cannot be empty)");
     if (bytes > limit)
         throw Error("DeviceBuffer \"" + mName + "\": " + std::to_string(bytes) +
-                    " bytes exceed maxStorageBufferRange (" + std::to_string(limit) + " bytes) of " +
-                    context.deviceName() + "; split the array over several buffers");
+                    " bytes exceed maxStorageBufferRange (" + std::to_string(limit) +
+                    " bytes) of " + context.deviceName() +
+                    "; split the array over several buffers");
     const VkDevice device = context.device();
 
     VkBufferCreateInfo info{};
@@ -54,7 +57,8 @@ DeviceBuffer::DeviceBuffer(const VulkanContext& context, VkDeviceSize bytes, std
     const auto type = memoryType(context.memoryProperties(), requirements.memoryTypeBits, required);
     if (!type)
         throw Error("DeviceBuffer \"" + mName + "\": " + context.deviceName() + " has no " +
-                    (mapped ? "host-visible, host-coherent" : "device-local") + " memory type for storage buffers");
+                    (mapped ? "host-visible, host-coherent" : "device-local") +
+                    " memory type for storage buffers");
     VkMemoryAllocateInfo allocate{};
     allocate.sType = VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO;
     allocate.allocationSize = requirements.size;
@@ -90,8 +94,8 @@ void DeviceBuffer::read(void* destination, VkDeviceSize offset, VkDeviceSize byt
     std::memcpy(destination, staging.mMapped, bytes);
 }
 
-void DeviceBuffer::copyWithStaging(const DeviceBuffer& staging, VkDeviceSize offset, VkDeviceSize bytes,
-                                   bool toThis) const {
+void DeviceBuffer::copyWithStaging(const DeviceBuffer& staging, VkDeviceSize offset,
+                                   VkDeviceSize bytes, bool toThis) const {
     const VkDevice device = mContext->device();
     VkCommandPoolCreateInfo poolInfo{};
     poolInfo.sType = VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO;
@@ -118,22 +122,25 @@ void DeviceBuffer::copyWithStaging(const DeviceBuffer& staging, VkDeviceSize off
     begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
     check(vkBeginCommandBuffer(commands, &begin), "vkBeginCommandBuffer");
     const VkBufferCopy region{toThis ? 0 : offset, toThis ? offset : 0, bytes};
-    vkCmdCopyBuffer(commands, toThis ? staging.handle() : handle(), toThis ? handle() : staging.handle(), 1, &region);
+    vkCmdCopyBuffer(commands, toThis ? staging.handle() : handle(),
+                    toThis ? handle() : staging.handle(), 1, &region);
     // The copy's writes must reach the kernels (upload) or the host (download) that come next.
     VkMemoryBarrier barrier{};
     barrier.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER;
     barrier.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
-    barrier.dstAccessMask = toThis ? VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT : VK_ACCESS_HOST_READ_BIT;
+    barrier.dstAccessMask =
+        toThis ? VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT : VK_ACCESS_HOST_READ_BIT;
     vkCmdPipelineBarrier(commands, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                         toThis ? VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT : VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &barrier, 0,
-                         nullptr, 0, nullptr);
+                         toThis ? VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT : VK_PIPELINE_STAGE_HOST_BIT,
+                         0, 1, &barrier, 0, nullptr, 0, nullptr);
     check(vkEndCommandBuffer(commands), "vkEndCommandBuffer");
     VkSubmitInfo submit{};
     submit.sType = VK_STRUCTURE_TYPE_SUBMIT_INFO;
     submit.commandBufferCount = 1;
     submit.pCommandBuffers = &commands;
     check(vkQueueSubmit(mContext->queue(), 1, &submit, rawFence), "vkQueueSubmit (staging copy)");
-    check(vkWaitForFences(device, 1, &rawFence, VK_TRUE, UINT64_MAX), "vkWaitForFences (staging copy)");
+    check(vkWaitForFences(device, 1, &rawFence, VK_TRUE, UINT64_MAX),
+          "vkWaitForFences (staging copy)");
 }
 
 void DeviceBuffer::checkRange(const char* what, VkDeviceSize offset, VkDeviceSize bytes) const {

@@ -70,7 +70,8 @@ private:
     void write(const void* source, VkDeviceSize offset, VkDeviceSize bytes);
     void read(void* destination, VkDeviceSize offset, VkDeviceSize bytes) const;
     /// Copies `bytes` between this buffer at `offset` and a staging buffer, through the queue.
-    void copyWithStaging(const DeviceBuffer& staging, VkDeviceSize offset, VkDeviceSize bytes, bool toThis) const;
+    void copyWithStaging(const DeviceBuffer& staging, VkDeviceSize offset, VkDeviceSize bytes,
+                         bool toThis) const;
 
     const VulkanContext* mContext = nullptr;
     std::string mName;

@@ -42,7 +42,8 @@ public:
     bool isValid() const { return mHandle != VK_NULL_HANDLE; }
 
     void reset() {
-        if (mHandle != VK_NULL_HANDLE) mDestroy(mDevice, std::exchange(mHandle, VK_NULL_HANDLE), nullptr);
+        if (mHandle != VK_NULL_HANDLE)
+            mDestroy(mDevice, std::exchange(mHandle, VK_NULL_HANDLE), nullptr);
     }
 
 private:

@@ -53,21 +53,31 @@ DeviceSelector& DeviceSelector::requireApiVersion(std::uint32_t version) {
 
 int DeviceSelector::typeRank(VkPhysicalDeviceType type) {
     switch (type) {
-        case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU: return 0;
-        case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU: return 1;
-        case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU: return 2;
-        case VK_PHYSICAL_DEVICE_TYPE_CPU: return 3;
-        default: return 4;
+        case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU:
+            return 0;
+        case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU:
+            return 1;
+        case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU:
+            return 2;
+        case VK_PHYSICAL_DEVICE_TYPE_CPU:
+            return 3;
+        default:
+            return 4;
     }
 }
 
 const char* DeviceSelector::typeName(VkPhysicalDeviceType type) {
     switch (type) {
-        case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU: return "discrete GPU";
-        case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU: return "integrated GPU";
-        case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU: return "virtual GPU";
-        case VK_PHYSICAL_DEVICE_TYPE_CPU: return "CPU";
-        default: return "other";
+        case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU:
+            return "discrete GPU";
+        case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU:
+            return "integrated GPU";
+        case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU:
+            return "virtual GPU";
+        case VK_PHYSICAL_DEVICE_TYPE_CPU:
+            return "CPU";
+        default:
+            return "other";
     }
 }
 
@@ -75,10 +85,12 @@ DeviceSelection DeviceSelector::select() const {
     std::uint32_t count = 0;
     check(vkEnumeratePhysicalDevices(mInstance, &count, nullptr), "vkEnumeratePhysicalDevices");
     std::vector<VkPhysicalDevice> devices(count);
-    check(vkEnumeratePhysicalDevices(mInstance, &count, devices.data()), "vkEnumeratePhysicalDevices");
+    check(vkEnumeratePhysicalDevices(mInstance, &count, devices.data()),
+          "vkEnumeratePhysicalDevices");
     if (count == 0)
-        throw Error("no Vulkan device found: the loader reports no physical device (install "
-                    "mesa-vulkan-drivers for the lavapipe CPU device, or a GPU driver)");
+        throw Error(
+            "no Vulkan device found: the loader reports no physical device (install "
+            "mesa-vulkan-drivers for the lavapipe CPU device, or a GPU driver)");
 
     std::vector<Candidate> candidates;
     for (std::uint32_t index = 0; index < count; ++index) {
@@ -106,11 +118,12 @@ DeviceSelection DeviceSelector::select() const {
 
         if (mIndex && *mIndex != index)
             c.rejection = "not the requested device index " + std::to_string(*mIndex);
-        else if (!mName.empty() && lower(c.properties.deviceName).find(lower(mName)) == std::string::npos)
+        else if (!mName.empty() &&
+                 lower(c.properties.deviceName).find(lower(mName)) == std::string::npos)
             c.rejection = "name does not contain \"" + mName + "\"";
         else if (c.properties.apiVersion < mApiVersion)
-            c.rejection = "Vulkan " + versionString(c.properties.apiVersion) + " is below the required " +
-                          versionString(mApiVersion);
+            c.rejection = "Vulkan " + versionString(c.properties.apiVersion) +
+                          " is below the required " + versionString(mApiVersion);
         else if (!c.queueFamily)
             c.rejection = "no queue family with compute support";
         else
@@ -133,12 +146,14 @@ DeviceSelection DeviceSelector::select() const {
     std::ostringstream report;
     for (const auto& c : candidates) {
         const bool chosen = &c == best;
-        report << (chosen ? "chosen   " : "rejected ") << "#" << c.index << " " << c.properties.deviceName
-               << " (" << typeName(c.properties.deviceType) << ", Vulkan "
-               << versionString(c.properties.apiVersion) << ")";
+        report << (chosen ? "chosen   " : "rejected ") << "#" << c.index << " "
+               << c.properties.deviceName << " (" << typeName(c.properties.deviceType)
+               << ", Vulkan " << versionString(c.properties.apiVersion) << ")";
         if (chosen)
-            report << ": " << (suitable == 1 ? "the only suitable device"
-                                             : "most preferred type (discrete > integrated > virtual > CPU)");
+            report << ": "
+                   << (suitable == 1
+                           ? "the only suitable device"
+                           : "most preferred type (discrete > integrated > virtual > CPU)");
         else if (!c.rejection.empty())
             report << ": " << c.rejection;
         else
@@ -146,7 +161,8 @@ DeviceSelection DeviceSelector::select() const {
         report << "\n";
     }
     if (!best) throw Error("no suitable Vulkan device:\n" + report.str());
-    return {best->device, best->index, *best->queueFamily, best->properties.deviceName, report.str()};
+    return {best->device, best->index, *best->queueFamily, best->properties.deviceName,
+            report.str()};
 }
 
 }  // namespace modeflow::vulkan

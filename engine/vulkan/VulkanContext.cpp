@@ -71,19 +71,23 @@ VulkanContext::VulkanContext(const VulkanContextOptions& options) {
     instanceInfo.ppEnabledExtensionNames = extensions.data();
     const VkResult created = vkCreateInstance(&instanceInfo, nullptr, &mInstance);
     if (created == VK_ERROR_INCOMPATIBLE_DRIVER)
-        throw Error("no Vulkan device found: vkCreateInstance failed: VK_ERROR_INCOMPATIBLE_DRIVER "
-                    "(no driver is installed; Debian: mesa-vulkan-drivers gives the lavapipe CPU device)");
+        throw Error(
+            "no Vulkan device found: vkCreateInstance failed: VK_ERROR_INCOMPATIBLE_DRIVER "
+            "(no driver is installed; Debian: mesa-vulkan-drivers gives the lavapipe CPU device)");
     check(created, "vkCreateInstance");
 
     if (validation) {
         auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
             vkGetInstanceProcAddr(mInstance, "vkCreateDebugUtilsMessengerEXT"));
-        if (!create) throw Error("vkGetInstanceProcAddr(vkCreateDebugUtilsMessengerEXT) returned null");
-        check(create(mInstance, &messengerInfo, nullptr, &mMessenger), "vkCreateDebugUtilsMessengerEXT");
+        if (!create)
+            throw Error("vkGetInstanceProcAddr(vkCreateDebugUtilsMessengerEXT) returned null");
+        check(create(mInstance, &messengerInfo, nullptr, &mMessenger),
+              "vkCreateDebugUtilsMessengerEXT");
     }
 
     DeviceSelector selector(mInstance);
-    selector.requireApiVersion(VK_API_VERSION_1_2).requireExtension(VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME);
+    selector.requireApiVersion(VK_API_VERSION_1_2)
+        .requireExtension(VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME);
     if (options.deviceIndex) selector.requireIndex(*options.deviceIndex);
     if (!options.deviceName.empty()) selector.requireName(options.deviceName);
     mSelection = selector.select();
@@ -95,7 +99,8 @@ VulkanContext::VulkanContext(const VulkanContextOptions& options) {
     vkGetPhysicalDeviceQueueFamilyProperties(mSelection.device, &familyCount, families.data());
     mTimestampValidBits = families[mSelection.queueFamily].timestampValidBits;
     mStorageBufferLimit = mProperties.limits.maxStorageBufferRange;
-    mUsesStaging = options.forceStaging || mProperties.deviceType == VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU;
+    mUsesStaging =
+        options.forceStaging || mProperties.deviceType == VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU;
     VkPhysicalDeviceSubgroupProperties subgroup{};
     subgroup.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SUBGROUP_PROPERTIES;
     VkPhysicalDeviceProperties2 properties2{};
@@ -132,12 +137,15 @@ VulkanContext::VulkanContext(const VulkanContextOptions& options) {
     vkGetDeviceQueue(mDevice, mSelection.queueFamily, 0, &mQueue);
     mCmdPushDescriptorSet = reinterpret_cast<PFN_vkCmdPushDescriptorSetKHR>(
         vkGetDeviceProcAddr(mDevice, "vkCmdPushDescriptorSetKHR"));
-    if (!mCmdPushDescriptorSet) throw Error("vkGetDeviceProcAddr(vkCmdPushDescriptorSetKHR) returned null");
+    if (!mCmdPushDescriptorSet)
+        throw Error("vkGetDeviceProcAddr(vkCmdPushDescriptorSetKHR) returned null");
 
     cleanup.context = nullptr;
 }
 
-VulkanContext::~VulkanContext() { release(); }
+VulkanContext::~VulkanContext() {
+    release();
+}
 
 void VulkanContext::release() noexcept {
     if (mDevice) {
@@ -161,10 +169,12 @@ std::string VulkanContext::describe() const {
     std::ostringstream out;
     out << "Vulkan device: " << mSelection.name << " ("
         << DeviceSelector::typeName(mProperties.deviceType) << ", Vulkan "
-        << VK_API_VERSION_MAJOR(mProperties.apiVersion) << "." << VK_API_VERSION_MINOR(mProperties.apiVersion)
-        << "." << VK_API_VERSION_PATCH(mProperties.apiVersion) << ", queue family " << mSelection.queueFamily
-        << ", " << (mUsesStaging ? "device-local buffers with staging" : "mapped buffers") << ", validation "
-        << (isValidationEnabled() ? "on" : "off") << ")\n"
+        << VK_API_VERSION_MAJOR(mProperties.apiVersion) << "."
+        << VK_API_VERSION_MINOR(mProperties.apiVersion) << "."
+        << VK_API_VERSION_PATCH(mProperties.apiVersion) << ", queue family "
+        << mSelection.queueFamily << ", "
+        << (mUsesStaging ? "device-local buffers with staging" : "mapped buffers")
+        << ", validation " << (isValidationEnabled() ? "on" : "off") << ")\n"
         << mSelection.report;
     return out.str();
 }
@@ -177,6 +187,8 @@ std::vector<std::string> VulkanContext::validationMessages() const {
     return mValidationLog ? mValidationLog->messages() : std::vector<std::string>{};
 }
 
-void VulkanContext::waitIdle() const { check(vkDeviceWaitIdle(mDevice), "vkDeviceWaitIdle"); }
+void VulkanContext::waitIdle() const {
+    check(vkDeviceWaitIdle(mDevice), "vkDeviceWaitIdle");
+}
 
 }  // namespace modeflow::vulkan

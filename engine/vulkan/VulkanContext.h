@@ -62,7 +62,8 @@ public:
     std::uint32_t subgroupSize() const { return mSubgroupSize; }
     /// True when shaders may use 64-bit integers (shaderInt64, enabled whenever supported).
     bool hasShaderInt64() const { return mShaderInt64; }
-    /// True when compute shaders may use subgroupAdd and friends (GL_KHR_shader_subgroup_arithmetic).
+    /// True when compute shaders may use subgroupAdd and friends
+    /// (GL_KHR_shader_subgroup_arithmetic).
     bool hasSubgroupArithmetic() const { return mSubgroupArithmetic; }
     /// The largest storage buffer a kernel may bind: maxStorageBufferRange, or the smaller
     /// VulkanContextOptions::storageBufferLimit.

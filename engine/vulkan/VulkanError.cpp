@@ -7,7 +7,8 @@ namespace modeflow::vulkan {
 std::string resultName(VkResult result) {
     switch (result) {
 #define MODEFLOW_VK_RESULT(name) \
-    case name: return #name;
+    case name:                   \
+        return #name;
         MODEFLOW_VK_RESULT(VK_SUCCESS)
         MODEFLOW_VK_RESULT(VK_NOT_READY)
         MODEFLOW_VK_RESULT(VK_TIMEOUT)
@@ -34,7 +35,8 @@ std::string resultName(VkResult result) {
         MODEFLOW_VK_RESULT(VK_PIPELINE_COMPILE_REQUIRED)
         MODEFLOW_VK_RESULT(VK_ERROR_VALIDATION_FAILED_EXT)
 #undef MODEFLOW_VK_RESULT
-        default: return "VkResult(" + std::to_string(int(result)) + ")";
+        default:
+            return "VkResult(" + std::to_string(int(result)) + ")";
     }
 }
 

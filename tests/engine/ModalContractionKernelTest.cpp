@@ -31,7 +31,9 @@ std::vector<float> toFloat(const Eigen::VectorXd& v) {
     std::copy(v.begin(), v.end(), values.begin());
     return values;
 }
-Eigen::VectorXd roundedToFloat(const Eigen::VectorXd& v) { return v.cast<float>().cast<double>(); }
+Eigen::VectorXd roundedToFloat(const Eigen::VectorXd& v) {
+    return v.cast<float>().cast<double>();
+}
 
 /// The coefficients rounded to float32, so the reference sees what the device sees and the
 /// comparison measures the device's float32 accumulation alone.
@@ -74,7 +76,8 @@ class ModalContractionKernelTest : public testing::VulkanTest {};
 
 TEST_P(ModalContractionKernelTest, DenseEqualsCpuApplyInFloat32) {
     for (const int n : {2, 20, 64, 150}) {
-        const double error = contractionError(context(), roundedDense(testing::randomDense(n, 1000 + n)));
+        const double error =
+            contractionError(context(), roundedDense(testing::randomDense(n, 1000 + n)));
         std::cout << "dense N = " << n << ": relative error " << error << "\n";
         EXPECT_LE(error, 1e-5) << "N = " << n;
     }
@@ -85,7 +88,8 @@ TEST_P(ModalContractionKernelTest, SparseEqualsCpuApplyInFloat32) {
         const SparseCoefficients sparse =
             SparseCoefficients::fromDense(roundedDense(testing::randomDense(n, 300 + n, 0.1)));
         const double error = contractionError(context(), sparse);
-        std::cout << "sparse N = " << n << " (" << sparse.nonZeros() << " entries): relative error " << error << "\n";
+        std::cout << "sparse N = " << n << " (" << sparse.nonZeros() << " entries): relative error "
+                  << error << "\n";
         EXPECT_LE(error, 1e-5) << "N = " << n;
     }
 }
@@ -99,7 +103,8 @@ TEST(ModalContractionSplit, ChunksAboveTheStorageLimitGiveTheSameResult) {
     ASSERT_NO_THROW(context = std::make_unique<vulkan::VulkanContext>(options));
     {
         std::size_t chunks = 0;
-        const double error = contractionError(*context, roundedDense(testing::randomDense(64, 9)), &chunks);
+        const double error =
+            contractionError(*context, roundedDense(testing::randomDense(64, 9)), &chunks);
         EXPECT_EQ(chunks, 6u);
         EXPECT_LE(error, 1e-5);
     }
@@ -108,13 +113,15 @@ TEST(ModalContractionSplit, ChunksAboveTheStorageLimitGiveTheSameResult) {
 
 TEST_P(ModalContractionKernelTest, TimestampsGiveOneDurationPerDispatch) {
     std::vector<double> times;
-    EXPECT_LE(contractionError(context(), roundedDense(testing::randomDense(150, 4)), nullptr, &times), 1e-5);
+    EXPECT_LE(
+        contractionError(context(), roundedDense(testing::randomDense(150, 4)), nullptr, &times),
+        1e-5);
     if (context().timestampValidBits() == 0) {
         EXPECT_TRUE(times.empty());
     } else {
         ASSERT_EQ(times.size(), 2u);  // pair sums, combine
-        std::cout << "N = 150 on " << context().deviceName() << ": pair sums " << times[0] << " ms, combine "
-                  << times[1] << " ms\n";
+        std::cout << "N = 150 on " << context().deviceName() << ": pair sums " << times[0]
+                  << " ms, combine " << times[1] << " ms\n";
     }
 }
 

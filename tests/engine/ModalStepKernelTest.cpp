@@ -28,7 +28,9 @@ using vulkan::ModalStepper;
 
 constexpr int kModes = 40;
 
-Eigen::VectorXd roundedToFloat(const Eigen::VectorXd& v) { return v.cast<float>().cast<double>(); }
+Eigen::VectorXd roundedToFloat(const Eigen::VectorXd& v) {
+    return v.cast<float>().cast<double>();
+}
 
 DenseCoefficients roundedDense(const DenseCoefficients& c) {
     std::vector<double> packed(c.packed().size());
@@ -48,7 +50,8 @@ double stepFor(const StructuralCoefficients& c, const Eigen::VectorXd& v, double
 }
 
 /// `steps` steps on the device in one submission.
-void runDevice(const vulkan::VulkanContext& context, const ModalStepper& stepper, double h, int steps) {
+void runDevice(const vulkan::VulkanContext& context, const ModalStepper& stepper, double h,
+               int steps) {
     CommandSequence sequence(context);
     for (int s = 0; s < steps; ++s) stepper.recordStep(sequence, h);
     sequence.submitAndWait();
@@ -71,7 +74,8 @@ TEST_P(ModalStepKernelTest, OneStepOfEverySchemeEqualsTheCpuReference) {
     const Eigen::VectorXd force = roundedToFloat(0.3 * testing::randomVector(kModes, 13));
     for (const FluidParameters& parameters : {FluidParameters{}, viscousLans}) {
         const FluidSystem system(mC, parameters);
-        for (const Integrator scheme : {Integrator::Explicit, Integrator::Rk4, Integrator::Midpoint}) {
+        for (const Integrator scheme :
+             {Integrator::Explicit, Integrator::Rk4, Integrator::Midpoint}) {
             ModalIntegrator cpu(system, {scheme});
             Eigen::VectorXd expected = mV0;
             cpu.step(expected, mH, force);
@@ -81,8 +85,10 @@ TEST_P(ModalStepKernelTest, OneStepOfEverySchemeEqualsTheCpuReference) {
                 stepper.setForce(force);
                 runDevice(context(), stepper, mH, 1);
                 const double error = relativeDifference(stepper.state(), expected);
-                std::cout << sceneKeyword(scheme) << (parameters.alpha > 0 ? " viscous LANS" : " Euler")
-                          << ": relative error " << error << ", iterations " << stepper.status().iterations << "\n";
+                std::cout << sceneKeyword(scheme)
+                          << (parameters.alpha > 0 ? " viscous LANS" : " Euler")
+                          << ": relative error " << error << ", iterations "
+                          << stepper.status().iterations << "\n";
                 EXPECT_LE(error, 1e-5) << sceneKeyword(scheme);
                 EXPECT_TRUE(stepper.status().converged);
             }
@@ -119,7 +125,8 @@ TEST_P(ModalStepKernelTest, TrajectoriesStayWithin1e4OfTheDoubleReference) {
                 runDevice(context(), stepper, mH, 20);
                 worst = std::max(worst, relativeDifference(stepper.state(), expected));
             }
-            std::cout << sceneKeyword(scheme) << ": max relative deviation over 200 steps " << worst << "\n";
+            std::cout << sceneKeyword(scheme) << ": max relative deviation over 200 steps " << worst
+                      << "\n";
             EXPECT_LE(worst, 1e-4) << sceneKeyword(scheme);
         }
     }
@@ -138,8 +145,8 @@ TEST_P(ModalStepKernelTest, MidpointConservesEnergyOver1000Steps) {
             drift = std::max(drift, std::abs(energy(stepper.state()) - e0) / e0);
             maxIterations = std::max(maxIterations, stepper.status().iterations);
         }
-        std::cout << "midpoint, 1000 steps of h|R|/|v| = 0.3: energy drift " << drift << ", last step "
-                  << stepper.status().iterations << " iterations\n";
+        std::cout << "midpoint, 1000 steps of h|R|/|v| = 0.3: energy drift " << drift
+                  << ", last step " << stepper.status().iterations << " iterations\n";
         EXPECT_LE(drift, 1e-5);
         EXPECT_EQ(stepper.status().unconvergedSteps, 0);
     }
@@ -194,7 +201,8 @@ TEST(ModalStepSplit, SplitStagedCoefficientsStepLikeWholeMappedOnes) {
     EXPECT_EQ(split->validationMessageCount(), 0u);
 }
 
-INSTANTIATE_TEST_SUITE_P(PlainAndValidated, ModalStepKernelTest, ::testing::Bool(), testing::validationName);
+INSTANTIATE_TEST_SUITE_P(PlainAndValidated, ModalStepKernelTest, ::testing::Bool(),
+                         testing::validationName);
 
 }  // namespace
 }  // namespace modeflow

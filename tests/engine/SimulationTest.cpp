@@ -18,20 +18,21 @@
 namespace modeflow {
 namespace {
 
-/// A unit disk at 32² with 20 modes, a hot source low in the disk, buoyancy, smoke at 2× the
-/// basis resolution.
-SceneSpec hotDiskScene() {
+/// A unit disk at 32² with 20 modes (or a unit ball at 12³ with 10), a hot source low in it,
+/// buoyancy, smoke at 2× the basis resolution.
+SceneSpec hotScene(int dim) {
     SceneSpec scene;
-    scene.name = "hot_disk";
-    scene.grid.dim = 2;
-    scene.grid.resolution = {32, 32, 1};
-    scene.grid.boundsMin = {-1.1, -1.1, 0.0};
-    scene.grid.boundsMax = {1.1, 1.1, 0.0};
+    scene.name = "hot";
+    scene.grid.dim = dim;
+    scene.grid.resolution =
+        dim == 2 ? std::array<int, 3>{32, 32, 1} : std::array<int, 3>{12, 12, 12};
+    scene.grid.boundsMin = {-1.1, -1.1, dim == 2 ? 0.0 : -1.1};
+    scene.grid.boundsMax = {1.1, 1.1, dim == 2 ? 0.0 : 1.1};
     ShapeSpec disk;
     disk.kind = ShapeKind::Ball;
     disk.radius = 1.0;
     scene.domain = {disk};
-    scene.basis.velocityModes = {{1, 20}};
+    scene.basis.velocityModes = {{1, dim == 2 ? 20 : 10}};
     scene.basis.scalarModes = 0;
     scene.simulation.dt = 0.02;
     scene.output.stepsPerFrame = 5;
@@ -39,20 +40,20 @@ SceneSpec hotDiskScene() {
     scene.smoke.resolutionScale = 2;
     SourceSpec source;
     source.shape.kind = ShapeKind::Ball;
-    source.shape.center = {0.0, -0.55, 0.0};
-    source.shape.radius = 0.2;
+    source.shape.center = dim == 2 ? Vec3{0.0, -0.55, 0.0} : Vec3{0.0, 0.0, -0.55};
+    source.shape.radius = dim == 2 ? 0.2 : 0.3;
     source.density = 2.0;
     source.temperature = 1.0;
     scene.sources = {source};
     return scene;
 }
 
-struct HotDisk {
-    SceneSpec scene = hotDiskScene();
+struct HotScene {
+    SceneSpec scene;
     BasisCache cache;
     std::unique_ptr<StructuralCoefficients> coefficients;
     std::vector<std::uint8_t> mask;
-    HotDisk() {
+    explicit HotScene(int dim) : scene(hotScene(dim)) {
         Progress quiet = Progress::silent();
         cache = computeBasis(scene, quiet);
         coefficients = coefficientsFromCache(cache);
@@ -60,9 +61,14 @@ struct HotDisk {
     }
 };
 
-const HotDisk& hotDisk() {
-    static const HotDisk disk;
+const HotScene& hotDisk() {
+    static const HotScene disk(2);
     return disk;
+}
+
+const HotScene& hotBall() {
+    static const HotScene ball(3);
+    return ball;
 }
 
 double maxAbs(const std::vector<double>& values) {
@@ -92,16 +98,18 @@ double centroidHeight(const MacGrid& grid, const std::vector<double>& density) {
 class SimulationTest : public testing::VulkanTest {};
 
 TEST_P(SimulationTest, DeviceRunFollowsTheCpuReference) {
-    const HotDisk& disk = hotDisk();
-    for (const AdvectionScheme scheme : {AdvectionScheme::SemiLagrangian, AdvectionScheme::MacCormack}) {
-        SimulationSettings settings = SimulationSettings::fromScene(disk.scene, disk.cache);
+    for (const auto& [disk, scheme] : {std::pair{&hotDisk(), AdvectionScheme::SemiLagrangian},
+                                       std::pair{&hotDisk(), AdvectionScheme::MacCormack},
+                                       std::pair{&hotBall(), AdvectionScheme::MacCormack}}) {
+        SimulationSettings settings = SimulationSettings::fromScene(disk->scene, disk->cache);
         settings.advection = scheme;
         {
-            Simulation device(context(), disk.cache, *disk.coefficients, settings, disk.mask, true);
-            ReferenceSimulation cpu(disk.cache, *disk.coefficients, settings, disk.mask);
+            Simulation device(context(), disk->cache, *disk->coefficients, settings, disk->mask,
+                              true);
+            ReferenceSimulation cpu(disk->cache, *disk->coefficients, settings, disk->mask);
             RandomVelocitySpec swirl;
             swirl.energy = 0.05;
-            const Eigen::VectorXd v0 = randomVelocity(20, swirl);
+            const Eigen::VectorXd v0 = randomVelocity(disk->coefficients->size(), swirl);
             device.setVelocity(v0);
             cpu.setVelocity(v0);
             FrameStats stats;
@@ -114,18 +122,23 @@ TEST_P(SimulationTest, DeviceRunFollowsTheCpuReference) {
             EXPECT_NEAR(device.time(), 20 * 0.02, 1e-12);
 
             const Eigen::VectorXd v = device.velocity(), expected = cpu.velocity();
-            const double velocityError = (v - expected).lpNorm<Eigen::Infinity>() / expected.lpNorm<Eigen::Infinity>();
+            const double velocityError =
+                (v - expected).lpNorm<Eigen::Infinity>() / expected.lpNorm<Eigen::Infinity>();
             const SmokeFields smoke = device.smoke(), expectedSmoke = cpu.smoke();
-            const double densityError = maxDifference(smoke.density, expectedSmoke.density) / maxAbs(expectedSmoke.density);
+            const double densityError =
+                maxDifference(smoke.density, expectedSmoke.density) / maxAbs(expectedSmoke.density);
             const double temperatureError =
-                maxDifference(smoke.temperature, expectedSmoke.temperature) / maxAbs(expectedSmoke.temperature);
-            const double faceError =
-                maxDifference(device.faceVelocity(), cpu.faceVelocity()) / maxAbs(cpu.faceVelocity());
-            std::cout << (scheme == AdvectionScheme::MacCormack ? "MacCormack" : "semi-Lagrangian")
-                      << ", 20 steps: relative max differences: modes " << velocityError << ", grid velocity "
-                      << faceError << ", density " << densityError << ", temperature " << temperatureError
-                      << "; device ms per frame: forces " << stats.forcesMs << ", modal " << stats.modalMs
-                      << ", reconstruction " << stats.reconstructionMs << ", advection " << stats.advectionMs << "\n";
+                maxDifference(smoke.temperature, expectedSmoke.temperature) /
+                maxAbs(expectedSmoke.temperature);
+            const double faceError = maxDifference(device.faceVelocity(), cpu.faceVelocity()) /
+                                     maxAbs(cpu.faceVelocity());
+            std::cout << disk->scene.grid.dim << "D, "
+                      << (scheme == AdvectionScheme::MacCormack ? "MacCormack" : "semi-Lagrangian")
+                      << ", 20 steps: relative max differences: modes " << velocityError
+                      << ", grid velocity " << faceError << ", density " << densityError
+                      << ", temperature " << temperatureError << "; device ms per frame: forces "
+                      << stats.forcesMs << ", modal " << stats.modalMs << ", reconstruction "
+                      << stats.reconstructionMs << ", advection " << stats.advectionMs << "\n";
             EXPECT_LE(velocityError, 1e-4);
             EXPECT_LE(faceError, 1e-4);
             EXPECT_LE(densityError, 1e-4);
@@ -136,7 +149,7 @@ TEST_P(SimulationTest, DeviceRunFollowsTheCpuReference) {
 }
 
 TEST_P(SimulationTest, HotSmokeRisesAndStaysInsideTheDomain) {
-    const HotDisk& disk = hotDisk();
+    const HotScene& disk = hotDisk();
     const SimulationSettings settings = SimulationSettings::fromScene(disk.scene, disk.cache);
     {
         Simulation device(context(), disk.cache, *disk.coefficients, settings, disk.mask);
@@ -151,14 +164,15 @@ TEST_P(SimulationTest, HotSmokeRisesAndStaysInsideTheDomain) {
         for (std::size_t c = 0; c < disk.mask.size(); ++c)
             if (!disk.mask[c]) {
                 ASSERT_EQ(smoke.density[c], 0.0) << "density outside the domain at cell " << c;
-                ASSERT_EQ(smoke.temperature[c], 0.0) << "temperature outside the domain at cell " << c;
+                ASSERT_EQ(smoke.temperature[c], 0.0)
+                    << "temperature outside the domain at cell " << c;
             }
     }
     expectNoValidationMessages();
 }
 
 TEST_P(SimulationTest, SplatsStirTheFluidOnlyWhileSet) {
-    const HotDisk& disk = hotDisk();
+    const HotScene& disk = hotDisk();
     SimulationSettings settings = SimulationSettings::fromScene(disk.scene, disk.cache);
     settings.buoyancy = 0.0;
     settings.emitters.clear();
@@ -181,7 +195,8 @@ TEST_P(SimulationTest, SplatsStirTheFluidOnlyWhileSet) {
     expectNoValidationMessages();
 }
 
-INSTANTIATE_TEST_SUITE_P(PlainAndValidated, SimulationTest, ::testing::Bool(), testing::validationName);
+INSTANTIATE_TEST_SUITE_P(PlainAndValidated, SimulationTest, ::testing::Bool(),
+                         testing::validationName);
 
 }  // namespace
 }  // namespace modeflow

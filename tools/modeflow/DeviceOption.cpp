@@ -11,10 +11,12 @@ std::optional<vulkan::VulkanContextOptions> parseDevice(const std::string& value
     if (value == "cpu") return std::nullopt;
     vulkan::VulkanContextOptions options;
     if (value == "vulkan") return options;
-    const bool digits = !value.empty() && value.size() < 6 &&
-                        std::all_of(value.begin(), value.end(), [](unsigned char c) { return std::isdigit(c); });
+    const bool digits =
+        !value.empty() && value.size() < 6 &&
+        std::all_of(value.begin(), value.end(), [](unsigned char c) { return std::isdigit(c); });
     if (!digits)
-        throw Error("--device " + value + ": expected cpu, vulkan or a Vulkan device index (0, 1, ...)");
+        throw Error("--device " + value +
+                    ": expected cpu, vulkan or a Vulkan device index (0, 1, ...)");
     options.deviceIndex = std::uint32_t(std::stoul(value));
     return options;
 }
