@@ -35,7 +35,16 @@ SmokeEmitter emitterFromSource(const SourceSpec& source) {
     }
     emitter.densityRate = source.density;
     emitter.temperatureRate = source.temperature;
+    emitter.start = source.start;
+    emitter.end = source.end;
     return emitter;
+}
+
+std::vector<SmokeEmitter> activeEmitters(std::span<const SmokeEmitter> all, double t) {
+    std::vector<SmokeEmitter> active;
+    for (const SmokeEmitter& e : all)
+        if (e.activeAt(t)) active.push_back(e);
+    return active;
 }
 
 void applyEmitters(const MacGrid& smokeGrid, std::span<const std::uint8_t> fluidMask,

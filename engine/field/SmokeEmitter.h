@@ -5,7 +5,9 @@
 /// cell whose centre lies inside it. A plain value type, so the device kernels can copy it as is.
 
 #include <cstdint>
+#include <limits>
 #include <span>
+#include <vector>
 
 #include "engine/field/MacGrid.h"
 #include "precompute/scene/SceneSpec.h"
@@ -22,13 +24,20 @@ struct SmokeEmitter {
     Vec3 max{0.0, 0.0, 0.0};     ///< box
     double densityRate = 0.0;      ///< concentration added per unit time
     double temperatureRate = 0.0;  ///< temperature added per unit time
+    double start = 0.0;            ///< emits while start ≤ t < end (simulated time)
+    double end = std::numeric_limits<double>::infinity();
 
+    /// Whether the emitter emits during the step that starts at time t.
+    bool activeAt(double t) const { return start <= t && t < end; }
     /// Whether the world point is inside (boundary included); only the first `dim` axes count.
     bool contains(const Vec3& point, int dim) const;
 };
 
 /// The most emitters one device step takes (the kernels' emitter buffer).
 inline constexpr int maxSmokeEmitters = 8;
+
+/// The emitters of `all` active at time t (SmokeEmitter::activeAt).
+std::vector<SmokeEmitter> activeEmitters(std::span<const SmokeEmitter> all, double t);
 
 /// The emitter of a scene's `[[source]]`.
 /// @throw modeflow::Error when its shape is not a ball or a box.

@@ -49,7 +49,7 @@ FrameStats ReferenceSimulation::advanceFrame() {
         stats.unconvergedSteps += report.converged ? 0 : 1;
         mFaceVelocity = reconstructFaceField(mCache, mVelocity);
         mAdvection.step(std::span<const double>(mFaceVelocity), dt, mSettings.advection,
-                        mSettings.emitters, mFields);
+                        activeEmitters(mSettings.emitters, mTime), mFields);
         mTime += dt;
         ++stats.steps;
     }

@@ -37,7 +37,6 @@ Simulation::Simulation(const vulkan::VulkanContext& context, const BasisCache& c
       mSequence(context, timestamps, maxDispatchesPerStep(mStepper)) {
     if (!(mSettings.dt > 0.0)) throw Error("simulation: dt must be positive");
     if (mSettings.stepsPerFrame < 1) throw Error("simulation: steps per frame must be at least 1");
-    mSmoke.setEmitters(mSettings.emitters);
 }
 
 void Simulation::setSplats(std::span<const ForceSplat> splats) {
@@ -48,6 +47,13 @@ void Simulation::setSplats(std::span<const ForceSplat> splats) {
 
 void Simulation::recordStep(std::vector<std::size_t>& boundaries) {
     const double dt = mSettings.dt;
+    // Emitters switch on and off at step boundaries; the device list changes only when they do.
+    std::vector<bool> active(mSettings.emitters.size());
+    for (std::size_t e = 0; e < active.size(); ++e) active[e] = mSettings.emitters[e].activeAt(mTime);
+    if (active != mActiveEmitters) {
+        mSmoke.setEmitters(activeEmitters(mSettings.emitters, mTime));
+        mActiveEmitters = std::move(active);
+    }
     boundaries.push_back(mSequence.dispatchCount());
     if (forcesActive()) {
         mForceField.record(mSequence, mSettings.buoyancy, mSmoke.temperature(), &mSmoke.mask(),

@@ -62,6 +62,7 @@ private:
     vulkan::SmokeState mSmoke;
     vulkan::SmokeAdvectionKernels mAdvection;
     vulkan::CommandSequence mSequence;
+    std::vector<bool> mActiveEmitters;  ///< what the device's emitter list holds now
     double mTime = 0.0;
 };
 

@@ -99,7 +99,7 @@ constexpr std::pair<std::string_view, AdvectionScheme> kAdvectionSchemes[] = {
     {"maccormack", AdvectionScheme::MacCormack}, {"semi-lagrangian", AdvectionScheme::SemiLagrangian}};
 constexpr std::pair<std::string_view, bool> kBasisPrecisions[] = {{"float32", false}, {"float16", true}};
 constexpr std::string_view kOutputKeys[] = {"frames", "steps_per_frame"};
-constexpr std::string_view kSourceExtraKeys[] = {"density", "temperature"};
+constexpr std::string_view kSourceExtraKeys[] = {"density", "temperature", "start", "end"};
 
 /// The keys each shape takes besides `shape` (and `op` in `[[domain]]`).
 std::span<const std::string_view> shapeKeys(ShapeKind kind) {
@@ -1031,6 +1031,10 @@ private:
                        ")"};
         source.density = readNumber(s, "density", source.density, Sign::NonNegative);
         source.temperature = readNumber(s, "temperature", source.temperature);
+        source.start = readNumber(s, "start", source.start, Sign::NonNegative);
+        source.end = readNumber(s, "end", source.end, Sign::Positive);
+        if (source.end <= source.start)
+            fail(s, "end", "must be later than start (" + std::to_string(source.start) + ")", table.get("end"));
         return source;
     }
 

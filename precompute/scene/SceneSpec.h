@@ -6,6 +6,7 @@
 #include <array>
 #include <cstdint>
 #include <filesystem>
+#include <limits>
 #include <optional>
 #include <string>
 #include <utility>
@@ -130,6 +131,8 @@ struct SourceSpec {
     ShapeSpec shape;
     double density = 1.0;      ///< injected per unit time
     double temperature = 0.0;  ///< injected per unit time
+    double start = 0.0;        ///< emits while start ≤ t < end (simulated seconds)
+    double end = std::numeric_limits<double>::infinity();
 };
 
 /// How smoke is carried (DESIGN §4): RK2 semi-Lagrangian, or MacCormack with clamping (less

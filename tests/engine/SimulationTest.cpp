@@ -195,6 +195,33 @@ TEST_P(SimulationTest, SplatsStirTheFluidOnlyWhileSet) {
     expectNoValidationMessages();
 }
 
+TEST_P(SimulationTest, EmittersFollowTheirTimeWindows) {
+    const HotScene& disk = hotDisk();
+    SimulationSettings settings = SimulationSettings::fromScene(disk.scene, disk.cache);
+    settings.buoyancy = 0.0;  // still fluid: the smoke only accumulates
+    settings.stepsPerFrame = 1;
+    settings.emitters[0].start = 0.05;  // steps 3 and 4 of 0.02 (t = 0.06, 0.08) emit
+    settings.emitters[0].end = 0.09;
+    {
+        Simulation device(context(), disk.cache, *disk.coefficients, settings, disk.mask);
+        ReferenceSimulation cpu(disk.cache, *disk.coefficients, settings, disk.mask);
+        std::vector<double> masses;
+        for (int step = 0; step < 6; ++step) {
+            device.advanceFrame();
+            cpu.advanceFrame();
+            double mass = 0.0;
+            for (double d : device.smoke().density) mass += d;
+            masses.push_back(mass);
+            EXPECT_LE(maxDifference(device.smoke().density, cpu.smoke().density), 1e-6) << "step " << step;
+        }
+        EXPECT_EQ(masses[2], 0.0) << "before the window";
+        EXPECT_GT(masses[3], 0.0);
+        EXPECT_NEAR(masses[4], 2.0 * masses[3], 1e-4 * masses[3]) << "two steps inside the window";
+        EXPECT_EQ(masses[5], masses[4]) << "after the window";
+    }
+    expectNoValidationMessages();
+}
+
 INSTANTIATE_TEST_SUITE_P(PlainAndValidated, SimulationTest, ::testing::Bool(),
                          testing::validationName);
 

@@ -148,6 +148,8 @@ center = [0.0, 0.0, -0.3]
 radius = 0.1
 density = 0.5
 temperature = 2.0
+start = 0.5
+end = 1.5
 
 [[source]]
 shape = "box"
@@ -245,6 +247,10 @@ steps_per_frame = 5
     EXPECT_EQ(scene.sources[0].shape.radius, 0.1);
     EXPECT_EQ(scene.sources[0].density, 0.5);
     EXPECT_EQ(scene.sources[0].temperature, 2.0);
+    EXPECT_EQ(scene.sources[0].start, 0.5);
+    EXPECT_EQ(scene.sources[0].end, 1.5);
+    EXPECT_EQ(scene.sources[1].start, 0.0);
+    EXPECT_EQ(scene.sources[1].end, std::numeric_limits<double>::infinity());
     EXPECT_EQ(scene.sources[1].shape.kind, ShapeKind::Box);
     EXPECT_EQ(scene.sources[1].shape.min, (Vec3{-0.1, -0.1, -0.4}));
     EXPECT_EQ(scene.sources[1].shape.max, (Vec3{0.1, 0.1, -0.35}));
@@ -522,6 +528,8 @@ TEST_F(SceneLoaderTest, RangeChecksOnScalars) {
     EXPECT_CONTAINS(errorOf(base + "[smoke]\nresolution_scale = 9\n"),
                     "[smoke].resolution_scale: must be between 1 and 8");
     EXPECT_CONTAINS(errorOf(base + "[smoke]\nadvection = \"bfecc\"\n"), "[smoke].advection");
+    EXPECT_CONTAINS(errorOf(base + "[[source]]\nshape = \"ball\"\ncenter = [0, 0]\nradius = 0.1\nstart = 2.0\nend = 1.0\n"),
+                    "end: must be later than start");
     EXPECT_CONTAINS(errorOf(base + "[simulation]\nbasis_precision = \"float8\"\n"), "[simulation].basis_precision");
     EXPECT_CONTAINS(
         errorOf(std::string(kGrid2d) + "[basis]\nvelocity_modes = 4\nsubsamples = 17\n"),
