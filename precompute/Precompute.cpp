@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include "engine/format/CacheFile.h"
+#include "engine/format/WritableDirectory.h"
 #include "engine/format/Error.h"
 #include "engine/dynamics/PackedLayout.h"
 #include "precompute/coefficients/CoefficientAssembly.h"
@@ -227,21 +228,7 @@ BasisCache computeBasis(const SceneSpec& scene, Progress& progress) {
 
 CacheOutcome ensureCache(const SceneSpec& scene, const std::filesystem::path& cacheDir, bool force,
                          Progress& progress) {
-    std::error_code ec;
-    std::filesystem::create_directories(cacheDir, ec);
-    if (ec || !std::filesystem::is_directory(cacheDir))
-        throw Error("cache directory " + cacheDir.string() + " cannot be created: " +
-                    (ec ? ec.message() : "a file is in the way"));
-    {
-        // Probe for write permission now rather than after minutes of solving.
-        const auto probe = cacheDir / (".write-probe-" + std::to_string(::getpid()));
-        std::ofstream out(probe);
-        if (!out)
-            throw Error("cache directory " + cacheDir.string() +
-                        " is not writable; choose another with --cache-dir or MODEFLOW_CACHE_DIR");
-        out.close();
-        std::filesystem::remove(probe, ec);
-    }
+    ensureWritableDirectory(cacheDir, "cache directory", "; choose another with --cache-dir or MODEFLOW_CACHE_DIR");
 
     const std::string key = basisKey(scene);
     CacheOutcome outcome{cachePath(key, cacheDir), false};

@@ -33,6 +33,15 @@ void ReferenceSimulation::setVelocity(const Eigen::VectorXd& v) {
     mVelocity = v;
 }
 
+void ReferenceSimulation::restore(double time, const Eigen::VectorXd& v, const SmokeFields& smoke) {
+    setVelocity(v);
+    if (smoke.density.size() != mFields.density.size() || smoke.temperature.size() != mFields.temperature.size())
+        throw Error("simulation: saved smoke of " + std::to_string(smoke.density.size()) + " cells, the smoke grid has " +
+                    std::to_string(mFields.density.size()));
+    mFields = smoke;
+    mTime = time;
+}
+
 FrameStats ReferenceSimulation::advanceFrame() {
     FrameStats stats;
     const double dt = mSettings.dt;

@@ -21,6 +21,7 @@ public:
 
     void setVelocity(const Eigen::VectorXd& v) override;
     Eigen::VectorXd velocity() const override { return mVelocity; }
+    void restore(double time, const Eigen::VectorXd& v, const SmokeFields& smoke) override;
     void setSplats(std::span<const ForceSplat> splats) override {
         mSplats.assign(splats.begin(), splats.end());
     }

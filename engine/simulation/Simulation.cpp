@@ -39,6 +39,14 @@ Simulation::Simulation(const vulkan::VulkanContext& context, const BasisCache& c
     if (mSettings.stepsPerFrame < 1) throw Error("simulation: steps per frame must be at least 1");
 }
 
+void Simulation::restore(double time, const Eigen::VectorXd& v, const SmokeFields& smoke) {
+    mStepper.setState(v);
+    const std::vector<float> density(smoke.density.begin(), smoke.density.end()),
+        temperature(smoke.temperature.begin(), smoke.temperature.end());
+    mSmoke.upload(density, temperature);
+    mTime = time;
+}
+
 void Simulation::setSplats(std::span<const ForceSplat> splats) {
     mForceField.setSplats(splats);
     // Without forces the step reads the force buffer as it is: make it zero.

@@ -38,6 +38,7 @@ public:
 
     void setVelocity(const Eigen::VectorXd& v) override { mStepper.setState(v); }
     Eigen::VectorXd velocity() const override { return mStepper.state(); }
+    void restore(double time, const Eigen::VectorXd& v, const SmokeFields& smoke) override;
     void setSplats(std::span<const ForceSplat> splats) override;
     FrameStats advanceFrame() override;
     SmokeFields smoke() const override;

@@ -25,6 +25,9 @@ public:
     /// @throw modeflow::Error on a wrong size.
     virtual void setVelocity(const Eigen::VectorXd& v) = 0;
     virtual Eigen::VectorXd velocity() const = 0;
+    /// Continues from a saved state (a resumed run): the time, the modal velocity and the smoke.
+    /// @throw modeflow::Error on wrong sizes.
+    virtual void restore(double time, const Eigen::VectorXd& v, const SmokeFields& smoke) = 0;
     /// Stirring splats acting from the next step on (replacing earlier ones).
     virtual void setSplats(std::span<const ForceSplat> splats) = 0;
 

@@ -13,67 +13,14 @@
 
 #include <nlohmann/json.hpp>
 
-namespace fs = std::filesystem;
+#include "tests/tools/CliFixture.h"
 
 namespace {
 
-struct RunResult {
-    int status = -1;
-    std::string out, err;
-};
-
-std::string slurp(const fs::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    return std::string(std::istreambuf_iterator<char>(in), {});
-}
-
-class Cli : public ::testing::Test {
-protected:
-    void SetUp() override {
-        mDir = fs::temp_directory_path() /
-               ("modeflow-cli-" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-        fs::remove_all(mDir);
-        fs::create_directories(mDir);
-        mCache = mDir / "cache";
-    }
-    void TearDown() override { fs::remove_all(mDir); }
-
-    RunResult run(const std::string& args) const {
-        const fs::path out = mDir / "stdout.txt", err = mDir / "stderr.txt";
-        const std::string cmd = "env -u MODEFLOW_CACHE_DIR " + std::string(MODEFLOW_CLI) + " " +
-                                args + " >" + out.string() + " 2>" + err.string() + " </dev/null";
-        const int raw = std::system(cmd.c_str());
-        return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(out), slurp(err)};
-    }
-
-    fs::path scene(const std::string& name, const std::string& text) const {
-        const fs::path p = mDir / name;
-        std::ofstream(p) << text;
-        return p;
-    }
-
-    std::string precompute(const fs::path& s, const std::string& extra = "") const {
-        return "precompute " + s.string() + " --cache-dir " + mCache.string() + " " + extra;
-    }
-
-    int cacheFiles() const {
-        if (!fs::exists(mCache)) return 0;
-        int n = 0;
-        for (const auto& e : fs::directory_iterator(mCache)) n += e.is_regular_file();
-        return n;
-    }
-
-    /// Expects failure with one clear message naming `needle`, and no cache written.
-    void expectRejected(const std::string& args, const std::string& needle) const {
-        const RunResult r = run(args);
-        EXPECT_NE(r.status, 0) << args;
-        EXPECT_NE(r.err.find(needle), std::string::npos) << "stderr: " << r.err;
-        EXPECT_NE(r.err.find("error"), std::string::npos) << "stderr: " << r.err;
-        EXPECT_EQ(cacheFiles(), 0) << args;
-    }
-
-    fs::path mDir, mCache;
-};
+using modeflow::testing::Cli;
+using modeflow::testing::RunResult;
+using modeflow::testing::slurp;
+namespace fs = std::filesystem;
 
 const char* kSmallDisk = R"(
 [grid]

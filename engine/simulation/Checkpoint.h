@@ -1,0 +1,35 @@
+#pragma once
+/// @file Checkpoint.h
+/// The state a run resumes from (`modeflow run --resume`): written after every frame, beside the
+/// frames. It holds the modal velocity and the smoke exactly as the simulator holds them (device
+/// floats widen to doubles and narrow back without loss), so a resumed run continues bit for bit.
+///
+/// Layout (little-endian): magic "MODEFLOW-RESUME\0" | u32 version | u32 frame | u64 run hash |
+/// f64 time | u64 N | N × f64 velocity | u64 cells | cells × f64 density | cells × f64
+/// temperature | u64 FNV-1a checksum of everything before it.
+
+#include <cstdint>
+#include <filesystem>
+
+#include <Eigen/Core>
+
+#include "engine/field/SmokeAdvection.h"
+
+namespace modeflow {
+
+struct Checkpoint {
+    int frame = 0;              ///< frames completed
+    double time = 0.0;          ///< simulated time after them
+    std::uint64_t runHash = 0;  ///< what shaped the run (scene, device kind, options)
+    Eigen::VectorXd velocity;
+    SmokeFields smoke;
+};
+
+/// Writes to a temporary file beside `path` and renames it over `path`.
+/// @throw modeflow::Error naming the file when it cannot be written (no partial file is left).
+void writeCheckpoint(const std::filesystem::path& path, const Checkpoint& checkpoint);
+
+/// @throw modeflow::Error saying why the file cannot be used (missing, truncated, corrupt).
+Checkpoint readCheckpoint(const std::filesystem::path& path);
+
+}  // namespace modeflow

@@ -1,0 +1,171 @@
+/// @file RunCommandTest.cpp
+/// `modeflow run`: a scene in, OpenVDB frames out (read back with OpenVDB), resumable, and bad
+/// input refused before any work.
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "engine/field/MacGrid.h"
+#include "engine/output/VdbFrame.h"
+#include "tests/tools/CliFixture.h"
+
+namespace modeflow {
+namespace {
+
+using testing::Cli;
+using testing::RunResult;
+namespace fs = std::filesystem;
+
+const char* kHotDisk = R"(
+[grid]
+resolution = [24, 24]
+bounds_min = [-1.1, -1.1]
+bounds_max = [1.1, 1.1]
+[[domain]]
+shape = "ball"
+center = [0.0, 0.0]
+radius = 1.0
+[basis]
+velocity_modes = 8
+scalar_modes = 4
+[simulation]
+dt = 0.02
+[initial]
+velocity = "random"
+energy = 0.05
+seed = 3
+[[source]]
+shape = "ball"
+center = [0.0, -0.5]
+radius = 0.25
+density = 2.0
+temperature = 1.0
+[smoke]
+buoyancy = 1.0
+resolution_scale = 2
+[output]
+frames = 4
+steps_per_frame = 2
+)";
+
+/// Every smoke cell centre of the scene's 48² smoke grid, z = 0.
+std::vector<Vec3> smokeCentres() {
+    GridSpec spec;
+    spec.dim = 2;
+    spec.resolution = {24, 24, 1};
+    spec.boundsMin = {-1.1, -1.1, 0.0};
+    spec.boundsMax = {1.1, 1.1, 0.0};
+    const MacGrid grid = MacGrid::fromSpec(spec).refined(2);
+    std::vector<Vec3> centres;
+    for (int y = 0; y < grid.cells[1]; ++y)
+        for (int x = 0; x < grid.cells[0]; ++x) centres.push_back({grid.cellCentre(0, x), grid.cellCentre(1, y), 0.0});
+    return centres;
+}
+
+class RunCommand : public Cli {
+protected:
+    RunResult simulate(const fs::path& scene, const fs::path& out, const std::string& extra = "") const {
+        return run("run " + scene.string() + " --out " + out.string() + " --cache-dir " + mCache.string() + " " + extra);
+    }
+};
+
+TEST_F(RunCommand, WritesVdbFramesThatReadBack) {
+    const fs::path s = scene("hot.toml", kHotDisk), out = mDir / "frames";
+    const RunResult r = simulate(s, out);
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.err.find("Vulkan device:"), std::string::npos) << "the run must say which device runs";
+    EXPECT_EQ(r.out, out.string() + "\n") << "stdout's last line is the output folder";
+    for (int frame = 1; frame <= 4; ++frame) EXPECT_TRUE(fs::exists(out / frameFileName("hot", frame))) << frame;
+
+    const VdbFrameInfo info = readVdbFrameInfo(out / "hot_0003.vdb");
+    ASSERT_NE(info.grid("density"), nullptr);
+    ASSERT_NE(info.grid("temperature"), nullptr);
+    ASSERT_NE(info.grid("vel"), nullptr);
+    EXPECT_EQ(info.grid("density")->gridClass, "fog volume");
+    EXPECT_EQ(info.grid("vel")->valueType, "vec3s");
+    EXPECT_EQ(info.frame, 3);
+    EXPECT_NEAR(*info.time, 3 * 2 * 0.02, 1e-12);
+    EXPECT_EQ(info.creator, "modeflow");
+    EXPECT_NEAR(info.grid("density")->voxelSize[0], 2.2 / 48, 1e-12);
+
+    // Smoke inside the disk only; none outside it (half a basis cell of slack for cut cells).
+    const std::vector<Vec3> centres = smokeCentres();
+    const std::vector<VdbSample> density = sampleVdbGrid(out / "hot_0003.vdb", "density", centres);
+    int inside = 0;
+    for (std::size_t c = 0; c < centres.size(); ++c) {
+        const double r2 = centres[c][0] * centres[c][0] + centres[c][1] * centres[c][1];
+        if (r2 > std::pow(1.0 + 0.05, 2)) {
+            EXPECT_FALSE(density[c].active) << "smoke outside the domain at " << c;
+        }
+        inside += density[c].active;
+    }
+    EXPECT_GT(inside, 20);
+}
+
+TEST_F(RunCommand, ResumeGivesTheFramesOfAnUninterruptedRun) {
+    const fs::path s = scene("hot.toml", kHotDisk);
+    ASSERT_EQ(simulate(s, mDir / "whole").status, 0);
+    // A run stopped after frame 2 (the checkpoint is written after every frame), then resumed.
+    ASSERT_EQ(simulate(s, mDir / "parts", "--frames 2").status, 0);
+    const RunResult resumed = simulate(s, mDir / "parts", "--resume");
+    ASSERT_EQ(resumed.status, 0) << resumed.err;
+    EXPECT_NE(resumed.err.find("resuming after frame 2"), std::string::npos) << resumed.err;
+    const std::vector<Vec3> centres = smokeCentres();
+    for (const char* name : {"hot_0003.vdb", "hot_0004.vdb"}) {
+        for (const char* grid : {"density", "temperature", "vel"}) {
+            const auto whole = sampleVdbGrid(mDir / "whole" / name, grid, centres);
+            const auto parts = sampleVdbGrid(mDir / "parts" / name, grid, centres);
+            for (std::size_t c = 0; c < centres.size(); ++c)
+                ASSERT_EQ(whole[c].value, parts[c].value) << name << " " << grid << " cell " << c;
+        }
+    }
+    // The checkpoint belongs to the scene text it was written for.
+    const fs::path changed = scene("hot.toml", std::string(kHotDisk) + "# edited\n");
+    const RunResult refused = simulate(changed, mDir / "parts", "--resume");
+    EXPECT_NE(refused.status, 0);
+    EXPECT_NE(refused.err.find("another scene"), std::string::npos) << refused.err;
+}
+
+TEST_F(RunCommand, CpuReferenceRunGivesTheSameSmoke) {
+    const fs::path s = scene("hot.toml", kHotDisk);
+    ASSERT_EQ(simulate(s, mDir / "gpu", "--frames 2").status, 0);
+    const RunResult cpu = simulate(s, mDir / "cpu", "--frames 2 --device cpu");
+    ASSERT_EQ(cpu.status, 0) << cpu.err;
+    const std::vector<Vec3> centres = smokeCentres();
+    const auto a = sampleVdbGrid(mDir / "gpu" / "hot_0002.vdb", "density", centres);
+    const auto b = sampleVdbGrid(mDir / "cpu" / "hot_0002.vdb", "density", centres);
+    for (std::size_t c = 0; c < centres.size(); ++c) EXPECT_NEAR(a[c].value[0], b[c].value[0], 1e-5) << c;
+}
+
+TEST_F(RunCommand, BadInputIsRefusedBeforeAnyWork) {
+    const fs::path s = scene("hot.toml", kHotDisk);
+    EXPECT_NE(simulate(s, mDir / "f", "--frames 0").status, 0);
+    std::ofstream(mDir / "file") << "x";
+    expectRejected("run " + s.string() + " --out " + (mDir / "file" / "sub").string() + " --cache-dir " +
+                       mCache.string(),
+                   "output folder");
+    expectRejected("run " + scene("dt.toml", std::string(kHotDisk) + "[simulation]\ndt = -1\n").string() +
+                       " --cache-dir " + mCache.string(),
+                   "dt");
+    const std::string cone = R"(
+[grid]
+resolution = [24, 24]
+bounds_min = [-1.1, -1.1]
+bounds_max = [1.1, 1.1]
+[basis]
+velocity_modes = 8
+[[source]]
+shape = "cone"
+)";
+    expectRejected("run " + scene("cone.toml", cone).string() + " --cache-dir " + mCache.string(), "[[source]]");
+    expectRejected("run " + s.string() + " --out " + (mDir / "g").string() + " --device gpu0 --cache-dir " +
+                       mCache.string(),
+                   "--device gpu0");
+    EXPECT_FALSE(fs::exists(mDir / "g")) << "the output folder was made before the device was checked";
+}
+
+}  // namespace
+}  // namespace modeflow
