@@ -1,10 +1,13 @@
 #!/usr/bin/env bash
-# The main job, set-up included: builds modeflow and runs the default scene end to end.
-# Today that is the precompute (cached under $MODEFLOW_CACHE_DIR, default ~/.cache/modeflow)
-# followed by a summary of the basis it produced.
+# The main job, set-up included: builds modeflow and runs the default scene end to end: the
+# precompute (cached under $MODEFLOW_CACHE_DIR, default ~/.cache/modeflow), then the simulation on
+# the first Vulkan device (lavapipe without a GPU), writing one OpenVDB file per frame (and PNG
+# previews) to frames/NAME/. Usage: tools/run-default.sh [SCENE [extra `modeflow run` options]]
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 "$root/tools/build.sh"
 scene="${1:-$root/scenes/default.toml}"
-"$root/build/tools/modeflow/modeflow" precompute "$scene"
+shift || true
+name=$(basename "$scene" .toml)
 "$root/build/tools/modeflow/modeflow" inspect "$scene"
+"$root/build/tools/modeflow/modeflow" run "$scene" --out "$root/frames/$name" "$@"
