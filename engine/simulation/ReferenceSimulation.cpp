@@ -57,6 +57,10 @@ FrameStats ReferenceSimulation::advanceFrame() {
         stats.maxIterations = std::max(stats.maxIterations, report.iterations);
         stats.unconvergedSteps += report.converged ? 0 : 1;
         mFaceVelocity = reconstructFaceField(mCache, mVelocity);
+        if (!mSettings.obstacles.empty()) {
+            mVelocity -= obstacleCorrection(mCache, mFaceVelocity, mSettings.obstacles, mTime + dt);
+            mFaceVelocity = reconstructFaceField(mCache, mVelocity);
+        }
         mAdvection.step(std::span<const double>(mFaceVelocity), dt, mSettings.advection,
                         activeEmitters(mSettings.emitters, mTime), mFields);
         mTime += dt;

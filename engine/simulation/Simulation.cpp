@@ -32,6 +32,7 @@ Simulation::Simulation(const vulkan::VulkanContext& context, const BasisCache& c
       mProjection(context, cache, FaceQuantity::Density),
       mForceDensity(context, std::max<std::size_t>(cache.faces.size(), 1) * sizeof(float),
                     "force density"),
+      mObstacles(context, cache),
       mSmoke(context, MacGrid::fromSpec(cache.grid), mSettings.smokeScale, smokeMask),
       mAdvection(context),
       mSequence(context, timestamps, maxDispatchesPerStep(mStepper)) {
@@ -73,6 +74,13 @@ void Simulation::recordStep(std::vector<std::size_t>& boundaries) {
     boundaries.push_back(mSequence.dispatchCount());
     mReconstruction.record(mSequence, mModes, mStepper.stateBuffer(), mFaceVelocity);
     boundaries.push_back(mSequence.dispatchCount());
+    if (!mSettings.obstacles.empty()) {
+        // Where the obstacles are at the end of the step, which the advection then sees.
+        mObstacles.setObstacles(mSettings.obstacles, mTime + dt);
+        mObstacles.record(mSequence, mModes, mFaceVelocity, mStepper.stateBuffer());
+        mReconstruction.record(mSequence, mModes, mStepper.stateBuffer(), mFaceVelocity);
+    }
+    boundaries.push_back(mSequence.dispatchCount());
     mAdvection.record(mSequence, mSmoke, mFaceVelocity, dt, mSettings.advection);
     boundaries.push_back(mSequence.dispatchCount());
 }
@@ -91,8 +99,8 @@ FrameStats Simulation::advanceFrame() {
         stats.unconvergedSteps += status.converged ? 0 : 1;
         const std::vector<double>& times = mSequence.dispatchTimesMs();
         if (times.empty()) continue;
-        const std::array<double*, 4> stages{&stats.forcesMs, &stats.modalMs,
-                                            &stats.reconstructionMs, &stats.advectionMs};
+        const std::array<double*, 5> stages{&stats.forcesMs, &stats.modalMs, &stats.reconstructionMs,
+                                            &stats.obstaclesMs, &stats.advectionMs};
         for (std::size_t stage = 0; stage < stages.size(); ++stage)
             for (std::size_t d = boundaries[stage]; d < boundaries[stage + 1]; ++d)
                 *stages[stage] += times[d];

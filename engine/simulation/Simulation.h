@@ -4,7 +4,8 @@
 /// grid velocity and the smoke all live in device buffers, and each step is one queue submission
 ///
 ///     force field (buoyancy from the smoke temperature + stirring splats) → projection f = Ψᵀ⋆F
-///     → modal step (viscosity, LANS-α) → reconstruction u = Σ v_i Ψ_i → smoke advection + emitters
+///     → modal step (viscosity, LANS-α) → reconstruction u = Σ v_i Ψ_i
+///     → moving obstacles (v −= projected mismatch, reconstruct again) → smoke advection + emitters
 ///
 /// with nothing read back; the host reads the velocity, smoke or grid velocity only when it asks
 /// (display, export). CPU reference of the whole chain: ReferenceSimulation.
@@ -16,6 +17,7 @@
 #include "engine/kernels/ForceProjection.h"
 #include "engine/kernels/ModalStepper.h"
 #include "engine/kernels/ModeBuffer.h"
+#include "engine/kernels/ObstacleCorrection.h"
 #include "engine/kernels/SmokeAdvection.h"
 #include "engine/kernels/SmokeState.h"
 #include "engine/kernels/VelocityReconstruction.h"
@@ -60,6 +62,7 @@ private:
     vulkan::ForceFieldKernel mForceField;
     vulkan::ForceProjectionKernel mProjection;
     vulkan::DeviceBuffer mForceDensity;
+    vulkan::ObstacleCorrection mObstacles;
     vulkan::SmokeState mSmoke;
     vulkan::SmokeAdvectionKernels mAdvection;
     vulkan::CommandSequence mSequence;

@@ -8,6 +8,7 @@
 
 #include "engine/dynamics/FluidSystem.h"
 #include "engine/field/SmokeAdvection.h"
+#include "engine/field/MovingObstacle.h"
 #include "engine/field/SmokeEmitter.h"
 #include "engine/format/BasisCache.h"
 #include "engine/kernels/ModeBuffer.h"
@@ -25,10 +26,12 @@ struct SimulationSettings {
     AdvectionScheme advection = AdvectionScheme::MacCormack;
     vulkan::ModePrecision basisPrecision = vulkan::ModePrecision::Float32;  ///< device only
     std::vector<SmokeEmitter> emitters;
+    std::vector<MovingObstacle> obstacles;
 
     /// The scene's [simulation], [smoke], [[source]] and [output] values on this basis.
     /// @throw modeflow::Error for MHD scenes (the smoke runtime simulates Euler, Navier–Stokes
-    /// and LANS-α flows; `modeflow modes` runs MHD) or more emitters than the runtime takes.
+    /// and LANS-α flows; `modeflow modes` runs MHD), or more emitters or obstacles than the
+    /// runtime takes.
     static SimulationSettings fromScene(const SceneSpec& scene, const BasisCache& cache);
 };
 
@@ -38,8 +41,10 @@ struct FrameStats {
     int maxIterations = 0;     ///< implicit schemes: most iterations a step took
     int unconvergedSteps = 0;  ///< steps whose implicit solve missed its tolerance
     /// Device time per stage over the frame, milliseconds (0 on the CPU reference or without
-    /// timestamps): forces (force field + projection), modal step, reconstruction, advection.
-    double forcesMs = 0.0, modalMs = 0.0, reconstructionMs = 0.0, advectionMs = 0.0;
+    /// timestamps): forces (force field + projection), modal step, reconstruction, moving
+    /// obstacles (their correction and the reconstruction after it), advection.
+    /// Obstacles: their correction and the reconstruction after it.
+    double forcesMs = 0.0, modalMs = 0.0, reconstructionMs = 0.0, obstaclesMs = 0.0, advectionMs = 0.0;
 };
 
 }  // namespace modeflow

@@ -62,7 +62,7 @@ std::string_view keywordOf(Choices<T> choices, T value) {
 }
 
 constexpr std::string_view kTopLevelTables[] = {"grid",    "domain", "basis", "simulation",
-                                                "initial", "source", "smoke", "output"};
+                                                "initial", "source", "obstacle", "smoke", "output"};
 constexpr std::string_view kGridKeys[] = {"resolution", "bounds_min", "bounds_max"};
 constexpr std::string_view kBasisKeys[] = {
     "velocity_modes", "modes", "scalar_modes", "scalar_boundary", "wall", "boundary", "subsamples"};
@@ -94,6 +94,9 @@ std::span<const std::string_view> initialKeys(InitialVelocity velocity) {
     }
     return {};
 }
+constexpr std::pair<std::string_view, ObstacleShape> kObstacleShapes[] = {
+    {"ball", ObstacleShape::Ball}, {"box", ObstacleShape::Box}, {"capsule", ObstacleShape::Capsule}};
+constexpr std::string_view kObstacleKeys[] = {"shape", "radius", "half_size", "axis", "path"};
 constexpr std::string_view kSmokeKeys[] = {"buoyancy", "resolution_scale", "advection"};
 constexpr std::pair<std::string_view, AdvectionScheme> kAdvectionSchemes[] = {
     {"maccormack", AdvectionScheme::MacCormack}, {"semi-lagrangian", AdvectionScheme::SemiLagrangian}};
@@ -309,6 +312,9 @@ public:
         }
         forEachEntry(root, "source", [&](const toml::table& t, int index) {
             scene.sources.push_back(readSource(t, index));
+        });
+        forEachEntry(root, "obstacle", [&](const toml::table& t, int index) {
+            scene.obstacles.push_back(readObstacle({t, "[[obstacle]] #" + std::to_string(index)}));
         });
         if (const toml::table* t = optionalTable(root, "smoke")) {
             scene.smoke = readSmoke({*t, "[smoke]"}, scene.grid);
@@ -1036,6 +1042,49 @@ private:
         if (source.end <= source.start)
             fail(s, "end", "must be later than start (" + std::to_string(source.start) + ")", table.get("end"));
         return source;
+    }
+
+    ObstacleSpec readObstacle(const Section& s) const {
+        checkKeys(s, kObstacleKeys);
+        if (!s.table.contains("shape")) fail(s, "shape", "missing required key (one of ball, box or capsule)");
+        ObstacleSpec obstacle;
+        obstacle.shape = readChoice(s, "shape", obstacle.shape, Choices<ObstacleShape>(kObstacleShapes));
+        const auto unused = [&](std::string_view key) {
+            if (s.table.contains(key))
+                fail(s, key, "not used by a " + std::string(keywordOf(Choices<ObstacleShape>(kObstacleShapes),
+                                                                       obstacle.shape)),
+                     s.table.get(key));
+        };
+        if (obstacle.shape == ObstacleShape::Box) {
+            obstacle.halfSize = requireVector(s, "half_size");
+            for (int a = 0; a < mDim; ++a)
+                if (!(obstacle.halfSize[a] > 0.0)) fail(s, "half_size", "every entry must be > 0", s.table.get("half_size"));
+            unused("radius");
+            unused("axis");
+        } else {
+            obstacle.radius = requireNumber(s, "radius", Sign::Positive);
+            unused("half_size");
+            if (obstacle.shape == ObstacleShape::Capsule) obstacle.axis = requireVector(s, "axis");
+            else unused("axis");
+        }
+        const toml::node* node = s.table.get("path");
+        const std::string where = s.name + ".path";
+        const toml::array* path = node ? node->as_array() : nullptr;
+        if (path == nullptr || path->empty())
+            fail(where, "expected an array of key frames [t, x, y" + std::string(mDim == 3 ? ", z" : "") + "]",
+                 node ? node : &s.table);
+        for (const toml::node& entry : *path) {
+            const toml::array* frame = entry.as_array();
+            if (frame == nullptr || frame->size() != std::size_t(mDim + 1))
+                fail(where, "each key frame is " + std::to_string(mDim + 1) + " numbers [t, position]", &entry);
+            const double t = numberValue((*frame)[0], where + " time");
+            Vec3 position{0.0, 0.0, 0.0};
+            for (int a = 0; a < mDim; ++a) position[a] = numberValue((*frame)[std::size_t(a + 1)], where);
+            if (!obstacle.path.empty() && !(t > obstacle.path.back().first))
+                fail(where, "key frame times must increase", &entry);
+            obstacle.path.emplace_back(t, position);
+        }
+        return obstacle;
     }
 
     SmokeSpec readSmoke(const Section& s, const GridSpec& grid) const {

@@ -139,6 +139,20 @@ struct SourceSpec {
 /// diffusive; engine/field/SmokeAdvection.h).
 enum class AdvectionScheme { SemiLagrangian, MacCormack };
 
+/// A solid moving through the fluid on a key-framed path (`[[obstacle]]`); the fluid's normal
+/// velocity on the faces it covers is made to match its own (seed §6.3.5).
+enum class ObstacleShape { Ball, Box, Capsule };
+
+struct ObstacleSpec {
+    ObstacleShape shape = ObstacleShape::Ball;
+    double radius = 0.0;         ///< ball, capsule
+    Vec3 halfSize{0.0, 0.0, 0.0};  ///< box: half its extent per axis
+    Vec3 axis{0.0, 0.0, 0.0};      ///< capsule: from its centre to one end of its segment
+    /// Key frames (time, centre), times increasing; the centre moves linearly between them and
+    /// holds still before the first and after the last.
+    std::vector<std::pair<double, Vec3>> path;
+};
+
 struct SmokeSpec {
     double buoyancy = 0.0;
     int resolutionScale = 1;
@@ -160,6 +174,7 @@ struct SceneSpec {
     SimulationSpec simulation;
     InitialSpec initial;
     std::vector<SourceSpec> sources;
+    std::vector<ObstacleSpec> obstacles;
     SmokeSpec smoke;
     OutputSpec output;
 };

@@ -195,6 +195,34 @@ TEST_P(SimulationTest, SplatsStirTheFluidOnlyWhileSet) {
     expectNoValidationMessages();
 }
 
+TEST_P(SimulationTest, MovingObstaclesMatchTheCpuReference) {
+    const HotScene& disk = hotDisk();
+    SimulationSettings settings = SimulationSettings::fromScene(disk.scene, disk.cache);
+    ObstacleSpec paddle;
+    paddle.shape = ObstacleShape::Capsule;
+    paddle.radius = 0.1;
+    paddle.axis = {0.0, 0.25, 0.0};
+    paddle.path = {{0.0, {-0.5, 0.0, 0.0}}, {1.0, {0.5, 0.0, 0.0}}};
+    settings.obstacles = {MovingObstacle{paddle}};
+    {
+        Simulation device(context(), disk.cache, *disk.coefficients, settings, disk.mask, true);
+        ReferenceSimulation cpu(disk.cache, *disk.coefficients, settings, disk.mask);
+        FrameStats stats;
+        for (int frame = 0; frame < 2; ++frame) {
+            stats = device.advanceFrame();
+            cpu.advanceFrame();
+        }
+        const Eigen::VectorXd v = device.velocity(), expected = cpu.velocity();
+        ASSERT_GT(expected.norm(), 0.0) << "the paddle must stir the fluid";
+        const double error = (v - expected).lpNorm<Eigen::Infinity>() / expected.lpNorm<Eigen::Infinity>();
+        std::cout << "moving capsule, 10 steps: modes relative difference " << error << ", obstacle stage "
+                  << stats.obstaclesMs << " ms per frame\n";
+        EXPECT_LE(error, 1e-4);
+        EXPECT_LE(maxDifference(device.smoke().density, cpu.smoke().density), 1e-4 * maxAbs(cpu.smoke().density));
+    }
+    expectNoValidationMessages();
+}
+
 TEST_P(SimulationTest, EmittersFollowTheirTimeWindows) {
     const HotScene& disk = hotDisk();
     SimulationSettings settings = SimulationSettings::fromScene(disk.scene, disk.cache);

@@ -264,6 +264,36 @@ steps_per_frame = 5
     EXPECT_EQ(scene.output.stepsPerFrame, 5);
 }
 
+TEST_F(SceneLoaderTest, ObstaclesFollowKeyFramedPaths) {
+    const SceneSpec scene = parseScene(std::string(kGrid2d) + kBasis + R"(
+[[obstacle]]
+shape = "capsule"
+radius = 0.1
+axis = [0.0, 0.3]
+path = [[0.0, -0.5, 0.0], [1.0, 0.5, 0.0], [2.0, 0.5, 0.5]]
+[[obstacle]]
+shape = "box"
+half_size = [0.1, 0.2]
+path = [[0.0, 0.0, -0.5]]
+)", "obstacles.toml");
+    ASSERT_EQ(scene.obstacles.size(), 2u);
+    EXPECT_EQ(scene.obstacles[0].shape, ObstacleShape::Capsule);
+    EXPECT_EQ(scene.obstacles[0].axis, (Vec3{0.0, 0.3, 0.0}));
+    ASSERT_EQ(scene.obstacles[0].path.size(), 3u);
+    EXPECT_EQ(scene.obstacles[0].path[2].first, 2.0);
+    EXPECT_EQ(scene.obstacles[0].path[2].second, (Vec3{0.5, 0.5, 0.0}));
+    EXPECT_EQ(scene.obstacles[1].halfSize, (Vec3{0.1, 0.2, 0.0}));
+
+    const std::string base = std::string(kGrid2d) + kBasis + "[[obstacle]]\nshape = \"ball\"\n";
+    EXPECT_CONTAINS(errorOf(base + "radius = 0.1\npath = [[1.0, 0.0, 0.0], [0.5, 0.1, 0.0]]\n"),
+                    "key frame times must increase");
+    EXPECT_CONTAINS(errorOf(base + "radius = 0.1\npath = [[1.0, 0.0]]\n"), "[t, position]");
+    EXPECT_CONTAINS(errorOf(base + "path = [[0.0, 0.0, 0.0]]\n"), "radius");
+    EXPECT_CONTAINS(errorOf(base + "radius = 0.1\nhalf_size = [0.1, 0.1]\npath = [[0.0, 0.0, 0.0]]\n"),
+                    "half_size: not used by a ball");
+    EXPECT_CONTAINS(errorOf(std::string(kGrid2d) + kBasis + "[[obstacle]]\nshape = \"cone\"\n"), "cone");
+}
+
 TEST_F(SceneLoaderTest, MinimalSceneGetsDefaults) {
     const SceneSpec scene = parseScene(std::string(kGrid2d) + kBasis, "somewhere/minimal.toml");
     EXPECT_EQ(scene.name, "minimal");

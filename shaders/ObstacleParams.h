@@ -1,0 +1,55 @@
+/* ObstacleParams.h: the moving-obstacle correction's push constants and obstacle records
+   (obstacle_mismatch.comp, modal_correct.comp), shared by C++ and GLSL (ASCII, no C++-only
+   syntax outside the __cplusplus blocks); padded to 16 bytes. */
+#ifndef MODEFLOW_SHADERS_OBSTACLE_PARAMS_H
+#define MODEFLOW_SHADERS_OBSTACLE_PARAMS_H
+
+#ifdef __cplusplus
+#include <cstdint>
+namespace modeflow::shaders {
+using uint = std::uint32_t;
+#endif
+
+#define OBSTACLE_BALL 0u
+#define OBSTACLE_BOX 1u
+#define OBSTACLE_CAPSULE 2u
+
+/* One obstacle at the step's time (std430: four vec4s). */
+struct ObstacleRecord {
+    float centre[3];
+    float radius;      /* ball, capsule */
+    float halfSize[3]; /* box */
+    uint shape;
+    float axis[3];     /* capsule: centre to one end of its segment */
+    float pad0;
+    float velocity[3];
+    float pad1;
+};
+
+struct ObstacleMismatchParams {
+    uint dofCount;
+    uint obstacleCount;
+    uint faceStart1; /* first normal-y face */
+    uint faceStart2; /* first normal-z face (the face total in 2D) */
+    uint cells[3];
+    uint dim;
+    float origin[3];
+    float pad0;
+    float spacing[3];
+    float pad1;
+};
+
+struct ModalCorrectParams {
+    uint n;
+    uint pad0;
+    uint pad1;
+    uint pad2;
+};
+
+#ifdef __cplusplus
+static_assert(sizeof(ObstacleRecord) == 64 && sizeof(ObstacleMismatchParams) == 64 && sizeof(ModalCorrectParams) == 16,
+              "std430 and C++ layouts agree");
+}  /* namespace modeflow::shaders */
+#endif
+
+#endif

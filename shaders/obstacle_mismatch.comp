@@ -1,0 +1,53 @@
+#version 450
+// Moving obstacles (seed section 6.3.5; CPU reference engine/field/MovingObstacle.cpp): on every
+// velocity DOF face whose centre an obstacle covers, the fluid's face velocity minus the
+// obstacle's velocity along the face normal, written into a face field of the whole grid (other
+// faces keep the 0 they were created with). project_force.comp then projects it on the basis
+// (face-field weights: the exact inverse of the reconstruction) and modal_correct.comp subtracts
+// the result from v. One invocation per DOF, grid-stride; the first covering obstacle decides.
+#extension GL_GOOGLE_include_directive : require
+#include "FaceLocation.glsl"
+#include "ObstacleParams.h"
+
+layout(local_size_x = 64, local_size_x_id = 0) in;
+
+layout(std430, set = 0, binding = 0) readonly buffer Faces { uint faces[]; };
+layout(std430, set = 0, binding = 1) readonly buffer Velocity { float velocity[]; };
+layout(std430, set = 0, binding = 2) readonly buffer Obstacles { ObstacleRecord obstacles[]; };
+layout(std430, set = 0, binding = 3) writeonly buffer Mismatch { float mismatch[]; };
+layout(push_constant) uniform Push { ObstacleMismatchParams params; };
+
+vec3 v3(float a[3]) { return vec3(a[0], a[1], a[2]); }
+
+bool covers(ObstacleRecord o, vec3 point) {
+    vec3 d = point - v3(o.centre);
+    if (params.dim == 2u) d.z = 0.0;
+    if (o.shape == OBSTACLE_BOX) return all(lessThanEqual(abs(d), v3(o.halfSize)));
+    if (o.shape == OBSTACLE_CAPSULE) {
+        const vec3 axis = v3(o.axis);
+        const float length2 = dot(axis, axis);
+        d -= (length2 > 0.0 ? clamp(dot(d, axis) / length2, -1.0, 1.0) : 0.0) * axis;
+    }
+    return dot(d, d) <= o.radius * o.radius;
+}
+
+void main() {
+    const uint stride = gl_NumWorkGroups.x * gl_WorkGroupSize.x;
+    const uvec3 cells = uvec3(params.cells[0], params.cells[1], params.cells[2]);
+    for (uint dof = gl_GlobalInvocationID.x; dof < params.dofCount; dof += stride) {
+        const uint face = faces[dof];
+        const uint axis = faceAxis(face, params.faceStart1, params.faceStart2);
+        const uint start = axis == 0u ? 0u : (axis == 1u ? params.faceStart1 : params.faceStart2);
+        const uvec3 position = facePosition(face - start, axis, cells);
+        vec3 centre = v3(params.origin) + (vec3(position) + vec3(0.5)) * v3(params.spacing);
+        centre[axis] -= 0.5 * params.spacing[axis];
+        if (params.dim == 2u) centre.z = 0.0;
+        float value = 0.0;
+        for (uint o = 0; o < params.obstacleCount; ++o)
+            if (covers(obstacles[o], centre)) {
+                value = velocity[face] - obstacles[o].velocity[axis];
+                break;
+            }
+        mismatch[face] = value;
+    }
+}

@@ -1,0 +1,64 @@
+/// @file ObstacleKernelTest.cpp
+/// The moving-obstacle correction on the device (ObstacleCorrection: obstacle_mismatch.comp,
+/// projection, modal_correct.comp) against its CPU reference obstacleCorrection.
+
+#include <gtest/gtest.h>
+
+#include "engine/dynamics/InitialConditions.h"
+#include "engine/field/VelocityReconstruction.h"
+#include "engine/kernels/DeviceCoefficients.h"
+#include "engine/kernels/ModeBuffer.h"
+#include "engine/kernels/ObstacleCorrection.h"
+#include "engine/kernels/VelocityReconstruction.h"
+#include "engine/vulkan/CommandSequence.h"
+#include "tests/engine/TestBases.h"
+#include "tests/engine/VulkanTestContext.h"
+
+namespace modeflow {
+namespace {
+
+class ObstacleKernelTest : public testing::VulkanTest {};
+
+TEST_P(ObstacleKernelTest, CorrectionEqualsTheCpuReference) {
+    const BasisCache& cache = testing::disk2d();
+    const int n = int(cache.velocity.modes.cols());
+    RandomVelocitySpec random;
+    const Eigen::VectorXd v = randomVelocity(n, random).cast<float>().cast<double>();
+    for (const ObstacleShape shape : {ObstacleShape::Ball, ObstacleShape::Box, ObstacleShape::Capsule}) {
+        ObstacleSpec spec;
+        spec.shape = shape;
+        spec.radius = 0.2;
+        spec.halfSize = {0.25, 0.15, 0.0};
+        spec.axis = {0.1, 0.2, 0.0};
+        spec.path = {{0.0, {-0.3, 0.1, 0.0}}, {1.0, {0.4, -0.2, 0.0}}};
+        const std::vector<MovingObstacle> obstacles{MovingObstacle{spec}};
+        const Eigen::VectorXd expected = v - obstacleCorrection(cache, reconstructFaceField(cache, v), obstacles, 0.5);
+        {
+            const vulkan::ModeBuffer modes(context(), cache.velocity.modes);
+            const vulkan::ReconstructionKernel reconstruction(context(), cache);
+            vulkan::ObstacleCorrection correction(context(), cache);
+            std::vector<float> state(vulkan::paddedSize(n), 0.0f);
+            for (int k = 0; k < n; ++k) state[std::size_t(k)] = float(v[k]);
+            vulkan::DeviceBuffer vBuffer = vulkan::DeviceBuffer::fromValues<float>(context(), state, "v");
+            const vulkan::DeviceBuffer faces = reconstruction.makeFaceField();
+            correction.setObstacles(obstacles, 0.5);
+            vulkan::CommandSequence sequence(context());
+            reconstruction.record(sequence, modes, vBuffer, faces);
+            correction.record(sequence, modes, faces, vBuffer);
+            sequence.submitAndWait();
+            vBuffer.download<float>(state);
+            Eigen::VectorXd got(n);
+            for (int k = 0; k < n; ++k) got[k] = state[std::size_t(k)];
+            const double error = (got - expected).lpNorm<Eigen::Infinity>() / expected.lpNorm<Eigen::Infinity>();
+            std::cout << "shape " << int(shape) << ": relative error " << error << ", |correction| "
+                      << (expected - v).norm() << "\n";
+            EXPECT_LE(error, 1e-5);
+        }
+        expectNoValidationMessages();
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(PlainAndValidated, ObstacleKernelTest, ::testing::Bool(), testing::validationName);
+
+}  // namespace
+}  // namespace modeflow
