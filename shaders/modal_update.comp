@@ -15,7 +15,7 @@
 //                 stalls at the round-off floor below 16 tolerance) the step has converged and the
 //                 live indirect arguments are zeroed, so the remaining recorded iterations
 //                 dispatch no work (no host round trip).
-//   MIDPOINT_END  x <- exp(-d h/2) (2 y - x)
+//   MIDPOINT_END  x <- exp(-d h/2) (2 y - x); an unconverged step keeps x (decay only)
 //
 // The fixed point converges when h |dR/dy| / 2 < 1 (the step's CFL-like number); the status block
 // counts steps that reached the iteration limit so the host can report them.
@@ -71,7 +71,9 @@ void main() {
             magnitude = max(magnitude, abs(next));
             setPoint(k, next);
         } else if (op == MODAL_OP_MIDPOINT_END) {
-            x[k] = halfDecay * (2.0 * y[k] - x[k]);
+            // An iteration that did not converge may be diverging (h |dR/dv| / 2 > 1): keep the
+            // state rather than step to a wild iterate; the host then takes smaller substeps.
+            x[k] = halfDecay * (status.converged != 0u ? 2.0 * y[k] - x[k] : x[k]);
         }
     }
 

@@ -115,7 +115,12 @@ void ModalStepper::recordUpdate(CommandSequence& sequence, std::uint32_t op, std
         sequence.dispatch(mKernels.update, buffers, params, 1);
 }
 
-void ModalStepper::recordStep(CommandSequence& sequence, double h) const {
+void ModalStepper::recordStep(CommandSequence& sequence, double h, int substeps) const {
+    if (substeps < 1) throw Error("modal step: substeps must be at least 1, got " + std::to_string(substeps));
+    if (substeps > 1) {
+        for (int s = 0; s < substeps; ++s) recordStep(sequence, h / substeps);
+        return;
+    }
     recordUpdate(sequence, MODAL_OP_BEGIN, 0, h, false);
     switch (mSettings.scheme) {
         case Integrator::Explicit:

@@ -10,9 +10,10 @@
 /// fixed-point iteration on the device until the midpoint state changes by at most `tolerance`
 /// (relative, max norm), with no host round trip: the iteration that converges switches the
 /// remaining recorded iterations off through their indirect dispatch arguments. The fixed point
-/// converges when h·|∂R/∂v|/2 < 1, the same bound that keeps an explicit step accurate; steps that
-/// reach `maxIterations` are counted in status(). Viscosity is applied exactly, Strang-split as on
-/// the CPU. (The trapezoidal rule and MHD run on the CPU reference only.)
+/// converges when h·|∂R/∂v|/2 < 1, the same bound that keeps an explicit step accurate; a step
+/// that reaches `maxIterations` keeps its state (a diverging iterate would blow up) and is counted
+/// in status(), so the caller can take smaller substeps. Viscosity is applied exactly,
+/// Strang-split as on the CPU. (The trapezoidal rule and MHD run on the CPU reference only.)
 
 #include <cstdint>
 
@@ -64,9 +65,10 @@ public:
     const DeviceBuffer& stateBuffer() const { return mState; }
     const DeviceBuffer& forceBuffer() const { return mForce; }
 
-    /// Records one step of size h (h may be negative: the midpoint rule is then reversible).
-    void recordStep(CommandSequence& sequence, double h) const;
-    /// Dispatches recordStep records (for sizing timed sequences).
+    /// Records one step of size h (h may be negative: the midpoint rule is then reversible) as
+    /// `substeps` steps of h / substeps.
+    void recordStep(CommandSequence& sequence, double h, int substeps = 1) const;
+    /// Dispatches recordStep records per substep (for sizing timed sequences).
     std::size_t dispatchesPerStep() const;
     /// The last step's convergence, read from the device after the submission.
     DeviceStepStatus status() const;

@@ -8,9 +8,11 @@
 namespace modeflow {
 namespace {
 
+constexpr int kMaxSubsteps = 16;
+
 /// Dispatches one step may record, for the timestamp pool: the midpoint iterations dominate.
 std::uint32_t maxDispatchesPerStep(const vulkan::ModalStepper& stepper) {
-    return std::uint32_t(stepper.dispatchesPerStep() + 64);
+    return std::uint32_t(kMaxSubsteps * stepper.dispatchesPerStep() + 64);
 }
 
 std::vector<double> widened(const std::vector<float>& values) {
@@ -70,7 +72,7 @@ void Simulation::recordStep(std::vector<std::size_t>& boundaries) {
         mProjection.record(mSequence, mModes, mForceDensity, mStepper.forceBuffer());
     }
     boundaries.push_back(mSequence.dispatchCount());
-    mStepper.recordStep(mSequence, dt);
+    mStepper.recordStep(mSequence, dt, mSubsteps);
     boundaries.push_back(mSequence.dispatchCount());
     mReconstruction.record(mSequence, mModes, mStepper.stateBuffer(), mFaceVelocity);
     boundaries.push_back(mSequence.dispatchCount());
@@ -96,7 +98,19 @@ FrameStats Simulation::advanceFrame() {
 
         const vulkan::DeviceStepStatus status = mStepper.status();
         stats.maxIterations = std::max(stats.maxIterations, status.iterations);
-        stats.unconvergedSteps += status.converged ? 0 : 1;
+        const int failed = status.unconvergedSteps - mUnconverged;
+        mUnconverged = status.unconvergedSteps;
+        stats.unconvergedSteps += failed;
+        // A failed substep kept its state (no blow-up); take smaller ones from now on, and go
+        // back to larger ones once the flow has calmed down for a while.
+        if (failed > 0) {
+            mSubsteps = std::min(2 * mSubsteps, kMaxSubsteps);
+            mEasySteps = 0;
+        } else if (mSubsteps > 1 && status.iterations <= 8 && ++mEasySteps >= 50) {
+            mSubsteps /= 2;
+            mEasySteps = 0;
+        }
+        stats.substeps = std::max(stats.substeps, mSubsteps);
         const std::vector<double>& times = mSequence.dispatchTimesMs();
         if (times.empty()) continue;
         const std::array<double*, 5> stages{&stats.forcesMs, &stats.modalMs, &stats.reconstructionMs,

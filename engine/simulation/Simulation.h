@@ -67,6 +67,11 @@ private:
     vulkan::SmokeAdvectionKernels mAdvection;
     vulkan::CommandSequence mSequence;
     std::vector<bool> mActiveEmitters;  ///< what the device's emitter list holds now
+    /// Modal substeps per step: doubled when an implicit solve fails to converge, halved again
+    /// after a long run of easy steps (see advanceFrame()).
+    int mSubsteps = 1;
+    int mEasySteps = 0;
+    int mUnconverged = 0;  ///< the stepper's count of failed substeps so far
     double mTime = 0.0;
 };
 

@@ -29,6 +29,10 @@ SimulationSettings SimulationSettings::fromScene(const SceneSpec& scene, const B
         sim.halfPrecisionBasis ? vulkan::ModePrecision::Float16 : vulkan::ModePrecision::Float32;
     for (const SourceSpec& source : scene.sources)
         settings.emitters.push_back(emitterFromSource(source));
+    if (scene.obstacles.size() > std::size_t(maxObstacles))
+        throw Error(scene.sourceFile.string() + ": " + std::to_string(scene.obstacles.size()) +
+                    " [[obstacle]] entries; the runtime takes at most " + std::to_string(maxObstacles));
+    for (const ObstacleSpec& obstacle : scene.obstacles) settings.obstacles.push_back({obstacle});
     return settings;
 }
 

@@ -40,6 +40,7 @@ struct FrameStats {
     int steps = 0;
     int maxIterations = 0;     ///< implicit schemes: most iterations a step took
     int unconvergedSteps = 0;  ///< steps whose implicit solve missed its tolerance
+    int substeps = 1;          ///< most modal substeps a step took (the device adapts them)
     /// Device time per stage over the frame, milliseconds (0 on the CPU reference or without
     /// timestamps): forces (force field + projection), modal step, reconstruction, moving
     /// obstacles (their correction and the reconstruction after it), advection.

@@ -20,6 +20,7 @@
 #include "precompute/scene/SceneLoader.h"
 #include "tools/modeflow/Commands.h"
 #include "tools/modeflow/DeviceOption.h"
+#include "tools/modeflow/FramePreview.h"
 #include "tools/modeflow/FrameProgress.h"
 #include "tools/modeflow/InitialState.h"
 
@@ -56,6 +57,8 @@ Command addRun(CLI::App& app) {
         std::string device = "vulkan";
         bool resume = false;
         bool half = false;
+        bool preview = false;
+        std::optional<int> previewEvery;
     };
     auto opts = std::make_shared<Options>();
     CLI::App* sub = app.add_subcommand("run", "Simulate a scene and write one OpenVDB file per frame");
@@ -65,6 +68,11 @@ Command addRun(CLI::App& app) {
     sub->add_option("--device", opts->device, kDeviceHelp);
     sub->add_flag("--resume", opts->resume, "continue an interrupted run from its last complete frame");
     sub->add_flag("--half", opts->half, "store VDB values as 16-bit floats");
+    sub->add_flag("--preview", opts->preview,
+                  "also write PNG pictures (NAME_0001.png; 3D scenes ray-marched) and a contact sheet");
+    sub->add_option("--preview-every", opts->previewEvery,
+                    "picture every K frames (default: about 24 pictures per run); implies --preview")
+        ->check(CLI::PositiveNumber);
     sub->add_option("--cache-dir", opts->cacheDir, "cache folder");
     return [sub, opts]() {
         if (!*sub) return -1;
@@ -111,6 +119,10 @@ Command addRun(CLI::App& app) {
 
         const MacGrid basisGrid = MacGrid::fromSpec(cache.grid);
         const bool temperature = simulatesTemperature(scene);
+        const bool previews = opts->preview || opts->previewEvery.has_value();
+        const int previewEvery = opts->previewEvery.value_or(std::max(1, frames / 24));
+        std::unique_ptr<FramePreview> preview;
+        if (previews) preview = std::make_unique<FramePreview>(simulator->smokeGrid(), mask, context.get());
         FrameProgress bar(first, frames, settings.stepsPerFrame);
         for (int frame = first + 1; frame <= frames; ++frame) {
             const FrameStats stats = simulator->advanceFrame();
@@ -129,11 +141,18 @@ Command addRun(CLI::App& app) {
             vdb.modeflowVersion = MODEFLOW_VERSION;
             vdb.options.halfFloat = opts->half;
             writeVdbFrame(out / frameFileName(scene.name, frame), vdb);
+            if (preview && (frame % previewEvery == 0 || frame == frames)) {
+                std::filesystem::path png = out / frameFileName(scene.name, frame);
+                preview->write(png.replace_extension(".png"), frame, smoke, temperature);
+            }
             writeCheckpoint(checkpointPath, {frame, simulator->time(), runHash, simulator->velocity(), smoke});
-            bar.frameDone(frame, simulator->time(),
-                          stats.unconvergedSteps ? std::to_string(stats.unconvergedSteps) + " unconverged steps" : "");
+            std::string detail;
+            if (stats.unconvergedSteps) detail += std::to_string(stats.unconvergedSteps) + " unconverged steps ";
+            if (stats.substeps > 1) detail += std::to_string(stats.substeps) + " modal substeps";
+            bar.frameDone(frame, simulator->time(), detail);
         }
         bar.finish();
+        if (preview) preview->writeContactSheet(out / (scene.name + "_contact.png"));
         if (context && context->validationMessageCount() > 0)
             throw Error("the Vulkan validation layer reported " + std::to_string(context->validationMessageCount()) +
                         " problems; the first: " + context->validationMessages().front());

@@ -1,0 +1,18 @@
+#pragma once
+/// @file Palette.h
+/// The colours the previews share, so 2D pictures, 3D renders and contact sheets look like one
+/// family: a dark blue-grey background, a lighter slate for walls, white-blue smoke warming
+/// towards orange where it is hot. Values are sRGB bytes.
+
+#include "engine/preview/Image.h"
+
+namespace modeflow::preview::palette {
+
+inline constexpr Rgba kBackground{14, 16, 22, 255};
+inline constexpr Rgba kWall{64, 70, 86, 255};
+inline constexpr Rgba kSmoke{236, 240, 250, 255};
+inline constexpr Rgba kHotSmoke{255, 168, 84, 255};
+inline constexpr Rgba kSheetBackground{6, 7, 10, 255};
+inline constexpr Rgba kLabel{250, 250, 250, 255};
+
+}  // namespace modeflow::preview::palette

@@ -1,0 +1,107 @@
+#include "engine/preview/VolumeRenderer.h"
+
+#include <algorithm>
+#include <array>
+// The generated header uses uint32_t without including <cstdint>.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "engine/format/Error.h"
+#include "engine/preview/VolumeView.h"
+#include "engine/vulkan/VulkanContext.h"
+#include "shaders/RenderVolumeParams.h"
+#include "shaders/render_volume.spv.h"
+
+namespace modeflow::preview {
+namespace {
+
+using vulkan::DeviceBuffer;
+
+const MacGrid& checkedGrid(const MacGrid& grid, std::size_t maskSize, int width, int height) {
+    volumeViewParams(grid, width, height, 1.0f);  // throws on a 2D grid or an empty picture
+    const std::int64_t cells = grid.cellCount();
+    if (cells >= (std::int64_t(1) << 32))
+        throw Error("3D preview: " + std::to_string(cells) +
+                    " smoke cells, at most 2^32 − 1 supported");
+    if (std::int64_t(width) * height >= (std::int64_t(1) << 32))
+        throw Error("3D preview: " + std::to_string(width) + " × " + std::to_string(height) +
+                    " pixels, at most 2^32 − 1 supported");
+    if (maskSize != 0 && maskSize != std::size_t(cells))
+        throw Error("3D preview: the fluid mask has " + std::to_string(maskSize) + " bytes for " +
+                    std::to_string(cells) + " smoke cells");
+    return grid;
+}
+
+/// The mask as the shader reads it: 4 bytes to a 32-bit word, zero-padded to whole words.
+DeviceBuffer maskBuffer(const vulkan::VulkanContext& context, std::span<const std::uint8_t> mask,
+                        std::size_t cells) {
+    std::vector<std::uint8_t> bytes(mask.begin(), mask.end());
+    if (bytes.empty()) bytes.assign(cells, 1);
+    bytes.resize((cells + 3) / 4 * 4, 0);
+    return DeviceBuffer::fromValues<std::uint8_t>(context, bytes, "volume preview mask");
+}
+
+}  // namespace
+
+VolumeRenderer::VolumeRenderer(const vulkan::VulkanContext& context, const MacGrid& smokeGrid,
+                               std::span<const std::uint8_t> fluidMask, int width, int height,
+                               std::uint32_t workgroupSize)
+    : mContext(context),
+      mGrid(checkedGrid(smokeGrid, fluidMask.size(), width, height)),
+      mWidth(width),
+      mHeight(height),
+      mKernel(context,
+              vulkan::ComputeKernelSpec{"render_volume", render_volume_spv, 5,
+                                        sizeof(shaders::RenderVolumeParams), workgroupSize}),
+      mMask(maskBuffer(context, fluidMask, std::size_t(smokeGrid.cellCount()))),
+      mExtinction(context, VkDeviceSize(smokeGrid.cellCount()) * sizeof(float),
+                  "volume preview extinction"),
+      mDepth(context, VkDeviceSize(smokeGrid.cellCount()) * sizeof(float),
+             "volume preview optical depth"),
+      mPixels(context, VkDeviceSize(width) * VkDeviceSize(height) * sizeof(std::uint32_t),
+              "volume preview picture", DeviceBuffer::Placement::HostVisible),
+      mSequence(context) {}
+
+void VolumeRenderer::record(vulkan::CommandSequence& sequence, const DeviceBuffer& density,
+                            float densityScale) const {
+    const std::int64_t cells = mGrid.cellCount();
+    if (density.bytes() < VkDeviceSize(cells) * sizeof(float))
+        throw Error("3D preview: density buffer \"" + density.name() + "\" holds " +
+                    std::to_string(density.bytes()) + " bytes, the smoke grid's " +
+                    std::to_string(cells) + " cells need " + std::to_string(cells * sizeof(float)));
+    shaders::RenderVolumeParams params = volumeViewParams(mGrid, mWidth, mHeight, densityScale);
+    const std::array<const DeviceBuffer*, 5> buffers{&density, &mMask, &mExtinction, &mDepth,
+                                                     &mPixels};
+    // Grid-stride loops in the shader: any item count fits in the largest group count.
+    const auto groups = [&](std::uint32_t items) {
+        const std::uint32_t size = mKernel.workgroupSize();
+        return std::min((items + size - 1) / size,
+                        mContext.properties().limits.maxComputeWorkGroupCount[0]);
+    };
+    params.stage = RENDER_VOLUME_STAGE_LIGHT;
+    params.itemCount = params.cellsX * params.cellsY;
+    sequence.dispatch(mKernel, buffers, params, groups(params.itemCount));
+    params.stage = RENDER_VOLUME_STAGE_IMAGE;
+    params.itemCount = params.width * params.height;
+    sequence.dispatch(mKernel, buffers, params, groups(params.itemCount));
+}
+
+Image VolumeRenderer::picture() const {
+    std::vector<std::uint32_t> words(std::size_t(mWidth) * std::size_t(mHeight));
+    mPixels.download<std::uint32_t>(words);
+    Image image(mWidth, mHeight);
+    // Red in the low byte: on a little-endian host the words already are RGBA bytes, but
+    // unpacking explicitly keeps this right on any host.
+    for (std::size_t p = 0; p < words.size(); ++p)
+        for (int c = 0; c < 4; ++c) image.rgba[4 * p + c] = std::uint8_t(words[p] >> (8 * c));
+    return image;
+}
+
+Image VolumeRenderer::render(const DeviceBuffer& density, float densityScale) {
+    record(mSequence, density, densityScale);
+    mSequence.submitAndWait();
+    return picture();
+}
+
+}  // namespace modeflow::preview

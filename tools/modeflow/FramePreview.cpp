@@ -1,0 +1,71 @@
+#include "tools/modeflow/FramePreview.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "engine/preview/ContactSheet.h"
+#include "engine/preview/PngWriter.h"
+#include "engine/preview/SmokeImage2D.h"
+#include "engine/preview/VolumeReference.h"
+#include "engine/preview/VolumeRenderer.h"
+#include "engine/vulkan/DeviceBuffer.h"
+
+namespace modeflow::cli {
+namespace {
+
+constexpr int kVolumeSize = 512;
+
+/// Optical depth across the box at the 99th percentile of the smoke: dense enough to read as
+/// smoke, thin enough to see into it, whatever the scene's emission rates.
+float volumeScale(const std::vector<float>& density) {
+    std::vector<float> positive;
+    for (float d : density)
+        if (d > 0.0f) positive.push_back(d);
+    if (positive.empty()) return 1.0f;
+    const auto at = positive.begin() + std::ptrdiff_t(0.99 * double(positive.size() - 1));
+    std::nth_element(positive.begin(), at, positive.end());
+    return 6.0f / std::max(*at, 1e-6f);
+}
+
+}  // namespace
+
+FramePreview::FramePreview(const MacGrid& smokeGrid, std::span<const std::uint8_t> fluidMask,
+                           const vulkan::VulkanContext* context)
+    : mGrid(smokeGrid), mMask(fluidMask.begin(), fluidMask.end()), mContext(context) {
+    if (mGrid.dim == 3 && context)
+        mRenderer = std::make_unique<preview::VolumeRenderer>(*context, mGrid, mMask, kVolumeSize, kVolumeSize);
+}
+
+FramePreview::~FramePreview() = default;
+
+void FramePreview::write(const std::filesystem::path& file, int frame, const SmokeFields& smoke, bool temperature) {
+    preview::Image picture;
+    if (mGrid.dim == 2) {
+        picture = preview::renderSmoke2D(mGrid, std::span<const double>(smoke.density),
+                                         temperature ? std::span<const double>(smoke.temperature)
+                                                     : std::span<const double>(),
+                                         mMask);
+    } else {
+        const std::vector<float> density(smoke.density.begin(), smoke.density.end());
+        const float scale = volumeScale(density);
+        if (mRenderer) {
+            const vulkan::DeviceBuffer buffer = vulkan::DeviceBuffer::fromValues<float>(*mContext, density, "preview density");
+            picture = mRenderer->render(buffer, scale);
+        } else {
+            picture = preview::renderVolumeReference(mGrid, density, mMask, kVolumeSize, kVolumeSize, scale);
+        }
+    }
+    preview::writePng(file, picture);
+    mPictures.push_back(std::move(picture));
+    mFrames.push_back(frame);
+}
+
+void FramePreview::writeContactSheet(const std::filesystem::path& file) const {
+    if (mPictures.empty()) return;
+    preview::ContactSheetOptions options;
+    options.labels = mFrames;
+    const int columns = std::min<int>(6, int(mPictures.size()));
+    preview::writePng(file, preview::contactSheet(mPictures, columns, options));
+}
+
+}  // namespace modeflow::cli
