@@ -1,6 +1,7 @@
-/* SmokeAdvectParams.h: push constants and emitter records of smoke_advect.comp, shared by C++
-   and GLSL (ASCII, no C++-only syntax outside the __cplusplus blocks, so glslang reads it too).
-   Scalars only, padded to multiples of 16 bytes, so the std430 layouts and the C++ layouts agree.
+/* SmokeAdvectParams.h: push constants of smoke_face_pairs.comp and the smoke_advect_* kernels, and
+   the layout of the buffers SmokeState keeps for them, shared by C++ and GLSL (ASCII, no C++-only
+   syntax outside the __cplusplus blocks, so glslang reads it too). Scalars only, padded to
+   multiples of 16 bytes, so the std430 layouts and the C++ layouts agree.
    CPU reference: engine/field/SmokeAdvection. */
 #ifndef MODEFLOW_SHADERS_SMOKE_ADVECT_PARAMS_H
 #define MODEFLOW_SHADERS_SMOKE_ADVECT_PARAMS_H
@@ -11,68 +12,54 @@ namespace modeflow::shaders {
 using uint = std::uint32_t;
 #endif
 
-/* What one dispatch of smoke_advect.comp computes (`stage`). */
-#define SMOKE_STAGE_SEMI_LAGRANGIAN 0u   /* out = SL(in) + emitters */
-#define SMOKE_STAGE_MACCORMACK_FORWARD 1u  /* hat = SL(in) */
-#define SMOKE_STAGE_MACCORMACK_CORRECT 2u  /* out = clamp(hat + (in - SL_-dt(hat)) / 2) + emitters */
+/* What one smoke_advect kernel computes (SMOKE_STAGE, fixed at compile time). */
+#define SMOKE_STAGE_SEMI_LAGRANGIAN 0     /* out = SL(in) + emitters */
+#define SMOKE_STAGE_MACCORMACK_FORWARD 1  /* hat = SL(in), and the record of the cell */
+#define SMOKE_STAGE_MACCORMACK_CORRECT 2  /* out = clamp(hat + (in - SL_-dt(hat)) / 2) + emitters */
+
+/* A fluid cell of the list the advection runs over: one 64-bit word, x | y << 16 in the low
+   half, z in the high half (so at most 65535 cells along x and y). */
+#define SMOKE_CELL_AXIS_LIMIT 65535u
+
+/* The stencil mask: one byte per cell, 4 to a 32-bit word; bit cx + 2 cy + 4 cz of the byte of
+   cell (i, j, k) is set when cell (i + cx, j + cy, k + cz) exists and is fluid, so one load gives
+   the fluid flags of a whole trilinear stencil whose low corner is (i, j, k). */
+
+/* MacCormack's record of a fluid cell (list order), written by the forward stage for the
+   correction: 64-bit words (lo.density, lo.temperature), (hi.density, hi.temperature) over the
+   fluid cells of the forward stencil (lo > hi: none), then the backward trace's end point
+   (x, y) and, in 3D, (z, 0). */
+#define SMOKE_RECORD_WORDS 4u
 
 struct SmokeAdvectParams {
     uint cellsX; /* smoke grid cells per axis (1 on the unused axis of a 2D grid) */
     uint cellsY;
     uint cellsZ;
-    uint cellCount;
-    uint basisX; /* basis (velocity) grid cells per axis */
+    uint fluidCount; /* entries of the fluid cell list */
+    uint basisX;     /* basis (velocity) grid cells per axis */
     uint basisY;
     uint basisZ;
-    uint dim;
+    uint scale; /* smoke cells per basis cell along each used axis */
     uint faceOffsetY; /* number of the first normal-y and normal-z face (MacGrid::faceOffset) */
     uint faceOffsetZ;
-    uint scale; /* smoke cells per basis cell along each used axis */
-    uint stage;
-    uint firstCell; /* this dispatch handles cells firstCell ... firstCell + invocations - 1 */
-    uint emitterCount;
+    uint firstCell; /* this dispatch handles list entries firstCell ... firstCell + invocations - 1 */
     uint pad0;
-    uint pad1;
     float stepX; /* dt / smoke spacing per axis (0 on an unused axis): velocity to cells per step */
     float stepY;
     float stepZ;
     float dt;
-    float originX; /* smoke grid box corner and spacing, for the emitters' world coordinates */
-    float originY;
-    float originZ;
-    float pad2;
-    float spacingX;
-    float spacingY;
-    float spacingZ;
-    float pad3;
 };
 
-#define SMOKE_EMITTER_BALL 0u
-#define SMOKE_EMITTER_BOX 1u
-
-/* One engine/field/SmokeEmitter in float32. */
-struct SmokeEmitterData {
-    float centreX;
-    float centreY;
-    float centreZ;
-    float radius;
-    float minX;
-    float minY;
-    float minZ;
-    float densityRate;
-    float maxX;
-    float maxY;
-    float maxZ;
-    float temperatureRate;
-    uint shape;
+struct SmokeFacePairsParams {
+    uint faceCount; /* MacGrid::faceTotal of the basis grid */
+    uint firstFace; /* even: this dispatch handles faces firstFace ... firstFace + 2 invocations - 1 */
     uint pad0;
     uint pad1;
-    uint pad2;
 };
 
 #ifdef __cplusplus
-static_assert(sizeof(SmokeAdvectParams) == 112, "push constants are scalars padded to 16 bytes");
-static_assert(sizeof(SmokeEmitterData) == 64, "emitter records are scalars padded to 16 bytes");
+static_assert(sizeof(SmokeAdvectParams) == 64, "push constants are scalars padded to 16 bytes");
+static_assert(sizeof(SmokeFacePairsParams) == 16, "push constants are scalars padded to 16 bytes");
 }  // namespace modeflow::shaders
 #endif
 

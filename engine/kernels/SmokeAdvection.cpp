@@ -13,10 +13,24 @@
 #include "engine/vulkan/DeviceBuffer.h"
 #include "engine/vulkan/VulkanContext.h"
 #include "shaders/SmokeAdvectParams.h"
-#include "shaders/smoke_advect.spv.h"
+#include "shaders/smoke_advect_correct_2d.spv.h"
+#include "shaders/smoke_advect_correct_3d.spv.h"
+#include "shaders/smoke_advect_forward_2d.spv.h"
+#include "shaders/smoke_advect_forward_3d.spv.h"
+#include "shaders/smoke_advect_sl_2d.spv.h"
+#include "shaders/smoke_advect_sl_3d.spv.h"
+#include "shaders/smoke_face_pairs.spv.h"
 
 namespace modeflow::vulkan {
 namespace {
+
+const VulkanContext& requireInt64(const VulkanContext& context) {
+    if (!context.hasShaderInt64())
+        throw Error("Vulkan device " + context.deviceName() +
+                    " lacks 64-bit integers in shaders (shaderInt64), which the smoke advection needs; run with "
+                    "--device cpu");
+    return context;
+}
 
 shaders::SmokeAdvectParams stepParams(const SmokeState& state, double dt) {
     const MacGrid& basis = state.basisGrid();
@@ -25,35 +39,63 @@ shaders::SmokeAdvectParams stepParams(const SmokeState& state, double dt) {
     p.cellsX = std::uint32_t(smoke.cells[0]);
     p.cellsY = std::uint32_t(smoke.cells[1]);
     p.cellsZ = std::uint32_t(smoke.cells[2]);
-    p.cellCount = std::uint32_t(smoke.cellCount());
+    p.fluidCount = state.fluidCellCount();
     p.basisX = std::uint32_t(basis.cells[0]);
     p.basisY = std::uint32_t(basis.cells[1]);
     p.basisZ = std::uint32_t(basis.cells[2]);
-    p.dim = std::uint32_t(basis.dim);
+    p.scale = std::uint32_t(state.scale());
     p.faceOffsetY = std::uint32_t(basis.faceOffset(1));
     p.faceOffsetZ = std::uint32_t(basis.faceOffset(2));
-    p.scale = std::uint32_t(state.scale());
-    p.emitterCount = state.emitterCount();
     // Velocity times dt / spacing: smoke cells per step, as in the CPU reference.
     p.stepX = float(dt / smoke.spacing[0]);
     p.stepY = float(dt / smoke.spacing[1]);
     p.stepZ = smoke.dim == 3 ? float(dt / smoke.spacing[2]) : 0.0f;
     p.dt = float(dt);
-    p.originX = float(smoke.origin[0]);
-    p.originY = float(smoke.origin[1]);
-    p.originZ = float(smoke.origin[2]);
-    p.spacingX = float(smoke.spacing[0]);
-    p.spacingY = float(smoke.spacing[1]);
-    p.spacingZ = float(smoke.spacing[2]);
     return p;
+}
+
+shaders::SmokeFacePairsParams pairParams(const MacGrid& basis) {
+    shaders::SmokeFacePairsParams p{};
+    p.faceCount = std::uint32_t(basis.faceTotal());
+    return p;
+}
+
+/// One of the smoke_advect_<stage>_<dim>d kernels (bindings 0-8 of shaders/SmokeAdvect.glsl).
+ComputeKernel advectKernel(const VulkanContext& context, const char* name, std::span<const std::uint32_t> spirv,
+                           std::uint32_t workgroupSize) {
+    return ComputeKernel(context, ComputeKernelSpec{name, spirv, 9, sizeof(shaders::SmokeAdvectParams), workgroupSize});
 }
 
 }  // namespace
 
 SmokeAdvectionKernels::SmokeAdvectionKernels(const VulkanContext& context, std::uint32_t workgroupSize)
-    : mContext(context),
-      mKernel(context, ComputeKernelSpec{"smoke_advect", smoke_advect_spv, 9, sizeof(shaders::SmokeAdvectParams),
-                                         workgroupSize}) {}
+    : mContext(requireInt64(context)),
+      mFacePairs(context, ComputeKernelSpec{"smoke_face_pairs", smoke_face_pairs_spv, 3,
+                                            sizeof(shaders::SmokeFacePairsParams), workgroupSize}),
+      mStages{advectKernel(context, "smoke_advect_sl_2d", smoke_advect_sl_2d_spv, workgroupSize),
+              advectKernel(context, "smoke_advect_forward_2d", smoke_advect_forward_2d_spv, workgroupSize),
+              advectKernel(context, "smoke_advect_correct_2d", smoke_advect_correct_2d_spv, workgroupSize),
+              advectKernel(context, "smoke_advect_sl_3d", smoke_advect_sl_3d_spv, workgroupSize),
+              advectKernel(context, "smoke_advect_forward_3d", smoke_advect_forward_3d_spv, workgroupSize),
+              advectKernel(context, "smoke_advect_correct_3d", smoke_advect_correct_3d_spv, workgroupSize)} {}
+
+const ComputeKernel& SmokeAdvectionKernels::stageKernel(std::uint32_t stage, int dim) const {
+    return mStages[std::size_t(stage) + (dim == 3 ? 3 : 0)];
+}
+
+template <typename Params>
+void SmokeAdvectionKernels::dispatchAll(CommandSequence& sequence, const ComputeKernel& kernel,
+                                        std::span<const DeviceBuffer* const> buffers, Params& params,
+                                        std::uint32_t Params::*first, std::int64_t count,
+                                        std::uint32_t firstScale) const {
+    const std::int64_t groupSize = kernel.workgroupSize();
+    const std::int64_t perDispatch = std::int64_t(mContext.properties().limits.maxComputeWorkGroupCount[0]) * groupSize;
+    for (std::int64_t start = 0; start < count; start += perDispatch) {
+        params.*first = std::uint32_t(start) * firstScale;
+        const std::int64_t chunk = std::min(perDispatch, count - start);
+        sequence.dispatch(kernel, buffers, params, std::uint32_t((chunk + groupSize - 1) / groupSize));
+    }
+}
 
 void SmokeAdvectionKernels::record(CommandSequence& sequence, SmokeState& state, const DeviceBuffer& velocity,
                                    double dt, AdvectionScheme scheme) const {
@@ -67,28 +109,26 @@ void SmokeAdvectionKernels::record(CommandSequence& sequence, SmokeState& state,
     if (cells >= (std::int64_t(1) << 32))
         throw Error("smoke_advect: " + std::to_string(cells) + " smoke cells, at most 2^32 - 1 supported");
 
+    shaders::SmokeFacePairsParams pairs = pairParams(state.basisGrid());
+    // Bindings 0-2 of shaders/smoke_face_pairs.comp: the velocity as words and as floats.
+    const std::array<const DeviceBuffer*, 3> pairBuffers{&velocity, &velocity, &state.facePairs()};
+    dispatchAll(sequence, mFacePairs, pairBuffers, pairs, &shaders::SmokeFacePairsParams::firstFace, (faces + 1) / 2,
+                2);
+
     shaders::SmokeAdvectParams params = stepParams(state, dt);
-    // Bindings 0-8 of smoke_advect.comp.
-    const std::array<const DeviceBuffer*, 9> buffers{&velocity,           &state.mask(),
-                                                     &state.emitters(),   &state.density(),
-                                                     &state.temperature(), &state.densityHat(),
-                                                     &state.temperatureHat(), &state.nextDensity(),
-                                                     &state.nextTemperature()};
-    const std::int64_t groupSize = mKernel.workgroupSize();
-    const std::int64_t perDispatch = std::int64_t(mContext.properties().limits.maxComputeWorkGroupCount[0]) * groupSize;
-    const auto dispatchAll = [&](std::uint32_t stage) {
-        params.stage = stage;
-        for (std::int64_t first = 0; first < cells; first += perDispatch) {
-            params.firstCell = std::uint32_t(first);
-            const std::int64_t count = std::min(perDispatch, cells - first);
-            sequence.dispatch(mKernel, buffers, params, std::uint32_t((count + groupSize - 1) / groupSize));
-        }
+    // Bindings 0-8 of shaders/SmokeAdvect.glsl.
+    const std::array<const DeviceBuffer*, 9> buffers{&state.facePairs(), &state.fluidCells(), &state.stencilMask(),
+                                                     &state.emission(),  &state.fields(),     &state.hat(),
+                                                     &state.record(),    &state.nextFields(), &state.temperature()};
+    const auto stage = [&](std::uint32_t s) {
+        dispatchAll(sequence, stageKernel(s, state.smokeGrid().dim), buffers, params,
+                    &shaders::SmokeAdvectParams::firstCell, state.fluidCellCount());
     };
     if (scheme == AdvectionScheme::SemiLagrangian) {
-        dispatchAll(SMOKE_STAGE_SEMI_LAGRANGIAN);
+        stage(SMOKE_STAGE_SEMI_LAGRANGIAN);
     } else {
-        dispatchAll(SMOKE_STAGE_MACCORMACK_FORWARD);
-        dispatchAll(SMOKE_STAGE_MACCORMACK_CORRECT);
+        stage(SMOKE_STAGE_MACCORMACK_FORWARD);
+        stage(SMOKE_STAGE_MACCORMACK_CORRECT);
     }
     state.flip();
 }

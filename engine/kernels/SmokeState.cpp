@@ -1,7 +1,7 @@
 #include "engine/kernels/SmokeState.h"
 
+#include <algorithm>
 #include <string>
-#include <vector>
 
 #include "engine/format/Error.h"
 #include "shaders/SmokeAdvectParams.h"
@@ -9,27 +9,69 @@
 namespace modeflow::vulkan {
 namespace {
 
-DeviceBuffer fieldBuffer(const VulkanContext& context, const MacGrid& smoke, const std::string& name) {
-    DeviceBuffer buffer(context, VkDeviceSize(smoke.cellCount()) * sizeof(float), name);
-    buffer.upload<float>(std::vector<float>(std::size_t(smoke.cellCount()), 0.0f));
-    return buffer;
-}
-
-/// The mask as bytes padded to whole 32-bit words (the shader reads 4 cells a word).
-DeviceBuffer maskBuffer(const VulkanContext& context, const MacGrid& smoke, std::span<const std::uint8_t> mask) {
+/// The mask as 0 and 1, after checking its size and the grid's extent.
+std::vector<std::uint8_t> fluidFlags(const MacGrid& smoke, std::span<const std::uint8_t> mask) {
     if (mask.size() != std::size_t(smoke.cellCount()))
         throw Error("smoke state: the fluid mask has " + std::to_string(mask.size()) + " entries, the smoke grid " +
                     std::to_string(smoke.cellCount()) + " cells");
-    std::vector<std::uint8_t> bytes((mask.size() + 3) / 4 * 4, 0);
-    for (std::size_t c = 0; c < mask.size(); ++c) bytes[c] = mask[c] != 0;
-    return DeviceBuffer::fromValues<std::uint8_t>(context, bytes, "smoke fluid mask");
+    if (smoke.cells[0] > int(SMOKE_CELL_AXIS_LIMIT) || smoke.cells[1] > int(SMOKE_CELL_AXIS_LIMIT))
+        throw Error("smoke state: the smoke grid has " + std::to_string(smoke.cells[0]) + " x " +
+                    std::to_string(smoke.cells[1]) + " cells along x and y, the device kernels take at most " +
+                    std::to_string(SMOKE_CELL_AXIS_LIMIT) + " along each");
+    std::vector<std::uint8_t> flags(mask.size());
+    for (std::size_t c = 0; c < mask.size(); ++c) flags[c] = mask[c] != 0;
+    return flags;
 }
 
-shaders::SmokeEmitterData toDevice(const SmokeEmitter& e) {
-    return {float(e.centre[0]), float(e.centre[1]), float(e.centre[2]), float(e.radius),
-            float(e.min[0]),    float(e.min[1]),    float(e.min[2]),    float(e.densityRate),
-            float(e.max[0]),    float(e.max[1]),    float(e.max[2]),    float(e.temperatureRate),
-            e.shape == EmitterShape::Box ? SMOKE_EMITTER_BOX : SMOKE_EMITTER_BALL, 0, 0, 0};
+std::vector<std::int64_t> fluidIndices(const std::vector<std::uint8_t>& fluid) {
+    std::vector<std::int64_t> indices;
+    for (std::size_t c = 0; c < fluid.size(); ++c)
+        if (fluid[c]) indices.push_back(std::int64_t(c));
+    return indices;
+}
+
+/// A buffer of `bytes` bytes holding zeros, at least one 64-bit word (buffers may not be empty).
+DeviceBuffer zeroBuffer(const VulkanContext& context, std::size_t bytes, const std::string& name) {
+    const std::vector<std::uint32_t> zeros(std::max<std::size_t>((bytes + 3) / 4, 2), 0);
+    return DeviceBuffer::fromValues<std::uint32_t>(context, zeros, name);
+}
+
+/// Bytes padded to whole 32-bit words (the shaders read 4 cells a word).
+DeviceBuffer byteBuffer(const VulkanContext& context, std::vector<std::uint8_t> bytes, const std::string& name) {
+    bytes.resize((bytes.size() + 3) / 4 * 4 + (bytes.empty() ? 4 : 0), 0);
+    return DeviceBuffer::fromValues<std::uint8_t>(context, bytes, name);
+}
+
+/// Per cell: bit cx + 2 cy + 4 cz set when cell (x + cx, y + cy, z + cz) exists and is fluid.
+std::vector<std::uint8_t> stencilFlags(const MacGrid& smoke, const std::vector<std::uint8_t>& fluid) {
+    std::vector<std::uint8_t> bits(fluid.size(), 0);
+    const auto fluidAt = [&](int x, int y, int z) {
+        return x < smoke.cells[0] && y < smoke.cells[1] && z < smoke.cells[2] && fluid[smoke.cellIndex(x, y, z)];
+    };
+    for (int z = 0; z < smoke.cells[2]; ++z)
+        for (int y = 0; y < smoke.cells[1]; ++y)
+            for (int x = 0; x < smoke.cells[0]; ++x) {
+                std::uint8_t b = 0;
+                for (int corner = 0; corner < 8; ++corner)
+                    if (fluidAt(x + (corner & 1), y + (corner >> 1 & 1), z + (corner >> 2)))
+                        b = std::uint8_t(b | (1u << corner));
+                bits[smoke.cellIndex(x, y, z)] = b;
+            }
+    return bits;
+}
+
+/// The fluid cell list: x | y << 16 and z per entry, one 64-bit word.
+DeviceBuffer cellList(const VulkanContext& context, const MacGrid& smoke, const std::vector<std::int64_t>& indices) {
+    std::vector<std::uint32_t> words(std::max<std::size_t>(2 * indices.size(), 2), 0);
+    for (std::size_t e = 0; e < indices.size(); ++e) {
+        const std::int64_t c = indices[e];
+        const std::int64_t row = c / smoke.cells[0];
+        const auto x = std::uint32_t(c % smoke.cells[0]), y = std::uint32_t(row % smoke.cells[1]),
+                   z = std::uint32_t(row / smoke.cells[1]);
+        words[2 * e] = x | y << 16;
+        words[2 * e + 1] = z;
+    }
+    return DeviceBuffer::fromValues<std::uint32_t>(context, words, "smoke fluid cells");
 }
 
 }  // namespace
@@ -39,38 +81,59 @@ SmokeState::SmokeState(const VulkanContext& context, const MacGrid& basisGrid, i
     : mBasis(basisGrid),
       mScale(scale),
       mSmoke(basisGrid.refined(scale)),
-      mDensity{fieldBuffer(context, mSmoke, "smoke density 0"), fieldBuffer(context, mSmoke, "smoke density 1")},
-      mTemperature{fieldBuffer(context, mSmoke, "smoke temperature 0"),
-                   fieldBuffer(context, mSmoke, "smoke temperature 1")},
-      mDensityHat(fieldBuffer(context, mSmoke, "MacCormack density")),
-      mTemperatureHat(fieldBuffer(context, mSmoke, "MacCormack temperature")),
-      mMask(maskBuffer(context, mSmoke, fluidMask)),
-      mEmitters(context, maxSmokeEmitters * sizeof(shaders::SmokeEmitterData), "smoke emitters") {}
+      mFluid(fluidFlags(mSmoke, fluidMask)),
+      mFluidIndex(fluidIndices(mFluid)),
+      mFluidCount(std::uint32_t(mFluidIndex.size())),
+      mFields{zeroBuffer(context, std::size_t(mSmoke.cellCount()) * 8, "smoke fields 0"),
+              zeroBuffer(context, std::size_t(mSmoke.cellCount()) * 8, "smoke fields 1")},
+      mTemperature(zeroBuffer(context, std::size_t(mSmoke.cellCount()) * 4, "smoke temperature")),
+      mMask(byteBuffer(context, mFluid, "smoke fluid mask")),
+      mFluidCells(cellList(context, mSmoke, mFluidIndex)),
+      mEmission(zeroBuffer(context, std::size_t(mFluidCount) * 8, "smoke emission rates")),
+      mStencilMask(byteBuffer(context, stencilFlags(mSmoke, mFluid), "smoke stencil mask")),
+      mHat(zeroBuffer(context, std::size_t(mSmoke.cellCount()) * 8, "MacCormack fields")),
+      mRecord(zeroBuffer(context, std::size_t(mFluidCount) * SMOKE_RECORD_WORDS * 8, "MacCormack record")),
+      mFacePairs(zeroBuffer(context, std::size_t(mBasis.faceTotal() + 1) / 2 * 16, "smoke face pairs")) {}
 
 void SmokeState::upload(std::span<const float> density, std::span<const float> temperature) {
     if (density.size() != std::size_t(cellCount()) || temperature.size() != std::size_t(cellCount()))
         throw Error("smoke state upload: density and temperature need " + std::to_string(cellCount()) +
                     " values each, got " + std::to_string(density.size()) + " and " +
                     std::to_string(temperature.size()));
-    mDensity[mCurrent].upload(density);
-    mTemperature[mCurrent].upload(temperature);
+    std::vector<float> pairs(2 * density.size(), 0.0f), alone(temperature.size(), 0.0f);
+    for (const std::int64_t c : mFluidIndex) {
+        pairs[2 * c] = density[c];
+        pairs[2 * c + 1] = alone[c] = temperature[c];
+    }
+    mFields[mCurrent].upload<float>(pairs);
+    mTemperature.upload<float>(alone);
 }
 
 void SmokeState::download(std::span<float> densityOut, std::span<float> temperatureOut) const {
     if (densityOut.size() != std::size_t(cellCount()) || temperatureOut.size() != std::size_t(cellCount()))
         throw Error("smoke state download: density and temperature need room for " + std::to_string(cellCount()) +
                     " values each");
-    density().download(densityOut);
-    temperature().download(temperatureOut);
+    std::vector<float> pairs(2 * densityOut.size());
+    fields().download<float>(pairs);
+    for (std::size_t c = 0; c < densityOut.size(); ++c) {
+        densityOut[c] = pairs[2 * c];
+        temperatureOut[c] = pairs[2 * c + 1];
+    }
 }
 
 void SmokeState::setEmitters(std::span<const SmokeEmitter> emitters) {
     if (emitters.size() > std::size_t(maxSmokeEmitters))
         throw Error("smoke: " + std::to_string(emitters.size()) + " emitters, the device step takes at most " +
                     std::to_string(maxSmokeEmitters));
-    std::vector<shaders::SmokeEmitterData> data;
-    for (const SmokeEmitter& e : emitters) data.push_back(toDevice(e));
-    mEmitters.upload<shaders::SmokeEmitterData>(data);
+    // The rates per unit time: the reference's emitters over a step of 1.
+    std::vector<double> density(mFluid.size(), 0.0), temperature(mFluid.size(), 0.0);
+    applyEmitters(mSmoke, mFluid, emitters, 1.0, density, temperature);
+    std::vector<float> rates(std::max<std::size_t>(2 * mFluidIndex.size(), 2), 0.0f);
+    for (std::size_t e = 0; e < mFluidIndex.size(); ++e) {
+        rates[2 * e] = float(density[mFluidIndex[e]]);
+        rates[2 * e + 1] = float(temperature[mFluidIndex[e]]);
+    }
+    mEmission.upload<float>(rates);
     mEmitterCount = std::uint32_t(emitters.size());
 }
 

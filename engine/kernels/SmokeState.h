@@ -1,15 +1,20 @@
 #pragma once
 /// @file SmokeState.h
 /// The smoke on the device: density and temperature as float32 ping-pong buffers on the smoke
-/// grid (basisGrid.refined(scale)), MacCormack's intermediate fields, the fluid mask and the
-/// emitters. SmokeAdvectionKernels::record() reads the current fields, writes the others and
-/// flips: after recording, current() names what the step will have written, so several steps
-/// can be recorded into one submission with no host round trip. Read the fields back only after
-/// the submission's fence (CommandSequence::submitAndWait()).
+/// grid (basisGrid.refined(scale)), the fluid mask, the emitters, and what the advection kernels
+/// read and write on the way (layouts: shaders/SmokeAdvectParams.h; why: shaders/SmokeAdvect.glsl).
+/// SmokeAdvectionKernels::record() reads the current fields, writes the others and flips: after
+/// recording, current() names what the step will have written, so several steps can be recorded
+/// into one submission with no host round trip. Read the fields back only after the submission's
+/// fence (CommandSequence::submitAndWait()).
+///
+/// Cells outside the fluid mask are 0 in every field at all times: upload() drops what it is
+/// given there, and the kernels never write them.
 
 #include <array>
 #include <cstdint>
 #include <span>
+#include <vector>
 
 #include "engine/field/MacGrid.h"
 #include "engine/field/SmokeEmitter.h"
@@ -22,8 +27,8 @@ class VulkanContext;
 class SmokeState {
 public:
     /// Fields start at 0. `fluidMask`: one entry per smoke cell, non-zero inside Ω.
-    /// @throw modeflow::Error when scale < 1, the mask has the wrong size, or a buffer would
-    /// exceed the device's storage buffer range.
+    /// @throw modeflow::Error when scale < 1, the mask has the wrong size, the smoke grid has more
+    /// than 65535 cells along x or y, or a buffer would exceed the device's storage buffer range.
     SmokeState(const VulkanContext& context, const MacGrid& basisGrid, int scale,
                std::span<const std::uint8_t> fluidMask);
 
@@ -31,26 +36,40 @@ public:
     const MacGrid& smokeGrid() const { return mSmoke; }
     int scale() const { return mScale; }
     std::int64_t cellCount() const { return mSmoke.cellCount(); }
+    /// Cells inside Ω: the advection's invocations.
+    std::uint32_t fluidCellCount() const { return mFluidCount; }
 
-    /// Replaces the current fields (one value per smoke cell each). Between submissions only.
+    /// Replaces the current fields (one value per smoke cell each; cells outside Ω become 0).
+    /// Between submissions only.
     /// @throw modeflow::Error on a wrong size.
     void upload(std::span<const float> density, std::span<const float> temperature);
     /// Copies the current fields out. After the writing submission's fence only.
     void download(std::span<float> densityOut, std::span<float> temperatureOut) const;
 
-    /// The emitters of the following steps (float32 on the device). Between submissions only.
+    /// The emitters of the following steps: their rates, summed per fluid cell in double
+    /// precision with the CPU reference's inside test (applyEmitters), go to the device as
+    /// float32. Between submissions only.
     /// @throw modeflow::Error when there are more than maxSmokeEmitters.
     void setEmitters(std::span<const SmokeEmitter> emitters);
     std::uint32_t emitterCount() const { return mEmitterCount; }
 
-    const DeviceBuffer& density() const { return mDensity[mCurrent]; }
-    const DeviceBuffer& temperature() const { return mTemperature[mCurrent]; }
-    const DeviceBuffer& nextDensity() const { return mDensity[1 - mCurrent]; }
-    const DeviceBuffer& nextTemperature() const { return mTemperature[1 - mCurrent]; }
-    const DeviceBuffer& densityHat() const { return mDensityHat; }
-    const DeviceBuffer& temperatureHat() const { return mTemperatureHat; }
+    /// Density and temperature interleaved, (density, temperature) per cell: now and next.
+    const DeviceBuffer& fields() const { return mFields[mCurrent]; }
+    const DeviceBuffer& nextFields() const { return mFields[1 - mCurrent]; }
+    /// The current temperature alone, one float per cell (e.g. for ForceFieldKernel).
+    const DeviceBuffer& temperature() const { return mTemperature; }
+    /// The fluid mask, one byte per cell packed four to a 32-bit word.
     const DeviceBuffer& mask() const { return mMask; }
-    const DeviceBuffer& emitters() const { return mEmitters; }
+
+    /// Buffers of the advection kernels (shaders/SmokeAdvectParams.h gives their layouts): the
+    /// fluid cells' list and their emitters' rates (list order), the stencil mask, MacCormack's
+    /// intermediate fields and per-cell record, and the basis velocity as face pairs.
+    const DeviceBuffer& fluidCells() const { return mFluidCells; }
+    const DeviceBuffer& emission() const { return mEmission; }
+    const DeviceBuffer& stencilMask() const { return mStencilMask; }
+    const DeviceBuffer& hat() const { return mHat; }
+    const DeviceBuffer& record() const { return mRecord; }
+    const DeviceBuffer& facePairs() const { return mFacePairs; }
 
     /// Makes the next fields current (SmokeAdvectionKernels::record() calls it).
     void flip() { mCurrent = 1 - mCurrent; }
@@ -59,12 +78,18 @@ private:
     MacGrid mBasis;
     int mScale;
     MacGrid mSmoke;
-    std::array<DeviceBuffer, 2> mDensity;
-    std::array<DeviceBuffer, 2> mTemperature;
-    DeviceBuffer mDensityHat;
-    DeviceBuffer mTemperatureHat;
+    std::vector<std::uint8_t> mFluid;       ///< the mask as 0 and 1, for setEmitters
+    std::vector<std::int64_t> mFluidIndex;  ///< cellIndex of each fluid cell, list order
+    std::uint32_t mFluidCount = 0;
+    std::array<DeviceBuffer, 2> mFields;
+    DeviceBuffer mTemperature;
     DeviceBuffer mMask;
-    DeviceBuffer mEmitters;
+    DeviceBuffer mFluidCells;
+    DeviceBuffer mEmission;
+    DeviceBuffer mStencilMask;
+    DeviceBuffer mHat;
+    DeviceBuffer mRecord;
+    DeviceBuffer mFacePairs;
     std::uint32_t mEmitterCount = 0;
     int mCurrent = 0;
 };

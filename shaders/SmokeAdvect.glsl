@@ -1,0 +1,170 @@
+/* SmokeAdvect.glsl: one smoke advection step of density and temperature together, float32
+   (DESIGN section 4; CPU reference engine/field/SmokeAdvection.cpp, whose comments give the
+   reasons for each rule), the body of the smoke_advect_<stage>_<dim>d.comp kernels, which define
+   SMOKE_STAGE (SmokeAdvectParams.h) and SMOKE_DIM:
+
+     semi-Lagrangian:  out = SL(in) + emitters                                  (one dispatch)
+     MacCormack:       hat = SL(in)                                             (forward)
+                       out = clamp(hat + (in - SL_-dt(hat)) / 2, fluid stencil range of in)
+                             + emitters                                         (correction)
+
+   SL: RK2 (midpoint) backtrace from the cell centre with the MAC-sampled velocity of the basis
+   grid, in smoke-grid units; trilinear sample over the fluid cells of the stencil only, weights
+   renormalized; no fluid weight left: the cell keeps its own value. smoke_face_pairs.comp runs
+   first each step. Cells outside the fluid mask are never written: SmokeState keeps them 0.
+
+   Layout and work, chosen by measurement on lavapipe (Mesa 22.3; SmokeKernelTest's TimingPerStep,
+   totals in engine/kernels/SmokeAdvection.h), where every lane's load or store of every 32- or
+   64-bit component is a separate scalar access whatever the pattern, so the count of components
+   executed is the cost (shaders/modal_pair_sums.comp; u64vec2 loads of two rows at once were no
+   faster than two u64 loads here), and where an `if` only masks lanes: its body runs, loads
+   included, even when no lane takes it (gallivm's if_cond):
+   - stage and dimension fixed at compile time, one pipeline each: with a run-time stage switch
+     the correction cost 80% of the forward stage, split 30%;
+   - one invocation per entry of a list of the fluid cells (x fastest, so neighbouring lanes read
+     neighbouring cells): no lane works outside the mask (most of the cells of the tests' disks
+     and balls), and the entry carries the coordinates, so no integer division;
+   - density and temperature interleaved, one 64-bit word per cell: one load per stencil corner
+     for both fields;
+   - the fluid flags of a whole stencil in one byte (SmokeState's stencil mask): one load per
+     stencil; a mask load per corner made steps ~10% slower;
+   - velocity faces read in x-neighbour pairs (MacSampling.glsl, smoke_face_pairs.comp): one
+     load per two corners; reading the faces as floats made 3D steps 30-40% slower at scale 1;
+   - MacCormack's forward stage also traces backward (the centre velocity serves both traces) and
+     records the clamp range and the backward end point, so the correction re-traces and
+     re-samples nothing of the forward step: 3 velocity samples per cell instead of 6;
+   - the emitters' rates summed per fluid cell on the host (SmokeState::setEmitters): one load
+     instead of a loop over emitter records in every lane.
+   On a GPU the same choices cut memory transactions and leave no lane idle. */
+#ifndef MODEFLOW_SHADERS_SMOKE_ADVECT_GLSL
+#define MODEFLOW_SHADERS_SMOKE_ADVECT_GLSL
+
+#extension GL_GOOGLE_include_directive : require
+#extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
+#extension GL_EXT_control_flow_attributes : require
+#include "SmokeAdvectParams.h"
+
+layout(local_size_x = 128, local_size_x_id = 0) in;
+
+layout(std430, set = 0, binding = 0) readonly buffer FacePairs { uint64_t facePairs[]; };
+layout(std430, set = 0, binding = 1) readonly buffer FluidCells { uint64_t fluidCells[]; };
+layout(std430, set = 0, binding = 2) readonly buffer StencilMask { uint stencilMask[]; }; // 4 cells a word
+layout(std430, set = 0, binding = 3) readonly buffer Emission { uint64_t emission[]; };   // list order
+layout(std430, set = 0, binding = 4) readonly buffer FieldsIn { uint64_t fieldsIn[]; };
+layout(std430, set = 0, binding = 5) buffer Hat { uint64_t hat[]; };
+layout(std430, set = 0, binding = 6) buffer Record { uint64_t record[]; };  // list order
+layout(std430, set = 0, binding = 7) writeonly buffer FieldsOut { uint64_t fieldsOut[]; };
+layout(std430, set = 0, binding = 8) writeonly buffer TemperatureOut { float temperatureOut[]; };
+layout(push_constant) uniform Push { SmokeAdvectParams params; };
+
+vec2 unpackPair(uint64_t word) { return uintBitsToFloat(unpack32(word)); }
+uint64_t packPair(vec2 v) { return pack64(floatBitsToUint(v)); }
+
+#define MAC_DIM SMOKE_DIM
+vec2 macFacePair(uint face) { return unpackPair(facePairs[face]); }
+#include "MacSampling.glsl"
+
+uint stencilBits(uint cell) { return (stencilMask[cell >> 2] >> ((cell & 3u) * 8u)) & 0xffu; }
+
+uint cellIndex(ivec3 p) { return uint((p.z * int(params.cellsY) + p.y) * int(params.cellsX) + p.x); }
+
+// Velocity at a point in smoke-grid units (the basis grid is `scale` times coarser).
+vec3 velocityAt(vec3 g) {
+    vec3 basisPoint = g;
+    [[unroll]] for (int a = 0; a < SMOKE_DIM; ++a) basisPoint[a] = g[a] / float(params.scale);
+    return sampleVelocityGrid(basisPoint, ivec3(params.basisX, params.basisY, params.basisZ),
+                              uvec3(0u, params.faceOffsetY, params.faceOffsetZ));
+}
+
+// Where the RK2 trace from `start` ends after -step * u, in smoke-grid units; u0 = velocityAt(start).
+vec3 traceEnd(vec3 start, vec3 u0, vec3 step) {
+    const vec3 mid = start - 0.5 * (u0 * step);
+    return start - velocityAt(mid) * step;
+}
+
+// A masked trilinear sample of (density, temperature) from `in` or `hat`, and the range of the
+// fluid cells of its stencil (lo > hi: none).
+struct FluidSample {
+    vec2 value;
+    vec2 lo;
+    vec2 hi;
+};
+
+vec2 fieldsAt(uint cell, bool fromHat) { return unpackPair(fromHat ? hat[cell] : fieldsIn[cell]); }
+
+FluidSample sampleFluid(vec3 g, bool fromHat, vec2 fallback) {
+    const ivec3 cells = ivec3(params.cellsX, params.cellsY, params.cellsZ);
+    AxisStencil s[3];
+    s[2] = AxisStencil(0, 0, 0.0);
+    [[unroll]] for (int a = 0; a < SMOKE_DIM; ++a) s[a] = axisStencil(g[a], 0.5, cells[a]);
+    const uint base = cellIndex(ivec3(s[0].lo, s[1].lo, s[2].lo));
+    const uint fluid = stencilBits(base);
+    // Offsets of the hi corners: 0 on a one-cell axis, whose hi corner is the lo one (its bit is 0).
+    const uint dx = uint(s[0].hi - s[0].lo);
+    const uint dy = uint(s[1].hi - s[1].lo) * params.cellsX;
+    const uint dz = uint(s[2].hi - s[2].lo) * params.cellsX * params.cellsY;
+    const float infinity = uintBitsToFloat(0x7f800000u);
+    FluidSample taken = FluidSample(vec2(0.0), vec2(infinity), vec2(-infinity));
+    vec2 sum = vec2(0.0);
+    float weight = 0.0;
+    [[unroll]] for (int cz = 0; cz < (SMOKE_DIM == 3 ? 2 : 1); ++cz)
+        [[unroll]] for (int cy = 0; cy < 2; ++cy)
+            [[unroll]] for (int cx = 0; cx < 2; ++cx) {
+                const vec2 v = fieldsAt(base + uint(cx) * dx + uint(cy) * dy + uint(cz) * dz, fromHat);
+                if ((fluid & (1u << (cx + 2 * cy + 4 * cz))) == 0u) continue;
+                float w = (cx != 0 ? s[0].f : 1.0 - s[0].f) * (cy != 0 ? s[1].f : 1.0 - s[1].f);
+#if SMOKE_DIM == 3
+                w *= cz != 0 ? s[2].f : 1.0 - s[2].f;
+#endif
+                sum += w * v;
+                weight += w;
+                taken.lo = min(taken.lo, v);
+                taken.hi = max(taken.hi, v);
+            }
+    taken.value = weight > 0.0 ? sum / weight : fallback;
+    return taken;
+}
+
+void main() {
+    const uint entry = params.firstCell + gl_GlobalInvocationID.x;
+    if (entry >= params.fluidCount) return;
+    const uvec2 packed = unpack32(fluidCells[entry]);
+    const ivec3 cell = ivec3(packed.x & 0xffffu, packed.x >> 16, packed.y);
+    const uint id = cellIndex(cell);
+    const vec3 start = vec3(cell) + 0.5;
+    const vec3 step = vec3(params.stepX, params.stepY, params.stepZ);
+    const vec2 old = fieldsAt(id, false);
+    const uint r = entry * SMOKE_RECORD_WORDS;
+
+#if SMOKE_STAGE == SMOKE_STAGE_MACCORMACK_FORWARD
+    const vec3 u0 = velocityAt(start);
+    const FluidSample forward = sampleFluid(traceEnd(start, u0, step), false, old);
+    const vec3 ahead = traceEnd(start, u0, -step);
+    hat[id] = packPair(forward.value);
+    record[r] = packPair(forward.lo);
+    record[r + 1u] = packPair(forward.hi);
+    record[r + 2u] = packPair(ahead.xy);
+#if SMOKE_DIM == 3
+    record[r + 3u] = packPair(vec2(ahead.z, 0.0));
+#endif
+#else
+#if SMOKE_STAGE == SMOKE_STAGE_SEMI_LAGRANGIAN
+    vec2 result = sampleFluid(traceEnd(start, velocityAt(start), step), false, old).value;
+#else
+    const vec2 lo = unpackPair(record[r]);
+    const vec2 hi = unpackPair(record[r + 1u]);
+    vec3 ahead = vec3(unpackPair(record[r + 2u]), 0.5);
+#if SMOKE_DIM == 3
+    ahead.z = unpackPair(record[r + 3u]).x;
+#endif
+    const vec2 forward = fieldsAt(id, true);
+    const vec2 backward = sampleFluid(ahead, true, forward).value;
+    vec2 result = lo.x <= hi.x ? clamp(forward + 0.5 * (old - backward), lo, hi) : forward;
+#endif
+    result += unpackPair(emission[entry]) * params.dt;
+    fieldsOut[id] = packPair(result);
+    temperatureOut[id] = result.y;
+#endif
+}
+
+#endif

@@ -1,0 +1,8 @@
+#version 450
+// The semi-Lagrangian step on a 3D smoke grid: SmokeAdvect.glsl with its stage and dimension fixed
+// at compile time (why: SmokeAdvect.glsl).
+#extension GL_GOOGLE_include_directive : require
+#include "SmokeAdvectParams.h"
+#define SMOKE_DIM 3
+#define SMOKE_STAGE SMOKE_STAGE_SEMI_LAGRANGIAN
+#include "SmokeAdvect.glsl"
