@@ -10,18 +10,22 @@ namespace modeflow::shaders {
 using uint = std::uint32_t;
 #endif
 
-/* Modes one workgroup of the partial-sum pass handles (two vec4s of sums). */
-#define PROJECT_FORCE_MODES_PER_GROUP 8
+/* The tiles of engine/kernels/ModeBuffer (kTileLanes, kTileRows), see ModeAccess.glsl. */
+#define MODE_TILE_LANES 8
+#define MODE_TILE_ROWS 2
+
+/* Modes one workgroup of the partial-sum pass handles (a multiple of 4). */
+#define PROJECT_FORCE_MODES_PER_GROUP 64
 
 struct ProjectForceParams {
     uint dofCount;       /* velocity DOFs */
     uint firstMode;      /* the chunk's first mode: row of the partial sums */
     uint modeCount;      /* modes in the chunk */
-    uint modeStride;     /* 32-bit words per mode */
+    uint tileCount;      /* tiles per mode (ModeAccess.glsl) */
     uint halfPrecision;  /* 1: float16 pairs, 0: float32 */
     uint gatherFaces;    /* 1: the input is a whole-grid face field read at the DOF faces */
     uint blockCount;     /* DOF blocks, one partial sum per mode and block */
-    uint blockSize;      /* DOFs per block */
+    uint blockTiles;     /* tiles per block */
 };
 
 struct ProjectForceSumParams {

@@ -10,11 +10,15 @@ namespace modeflow::shaders {
 using uint = std::uint32_t;
 #endif
 
+/* The tiles of engine/kernels/ModeBuffer (kTileLanes, kTileRows), see ModeAccess.glsl. */
+#define MODE_TILE_LANES 8
+#define MODE_TILE_ROWS 2
+
 struct ReconstructVelocityParams {
-    uint dofCount;       /* velocity DOFs; one invocation per DOF (grid-stride loop) */
+    uint dofCount;       /* velocity DOFs */
     uint firstMode;      /* the chunk's first mode: index into v and the mode scales */
     uint modeCount;      /* modes in the chunk */
-    uint modeStride;     /* 32-bit words per mode */
+    uint tileCount;      /* tiles per mode (ModeAccess.glsl) */
     uint halfPrecision;  /* 1: float16 pairs, 0: float32 */
     uint accumulate;     /* 0: the first chunk writes, 1: later chunks add */
     uint faceStart1;     /* first normal-y face */

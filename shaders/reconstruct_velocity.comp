@@ -3,57 +3,92 @@
 //
 //     field[face(d)] = sum_i v_i s_i Psi_i[d] / area(axis of face(d))
 //
-// over one chunk of modes (s_i the mode's scale factor, engine/kernels/ModeBuffer). One
-// invocation per DOF: neighbouring invocations read neighbouring words of each mode, and each
-// loops over the chunk's modes. Later chunks add to what the earlier ones wrote (the sequence's
-// barrier orders them). Faces that are not DOFs are never written.
+// over one chunk of modes (s_i the mode's scale factor, engine/kernels/ModeBuffer). Later chunks
+// add to what the earlier ones wrote (the sequence's barrier orders them). Faces that are not
+// DOFs are never written.
+//
+// A GEMV over the tiled basis (ModeAccess.glsl), bandwidth-bound. Each invocation owns units of
+// TILE_ROWS vectors (8 float32 or 16 float16 DOFs), grid-stride, and walks the chunk's modes four
+// at a time: one 64-bit pair of v (and of the scales, float16) serves the four modes times all
+// the unit's DOFs, and the unit's faces are read four at a time too. Why, measured on lavapipe
+// (tools/bench/bench_runtime, 48^3 grid, N = 100, CPU ms of one lavapipe thread, float32 /
+// float16): one invocation per DOF reading a float of each mode and v, s per mode: 146 / 131;
+// 64-bit vectors, 8 DOFs per invocation, v by fours, mode-major modes: 113 / 91; tiled: 32 / 21;
+// faces by fours: 29 / 20. Lavapipe pays per lane and load, whatever the load brings.
 #extension GL_GOOGLE_include_directive : require
+#extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
+#extension GL_EXT_control_flow_attributes : require
 #include "ReconstructVelocityParams.h"
 
 layout(local_size_x = 64, local_size_x_id = 0) in;
 
-layout(std430, set = 0, binding = 0) readonly buffer Modes { uint modeWords[]; };
-// Read four at a time where whole aligned quads lie in the chunk (see main); both hold a multiple
-// of 4 floats, so every vec4 lies inside its buffer.
-layout(std430, set = 0, binding = 1) readonly buffer Scales { vec4 scales[]; };
-layout(std430, set = 0, binding = 2) readonly buffer State { vec4 v[]; };
-layout(std430, set = 0, binding = 3) readonly buffer Faces { uint faces[]; };
+layout(std430, set = 0, binding = 0) readonly buffer Modes { u64vec2 modeVectors[]; };
+// Both hold a multiple of 4 floats (engine/kernels/ModeBuffer), read four at a time.
+layout(std430, set = 0, binding = 1) readonly buffer Scales { u64vec2 scales[]; };
+layout(std430, set = 0, binding = 2) readonly buffer State { u64vec2 v[]; };
+// Zero-padded to whole tiles (engine/kernels/VelocityReconstruction), read four at a time.
+layout(std430, set = 0, binding = 3) readonly buffer Faces { u64vec2 faceQuads[]; };
 layout(std430, set = 0, binding = 4) buffer FaceField { float field[]; };
 layout(push_constant) uniform Push { ReconstructVelocityParams params; };
 
 #include "FaceLocation.glsl"
 #include "ModeAccess.glsl"
 
-float modeValue(uint mode, uint dof) { return modeValue(mode, dof, params.modeStride, params.halfPrecision != 0u); }
+// v_i s_i for the global modes 4 quad ... 4 quad + 3, 0 for those outside the chunk (its first
+// and last quads may be partial), and `local`: their chunk-local indices, clamped into the chunk.
+vec4 coefficients(uint quad, out uvec4 local) {
+    const uint first = params.firstMode, last = params.firstMode + params.modeCount - 1u;
+    const uvec4 mode = uvec4(4u * quad) + uvec4(0u, 1u, 2u, 3u);
+    local = clamp(mode, uvec4(first), uvec4(last)) - uvec4(first);
+    vec4 c = floatsOf(v[quad]);
+    if (params.halfPrecision != 0u) c *= floatsOf(scales[quad]);
+    return mix(vec4(0.0), c, equal(mode, local + uvec4(first)));  // a select: v past N may be anything
+}
 
-// v_i s_i for one mode (global index i).
-float coefficient(uint i) { return v[i / 4u][i % 4u] * scales[i / 4u][i % 4u]; }
+// Writes (or adds) the sums of DOFs 4 quad ... 4 quad + 3 to their faces.
+void store(uint quad, vec4 sum) {
+    const u64vec2 word = faceQuads[quad];
+    const uvec4 face = uvec4(unpack32(word.x), unpack32(word.y));
+    [[unroll]] for (uint j = 0; j < 4; ++j) {
+        if (4u * quad + j >= params.dofCount) break;  // padding
+        const uint axis = faceAxis(face[j], params.faceStart1, params.faceStart2);
+        const float value = sum[j] * (axis == 0u ? params.inverseArea[0] : axis == 1u ? params.inverseArea[1] : params.inverseArea[2]);
+        field[face[j]] = params.accumulate != 0u ? field[face[j]] + value : value;
+    }
+}
 
 void main() {
-    const uint invocations = gl_NumWorkGroups.x * gl_WorkGroupSize.x;
-    // Global mode indices [first, last) of the chunk; the aligned quads inside it are read as
-    // vec4s, the few modes around them one by one. Lavapipe makes every per-invocation load a
-    // gather, uniform or not: one per four modes instead of two per mode cut this kernel's time
-    // by a third there.
-    const uint first = params.firstMode, last = params.firstMode + params.modeCount;
-    const uint quadBegin = min((first + 3u) / 4u, last / 4u), quadEnd = last / 4u;
-    for (uint d = gl_GlobalInvocationID.x; d < params.dofCount; d += invocations) {
-        float sum = 0.0;
-        for (uint i = first; i < min(4u * quadBegin, last); ++i) sum += coefficient(i) * modeValue(i - first, d);
-        for (uint quad = quadBegin; quad < quadEnd; ++quad) {
-            const vec4 c = v[quad] * scales[quad];
-            const uint i = 4u * quad - first;
-            if (params.halfPrecision != 0u) {
-                sum += c.x * modeValue16(i, d, params.modeStride) + c.y * modeValue16(i + 1u, d, params.modeStride) +
-                       c.z * modeValue16(i + 2u, d, params.modeStride) + c.w * modeValue16(i + 3u, d, params.modeStride);
-            } else {
-                sum += c.x * modeValue32(i, d, params.modeStride) + c.y * modeValue32(i + 1u, d, params.modeStride) +
-                       c.z * modeValue32(i + 2u, d, params.modeStride) + c.w * modeValue32(i + 3u, d, params.modeStride);
+    const uint quadBegin = params.firstMode / 4u, quadEnd = (params.firstMode + params.modeCount + 3u) / 4u;
+    const uint units = params.tileCount * TILE_LANES;
+    for (uint unit = gl_GlobalInvocationID.x; unit < units; unit += gl_NumWorkGroups.x * gl_WorkGroupSize.x) {
+        const uint base = unitBase(unit, params.modeCount);
+        vec4 sum[2 * TILE_ROWS];  // row r's DOFs in sum[r] (float32), or sum[2r], sum[2r + 1] (float16)
+        [[unroll]] for (uint j = 0; j < 2 * TILE_ROWS; ++j) sum[j] = vec4(0.0);
+        if (params.halfPrecision != 0u) {
+            for (uint quad = quadBegin; quad < quadEnd; ++quad) {
+                uvec4 local;
+                const vec4 c = coefficients(quad, local);
+                [[unroll]] for (uint k = 0; k < 4; ++k)
+                    [[unroll]] for (uint r = 0; r < TILE_ROWS; ++r) {
+                        vec4 low, high;
+                        halvesOf(modeVectors[base + local[k] * TILE_VECTORS + r * TILE_LANES], low, high);
+                        sum[2 * r] += c[k] * low;
+                        sum[2 * r + 1] += c[k] * high;
+                    }
             }
+            [[unroll]] for (uint r = 0; r < TILE_ROWS; ++r) {
+                store(2u * unitVector(unit, r), sum[2 * r]);
+                store(2u * unitVector(unit, r) + 1u, sum[2 * r + 1]);
+            }
+        } else {
+            for (uint quad = quadBegin; quad < quadEnd; ++quad) {
+                uvec4 local;
+                const vec4 c = coefficients(quad, local);
+                [[unroll]] for (uint k = 0; k < 4; ++k)
+                    [[unroll]] for (uint r = 0; r < TILE_ROWS; ++r)
+                        sum[r] += c[k] * floatsOf(modeVectors[base + local[k] * TILE_VECTORS + r * TILE_LANES]);
+            }
+            [[unroll]] for (uint r = 0; r < TILE_ROWS; ++r) store(unitVector(unit, r), sum[r]);
         }
-        for (uint i = max(4u * quadEnd, first); i < last; ++i) sum += coefficient(i) * modeValue(i - first, d);
-        const uint face = faces[d];
-        const float value = sum * params.inverseArea[faceAxis(face, params.faceStart1, params.faceStart2)];
-        field[face] = params.accumulate != 0u ? field[face] + value : value;
     }
 }

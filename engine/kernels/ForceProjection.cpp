@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>  // the generated headers use uint32_t without including it
+#include <numeric>
 #include <vector>
 
 #include "engine/field/MacGrid.h"
@@ -19,29 +20,62 @@ namespace modeflow::vulkan {
 namespace {
 
 constexpr std::uint32_t kModesPerGroup = PROJECT_FORCE_MODES_PER_GROUP;
+static_assert(ModeBuffer::kTileLanes == MODE_TILE_LANES && ModeBuffer::kTileRows == MODE_TILE_ROWS,
+              "the shader reads the tiles ModeBuffer writes");
+/// Default DOFs per workgroup of pass 1. A GPU wants many workgroups (a 64³ basis, ~750k DOFs,
+/// makes ~380 blocks). A CPU device wants few, large ones: lavapipe runs each workgroup's closing
+/// shared-memory tree invocation by invocation (32768 measured ~10% faster than 8192 there), but
+/// still about kCpuGroups of them to share among its threads.
+constexpr std::uint32_t kGpuDofsPerGroup = 2048;
+constexpr std::uint32_t kCpuMinDofsPerGroup = 4096, kCpuMaxDofsPerGroup = 32768, kCpuGroups = 16;
+/// DOFs of a tile of float16 modes: blocks are whole tiles of either precision.
+constexpr std::uint32_t kTileDofs = ModeBuffer::kTileVectors * 8;
+
+const VulkanContext& requireShaderInt64(const VulkanContext& context) {
+    if (!context.hasShaderInt64())
+        throw Error("Vulkan device " + context.deviceName() +
+                    " lacks 64-bit integers in shaders (shaderInt64), which the force projection needs; "
+                    "run with --device cpu");
+    return context;
+}
 
 std::uint32_t modeGroups(std::uint32_t modes) { return (modes + kModesPerGroup - 1) / kModesPerGroup; }
 
-/// DOFs per block: the wish rounded up to whole workgroups, raised until every chunk's
-/// dispatch (at most all modes) stays within the device's group count limit.
+/// DOFs per block: the wish rounded up to whole float16 tiles, and to a whole number of units
+/// (16 float16 DOFs) per invocation, raised until every chunk's dispatch (at most all modes) stays
+/// within the device's group count limit.
 std::uint32_t blockSizeFor(const VulkanContext& context, std::uint32_t dofs, std::uint32_t modes,
                            const ForceProjectionOptions& options) {
-    const std::uint64_t maxGroups = context.properties().limits.maxComputeWorkGroupCount[0];
+    const VkPhysicalDeviceLimits& limits = context.properties().limits;
+    const std::uint64_t maxGroups = limits.maxComputeWorkGroupCount[0];
     if (modes == 0) throw Error("project_force: the basis has no modes");
     if (modes > maxGroups)
         throw Error("project_force: " + std::to_string(modes) + " modes exceed the device's " +
                     std::to_string(maxGroups) + " workgroups per dispatch");
     const std::uint32_t size = options.workgroupSize;
     if (size == 0) throw Error("project_force: the workgroup size must be positive");
-    const std::uint64_t wanted = std::max<std::uint64_t>(options.dofsPerGroup, 1);
+    // project_force.comp keeps kModesPerGroup sums per invocation in shared memory.
+    const std::uint64_t shared = std::uint64_t(size) * kModesPerGroup * sizeof(float);
+    if (shared > limits.maxComputeSharedMemorySize)
+        throw Error("project_force: workgroups of " + std::to_string(size) + " need " + std::to_string(shared) +
+                    " bytes of shared memory, more than the " + std::to_string(limits.maxComputeSharedMemorySize) +
+                    " of " + context.deviceName());
+    std::uint64_t wanted = options.dofsPerGroup > 0 ? options.dofsPerGroup : kGpuDofsPerGroup;
+    if (options.dofsPerGroup == 0 && context.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU)
+        wanted = std::clamp<std::uint64_t>(std::uint64_t(dofs) * modeGroups(modes) / kCpuGroups, kCpuMinDofsPerGroup,
+                                           kCpuMaxDofsPerGroup);
     const std::uint64_t maxBlocks = std::max<std::uint64_t>(1, maxGroups / modeGroups(modes));
     const std::uint64_t block = std::max(wanted, (std::uint64_t(dofs) + maxBlocks - 1) / maxBlocks);
-    return std::uint32_t((block + size - 1) / size * size);
+    const std::uint64_t unit = std::lcm<std::uint64_t>(kTileDofs, std::uint64_t(size) * kTileDofs / ModeBuffer::kTileLanes);
+    return std::uint32_t((block + unit - 1) / unit * unit);
 }
 
+/// The weights, zero-padded to whole float16 tiles like the modes (read four at a time; a padded
+/// DOF adds 0).
 DeviceBuffer weightBuffer(const VulkanContext& context, const BasisCache& cache, FaceQuantity quantity) {
     const Eigen::VectorXd w = projectionWeights(cache, quantity);
-    const std::vector<float> values(w.begin(), w.end());
+    std::vector<float> values(w.begin(), w.end());
+    values.resize((values.size() + kTileDofs - 1) / kTileDofs * kTileDofs, 0.0f);
     return DeviceBuffer::fromValues<float>(context, values, "projection weights");
 }
 
@@ -53,7 +87,7 @@ ForceProjectionKernel::ForceProjectionKernel(const VulkanContext& context, const
       mDofCount(std::uint32_t(cache.faces.size())),
       mModeCount(std::uint32_t(cache.velocity.modes.cols())),
       mFaceTotal(std::uint64_t(MacGrid::fromSpec(cache.grid).faceTotal())),
-      mBlockSize(blockSizeFor(context, mDofCount, mModeCount, options)),
+      mBlockSize(blockSizeFor(requireShaderInt64(context), mDofCount, mModeCount, options)),
       mBlockCount((mDofCount + mBlockSize - 1) / mBlockSize),
       mFaces(uploadDofFaces(context, cache)),
       mWeights(weightBuffer(context, cache, quantity)),
@@ -75,11 +109,11 @@ void ForceProjectionKernel::record(CommandSequence& sequence, const ModeBuffer& 
 
     shaders::ProjectForceParams params{};
     params.dofCount = mDofCount;
-    params.modeStride = modes.modeStride();
+    params.tileCount = modes.tileCount();
     params.halfPrecision = modes.precision() == ModePrecision::Float16;
     params.gatherFaces = mQuantity == FaceQuantity::FaceField;
     params.blockCount = mBlockCount;
-    params.blockSize = mBlockSize;
+    params.blockTiles = mBlockSize / (ModeBuffer::kTileVectors * modes.dofsPerVector());
     for (const ModeBuffer::Chunk& chunk : modes.chunks()) {
         params.firstMode = chunk.firstMode;
         params.modeCount = chunk.modeCount;

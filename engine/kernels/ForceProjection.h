@@ -4,11 +4,12 @@
 /// project_force_sum.comp; CPU reference: engine/field/ForceProjection.h):
 /// f_k = Σ_d Ψ_k[d] w_d q_d, float32, deterministic (no atomics).
 ///
-/// Pass 1 splits the DOFs into blocks and gives each workgroup 8 modes × one block, writing one
+/// Pass 1 splits the DOFs into blocks and gives each workgroup 64 modes × one block, writing one
 /// partial sum per mode and block (one dispatch per chunk of the ModeBuffer); pass 2 adds each
 /// mode's partial sums in a fixed order and applies the mode's scale. Blocks keep a projection
 /// parallel across a GPU however few modes there are: a 64³ basis (~750k DOFs) with 100 modes
-/// makes ~9.5k workgroups of 1024 DOFs. f stays on the device for the next modal step.
+/// makes ~760 workgroups of 2048 DOFs. f stays on the device for the next modal step. The kernel
+/// reads 64-bit words: the device needs shaderInt64.
 
 #include <cstdint>
 
@@ -25,9 +26,10 @@ class VulkanContext;
 
 struct ForceProjectionOptions {
     std::uint32_t workgroupSize = 64;
-    /// DOFs per workgroup of pass 1 (rounded up to a multiple of the workgroup size, raised when
-    /// the group count would pass the device limit).
-    std::uint32_t dofsPerGroup = 1024;
+    /// DOFs per workgroup of pass 1 (rounded up to whole tiles and units, raised when the group
+    /// count would pass the device limit); 0: 2048 on a GPU, on a CPU device 4096 to 32768 for
+    /// about 16 workgroups (ForceProjection.cpp).
+    std::uint32_t dofsPerGroup = 0;
 };
 
 class ForceProjectionKernel {
@@ -36,8 +38,9 @@ public:
     /// Density: one force density per DOF (ForceFieldKernel's output), weights h_axis;
     /// FaceField: a whole-grid face field (ReconstructionKernel's layout) read at the DOF faces,
     /// weights area × ⋆ (the exact inverse of the reconstruction).
-    /// @throw modeflow::Error if there are more modes than the device's group count limit, or a
-    /// creation call fails.
+    /// @throw modeflow::Error if the device lacks shaderInt64, there are more modes than the
+    /// device's group count limit, the workgroup needs more shared memory than the device has
+    /// (64 floats per invocation), or a creation call fails.
     ForceProjectionKernel(const VulkanContext& context, const BasisCache& cache, FaceQuantity quantity,
                           const ForceProjectionOptions& options = {});
 

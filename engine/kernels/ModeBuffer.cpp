@@ -42,7 +42,14 @@ std::vector<float> paddedScales(const Eigen::MatrixXd& modes, ModePrecision prec
     return scales;
 }
 
-/// Writes one mode's stored words (modeStride of them) to `words`.
+/// 32-bit words per mode: whole tiles of 16-byte vectors of 4 float32 or 8 float16 values.
+std::uint32_t modeStrideFor(std::uint64_t dofs, ModePrecision precision) {
+    const std::uint64_t perTile = std::uint64_t(ModeBuffer::dofsPerVector(precision)) * ModeBuffer::kTileVectors;
+    return std::uint32_t((dofs + perTile - 1) / perTile * ModeBuffer::kTileVectors * 4);
+}
+
+/// Writes one mode's stored words, in DOF order, to `words` (zero-filled up to the mode stride by
+/// the caller).
 void encodeMode(const Eigen::Ref<const Eigen::VectorXd>& mode, float scale, ModePrecision precision,
                 std::uint32_t* words) {
     if (precision == ModePrecision::Float32) {
@@ -62,20 +69,30 @@ ModeBuffer::ModeBuffer(const VulkanContext& context, const Eigen::MatrixXd& mode
     : mDofCount(checkedDofCount(modes)),
       mModeCount(std::uint32_t(modes.cols())),
       mPrecision(precision),
-      mModeStride(precision == ModePrecision::Float16 ? (mDofCount + 1) / 2 : mDofCount),
+      mModeStride(modeStrideFor(mDofCount, precision)),
       mScales(DeviceBuffer::fromValues<float>(context, paddedScales(modes, precision), "mode scales")) {
     const VkDeviceSize modeBytes = VkDeviceSize(mModeStride) * sizeof(std::uint32_t);
     const VkDeviceSize limit = context.storageBufferLimit();
     if (modeBytes > limit)
         throw Error("mode buffer: one mode takes " + std::to_string(modeBytes) + " bytes, more than the " +
                     std::to_string(limit) + "-byte storage buffer limit of " + context.deviceName());
-    const auto perChunk = std::uint32_t(std::min<VkDeviceSize>(mModeCount, limit / modeBytes));
+    // A multiple of 4 modes per chunk where 4 fit, so the kernels' reads of four modes' state
+    // values at a time never straddle two chunks (they handle it where the limit forces it).
+    auto perChunk = std::uint32_t(std::min<VkDeviceSize>(mModeCount, limit / modeBytes));
+    if (perChunk < mModeCount && perChunk >= 4) perChunk -= perChunk % 4;
     const std::vector<float> scales = modeScales(modes, precision);
     for (std::uint32_t first = 0; first < mModeCount; first += perChunk) {
         const std::uint32_t count = std::min(perChunk, mModeCount - first);
-        std::vector<std::uint32_t> words(std::size_t(count) * mModeStride);
-        for (std::uint32_t i = 0; i < count; ++i)
-            encodeMode(modes.col(first + i), scales[first + i], precision, words.data() + std::size_t(i) * mModeStride);
+        // Tile-major: tile t of every mode of the chunk, then tile t + 1 (see the header).
+        const std::size_t tileWords = std::size_t(kTileVectors) * 4, tiles = mModeStride / tileWords;
+        std::vector<std::uint32_t> mode(mModeStride), words(std::size_t(count) * mModeStride);
+        for (std::uint32_t i = 0; i < count; ++i) {
+            std::fill(mode.begin(), mode.end(), 0u);
+            encodeMode(modes.col(first + i), scales[first + i], precision, mode.data());
+            for (std::size_t t = 0; t < tiles; ++t)
+                std::copy_n(mode.begin() + std::ptrdiff_t(t * tileWords), tileWords,
+                            words.begin() + std::ptrdiff_t((t * count + i) * tileWords));
+        }
         const std::string name = "modes " + std::to_string(first) + "-" + std::to_string(first + count - 1);
         mChunks.push_back(Chunk{first, count, DeviceBuffer::fromValues<std::uint32_t>(context, words, name)});
     }
@@ -84,8 +101,7 @@ ModeBuffer::ModeBuffer(const VulkanContext& context, const Eigen::MatrixXd& mode
 Eigen::MatrixXd ModeBuffer::rounded(const Eigen::MatrixXd& modes, ModePrecision precision) {
     const std::vector<float> scales = modeScales(modes, precision);
     Eigen::MatrixXd result(modes.rows(), modes.cols());
-    const Eigen::Index stride = precision == ModePrecision::Float16 ? (modes.rows() + 1) / 2 : modes.rows();
-    std::vector<std::uint32_t> words(static_cast<std::size_t>(stride));
+    std::vector<std::uint32_t> words(modeStrideFor(std::uint64_t(modes.rows()), precision));
     for (Eigen::Index i = 0; i < modes.cols(); ++i) {
         encodeMode(modes.col(i), scales[std::size_t(i)], precision, words.data());
         for (Eigen::Index d = 0; d < modes.rows(); ++d) {

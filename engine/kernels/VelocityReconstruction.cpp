@@ -2,6 +2,8 @@
 
 #include <array>
 #include <cstdint>  // the generated header uses uint32_t without including it
+#include <limits>
+#include <string>
 #include <vector>
 
 #include "engine/format/Error.h"
@@ -13,14 +15,47 @@
 #include "shaders/reconstruct_velocity.spv.h"
 
 namespace modeflow::vulkan {
+namespace {
+
+static_assert(ModeBuffer::kTileLanes == MODE_TILE_LANES && ModeBuffer::kTileRows == MODE_TILE_ROWS,
+              "the shader reads the tiles ModeBuffer writes");
+
+const VulkanContext& requireShaderInt64(const VulkanContext& context) {
+    if (!context.hasShaderInt64())
+        throw Error("Vulkan device " + context.deviceName() +
+                    " lacks 64-bit integers in shaders (shaderInt64), which the velocity reconstruction needs; "
+                    "run with --device cpu");
+    return context;
+}
+
+/// cache.faces as uint32 face numbers (uploadDofFaces' checks), zero-padded to whole tiles of
+/// float16 modes: the kernel reads them four at a time for each tile row (padded DOFs are not
+/// written).
+DeviceBuffer paddedDofFaces(const VulkanContext& context, const BasisCache& cache) {
+    const std::int64_t faceTotal = MacGrid::fromSpec(cache.grid).faceTotal();
+    if (cache.faces.empty()) throw Error("velocity DOFs: the basis has no face DOFs");
+    if (faceTotal > std::int64_t(std::numeric_limits<std::uint32_t>::max()))
+        throw Error("velocity DOFs: " + std::to_string(faceTotal) +
+                    " grid faces do not fit the kernels' 32-bit face numbers");
+    const std::size_t perTile = std::size_t(ModeBuffer::kTileVectors) * ModeBuffer::dofsPerVector(ModePrecision::Float16);
+    std::vector<std::uint32_t> faces((cache.faces.size() + perTile - 1) / perTile * perTile, 0u);
+    for (std::size_t d = 0; d < cache.faces.size(); ++d) {
+        if (cache.faces[d] < 0 || cache.faces[d] >= faceTotal)
+            throw Error("velocity DOFs: DOF " + std::to_string(d) + " names face " + std::to_string(cache.faces[d]) +
+                        ", outside the grid's " + std::to_string(faceTotal) + " faces");
+        faces[d] = std::uint32_t(cache.faces[d]);
+    }
+    return DeviceBuffer::fromValues<std::uint32_t>(context, faces, "DOF faces (padded)");
+}
+
+}  // namespace
 
 ReconstructionKernel::ReconstructionKernel(const VulkanContext& context, const BasisCache& cache,
                                            std::uint32_t workgroupSize)
-    : mContext(context),
+    : mContext(requireShaderInt64(context)),
       mGrid(MacGrid::fromSpec(cache.grid)),
       mDofCount(std::uint32_t(cache.faces.size())),
-      mGroups(groupsFor(context, cache.faces.size(), workgroupSize)),
-      mFaces(uploadDofFaces(context, cache)),
+      mFaces(paddedDofFaces(context, cache)),
       mKernel(context, ComputeKernelSpec{"reconstruct_velocity", reconstruct_velocity_spv, 5,
                                          sizeof(shaders::ReconstructVelocityParams), workgroupSize}) {}
 
@@ -39,17 +74,20 @@ void ReconstructionKernel::record(CommandSequence& sequence, const ModeBuffer& m
 
     shaders::ReconstructVelocityParams params{};
     params.dofCount = mDofCount;
-    params.modeStride = modes.modeStride();
+    params.tileCount = modes.tileCount();
     params.halfPrecision = modes.precision() == ModePrecision::Float16;
     params.faceStart1 = std::uint32_t(mGrid.faceOffset(1));
     params.faceStart2 = std::uint32_t(mGrid.faceOffset(2));
     for (int a = 0; a < 3; ++a) params.inverseArea[a] = float(1.0 / mGrid.faceArea(a));
+    // One invocation per unit (kTileRows vectors of a tile, ModeAccess.glsl).
+    const std::uint32_t groups =
+        groupsFor(mContext, std::uint64_t(modes.tileCount()) * ModeBuffer::kTileLanes, mKernel.workgroupSize());
     for (const ModeBuffer::Chunk& chunk : modes.chunks()) {
         params.firstMode = chunk.firstMode;
         params.modeCount = chunk.modeCount;
         params.accumulate = chunk.firstMode > 0;
         const std::array<const DeviceBuffer*, 5> buffers{&chunk.buffer, &modes.scales(), &v, &mFaces, &faceField};
-        sequence.dispatch(mKernel, buffers, params, mGroups);
+        sequence.dispatch(mKernel, buffers, params, groups);
     }
 }
 

@@ -3,7 +3,8 @@
 /// Modal velocity → face field on the device (shaders/reconstruct_velocity.comp; CPU reference:
 /// engine/field/VelocityReconstruction.h): field[face(d)] = (Σ_i v_i Ψ_i)[d] / area(axis), one
 /// dispatch per chunk of the ModeBuffer. v stays on the device, so a modal step's output can be
-/// reconstructed in the same submission.
+/// reconstructed in the same submission. The kernel reads 64-bit words: the device needs
+/// shaderInt64.
 
 #include <cstdint>
 #include <string>
@@ -22,7 +23,8 @@ class VulkanContext;
 class ReconstructionKernel {
 public:
     /// For the DOFs and grid of `cache` (uploads the DOF → face table).
-    /// @throw modeflow::Error if the grid has 2^32 faces or more, or a creation call fails.
+    /// @throw modeflow::Error if the device lacks shaderInt64, the grid has 2^32 faces or more, or
+    /// a creation call fails.
     ReconstructionKernel(const VulkanContext& context, const BasisCache& cache, std::uint32_t workgroupSize = 64);
 
     /// A face field for this grid (one float per face), zero-filled: the kernel writes only the
@@ -42,7 +44,6 @@ private:
     const VulkanContext& mContext;
     MacGrid mGrid;
     std::uint32_t mDofCount = 0;
-    std::uint32_t mGroups = 1;
     DeviceBuffer mFaces;
     ComputeKernel mKernel;
 };

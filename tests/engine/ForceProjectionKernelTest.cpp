@@ -163,13 +163,18 @@ TEST_P(ForceProjectionKernelTest, SplitModeBuffersGiveTheSameProjection) {
     for (const ModePrecision precision : {ModePrecision::Float32, ModePrecision::Float16}) {
         const Eigen::VectorXd whole = projectOnDevice(context(), cache, g, FaceQuantity::Density, precision);
         const ModeBuffer probe(context(), cache.velocity.modes, precision);
-        const auto limited = testing::makeLimitedContext(GetParam(), VkDeviceSize(probe.modeStride()) * 4 * 6);
-        std::size_t chunks = 0;
-        const Eigen::VectorXd split = projectOnDevice(*limited, cache, g, FaceQuantity::Density, precision, {}, &chunks);
-        EXPECT_GE(chunks, 3u);
-        // Each mode's sum is formed the same way whichever chunk holds it.
-        EXPECT_EQ(split, whole);
-        testing::expectNoValidationMessages(*limited);
+        // Room for 6 modes (chunks of 4, ModeBuffer rounds down) and for 3 (chunks of 3).
+        for (const int modesPerBuffer : {6, 3}) {
+            const auto limited =
+                testing::makeLimitedContext(GetParam(), VkDeviceSize(probe.modeStride()) * 4 * modesPerBuffer);
+            std::size_t chunks = 0;
+            const Eigen::VectorXd split =
+                projectOnDevice(*limited, cache, g, FaceQuantity::Density, precision, {}, &chunks);
+            EXPECT_GE(chunks, 3u);
+            // Each mode's sum is formed the same way whichever chunk holds it.
+            EXPECT_EQ(split, whole) << modesPerBuffer << " modes per buffer";
+            testing::expectNoValidationMessages(*limited);
+        }
     }
 }
 

@@ -134,6 +134,25 @@ TEST_P(ReconstructionKernelTest, SplitModeBuffersGiveTheSameField) {
     }
 }
 
+TEST_P(ReconstructionKernelTest, ChunksNotAlignedToFourModesGiveTheSameField) {
+    // Three modes per buffer: chunks start at modes 3, 6, 9, ..., inside the quads of v the
+    // kernel reads (ModeBuffer rounds chunks down to multiples of 4 modes only where 4 fit).
+    const Case& c = cases()[0];
+    for (const ModePrecision precision : {ModePrecision::Float32, ModePrecision::Float16}) {
+        const Eigen::VectorXd v = testing::normalVector(c.cache.velocity.modes.cols(), 11);
+        const Eigen::VectorXd whole = reconstructOnDevice(context(), c.cache, v, precision);
+        const ModeBuffer probe(context(), c.cache.velocity.modes, precision);
+        const VkDeviceSize limit = VkDeviceSize(probe.modeStride()) * 4 * 3;
+        ASSERT_GE(limit, VkDeviceSize(whole.size()) * 4) << "the face field must fit the limit too";
+        const auto limited = testing::makeLimitedContext(GetParam(), limit);
+        std::size_t chunks = 0;
+        const Eigen::VectorXd split = reconstructOnDevice(*limited, c.cache, v, precision, 64, &chunks);
+        EXPECT_EQ(chunks, (c.cache.velocity.modes.cols() + 2) / 3);
+        EXPECT_LE(testing::relativeError(split, whole), 1e-6);
+        testing::expectNoValidationMessages(*limited);
+    }
+}
+
 TEST_P(ReconstructionKernelTest, AnyWorkgroupSizeGivesTheSameField) {
     const Case& c = cases()[1];
     const Eigen::VectorXd v = testing::normalVector(c.cache.velocity.modes.cols(), 10);

@@ -5,11 +5,13 @@
 /// Eigen's GEMV on the same float32 data in the same run (1 thread), as a ratio; then the GPU time
 /// of whole steps per scheme; then the whole runtime step (Simulation: forces, midpoint step,
 /// reconstruction, MacCormack advection) per stage on 2D 256² and 3D 48³, 64³ grids, with the
-/// reconstruction's GB/s over the float32 basis against Eigen's GEMV Ψv on the same data. Times
-/// are medians over repeated dispatches or steps. The runtime table uses synthetic bases (random
+/// reconstruction's GB/s over the float32 basis against Eigen's GEMV Ψv on the same data; then the
+/// two basis kernels alone (reconstruction Ψv and force projection Ψᵀx, float32 and float16
+/// modes) on the same grids, their GB/s over the float32 basis against Eigen's float GEMVs. Times
+/// are medians over repeated dispatches or steps. The grid tables use synthetic bases (random
 /// modes on every interior face, random coefficients): kernel speed does not depend on the
 /// basis being an eigenbasis, and a 64³ eigenbasis takes minutes to compute.
-/// Run: bench_runtime [--device INDEX] [--repeat R] [--skip-grids].
+/// Run: bench_runtime [--device INDEX] [--repeat R] [--skip-grids] [--kernels-only].
 
 #include <algorithm>
 #include <array>
@@ -27,8 +29,11 @@
 #include "engine/dynamics/DenseCoefficients.h"
 #include "engine/dynamics/PackedLayout.h"
 #include "engine/kernels/DeviceCoefficients.h"
+#include "engine/kernels/ForceProjection.h"
 #include "engine/kernels/ModalKernels.h"
 #include "engine/kernels/ModalStepper.h"
+#include "engine/kernels/ModeBuffer.h"
+#include "engine/kernels/VelocityReconstruction.h"
 #include "engine/simulation/Simulation.h"
 #include "engine/vulkan/CommandSequence.h"
 #include "engine/vulkan/VulkanContext.h"
@@ -167,32 +172,36 @@ SyntheticScene syntheticScene(int dim, int cells, int modes) {
     return scene;
 }
 
-/// Median seconds of Eigen's float GEMV Ψv over the DOFs × N basis.
-double eigenReconstructionSeconds(const Eigen::MatrixXd& modes, int repeat) {
+/// Median seconds of Eigen's float GEMV Ψv (or Ψᵀx when `transposed`) over the DOFs × N basis.
+double eigenGemvSeconds(const Eigen::MatrixXd& modes, int repeat, bool transposed) {
     const Eigen::MatrixXf basis = modes.cast<float>();
-    const Eigen::VectorXf v = Eigen::VectorXf::Random(basis.cols());
-    Eigen::VectorXf fluxes(basis.rows());
+    const Eigen::VectorXf v = Eigen::VectorXf::Random(transposed ? basis.rows() : basis.cols());
+    Eigen::VectorXf out(transposed ? basis.cols() : basis.rows());
     std::vector<double> seconds;
     for (int r = 0; r < repeat; ++r) {
         const auto start = std::chrono::steady_clock::now();
-        fluxes.noalias() = basis * v;
+        if (transposed) out.noalias() = basis.transpose() * v;
+        else out.noalias() = basis * v;
         seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
     }
-    volatile float sink = fluxes.sum();
+    volatile float sink = out.sum();
     (void)sink;
     return median(seconds);
 }
+
+/// The grids of the runtime and basis kernel tables.
+struct Grid {
+    const char* name;
+    int dim, cells;
+};
+constexpr std::array<Grid, 3> kGrids{Grid{"256^2", 2, 256}, Grid{"48^3", 3, 48}, Grid{"64^3", 3, 64}};
 
 void runtimeTable(const VulkanContext& context, int repeat) {
     std::printf("\nWhole runtime step (Simulation, midpoint, MacCormack, smoke scale 1, buoyancy + one emitter):\n"
                 "GPU ms per step by stage; reconstruction GB/s over the float32 basis vs Eigen GEMV\n");
     std::printf("%-6s %4s %9s %8s %8s %6s %8s %8s %8s %9s %9s %6s\n", "grid", "N", "DOFs", "forces", "modal", "iters",
                 "recon", "advect", "step", "dev GB/s", "Eigen", "ratio");
-    struct Grid {
-        const char* name;
-        int dim, cells;
-    };
-    for (const Grid g : {Grid{"256^2", 2, 256}, Grid{"48^3", 3, 48}, Grid{"64^3", 3, 64}}) {
+    for (const Grid& g : kGrids) {
         for (const int n : {50, 100, 200}) {
             const SyntheticScene scene = syntheticScene(g.dim, g.cells, n);
             SimulationSettings settings;
@@ -224,10 +233,65 @@ void runtimeTable(const VulkanContext& context, int repeat) {
             }
             const double basisBytes = double(scene.cache.faces.size()) * n * sizeof(float);
             const double deviceRate = basisBytes / (median(recon) * 1e-3) * 1e-9;
-            const double eigenRate = basisBytes / eigenReconstructionSeconds(scene.cache.velocity.modes, repeat) * 1e-9;
+            const double eigenRate = basisBytes / eigenGemvSeconds(scene.cache.velocity.modes, repeat, false) * 1e-9;
             std::printf("%-6s %4d %9zu %8.2f %8.2f %6d %8.2f %8.2f %8.2f %9.2f %9.2f %5.0f%%\n", g.name, n,
                         scene.cache.faces.size(), median(forces), median(modal), iterations, median(recon),
                         median(advect), median(step), deviceRate, eigenRate, 100.0 * deviceRate / eigenRate);
+            std::fflush(stdout);
+        }
+    }
+}
+
+/// Median over `repeat` submissions of the GPU ms of what `record` records (its dispatches summed).
+template <typename Record>
+double medianKernelMs(const VulkanContext& context, int repeat, Record record) {
+    std::vector<double> times;
+    for (int r = 0; r < repeat; ++r) {
+        CommandSequence sequence(context, true, 64);
+        record(sequence);
+        sequence.submitAndWait();
+        double total = 0.0;
+        for (const double t : sequence.dispatchTimesMs()) total += t;
+        times.push_back(total);
+    }
+    return median(times);
+}
+
+void kernelTable(const VulkanContext& context, int repeat) {
+    std::printf("\nBasis kernels alone (GPU ms; GB/s over the float32 basis bytes vs Eigen's float GEMV, 1 thread):\n"
+                "reconstruction Psi v (one dispatch), projection Psi^T (w q) (both passes), float32 and float16 modes\n");
+    std::printf("%-6s %4s %9s | %8s %7s %6s %8s | %8s %7s %6s %8s\n", "grid", "N", "DOFs", "recon32", "GB/s", "ratio",
+                "recon16", "proj32", "GB/s", "ratio", "proj16");
+    for (const Grid& g : kGrids) {
+        for (const int n : {50, 100, 200}) {
+            const SyntheticScene scene = syntheticScene(g.dim, g.cells, n);
+            const BasisCache& cache = scene.cache;
+            const ReconstructionKernel reconstruction(context, cache);
+            const ForceProjectionKernel projection(context, cache, FaceQuantity::Density);
+            const std::vector<float> ones(std::size_t((n + 3) / 4 * 4), 1.0f);
+            const DeviceBuffer v = DeviceBuffer::fromValues<float>(context, ones, "v");
+            const DeviceBuffer field = reconstruction.makeFaceField();
+            const std::vector<float> density(cache.faces.size(), 1.0f);
+            const DeviceBuffer q = DeviceBuffer::fromValues<float>(context, density, "q");
+            const DeviceBuffer f(context, std::size_t(n) * sizeof(float), "f");
+            double reconMs[2], projMs[2];
+            for (const ModePrecision precision : {ModePrecision::Float32, ModePrecision::Float16}) {
+                const ModeBuffer modes(context, cache.velocity.modes, precision);
+                const int p = precision == ModePrecision::Float16;
+                reconMs[p] = medianKernelMs(context, repeat, [&](CommandSequence& s) {
+                    reconstruction.record(s, modes, v, field);
+                });
+                projMs[p] = medianKernelMs(context, repeat, [&](CommandSequence& s) {
+                    projection.record(s, modes, q, f);
+                });
+            }
+            const double bytes = double(cache.faces.size()) * n * sizeof(float);
+            const double reconRate = bytes / reconMs[0] * 1e-6, projRate = bytes / projMs[0] * 1e-6;
+            const double eigenRecon = bytes / eigenGemvSeconds(cache.velocity.modes, repeat, false) * 1e-9;
+            const double eigenProj = bytes / eigenGemvSeconds(cache.velocity.modes, repeat, true) * 1e-9;
+            std::printf("%-6s %4d %9zu | %8.2f %7.2f %5.0f%% %8.2f | %8.2f %7.2f %5.0f%% %8.2f\n", g.name, n,
+                        cache.faces.size(), reconMs[0], reconRate, 100.0 * reconRate / eigenRecon, reconMs[1],
+                        projMs[0], projRate, 100.0 * projRate / eigenProj, projMs[1]);
             std::fflush(stdout);
         }
     }
@@ -238,18 +302,26 @@ void runtimeTable(const VulkanContext& context, int repeat) {
 int main(int argc, char** argv) {
     VulkanContextOptions options;
     int repeat = 20;
-    bool grids = true;
+    bool grids = true, kernelsOnly = false;
     for (int i = 1; i < argc; ++i) {
         if (!std::strcmp(argv[i], "--skip-grids")) grids = false;
+        else if (!std::strcmp(argv[i], "--kernels-only")) kernelsOnly = true;
         else if (i + 1 < argc && !std::strcmp(argv[i], "--device")) options.deviceIndex = std::uint32_t(std::atoi(argv[++i]));
         else if (i + 1 < argc && !std::strcmp(argv[i], "--repeat")) repeat = std::max(3, std::atoi(argv[++i]));
     }
     try {
         const VulkanContext context(options);
         std::printf("%s", context.describe().c_str());
+        if (kernelsOnly) {
+            kernelTable(context, repeat);
+            return 0;
+        }
         contractionTable(context, repeat);
         stepTable(context, repeat);
-        if (grids) runtimeTable(context, std::max(3, repeat / 4));
+        if (grids) {
+            runtimeTable(context, std::max(3, repeat / 4));
+            kernelTable(context, std::max(3, repeat / 4));
+        }
     } catch (const std::exception& e) {
         std::fprintf(stderr, "bench_runtime: %s\n", e.what());
         return 1;
