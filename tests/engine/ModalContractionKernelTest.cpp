@@ -20,6 +20,9 @@
 namespace modeflow {
 namespace {
 
+using testing::roundedDense;
+using testing::roundedToFloat;
+
 using vulkan::CommandSequence;
 using vulkan::DeviceBuffer;
 using vulkan::DeviceCoefficients;
@@ -31,17 +34,7 @@ std::vector<float> toFloat(const Eigen::VectorXd& v) {
     std::copy(v.begin(), v.end(), values.begin());
     return values;
 }
-Eigen::VectorXd roundedToFloat(const Eigen::VectorXd& v) {
-    return v.cast<float>().cast<double>();
-}
 
-/// The coefficients rounded to float32, so the reference sees what the device sees and the
-/// comparison measures the device's float32 accumulation alone.
-DenseCoefficients roundedDense(const DenseCoefficients& c) {
-    std::vector<double> packed(c.packed().size());
-    for (std::size_t e = 0; e < packed.size(); ++e) packed[e] = double(float(c.packed()[e]));
-    return DenseCoefficients(c.size(), std::move(packed));
-}
 
 /// max_k |device − reference| / max_k |reference| for out = C(a, b), a and b random.
 double contractionError(const vulkan::VulkanContext& context, const StructuralCoefficients& c,

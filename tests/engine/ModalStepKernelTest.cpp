@@ -22,21 +22,16 @@
 namespace modeflow {
 namespace {
 
+using testing::roundedDense;
+using testing::roundedToFloat;
+
 using vulkan::CommandSequence;
 using vulkan::DeviceStepSettings;
 using vulkan::ModalStepper;
 
 constexpr int kModes = 40;
 
-Eigen::VectorXd roundedToFloat(const Eigen::VectorXd& v) {
-    return v.cast<float>().cast<double>();
-}
 
-DenseCoefficients roundedDense(const DenseCoefficients& c) {
-    std::vector<double> packed(c.packed().size());
-    for (std::size_t e = 0; e < packed.size(); ++e) packed[e] = double(float(c.packed()[e]));
-    return DenseCoefficients(c.size(), std::move(packed));
-}
 
 double relativeDifference(const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
     return (a - b).lpNorm<Eigen::Infinity>() / b.lpNorm<Eigen::Infinity>();

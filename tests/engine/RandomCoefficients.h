@@ -44,6 +44,17 @@ inline DenseCoefficients randomDense(int n, std::uint64_t seed, double density =
     return DenseCoefficients::fromFull(n, randomFullTensor(n, seed, density));
 }
 
+/// The vector rounded to float32 and back: what a device run starts from.
+inline Eigen::VectorXd roundedToFloat(const Eigen::VectorXd& v) { return v.cast<float>().cast<double>(); }
+
+/// The coefficients rounded to float32, so a CPU reference sees what the device sees and a
+/// comparison measures the device's float32 accumulation alone.
+inline DenseCoefficients roundedDense(const DenseCoefficients& c) {
+    std::vector<double> packed(c.packed().size());
+    for (std::size_t e = 0; e < packed.size(); ++e) packed[e] = double(float(c.packed()[e]));
+    return DenseCoefficients(c.size(), std::move(packed));
+}
+
 inline Eigen::VectorXd randomVector(int n, std::uint64_t seed) {
     std::mt19937_64 rng(seed);
     std::normal_distribution<double> normal;
