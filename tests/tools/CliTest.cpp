@@ -22,19 +22,7 @@ using modeflow::testing::RunResult;
 using modeflow::testing::slurp;
 namespace fs = std::filesystem;
 
-const char* kSmallDisk = R"(
-[grid]
-resolution = [24, 24]
-bounds_min = [-1.1, -1.1]
-bounds_max = [1.1, 1.1]
-[[domain]]
-shape = "ball"
-center = [0.0, 0.0]
-radius = 1.0
-[basis]
-velocity_modes = 8
-scalar_modes = 4
-)";
+using modeflow::testing::kSmallDisk;
 
 std::string replaced(std::string text, const std::string& from, const std::string& to) {
     const auto at = text.find(from);

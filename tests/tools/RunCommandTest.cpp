@@ -19,18 +19,7 @@ using testing::Cli;
 using testing::RunResult;
 namespace fs = std::filesystem;
 
-const char* kHotDisk = R"(
-[grid]
-resolution = [24, 24]
-bounds_min = [-1.1, -1.1]
-bounds_max = [1.1, 1.1]
-[[domain]]
-shape = "ball"
-center = [0.0, 0.0]
-radius = 1.0
-[basis]
-velocity_modes = 8
-scalar_modes = 4
+const std::string kHotDisk = std::string(testing::kSmallDisk) + R"(
 [simulation]
 dt = 0.02
 [initial]
