@@ -75,7 +75,7 @@ struct RenderVolumeParams {
     float dyX;
     float dyY;
     float dyZ;
-    float pad0;
+    uint densityStride; /* floats from one cell's density to the next (2: SmokeState's pairs) */
     float cellsPerTX; /* cells per unit t along each axis: L / spacing */
     float cellsPerTY;
     float cellsPerTZ;

@@ -34,7 +34,7 @@ void lightColumn(uint column) {
     for (int z = int(params.cellsZ) - 1; z >= 0; --z) {
         const uint cell = uint(z) * layer + column;
         const bool fluid = isFluid(cell);
-        const float d = density[cell];
+        const float d = density[cell * params.densityStride];
         const float sigma = fluid && d > 0.0 ? d * params.densityScale : 0.0;
         extinction[cell] = fluid ? sigma : -1.0;
         depth[cell] = above + 0.5 * params.hz * sigma;

@@ -25,6 +25,11 @@ struct FluidParameters {
 
 class FluidSystem final : public ModalSystem {
 public:
+    /// The mass 1 + α²κ_i² and decay rates νκ_i² of n modes (LANS-α, viscosity; seed §6.3.5).
+    /// @throw modeflow::Error for negative ν or α, or a κ² list that is needed but not n long.
+    static Eigen::VectorXd massOf(const FluidParameters& parameters, int n);
+    static Eigen::VectorXd decayRatesOf(const FluidParameters& parameters, int n);
+
     /// Keeps a reference to `coefficients`, which must outlive the system. Throws
     /// modeflow::Error for negative parameters or a κ² list of the wrong length.
     FluidSystem(const StructuralCoefficients& coefficients, FluidParameters parameters = {});

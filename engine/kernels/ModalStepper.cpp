@@ -59,9 +59,9 @@ ModalStepper::ModalStepper(const VulkanContext& context, const StructuralCoeffic
       mWeighted(floats(context, coefficients.size(), "modal weighted point")),
       mRhs(floats(context, coefficients.size(), "modal right-hand side")),
       mForce(floats(context, coefficients.size(), "modal force")),
-      mMass(floats(context, FluidSystem(coefficients, parameters).mass(), "modal mass")),
-      mDecay(
-          floats(context, FluidSystem(coefficients, parameters).decayRates(), "modal decay rates")),
+      mMass(floats(context, FluidSystem::massOf(parameters, coefficients.size()), "modal mass")),
+      mDecay(floats(context, FluidSystem::decayRatesOf(parameters, coefficients.size()),
+                    "modal decay rates")),
       mAccumulator(floats(context, coefficients.size(), "modal RK4 accumulator")),
       mStatus(DeviceBuffer::fromValues<shaders::ModalStatus>(
           context, std::vector<shaders::ModalStatus>(1), "modal status")),
@@ -76,6 +76,17 @@ void ModalStepper::upload(DeviceBuffer& buffer, const Eigen::VectorXd& values,
                     " entries, the basis " + std::to_string(size()));
     const std::vector<float> rounded(values.begin(), values.end());
     buffer.upload<float>(rounded);
+}
+
+void ModalStepper::setScheme(Integrator scheme) {
+    DeviceStepSettings settings = mSettings;
+    settings.scheme = scheme;
+    mSettings = checked(settings);
+}
+
+void ModalStepper::setParameters(const FluidParameters& parameters) {
+    upload(mMass, FluidSystem::massOf(parameters, size()), "mass");
+    upload(mDecay, FluidSystem::decayRatesOf(parameters, size()), "decay rates");
 }
 
 void ModalStepper::setState(const Eigen::VectorXd& v) {

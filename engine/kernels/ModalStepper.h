@@ -57,6 +57,13 @@ public:
     const DeviceStepSettings& settings() const { return mSettings; }
     const DeviceCoefficients& coefficients() const { return mCoefficients; }
 
+    /// The scheme of the steps recorded from now on.
+    /// @throw modeflow::Error for the trapezoidal scheme.
+    void setScheme(Integrator scheme);
+    /// New viscosity and LANS-α (κ² as in the constructor) for the steps recorded from now on.
+    /// Between submissions only.
+    /// @throw modeflow::Error for parameters FluidSystem refuses.
+    void setParameters(const FluidParameters& parameters);
     /// Host ↔ device copies of the state v and the force f; call between submissions.
     void setState(const Eigen::VectorXd& v);
     Eigen::VectorXd state() const;

@@ -64,13 +64,16 @@ VolumeRenderer::VolumeRenderer(const vulkan::VulkanContext& context, const MacGr
       mSequence(context) {}
 
 void VolumeRenderer::record(vulkan::CommandSequence& sequence, const DeviceBuffer& density,
-                            float densityScale) const {
+                            float densityScale, std::uint32_t densityStride,
+                            const VolumeCamera& camera) const {
     const std::int64_t cells = mGrid.cellCount();
-    if (density.bytes() < VkDeviceSize(cells) * sizeof(float))
+    const VkDeviceSize needed = VkDeviceSize(cells) * std::max(densityStride, 1u) * sizeof(float);
+    if (density.bytes() < needed)
         throw Error("3D preview: density buffer \"" + density.name() + "\" holds " +
                     std::to_string(density.bytes()) + " bytes, the smoke grid's " +
-                    std::to_string(cells) + " cells need " + std::to_string(cells * sizeof(float)));
-    shaders::RenderVolumeParams params = volumeViewParams(mGrid, mWidth, mHeight, densityScale);
+                    std::to_string(cells) + " cells need " + std::to_string(needed));
+    shaders::RenderVolumeParams params =
+        volumeViewParams(mGrid, mWidth, mHeight, densityScale, camera, std::max(densityStride, 1u));
     const std::array<const DeviceBuffer*, 5> buffers{&density, &mMask, &mExtinction, &mDepth,
                                                      &mPixels};
     // Grid-stride loops in the shader: any item count fits in the largest group count.

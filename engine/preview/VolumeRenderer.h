@@ -11,6 +11,7 @@
 
 #include "engine/field/MacGrid.h"
 #include "engine/preview/Image.h"
+#include "engine/preview/VolumeView.h"
 #include "engine/vulkan/CommandSequence.h"
 #include "engine/vulkan/ComputeKernel.h"
 #include "engine/vulkan/DeviceBuffer.h"
@@ -37,10 +38,16 @@ public:
 
     /// Records both passes into `sequence` (to share a submission with a simulation step, after
     /// the step's dispatches); picture() reads the result once the sequence was submitted.
+    /// `densityStride`: floats from one cell's density to the next (2 reads the density of
+    /// SmokeState::fields() in place).
     void record(vulkan::CommandSequence& sequence, const vulkan::DeviceBuffer& density,
-                float densityScale) const;
+                float densityScale, std::uint32_t densityStride = 1,
+                const VolumeCamera& camera = {}) const;
     /// The picture of the last submitted record(). After the submission's fence only.
     Image picture() const;
+    /// The picture on the device: width × height packed RGBA8 words (red in the low byte), rows
+    /// from the top, for kernels that draw it further (the stir window).
+    const vulkan::DeviceBuffer& pictureBuffer() const { return mPixels; }
 
     int width() const { return mWidth; }
     int height() const { return mHeight; }

@@ -13,8 +13,6 @@ namespace {
 
 using V3 = std::array<double, 3>;
 
-constexpr double kAzimuthDeg = -60.0;
-constexpr double kElevationDeg = 25.0;
 constexpr double kFieldOfViewDeg = 40.0;  // across the shorter side of the picture
 
 V3 cross(const V3& a, const V3& b) {
@@ -28,7 +26,8 @@ V3 normalized(const V3& v) {
 }  // namespace
 
 shaders::RenderVolumeParams volumeViewParams(const MacGrid& grid, int width, int height,
-                                             float densityScale) {
+                                             float densityScale, const VolumeCamera& camera,
+                                             std::uint32_t densityStride) {
     if (grid.dim != 3)
         throw Error("3D preview: the smoke grid is " + std::to_string(grid.dim) + "D, expected 3D");
     if (width < 1 || height < 1)
@@ -37,6 +36,8 @@ shaders::RenderVolumeParams volumeViewParams(const MacGrid& grid, int width, int
     if (!(densityScale >= 0.0f) || !std::isfinite(densityScale))
         throw Error("3D preview: density scale " + std::to_string(densityScale) +
                     " is not a finite non-negative number");
+    if (!(camera.zoom > 0.0) || !std::isfinite(camera.zoom))
+        throw Error("3D view: zoom " + std::to_string(camera.zoom) + " is not positive");
 
     // World lengths are measured in L, the box's largest side (t units, RenderVolumeParams.h).
     V3 side{}, centre{};
@@ -47,14 +48,14 @@ shaders::RenderVolumeParams volumeViewParams(const MacGrid& grid, int width, int
         0.5 * std::sqrt(side[0] * side[0] + side[1] * side[1] + side[2] * side[2]);
 
     const double deg = std::numbers::pi / 180.0;
-    const V3 toEye{std::cos(kElevationDeg * deg) * std::cos(kAzimuthDeg * deg),
-                   std::cos(kElevationDeg * deg) * std::sin(kAzimuthDeg * deg),
-                   std::sin(kElevationDeg * deg)};
+    const V3 toEye{std::cos(camera.elevationDeg * deg) * std::cos(camera.azimuthDeg * deg),
+                   std::cos(camera.elevationDeg * deg) * std::sin(camera.azimuthDeg * deg),
+                   std::sin(camera.elevationDeg * deg)};
     const V3 forward{-toEye[0], -toEye[1], -toEye[2]};
     const V3 right = normalized(cross(forward, {0.0, 0.0, 1.0}));
     const V3 up = cross(right, forward);
     const double halfAngle = 0.5 * kFieldOfViewDeg * deg;
-    const double distance = radius / std::sin(halfAngle);
+    const double distance = radius / std::sin(halfAngle) / camera.zoom;
     const double tanHalf = std::tan(halfAngle);
     const double shorter = std::min(width, height);
     const double tanX = tanHalf * width / shorter, tanY = tanHalf * height / shorter;
@@ -66,6 +67,7 @@ shaders::RenderVolumeParams volumeViewParams(const MacGrid& grid, int width, int
     p.cellsY = std::uint32_t(grid.cells[1]);
     p.cellsZ = std::uint32_t(grid.cells[2]);
     p.densityScale = densityScale;
+    p.densityStride = densityStride;
     std::array<float*, 3> eye{&p.eyeX, &p.eyeY, &p.eyeZ}, base{&p.baseX, &p.baseY, &p.baseZ},
         dx{&p.dxX, &p.dxY, &p.dxZ}, dy{&p.dyX, &p.dyY, &p.dyZ},
         cellsPerT{&p.cellsPerTX, &p.cellsPerTY, &p.cellsPerTZ};

@@ -56,6 +56,25 @@ void Simulation::setSplats(std::span<const ForceSplat> splats) {
     if (!forcesActive()) mStepper.setForce(Eigen::VectorXd::Zero(mStepper.size()));
 }
 
+void Simulation::setObstacles(std::vector<MovingObstacle> obstacles) {
+    if (obstacles.size() > std::size_t(maxObstacles))
+        throw Error("simulation: " + std::to_string(obstacles.size()) + " obstacles, at most " +
+                    std::to_string(maxObstacles) + " move at once");
+    mSettings.obstacles = std::move(obstacles);
+}
+
+void Simulation::setViscosity(double viscosity) {
+    FluidParameters fluid = mSettings.fluid;
+    fluid.viscosity = viscosity;
+    mStepper.setParameters(fluid);
+    mSettings.fluid = std::move(fluid);
+}
+
+void Simulation::setIntegrator(Integrator integrator) {
+    mStepper.setScheme(integrator);
+    mSettings.integrator = integrator;
+}
+
 void Simulation::recordStep(std::vector<std::size_t>& boundaries) {
     const double dt = mSettings.dt;
     // Emitters switch on and off at step boundaries; the device list changes only when they do.
@@ -88,8 +107,12 @@ void Simulation::recordStep(std::vector<std::size_t>& boundaries) {
 }
 
 FrameStats Simulation::advanceFrame() {
+    return advanceSteps(mSettings.stepsPerFrame);
+}
+
+FrameStats Simulation::advanceSteps(int steps) {
     FrameStats stats;
-    for (int s = 0; s < mSettings.stepsPerFrame; ++s) {
+    for (int s = 0; s < steps; ++s) {
         std::vector<std::size_t> boundaries;
         recordStep(boundaries);
         mSequence.submitAndWait();

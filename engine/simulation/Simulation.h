@@ -43,11 +43,22 @@ public:
     void restore(double time, const Eigen::VectorXd& v, const SmokeFields& smoke) override;
     void setSplats(std::span<const ForceSplat> splats) override;
     FrameStats advanceFrame() override;
+    /// `steps` steps (advanceFrame() takes settings().stepsPerFrame), each its own submission.
+    FrameStats advanceSteps(int steps);
     SmokeFields smoke() const override;
     std::vector<double> faceVelocity() const override;
     const SimulationSettings& settings() const override { return mSettings; }
     const MacGrid& smokeGrid() const override { return mSmoke.smokeGrid(); }
     double time() const override { return mTime; }
+
+    /// Interactive changes (`modeflow stir`), between frames: the obstacles of the following
+    /// steps, the viscosity ν, and the integrator (explicit, rk4 or midpoint).
+    /// @throw modeflow::Error for more than maxObstacles, a negative ν or the trapezoidal rule.
+    void setObstacles(std::vector<MovingObstacle> obstacles);
+    void setViscosity(double viscosity);
+    void setIntegrator(Integrator integrator);
+    /// The smoke on the device, for kernels that draw it (valid between frames).
+    const vulkan::SmokeState& smokeState() const { return mSmoke; }
 
 private:
     /// Records one whole step; adds each stage's dispatch range to `ranges`.

@@ -51,6 +51,11 @@ DeviceSelector& DeviceSelector::requireApiVersion(std::uint32_t version) {
     return *this;
 }
 
+DeviceSelector& DeviceSelector::requirePresentation(VkSurfaceKHR surface) {
+    mSurface = surface;
+    return *this;
+}
+
 int DeviceSelector::typeRank(VkPhysicalDeviceType type) {
     switch (type) {
         case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU:
@@ -104,6 +109,12 @@ DeviceSelection DeviceSelector::select() const {
         // A compute-only family, where there is one, runs beside graphics work on real GPUs.
         for (std::uint32_t f = 0; f < familyCount; ++f) {
             if (!(families[f].queueFlags & VK_QUEUE_COMPUTE_BIT)) continue;
+            if (mSurface) {
+                // The window's pictures are computed and presented on one queue.
+                VkBool32 presents = VK_FALSE;
+                vkGetPhysicalDeviceSurfaceSupportKHR(c.device, f, mSurface, &presents);
+                if (!presents) continue;
+            }
             const bool computeOnly = !(families[f].queueFlags & VK_QUEUE_GRAPHICS_BIT);
             if (!c.queueFamily || computeOnly) c.queueFamily = f;
             if (computeOnly) break;
@@ -125,7 +136,8 @@ DeviceSelection DeviceSelector::select() const {
             c.rejection = "Vulkan " + versionString(c.properties.apiVersion) +
                           " is below the required " + versionString(mApiVersion);
         else if (!c.queueFamily)
-            c.rejection = "no queue family with compute support";
+            c.rejection = mSurface ? "no queue family that computes and presents to the window"
+                                   : "no queue family with compute support";
         else
             for (const auto& e : mExtensions)
                 if (!available.count(e)) {

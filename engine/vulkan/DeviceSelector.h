@@ -19,7 +19,7 @@ namespace modeflow::vulkan {
 struct DeviceSelection {
     VkPhysicalDevice device = VK_NULL_HANDLE;
     std::uint32_t index = 0;        ///< position in vkEnumeratePhysicalDevices
-    std::uint32_t queueFamily = 0;  ///< a family with compute support
+    std::uint32_t queueFamily = 0;  ///< a family with compute (and presentation, if required) support
     std::string name;
     std::string report;  ///< one line per device: "chosen …" or "rejected …: reason"
 };
@@ -36,6 +36,9 @@ public:
     DeviceSelector& requireExtension(std::string extension);
     /// Devices below this Vulkan version (VK_MAKE_API_VERSION) are rejected.
     DeviceSelector& requireApiVersion(std::uint32_t version);
+    /// The queue family must also present to `surface` (a window's): devices where no compute
+    /// family can are rejected.
+    DeviceSelector& requirePresentation(VkSurfaceKHR surface);
 
     /// @throw modeflow::Error when no device is suitable; the message lists every device and why
     /// it was rejected (or says that the loader found none at all).
@@ -51,6 +54,7 @@ private:
     std::string mName;
     std::vector<std::string> mExtensions;
     std::uint32_t mApiVersion = VK_API_VERSION_1_0;
+    VkSurfaceKHR mSurface = VK_NULL_HANDLE;
 };
 
 }  // namespace modeflow::vulkan

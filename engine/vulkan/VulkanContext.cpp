@@ -55,6 +55,7 @@ VulkanContext::VulkanContext(const VulkanContextOptions& options) {
     app.apiVersion = VK_API_VERSION_1_2;  // shaders target SPIR-V 1.5 (Vulkan 1.2)
 
     std::vector<const char*> layers, extensions;
+    for (const std::string& e : options.instanceExtensions) extensions.push_back(e.c_str());
     VkDebugUtilsMessengerCreateInfoEXT messengerInfo{};
     if (validation) {
         layers.push_back(kValidationLayer);
@@ -88,6 +89,12 @@ VulkanContext::VulkanContext(const VulkanContextOptions& options) {
     DeviceSelector selector(mInstance);
     selector.requireApiVersion(VK_API_VERSION_1_2)
         .requireExtension(VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME);
+    std::vector<const char*> deviceExtensions{VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME};
+    if (options.createSurface) {
+        mSurface = options.createSurface(mInstance);
+        selector.requirePresentation(mSurface).requireExtension(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
+        deviceExtensions.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
+    }
     if (options.deviceIndex) selector.requireIndex(*options.deviceIndex);
     if (!options.deviceName.empty()) selector.requireName(options.deviceName);
     mSelection = selector.select();
@@ -119,13 +126,12 @@ VulkanContext::VulkanContext(const VulkanContextOptions& options) {
     queueInfo.queueFamilyIndex = mSelection.queueFamily;
     queueInfo.queueCount = 1;
     queueInfo.pQueuePriorities = &priority;
-    const char* deviceExtensions[] = {VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME};
     VkDeviceCreateInfo deviceInfo{};
     deviceInfo.sType = VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO;
     deviceInfo.queueCreateInfoCount = 1;
     deviceInfo.pQueueCreateInfos = &queueInfo;
-    deviceInfo.enabledExtensionCount = 1;
-    deviceInfo.ppEnabledExtensionNames = deviceExtensions;
+    deviceInfo.enabledExtensionCount = std::uint32_t(deviceExtensions.size());
+    deviceInfo.ppEnabledExtensionNames = deviceExtensions.data();
     // 64-bit integer loads let bandwidth-bound kernels move 8 bytes per load instruction, which
     // doubles their speed on lavapipe (it issues every lane's load separately).
     VkPhysicalDeviceFeatures supported{}, features{};
@@ -152,6 +158,10 @@ void VulkanContext::release() noexcept {
         vkDeviceWaitIdle(mDevice);
         vkDestroyDevice(mDevice, nullptr);
         mDevice = VK_NULL_HANDLE;
+    }
+    if (mSurface) {
+        vkDestroySurfaceKHR(mInstance, mSurface, nullptr);
+        mSurface = VK_NULL_HANDLE;
     }
     if (mMessenger) {
         auto destroy = reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(

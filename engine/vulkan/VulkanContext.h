@@ -1,9 +1,12 @@
 #pragma once
 /// @file VulkanContext.h
 /// The Vulkan instance, the chosen device and its compute queue: what every buffer and kernel is
-/// created from. Compute only, no surface (the display layer will bring its own).
+/// created from. For a window (engine/display), the context also owns the window's surface and
+/// picks a device and queue that compute and present to it, so the simulation and the pictures
+/// share one device.
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -30,6 +33,11 @@ struct VulkanContextOptions {
     /// Keep buffers in device-local memory reached through staging copies even where host-visible
     /// memory would do (always so on discrete GPUs); tests use it to exercise that path anywhere.
     bool forceStaging = false;
+    /// Instance extensions a window system needs (glfwGetRequiredInstanceExtensions).
+    std::vector<std::string> instanceExtensions;
+    /// Set for a window: makes its surface once the instance exists. The context then owns the
+    /// surface, requires a queue that presents to it and enables VK_KHR_swapchain.
+    std::function<VkSurfaceKHR(VkInstance)> createSurface;
 };
 
 class VulkanContext {
@@ -47,6 +55,8 @@ public:
     static bool validationRequestedByEnvironment();
 
     VkInstance instance() const { return mInstance; }
+    /// The window's surface (VK_NULL_HANDLE without VulkanContextOptions::createSurface).
+    VkSurfaceKHR surface() const { return mSurface; }
     VkPhysicalDevice physicalDevice() const { return mSelection.device; }
     VkDevice device() const { return mDevice; }
     VkQueue queue() const { return mQueue; }
@@ -86,13 +96,14 @@ public:
     void waitIdle() const;
 
 private:
-    /// Destroys the raw handles (device, messenger, instance) made so far, newest first.
+    /// Destroys the raw handles (device, surface, messenger, instance) made so far, newest first.
     void release() noexcept;
 
     // Declared in creation order; the destructor releases them in reverse.
     std::unique_ptr<ValidationLog> mValidationLog;  ///< fixed address: the messenger's user data
     VkInstance mInstance = VK_NULL_HANDLE;
     VkDebugUtilsMessengerEXT mMessenger = VK_NULL_HANDLE;
+    VkSurfaceKHR mSurface = VK_NULL_HANDLE;
     DeviceSelection mSelection;
     VkPhysicalDeviceProperties mProperties{};
     VkPhysicalDeviceMemoryProperties mMemoryProperties{};

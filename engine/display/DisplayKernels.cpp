@@ -1,0 +1,87 @@
+#include "engine/display/DisplayKernels.h"
+
+#include <array>
+#include <string>
+
+#include "shaders/display_picture.spv.h"
+#include "shaders/display_smoke_2d.spv.h"
+#include "engine/format/Error.h"
+#include "engine/kernels/SmokeState.h"
+#include "engine/vulkan/VulkanContext.h"
+#include "shaders/DisplayParams.h"
+
+namespace modeflow::display {
+namespace {
+
+void requireBytes(const vulkan::DeviceBuffer& buffer, VkDeviceSize bytes) {
+    if (buffer.bytes() < bytes)
+        throw Error("display: buffer \"" + buffer.name() + "\" holds " +
+                    std::to_string(buffer.bytes()) + " bytes, the picture needs " +
+                    std::to_string(bytes));
+}
+
+shaders::DisplayParams paramsFor(const DisplayTarget& target, int sourceWidth, int sourceHeight) {
+    shaders::DisplayParams p{};
+    p.width = std::uint32_t(target.width);
+    p.height = std::uint32_t(target.height);
+    p.viewX = std::uint32_t(target.viewport.x);
+    p.viewY = std::uint32_t(target.viewport.y);
+    p.viewWidth = std::uint32_t(target.viewport.width);
+    p.viewHeight = std::uint32_t(target.viewport.height);
+    p.sourceWidth = std::uint32_t(sourceWidth);
+    p.sourceHeight = std::uint32_t(sourceHeight);
+    p.blueFirst = target.blueFirst ? 1u : 0u;
+    return p;
+}
+
+/// Checks the overlay and output sizes of `target` and returns the group count of one
+/// invocation per pixel.
+std::uint32_t pixelGroups(const vulkan::ComputeKernel& kernel, const DisplayTarget& target,
+                          const vulkan::DeviceBuffer& overlay, const vulkan::DeviceBuffer& pixels) {
+    const VkDeviceSize count = VkDeviceSize(target.width) * VkDeviceSize(target.height);
+    requireBytes(overlay, count);
+    requireBytes(pixels, count * 4);
+    return std::uint32_t((count + kernel.workgroupSize() - 1) / kernel.workgroupSize());
+}
+
+}  // namespace
+
+DisplayKernels::DisplayKernels(const vulkan::VulkanContext& context)
+    : mContext(context),
+      mSmoke2D(context, {"display_smoke_2d", display_smoke_2d_spv, 4, sizeof(shaders::DisplayParams)}),
+      mPicture(context, {"display_picture", display_picture_spv, 3, sizeof(shaders::DisplayParams)}) {}
+
+void DisplayKernels::recordSmoke2D(vulkan::CommandSequence& sequence, const vulkan::SmokeState& smoke,
+                                   const Smoke2DLook& look, const vulkan::DeviceBuffer& overlay,
+                                   const DisplayTarget& target,
+                                   const vulkan::DeviceBuffer& pixels) const {
+    const MacGrid& grid = smoke.smokeGrid();
+    if (grid.dim != 2)
+        throw Error("display: the 2D smoke picture needs a 2D smoke grid, not " +
+                    std::to_string(grid.dim) + "D");
+    shaders::DisplayParams p = paramsFor(target, grid.cells[0], grid.cells[1]);
+    p.densityScale = look.densityScale;
+    p.hotScale = look.hotScale;
+    p.paddle = look.paddle ? 1u : 0u;
+    p.paddleX = look.paddleCentre[0];
+    p.paddleY = look.paddleCentre[1];
+    p.paddleAxisX = look.paddleAxis[0];
+    p.paddleAxisY = look.paddleAxis[1];
+    p.paddleRadius = look.paddleRadius;
+    const std::array<const vulkan::DeviceBuffer*, 4> buffers{&smoke.fields(), &smoke.mask(), &overlay,
+                                                             &pixels};
+    sequence.dispatch(mSmoke2D, buffers, p, pixelGroups(mSmoke2D, target, overlay, pixels));
+}
+
+void DisplayKernels::recordPicture(vulkan::CommandSequence& sequence,
+                                   const vulkan::DeviceBuffer& picture, int pictureWidth,
+                                   int pictureHeight, const vulkan::DeviceBuffer& overlay,
+                                   const DisplayTarget& target,
+                                   const vulkan::DeviceBuffer& pixels) const {
+    requireBytes(picture, VkDeviceSize(pictureWidth) * VkDeviceSize(pictureHeight) * 4);
+    const shaders::DisplayParams p = paramsFor(target, pictureWidth, pictureHeight);
+    const std::array<const vulkan::DeviceBuffer*, 3> buffers{&picture, &overlay, &pixels};
+    sequence.dispatch(mPicture, buffers, p, pixelGroups(mPicture, target, overlay, pixels));
+}
+
+}  // namespace modeflow::display

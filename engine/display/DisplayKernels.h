@@ -1,0 +1,61 @@
+#pragma once
+/// @file DisplayKernels.h
+/// The stir window's picture on the device: one packed pixel per window pixel, in the
+/// swapchain's byte order, for the Presenter to copy. 2D scenes: the smoke drawn straight from
+/// the simulation's buffers (shaders/display_smoke_2d.comp); 3D scenes: the ray-marched picture
+/// (engine/preview/VolumeRenderer) scaled into the viewport (shaders/display_picture.comp).
+/// Both blend the TextOverlay on top and letterbox the picture (Viewport.h).
+
+#include "engine/display/Viewport.h"
+#include "engine/vulkan/CommandSequence.h"
+#include "engine/vulkan/ComputeKernel.h"
+#include "engine/vulkan/DeviceBuffer.h"
+
+namespace modeflow::vulkan {
+class SmokeState;
+}
+
+namespace modeflow::display {
+
+/// What a picture is drawn into: the window size, the viewport and the byte order.
+struct DisplayTarget {
+    int width = 0, height = 0;
+    Viewport viewport;
+    bool blueFirst = false;
+};
+
+/// How the 2D smoke is drawn.
+struct Smoke2DLook {
+    float densityScale = 1.0f;  ///< the density shown fully bright
+    float hotScale = 0.0f;      ///< the temperature shown fully hot (0: no tint)
+    /// A capsule drawn over the smoke (the stir paddle), in smoke cells, y up.
+    bool paddle = false;
+    float paddleCentre[2]{};
+    float paddleAxis[2]{};  ///< centre to one end of the segment
+    float paddleRadius = 0.0f;
+};
+
+class DisplayKernels {
+public:
+    /// @throw modeflow::Error if a pipeline cannot be made.
+    explicit DisplayKernels(const vulkan::VulkanContext& context);
+
+    /// Records the picture of the 2D `smoke` into `pixels`.
+    /// @throw modeflow::Error when the smoke grid is not 2D or `pixels` or `overlay` is too small.
+    void recordSmoke2D(vulkan::CommandSequence& sequence, const vulkan::SmokeState& smoke,
+                       const Smoke2DLook& look, const vulkan::DeviceBuffer& overlay,
+                       const DisplayTarget& target, const vulkan::DeviceBuffer& pixels) const;
+    /// Records `picture` (pictureWidth × pictureHeight packed RGBA8 words) scaled into the
+    /// viewport, into `pixels`.
+    /// @throw modeflow::Error when a buffer is too small.
+    void recordPicture(vulkan::CommandSequence& sequence, const vulkan::DeviceBuffer& picture,
+                       int pictureWidth, int pictureHeight, const vulkan::DeviceBuffer& overlay,
+                       const DisplayTarget& target, const vulkan::DeviceBuffer& pixels) const;
+
+private:
+    const vulkan::VulkanContext& mContext;
+    vulkan::ComputeKernel mSmoke2D;
+    vulkan::ComputeKernel mPicture;
+};
+
+}  // namespace modeflow::display

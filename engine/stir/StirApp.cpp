@@ -1,0 +1,338 @@
+#include "engine/stir/StirApp.h"
+
+#include <GLFW/glfw3.h>
+
+#include <chrono>
+#include <cstdio>
+#include <ostream>
+
+#include "engine/display/DisplayKernels.h"
+#include "engine/display/Presenter.h"
+#include "engine/display/TextOverlay.h"
+#include "engine/display/Window.h"
+#include "engine/format/Error.h"
+#include "engine/preview/PngWriter.h"
+#include "engine/preview/VolumeRenderer.h"
+#include "engine/stir/RealTimeClock.h"
+#include "engine/stir/StirKeys.h"
+#include "engine/stir/StirView.h"
+
+namespace modeflow::stir {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+using display::InputEvent;
+using display::InputKind;
+using display::MouseButton;
+
+/// Steps may use this much of a frame in real time, so the window keeps at least ~30 fps.
+constexpr double kStepBudgetSeconds = 1.0 / 30.0;
+/// 3D: optical depth across the box at density 1.
+constexpr float kOpticalDepth = 6.0f;
+
+double seconds(Clock::duration d) {
+    return std::chrono::duration<double>(d).count();
+}
+
+bool simulatesHeat(const SceneSpec& scene) {
+    for (const SourceSpec& source : scene.sources)
+        if (source.temperature != 0.0) return true;
+    return false;
+}
+
+/// One run of the window: everything the frame loop keeps between frames.
+class StirWindow {
+public:
+    StirWindow(const StirOptions& options, const SceneSpec& scene, const BasisCache& cache,
+               std::unique_ptr<StructuralCoefficients> coefficients, std::vector<std::uint8_t> mask,
+               const Eigen::VectorXd& initialVelocity)
+        : mOptions(options),
+          mScene(scene),
+          mWindow(options.width, options.height, "modeflow stir: " + scene.name),
+          mContext(contextOptions(options.device, mWindow)),
+          mSession(mContext, scene, cache, std::move(coefficients),
+                   mask, initialVelocity, options.stir),
+          mView(mSession.simulation().smokeGrid()),
+          mPresenter(mContext, mWindow.framebufferSize()),
+          mKernels(mContext),
+          mOverlay(mContext),
+          mSequence(mContext),
+          mClock(mSession.settings().dt, kStepBudgetSeconds),
+          mScript(options.script) {
+        if (mView.grid().dim == 3)
+            mRenderer = std::make_unique<preview::VolumeRenderer>(
+                mContext, mView.grid(), mask, StirView::kPictureWidth, StirView::kPictureHeight);
+    }
+
+    StirReport run(std::ostream& log);
+
+private:
+    static vulkan::VulkanContextOptions contextOptions(vulkan::VulkanContextOptions options,
+                                                       const display::Window& window) {
+        options.instanceExtensions = window.requiredInstanceExtensions();
+        options.createSurface = [&window](VkInstance instance) { return window.createSurface(instance); };
+        return options;
+    }
+
+    void handle(const InputEvent& event);
+    void act(StirAction action);
+    std::optional<Vec3> scenePoint(const InputEvent& event) const;
+    /// Draws the frame into mPixels (one submission); false while the window is minimized.
+    bool draw();
+    std::vector<display::TextBlock> overlayText() const;
+    display::Smoke2DLook smokeLook() const;
+    preview::Image picture() const;
+    void saveScreenshot(const std::filesystem::path& file);
+
+    const StirOptions& mOptions;
+    const SceneSpec& mScene;
+    display::Window mWindow;
+    vulkan::VulkanContext mContext;
+    StirSession mSession;
+    StirView mView;
+    display::Presenter mPresenter;
+    display::DisplayKernels mKernels;
+    display::TextOverlay mOverlay;
+    vulkan::CommandSequence mSequence;
+    std::unique_ptr<preview::VolumeRenderer> mRenderer;
+    std::unique_ptr<vulkan::DeviceBuffer> mPixels;
+    VkExtent2D mPixelsExtent{};
+    RealTimeClock mClock;
+    std::vector<TimedEvent> mScript;
+    std::size_t mNextScripted = 0;
+
+    bool mPaused = false, mStepOnce = false, mHelp = false, mQuit = false, mScreenshot = false;
+    bool mOrbiting = false;
+    double mOrbitX = 0.0, mOrbitY = 0.0;
+    int mScreenshots = 0;
+    // Statistics, refreshed about four times a second.
+    std::string mStatistics;
+    double mStepSeconds = 0.0;  ///< smoothed wall time per step
+    int mSampleFrames = 0;
+    Clock::time_point mSampleStart = Clock::now();
+};
+
+std::optional<Vec3> StirWindow::scenePoint(const InputEvent& event) const {
+    const VkExtent2D size = mPresenter.extent();
+    return mView.scenePoint(event.x, event.y, int(size.width), int(size.height));
+}
+
+void StirWindow::handle(const InputEvent& event) {
+    switch (event.kind) {
+        case InputKind::Key:
+            if (const auto action = actionOfKey(event.key)) act(*action);
+            break;
+        case InputKind::ButtonDown:
+            if (event.button == MouseButton::Left) {
+                if (const auto p = scenePoint(event)) mSession.press(*p);
+            } else {
+                mOrbiting = true;
+            }
+            mOrbitX = event.x;
+            mOrbitY = event.y;
+            break;
+        case InputKind::ButtonUp:
+            if (event.button == MouseButton::Left) {
+                if (const auto p = scenePoint(event)) mSession.moveTo(*p);
+                mSession.release();
+            } else {
+                mOrbiting = false;
+            }
+            break;
+        case InputKind::Move:
+            if (const auto p = scenePoint(event)) mSession.moveTo(*p);
+            if (mOrbiting && mView.grid().dim == 3) mView.orbit(event.x - mOrbitX, event.y - mOrbitY);
+            mOrbitX = event.x;
+            mOrbitY = event.y;
+            break;
+        case InputKind::Scroll:
+            if (mView.grid().dim == 3) mView.zoom(event.y);
+            break;
+        case InputKind::Resize:
+            mWindow.resize(event.width, event.height);
+            break;
+    }
+}
+
+void StirWindow::act(StirAction action) {
+    switch (action) {
+        case StirAction::Pause:
+            mPaused = !mPaused;
+            mClock.restart();
+            break;
+        case StirAction::Step: mStepOnce = mPaused; break;
+        case StirAction::Reset: mSession.reset(); break;
+        case StirAction::Integrator: mSession.toggleIntegrator(); break;
+        case StirAction::ViscosityUp: mSession.scaleViscosity(true); break;
+        case StirAction::ViscosityDown: mSession.scaleViscosity(false); break;
+        case StirAction::NextBasis: mSession.nextBasis(); break;
+        case StirAction::Paddle: mSession.togglePaddle(); break;
+        case StirAction::Screenshot: mScreenshot = true; break;
+        case StirAction::Help: mHelp = !mHelp; break;
+        case StirAction::Quit: mQuit = true; break;
+    }
+}
+
+std::vector<display::TextBlock> StirWindow::overlayText() const {
+    std::vector<display::TextBlock> blocks;
+    if (mOptions.statistics) blocks.push_back({8, 8, mStatistics, false});
+    if (mHelp) blocks.push_back({-8, 8, helpText(), true});
+    return blocks;
+}
+
+display::Smoke2DLook StirWindow::smokeLook() const {
+    display::Smoke2DLook look;
+    look.hotScale = simulatesHeat(mScene) ? 1.0f : 0.0f;
+    if (const auto paddle = mSession.paddle()) {
+        const MacGrid& grid = mView.grid();
+        look.paddle = true;
+        for (int a = 0; a < 2; ++a) {
+            look.paddleCentre[a] = float((paddle->centre[a] - grid.origin[a]) / grid.spacing[a]);
+            look.paddleAxis[a] = float(paddle->axis[a] / grid.spacing[a]);
+        }
+        look.paddleRadius = float(paddle->radius / grid.spacing[0]);
+    }
+    return look;
+}
+
+bool StirWindow::draw() {
+    const VkExtent2D wanted = mWindow.framebufferSize();
+    if (wanted.width == 0 || wanted.height == 0) return false;
+    const VkExtent2D shown = mPresenter.extent();
+    if (wanted.width != shown.width || wanted.height != shown.height) mPresenter.resize(wanted);
+    const VkExtent2D size = mPresenter.extent();
+    if (!mPixels || size.width != mPixelsExtent.width || size.height != mPixelsExtent.height) {
+        mPixels = std::make_unique<vulkan::DeviceBuffer>(
+            mContext, VkDeviceSize(size.width) * size.height * 4, "window picture");
+        mPixelsExtent = size;
+    }
+    const int width = int(size.width), height = int(size.height);
+    mOverlay.update(width, height, overlayText(), height >= 600 ? 2 : 1);
+    display::DisplayTarget target{width, height, mView.viewport(width, height), mPresenter.blueFirst()};
+    const vulkan::SmokeState& smoke = mSession.simulation().smokeState();
+    if (mRenderer) {
+        mRenderer->record(mSequence, smoke.fields(), kOpticalDepth, 2, mView.camera());
+        mKernels.recordPicture(mSequence, mRenderer->pictureBuffer(), mRenderer->width(),
+                               mRenderer->height(), mOverlay.buffer(), target, *mPixels);
+    } else {
+        mKernels.recordSmoke2D(mSequence, smoke, smokeLook(), mOverlay.buffer(), target, *mPixels);
+    }
+    mSequence.submitAndWait();
+    return true;
+}
+
+preview::Image StirWindow::picture() const {
+    preview::Image image(int(mPixelsExtent.width), int(mPixelsExtent.height));
+    std::vector<std::uint32_t> words(std::size_t(image.width) * std::size_t(image.height));
+    mPixels->download<std::uint32_t>(words);
+    const bool blueFirst = mPresenter.blueFirst();
+    for (std::size_t p = 0; p < words.size(); ++p) {
+        const std::uint32_t w = words[p];
+        const std::uint8_t low = std::uint8_t(w), high = std::uint8_t(w >> 16);
+        image.rgba[4 * p + 0] = blueFirst ? high : low;
+        image.rgba[4 * p + 1] = std::uint8_t(w >> 8);
+        image.rgba[4 * p + 2] = blueFirst ? low : high;
+        image.rgba[4 * p + 3] = 255;
+    }
+    return image;
+}
+
+void StirWindow::saveScreenshot(const std::filesystem::path& file) {
+    if (!mPixels) throw Error("no frame was drawn, so there is no screenshot for " + file.string());
+    preview::writePng(file, picture());
+}
+
+StirReport StirWindow::run(std::ostream& log) {
+    log << mContext.describe();
+    StirReport report;
+    const bool frameClock = mOptions.frames.has_value();
+    const SimulationSettings& settings = mSession.settings();
+    double windowClock = 0.0, stepWall = 0.0;
+    const Clock::time_point start = Clock::now();
+    Clock::time_point last = start;
+    while (!mQuit && !mWindow.closeRequested() &&
+           !(frameClock && report.frames >= *mOptions.frames)) {
+        const Clock::time_point now = Clock::now();
+        const double wallElapsed = seconds(now - last);
+        last = now;
+        const double elapsed = frameClock ? settings.stepsPerFrame * settings.dt : wallElapsed;
+        windowClock += elapsed;
+
+        for (const InputEvent& event : mWindow.poll()) handle(event);
+        while (mNextScripted < mScript.size() && mScript[mNextScripted].time <= windowClock + 1e-9)
+            handle(mScript[mNextScripted++].event);
+
+        int steps = 0;
+        if (mPaused)
+            steps = std::exchange(mStepOnce, false) ? settings.stepsPerFrame : 0;
+        else
+            steps = frameClock ? settings.stepsPerFrame : mClock.stepsFor(wallElapsed, mStepSeconds);
+        const Clock::time_point stepStart = Clock::now();
+        mSession.advance(steps, elapsed);
+        if (steps > 0) {
+            const double took = seconds(Clock::now() - stepStart);
+            stepWall += took;
+            report.steps += steps;
+            mStepSeconds = mStepSeconds > 0.0 ? 0.8 * mStepSeconds + 0.2 * took / steps : took / steps;
+        }
+
+        ++mSampleFrames;
+        const double sampled = seconds(Clock::now() - mSampleStart);
+        if (sampled >= 0.25 || mStatistics.empty()) {
+            std::string state = mPaused ? "PAUSED" : "";
+            if (!mPaused && !frameClock && mClock.isSlowMotion()) {
+                char speed[48];
+                std::snprintf(speed, sizeof speed, "SLOW MOTION x%.2f", mClock.speed());
+                state = speed;
+            }
+            char line[256];
+            std::snprintf(line, sizeof line, "%s   %.1f fps   step %.1f ms   energy %.4g   t %.2f s   %s",
+                          mScene.name.c_str(), sampled > 0.0 ? mSampleFrames / sampled : 0.0,
+                          1e3 * mStepSeconds, mSession.energy(), mSession.simulation().time(),
+                          state.c_str());
+            mStatistics = std::string(line) + "\n" + mSession.status() + "\nh: help";
+            mSampleFrames = 0;
+            mSampleStart = Clock::now();
+        }
+
+        if (!draw()) continue;
+        if (std::exchange(mScreenshot, false)) {
+            char name[64];
+            std::snprintf(name, sizeof name, "_stir_%04d.png", ++mScreenshots);
+            const std::filesystem::path file = mOptions.screenshotFolder / (mScene.name + name);
+            saveScreenshot(file);
+            log << "screenshot: " << file.string() << "\n";
+        }
+        mPresenter.present(*mPixels, mWindow.framebufferSize());
+        ++report.frames;
+    }
+    report.seconds = seconds(Clock::now() - start);
+    report.stepMs = report.steps > 0 ? 1e3 * stepWall / report.steps : 0.0;
+    if (!mOptions.screenshot.empty()) saveScreenshot(mOptions.screenshot);
+    mContext.waitIdle();
+    report.width = int(mPixelsExtent.width);
+    report.height = int(mPixelsExtent.height);
+    report.smoke = mSession.simulation().smoke();
+    report.validationMessages = mContext.validationMessageCount();
+    char summary[200];
+    std::snprintf(summary, sizeof summary, "%d frames in %.2f s: %.1f fps, %d steps, %.2f ms per step\n",
+                  report.frames, report.seconds, report.framesPerSecond(), report.steps, report.stepMs);
+    log << summary;
+    if (report.validationMessages > 0)
+        throw Error("the Vulkan validation layer reported " + std::to_string(report.validationMessages) +
+                    " problems; the first: " + mContext.validationMessages().front());
+    return report;
+}
+
+}  // namespace
+
+StirReport runStir(const StirOptions& options, const SceneSpec& scene, const BasisCache& cache,
+                   std::unique_ptr<StructuralCoefficients> coefficients,
+                   std::vector<std::uint8_t> mask, const Eigen::VectorXd& initialVelocity,
+                   std::ostream& log) {
+    StirWindow window(options, scene, cache, std::move(coefficients), std::move(mask),
+                      initialVelocity);
+    return window.run(log);
+}
+
+}  // namespace modeflow::stir

@@ -1,0 +1,60 @@
+#pragma once
+/// @file StirApp.h
+/// `modeflow stir`: the interactive window. Each frame reads the input (the window's, and a
+/// script's events when their time comes), takes the simulation steps the clock calls for
+/// (RealTimeClock: real time, or slow motion that says so), draws the smoke on the device
+/// (DisplayKernels, with statistics and the key help over it) and presents it. With a frame
+/// count the clock is the scene's frame clock instead (steps_per_frame steps a frame), so a
+/// scripted run is the same on any machine, and the window closes after the last frame.
+
+#include <cstdint>
+#include <filesystem>
+#include <iosfwd>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "engine/dynamics/StructuralCoefficients.h"
+#include "engine/field/SmokeAdvection.h"
+#include "engine/format/BasisCache.h"
+#include "engine/stir/InputScript.h"
+#include "engine/stir/StirSession.h"
+#include "engine/vulkan/VulkanContext.h"
+#include "precompute/scene/SceneSpec.h"
+
+namespace modeflow::stir {
+
+struct StirOptions {
+    int width = 1280, height = 720;  ///< the window's first size, screen units
+    std::optional<int> frames;       ///< close after this many frames (frame clock)
+    std::filesystem::path screenshot;                 ///< the last frame as PNG, if not empty
+    std::filesystem::path screenshotFolder = ".";     ///< where the screenshot key writes
+    std::vector<TimedEvent> script;                   ///< events to replay
+    bool statistics = true;                           ///< the statistics over the picture
+    vulkan::VulkanContextOptions device;
+    StirSettings stir;
+};
+
+struct StirReport {
+    int frames = 0;
+    int steps = 0;
+    double seconds = 0.0;        ///< wall time of the frame loop
+    double stepMs = 0.0;         ///< mean wall time per simulation step
+    int width = 0, height = 0;   ///< the window's last size, pixels
+    SmokeFields smoke;           ///< at the end
+    std::size_t validationMessages = 0;
+    double framesPerSecond() const { return seconds > 0.0 ? frames / seconds : 0.0; }
+};
+
+/// Opens the window and runs until the user quits or the frame count is reached; `log` gets
+/// the device report and a summary line.
+/// @throw modeflow::Error without a display (with how to run headless), for a device that
+///        cannot present, or when anything below fails.
+StirReport runStir(const StirOptions& options, const SceneSpec& scene, const BasisCache& cache,
+                   std::unique_ptr<StructuralCoefficients> coefficients,
+                   std::vector<std::uint8_t> mask, const Eigen::VectorXd& initialVelocity,
+                   std::ostream& log);
+
+}  // namespace modeflow::stir

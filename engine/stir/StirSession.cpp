@@ -1,0 +1,203 @@
+#include "engine/stir/StirSession.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "engine/dynamics/Diagnostics.h"
+#include "engine/format/Error.h"
+
+namespace modeflow::stir {
+namespace {
+
+double distance(const Vec3& a, const Vec3& b) {
+    return std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) +
+                     (a[2] - b[2]) * (a[2] - b[2]));
+}
+
+}  // namespace
+
+StirSession::StirSession(const vulkan::VulkanContext& context, const SceneSpec& scene,
+                         const BasisCache& cache, std::unique_ptr<StructuralCoefficients> coefficients,
+                         std::vector<std::uint8_t> mask, Eigen::VectorXd initialVelocity,
+                         StirSettings settings)
+    : mContext(context),
+      mCache(cache),
+      mCoefficients(std::move(coefficients)),
+      mSceneSettings(SimulationSettings::fromScene(scene, cache)),
+      mMask(std::move(mask)),
+      mInitial(std::move(initialVelocity)),
+      mStir(settings),
+      mBases(shapedBases(scene.basis)) {
+    const MacGrid grid = MacGrid::fromSpec(cache.grid);
+    mDim = grid.dim;
+    mBoxSize = 0.0;
+    for (int a = 0; a < mDim; ++a) {
+        mBoxSize = std::max(mBoxSize, grid.spacing[a] * grid.cells[a]);
+        mPaddleAt[a] = grid.origin[a] + 0.5 * grid.spacing[a] * grid.cells[a];
+    }
+    mSimulations.resize(mBases.size());
+    mBasis = mBases.size() - 1;  // the scene's own basis, all of it
+    simulationOf(mBasis).setVelocity(mInitial);
+}
+
+Simulation& StirSession::simulationOf(std::size_t b) {
+    if (!mSimulations[b]) {
+        const int modes = mBases[b].modes;
+        SimulationSettings settings = mSceneSettings;
+        settings.fluid.kappaSquared = mCache.velocity.eigenvalues.head(modes);
+        if (b + 1 == mBases.size()) {
+            mSimulations[b] = std::make_unique<Simulation>(mContext, mCache, *mCoefficients, settings, mMask);
+        } else {
+            const BasisCache cache = leadingModes(mCache, modes);
+            mSimulations[b] = std::make_unique<Simulation>(
+                mContext, cache, *leadingCoefficients(*mCoefficients, modes), settings, mMask);
+        }
+    }
+    return *mSimulations[b];
+}
+
+void StirSession::press(const Vec3& point) {
+    mDragging = true;
+    mPointer = mStrokeFrom = point;
+    mStrokeTime = 0.0;
+    // The paddle jumps to where the user grabs; from there on it moves with the pointer.
+    if (mPaddleMode) mPaddleAt = point;
+}
+
+void StirSession::moveTo(const Vec3& point) {
+    mPointer = point;
+}
+
+void StirSession::release() {
+    mDragging = false;
+}
+
+void StirSession::reset() {
+    const std::size_t cells = std::size_t(simulation().smokeGrid().cellCount());
+    const SmokeFields empty{std::vector<double>(cells, 0.0), std::vector<double>(cells, 0.0)};
+    Eigen::VectorXd v = Eigen::VectorXd::Zero(modeCount());
+    const Eigen::Index shared = std::min<Eigen::Index>(v.size(), mInitial.size());
+    v.head(shared) = mInitial.head(shared);
+    current().restore(0.0, v, empty);
+}
+
+void StirSession::toggleIntegrator() {
+    const Integrator next = settings().integrator == Integrator::Midpoint ? Integrator::Explicit
+                                                                          : Integrator::Midpoint;
+    for (auto& simulation : mSimulations)
+        if (simulation) simulation->setIntegrator(next);
+    mSceneSettings.integrator = next;
+}
+
+void StirSession::scaleViscosity(bool up) {
+    // The first step: ν that damps the highest mode by 1/e in about 100 steps.
+    const double highest = mCache.velocity.eigenvalues.maxCoeff();
+    const double first = highest > 0.0 ? 0.01 / (settings().dt * highest) : 1e-4;
+    double nu = settings().fluid.viscosity;
+    nu = up ? (nu > 0.0 ? 2.0 * nu : first) : (nu > first ? 0.5 * nu : 0.0);
+    for (auto& simulation : mSimulations)
+        if (simulation) simulation->setViscosity(nu);
+    mSceneSettings.fluid.viscosity = nu;
+}
+
+void StirSession::nextBasis() {
+    if (mBases.size() < 2) return;
+    const std::size_t next = (mBasis + 1) % mBases.size();
+    Simulation& from = current();
+    Simulation& to = simulationOf(next);
+    to.setIntegrator(mSceneSettings.integrator);
+    to.setViscosity(mSceneSettings.fluid.viscosity);
+    // The leading modes are the same functions in both bases: they carry over, the rest start
+    // (or stay) at rest.
+    const Eigen::VectorXd v = from.velocity();
+    Eigen::VectorXd carried = Eigen::VectorXd::Zero(mBases[next].modes);
+    const Eigen::Index shared = std::min<Eigen::Index>(v.size(), carried.size());
+    carried.head(shared) = v.head(shared);
+    to.restore(from.time(), carried, from.smoke());
+    mBasis = next;
+}
+
+void StirSession::togglePaddle() {
+    mPaddleMode = !mPaddleMode;
+    if (!mPaddleMode) current().setObstacles(mSceneSettings.obstacles);
+}
+
+std::optional<PaddlePose> StirSession::paddle() const {
+    if (!mPaddleMode) return std::nullopt;
+    PaddlePose pose;
+    pose.centre = mPaddleAt;
+    pose.axis[mDim == 2 ? 1 : 2] = mStir.paddleLength * mBoxSize;
+    pose.radius = mStir.paddleRadius * mBoxSize;
+    return pose;
+}
+
+std::vector<ForceSplat> StirSession::strokeSplats(double elapsed) const {
+    const double length = distance(mStrokeFrom, mPointer);
+    if (!mDragging || mPaddleMode || length == 0.0 || !(elapsed > 0.0)) return {};
+    const double radius = mStir.splatRadius * mBoxSize;
+    // Splats two radii apart along the path, at most 8, each pushing along the motion with
+    // the pointer's speed.
+    const int count = std::clamp(int(std::ceil(length / (2.0 * radius))), 1, 8);
+    std::vector<ForceSplat> splats;
+    for (int s = 1; s <= count; ++s) {
+        const double t = double(s) / count;
+        ForceSplat splat;
+        splat.radius = radius;
+        for (int a = 0; a < 3; ++a) {
+            splat.centre[a] = mStrokeFrom[a] + t * (mPointer[a] - mStrokeFrom[a]);
+            splat.force[a] = mStir.force * (mPointer[a] - mStrokeFrom[a]) / elapsed;
+        }
+        splats.push_back(splat);
+    }
+    return splats;
+}
+
+MovingObstacle StirSession::paddleObstacle(int steps) const {
+    const PaddlePose pose = *paddle();
+    MovingObstacle obstacle;
+    obstacle.spec.shape = ObstacleShape::Capsule;
+    obstacle.spec.radius = pose.radius;
+    obstacle.spec.axis = pose.axis;
+    // From where it was to the pointer over these steps, in the simulation's time, and on at
+    // that velocity past the last step's end, so the last step still sees it moving.
+    const double dt = settings().dt, t0 = simulation().time();
+    const Vec3 to = mDragging ? mPointer : mPaddleAt;
+    Vec3 beyond{};
+    for (int a = 0; a < 3; ++a) beyond[a] = mPaddleAt[a] + (to[a] - mPaddleAt[a]) * (steps + 1.0) / steps;
+    obstacle.spec.path = {{t0, mPaddleAt}, {t0 + (steps + 1) * dt, beyond}};
+    return obstacle;
+}
+
+FrameStats StirSession::advance(int steps, double elapsed) {
+    mStrokeTime += elapsed;
+    if (steps < 1) return {};
+    Simulation& simulation = current();
+    const std::vector<ForceSplat> splats = strokeSplats(mStrokeTime);
+    simulation.setSplats(splats);
+    if (mPaddleMode) {
+        std::vector<MovingObstacle> obstacles = mSceneSettings.obstacles;
+        obstacles.push_back(paddleObstacle(steps));
+        simulation.setObstacles(std::move(obstacles));
+        if (mDragging) mPaddleAt = mPointer;
+    }
+    const FrameStats stats = simulation.advanceSteps(steps);
+    mStrokeFrom = mPointer;
+    mStrokeTime = 0.0;
+    return stats;
+}
+
+double StirSession::energy() const {
+    return modeflow::energy(simulation().velocity());
+}
+
+std::string StirSession::status() const {
+    char line[200];
+    std::snprintf(line, sizeof line, "%s | viscosity %.3g | %d modes (%s) | mouse: %s",
+                  settings().integrator == Integrator::Midpoint ? "midpoint" : "explicit",
+                  settings().fluid.viscosity, modeCount(), mBases[mBasis].label.c_str(),
+                  mPaddleMode ? "paddle" : "stir");
+    return line;
+}
+
+}  // namespace modeflow::stir

@@ -1,0 +1,100 @@
+#pragma once
+/// @file StirSession.h
+/// What `modeflow stir` does to the fluid, apart from any window: a Simulation of the scene on
+/// the device, and the user's hand in it. A left drag either stirs, with force splats along the
+/// pointer's path proportional to its speed (projected on the basis like buoyancy, DESIGN §3),
+/// or moves a solid paddle, a moving obstacle that follows the pointer (seed §6.3.5). Keys
+/// switch the integrator, scale the viscosity, reset, and switch between the shaped bases the
+/// cache holds (ShapedBases.h), carrying the velocity's shared modes and the smoke across.
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "engine/simulation/Simulation.h"
+#include "engine/stir/ShapedBases.h"
+
+namespace modeflow::stir {
+
+struct StirSettings {
+    double force = 12.0;          ///< stirring acceleration per unit pointer speed (1/s)
+    double splatRadius = 0.06;    ///< of the box's largest side
+    double paddleRadius = 0.035;  ///< of the box's largest side
+    double paddleLength = 0.12;   ///< half the paddle's segment, of the box's largest side
+};
+
+/// The paddle where it is now, for drawing.
+struct PaddlePose {
+    Vec3 centre{};
+    Vec3 axis{};  ///< from the centre to one end of the segment
+    double radius = 0.0;
+};
+
+class StirSession {
+public:
+    /// Starts the scene at `initialVelocity` with no smoke; the basis and coefficients are the
+    /// cache's whole basis. `mask`: precompute's fluidMask at the smoke scale.
+    /// @throw modeflow::Error as Simulation does.
+    StirSession(const vulkan::VulkanContext& context, const SceneSpec& scene, const BasisCache& cache,
+                std::unique_ptr<StructuralCoefficients> coefficients, std::vector<std::uint8_t> mask,
+                Eigen::VectorXd initialVelocity, StirSettings settings = {});
+
+    /// The pointer, in scene coordinates (StirView::scenePoint).
+    void press(const Vec3& point);
+    void moveTo(const Vec3& point);
+    void release();
+
+    void reset();
+    void toggleIntegrator();
+    /// ν × 2, or ÷ 2 (the first step up from 0 is a small fraction of the grid's diffusion scale).
+    void scaleViscosity(bool up);
+    void nextBasis();
+    void togglePaddle();
+    bool paddleMode() const { return mPaddleMode; }
+    std::optional<PaddlePose> paddle() const;
+
+    /// `steps` steps with the pointer's motion since the last call spread over them; `elapsed`:
+    /// the window clock's seconds since the last call (the pointer's speed).
+    FrameStats advance(int steps, double elapsed);
+
+    const Simulation& simulation() const { return *mSimulations[mBasis]; }
+    const SimulationSettings& settings() const { return simulation().settings(); }
+    int modeCount() const { return mBases[mBasis].modes; }
+    /// ½|v|², read from the device.
+    double energy() const;
+    /// One line: integrator, viscosity, basis, mouse mode.
+    std::string status() const;
+
+private:
+    Simulation& current() { return *mSimulations[mBasis]; }
+    /// The simulation of basis b, built the first time it is asked for.
+    Simulation& simulationOf(std::size_t b);
+    std::vector<ForceSplat> strokeSplats(double elapsed) const;
+    MovingObstacle paddleObstacle(int steps) const;
+
+    const vulkan::VulkanContext& mContext;
+    BasisCache mCache;
+    std::unique_ptr<StructuralCoefficients> mCoefficients;
+    SimulationSettings mSceneSettings;
+    std::vector<std::uint8_t> mMask;
+    Eigen::VectorXd mInitial;
+    StirSettings mStir;
+    double mBoxSize = 1.0;
+    int mDim = 2;
+    std::vector<ShapedBasis> mBases;
+    std::vector<std::unique_ptr<Simulation>> mSimulations;  ///< per basis, null until used
+    std::size_t mBasis = 0;
+
+    bool mPaddleMode = false;
+    bool mDragging = false;
+    Vec3 mPointer{};     ///< now
+    Vec3 mStrokeFrom{};  ///< at the last step
+    Vec3 mPaddleAt{};
+    double mStrokeTime = 0.0;  ///< window seconds since mStrokeFrom
+};
+
+}  // namespace modeflow::stir

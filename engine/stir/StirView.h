@@ -1,0 +1,46 @@
+#pragma once
+/// @file StirView.h
+/// How the stir window shows the scene and where the pointer is in it. 2D: the smoke grid's box
+/// letterboxed in the window, +y up. 3D: the ray-marched picture (a fixed size, letterboxed) of
+/// an orbit camera around the box's centre; the pointer lies on the plane through the centre
+/// that faces the camera, so a drag stirs across the screen at the depth of the box's middle.
+
+#include <optional>
+
+#include "engine/display/Viewport.h"
+#include "engine/field/MacGrid.h"
+#include "engine/preview/VolumeView.h"
+#include "precompute/scene/SceneSpec.h"
+
+namespace modeflow::stir {
+
+class StirView {
+public:
+    /// The 3D picture's size in pixels: ray marching costs per pixel, so it is rendered at a
+    /// fixed size and scaled to the window.
+    static constexpr int kPictureWidth = 480, kPictureHeight = 360;
+
+    explicit StirView(const MacGrid& smokeGrid) : mGrid(smokeGrid) {}
+
+    /// Where the picture goes in a width × height window.
+    display::Viewport viewport(int width, int height) const;
+    /// The scene point under the window point (fractions, y down) of a width × height window;
+    /// 2D points outside the box are clamped to it; nullopt when the 3D ray misses the plane.
+    std::optional<Vec3> scenePoint(double x, double y, int width, int height) const;
+
+    /// Turns the camera by a pointer motion of (dx, dy) window fractions (3D).
+    void orbit(double dx, double dy);
+    /// Moves the camera closer (positive notches) or away (3D).
+    void zoom(double notches);
+    const preview::VolumeCamera& camera() const { return mCamera; }
+    const MacGrid& grid() const { return mGrid; }
+
+    /// The length that drags and paddles scale with: the box's largest side.
+    double boxSize() const;
+
+private:
+    MacGrid mGrid;
+    preview::VolumeCamera mCamera;
+};
+
+}  // namespace modeflow::stir

@@ -1,0 +1,73 @@
+#include <iostream>
+#include <memory>
+
+#include "engine/dynamics/CachedCoefficients.h"
+#include "engine/format/CacheFile.h"
+#include "engine/format/Error.h"
+#include "engine/stir/StirApp.h"
+#include "precompute/Precompute.h"
+#include "precompute/geometry/FluidMask.h"
+#include "precompute/scene/SceneLoader.h"
+#include "tools/modeflow/Commands.h"
+#include "tools/modeflow/DeviceOption.h"
+#include "tools/modeflow/InitialState.h"
+
+namespace modeflow::cli {
+
+Command addStir(CLI::App& app) {
+    struct Options {
+        std::string scene;
+        std::optional<int> frames;
+        std::optional<std::string> screenshot;
+        std::optional<std::string> script;
+        std::optional<std::string> cacheDir;
+        std::string device = "vulkan";
+        int width = 1280, height = 720;
+        double force = stir::StirSettings{}.force;
+    };
+    auto opts = std::make_shared<Options>();
+    CLI::App* sub = app.add_subcommand(
+        "stir", "Stir a scene's smoke in a window in real time (press h in the window for the keys)");
+    sub->add_option("SCENE", opts->scene, "scene file (TOML)")->required();
+    sub->add_option("--frames", opts->frames,
+                    "close after N frames; the clock is then the scene's frame clock "
+                    "(steps_per_frame steps a frame), not the wall clock")
+        ->check(CLI::PositiveNumber);
+    sub->add_option("--screenshot", opts->screenshot, "write the last frame to this PNG file");
+    sub->add_option("--script", opts->script, "replay timed mouse and key events from FILE");
+    sub->add_option("--width", opts->width, "window width in screen units")->check(CLI::PositiveNumber);
+    sub->add_option("--height", opts->height, "window height")->check(CLI::PositiveNumber);
+    sub->add_option("--force", opts->force, "stirring acceleration per unit pointer speed (1/s)")
+        ->check(CLI::NonNegativeNumber);
+    sub->add_option("--device", opts->device, "a Vulkan device: vulkan (first suitable) or an index");
+    sub->add_option("--cache-dir", opts->cacheDir, "cache folder");
+    return [sub, opts]() {
+        if (!*sub) return -1;
+        // Everything that can be refused is checked before the precompute or the window.
+        const auto deviceOptions = parseDevice(opts->device);
+        if (!deviceOptions)
+            throw Error("--device cpu: the stir window simulates on a Vulkan device (vulkan or an index)");
+        const SceneSpec scene = loadScene(opts->scene);
+        stir::StirOptions options;
+        options.device = *deviceOptions;
+        options.frames = opts->frames;
+        options.width = opts->width;
+        options.height = opts->height;
+        options.stir.force = opts->force;
+        if (opts->script) options.script = stir::readInputScript(*opts->script);
+        if (opts->screenshot) options.screenshot = *opts->screenshot;
+
+        Progress progress = Progress::toStderr();
+        const auto cachePath = ensureCache(scene, resolveCacheDir(opts->cacheDir), false, progress).path;
+        const BasisCache cache = readCache(cachePath);
+        auto coefficients = coefficientsFromCache(cache);
+        const int modes = coefficients->size();
+        const SimulationSettings settings = SimulationSettings::fromScene(scene, cache);
+        stir::runStir(options, scene, cache, std::move(coefficients),
+                      fluidMask(scene, cache, settings.smokeScale),
+                      initialVelocity(scene, cache, modes), std::cerr);
+        return 0;
+    };
+}
+
+}  // namespace modeflow::cli
