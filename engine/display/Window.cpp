@@ -23,14 +23,24 @@ Window& owner(GLFWwindow* window) {
     return *static_cast<Window*>(glfwGetWindowUserPointer(window));
 }
 
-}  // namespace
-
-Window::Window(int width, int height, const std::string& title) {
+/// Initializes GLFW, or says why there is no display.
+void initializeGlfw() {
     glfwSetErrorCallback(recordGlfwError);
     if (glfwInit() != GLFW_TRUE)
         throw Error("cannot open a window: no display (" + lastGlfwError +
                     "). Set DISPLAY to an X server, or run headless under "
                     "xvfb-run -a -s \"-screen 0 1280x720x24\"");
+}
+
+}  // namespace
+
+void Window::requireDisplay() {
+    initializeGlfw();
+    glfwTerminate();
+}
+
+Window::Window(int width, int height, const std::string& title) {
+    initializeGlfw();
     if (glfwVulkanSupported() != GLFW_TRUE) {
         glfwTerminate();
         throw Error("cannot open a window: GLFW finds no Vulkan loader (" + lastGlfwError + ")");

@@ -26,6 +26,10 @@ public:
     Window(const Window&) = delete;
     Window& operator=(const Window&) = delete;
 
+    /// Throws the error the constructor would when there is no display, without opening a
+    /// window (to refuse early, before long work).
+    static void requireDisplay();
+
     /// The instance extensions a surface of this window needs.
     std::vector<std::string> requiredInstanceExtensions() const;
     /// A surface of this window on `instance`; the caller destroys it (VulkanContext does).

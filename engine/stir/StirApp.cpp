@@ -313,6 +313,9 @@ StirReport StirWindow::run(std::ostream& log) {
     report.width = int(mPixelsExtent.width);
     report.height = int(mPixelsExtent.height);
     report.smoke = mSession.simulation().smoke();
+    report.simulatedTime = mSession.simulation().time();
+    report.modes = mSession.modeCount();
+    report.status = mSession.status();
     report.validationMessages = mContext.validationMessageCount();
     char summary[200];
     std::snprintf(summary, sizeof summary, "%d frames in %.2f s: %.1f fps, %d steps, %.2f ms per step\n",

@@ -12,6 +12,7 @@
 #include <iosfwd>
 #include <memory>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include <Eigen/Core>
@@ -44,6 +45,9 @@ struct StirReport {
     double stepMs = 0.0;         ///< mean wall time per simulation step
     int width = 0, height = 0;   ///< the window's last size, pixels
     SmokeFields smoke;           ///< at the end
+    double simulatedTime = 0.0;  ///< at the end
+    int modes = 0;               ///< of the basis shown at the end
+    std::string status;          ///< StirSession::status() at the end
     std::size_t validationMessages = 0;
     double framesPerSecond() const { return seconds > 0.0 ? frames / seconds : 0.0; }
 };

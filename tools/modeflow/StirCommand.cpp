@@ -1,6 +1,7 @@
 #include <iostream>
 #include <memory>
 
+#include "engine/display/Window.h"
 #include "engine/dynamics/CachedCoefficients.h"
 #include "engine/format/CacheFile.h"
 #include "engine/format/Error.h"
@@ -56,6 +57,7 @@ Command addStir(CLI::App& app) {
         options.stir.force = opts->force;
         if (opts->script) options.script = stir::readInputScript(*opts->script);
         if (opts->screenshot) options.screenshot = *opts->screenshot;
+        display::Window::requireDisplay();
 
         Progress progress = Progress::toStderr();
         const auto cachePath = ensureCache(scene, resolveCacheDir(opts->cacheDir), false, progress).path;
