@@ -9,6 +9,7 @@ packages=(
     libopenvdb-dev libboost-iostreams-dev libtbb-dev
     libtomlplusplus-dev libcli11-dev nlohmann-json3-dev libtinyobjloader-dev
     libvulkan-dev mesa-vulkan-drivers vulkan-tools glslang-tools spirv-tools vulkan-validationlayers
+    libglfw3-dev xvfb xauth
     libstb-dev libgtest-dev libbenchmark-dev time bc
 )
 
