@@ -42,9 +42,9 @@ using uint = std::uint32_t;
 /* Outline opacity of the box edges in front of the volume and behind it. */
 #define RENDER_VOLUME_FRONT_EDGE 0.35
 #define RENDER_VOLUME_BACK_EDGE 0.6
-/* Glass: light added per step of half a cell where the trilinear fluid mask w is between 0 and 1,
-   times 4 w (1 - w); a ray crossing the wall head-on gathers about one step's worth, a grazing
-   ray more, so the domain's boundary shows as a faint rim. */
+/* Glass: light added per half a cell of ray (glassT) where the trilinear fluid mask w is between
+   0 and 1, times 4 w (1 - w); a ray crossing the wall head-on gathers about one such step's
+   worth, a grazing ray more, so the domain's boundary shows as a faint rim at any march step. */
 #define RENDER_VOLUME_GLASS_R 0.0003
 #define RENDER_VOLUME_GLASS_G 0.0004
 #define RENDER_VOLUME_GLASS_B 0.0006
@@ -79,7 +79,7 @@ struct RenderVolumeParams {
     float cellsPerTX; /* cells per unit t along each axis: L / spacing */
     float cellsPerTY;
     float cellsPerTZ;
-    float pad1;
+    float glassT; /* the glass adds its colour per this much t of wall crossed (half a cell) */
 };
 
 #ifdef __cplusplus

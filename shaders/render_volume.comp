@@ -133,7 +133,7 @@ void renderPixel(uint pixel) {
         background = mix(background, outline, RENDER_VOLUME_BACK_EDGE * back);
         const int steps = max(1, int(ceil((tFar - tNear) / params.stepT)));
         const float dt = (tFar - tNear) / float(steps);
-        const float glassPerStep = dt / params.stepT;
+        const float glassPerStep = dt / params.glassT;
         for (int i = 0; i < steps; ++i) {
             const Stencil st = stencilAt(eye + (tNear + (float(i) + 0.5) * dt) * dir);
             const vec2 e = sampleExtinction(st);

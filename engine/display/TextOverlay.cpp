@@ -47,12 +47,17 @@ void fill(std::vector<std::uint8_t>& codes, int width, int height, int x0, int y
 
 }  // namespace
 
+int textWidth(const std::string& text, int scale) {
+    std::string copy = text;  // stb_easy_font takes a mutable string
+    return stb_easy_font_width(copy.data()) * scale;
+}
+
 std::vector<std::uint8_t> rasterizeText(int width, int height, std::span<const TextBlock> blocks,
                                         int scale) {
     std::vector<std::uint8_t> codes(std::size_t(width) * std::size_t(height), DISPLAY_OVERLAY_NONE);
     for (const TextBlock& block : blocks) {
         std::string text = block.text;
-        const int w = stb_easy_font_width(text.data()) * scale;
+        const int w = textWidth(text, scale);
         const int h = stb_easy_font_height(text.data()) * scale;
         const int margin = 4 * scale;
         // Negative corners count from the far edges, so a block can hug the right or bottom.

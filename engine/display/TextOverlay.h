@@ -21,6 +21,9 @@ struct TextBlock {
     bool panel = false;  ///< darken a rectangle behind the text
 };
 
+/// The width in pixels of `text`'s widest line drawn with `scale`.
+int textWidth(const std::string& text, int scale);
+
 /// The overlay codes of `blocks` in a width × height window, one byte per pixel (rows from the
 /// top), glyphs drawn `scale` pixels per font pixel.
 std::vector<std::uint8_t> rasterizeText(int width, int height, std::span<const TextBlock> blocks,

@@ -125,7 +125,7 @@ Rgba renderPixel(const Volume& v, std::uint32_t px, std::uint32_t py) {
         for (int c = 0; c < 3; ++c) background[c] = mixf(background[c], outline[c], back);
         const int steps = std::max(1, int(std::ceil((tFar - tNear) / p.stepT)));
         const float dt = (tFar - tNear) / float(steps);
-        const float glassPerStep = dt / p.stepT;
+        const float glassPerStep = dt / p.glassT;
         for (int i = 0; i < steps; ++i) {
             const Stencil st = stencilAt(p, eye + (tNear + (float(i) + 0.5f) * dt) * dir);
             float sigma = 0.0f, fluid = 0.0f;

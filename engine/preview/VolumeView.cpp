@@ -38,6 +38,8 @@ shaders::RenderVolumeParams volumeViewParams(const MacGrid& grid, int width, int
                     " is not a finite non-negative number");
     if (!(camera.zoom > 0.0) || !std::isfinite(camera.zoom))
         throw Error("3D view: zoom " + std::to_string(camera.zoom) + " is not positive");
+    if (!(camera.stepCells > 0.0) || !std::isfinite(camera.stepCells))
+        throw Error("3D view: march step " + std::to_string(camera.stepCells) + " is not positive");
 
     // World lengths are measured in L, the box's largest side (t units, RenderVolumeParams.h).
     V3 side{}, centre{};
@@ -82,7 +84,8 @@ shaders::RenderVolumeParams volumeViewParams(const MacGrid& grid, int width, int
         *cellsPerT[a] = float(L / grid.spacing[a]);
         smallest = std::min(smallest, grid.spacing[a]);
     }
-    p.stepT = float(0.5 * smallest / L);
+    p.stepT = float(camera.stepCells * smallest / L);
+    p.glassT = float(0.5 * smallest / L);
     p.pixelAngle = float(2.0 * tanHalf / shorter);
     p.hz = float(grid.spacing[2] / L);
     return p;

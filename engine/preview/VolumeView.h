@@ -4,7 +4,7 @@
 /// both march exactly the same rays: a perspective camera looking at the centre of the smoke
 /// grid's box (previews: from the front right and above, azimuth −60°, elevation 25°, z up),
 /// 40° of field of view across the picture's shorter side, far enough that the box's
-/// circumscribed sphere fits (divided by the zoom). Rays are marched every half of the smallest cell. Units: RenderVolumeParams.h.
+/// circumscribed sphere fits (divided by the zoom). Units: RenderVolumeParams.h.
 
 #include "engine/field/MacGrid.h"
 #include "shaders/RenderVolumeParams.h"
@@ -16,6 +16,9 @@ struct VolumeCamera {
     double azimuthDeg = -60.0;   ///< about +z, from +x
     double elevationDeg = 25.0;  ///< above the horizontal plane
     double zoom = 1.0;           ///< > 1 moves the camera closer
+    /// The ray march's step in the smallest cell size (previews: half a cell; the interactive
+    /// window takes whole cells, twice as fast).
+    double stepCells = 0.5;
 };
 
 /// Push constants of render_volume.comp for a width × height picture of `smokeGrid` with

@@ -40,6 +40,34 @@ bool simulatesHeat(const SceneSpec& scene) {
     return false;
 }
 
+/// Device time per stage, summed over the frames between two refreshes of the statistics.
+struct StageTimes {
+    int steps = 0;
+    double forces = 0.0, modal = 0.0, reconstruction = 0.0, obstacles = 0.0, advection = 0.0;
+
+    void add(const FrameStats& s) {
+        steps += s.steps;
+        forces += s.forcesMs;
+        modal += s.modalMs;
+        reconstruction += s.reconstructionMs;
+        obstacles += s.obstaclesMs;
+        advection += s.advectionMs;
+    }
+    /// Milliseconds per step, one line.
+    std::string line() const {
+        if (steps == 0) return "gpu ms per step: -";
+        char text[160];
+        std::snprintf(text, sizeof text, "gpu ms per step: forces %.1f  modal %.1f  velocity %.1f  smoke %.1f",
+                      forces / steps, modal / steps, reconstruction / steps, advection / steps);
+        std::string line = text;
+        if (obstacles > 0.0) {
+            std::snprintf(text, sizeof text, "  obstacles %.1f", obstacles / steps);
+            line += text;
+        }
+        return line;
+    }
+};
+
 /// One run of the window: everything the frame loop keeps between frames.
 class StirWindow {
 public:
@@ -79,7 +107,7 @@ private:
     std::optional<Vec3> scenePoint(const InputEvent& event) const;
     /// Draws the frame into mPixels (one submission); false while the window is minimized.
     bool draw();
-    std::vector<display::TextBlock> overlayText() const;
+    std::vector<display::TextBlock> overlayText(int scale) const;
     display::Smoke2DLook smokeLook() const;
     preview::Image picture() const;
     void saveScreenshot(const std::filesystem::path& file);
@@ -108,6 +136,7 @@ private:
     // Statistics, refreshed about four times a second.
     std::string mStatistics;
     double mStepSeconds = 0.0;  ///< smoothed wall time per step
+    StageTimes mStages;
     int mSampleFrames = 0;
     Clock::time_point mSampleStart = Clock::now();
 };
@@ -173,10 +202,17 @@ void StirWindow::act(StirAction action) {
     }
 }
 
-std::vector<display::TextBlock> StirWindow::overlayText() const {
+std::vector<display::TextBlock> StirWindow::overlayText(int scale) const {
     std::vector<display::TextBlock> blocks;
     if (mOptions.statistics) blocks.push_back({8, 8, mStatistics, false});
-    if (mHelp) blocks.push_back({-8, 8, helpText(), true});
+    if (mHelp) {
+        // Bottom right, clear of the statistics: actions flush right, keys in a column before.
+        const HelpColumns help = helpColumns();
+        const int margin = 8 * scale;
+        blocks.push_back({-margin, -margin, help.actions, true});
+        blocks.push_back({-(margin + display::textWidth(help.actions, scale) + 6 * scale), -margin,
+                          help.keys, true});
+    }
     return blocks;
 }
 
@@ -207,7 +243,8 @@ bool StirWindow::draw() {
         mPixelsExtent = size;
     }
     const int width = int(size.width), height = int(size.height);
-    mOverlay.update(width, height, overlayText(), height >= 600 ? 2 : 1);
+    const int scale = height >= 600 ? 2 : 1;
+    mOverlay.update(width, height, overlayText(scale), scale);
     display::DisplayTarget target{width, height, mView.viewport(width, height), mPresenter.blueFirst()};
     const vulkan::SmokeState& smoke = mSession.simulation().smokeState();
     if (mRenderer) {
@@ -247,7 +284,7 @@ StirReport StirWindow::run(std::ostream& log) {
     StirReport report;
     const bool frameClock = mOptions.frames.has_value();
     const SimulationSettings& settings = mSession.settings();
-    double windowClock = 0.0, stepWall = 0.0;
+    double windowClock = 0.0, stepWall = 0.0, drawWall = 0.0;
     const Clock::time_point start = Clock::now();
     Clock::time_point last = start;
     while (!mQuit && !mWindow.closeRequested() &&
@@ -268,7 +305,8 @@ StirReport StirWindow::run(std::ostream& log) {
         else
             steps = frameClock ? settings.stepsPerFrame : mClock.stepsFor(wallElapsed, mStepSeconds);
         const Clock::time_point stepStart = Clock::now();
-        mSession.advance(steps, elapsed);
+        const FrameStats stats = mSession.advance(steps, elapsed);
+        mStages.add(stats);
         if (steps > 0) {
             const double took = seconds(Clock::now() - stepStart);
             stepWall += took;
@@ -290,11 +328,13 @@ StirReport StirWindow::run(std::ostream& log) {
                           mScene.name.c_str(), sampled > 0.0 ? mSampleFrames / sampled : 0.0,
                           1e3 * mStepSeconds, mSession.energy(), mSession.simulation().time(),
                           state.c_str());
-            mStatistics = std::string(line) + "\n" + mSession.status() + "\nh: help";
+            mStatistics = std::string(line) + "\n" + mStages.line() + "\n" + mSession.status() + "\nh: help";
+            mStages = {};
             mSampleFrames = 0;
             mSampleStart = Clock::now();
         }
 
+        const Clock::time_point drawStart = Clock::now();
         if (!draw()) continue;
         if (std::exchange(mScreenshot, false)) {
             char name[64];
@@ -304,10 +344,12 @@ StirReport StirWindow::run(std::ostream& log) {
             log << "screenshot: " << file.string() << "\n";
         }
         mPresenter.present(*mPixels, mWindow.framebufferSize());
+        drawWall += seconds(Clock::now() - drawStart);
         ++report.frames;
     }
     report.seconds = seconds(Clock::now() - start);
     report.stepMs = report.steps > 0 ? 1e3 * stepWall / report.steps : 0.0;
+    report.drawMs = report.frames > 0 ? 1e3 * drawWall / report.frames : 0.0;
     if (!mOptions.screenshot.empty()) saveScreenshot(mOptions.screenshot);
     mContext.waitIdle();
     report.width = int(mPixelsExtent.width);
@@ -318,8 +360,10 @@ StirReport StirWindow::run(std::ostream& log) {
     report.status = mSession.status();
     report.validationMessages = mContext.validationMessageCount();
     char summary[200];
-    std::snprintf(summary, sizeof summary, "%d frames in %.2f s: %.1f fps, %d steps, %.2f ms per step\n",
-                  report.frames, report.seconds, report.framesPerSecond(), report.steps, report.stepMs);
+    std::snprintf(summary, sizeof summary,
+                  "%d frames in %.2f s: %.1f fps, %d steps, %.2f ms per step, %.2f ms per picture\n",
+                  report.frames, report.seconds, report.framesPerSecond(), report.steps, report.stepMs,
+                  report.drawMs);
     log << summary;
     if (report.validationMessages > 0)
         throw Error("the Vulkan validation layer reported " + std::to_string(report.validationMessages) +

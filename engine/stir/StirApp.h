@@ -43,6 +43,7 @@ struct StirReport {
     int steps = 0;
     double seconds = 0.0;        ///< wall time of the frame loop
     double stepMs = 0.0;         ///< mean wall time per simulation step
+    double drawMs = 0.0;         ///< mean wall time per frame to draw and present
     int width = 0, height = 0;   ///< the window's last size, pixels
     SmokeFields smoke;           ///< at the end
     double simulatedTime = 0.0;  ///< at the end

@@ -44,13 +44,15 @@ std::optional<int> keyFromName(std::string_view name) {
     return std::nullopt;
 }
 
-std::string helpText() {
-    std::string text = "keys\n";
-    for (const KeyBinding& b : kBindings) text += std::string(b.name) + "    " + b.help + "\n";
-    text +=
-        "\nmouse\nleft drag    stir (or move the paddle)\nright drag   orbit the camera (3D)\n"
-        "wheel        zoom (3D)";
-    return text;
+HelpColumns helpColumns() {
+    HelpColumns help{"keys\n", "\n"};
+    for (const KeyBinding& b : kBindings) {
+        help.keys += std::string(b.name) + "\n";
+        help.actions += std::string(b.help) + "\n";
+    }
+    help.keys += "\nmouse\nleft drag\nright drag\nwheel";
+    help.actions += "\n\nstir (or move the paddle)\norbit the camera (3D)\nzoom (3D)";
+    return help;
 }
 
 }  // namespace modeflow::stir

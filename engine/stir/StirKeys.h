@@ -37,7 +37,11 @@ std::span<const KeyBinding> keyBindings();
 std::optional<StirAction> actionOfKey(int key);
 /// A key's GLFW code from its script name (a binding's name, or one letter or digit).
 std::optional<int> keyFromName(std::string_view name);
-/// The help overlay: one line per key and the mouse's uses.
-std::string helpText();
+/// The help overlay in two columns, line for line: the keys (and mouse buttons) and what they do.
+struct HelpColumns {
+    std::string keys;
+    std::string actions;
+};
+HelpColumns helpColumns();
 
 }  // namespace modeflow::stir

@@ -47,11 +47,12 @@ Simulation& StirSession::simulationOf(std::size_t b) {
         SimulationSettings settings = mSceneSettings;
         settings.fluid.kappaSquared = mCache.velocity.eigenvalues.head(modes);
         if (b + 1 == mBases.size()) {
-            mSimulations[b] = std::make_unique<Simulation>(mContext, mCache, *mCoefficients, settings, mMask);
+            mSimulations[b] =
+                std::make_unique<Simulation>(mContext, mCache, *mCoefficients, settings, mMask, true);
         } else {
             const BasisCache cache = leadingModes(mCache, modes);
             mSimulations[b] = std::make_unique<Simulation>(
-                mContext, cache, *leadingCoefficients(*mCoefficients, modes), settings, mMask);
+                mContext, cache, *leadingCoefficients(*mCoefficients, modes), settings, mMask, true);
         }
     }
     return *mSimulations[b];

@@ -58,7 +58,8 @@ public:
     std::optional<PaddlePose> paddle() const;
 
     /// `steps` steps with the pointer's motion since the last call spread over them; `elapsed`:
-    /// the window clock's seconds since the last call (the pointer's speed).
+    /// the window clock's seconds since the last call (the pointer's speed). The stats carry
+    /// each stage's device time where the queue has timestamps.
     FrameStats advance(int steps, double elapsed);
 
     const Simulation& simulation() const { return *mSimulations[mBasis]; }

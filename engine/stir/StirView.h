@@ -18,7 +18,7 @@ class StirView {
 public:
     /// The 3D picture's size in pixels: ray marching costs per pixel, so it is rendered at a
     /// fixed size and scaled to the window.
-    static constexpr int kPictureWidth = 480, kPictureHeight = 360;
+    static constexpr int kPictureWidth = 400, kPictureHeight = 300;
 
     explicit StirView(const MacGrid& smokeGrid) : mGrid(smokeGrid) {}
 
@@ -40,7 +40,7 @@ public:
 
 private:
     MacGrid mGrid;
-    preview::VolumeCamera mCamera;
+    preview::VolumeCamera mCamera{-60.0, 25.0, 1.0, 1.0};  ///< whole-cell march steps
 };
 
 }  // namespace modeflow::stir

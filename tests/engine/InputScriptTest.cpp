@@ -4,6 +4,8 @@
 
 #include <GLFW/glfw3.h>
 
+#include <algorithm>
+
 #include "engine/format/Error.h"
 #include "engine/stir/InputScript.h"
 #include "engine/stir/StirKeys.h"
@@ -68,11 +70,15 @@ TEST(InputScriptTest, RefusesBadLinesNamingThem) {
 }
 
 TEST(InputScriptTest, EveryKeyHasAScriptNameAndAHelpLine) {
-    const std::string help = helpText();
+    const HelpColumns help = helpColumns();
+    EXPECT_EQ(std::count(help.keys.begin(), help.keys.end(), '\n'),
+              std::count(help.actions.begin(), help.actions.end(), '\n'))
+        << "the columns pair line for line";
     for (const KeyBinding& binding : keyBindings()) {
         EXPECT_EQ(keyFromName(binding.name), binding.key) << binding.name;
         EXPECT_EQ(actionOfKey(binding.key), binding.action) << binding.name;
-        EXPECT_NE(help.find(binding.help), std::string::npos) << binding.name;
+        EXPECT_NE(help.actions.find(binding.help), std::string::npos) << binding.name;
+        EXPECT_NE(help.keys.find(binding.name), std::string::npos) << binding.name;
     }
     EXPECT_FALSE(actionOfKey(GLFW_KEY_Z).has_value());
 }
