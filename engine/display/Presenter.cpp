@@ -2,19 +2,12 @@
 
 #include "engine/format/Error.h"
 #include "engine/vulkan/DeviceBuffer.h"
+#include "engine/vulkan/SyncObjects.h"
 #include "engine/vulkan/VulkanContext.h"
 #include "engine/vulkan/VulkanError.h"
 
 namespace modeflow::display {
 namespace {
-
-vulkan::DeviceHandle<VkSemaphore> makeSemaphore(VkDevice device) {
-    VkSemaphoreCreateInfo info{};
-    info.sType = VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO;
-    VkSemaphore semaphore = VK_NULL_HANDLE;
-    vulkan::check(vkCreateSemaphore(device, &info, nullptr, &semaphore), "vkCreateSemaphore");
-    return {device, semaphore, vkDestroySemaphore};
-}
 
 void transition(VkCommandBuffer commands, VkImage image, VkImageLayout from, VkImageLayout to,
                 VkAccessFlags srcAccess, VkAccessFlags dstAccess, VkPipelineStageFlags srcStage,
@@ -41,34 +34,19 @@ bool isOutOfDate(VkResult result) {
 Presenter::Presenter(const vulkan::VulkanContext& context, VkExtent2D wanted)
     : mContext(context), mSwapchain(context, wanted) {
     const VkDevice device = context.device();
-    VkCommandPoolCreateInfo poolInfo{};
-    poolInfo.sType = VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO;
-    poolInfo.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
-    poolInfo.queueFamilyIndex = context.queueFamily();
-    VkCommandPool pool = VK_NULL_HANDLE;
-    vulkan::check(vkCreateCommandPool(device, &poolInfo, nullptr, &pool), "vkCreateCommandPool");
-    mPool = {device, pool, vkDestroyCommandPool};
-    VkCommandBufferAllocateInfo allocation{};
-    allocation.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO;
-    allocation.commandPool = pool;
-    allocation.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
-    allocation.commandBufferCount = 1;
-    vulkan::check(vkAllocateCommandBuffers(device, &allocation, &mCommands),
-                  "vkAllocateCommandBuffers");
-    mAcquired = makeSemaphore(device);
+    vulkan::CommandPool commands =
+        vulkan::makeCommandPool(context, VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT);
+    mPool = std::move(commands.pool);
+    mCommands = commands.buffer;
+    mAcquired = vulkan::makeSemaphore(device);
     makeImageSemaphores();
-    VkFenceCreateInfo fenceInfo{};
-    fenceInfo.sType = VK_STRUCTURE_TYPE_FENCE_CREATE_INFO;
-    fenceInfo.flags = VK_FENCE_CREATE_SIGNALED_BIT;
-    VkFence fence = VK_NULL_HANDLE;
-    vulkan::check(vkCreateFence(device, &fenceInfo, nullptr, &fence), "vkCreateFence");
-    mInFlight = {device, fence, vkDestroyFence};
+    mInFlight = vulkan::makeFence(device, true);
 }
 
 void Presenter::makeImageSemaphores() {
     mCopied.clear();
     for (std::size_t i = 0; i < mSwapchain.images().size(); ++i)
-        mCopied.push_back(makeSemaphore(mContext.device()));
+        mCopied.push_back(vulkan::makeSemaphore(mContext.device()));
 }
 
 void Presenter::resize(VkExtent2D wanted) {

@@ -5,6 +5,7 @@
 
 #include "engine/format/Error.h"
 #include "engine/vulkan/ComputeKernel.h"
+#include "engine/vulkan/SyncObjects.h"
 #include "engine/vulkan/VulkanContext.h"
 #include "engine/vulkan/VulkanError.h"
 
@@ -31,26 +32,10 @@ CommandSequence::CommandSequence(const VulkanContext& context, bool timestamps,
                                  std::uint32_t maxTimedDispatches)
     : mContext(context), mMaxTimed(maxTimedDispatches) {
     const VkDevice device = context.device();
-    VkCommandPoolCreateInfo poolInfo{};
-    poolInfo.sType = VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO;
-    poolInfo.flags = VK_COMMAND_POOL_CREATE_TRANSIENT_BIT;
-    poolInfo.queueFamilyIndex = context.queueFamily();
-    VkCommandPool pool = VK_NULL_HANDLE;
-    check(vkCreateCommandPool(device, &poolInfo, nullptr, &pool), "vkCreateCommandPool");
-    mPool = DeviceHandle<VkCommandPool>(device, pool, vkDestroyCommandPool);
-
-    VkCommandBufferAllocateInfo allocate{};
-    allocate.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO;
-    allocate.commandPool = pool;
-    allocate.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
-    allocate.commandBufferCount = 1;
-    check(vkAllocateCommandBuffers(device, &allocate, &mCommandBuffer), "vkAllocateCommandBuffers");
-
-    VkFenceCreateInfo fenceInfo{};
-    fenceInfo.sType = VK_STRUCTURE_TYPE_FENCE_CREATE_INFO;
-    VkFence fence = VK_NULL_HANDLE;
-    check(vkCreateFence(device, &fenceInfo, nullptr, &fence), "vkCreateFence");
-    mFence = DeviceHandle<VkFence>(device, fence, vkDestroyFence);
+    CommandPool commands = makeCommandPool(context, VK_COMMAND_POOL_CREATE_TRANSIENT_BIT);
+    mPool = std::move(commands.pool);
+    mCommandBuffer = commands.buffer;
+    mFence = makeFence(device);
 
     if (timestamps && context.timestampValidBits() > 0 && maxTimedDispatches > 0) {
         VkQueryPoolCreateInfo queryInfo{};

@@ -3,6 +3,7 @@
 #include <cstring>
 #include <optional>
 
+#include "engine/vulkan/SyncObjects.h"
 #include "engine/vulkan/VulkanContext.h"
 #include "engine/vulkan/VulkanError.h"
 
@@ -97,26 +98,10 @@ void DeviceBuffer::read(void* destination, VkDeviceSize offset, VkDeviceSize byt
 void DeviceBuffer::copyWithStaging(const DeviceBuffer& staging, VkDeviceSize offset,
                                    VkDeviceSize bytes, bool toThis) const {
     const VkDevice device = mContext->device();
-    VkCommandPoolCreateInfo poolInfo{};
-    poolInfo.sType = VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO;
-    poolInfo.flags = VK_COMMAND_POOL_CREATE_TRANSIENT_BIT;
-    poolInfo.queueFamilyIndex = mContext->queueFamily();
-    VkCommandPool rawPool = VK_NULL_HANDLE;
-    check(vkCreateCommandPool(device, &poolInfo, nullptr, &rawPool), "vkCreateCommandPool");
-    const DeviceHandle<VkCommandPool> pool(device, rawPool, vkDestroyCommandPool);
-    VkFenceCreateInfo fenceInfo{};
-    fenceInfo.sType = VK_STRUCTURE_TYPE_FENCE_CREATE_INFO;
-    VkFence rawFence = VK_NULL_HANDLE;
-    check(vkCreateFence(device, &fenceInfo, nullptr, &rawFence), "vkCreateFence");
-    const DeviceHandle<VkFence> fence(device, rawFence, vkDestroyFence);
+    const CommandPool pool = makeCommandPool(*mContext, VK_COMMAND_POOL_CREATE_TRANSIENT_BIT);
+    const VkCommandBuffer commands = pool.buffer;
+    const DeviceHandle<VkFence> fence = makeFence(device);
 
-    VkCommandBufferAllocateInfo allocate{};
-    allocate.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO;
-    allocate.commandPool = rawPool;
-    allocate.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
-    allocate.commandBufferCount = 1;
-    VkCommandBuffer commands = VK_NULL_HANDLE;
-    check(vkAllocateCommandBuffers(device, &allocate, &commands), "vkAllocateCommandBuffers");
     VkCommandBufferBeginInfo begin{};
     begin.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO;
     begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
@@ -138,6 +123,7 @@ void DeviceBuffer::copyWithStaging(const DeviceBuffer& staging, VkDeviceSize off
     submit.sType = VK_STRUCTURE_TYPE_SUBMIT_INFO;
     submit.commandBufferCount = 1;
     submit.pCommandBuffers = &commands;
+    const VkFence rawFence = fence.get();
     check(vkQueueSubmit(mContext->queue(), 1, &submit, rawFence), "vkQueueSubmit (staging copy)");
     check(vkWaitForFences(device, 1, &rawFence, VK_TRUE, UINT64_MAX),
           "vkWaitForFences (staging copy)");

@@ -1,0 +1,25 @@
+#pragma once
+/// @file SyncObjects.h
+/// The small objects every submission needs, made in one call each: a command pool with its one
+/// primary command buffer, fences and semaphores, owned by DeviceHandles.
+
+#include <vulkan/vulkan.h>
+
+#include "engine/vulkan/DeviceHandle.h"
+
+namespace modeflow::vulkan {
+
+class VulkanContext;
+
+/// A command pool on the context's queue family and the one primary buffer it frees with it.
+struct CommandPool {
+    DeviceHandle<VkCommandPool> pool;
+    VkCommandBuffer buffer = VK_NULL_HANDLE;
+};
+
+/// @throw modeflow::Error naming the call that failed.
+CommandPool makeCommandPool(const VulkanContext& context, VkCommandPoolCreateFlags flags);
+DeviceHandle<VkFence> makeFence(VkDevice device, bool signaled = false);
+DeviceHandle<VkSemaphore> makeSemaphore(VkDevice device);
+
+}  // namespace modeflow::vulkan
