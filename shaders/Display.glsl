@@ -39,3 +39,15 @@ bool sourcePoint(uint x, uint y, out vec2 p) {
         vec2(params.sourceWidth, params.sourceHeight);
     return true;
 }
+
+// The paddle (a capsule) over the picture at source point p, in the source units the caller's
+// p is in (display_smoke_2d: smoke cells, y up; display_picture: picture pixels, y down).
+vec3 withPaddle(vec3 colour, vec2 p) {
+    if (params.paddle == 0u) return colour;
+    const vec2 axis = vec2(params.paddleAxisX, params.paddleAxisY);
+    const vec2 d = p - vec2(params.paddleX, params.paddleY);
+    const float along = dot(axis, axis) > 0.0 ? clamp(dot(d, axis) / dot(axis, axis), -1.0, 1.0) : 0.0;
+    return length(d - along * axis) <= params.paddleRadius
+               ? vec3(DISPLAY_PADDLE_R, DISPLAY_PADDLE_G, DISPLAY_PADDLE_B)
+               : colour;
+}

@@ -58,12 +58,12 @@ struct DisplayParams {
     uint blueFirst;     /* 1: the swapchain format stores blue in the low byte (B8G8R8A8) */
     float densityScale; /* 2D: the density shown fully bright */
     float hotScale;     /* 2D: the temperature shown fully hot (0: no tint) */
-    uint paddle;        /* 2D: 1 draws the paddle, a capsule: */
-    float paddleX;      /* its centre in smoke cells (x right, y up) */
-    float paddleY;
-    float paddleAxisX;  /* from the centre to one end of its segment, smoke cells */
+    uint paddle;        /* 1 draws the paddle, a capsule, in source units (display_smoke_2d: */
+    float paddleX;      /* smoke cells, y up; display_picture: picture pixels, y down): */
+    float paddleY;      /* its centre, */
+    float paddleAxisX;  /* from the centre to one end of its segment, */
     float paddleAxisY;
-    float paddleRadius; /* smoke cells */
+    float paddleRadius; /* and its radius */
     uint pad0;
     uint pad1;
     uint pad2;

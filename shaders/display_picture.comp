@@ -32,6 +32,7 @@ void main() {
         // sRGB values blended directly: a scaled picture, not a physical quantity.
         colour = mix(mix(texel(lo), texel(ivec2(hi.x, lo.y)), f.x),
                      mix(texel(ivec2(lo.x, hi.y)), texel(hi), f.x), f.y);
+        colour = withPaddle(colour, p);
     }
     pixels[pixel] = packColour(withOverlay(colour, pixel));
 }

@@ -47,14 +47,7 @@ void main() {
             colour = mix(vec3(DISPLAY_BACKGROUND_R, DISPLAY_BACKGROUND_G, DISPLAY_BACKGROUND_B),
                          smoke, tone);
         }
-        if (params.paddle != 0u) {
-            // Distance to the capsule's segment, in smoke cells.
-            const vec2 axis = vec2(params.paddleAxisX, params.paddleAxisY);
-            const vec2 d = p - vec2(params.paddleX, params.paddleY);
-            const float along = dot(axis, axis) > 0.0 ? clamp(dot(d, axis) / dot(axis, axis), -1.0, 1.0) : 0.0;
-            if (length(d - along * axis) <= params.paddleRadius)
-                colour = vec3(DISPLAY_PADDLE_R, DISPLAY_PADDLE_G, DISPLAY_PADDLE_B);
-        }
+        colour = withPaddle(colour, p);
     }
     pixels[pixel] = packColour(withOverlay(colour, pixel));
 }

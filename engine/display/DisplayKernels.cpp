@@ -20,7 +20,8 @@ void requireBytes(const vulkan::DeviceBuffer& buffer, VkDeviceSize bytes) {
                     std::to_string(bytes));
 }
 
-shaders::DisplayParams paramsFor(const DisplayTarget& target, int sourceWidth, int sourceHeight) {
+shaders::DisplayParams paramsFor(const DisplayTarget& target, int sourceWidth, int sourceHeight,
+                                 const PaddleOverlay& paddle) {
     shaders::DisplayParams p{};
     p.width = std::uint32_t(target.width);
     p.height = std::uint32_t(target.height);
@@ -31,6 +32,12 @@ shaders::DisplayParams paramsFor(const DisplayTarget& target, int sourceWidth, i
     p.sourceWidth = std::uint32_t(sourceWidth);
     p.sourceHeight = std::uint32_t(sourceHeight);
     p.blueFirst = target.blueFirst ? 1u : 0u;
+    p.paddle = paddle.shown ? 1u : 0u;
+    p.paddleX = paddle.centre[0];
+    p.paddleY = paddle.centre[1];
+    p.paddleAxisX = paddle.axis[0];
+    p.paddleAxisY = paddle.axis[1];
+    p.paddleRadius = paddle.radius;
     return p;
 }
 
@@ -59,15 +66,9 @@ void DisplayKernels::recordSmoke2D(vulkan::CommandSequence& sequence, const vulk
     if (grid.dim != 2)
         throw Error("display: the 2D smoke picture needs a 2D smoke grid, not " +
                     std::to_string(grid.dim) + "D");
-    shaders::DisplayParams p = paramsFor(target, grid.cells[0], grid.cells[1]);
+    shaders::DisplayParams p = paramsFor(target, grid.cells[0], grid.cells[1], look.paddle);
     p.densityScale = look.densityScale;
     p.hotScale = look.hotScale;
-    p.paddle = look.paddle ? 1u : 0u;
-    p.paddleX = look.paddleCentre[0];
-    p.paddleY = look.paddleCentre[1];
-    p.paddleAxisX = look.paddleAxis[0];
-    p.paddleAxisY = look.paddleAxis[1];
-    p.paddleRadius = look.paddleRadius;
     const std::array<const vulkan::DeviceBuffer*, 4> buffers{&smoke.fields(), &smoke.mask(), &overlay,
                                                              &pixels};
     sequence.dispatch(mSmoke2D, buffers, p, pixelGroups(mSmoke2D, target, overlay, pixels));
@@ -75,11 +76,11 @@ void DisplayKernels::recordSmoke2D(vulkan::CommandSequence& sequence, const vulk
 
 void DisplayKernels::recordPicture(vulkan::CommandSequence& sequence,
                                    const vulkan::DeviceBuffer& picture, int pictureWidth,
-                                   int pictureHeight, const vulkan::DeviceBuffer& overlay,
-                                   const DisplayTarget& target,
+                                   int pictureHeight, const PaddleOverlay& paddle,
+                                   const vulkan::DeviceBuffer& overlay, const DisplayTarget& target,
                                    const vulkan::DeviceBuffer& pixels) const {
     requireBytes(picture, VkDeviceSize(pictureWidth) * VkDeviceSize(pictureHeight) * 4);
-    const shaders::DisplayParams p = paramsFor(target, pictureWidth, pictureHeight);
+    const shaders::DisplayParams p = paramsFor(target, pictureWidth, pictureHeight, paddle);
     const std::array<const vulkan::DeviceBuffer*, 3> buffers{&picture, &overlay, &pixels};
     sequence.dispatch(mPicture, buffers, p, pixelGroups(mPicture, target, overlay, pixels));
 }

@@ -24,15 +24,20 @@ struct DisplayTarget {
     bool blueFirst = false;
 };
 
+/// A capsule drawn over the picture (the stir paddle), in the picture's source units
+/// (DisplayParams.h).
+struct PaddleOverlay {
+    bool shown = false;
+    float centre[2]{};
+    float axis[2]{};  ///< centre to one end of the segment
+    float radius = 0.0f;
+};
+
 /// How the 2D smoke is drawn.
 struct Smoke2DLook {
     float densityScale = 1.0f;  ///< the density shown fully bright
     float hotScale = 0.0f;      ///< the temperature shown fully hot (0: no tint)
-    /// A capsule drawn over the smoke (the stir paddle), in smoke cells, y up.
-    bool paddle = false;
-    float paddleCentre[2]{};
-    float paddleAxis[2]{};  ///< centre to one end of the segment
-    float paddleRadius = 0.0f;
+    PaddleOverlay paddle;       ///< in smoke cells, y up
 };
 
 class DisplayKernels {
@@ -46,11 +51,12 @@ public:
                        const Smoke2DLook& look, const vulkan::DeviceBuffer& overlay,
                        const DisplayTarget& target, const vulkan::DeviceBuffer& pixels) const;
     /// Records `picture` (pictureWidth × pictureHeight packed RGBA8 words) scaled into the
-    /// viewport, into `pixels`.
+    /// viewport, with `paddle` (in picture pixels, y down) over it, into `pixels`.
     /// @throw modeflow::Error when a buffer is too small.
     void recordPicture(vulkan::CommandSequence& sequence, const vulkan::DeviceBuffer& picture,
-                       int pictureWidth, int pictureHeight, const vulkan::DeviceBuffer& overlay,
-                       const DisplayTarget& target, const vulkan::DeviceBuffer& pixels) const;
+                       int pictureWidth, int pictureHeight, const PaddleOverlay& paddle,
+                       const vulkan::DeviceBuffer& overlay, const DisplayTarget& target,
+                       const vulkan::DeviceBuffer& pixels) const;
 
 private:
     const vulkan::VulkanContext& mContext;

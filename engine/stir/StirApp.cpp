@@ -108,7 +108,8 @@ private:
     /// Draws the frame into mPixels (one submission); false while the window is minimized.
     bool draw();
     std::vector<display::TextBlock> overlayText(int scale) const;
-    display::Smoke2DLook smokeLook() const;
+    /// The paddle in the picture's source units, when paddle mode is on.
+    display::PaddleOverlay paddleOverlay() const;
     preview::Image picture() const;
     void saveScreenshot(const std::filesystem::path& file);
 
@@ -216,19 +217,33 @@ std::vector<display::TextBlock> StirWindow::overlayText(int scale) const {
     return blocks;
 }
 
-display::Smoke2DLook StirWindow::smokeLook() const {
-    display::Smoke2DLook look;
-    look.hotScale = simulatesHeat(mScene) ? 1.0f : 0.0f;
-    if (const auto paddle = mSession.paddle()) {
-        const MacGrid& grid = mView.grid();
-        look.paddle = true;
+display::PaddleOverlay StirWindow::paddleOverlay() const {
+    display::PaddleOverlay overlay;
+    const auto paddle = mSession.paddle();
+    if (!paddle) return overlay;
+    const MacGrid& grid = mView.grid();
+    if (grid.dim == 2) {
+        // Smoke cells, y up.
         for (int a = 0; a < 2; ++a) {
-            look.paddleCentre[a] = float((paddle->centre[a] - grid.origin[a]) / grid.spacing[a]);
-            look.paddleAxis[a] = float(paddle->axis[a] / grid.spacing[a]);
+            overlay.centre[a] = float((paddle->centre[a] - grid.origin[a]) / grid.spacing[a]);
+            overlay.axis[a] = float(paddle->axis[a] / grid.spacing[a]);
         }
-        look.paddleRadius = float(paddle->radius / grid.spacing[0]);
+        overlay.radius = float(paddle->radius / grid.spacing[0]);
+        overlay.shown = true;
+        return overlay;
     }
-    return look;
+    // Picture pixels, y down: the capsule's segment projected, its radius at the centre's depth.
+    Vec3 end{};
+    for (int a = 0; a < 3; ++a) end[a] = paddle->centre[a] + paddle->axis[a];
+    const auto centre = mView.project(paddle->centre), tip = mView.project(end);
+    if (!centre || !tip) return overlay;
+    overlay.centre[0] = float(centre->x);
+    overlay.centre[1] = float(centre->y);
+    overlay.axis[0] = float(tip->x - centre->x);
+    overlay.axis[1] = float(tip->y - centre->y);
+    overlay.radius = float(paddle->radius * centre->pixelsPerLength);
+    overlay.shown = true;
+    return overlay;
 }
 
 bool StirWindow::draw() {
@@ -250,9 +265,13 @@ bool StirWindow::draw() {
     if (mRenderer) {
         mRenderer->record(mSequence, smoke.fields(), kOpticalDepth, 2, mView.camera());
         mKernels.recordPicture(mSequence, mRenderer->pictureBuffer(), mRenderer->width(),
-                               mRenderer->height(), mOverlay.buffer(), target, *mPixels);
+                               mRenderer->height(), paddleOverlay(), mOverlay.buffer(), target,
+                               *mPixels);
     } else {
-        mKernels.recordSmoke2D(mSequence, smoke, smokeLook(), mOverlay.buffer(), target, *mPixels);
+        display::Smoke2DLook look;
+        look.hotScale = simulatesHeat(mScene) ? 1.0f : 0.0f;
+        look.paddle = paddleOverlay();
+        mKernels.recordSmoke2D(mSequence, smoke, look, mOverlay.buffer(), target, *mPixels);
     }
     mSequence.submitAndWait();
     return true;

@@ -50,6 +50,36 @@ std::optional<Vec3> StirView::scenePoint(double x, double y, int width, int heig
     return Vec3{eye[0] + t * dir[0], eye[1] + t * dir[1], eye[2] + t * dir[2]};
 }
 
+std::optional<StirView::Projection> StirView::project(const Vec3& point) const {
+    // The inverse of the renderer's rays: the ray through continuous pixel coordinates (X, Y)
+    // is forward + (X − W/2) dx + (Y − H/2) dy, with dx ⟂ dy, both ⟂ forward = base + (W/2) dx
+    // + (H/2) dy; a point is on it at λ = (point − eye)·forward / |forward|².
+    const auto p = preview::volumeViewParams(mGrid, kPictureWidth, kPictureHeight, 1.0f, mCamera);
+    const Vec3 dx{p.dxX, p.dxY, p.dxZ}, dy{p.dyX, p.dyY, p.dyZ};
+    double toPoint[3], forward[3], along = 0.0, forward2 = 0.0, onX = 0.0, onY = 0.0, dx2 = 0.0, dy2 = 0.0;
+    for (int a = 0; a < 3; ++a) {
+        toPoint[a] = point[a] - (mGrid.origin[a] + std::array{p.eyeX, p.eyeY, p.eyeZ}[a] * mGrid.spacing[a]);
+        forward[a] = std::array{p.baseX, p.baseY, p.baseZ}[a] + 0.5 * kPictureWidth * dx[a] +
+                     0.5 * kPictureHeight * dy[a];
+    }
+    for (int a = 0; a < 3; ++a) {
+        along += toPoint[a] * forward[a];
+        forward2 += forward[a] * forward[a];
+        onX += toPoint[a] * dx[a];
+        onY += toPoint[a] * dy[a];
+        dx2 += dx[a] * dx[a];
+        dy2 += dy[a] * dy[a];
+    }
+    if (!(along > 0.0)) return std::nullopt;
+    // Scale toPoint to the ray of the form forward + s dx + t dy: divide by its forward part.
+    const double scale = forward2 / along;
+    Projection out;
+    out.x = 0.5 * kPictureWidth + scale * onX / dx2;
+    out.y = 0.5 * kPictureHeight + scale * onY / dy2;
+    out.pixelsPerLength = scale / std::sqrt(dx2);  // a length ℓ across the view moves X by this ℓ
+    return out;
+}
+
 void StirView::orbit(double dx, double dy) {
     mCamera.azimuthDeg -= 180.0 * dx;
     // Short of the poles, where "up" (z) would be the viewing direction.

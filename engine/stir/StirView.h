@@ -28,6 +28,15 @@ public:
     /// 2D points outside the box are clamped to it; nullopt when the 3D ray misses the plane.
     std::optional<Vec3> scenePoint(double x, double y, int width, int height) const;
 
+    /// The 3D picture's continuous pixel coordinates (x right, y down; pixel (i, j) spans
+    /// [i, i+1) × [j, j+1)) of a scene point, and the picture pixels per scene length there;
+    /// nullopt behind the camera.
+    struct Projection {
+        double x = 0.0, y = 0.0;
+        double pixelsPerLength = 0.0;
+    };
+    std::optional<Projection> project(const Vec3& point) const;
+
     /// Turns the camera by a pointer motion of (dx, dy) window fractions (3D).
     void orbit(double dx, double dy);
     /// Moves the camera closer (positive notches) or away (3D).

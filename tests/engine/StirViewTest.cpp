@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "engine/stir/StirView.h"
 
 namespace modeflow::stir {
@@ -54,6 +56,27 @@ TEST(StirViewTest, ThreeDimensionalPointerLiesOnThePlaneFacingTheCamera) {
     EXPECT_LE(view.camera().elevationDeg, 80.0) << "short of the pole";
     view.zoom(100.0);
     EXPECT_LE(view.camera().zoom, 2.5);
+}
+
+TEST(StirViewTest, ProjectionInvertsThePointerRay) {
+    StirView view(grid(3));
+    view.orbit(0.1, 0.05);
+    view.zoom(1.0);
+    // A window of the picture's aspect: the viewport is the whole window.
+    const int w = 2 * StirView::kPictureWidth, h = 2 * StirView::kPictureHeight;
+    for (const auto& [x, y] : {std::pair{0.5, 0.5}, std::pair{0.2, 0.7}, std::pair{0.9, 0.1}}) {
+        const auto point = view.scenePoint(x, y, w, h);
+        ASSERT_TRUE(point);
+        const auto pixel = view.project(*point);
+        ASSERT_TRUE(pixel);
+        // To the camera parameters' float32 precision.
+        EXPECT_NEAR(pixel->x, x * StirView::kPictureWidth, 1e-4);
+        EXPECT_NEAR(pixel->y, y * StirView::kPictureHeight, 1e-4);
+    }
+    // Across the view, a length covers pixelsPerLength pixels per unit.
+    const auto a = view.scenePoint(0.5, 0.5, w, h), b = view.scenePoint(0.6, 0.5, w, h);
+    const double length = std::hypot((*b)[0] - (*a)[0], (*b)[1] - (*a)[1], (*b)[2] - (*a)[2]);
+    EXPECT_NEAR(length * view.project(*a)->pixelsPerLength, 0.1 * StirView::kPictureWidth, 1e-4);
 }
 
 }  // namespace
