@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cstdio>
 #include <ostream>
+#include <thread>
 
 #include "engine/display/DisplayKernels.h"
 #include "engine/display/Presenter.h"
@@ -354,7 +355,11 @@ StirReport StirWindow::run(std::ostream& log) {
         }
 
         const Clock::time_point drawStart = Clock::now();
-        if (!draw()) continue;
+        if (!draw()) {
+            // Minimized: nothing to draw; wait a little rather than spin.
+            std::this_thread::sleep_for(std::chrono::milliseconds(20));
+            continue;
+        }
         if (std::exchange(mScreenshot, false)) {
             char name[64];
             std::snprintf(name, sizeof name, "_stir_%04d.png", ++mScreenshots);
