@@ -5,17 +5,25 @@
 //     sums[p] = sum_i C[k][i][j] a_i
 //
 // modal_update.comp then forms out_k = sum_{j>k} sums(k,j) b_j - sum_{j<k} sums(j,k) b_j, using
-// C[j][i][k] = -C[k][i][j]. Each coefficient is read exactly once per contraction, in memory
-// order: the kernel is a GEMV over the packed (pairs x N) row-major matrix, and bandwidth-bound.
+// C[j][i][k] = -C[k][i][j]. Each coefficient is read exactly once per contraction: the kernel is a
+// GEMV over the (pairs x N) matrix of the chunk, and bandwidth-bound.
 //
-// Each invocation sums four rows (ROWS), front to back, four floats at a time (rows are
-// zero-padded to a multiple of 4) read as two 64-bit words, and each load of a[q] serves all four.
+// Layout (engine/kernels/DeviceCoefficients): each row cut into rowOctets octets of 8 floats
+// (zero-padded), the rows in tiles of PAIR_TILE_ROWS (the chunk zero-padded to whole tiles). A tile
+// stores octet 0 of its rows, then octet 1 of them, and so on: octet q of row j of tile t is element
+// (t rowOctets + q) PAIR_TILE_ROWS + j. Each batch of PAIR_TILE_LANES invocations sums one tile,
+// each invocation ROWS of its rows (j = r PAIR_TILE_LANES + lane) front to back, one load of a's
+// octet q serving all ROWS. An octet is one load of four 64-bit words.
+//
 // Why, measured on lavapipe (tools/bench/bench_runtime, N = 200): lavapipe issues every lane's
-// load of every 32- or 64-bit component separately, whatever the access pattern, so load count
-// is what costs. Floats: 1.5 GB/s; 64-bit words: 2.8; four rows per a[q]: 4.2 (eight: no better).
-// A subgroup per row with coalesced loads and subgroupAdd, or a[q] shared by subgroupBroadcast,
-// were no faster. On a GPU the 16-byte loads are native, and each invocation's next loads hit the
-// cache lines its previous ones fetched. Rows are visited grid-stride, so any group count works.
+// load as a loop over the lanes with a mask and bounds check per lane and per component, so the
+// count of loads and components is what costs, not bytes. Floats: 1.5 GB/s; 64-bit words: 2.8;
+// four rows per a[q]: 4.2. A subgroup per row with coalesced loads and subgroupAdd, or a[q] shared
+// by subgroupBroadcast, were no faster. Tiles, which make what one 8-wide batch (lavapipe's SIMD
+// width with AVX2) reads one contiguous stream instead of 32 (one per row): 4.6-7.8 GB/s;
+// octets (four words a load instead of two) and eight rows a lane: 7.0-8.8. On a GPU each load of
+// a warp covers whole, aligned segments (8 lanes x 32 bytes). Tiles are visited grid-stride, so
+// any group count works.
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
 #extension GL_EXT_control_flow_attributes : require
@@ -23,33 +31,38 @@
 
 layout(local_size_x = 64, local_size_x_id = 0) in;
 
-layout(std430, set = 0, binding = 0) readonly buffer Coefficients { u64vec2 coefficients[]; };  // 4 floats per element
-layout(std430, set = 0, binding = 1) readonly buffer VectorA { vec4 a[]; };
+// 8 floats per element; `a` holds rowOctets of them (zero-padded).
+layout(std430, set = 0, binding = 0) readonly buffer Coefficients { u64vec4 coefficients[]; };
+layout(std430, set = 0, binding = 1) readonly buffer VectorA { u64vec4 a[]; };
 layout(std430, set = 0, binding = 2) buffer Sums { float sums[]; };
 layout(push_constant) uniform Push { PairSumsParams params; };
 
-const uint ROWS = 4;  // rows per invocation: each load of a[q] serves four rows
+const uint LANES = PAIR_TILE_LANES;
+const uint ROWS = PAIR_TILE_ROWS / PAIR_TILE_LANES;  // rows per invocation
 
-vec4 coefficientsAt(uint index) {
-    const u64vec2 word = coefficients[index];
-    return vec4(uintBitsToFloat(unpack32(word.x)), uintBitsToFloat(unpack32(word.y)));
+vec4 floatsOf(u64vec2 words) {
+    return vec4(uintBitsToFloat(unpack32(words.x)), uintBitsToFloat(unpack32(words.y)));
 }
 
 void main() {
-    const uint size = gl_WorkGroupSize.x;
-    const uint stride = gl_NumWorkGroups.x * size * ROWS;
-    const uint last = params.pairCount - 1;
-    for (uint first = gl_WorkGroupID.x * size * ROWS + gl_LocalInvocationID.x; first < params.pairCount;
-         first += stride) {
-        uint base[ROWS];
+    const uint lane = gl_GlobalInvocationID.x % LANES;
+    const uint tiles = (params.pairCount + PAIR_TILE_ROWS - 1u) / PAIR_TILE_ROWS;
+    const uint stride = gl_NumWorkGroups.x * gl_WorkGroupSize.x / LANES;
+    for (uint tile = gl_GlobalInvocationID.x / LANES; tile < tiles; tile += stride) {
         float sum[ROWS];
         [[unroll]] for (uint r = 0; r < ROWS; ++r) sum[r] = 0.0;
-        [[unroll]] for (uint r = 0; r < ROWS; ++r) base[r] = min(first + r * size, last) * params.rowQuads;
-        for (uint q = 0; q < params.rowQuads; ++q) {
-            const vec4 aq = a[q];
-            [[unroll]] for (uint r = 0; r < ROWS; ++r) sum[r] += dot(coefficientsAt(base[r] + q), aq);
+        uint index = tile * params.rowOctets * PAIR_TILE_ROWS + lane;
+        for (uint q = 0; q < params.rowOctets; ++q, index += PAIR_TILE_ROWS) {
+            const u64vec4 aq = a[q];
+            const vec4 low = floatsOf(aq.xy), high = floatsOf(aq.zw);
+            [[unroll]] for (uint r = 0; r < ROWS; ++r) {
+                const u64vec4 c = coefficients[index + r * LANES];
+                sum[r] += dot(floatsOf(c.xy), low) + dot(floatsOf(c.zw), high);
+            }
         }
-        [[unroll]] for (uint r = 0; r < ROWS; ++r)
-            if (first + r * size < params.pairCount) sums[params.firstPair + first + r * size] = sum[r];
+        [[unroll]] for (uint r = 0; r < ROWS; ++r) {
+            const uint row = tile * PAIR_TILE_ROWS + r * LANES + lane;
+            if (row < params.pairCount) sums[params.firstPair + row] = sum[r];
+        }
     }
 }

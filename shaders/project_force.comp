@@ -5,8 +5,8 @@
 //
 // for the modes of one chunk. Workgroup (mode group g, block b) takes MODES modes and one block of
 // whole tiles of the tiled basis (ModeAccess.glsl). Each invocation sums, over its units of the
-// block (TILE_ROWS vectors: 8 float32 or 16 float16 DOFs), x = w q formed once per unit dotted
-// with the unit's vectors of each of the MODES modes; a shared-memory tree adds the invocations'
+// block (one 32-byte word: 8 float32 or 16 float16 DOFs), x = w q formed once per unit dotted
+// with the unit's word of each of the MODES modes; a shared-memory tree adds the invocations'
 // sums. project_force_sum.comp adds the partial sums of each mode in a fixed order, so the result
 // is deterministic (no atomics). Blocks spread one projection over many workgroups.
 //
@@ -17,6 +17,8 @@
 // consecutive tiles, larger blocks on a CPU device: 41 / 27. Lavapipe pays per lane and load,
 // whatever the load brings: x (w and q, 10 loads a unit) shared by more modes pays, and so does
 // running the tree (invocation by invocation there) over larger blocks (ForceProjection.cpp).
+// A unit's word as one u64vec4 load instead of two u64vec2 loads (64^3 grid, N = 200, GPU ms with
+// two lavapipe threads, float32 / float16): 198-220 / 156-166 -> 109-112 / 83-88.
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
 #extension GL_EXT_control_flow_attributes : require
@@ -24,7 +26,7 @@
 
 layout(local_size_x = 64, local_size_x_id = 0) in;
 
-layout(std430, set = 0, binding = 0) readonly buffer Modes { u64vec2 modeVectors[]; };
+layout(std430, set = 0, binding = 0) readonly buffer Modes { u64vec4 modeWords[]; };
 layout(std430, set = 0, binding = 1) readonly buffer Input { float q[]; };
 // Zero-padded to whole tiles of float16 modes (engine/kernels/ForceProjection), read four at a time.
 layout(std430, set = 0, binding = 2) readonly buffer Weights { u64vec2 w[]; };
@@ -55,7 +57,7 @@ void main() {
     // The group's modes in the chunk; the slots past them are skipped and not written.
     const uint modes = min(params.modeCount - firstLocal, MODES);
     uint mode[MODES];  // offsets of the modes in a tile
-    [[unroll]] for (uint m = 0; m < MODES; ++m) mode[m] = min(firstLocal + m, params.modeCount - 1u) * TILE_VECTORS;
+    [[unroll]] for (uint m = 0; m < MODES; ++m) mode[m] = min(firstLocal + m, params.modeCount - 1u) * TILE_LANES;
 
     // The block's units. With whole batches of TILE_LANES invocations each batch takes a run of
     // consecutive tiles: on lavapipe a batch is the SIMD width, and its loads then advance by a
@@ -76,33 +78,26 @@ void main() {
     if (params.halfPrecision != 0u) {
         for (uint unit = begin; unit < end; unit += step) {
             const uint base = unitBase(unit, params.modeCount);
-            vec4 x[2 * TILE_ROWS];  // row r's 8 DOFs in x[2r], x[2r + 1]
-            [[unroll]] for (uint r = 0; r < TILE_ROWS; ++r) {
-                x[2 * r] = weightedInput(2u * unitVector(unit, r));
-                x[2 * r + 1] = weightedInput(2u * unitVector(unit, r) + 1u);
-            }
+            vec4 x[2 * TILE_ROWS];  // the unit's 16 DOFs, four per vec4
+            [[unroll]] for (uint j = 0; j < 2 * TILE_ROWS; ++j) x[j] = weightedInput(2u * TILE_ROWS * unit + j);
             [[unroll]] for (uint m = 0; m < MODES; ++m) {
                 if (m >= modes) break;
-                float s = 0.0;
-                [[unroll]] for (uint r = 0; r < TILE_ROWS; ++r) {
-                    vec4 low, high;
-                    halvesOf(modeVectors[base + mode[m] + r * TILE_LANES], low, high);
-                    s += dot(low, x[2 * r]) + dot(high, x[2 * r + 1]);
-                }
-                sum[m] += s;
+                const u64vec4 word = modeWords[base + mode[m]];
+                vec4 low, high, low2, high2;
+                halvesOf(word.xy, low, high);
+                halvesOf(word.zw, low2, high2);
+                sum[m] += dot(low, x[0]) + dot(high, x[1]) + dot(low2, x[2]) + dot(high2, x[3]);
             }
         }
     } else {
         for (uint unit = begin; unit < end; unit += step) {
             const uint base = unitBase(unit, params.modeCount);
-            vec4 x[TILE_ROWS];
-            [[unroll]] for (uint r = 0; r < TILE_ROWS; ++r) x[r] = weightedInput(unitVector(unit, r));
+            vec4 x[TILE_ROWS];  // the unit's 8 DOFs, four per vec4
+            [[unroll]] for (uint r = 0; r < TILE_ROWS; ++r) x[r] = weightedInput(TILE_ROWS * unit + r);
             [[unroll]] for (uint m = 0; m < MODES; ++m) {
                 if (m >= modes) break;
-                float s = 0.0;
-                [[unroll]] for (uint r = 0; r < TILE_ROWS; ++r)
-                    s += dot(floatsOf(modeVectors[base + mode[m] + r * TILE_LANES]), x[r]);
-                sum[m] += s;
+                const u64vec4 word = modeWords[base + mode[m]];
+                sum[m] += dot(floatsOf(word.xy), x[0]) + dot(floatsOf(word.zw), x[1]);
             }
         }
     }

@@ -28,6 +28,8 @@ void requireFloats(const DeviceBuffer& buffer, int n) {
                     std::to_string(n * sizeof(float)) + " needed for N = " + std::to_string(n));
 }
 
+constexpr std::size_t kPairTileRows = PAIR_TILE_ROWS, kPairTileLanes = PAIR_TILE_LANES;
+
 std::uint32_t groupsFor(std::size_t items, std::size_t perGroup, std::uint32_t maxGroups) {
     return std::uint32_t(std::clamp<std::size_t>((items + perGroup - 1) / perGroup, 1, maxGroups));
 }
@@ -46,20 +48,27 @@ DeviceCoefficients::DeviceCoefficients(const VulkanContext& context,
         context, std::vector<float>(pairCount(n), 0.0f), "pair sums"));
 
     if (const auto* dense = dynamic_cast<const DenseCoefficients*>(&coefficients)) {
-        const std::size_t rowFloats = paddedSize(mN), rowBytes = rowFloats * sizeof(float);
-        const std::size_t rowsPerChunk = context.storageBufferLimit() / rowBytes;
+        const std::size_t rowOctets = paddedSize(mN) / 8, rowBytes = paddedSize(mN) * sizeof(float);
+        const std::size_t tileBytes = kPairTileRows * rowBytes;
+        const std::size_t rowsPerChunk = context.storageBufferLimit() / tileBytes * kPairTileRows;
         if (rowsPerChunk == 0)
-            throw Error("modal contraction: one row of N = " + std::to_string(n) +
-                        " coefficients exceeds the " +
+            throw Error("modal contraction: " + std::to_string(kPairTileRows) + " rows of N = " +
+                        std::to_string(n) + " coefficients exceed the " +
                         std::to_string(context.storageBufferLimit()) +
                         "-byte storage buffer limit of " + context.deviceName());
         const std::vector<double>& packed = dense->packed();
         for (std::size_t first = 0; first < pairCount(n); first += rowsPerChunk) {
             const std::size_t rows = std::min(rowsPerChunk, pairCount(n) - first);
-            std::vector<float> values(rows * rowFloats, 0.0f);
-            for (std::size_t r = 0; r < rows; ++r)
-                std::copy_n(packed.begin() + std::ptrdiff_t((first + r) * n), n,
-                            values.begin() + std::ptrdiff_t(r * rowFloats));
+            // Tiles of kPairTileRows rows, octet-interleaved (modal_pair_sums.comp): coefficient i
+            // of row j of tile t at ((t rowOctets + i / 8) kPairTileRows + j) 8 + i % 8.
+            const std::size_t tiles = (rows + kPairTileRows - 1) / kPairTileRows;
+            std::vector<float> values(tiles * tileBytes / sizeof(float), 0.0f);
+            for (std::size_t r = 0; r < rows; ++r) {
+                const std::size_t tile = r / kPairTileRows, j = r % kPairTileRows;
+                for (std::size_t i = 0; i < n; ++i)
+                    values[((tile * rowOctets + i / 8) * kPairTileRows + j) * 8 + i % 8] =
+                        float(packed[(first + r) * n + i]);
+            }
             mChunks.push_back({DeviceBuffer::fromValues<float>(context, values, "coefficients"),
                                std::uint32_t(first), std::uint32_t(rows)});
         }
@@ -91,7 +100,8 @@ std::vector<std::uint32_t> DeviceCoefficients::dispatchGroups() const {
     std::vector<std::uint32_t> groups;
     if (mSparse) groups.push_back(groupsFor(mSparse->rows, 64, mMaxGroups));
     for (const Chunk& chunk : mChunks)
-        groups.push_back(groupsFor(chunk.pairs, 4 * 64, mMaxGroups));  // 4 rows per invocation
+        // A tile per kPairTileLanes invocations of 64.
+        groups.push_back(groupsFor(chunk.pairs, kPairTileRows * 64 / kPairTileLanes, mMaxGroups));
     groups.push_back(groupsFor(std::size_t(mN), mSubgroupsPerGroup, mMaxGroups));
     return groups;
 }
@@ -125,7 +135,7 @@ void DeviceCoefficients::recordApply(CommandSequence& sequence, const ModalKerne
     for (const Chunk& chunk : mChunks) {
         const std::array<const DeviceBuffer*, 3> buffers{&chunk.values, &a, &*mPairSums};
         dispatch(kernels.pairSums, buffers,
-                 shaders::PairSumsParams{std::uint32_t(paddedSize(mN) / 4), chunk.firstPair,
+                 shaders::PairSumsParams{std::uint32_t(paddedSize(mN) / 8), chunk.firstPair,
                                          chunk.pairs, 0});
     }
     const std::array<const DeviceBuffer*, 3> buffers{&*mPairSums, &b, &out};

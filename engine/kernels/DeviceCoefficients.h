@@ -5,8 +5,10 @@
 /// that read every stored coefficient once:
 ///   1. pair sums  s(k,j) = Σ_i C[k][i][j] a_i for every pair k < j (a GEMV over the packed rows),
 ///   2. combine    out_k = Σ_{j>k} s(k,j) b_j − Σ_{j<k} s(j,k) b_j   (antisymmetry).
-/// Dense coefficients are split into chunks of whole pairs when they exceed the device's storage
-/// buffer limit (lavapipe: 128 MiB, i.e. N ≳ 400); sparse ones are uploaded as their CSR rows.
+/// Dense coefficients are stored in tiles of PAIR_TILE_ROWS pair rows (shaders/modal_pair_sums.comp
+/// has the layout and why) and split into chunks of whole tiles when they exceed the device's
+/// storage buffer limit (lavapipe: 128 MiB, i.e. N ≳ 400); sparse ones are uploaded as their CSR
+/// rows.
 
 #include <cstdint>
 #include <optional>
@@ -31,12 +33,12 @@ struct IndirectArguments {
     std::uint32_t first = 0;
 };
 
-/// Floats of a modal vector buffer: N rounded up to a multiple of 4. The pair-sum kernel reads
-/// rows and the vector `a` as vec4 (four floats per load: lavapipe turns each load into a
-/// per-lane access, so wider loads are what gets it near memory bandwidth); rows and vectors are
+/// Floats of a modal vector buffer: N rounded up to a multiple of 8. The pair-sum kernel reads
+/// rows and the vector `a` eight floats per load (lavapipe turns each load into a per-lane
+/// access, so wider loads are what gets it near memory bandwidth); rows and vectors are
 /// zero-padded to that length.
 constexpr std::size_t paddedSize(int n) {
-    return (std::size_t(n) + 3) / 4 * 4;
+    return (std::size_t(n) + 7) / 8 * 8;
 }
 
 class DeviceCoefficients {

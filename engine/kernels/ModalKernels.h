@@ -15,7 +15,7 @@ struct ModalKernels {
     /// pipeline cannot be created.
     explicit ModalKernels(const VulkanContext& context);
 
-    ComputeKernel pairSums;        ///< dense: sums[p] = Σ_i C_p[i] a_i, one subgroup per pair
+    ComputeKernel pairSums;        ///< dense: sums[p] = Σ_i C_p[i] a_i, a tile of pairs per 8 invocations
     ComputeKernel sparsePairSums;  ///< sparse rows: one invocation per stored pair
     ComputeKernel combine;         ///< out_k from the pair sums and b, one subgroup per k
     ComputeKernel update;          ///< the integrators' state updates, one workgroup

@@ -11,7 +11,8 @@
 /// 16-byte vectors (4 float32 or 8 float16 DOFs) and zero-padded to whole tiles of kTileVectors
 /// vectors (a padded DOF adds 0 to every sum); a chunk holds tile 0 of each of its modes in mode
 /// order, then tile 1 of each, and so on. One tile of one mode is what kTileLanes neighbouring
-/// invocations read, vector r·kTileLanes + lane of it in their r-th load.
+/// invocations read, vectors kTileRows·lane … kTileRows·lane + kTileRows − 1 of it in one
+/// 32-byte load.
 ///
 /// A basis larger than the device's storage buffer limit is split by whole modes into several
 /// buffers (chunks), a multiple of 4 modes each where the limit allows it (the kernels read the
@@ -33,7 +34,8 @@ enum class ModePrecision { Float32, Float16 };
 class ModeBuffer {
 public:
     /// Invocations that share a tile (lavapipe's SIMD width with AVX2: its batches of
-    /// invocations then read one contiguous stream) and the vectors each reads per mode.
+    /// invocations then read one contiguous stream) and the vectors each reads per mode (one
+    /// 32-byte load).
     static constexpr std::uint32_t kTileLanes = 8;
     static constexpr std::uint32_t kTileRows = 2;
     static constexpr std::uint32_t kTileVectors = kTileLanes * kTileRows;

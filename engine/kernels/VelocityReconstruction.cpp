@@ -79,7 +79,7 @@ void ReconstructionKernel::record(CommandSequence& sequence, const ModeBuffer& m
     params.faceStart1 = std::uint32_t(mGrid.faceOffset(1));
     params.faceStart2 = std::uint32_t(mGrid.faceOffset(2));
     for (int a = 0; a < 3; ++a) params.inverseArea[a] = float(1.0 / mGrid.faceArea(a));
-    // One invocation per unit (kTileRows vectors of a tile, ModeAccess.glsl).
+    // One invocation per unit (kTileRows vectors of a tile, one 32-byte word; ModeAccess.glsl).
     const std::uint32_t groups =
         groupsFor(mContext, std::uint64_t(modes.tileCount()) * ModeBuffer::kTileLanes, mKernel.workgroupSize());
     for (const ModeBuffer::Chunk& chunk : modes.chunks()) {

@@ -88,7 +88,8 @@ TEST_P(ModalContractionKernelTest, SparseEqualsCpuApplyInFloat32) {
 }
 
 TEST(ModalContractionSplit, ChunksAboveTheStorageLimitGiveTheSameResult) {
-    // 64 modes: 2016 pairs of 256 bytes. A 100 kB limit splits them into 6 chunks.
+    // 64 modes: 2016 pairs of 256 bytes, in tiles of 64 pairs (16 kB). A 100 kB limit splits them
+    // into 6 chunks.
     vulkan::VulkanContextOptions options;
     options.storageBufferLimit = 100'000;
     options.validation = true;
