@@ -80,20 +80,19 @@ std::vector<std::uint8_t> rasterizeText(int width, int height, std::span<const T
 }
 
 void TextOverlay::update(int width, int height, std::span<const TextBlock> blocks, int scale) {
+    if (mBuffer && width == mWidth && height == mHeight && scale == mScale &&
+        std::equal(blocks.begin(), blocks.end(), mBlocks.begin(), mBlocks.end()))
+        return;
     std::vector<std::uint8_t> codes = rasterizeText(width, height, blocks, scale);
-    if (mBuffer && width == mWidth && height == mHeight && codes == mCodes) return;
-    if (!mBuffer || width != mWidth || height != mHeight) {
-        // Whole words, so the kernels may read the last pixels' word.
-        const VkDeviceSize bytes = (VkDeviceSize(codes.size()) + 3) / 4 * 4;
-        mBuffer = std::make_unique<vulkan::DeviceBuffer>(mContext, std::max<VkDeviceSize>(bytes, 4),
-                                                         "text overlay");
-        mWidth = width;
-        mHeight = height;
-    }
-    mCodes = std::move(codes);
-    std::vector<std::uint8_t> padded(mBuffer->bytes(), 0);
-    std::copy(mCodes.begin(), mCodes.end(), padded.begin());
-    mBuffer->upload<std::uint8_t>(padded);
+    // Whole words, so the kernels may read the last pixels' word.
+    codes.resize((codes.size() + 3) / 4 * 4 + (codes.empty() ? 4 : 0), DISPLAY_OVERLAY_NONE);
+    if (!mBuffer || width != mWidth || height != mHeight)
+        mBuffer = std::make_unique<vulkan::DeviceBuffer>(mContext, codes.size(), "text overlay");
+    mBuffer->upload<std::uint8_t>(codes);
+    mBlocks.assign(blocks.begin(), blocks.end());
+    mWidth = width;
+    mHeight = height;
+    mScale = scale;
 }
 
 }  // namespace modeflow::display

@@ -19,6 +19,7 @@ struct TextBlock {
     int x = 0, y = 0;  ///< top-left corner in window pixels; negative: from the right/bottom edge
     std::string text;  ///< lines separated by '\n'
     bool panel = false;  ///< darken a rectangle behind the text
+    bool operator==(const TextBlock&) const = default;
 };
 
 /// The width in pixels of `text`'s widest line drawn with `scale`.
@@ -40,8 +41,9 @@ public:
 
 private:
     const vulkan::VulkanContext& mContext;
-    std::vector<std::uint8_t> mCodes;  ///< what the device holds
-    int mWidth = 0, mHeight = 0;
+    // What the device holds, so an unchanged overlay costs nothing.
+    std::vector<TextBlock> mBlocks;
+    int mWidth = 0, mHeight = 0, mScale = 0;
     std::unique_ptr<vulkan::DeviceBuffer> mBuffer;
 };
 
