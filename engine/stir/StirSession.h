@@ -50,7 +50,8 @@ public:
 
     void reset();
     void toggleIntegrator();
-    /// ν × 2, or ÷ 2 (the first step up from 0 is a small fraction of the grid's diffusion scale).
+    /// ν × 2, or ÷ 2; the first step up from 0 damps the basis's highest mode by 1/e in about
+    /// 100 steps, and a step down from there gives 0.
     void scaleViscosity(bool up);
     void nextBasis();
     void togglePaddle();
