@@ -15,16 +15,16 @@ namespace {
 
 constexpr int kVolumeSize = 512;
 
-/// Optical depth across the box at the 99th percentile of the smoke: dense enough to read as
-/// smoke, thin enough to see into it, whatever the scene's emission rates.
-float volumeScale(const std::vector<float>& density) {
-    std::vector<float> positive;
-    for (float d : density)
-        if (d > 0.0f) positive.push_back(d);
-    if (positive.empty()) return 1.0f;
+/// The 99th percentile of the positive densities (0 without smoke): bright enough to read as
+/// smoke, whatever the scene's emission rates, without a few dense cells setting the exposure.
+double densityPercentile(const std::vector<double>& density) {
+    std::vector<double> positive;
+    for (double d : density)
+        if (d > 0.0) positive.push_back(d);
+    if (positive.empty()) return 0.0;
     const auto at = positive.begin() + std::ptrdiff_t(0.99 * double(positive.size() - 1));
     std::nth_element(positive.begin(), at, positive.end());
-    return 6.0f / std::max(*at, 1e-6f);
+    return *at;
 }
 
 }  // namespace
@@ -39,15 +39,22 @@ FramePreview::FramePreview(const MacGrid& smokeGrid, std::span<const std::uint8_
 FramePreview::~FramePreview() = default;
 
 void FramePreview::write(const std::filesystem::path& file, int frame, const SmokeFields& smoke, bool temperature) {
+    // One exposure for the whole run, raised as the smoke thickens, so that pictures of one run
+    // compare (a per-picture exposure would make every frame look alike).
+    mExposure = std::max(mExposure, densityPercentile(smoke.density));
+    const double exposure = mExposure > 0.0 ? std::max(mExposure, 1e-6) : 1.0;
     preview::Image picture;
     if (mGrid.dim == 2) {
+        preview::Smoke2DOptions options;
+        options.densityScale = exposure;
         picture = preview::renderSmoke2D(mGrid, std::span<const double>(smoke.density),
                                          temperature ? std::span<const double>(smoke.temperature)
                                                      : std::span<const double>(),
-                                         mMask);
+                                         mMask, options);
     } else {
         const std::vector<float> density(smoke.density.begin(), smoke.density.end());
-        const float scale = volumeScale(density);
+        // Optical depth 6 across the box at the exposure density.
+        const float scale = float(6.0 / exposure);
         if (mRenderer) {
             const vulkan::DeviceBuffer buffer = vulkan::DeviceBuffer::fromValues<float>(*mContext, density, "preview density");
             picture = mRenderer->render(buffer, scale);

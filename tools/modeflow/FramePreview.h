@@ -2,7 +2,8 @@
 /// @file FramePreview.h
 /// `modeflow run --preview`: a PNG of the smoke every K frames (2D: the smoke grid as an image;
 /// 3D: ray-marched on the device, or by the CPU reference renderer with `--device cpu`) and a
-/// contact sheet of them at the end.
+/// contact sheet of them at the end. The exposure is the run's: the largest 99th-percentile
+/// density of the pictures so far.
 
 #include <filesystem>
 #include <memory>
@@ -37,6 +38,7 @@ private:
     std::vector<std::uint8_t> mMask;
     std::unique_ptr<preview::VolumeRenderer> mRenderer;
     const vulkan::VulkanContext* mContext;
+    double mExposure = 0.0;  ///< the largest 99th-percentile density of the pictures so far
     std::vector<preview::Image> mPictures;
     std::vector<int> mFrames;
 };
