@@ -41,6 +41,10 @@ using uint = std::uint32_t;
    this many pixels wide around the picture (the box's walls). */
 #define DISPLAY_MARGIN 0.6
 #define DISPLAY_FRAME_PIXELS 3
+/* Velocity arrows. */
+#define DISPLAY_ARROW_R 0.45
+#define DISPLAY_ARROW_G 0.75
+#define DISPLAY_ARROW_B 1.0
 /* The paddle. */
 #define DISPLAY_PADDLE_R 0.85
 #define DISPLAY_PADDLE_G 0.35
@@ -64,13 +68,17 @@ struct DisplayParams {
     float paddleAxisX;  /* from the centre to one end of its segment, */
     float paddleAxisY;
     float paddleRadius; /* and its radius */
+    uint arrows;        /* display_smoke_2d: 1 draws velocity arrows, one per square of */
+    float arrowSpacing; /* this many window pixels, */
+    float arrowScale;   /* window pixels per unit of velocity, */
+    uint basisX;        /* from the face velocity of the basis grid of basisX x basisY cells */
+    uint basisY;
     uint pad0;
     uint pad1;
-    uint pad2;
 };
 
 #ifdef __cplusplus
-static_assert(sizeof(DisplayParams) == 80, "push constants are scalars in 16-byte rows");
+static_assert(sizeof(DisplayParams) == 96, "push constants are scalars in 16-byte rows");
 }  // namespace modeflow::shaders
 #endif
 

@@ -4,6 +4,7 @@
 // domain's boundary shows as it is discretized), toned like the PNG previews, tinted where hot,
 // with the text overlay on top. Wrapper: engine/display/DisplayKernels.cpp.
 #extension GL_GOOGLE_include_directive : require
+#extension GL_EXT_control_flow_attributes : require
 #include "DisplayParams.h"
 
 layout(local_size_x = 64, local_size_x_id = 0) in;
@@ -12,9 +13,44 @@ layout(std430, set = 0, binding = 0) readonly buffer Fields { vec2 fields[]; }; 
 layout(std430, set = 0, binding = 1) readonly buffer Mask { uint maskWords[]; };  // 4 bytes a word
 layout(std430, set = 0, binding = 2) readonly buffer Overlay { uint overlayWords[]; };
 layout(std430, set = 0, binding = 3) writeonly buffer Pixels { uint pixels[]; };
+layout(std430, set = 0, binding = 4) readonly buffer Faces { float faces[]; };  // basis face velocity
 layout(push_constant) uniform Push { DisplayParams params; };
 
 #include "Display.glsl"
+
+#define MAC_DIM 2
+vec2 macFacePair(uint face) { return vec2(faces[face], faces[min(face + 1u, uint(faces.length()) - 1u)]); }
+#include "MacSampling.glsl"
+
+float segmentDistance(vec2 p, vec2 a, vec2 b) {
+    const vec2 ab = b - a;
+    const float t = dot(ab, ab) > 0.0 ? clamp(dot(p - a, ab) / dot(ab, ab), 0.0, 1.0) : 0.0;
+    return length(p - a - t * ab);
+}
+
+// The velocity arrow of the square of the arrow lattice holding window pixel (x, y): the MAC
+// velocity at the square's centre, drawn through it (y up in the scene, down on screen).
+vec3 withArrow(vec3 colour, uint x, uint y) {
+    const vec2 local = vec2(ivec2(x, y) - ivec2(params.viewX, params.viewY)) + 0.5;
+    const vec2 centre = (floor(local / params.arrowSpacing) + 0.5) * params.arrowSpacing;
+    const vec2 view = vec2(params.viewWidth, params.viewHeight);
+    if (any(greaterThan(centre, view))) return colour;
+    const vec2 basis = vec2(params.basisX, params.basisY);
+    const vec3 point = vec3(centre.x / view.x * basis.x, (1.0 - centre.y / view.y) * basis.y, 0.0);
+    const ivec3 cells = ivec3(params.basisX, params.basisY, 1);
+    const uint yOffset = (params.basisX + 1u) * params.basisY;
+    const vec2 u = vec2(sampleFaceComponent(0, point, cells, 0u), sampleFaceComponent(1, point, cells, yOffset));
+    vec2 d = vec2(u.x, -u.y) * params.arrowScale;
+    const float limit = 0.9 * params.arrowSpacing;
+    if (length(d) > limit) d *= limit / length(d);
+    if (length(d) < 1.5) return colour;
+    const vec2 tail = centre - 0.5 * d, tip = centre + 0.5 * d;
+    const vec2 back = -normalize(d) * min(5.0, 0.4 * length(d)), side = vec2(-back.y, back.x) * 0.6;
+    const float dist = min(segmentDistance(local, tail, tip),
+                           min(segmentDistance(local, tip, tip + back + side),
+                               segmentDistance(local, tip, tip + back - side)));
+    return mix(colour, vec3(DISPLAY_ARROW_R, DISPLAY_ARROW_G, DISPLAY_ARROW_B), clamp(1.2 - dist, 0.0, 1.0));
+}
 
 bool isFluid(uint cell) { return ((maskWords[cell >> 2] >> ((cell & 3u) * 8u)) & 0xffu) != 0u; }
 
@@ -47,6 +83,7 @@ void main() {
             colour = mix(vec3(DISPLAY_BACKGROUND_R, DISPLAY_BACKGROUND_G, DISPLAY_BACKGROUND_B),
                          smoke, tone);
         }
+        if (params.arrows != 0u) colour = withArrow(colour, x, y);
         colour = withPaddle(colour, p);
     }
     pixels[pixel] = packColour(withOverlay(colour, pixel));

@@ -55,12 +55,12 @@ std::uint32_t pixelGroups(const vulkan::ComputeKernel& kernel, const DisplayTarg
 
 DisplayKernels::DisplayKernels(const vulkan::VulkanContext& context)
     : mContext(context),
-      mSmoke2D(context, {"display_smoke_2d", display_smoke_2d_spv, 4, sizeof(shaders::DisplayParams)}),
+      mSmoke2D(context, {"display_smoke_2d", display_smoke_2d_spv, 5, sizeof(shaders::DisplayParams)}),
       mPicture(context, {"display_picture", display_picture_spv, 3, sizeof(shaders::DisplayParams)}) {}
 
 void DisplayKernels::recordSmoke2D(vulkan::CommandSequence& sequence, const vulkan::SmokeState& smoke,
-                                   const Smoke2DLook& look, const vulkan::DeviceBuffer& overlay,
-                                   const DisplayTarget& target,
+                                   const vulkan::DeviceBuffer& faceVelocity, const Smoke2DLook& look,
+                                   const vulkan::DeviceBuffer& overlay, const DisplayTarget& target,
                                    const vulkan::DeviceBuffer& pixels) const {
     const MacGrid& grid = smoke.smokeGrid();
     if (grid.dim != 2)
@@ -69,8 +69,15 @@ void DisplayKernels::recordSmoke2D(vulkan::CommandSequence& sequence, const vulk
     shaders::DisplayParams p = paramsFor(target, grid.cells[0], grid.cells[1], look.paddle);
     p.densityScale = look.densityScale;
     p.hotScale = look.hotScale;
-    const std::array<const vulkan::DeviceBuffer*, 4> buffers{&smoke.fields(), &smoke.mask(), &overlay,
-                                                             &pixels};
+    const MacGrid& basis = smoke.basisGrid();
+    requireBytes(faceVelocity, VkDeviceSize(basis.faceTotal()) * sizeof(float));
+    p.arrows = look.arrows ? 1u : 0u;
+    p.arrowSpacing = look.arrowSpacing;
+    p.arrowScale = look.arrowScale;
+    p.basisX = std::uint32_t(basis.cells[0]);
+    p.basisY = std::uint32_t(basis.cells[1]);
+    const std::array<const vulkan::DeviceBuffer*, 5> buffers{&smoke.fields(), &smoke.mask(), &overlay,
+                                                             &pixels, &faceVelocity};
     sequence.dispatch(mSmoke2D, buffers, p, pixelGroups(mSmoke2D, target, overlay, pixels));
 }
 

@@ -38,6 +38,11 @@ struct Smoke2DLook {
     float densityScale = 1.0f;  ///< the density shown fully bright
     float hotScale = 0.0f;      ///< the temperature shown fully hot (0: no tint)
     PaddleOverlay paddle;       ///< in smoke cells, y up
+    /// Velocity arrows, one per square of `arrowSpacing` window pixels, `arrowScale` pixels
+    /// per unit of velocity.
+    bool arrows = false;
+    float arrowSpacing = 32.0f;
+    float arrowScale = 1.0f;
 };
 
 class DisplayKernels {
@@ -45,11 +50,13 @@ public:
     /// @throw modeflow::Error if a pipeline cannot be made.
     explicit DisplayKernels(const vulkan::VulkanContext& context);
 
-    /// Records the picture of the 2D `smoke` into `pixels`.
-    /// @throw modeflow::Error when the smoke grid is not 2D or `pixels` or `overlay` is too small.
+    /// Records the picture of the 2D `smoke` into `pixels`; the arrows show `faceVelocity`, a
+    /// face field of the smoke's basis grid (Simulation::faceVelocityBuffer()).
+    /// @throw modeflow::Error when the smoke grid is not 2D or a buffer is too small.
     void recordSmoke2D(vulkan::CommandSequence& sequence, const vulkan::SmokeState& smoke,
-                       const Smoke2DLook& look, const vulkan::DeviceBuffer& overlay,
-                       const DisplayTarget& target, const vulkan::DeviceBuffer& pixels) const;
+                       const vulkan::DeviceBuffer& faceVelocity, const Smoke2DLook& look,
+                       const vulkan::DeviceBuffer& overlay, const DisplayTarget& target,
+                       const vulkan::DeviceBuffer& pixels) const;
     /// Records `picture` (pictureWidth × pictureHeight packed RGBA8 words) scaled into the
     /// viewport, with `paddle` (in picture pixels, y down) over it, into `pixels`.
     /// @throw modeflow::Error when a buffer is too small.

@@ -57,8 +57,10 @@ public:
     void setObstacles(std::vector<MovingObstacle> obstacles);
     void setViscosity(double viscosity);
     void setIntegrator(Integrator integrator);
-    /// The smoke on the device, for kernels that draw it (valid between frames).
+    /// The smoke and the grid velocity on the device, for kernels that draw them (valid between
+    /// frames; the velocity is a face field of the basis grid).
     const vulkan::SmokeState& smokeState() const { return mSmoke; }
+    const vulkan::DeviceBuffer& faceVelocityBuffer() const { return mFaceVelocity; }
 
 private:
     /// Records one whole step; adds each stage's dispatch range to `ranges`.

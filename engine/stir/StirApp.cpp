@@ -3,6 +3,7 @@
 #include <GLFW/glfw3.h>
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <ostream>
 #include <thread>
@@ -132,6 +133,8 @@ private:
     std::size_t mNextScripted = 0;
 
     bool mPaused = false, mStepOnce = false, mHelp = false, mQuit = false, mScreenshot = false;
+    bool mArrows = false;
+    double mEnergy = 0.0;  ///< ½|v|² at the last statistics refresh
     bool mOrbiting = false;
     double mOrbitX = 0.0, mOrbitY = 0.0;
     int mScreenshots = 0;
@@ -198,6 +201,7 @@ void StirWindow::act(StirAction action) {
         case StirAction::ViscosityDown: mSession.scaleViscosity(false); break;
         case StirAction::NextBasis: mSession.nextBasis(); break;
         case StirAction::Paddle: mSession.togglePaddle(); break;
+        case StirAction::Arrows: mArrows = !mArrows; break;
         case StirAction::Screenshot: mScreenshot = true; break;
         case StirAction::Help: mHelp = !mHelp; break;
         case StirAction::Quit: mQuit = true; break;
@@ -272,7 +276,18 @@ bool StirWindow::draw() {
         display::Smoke2DLook look;
         look.hotScale = simulatesHeat(mScene) ? 1.0f : 0.0f;
         look.paddle = paddleOverlay();
-        mKernels.recordSmoke2D(mSequence, smoke, look, mOverlay.buffer(), target, *mPixels);
+        look.arrows = mArrows;
+        if (mArrows) {
+            // The RMS speed over the box, ½|v|² = ½∫|u|², spans half an arrow square.
+            const MacGrid& grid = mView.grid();
+            const double area = grid.spacing[0] * grid.cells[0] * grid.spacing[1] * grid.cells[1];
+            const double rms = std::sqrt(2.0 * mEnergy / area);
+            look.arrowSpacing = float(std::max(16, target.viewport.width / 24));
+            look.arrowScale = float(0.5 * look.arrowSpacing / std::max(rms, 1e-6));
+        }
+        const Simulation& simulation = mSession.simulation();
+        mKernels.recordSmoke2D(mSequence, smoke, simulation.faceVelocityBuffer(), look,
+                               mOverlay.buffer(), target, *mPixels);
     }
     mSequence.submitAndWait();
     return true;
@@ -346,7 +361,7 @@ StirReport StirWindow::run(std::ostream& log) {
             char line[256];
             std::snprintf(line, sizeof line, "%s   %.1f fps   step %.1f ms   energy %.4g   t %.2f s   %s",
                           mScene.name.c_str(), sampled > 0.0 ? mSampleFrames / sampled : 0.0,
-                          1e3 * mStepSeconds, mSession.energy(), mSession.simulation().time(),
+                          1e3 * mStepSeconds, mEnergy = mSession.energy(), mSession.simulation().time(),
                           state.c_str());
             mStatistics = std::string(line) + "\n" + mStages.line() + "\n" + mSession.status() + "\nh: help";
             mStages = {};

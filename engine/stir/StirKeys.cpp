@@ -17,6 +17,7 @@ constexpr std::array kBindings{
     KeyBinding{GLFW_KEY_LEFT_BRACKET, "[", StirAction::ViscosityDown, "viscosity /2"},
     KeyBinding{GLFW_KEY_B, "b", StirAction::NextBasis, "next shaped basis"},
     KeyBinding{GLFW_KEY_M, "m", StirAction::Paddle, "mouse: stir force / paddle"},
+    KeyBinding{GLFW_KEY_V, "v", StirAction::Arrows, "velocity arrows (2D)"},
     KeyBinding{GLFW_KEY_P, "p", StirAction::Screenshot, "screenshot (PNG)"},
     KeyBinding{GLFW_KEY_H, "h", StirAction::Help, "this help"},
     KeyBinding{GLFW_KEY_Q, "q", StirAction::Quit, "quit"},

@@ -19,6 +19,7 @@ enum class StirAction {
     ViscosityDown,  ///< ν / 2 (below the first step: 0)
     NextBasis,      ///< the next shaped basis the cache holds
     Paddle,         ///< mouse drags stir with a force ↔ move a solid paddle
+    Arrows,         ///< 2D: show or hide velocity arrows
     Screenshot,     ///< the window as PNG
     Help,           ///< show or hide the key list
     Quit,

@@ -185,7 +185,7 @@ TEST(StirWindowTest, KeysPauseSwitchAndReset) {
     EXPECT_NEAR(paused.simulatedTime, 0.025, 1e-12);
 
     const stir::StirReport switched =
-        run(2, "0.05 key i\n0.1 key ]\n0.15 key b\n0.2 key p\n0.7 key r\n", 30);
+        run(2, "0.05 key i\n0.1 key ]\n0.15 key b\n0.2 key p\n0.25 key v\n0.7 key r\n", 30);
     EXPECT_NE(switched.status.find("explicit"), std::string::npos) << switched.status;
     EXPECT_EQ(switched.status.find("viscosity 0 "), std::string::npos) << switched.status;
     EXPECT_EQ(switched.modes, 10) << "b switches from 1-10,21-30 to the leading range";
