@@ -31,6 +31,8 @@ TEST_F(StirCommand, BadScriptsAndTheCpuDeviceAreRefusedBeforeAnyWork) {
                    "cannot read the input script");
     expectRejected("stir " + s.string() + " --device cpu --cache-dir " + mCache.string(),
                    "--device cpu");
+    const fs::path mhd = scene("mhd.toml", std::string(kSmallDisk) + "[simulation]\nmhd = true\n");
+    expectRejected("stir " + mhd.string() + " --cache-dir " + mCache.string(), "[simulation].mhd");
 }
 
 }  // namespace

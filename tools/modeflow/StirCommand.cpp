@@ -49,6 +49,10 @@ Command addStir(CLI::App& app) {
         if (!deviceOptions)
             throw Error("--device cpu: the stir window simulates on a Vulkan device (vulkan or an index)");
         const SceneSpec scene = loadScene(opts->scene);
+        if (scene.simulation.mhd)
+            throw Error(scene.sourceFile.string() +
+                        ": [simulation].mhd: MHD runs on the CPU reference only (modeflow run --device "
+                        "cpu); the stir window simulates on a Vulkan device");
         stir::StirOptions options;
         options.device = *deviceOptions;
         options.frames = opts->frames;
