@@ -59,11 +59,14 @@ void validate(const VdbFrame& frame) {
     if (!frame.fluidMask.empty() && frame.fluidMask.size() != cells)
         throw Error("the fluid mask has " + count(frame.fluidMask.size()) + " entries for " +
                     count(cells) + " smoke cells");
-    requireFaceField(frame.basisGrid, frame.faceVelocity.size(), "the face velocity");
-    for (std::size_t f = 0; f < frame.faceVelocity.size(); ++f)
-        if (!std::isfinite(frame.faceVelocity[f]))
-            throw Error("the face velocity is not finite at face " + count(f) +
-                        " (the simulation diverged)");
+    const auto checkFaceField = [&](std::span<const double> field, const std::string& name) {
+        requireFaceField(frame.basisGrid, field.size(), name.c_str());
+        for (std::size_t f = 0; f < field.size(); ++f)
+            if (!std::isfinite(field[f]))
+                throw Error(name + " is not finite at face " + count(f) + " (the simulation diverged)");
+    };
+    checkFaceField(frame.faceVelocity, "the face velocity");
+    if (!frame.faceMagnetic.empty()) checkFaceField(frame.faceMagnetic, "the face magnetic field");
     const double threshold = frame.options.activityThreshold;
     if (!(threshold >= 0.0) || !std::isfinite(threshold))
         throw Error("the activity threshold must be a finite number ≥ 0, got " +
@@ -143,9 +146,9 @@ vdb::FloatGrid::Ptr scalarGrid(const VdbFrame& frame, const CellValues& values, 
     return grid;
 }
 
-/// The MAC velocity sampled at every smoke cell centre, so `vel` shares the lattice of the
-/// scalars; one z-y row of cells per task.
-vdb::Vec3SGrid::Ptr velocityGrid(const VdbFrame& frame) {
+/// A MAC face field (the velocity, or the magnetic field) sampled at every smoke cell centre, so
+/// it shares the lattice of the scalars; one z-y row of cells per task.
+vdb::Vec3SGrid::Ptr vectorGrid(const VdbFrame& frame, std::span<const double> faceField, const char* name) {
     const MacGrid& smoke = frame.smokeGrid;
     std::vector<vdb::Vec3s> dense(static_cast<std::size_t>(smoke.cellCount()));
     const double threshold = frame.options.activityThreshold;
@@ -156,15 +159,15 @@ vdb::Vec3SGrid::Ptr velocityGrid(const VdbFrame& frame) {
                 const auto c = static_cast<std::size_t>(smoke.cellIndex(i, j, k));
                 if (!isFluid(frame, c)) continue;
                 const Vec3 world{smoke.cellCentre(0, i), smoke.cellCentre(1, j), smoke.cellCentre(2, k)};
-                const Vec3 v = sampleVelocity(frame.basisGrid, frame.faceVelocity, world);
+                const Vec3 v = sampleVelocity(frame.basisGrid, faceField, world);
                 if (std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]) >= threshold)
                     dense[c] = vdb::Vec3s(float(v[0]), float(v[1]), float(v[2]));
             }
         }
     });
-    auto grid = sparseGrid<vdb::Vec3SGrid>(smoke, dense, "vel", frame);
-    // A velocity: transformed by the map's linear part, translation ignored; the values are in
-    // world units (Houdini's Transform VDB and Blender's motion blur read both settings).
+    auto grid = sparseGrid<vdb::Vec3SGrid>(smoke, dense, name, frame);
+    // Like a velocity: transformed by the map's linear part, translation ignored; the values are
+    // in world units (Houdini's Transform VDB and Blender's motion blur read both settings).
     grid->setVectorType(vdb::VEC_CONTRAVARIANT_RELATIVE);
     grid->setIsInWorldSpace(true);
     return grid;
@@ -218,7 +221,8 @@ void writeVdbFrame(const fs::path& file, const VdbFrame& frame) {
         vdb::GridCPtrVec grids;
         grids.push_back(scalarGrid(frame, frame.density, "density"));
         if (size(frame.temperature) != 0) grids.push_back(scalarGrid(frame, frame.temperature, "temperature"));
-        grids.push_back(velocityGrid(frame));
+        grids.push_back(vectorGrid(frame, frame.faceVelocity, "vel"));
+        if (!frame.faceMagnetic.empty()) grids.push_back(vectorGrid(frame, frame.faceMagnetic, "magnetic"));
         vdb::MetaMap meta;
         addFrameMetadata(meta, frame);
         writeArchive(temporary, grids, meta);

@@ -8,8 +8,11 @@
 /// - `temperature`: FloatGrid, class fog volume, only when the frame carries one;
 /// - `vel`: Vec3SGrid, vector type "contravariant relative" (a velocity: transforms with the
 ///   map's linear part, ignores its translation), values in world units per unit time. The MAC
-///   face field is sampled at the smoke cell centres (MacSampling.h), so all three grids share
-///   one voxel lattice; a staggered grid would confuse both applications' renderers.
+///   face field is sampled at the smoke cell centres (MacSampling.h), so all grids share one
+///   voxel lattice; a staggered grid would confuse both applications' renderers;
+/// - `magnetic`: Vec3SGrid, only for MHD runs: the magnetic field, a face field of the basis
+///   grid like the velocity (seed §6.3.5 puts it in the velocity basis), sampled and stored
+///   exactly as `vel` is.
 ///
 /// All grids share one linear transform: voxel size = the smoke grid's spacing per axis
 /// (non-cubic cells give a non-uniform scale) and voxel (i, j, k)'s *centre* at the smoke cell
@@ -57,6 +60,7 @@ struct VdbFrame {
     CellValues density;                    ///< one per smoke cell (concentration)
     CellValues temperature;                ///< one per smoke cell; empty: no temperature grid
     std::span<const double> faceVelocity;  ///< face field of basisGrid (MacGrid face numbering)
+    std::span<const double> faceMagnetic;  ///< face field of basisGrid; empty: no magnetic grid
     std::span<const std::uint8_t> fluidMask;  ///< one per smoke cell, non-zero in Ω; empty: all
     int frame = 0;
     double time = 0.0;

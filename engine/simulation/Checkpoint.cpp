@@ -14,7 +14,7 @@ namespace modeflow {
 namespace {
 
 constexpr char kMagic[16] = {'M', 'O', 'D', 'E', 'F', 'L', 'O', 'W', '-', 'R', 'E', 'S', 'U', 'M', 'E', '\0'};
-constexpr std::uint32_t kVersion = 1;
+constexpr std::uint32_t kVersion = 2;  ///< 2: the magnetic field after the velocity
 
 template <typename T>
 void put(std::string& out, const T& value) {
@@ -67,6 +67,7 @@ void writeCheckpoint(const std::filesystem::path& path, const Checkpoint& checkp
     put(bytes, checkpoint.runHash);
     put(bytes, checkpoint.time);
     putDoubles(bytes, checkpoint.velocity.data(), std::size_t(checkpoint.velocity.size()));
+    putDoubles(bytes, checkpoint.magnetic.data(), std::size_t(checkpoint.magnetic.size()));
     putDoubles(bytes, checkpoint.smoke.density.data(), checkpoint.smoke.density.size());
     putDoubles(bytes, checkpoint.smoke.temperature.data(), checkpoint.smoke.temperature.size());
     put(bytes, fnv1a64(bytes));
@@ -108,8 +109,12 @@ Checkpoint readCheckpoint(const std::filesystem::path& path) {
     checkpoint.frame = int(reader.get<std::uint32_t>());
     checkpoint.runHash = reader.get<std::uint64_t>();
     checkpoint.time = reader.get<double>();
-    const std::vector<double> velocity = reader.doubles();
-    checkpoint.velocity = Eigen::Map<const Eigen::VectorXd>(velocity.data(), Eigen::Index(velocity.size()));
+    const auto modal = [&reader] {
+        const std::vector<double> values = reader.doubles();
+        return Eigen::VectorXd(Eigen::Map<const Eigen::VectorXd>(values.data(), Eigen::Index(values.size())));
+    };
+    checkpoint.velocity = modal();
+    checkpoint.magnetic = modal();
     checkpoint.smoke.density = reader.doubles();
     checkpoint.smoke.temperature = reader.doubles();
     if (checkpoint.smoke.density.size() != checkpoint.smoke.temperature.size())

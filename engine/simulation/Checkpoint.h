@@ -1,12 +1,14 @@
 #pragma once
 /// @file Checkpoint.h
 /// The state a run resumes from (`modeflow run --resume`): written after every frame, beside the
-/// frames. It holds the modal velocity and the smoke exactly as the simulator holds them (device
-/// floats widen to doubles and narrow back without loss), so a resumed run continues bit for bit.
+/// frames. It holds the modal velocity, the modal magnetic field (MHD runs) and the smoke exactly
+/// as the simulator holds them (device floats widen to doubles and narrow back without loss), so a
+/// resumed run continues bit for bit.
 ///
-/// Layout (little-endian): magic "MODEFLOW-RESUME\0" | u32 version | u32 frame | u64 run hash |
-/// f64 time | u64 N | N × f64 velocity | u64 cells | cells × f64 density | cells × f64
-/// temperature | u64 FNV-1a checksum of everything before it.
+/// Layout (little-endian): magic "MODEFLOW-RESUME\0" | u32 version (2) | u32 frame | u64 run
+/// hash | f64 time | u64 N | N × f64 velocity | u64 M | M × f64 magnetic field (M = 0 without
+/// MHD) | u64 cells | cells × f64 density | cells × f64 temperature | u64 FNV-1a checksum of
+/// everything before it.
 
 #include <cstdint>
 #include <filesystem>
@@ -22,6 +24,7 @@ struct Checkpoint {
     double time = 0.0;          ///< simulated time after them
     std::uint64_t runHash = 0;  ///< what shaped the run (scene, device kind, options)
     Eigen::VectorXd velocity;
+    Eigen::VectorXd magnetic;  ///< F of an MHD run; empty otherwise
     SmokeFields smoke;
 };
 

@@ -6,13 +6,16 @@
 
 namespace modeflow {
 
-SimulationSettings SimulationSettings::fromScene(const SceneSpec& scene, const BasisCache& cache) {
+void requireRuntimeSupport(const SceneSpec& scene, Runtime runtime) {
+    if (runtime == Runtime::Device && scene.simulation.mhd)
+        throw Error(scene.sourceFile.string() +
+                    ": [simulation].mhd runs on the CPU reference only; use --device cpu");
+}
+
+SimulationSettings SimulationSettings::fromScene(const SceneSpec& scene, const BasisCache& cache,
+                                                 Runtime runtime) {
+    requireRuntimeSupport(scene, runtime);
     const SimulationSpec& sim = scene.simulation;
-    if (sim.mhd)
-        throw Error(
-            scene.sourceFile.string() +
-            ": [simulation].mhd: the smoke runtime simulates Euler, Navier-Stokes and LANS-alpha "
-            "flows; run MHD scenes with `modeflow modes`");
     if (scene.sources.size() > std::size_t(maxSmokeEmitters))
         throw Error(scene.sourceFile.string() + ": " + std::to_string(scene.sources.size()) +
                     " [[source]] entries; the runtime takes at most " +
@@ -22,6 +25,8 @@ SimulationSettings SimulationSettings::fromScene(const SceneSpec& scene, const B
     settings.stepsPerFrame = scene.output.stepsPerFrame;
     settings.integrator = sim.integrator;
     settings.fluid = {cache.velocity.eigenvalues, sim.viscosity, sim.alpha};
+    settings.mhd = sim.mhd;
+    settings.magneticDiffusivity = sim.magneticDiffusivity;
     settings.buoyancy = scene.smoke.buoyancy;
     settings.smokeScale = scene.smoke.resolutionScale;
     settings.advection = scene.smoke.advection;

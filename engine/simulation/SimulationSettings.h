@@ -16,11 +16,23 @@
 
 namespace modeflow {
 
+/// Which implementation runs a scene: the Vulkan Simulation or the CPU ReferenceSimulation.
+enum class Runtime { Device, CpuReference };
+
+/// Refuses, before any work, scenes `runtime` does not simulate: MHD runs on the CPU reference
+/// only (the device kernels advance the velocity alone).
+/// @throw modeflow::Error naming [simulation].mhd and `--device cpu`.
+void requireRuntimeSupport(const SceneSpec& scene, Runtime runtime);
+
 struct SimulationSettings {
     double dt = 0.02;
     int stepsPerFrame = 1;
     Integrator integrator = Integrator::Midpoint;
     FluidParameters fluid;  ///< κ² of the basis, viscosity ν, LANS-α
+    /// MHD (seed §6.3.5, CPU reference only): a magnetic field F in the velocity basis, advected
+    /// by the flow and acting back on it, decaying at the magnetic diffusivity η.
+    bool mhd = false;
+    double magneticDiffusivity = 0.0;
     double buoyancy = 0.0;  ///< upward acceleration per unit temperature
     int smokeScale = 1;     ///< smoke cells per basis cell and axis
     AdvectionScheme advection = AdvectionScheme::MacCormack;
@@ -28,11 +40,12 @@ struct SimulationSettings {
     std::vector<SmokeEmitter> emitters;
     std::vector<MovingObstacle> obstacles;
 
-    /// The scene's [simulation], [smoke], [[source]] and [output] values on this basis.
-    /// @throw modeflow::Error for MHD scenes (the smoke runtime simulates Euler, Navier–Stokes
-    /// and LANS-α flows; `modeflow modes` runs MHD), or more emitters or obstacles than the
-    /// runtime takes.
-    static SimulationSettings fromScene(const SceneSpec& scene, const BasisCache& cache);
+    /// The scene's [simulation], [smoke], [[source]] and [output] values on this basis, for
+    /// `runtime`.
+    /// @throw modeflow::Error for scenes `runtime` does not simulate (requireRuntimeSupport), or
+    /// more emitters or obstacles than the runtime takes.
+    static SimulationSettings fromScene(const SceneSpec& scene, const BasisCache& cache,
+                                        Runtime runtime = Runtime::Device);
 };
 
 /// What advancing one frame did.

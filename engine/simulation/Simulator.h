@@ -1,7 +1,7 @@
 #pragma once
 /// @file Simulator.h
-/// One scene advancing frame by frame (DESIGN §1): modal velocity, forces from the smoke, and the
-/// smoke it carries. Two implementations run the same model: Simulation on a Vulkan device
+/// One scene advancing frame by frame (DESIGN §1): modal velocity (and, with MHD, magnetic
+/// field), forces from the smoke, and the smoke it carries. Two implementations run the same model: Simulation on a Vulkan device
 /// (float32) and ReferenceSimulation on the CPU (double), so any run can be made on both and
 /// compared (`--device cpu`).
 
@@ -13,6 +13,7 @@
 #include "engine/field/ForceField.h"
 #include "engine/field/MacGrid.h"
 #include "engine/field/SmokeAdvection.h"
+#include "engine/format/Error.h"
 #include "engine/simulation/SimulationSettings.h"
 
 namespace modeflow {
@@ -28,6 +29,13 @@ public:
     /// Continues from a saved state (a resumed run): the time, the modal velocity and the smoke.
     /// @throw modeflow::Error on wrong sizes.
     virtual void restore(double time, const Eigen::VectorXd& v, const SmokeFields& smoke) = 0;
+    /// MHD (seed §6.3.5): the modal magnetic field F (N values in the velocity basis); empty
+    /// when the run simulates none. The defaults are those of a runtime without MHD.
+    virtual Eigen::VectorXd magneticField() const { return {}; }
+    /// @throw modeflow::Error on a wrong size, or when the run simulates no magnetic field.
+    virtual void setMagneticField(const Eigen::VectorXd&) {
+        throw Error("simulation: this run simulates no magnetic field ([simulation].mhd)");
+    }
     /// Stirring splats acting from the next step on (replacing earlier ones).
     virtual void setSplats(std::span<const ForceSplat> splats) = 0;
 
@@ -39,6 +47,9 @@ public:
     virtual SmokeFields smoke() const = 0;
     /// The velocity now as a face field of the basis grid (MacGrid.h).
     virtual std::vector<double> faceVelocity() const = 0;
+    /// The magnetic field now as a face field of the basis grid, reconstructed from F as
+    /// faceVelocity() is from v; empty without MHD.
+    virtual std::vector<double> faceMagneticField() const { return {}; }
 
     virtual const SimulationSettings& settings() const = 0;
     virtual const MacGrid& smokeGrid() const = 0;

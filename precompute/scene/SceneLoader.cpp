@@ -52,6 +52,8 @@ constexpr std::pair<std::string_view, InitialVelocity> kInitialVelocities[] = {
     {"random", InitialVelocity::Random},
     {"modes", InitialVelocity::Modes},
     {"vortices", InitialVelocity::Vortices}};
+constexpr std::pair<std::string_view, InitialMagnetic> kInitialMagnetics[] = {
+    {"random", InitialMagnetic::Random}, {"uniform", InitialMagnetic::Uniform}};
 
 template <typename T>
 std::string_view keywordOf(Choices<T> choices, T value) {
@@ -68,11 +70,12 @@ constexpr std::string_view kBasisKeys[] = {
     "velocity_modes", "modes", "scalar_modes", "scalar_boundary", "wall", "boundary", "subsamples"};
 constexpr std::string_view kSimulationKeys[] = {"dt",  "integrator",           "viscosity",      "alpha",
                                                 "mhd", "magnetic_diffusivity", "basis_precision"};
-constexpr std::string_view kInitialKeys[] = {"velocity", "energy",          "seed",
-                                             "band",     "amplitudes",      "vortex",
-                                             "magnetic_energy", "magnetic_seed"};
-/// [initial] keys that go with any velocity choice.
-constexpr std::string_view kInitialFieldKeys[] = {"magnetic_energy", "magnetic_seed"};
+constexpr std::string_view kInitialKeys[] = {
+    "velocity", "energy",        "seed",     "band", "amplitudes", "vortex", "magnetic", "magnetic_energy",
+    "magnetic_seed", "magnetic_direction", "magnetic_strength", "magnetic_wall_layer"};
+/// [initial] keys of the magnetic field (MHD only), which go with any velocity choice.
+constexpr std::string_view kInitialFieldKeys[] = {"magnetic",           "magnetic_energy",   "magnetic_seed",
+                                                  "magnetic_direction", "magnetic_strength", "magnetic_wall_layer"};
 constexpr std::string_view kVortexKeys2d[] = {"center", "strength", "radius"};
 constexpr std::string_view kVortexKeys3d[] = {"center", "normal", "ring_radius", "radius",
                                               "strength"};
@@ -93,6 +96,15 @@ std::span<const std::string_view> initialKeys(InitialVelocity velocity) {
             return vortices;
     }
     return {};
+}
+
+/// The `[initial]` keys each magnetic field choice reads besides `magnetic`.
+std::span<const std::string_view> magneticKeys(InitialMagnetic magnetic) {
+    static constexpr std::string_view random[] = {"magnetic_energy", "magnetic_seed"};
+    static constexpr std::string_view uniform[] = {"magnetic_direction", "magnetic_strength",
+                                                   "magnetic_wall_layer"};
+    return magnetic == InitialMagnetic::Uniform ? std::span<const std::string_view>(uniform)
+                                                : std::span<const std::string_view>(random);
 }
 constexpr std::pair<std::string_view, ObstacleShape> kObstacleShapes[] = {
     {"ball", ObstacleShape::Ball}, {"box", ObstacleShape::Box}, {"capsule", ObstacleShape::Capsule}};
@@ -304,11 +316,12 @@ public:
             scene.simulation = readSimulation({*t, "[simulation]"});
         }
         if (const toml::table* t = optionalTable(root, "initial")) {
-            scene.initial = readInitial({*t, "[initial]"}, scene.basis);
+            // Before reading them, so a field key in a non-MHD scene is named for that.
             for (std::string_view key : kInitialFieldKeys)
                 if (!scene.simulation.mhd && t->contains(key))
                     fail(std::string("[initial].") + std::string(key),
                          "only used with [simulation] mhd = true", t->get(key));
+            scene.initial = readInitial({*t, "[initial]"}, scene.basis);
         }
         forEachEntry(root, "source", [&](const toml::table& t, int index) {
             scene.sources.push_back(readSource(t, index));
@@ -899,11 +912,36 @@ private:
                 initial.vortices = readVortices(s);
                 break;
         }
+        readMagnetic(s, initial);
+        return initial;
+    }
+
+    /// The magnetic field keys of `[initial]` (MHD scenes; the caller checks that).
+    void readMagnetic(const Section& s, InitialSpec& initial) const {
+        const Choices<InitialMagnetic> choices(kInitialMagnetics);
+        initial.magnetic = readChoice(s, "magnetic", initial.magnetic, choices);
+        const auto own = magneticKeys(initial.magnetic);
+        for (std::string_view key : kInitialFieldKeys) {
+            if (key == "magnetic" || contains(own, key) || !s.table.contains(key)) continue;
+            fail(s, key,
+                 "not used with magnetic = \"" + std::string(keywordOf(choices, initial.magnetic)) +
+                     "\" (it takes " + joinWords(own, "and") + ")",
+                 s.table.get(key));
+        }
+        if (initial.magnetic == InitialMagnetic::Uniform) {
+            initial.magneticDirection = requireVector(s, "magnetic_direction");
+            const Vec3& d = initial.magneticDirection;
+            if (!(d[0] * d[0] + d[1] * d[1] + d[2] * d[2] > 0.0))
+                fail(s, "magnetic_direction", "must be a non-zero vector", s.table.get("magnetic_direction"));
+            initial.magneticStrength =
+                readNumber(s, "magnetic_strength", initial.magneticStrength, Sign::NonNegative);
+            initial.magneticWallLayer = readNumber(s, "magnetic_wall_layer", 0.0, Sign::Positive);
+            return;
+        }
         initial.magneticEnergy =
             readNumber(s, "magnetic_energy", initial.magneticEnergy, Sign::NonNegative);
         if (auto seed = integer(s, "magnetic_seed", 0, std::numeric_limits<std::int64_t>::max()))
             initial.magneticSeed = static_cast<std::uint64_t>(*seed);
-        return initial;
     }
 
     /// `band = [first, last]`: 1-based, inclusive, inside the basis.

@@ -98,6 +98,8 @@ struct SimulationSpec {
 };
 
 enum class InitialVelocity { Zero, Random, Modes, Vortices };
+/// The initial magnetic field of an MHD scene: random modal amplitudes, or a uniform field.
+enum class InitialMagnetic { Random, Uniform };
 
 /// One `[[initial.vortex]]`: a Gaussian-cored point vortex in 2D, a vortex ring in 3D.
 struct VortexSpec {
@@ -121,9 +123,18 @@ struct InitialSpec {
     std::vector<std::pair<int, double>> amplitudes;
     /// vortices: summed, then projected on the basis.
     std::vector<VortexSpec> vortices;
-    /// MHD only: the initial magnetic field, random over all modes with this energy ½|F|².
+    /// MHD only: the initial magnetic field F in the velocity basis.
+    InitialMagnetic magnetic = InitialMagnetic::Random;
+    /// random: over all modes with this energy ½|F|², drawn with this seed.
     double magneticEnergy = 0.0;
     std::uint64_t magneticSeed = 2;
+    /// uniform: |F| = magneticStrength along magneticDirection (not normalized by the loader,
+    /// non-zero) away from the wall (precompute/initial/UniformField.h).
+    Vec3 magneticDirection{1.0, 0.0, 0.0};
+    double magneticStrength = 1.0;
+    /// uniform: the width of the layer along the wall the field turns in; 0: one wavelength of
+    /// the basis's highest mode (uniformFieldLayer).
+    double magneticWallLayer = 0.0;
 };
 
 /// A smoke/heat emitter (`[[source]]`).

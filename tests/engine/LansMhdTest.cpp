@@ -1,15 +1,19 @@
 /// @file LansMhdTest.cpp
 /// LANS-α and MHD (seed §6.3.5): analytic Jacobians, and the invariants the midpoint rule must
-/// keep to solver tolerance — ½Σ(1 + α²κ²)v², and ½(|v|² + |F|²) with Σ v_i F_i.
+/// keep to solver tolerance — ½Σ(1 + α²κ²)v², and ½(|v|² + |F|²) with Σ v_i F_i, in the modal
+/// system alone and in the CPU reference simulation of a whole MHD scene.
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <iostream>
+#include <memory>
 #include <vector>
 
 #include <Eigen/Core>
 
+#include "engine/dynamics/CachedCoefficients.h"
 #include "engine/dynamics/DenseCoefficients.h"
 #include "engine/dynamics/Diagnostics.h"
 #include "engine/dynamics/FluidSystem.h"
@@ -18,7 +22,11 @@
 #include "precompute/scene/SceneLoader.h"
 #include "engine/dynamics/PackedLayout.h"
 #include "engine/dynamics/SparseCoefficients.h"
+#include "engine/field/VelocityReconstruction.h"
 #include "engine/format/Error.h"
+#include "engine/simulation/ReferenceSimulation.h"
+#include "precompute/Precompute.h"
+#include "precompute/geometry/FluidMask.h"
 #include "tests/engine/RandomCoefficients.h"
 
 namespace modeflow {
@@ -202,6 +210,82 @@ TEST(Mhd, BadInputThrows) {
     EXPECT_THROW(MhdSystem(c, {Eigen::VectorXd::Ones(5), 0.0, -1.0}), Error);
     EXPECT_THROW(MhdSystem(c, {Eigen::VectorXd(), 0.0, 1.0}), Error);
     EXPECT_THROW(crossHelicity(Eigen::VectorXd::Ones(5), Eigen::VectorXd::Ones(4)), Error);
+}
+
+/// A unit disk at 24² with 12 modes and a smoke source, for the MHD runs of the reference
+/// simulation (the chain `modeflow run --device cpu` runs).
+struct MhdDisk {
+    SceneSpec scene;
+    BasisCache cache;
+    std::unique_ptr<StructuralCoefficients> coefficients;
+    std::vector<std::uint8_t> mask;
+    MhdDisk() {
+        scene.name = "mhd";
+        scene.grid.resolution = {24, 24, 1};
+        scene.grid.boundsMin = {-1.1, -1.1, 0.0};
+        scene.grid.boundsMax = {1.1, 1.1, 0.0};
+        ShapeSpec disk;
+        disk.radius = 1.0;
+        scene.domain = {disk};
+        scene.basis.velocityModes = {{1, 12}};
+        scene.basis.scalarModes = 0;
+        scene.simulation.mhd = true;
+        scene.output.stepsPerFrame = 20;
+        SourceSpec source;
+        source.shape.radius = 0.3;
+        scene.sources = {source};
+        Progress quiet = Progress::silent();
+        cache = computeBasis(scene, quiet);
+        coefficients = coefficientsFromCache(cache);
+        mask = fluidMask(scene, cache, 1);
+    }
+};
+
+const MhdDisk& mhdDisk() {
+    static const MhdDisk disk;
+    return disk;
+}
+
+TEST(MhdSimulation, ReferenceRunKeepsEnergyAndCrossHelicity) {
+    const MhdDisk& disk = mhdDisk();
+    const int n = disk.coefficients->size();
+    const SimulationSettings settings =
+        SimulationSettings::fromScene(disk.scene, disk.cache, Runtime::CpuReference);
+    ASSERT_TRUE(settings.mhd);
+    ReferenceSimulation simulation(disk.cache, *disk.coefficients, settings, disk.mask);
+    const Eigen::VectorXd v = randomVector(n, 601), f = 0.7 * randomVector(n, 602);
+    simulation.setVelocity(v);
+    simulation.setMagneticField(f);
+    const double e0 = 0.5 * (v.squaredNorm() + f.squaredNorm()), h0 = crossHelicity(v, f);
+    for (int frame = 0; frame < 10; ++frame) simulation.advanceFrame();  // 200 midpoint steps
+    const Eigen::VectorXd v1 = simulation.velocity(), f1 = simulation.magneticField();
+    const double e1 = 0.5 * (v1.squaredNorm() + f1.squaredNorm()), h1 = crossHelicity(v1, f1);
+    std::cout << "MHD reference run, 200 midpoint steps: energy drift " << e1 / e0 - 1.0
+              << ", cross helicity drift " << (h1 - h0) / std::abs(h0) << "\n";
+    EXPECT_LE(std::abs(e1 / e0 - 1.0), 1e-6);
+    EXPECT_LE(std::abs(h1 - h0), 1e-6 * std::abs(h0));
+    // The field moved with the flow and exchanged energy with it.
+    EXPECT_GT((f1 - f).norm(), 0.1 * f.norm());
+    EXPECT_GT(std::abs(f1.squaredNorm() - f.squaredNorm()), 1e-3 * f.squaredNorm());
+    EXPECT_EQ(simulation.faceMagneticField(), reconstructFaceField(disk.cache, f1));
+    EXPECT_EQ(simulation.faceVelocity(), reconstructFaceField(disk.cache, v1));
+}
+
+TEST(MhdSimulation, TheDeviceAndPlainFluidRunsRefuseAField) {
+    const MhdDisk& disk = mhdDisk();
+    try {
+        SimulationSettings::fromScene(disk.scene, disk.cache);
+        ADD_FAILURE() << "the device runtime accepted an MHD scene";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("[simulation].mhd"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("--device cpu"), std::string::npos) << e.what();
+    }
+    SimulationSettings fluid = SimulationSettings::fromScene(disk.scene, disk.cache, Runtime::CpuReference);
+    fluid.mhd = false;
+    ReferenceSimulation simulation(disk.cache, *disk.coefficients, fluid, disk.mask);
+    EXPECT_EQ(simulation.magneticField().size(), 0);
+    EXPECT_TRUE(simulation.faceMagneticField().empty());
+    EXPECT_THROW(simulation.setMagneticField(Eigen::VectorXd::Zero(12)), Error);
 }
 
 }  // namespace

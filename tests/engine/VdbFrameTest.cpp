@@ -2,7 +2,8 @@
 /// VDB frames (engine/output/VdbFrame): a 2D and a 3D frame on non-cubic cells at smoke scale 2
 /// round-trip through the file (grid names, classes and types, voxel centres at the smoke cell
 /// centres, values exact in float32 and within half precision, inactive below the threshold and
-/// outside the fluid mask, vel equal to the MAC sample, metadata), and the write is atomic: a
+/// outside the fluid mask, vel equal to the MAC sample, metadata; an MHD frame's magnetic grid
+/// sampled like vel), and the write is atomic: a
 /// missing or read-only folder, a directory in the way and a full disk each throw an Error naming
 /// the file and leave neither the frame nor a temporary file behind.
 
@@ -222,6 +223,47 @@ TEST_F(VdbFrameTest, FramesRoundTripOnNonCubicCellsInFloatAndHalf) {
     EXPECT_EQ(entries(mDir).size(), 4u);
 }
 
+TEST_F(VdbFrameTest, MhdFramesCarryTheMagneticFieldLikeTheVelocity) {
+    for (const int dim : {2, 3}) {
+        SCOPED_TRACE(std::to_string(dim) + "D");
+        const FrameData d = makeFrame(dim);
+        // Another face field than the velocity, so a mix-up of the two shows.
+        std::vector<double> magnetic(d.faces.size());
+        for (std::size_t f = 0; f < magnetic.size(); ++f) magnetic[f] = 0.5 - 0.9 * d.faces[magnetic.size() - 1 - f];
+        VdbFrame frame = d.frame();
+        frame.faceMagnetic = magnetic;
+        const fs::path file = mDir / frameFileName("mhd", dim);
+        writeVdbFrame(file, frame);
+
+        const VdbFrameInfo info = readVdbFrameInfo(file);
+        ASSERT_EQ(info.grids.size(), dim == 3 ? 4u : 3u);
+        const VdbGridInfo* grid = info.grid("magnetic");
+        ASSERT_NE(grid, nullptr);
+        EXPECT_EQ(grid->valueType, "vec3s");
+        EXPECT_EQ(grid->vectorType, info.grid("vel")->vectorType);
+        EXPECT_TRUE(grid->valuesInWorldSpace);
+        EXPECT_EQ(grid->indexToWorldMatrix, info.grid("vel")->indexToWorldMatrix);
+
+        std::vector<Vec3> centres;
+        for (int k = 0; k < d.smoke.cells[2]; ++k)
+            for (int j = 0; j < d.smoke.cells[1]; ++j)
+                for (int i = 0; i < d.smoke.cells[0]; ++i) centres.push_back(d.centre(i, j, k));
+        const std::vector<VdbSample> stored = sampleVdbGrid(file, "magnetic", centres);
+        std::int64_t active = 0;
+        for (std::size_t c = 0; c < centres.size(); ++c) {
+            const Vec3 want = sampleVelocity(d.basis, std::span<const double>(magnetic), centres[c]);
+            const double size = std::sqrt(want[0] * want[0] + want[1] * want[1] + want[2] * want[2]);
+            const bool wantActive = d.mask[c] && size >= d.threshold;
+            EXPECT_EQ(stored[c].active, wantActive) << "cell " << c;
+            for (int a = 0; a < 3; ++a)
+                EXPECT_EQ(stored[c].value[a], wantActive ? double(float(want[a])) : 0.0) << "cell " << c;
+            active += wantActive;
+        }
+        EXPECT_EQ(grid->activeVoxels, active);
+        EXPECT_GT(active, 0);
+    }
+}
+
 TEST_F(VdbFrameTest, DoubleDensityAndEmptyMaskWork) {
     FrameData d = makeFrame(3);
     const std::vector<double> density(d.density.begin(), d.density.end());
@@ -320,6 +362,12 @@ TEST_F(VdbFrameTest, NonFiniteValuesAreRefused) {
     d = makeFrame(3);
     d.faces[3] = INFINITY;
     expectWriteError([&] { writeVdbFrame(mDir / "b.vdb", d.frame()); }, mDir / "b.vdb", "face velocity is not finite");
+    d = makeFrame(2);
+    std::vector<double> magnetic(d.faces.size(), 0.0);
+    magnetic[1] = std::nan("");
+    VdbFrame frame = d.frame();
+    frame.faceMagnetic = magnetic;
+    expectWriteError([&] { writeVdbFrame(mDir / "c.vdb", frame); }, mDir / "c.vdb", "magnetic field is not finite");
     EXPECT_TRUE(entries(mDir).empty());
 }
 

@@ -594,6 +594,45 @@ TEST_F(SceneLoaderTest, RandomInitialVelocityTakesEnergySeedAndBand) {
                     "seed and band)");
 }
 
+TEST_F(SceneLoaderTest, MagneticFieldIsRandomOrUniformAndChecked) {
+    const std::string base = std::string(kGrid2d) + kBasis + "[simulation]\nmhd = true\n[initial]\n";
+    const SceneSpec random = parseScene(base + "magnetic_energy = 0.5\nmagnetic_seed = 7\n", "s.toml");
+    EXPECT_EQ(random.initial.magnetic, InitialMagnetic::Random);
+    EXPECT_EQ(random.initial.magneticEnergy, 0.5);
+    EXPECT_EQ(random.initial.magneticSeed, 7u);
+    const std::string uniform = base + "magnetic = \"uniform\"\n";
+    const SceneSpec scene =
+        parseScene(uniform + "magnetic_direction = [1, 0.5]\nmagnetic_strength = 2.5\n", "s.toml");
+    EXPECT_EQ(scene.initial.magnetic, InitialMagnetic::Uniform);
+    EXPECT_EQ(scene.initial.magneticDirection, (Vec3{1.0, 0.5, 0.0}));
+    EXPECT_EQ(scene.initial.magneticStrength, 2.5);
+    EXPECT_EQ(scene.initial.magneticWallLayer, 0.0) << "0: the basis's own wavelength";
+    const SceneSpec defaults = parseScene(uniform + "magnetic_direction = [0, 1]\nmagnetic_wall_layer = 0.4\n", "s.toml");
+    EXPECT_EQ(defaults.initial.magneticStrength, 1.0);
+    EXPECT_EQ(defaults.initial.magneticWallLayer, 0.4);
+
+    EXPECT_CONTAINS(errorOf(base + "magnetic = \"uniforn\"\n"),
+                    "[initial].magnetic: unknown value \"uniforn\" (did you mean uniform?)");
+    EXPECT_CONTAINS(errorOf(uniform), "[initial].magnetic_direction: missing required key");
+    EXPECT_CONTAINS(errorOf(uniform + "magnetic_direction = [1, 0, 0]\n"),
+                    "[initial].magnetic_direction: expected 2 numbers (the scene is 2D)");
+    EXPECT_CONTAINS(errorOf(uniform + "magnetic_direction = [0, 0]\n"),
+                    "[initial].magnetic_direction: must be a non-zero vector");
+    EXPECT_CONTAINS(errorOf(uniform + "magnetic_direction = [1, 0]\nmagnetic_strength = -1\n"),
+                    "[initial].magnetic_strength: must be >= 0");
+    EXPECT_CONTAINS(errorOf(uniform + "magnetic_direction = [1, 0]\nmagnetic_energy = 1\n"),
+                    "[initial].magnetic_energy: not used with magnetic = \"uniform\" (it takes "
+                    "magnetic_direction, magnetic_strength and magnetic_wall_layer)");
+    EXPECT_CONTAINS(errorOf(uniform + "magnetic_direction = [1, 0]\nmagnetic_wall_layer = 0\n"),
+                    "[initial].magnetic_wall_layer: must be > 0");
+    EXPECT_CONTAINS(errorOf(base + "magnetic_strength = 1\n"),
+                    "[initial].magnetic_strength: not used with magnetic = \"random\"");
+    EXPECT_CONTAINS(errorOf(base + "magnetic_directoin = [1, 0]\n"),
+                    "[initial].magnetic_directoin: unknown key (did you mean magnetic_direction?)");
+    EXPECT_CONTAINS(errorOf(std::string(kGrid2d) + kBasis + "[initial]\nmagnetic = \"uniform\"\n"),
+                    "[initial].magnetic: only used with [simulation] mhd = true");
+}
+
 TEST_F(SceneLoaderTest, ModalAmplitudesAreRequiredAndChecked) {
     const std::string base = std::string(kGrid2d) + kBasis + "[initial]\nvelocity = \"modes\"\n";
     const SceneSpec scene = parseScene(base + "amplitudes = [[1, 0.5], [3, -0.2], [10, 2]]\n", "s.toml");

@@ -2,18 +2,24 @@
 /// Analytic vortices → modal states: the projection is the ⋆-inner product with each mode (a round
 /// trip for fields in the basis), a centred Lamb–Oseen vortex in a disk lands on the axisymmetric
 /// modes with the right sense of rotation, and a 3D ring projects linearly in its circulation.
+/// The MHD rotor's uniform magnetic field (UniformField.h) is uniform inside, tangent at the wall,
+/// projected as the least-squares fit, and the wall layer is what makes it representable.
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <iostream>
 #include <map>
 #include <numbers>
 #include <tuple>
+
+#include <Eigen/QR>
 
 #include "engine/format/Error.h"
 #include "precompute/Precompute.h"
 #include "precompute/dec/CubicalComplex.h"
 #include "precompute/dec/CutCellDec.h"
+#include "precompute/initial/UniformField.h"
 #include "precompute/initial/VortexProjection.h"
 #include "tests/precompute/TestScenes.h"
 
@@ -181,6 +187,104 @@ TEST(VortexProjection, RingProjectsWithEnergyQuadraticInCirculation) {
     // (the first 8 are orthogonal to it).
     EXPECT_GT(e1, 1e-2);
     EXPECT_NEAR(e2 / e1, 2.5 * 2.5, 1e-10);
+}
+
+/// A unit disk at 48² with 40 modes: enough for the interior of a uniform field to be resolved.
+const BasisCache& disk40() {
+    static const BasisCache cache = [] {
+        SceneSpec scene = test::gridScene({48, 48, 1}, {-1.1, -1.1, 0.0}, {1.1, 1.1, 0.0}, 2);
+        scene.domain = {test::ball({0.0, 0.0, 0.0}, 1.0)};
+        scene.basis.velocityModes = {{1, 40}};
+        scene.basis.scalarModes = 0;
+        Progress quiet = Progress::silent();
+        return computeBasis(scene, quiet);
+    }();
+    return cache;
+}
+
+const std::vector<ShapeSpec> kUnitDisk{test::ball({0.0, 0.0, 0.0}, 1.0)};
+
+TEST(UniformField, IsUniformInsideDivergenceFreeAndTangentAtTheWall) {
+    const UniformField field(disk(), kUnitDisk, {2.0, 1.0, 0.0}, 1.5, 0.3);
+    const double bx = 1.5 * 2.0 / std::sqrt(5.0), by = 1.5 / std::sqrt(5.0);
+    for (const Vec3& x : {Vec3{0.0, 0.0, 0.0}, Vec3{0.45, -0.5, 0.0}, Vec3{-0.69, 0.0, 0.0}}) {
+        const Vec3 b = field(x);
+        EXPECT_NEAR(b[0], bx, 1e-12);
+        EXPECT_NEAR(b[1], by, 1e-12);
+    }
+    const double h = 1e-5;
+    for (double angle = 0.1; angle < 6.28; angle += 0.37) {
+        const Vec3 n{std::cos(angle), std::sin(angle), 0.0};
+        // In the layer: divergence-free (central differences, to their truncation error).
+        const double r = 0.85;
+        const auto at = [&](double dx, double dy) { return field({r * n[0] + dx, r * n[1] + dy, 0.0}); };
+        const double divergence = (at(h, 0)[0] - at(-h, 0)[0] + at(0, h)[1] - at(0, -h)[1]) / (2 * h);
+        EXPECT_NEAR(divergence, 0.0, 1e-4) << angle;
+        // At the wall: no normal component; outside: no field.
+        const Vec3 wall = field({0.999 * n[0], 0.999 * n[1], 0.0});
+        EXPECT_NEAR(wall[0] * n[0] + wall[1] * n[1], 0.0, 1e-3) << angle;
+        const Vec3 outside = field({1.05 * n[0], 1.05 * n[1], 0.0});
+        EXPECT_EQ(outside[0], 0.0);
+        EXPECT_EQ(outside[1], 0.0);
+    }
+    EXPECT_THROW(UniformField(disk(), kUnitDisk, {0.0, 0.0, 0.0}, 1.0, 0.3), Error);
+    EXPECT_THROW(UniformField(disk(), kUnitDisk, {1.0, 0.0, 0.0}, 1.0, 0.0), Error);
+}
+
+TEST(UniformField, ProjectionIsTheLeastSquaresFitAndDivergenceFree) {
+    const BasisCache& cache = disk();
+    const UniformField field(cache, kUnitDisk, {1.0, 0.0, 0.0}, 1.0, uniformFieldLayer(cache));
+    const Eigen::VectorXd f = projectUniformField(cache, field);
+    ASSERT_GT(f.norm(), 0.0);
+    // The ⋆-weighted least-squares fit of the face fluxes by the modes, solved directly.
+    const Eigen::VectorXd flux = faceFluxes(cache, [&](const Vec3& x) { return field(x); });
+    const Eigen::VectorXd root = cache.faceStar.cwiseSqrt();
+    const Eigen::MatrixXd a = root.asDiagonal() * cache.velocity.modes;
+    const Eigen::VectorXd fit = a.colPivHouseholderQr().solve(root.cwiseProduct(flux));
+    EXPECT_LE((f - fit).norm(), 1e-10 * f.norm());
+    // Σ F_i Ψ_i is divergence-free on the full grid (no flux leaks through a non-DOF face).
+    const CubicalComplex complex(cache.grid);
+    Eigen::VectorXd full = Eigen::VectorXd::Zero(complex.count(1));
+    const Eigen::VectorXd faces = cache.velocity.modes * f;
+    for (std::size_t i = 0; i < cache.faces.size(); ++i) full[cache.faces[i]] = faces[Eigen::Index(i)];
+    const Eigen::VectorXd divergence = complex.incidence(1) * full;
+    EXPECT_LE(divergence.cwiseAbs().maxCoeff(), 1e-12 * full.cwiseAbs().maxCoeff());
+}
+
+TEST(UniformField, OnlyTheWallLayerMakesAUniformFieldRepresentable) {
+    const BasisCache& cache = disk40();
+    // A plain uniform field is a gradient: ⋆-orthogonal to every tangential div-free mode.
+    const Eigen::VectorXd plain =
+        projectFluxes(cache, faceFluxes(cache, [](const Vec3&) { return Vec3{1.0, 0.0, 0.0}; }));
+    const UniformField field(cache, kUnitDisk, {1.0, 0.0, 0.0}, 1.0, uniformFieldLayer(cache));
+    const Eigen::VectorXd f = projectUniformField(cache, field);
+    // Reconstructed, it points left to right inside, at about the given strength.
+    const auto u = faceVelocities(cache, cache.velocity.modes * f);
+    const double h = 2.2 / 48;
+    double sum = 0.0, sumSquares = 0.0, cross = 0.0;
+    int count = 0;
+    for (const auto& [key, value] : u) {
+        const auto [normal, i, j] = key;
+        const double x = -1.1 + (i + (normal == 0 ? 0.0 : 0.5)) * h, y = -1.1 + (j + (normal == 1 ? 0.0 : 0.5)) * h;
+        if (x * x + y * y > 0.4 * 0.4) continue;
+        if (normal == 0) {
+            sum += value;
+            sumSquares += value * value;
+            ++count;
+        } else {
+            cross = std::max(cross, std::abs(value));
+        }
+    }
+    const double mean = sum / count, spread = std::sqrt(sumSquares / count - mean * mean);
+    std::cout << "uniform field, 40 modes, layer " << uniformFieldLayer(cache) << ": |plain projection| "
+              << plain.norm() << ", |F| " << f.norm() << ", interior Bx " << mean << " ± " << spread
+              << ", max |By| " << cross << "\n";
+    // Measured: 1.7e-14 against 1.87; interior Bx 0.97 ± 0.15, |By| ≤ 0.19 (40 modes resolve
+    // the turn at the wall only roughly; 100 do better).
+    EXPECT_LE(plain.norm(), 1e-10 * f.norm());
+    EXPECT_NEAR(mean, 1.0, 0.05);
+    EXPECT_LE(spread, 0.2);
+    EXPECT_LE(cross, 0.25);
 }
 
 }  // namespace

@@ -40,6 +40,34 @@ frames = 4
 steps_per_frame = 2
 )";
 
+/// A rotor in a uniform magnetic field (seed Fig. 6.18) on the small disk, CPU reference only.
+const std::string kMhdRotor = std::string(testing::kSmallDisk) + R"(
+[simulation]
+dt = 0.02
+mhd = true
+magnetic_diffusivity = 0.01
+[initial]
+velocity = "vortices"
+magnetic = "uniform"
+magnetic_direction = [1, 0]
+magnetic_strength = 0.5
+[[initial.vortex]]
+center = [0.0, 0.0]
+strength = 2.0
+radius = 0.3
+[[source]]
+shape = "box"
+min = [-0.4, -0.1]
+max = [0.4, 0.1]
+density = 20.0
+end = 0.05
+[smoke]
+resolution_scale = 2
+[output]
+frames = 4
+steps_per_frame = 2
+)";
+
 /// Every smoke cell centre of the scene's 48² smoke grid, z = 0.
 std::vector<Vec3> smokeCentres() {
     GridSpec spec;
@@ -127,6 +155,41 @@ TEST_F(RunCommand, CpuReferenceRunGivesTheSameSmoke) {
     const auto a = sampleVdbGrid(mDir / "gpu" / "hot_0002.vdb", "density", centres);
     const auto b = sampleVdbGrid(mDir / "cpu" / "hot_0002.vdb", "density", centres);
     for (std::size_t c = 0; c < centres.size(); ++c) EXPECT_NEAR(a[c].value[0], b[c].value[0], 1e-5) << c;
+}
+
+TEST_F(RunCommand, MhdRunsOnTheCpuReferenceWithAMagneticGridAndResumes) {
+    const fs::path s = scene("rotor.toml", kMhdRotor);
+    const RunResult whole = simulate(s, mDir / "whole", "--device cpu");
+    ASSERT_EQ(whole.status, 0) << whole.err;
+    ASSERT_EQ(simulate(s, mDir / "parts", "--device cpu --frames 2").status, 0);
+    const RunResult resumed = simulate(s, mDir / "parts", "--device cpu --resume");
+    ASSERT_EQ(resumed.status, 0) << resumed.err;
+    EXPECT_NE(resumed.err.find("resuming after frame 2"), std::string::npos) << resumed.err;
+
+    const VdbFrameInfo info = readVdbFrameInfo(mDir / "whole" / "rotor_0004.vdb");
+    ASSERT_NE(info.grid("magnetic"), nullptr);
+    EXPECT_EQ(info.grid("magnetic")->valueType, "vec3s");
+    EXPECT_GT(info.grid("magnetic")->activeVoxels, 100);
+    const std::vector<Vec3> centres = smokeCentres();
+    // The field points left to right at the centre of the disk.
+    const Vec3 centre[] = {{0.0, 0.0, 0.0}};
+    const Vec3 b = sampleVdbGrid(mDir / "whole" / "rotor_0001.vdb", "magnetic", centre)[0].value;
+    EXPECT_GT(b[0], 10.0 * std::abs(b[1])) << b[0] << ", " << b[1];
+    // The resumed run continues from the saved v and F: the same values, not close ones.
+    for (const char* name : {"rotor_0003.vdb", "rotor_0004.vdb"})
+        for (const char* grid : {"density", "vel", "magnetic"}) {
+            const auto a = sampleVdbGrid(mDir / "whole" / name, grid, centres);
+            const auto c = sampleVdbGrid(mDir / "parts" / name, grid, centres);
+            for (std::size_t i = 0; i < centres.size(); ++i)
+                ASSERT_EQ(a[i].value, c[i].value) << name << " " << grid << " cell " << i;
+        }
+}
+
+TEST_F(RunCommand, MhdOnAVulkanDeviceIsRefusedBeforeAnyWork) {
+    const fs::path s = scene("rotor.toml", kMhdRotor);
+    expectRejected("run " + s.string() + " --out " + (mDir / "f").string() + " --cache-dir " + mCache.string(),
+                   "[simulation].mhd runs on the CPU reference only; use --device cpu");
+    EXPECT_FALSE(fs::exists(mDir / "f")) << "the output folder was made before the refusal";
 }
 
 TEST_F(RunCommand, BadInputIsRefusedBeforeAnyWork) {

@@ -6,6 +6,7 @@
 
 #include "engine/dynamics/InitialConditions.h"
 #include "engine/format/Error.h"
+#include "precompute/initial/UniformField.h"
 #include "precompute/initial/VortexProjection.h"
 
 namespace modeflow::cli {
@@ -52,5 +53,21 @@ Eigen::VectorXd initialVelocity(const SceneSpec& scene, const BasisCache& cache,
     throw Error(where + "velocity: unknown choice");
 }
 
+Eigen::VectorXd initialMagneticField(const SceneSpec& scene, const BasisCache& cache, int modes) {
+    const InitialSpec& init = scene.initial;
+    if (init.magnetic == InitialMagnetic::Random) {
+        RandomVelocitySpec field;
+        field.energy = init.magneticEnergy;
+        field.seed = init.magneticSeed;
+        return randomVelocity(modes, field);
+    }
+    try {
+        const double layer = init.magneticWallLayer > 0.0 ? init.magneticWallLayer : uniformFieldLayer(cache);
+        const UniformField field(cache, scene.domain, init.magneticDirection, init.magneticStrength, layer);
+        return projectUniformField(cache, field);
+    } catch (const Error& e) {
+        throw Error(scene.sourceFile.string() + ": [initial].magnetic: " + e.what());
+    }
+}
 
 }  // namespace modeflow::cli

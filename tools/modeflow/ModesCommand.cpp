@@ -10,12 +10,12 @@
 #include "engine/dynamics/CachedCoefficients.h"
 #include "engine/dynamics/Diagnostics.h"
 #include "engine/dynamics/FluidSystem.h"
-#include "engine/dynamics/InitialConditions.h"
 #include "engine/dynamics/MhdSystem.h"
 #include "engine/dynamics/ModalIntegrator.h"
 #include "engine/format/CacheFile.h"
 #include "engine/format/Error.h"
 #include "engine/kernels/ModalStepper.h"
+#include "engine/simulation/SimulationSettings.h"
 #include "engine/vulkan/CommandSequence.h"
 #include "precompute/Precompute.h"
 #include "precompute/scene/SceneLoader.h"
@@ -57,9 +57,7 @@ Command addModes(CLI::App& app) {
         settings.scheme = opts->integrator ? parseIntegrator(*opts->integrator, "--integrator")
                                            : scene.simulation.integrator;
         Progress progress = Progress::toStderr();
-        if (deviceOptions && scene.simulation.mhd)
-            throw Error(scene.sourceFile.string() +
-                        ": [simulation].mhd runs on the CPU reference only; use --device cpu");
+        requireRuntimeSupport(scene, deviceOptions ? Runtime::Device : Runtime::CpuReference);
         if (deviceOptions && settings.scheme == Integrator::Trapezoidal)
             throw Error("--integrator trapezoidal runs on the CPU reference only; on a Vulkan device use explicit, "
                         "rk4 or midpoint");
@@ -75,10 +73,7 @@ Command addModes(CLI::App& app) {
         if (sim.mhd) {
             MhdParameters parameters{k2, sim.viscosity, sim.magneticDiffusivity};
             auto mhd = std::make_unique<MhdSystem>(*coefficients, parameters);
-            RandomVelocitySpec field;
-            field.energy = scene.initial.magneticEnergy;
-            field.seed = scene.initial.magneticSeed;
-            x = mhd->state(x, randomVelocity(n, field));
+            x = mhd->state(x, initialMagneticField(scene, cache, n));
             system = std::move(mhd);
         } else {
             system = std::make_unique<FluidSystem>(

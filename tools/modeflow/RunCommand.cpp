@@ -79,6 +79,8 @@ Command addRun(CLI::App& app) {
         // Everything that can be refused is checked before any precompute or simulation work.
         const auto deviceOptions = parseDevice(opts->device);
         const SceneSpec scene = loadScene(opts->scene);
+        const Runtime runtime = deviceOptions ? Runtime::Device : Runtime::CpuReference;
+        requireRuntimeSupport(scene, runtime);
         const int frames = opts->frames.value_or(scene.output.frames);
         const std::filesystem::path out = opts->out.value_or(scene.name + "_frames");
         ensureWritableDirectory(out, "output folder", "; choose another with --out");
@@ -91,7 +93,7 @@ Command addRun(CLI::App& app) {
         const auto cachePath = ensureCache(scene, resolveCacheDir(opts->cacheDir), false, progress).path;
         const BasisCache cache = readCache(cachePath);
         const auto coefficients = coefficientsFromCache(cache);
-        const SimulationSettings settings = SimulationSettings::fromScene(scene, cache);
+        const SimulationSettings settings = SimulationSettings::fromScene(scene, cache, runtime);
         const std::vector<std::uint8_t> mask = fluidMask(scene, cache, settings.smokeScale);
 
         std::unique_ptr<vulkan::VulkanContext> context;
@@ -111,10 +113,12 @@ Command addRun(CLI::App& app) {
                 throw Error("checkpoint " + checkpointPath.string() +
                             " was written for another scene text or device; run without --resume to start afresh");
             simulator->restore(checkpoint.time, checkpoint.velocity, checkpoint.smoke);
+            if (settings.mhd) simulator->setMagneticField(checkpoint.magnetic);
             first = checkpoint.frame;
             std::cerr << "resuming after frame " << first << " (t = " << checkpoint.time << ")\n";
         } else {
             simulator->setVelocity(initialVelocity(scene, cache, coefficients->size()));
+            if (settings.mhd) simulator->setMagneticField(initialMagneticField(scene, cache, coefficients->size()));
         }
 
         const MacGrid basisGrid = MacGrid::fromSpec(cache.grid);
@@ -128,12 +132,14 @@ Command addRun(CLI::App& app) {
             const FrameStats stats = simulator->advanceFrame();
             const SmokeFields smoke = simulator->smoke();
             const std::vector<double> faceVelocity = simulator->faceVelocity();
+            const std::vector<double> faceMagnetic = simulator->faceMagneticField();
             VdbFrame vdb;
             vdb.smokeGrid = simulator->smokeGrid();
             vdb.basisGrid = basisGrid;
             vdb.density = std::span<const double>(smoke.density);
             if (temperature) vdb.temperature = std::span<const double>(smoke.temperature);
             vdb.faceVelocity = faceVelocity;
+            vdb.faceMagnetic = faceMagnetic;
             vdb.fluidMask = mask;
             vdb.frame = frame;
             vdb.time = simulator->time();
@@ -145,7 +151,8 @@ Command addRun(CLI::App& app) {
                 std::filesystem::path png = out / frameFileName(scene.name, frame);
                 preview->write(png.replace_extension(".png"), frame, smoke, temperature);
             }
-            writeCheckpoint(checkpointPath, {frame, simulator->time(), runHash, simulator->velocity(), smoke});
+            writeCheckpoint(checkpointPath, {frame, simulator->time(), runHash, simulator->velocity(),
+                                             simulator->magneticField(), smoke});
             std::string detail;
             if (stats.unconvergedSteps) detail += std::to_string(stats.unconvergedSteps) + " unconverged steps ";
             if (stats.substeps > 1) detail += std::to_string(stats.substeps) + " modal substeps";
