@@ -1,9 +1,10 @@
 #version 450
 // display_picture.comp: the stir window's picture of a 3D scene: the ray-marched picture
 // (render_volume.comp, packed RGBA8 with red in the low byte) scaled bilinearly into the
-// viewport, one invocation per window pixel, with the text overlay on top.
+// viewport, with the text overlay on top.
 // Wrapper: engine/display/DisplayKernels.cpp.
 #extension GL_GOOGLE_include_directive : require
+#extension GL_EXT_control_flow_attributes : require
 #include "DisplayParams.h"
 
 layout(local_size_x = 64, local_size_x_id = 0) in;
@@ -13,14 +14,11 @@ layout(std430, set = 0, binding = 1) readonly buffer Overlay { uint overlayWords
 layout(std430, set = 0, binding = 2) writeonly buffer Pixels { uint pixels[]; };
 layout(push_constant) uniform Push { DisplayParams params; };
 
-#include "Display.glsl"
+#include "DisplayView.glsl"
 
 vec3 texel(ivec2 t) { return unpackUnorm4x8(picture[t.y * int(params.sourceWidth) + t.x]).rgb; }
 
-void main() {
-    const uint pixel = gl_GlobalInvocationID.x;
-    if (pixel >= params.width * params.height) return;
-    const uint x = pixel % params.width, y = pixel / params.width;
+vec3 pixelColour(uint x, uint y) {
     vec3 colour = marginColour(x, y);
     vec2 p;
     if (sourcePoint(x, y, p)) {
@@ -34,5 +32,7 @@ void main() {
                      mix(texel(ivec2(lo.x, hi.y)), texel(hi), f.x), f.y);
         colour = withPaddle(colour, p);
     }
-    pixels[pixel] = packColour(withOverlay(colour, pixel));
+    return colour;
 }
+
+#include "Display.glsl"

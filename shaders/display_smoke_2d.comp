@@ -1,6 +1,5 @@
 #version 450
-// display_smoke_2d.comp: the stir window's picture of a 2D scene, one invocation per window
-// pixel: the smoke sampled bilinearly between cell centres (the walls nearest-cell, so the
+// display_smoke_2d.comp: the stir window's picture of a 2D scene, each window pixel: the smoke sampled bilinearly between cell centres (the walls nearest-cell, so the
 // domain's boundary shows as it is discretized), toned like the PNG previews, tinted where hot,
 // with the text overlay on top. Wrapper: engine/display/DisplayKernels.cpp.
 #extension GL_GOOGLE_include_directive : require
@@ -16,7 +15,7 @@ layout(std430, set = 0, binding = 3) writeonly buffer Pixels { uint pixels[]; };
 layout(std430, set = 0, binding = 4) readonly buffer Faces { float faces[]; };  // basis face velocity
 layout(push_constant) uniform Push { DisplayParams params; };
 
-#include "Display.glsl"
+#include "DisplayView.glsl"
 
 #define MAC_DIM 2
 vec2 macFacePair(uint face) { return vec2(faces[face], faces[min(face + 1u, uint(faces.length()) - 1u)]); }
@@ -54,10 +53,7 @@ vec3 withArrow(vec3 colour, uint x, uint y) {
 
 bool isFluid(uint cell) { return ((maskWords[cell >> 2] >> ((cell & 3u) * 8u)) & 0xffu) != 0u; }
 
-void main() {
-    const uint pixel = gl_GlobalInvocationID.x;
-    if (pixel >= params.width * params.height) return;
-    const uint x = pixel % params.width, y = pixel / params.width;
+vec3 pixelColour(uint x, uint y) {
     vec3 colour = marginColour(x, y);
     vec2 p;
     if (sourcePoint(x, y, p)) {
@@ -86,5 +82,7 @@ void main() {
         if (params.arrows != 0u) colour = withArrow(colour, x, y);
         colour = withPaddle(colour, p);
     }
-    pixels[pixel] = packColour(withOverlay(colour, pixel));
+    return colour;
 }
+
+#include "Display.glsl"

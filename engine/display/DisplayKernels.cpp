@@ -42,13 +42,14 @@ shaders::DisplayParams paramsFor(const DisplayTarget& target, int sourceWidth, i
 }
 
 /// Checks the overlay and output sizes of `target` and returns the group count of one
-/// invocation per pixel.
+/// invocation per four pixels (shaders/Display.glsl).
 std::uint32_t pixelGroups(const vulkan::ComputeKernel& kernel, const DisplayTarget& target,
                           const vulkan::DeviceBuffer& overlay, const vulkan::DeviceBuffer& pixels) {
     const VkDeviceSize count = VkDeviceSize(target.width) * VkDeviceSize(target.height);
     requireBytes(overlay, count);
     requireBytes(pixels, count * 4);
-    return std::uint32_t((count + kernel.workgroupSize() - 1) / kernel.workgroupSize());
+    const VkDeviceSize invocations = (count + 3) / 4;
+    return std::uint32_t((invocations + kernel.workgroupSize() - 1) / kernel.workgroupSize());
 }
 
 }  // namespace
