@@ -51,4 +51,21 @@ uint unitBase(uint unit, uint modeCount) {
     return (unit / TILE_LANES) * modeCount * TILE_LANES + unit % TILE_LANES;
 }
 
+/* The units of tiles tileBegin ... tileEnd - 1 that invocation `index` of `count` takes: begin,
+   begin + step, ... below end. With whole batches of TILE_LANES invocations each batch takes a run
+   of consecutive tiles: on lavapipe a batch is the SIMD width, and its loads then advance by a
+   fixed stride the prefetcher follows. Otherwise the invocations stride over the units. */
+void unitRange(uint index, uint count, uint tileBegin, uint tileEnd, out uint begin, out uint step, out uint end) {
+    begin = tileBegin * TILE_LANES + index;
+    step = count;
+    end = tileEnd * TILE_LANES;
+    if (count % TILE_LANES == 0u) {
+        const uint tiles = tileEnd - tileBegin, batches = count / TILE_LANES;
+        const uint perBatch = (tiles + batches - 1u) / batches, first = min((index / TILE_LANES) * perBatch, tiles);
+        begin = (tileBegin + first) * TILE_LANES + index % TILE_LANES;
+        step = TILE_LANES;
+        end = (tileBegin + min(first + perBatch, tiles)) * TILE_LANES;
+    }
+}
+
 #endif

@@ -14,7 +14,8 @@ using uint = std::uint32_t;
 #define MODE_TILE_LANES 8
 #define MODE_TILE_ROWS 2
 
-/* Modes one workgroup of the partial-sum pass handles (a multiple of 4). */
+/* The most modes one workgroup of the partial-sum pass handles (a multiple of 4; the pipeline's
+   count, specialization constant MODES, is at most this). */
 #define PROJECT_FORCE_MODES_PER_GROUP 64
 
 struct ProjectForceParams {
@@ -22,14 +23,14 @@ struct ProjectForceParams {
     uint firstMode;      /* the chunk's first mode: row of the partial sums */
     uint modeCount;      /* modes in the chunk */
     uint tileCount;      /* tiles per mode (ModeAccess.glsl) */
-    uint halfPrecision;  /* 1: float16 pairs, 0: float32 */
-    uint gatherFaces;    /* 1: the input is a whole-grid face field read at the DOF faces */
     uint blockCount;     /* DOF blocks, one partial sum per mode and block */
     uint blockTiles;     /* tiles per block */
+    uint pad0;
+    uint pad1;
 };
 
 struct ProjectForceSumParams {
-    uint modeCount;   /* N: one workgroup per mode */
+    uint modeCount;   /* N: one invocation per mode */
     uint blockCount;  /* partial sums per mode */
     uint pad0;
     uint pad1;

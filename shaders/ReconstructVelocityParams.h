@@ -1,6 +1,7 @@
 /* ReconstructVelocityParams.h: push constants of reconstruct_velocity.comp, shared by C++ and
    GLSL (ASCII, no C++-only syntax outside the __cplusplus blocks). One dispatch per chunk of
-   modes (engine/kernels/ModeBuffer); padded to 16 bytes. */
+   modes (engine/kernels/ModeBuffer; the chunk's mode count is a specialization constant); padded
+   to 16 bytes. */
 #ifndef MODEFLOW_SHADERS_RECONSTRUCT_VELOCITY_PARAMS_H
 #define MODEFLOW_SHADERS_RECONSTRUCT_VELOCITY_PARAMS_H
 
@@ -17,14 +18,14 @@ using uint = std::uint32_t;
 struct ReconstructVelocityParams {
     uint dofCount;       /* velocity DOFs */
     uint firstMode;      /* the chunk's first mode: index into v and the mode scales */
-    uint modeCount;      /* modes in the chunk */
     uint tileCount;      /* tiles per mode (ModeAccess.glsl) */
-    uint halfPrecision;  /* 1: float16 pairs, 0: float32 */
-    uint accumulate;     /* 0: the first chunk writes, 1: later chunks add */
     uint faceStart1;     /* first normal-y face */
     uint faceStart2;     /* first normal-z face (the face total in 2D) */
     float inverseArea[3]; /* 1 / whole face area per normal axis */
     uint pad0;
+    uint pad1;
+    uint pad2;
+    uint pad3;
 };
 
 #ifdef __cplusplus

@@ -6,112 +6,130 @@
 // for the modes of one chunk. Workgroup (mode group g, block b) takes MODES modes and one block of
 // whole tiles of the tiled basis (ModeAccess.glsl). Each invocation sums, over its units of the
 // block (one 32-byte word: 8 float32 or 16 float16 DOFs), x = w q formed once per unit dotted
-// with the unit's word of each of the MODES modes; a shared-memory tree adds the invocations'
-// sums. project_force_sum.comp adds the partial sums of each mode in a fixed order, so the result
-// is deterministic (no atomics). Blocks spread one projection over many workgroups.
+// with the unit's word of each of the MODES modes; then each invocation of the first MODES / 4
+// adds four modes' sums over the invocations in order. project_force_sum.comp adds the partial
+// sums of each mode in a fixed order, so the result is deterministic (no atomics). Blocks spread
+// one projection over many workgroups.
 //
 // Why, measured on lavapipe (tools/bench/bench_runtime, 48^3 grid, N = 100, CPU ms of one
 // lavapipe thread, float32 / float16): one invocation per DOF reading a float per mode, 8 modes a
 // group: 153 / 133. 64-bit vectors, 16 modes a group, mode-major modes: 126 / 97; tiled: 56 / 45.
 // 64 modes a group, the slots past the chunk's modes skipped, each 8-wide batch on a run of
 // consecutive tiles, larger blocks on a CPU device: 41 / 27. Lavapipe pays per lane and load,
-// whatever the load brings: x (w and q, 10 loads a unit) shared by more modes pays, and so does
-// running the tree (invocation by invocation there) over larger blocks (ForceProjection.cpp).
-// A unit's word as one u64vec4 load instead of two u64vec2 loads (64^3 grid, N = 200, GPU ms with
-// two lavapipe threads, float32 / float16): 198-220 / 156-166 -> 109-112 / 83-88.
+// whatever the load brings: x (w and q) shared by more modes pays, and so does running the tree
+// (invocation by invocation there) over larger blocks (ForceProjection.cpp). A unit's word as one
+// u64vec4 load instead of two u64vec2 loads (64^3 grid, N = 200, GPU ms with two lavapipe threads,
+// float32 / float16): 198-220 / 156-166 -> 109-112 / 83-88. Then the precision, the input kind
+// and the group's mode count as specialization constants (no unused path, few masked slots), w and
+// density q read 8 floats a load, and the shared-memory tree replaced by one ordered pass over the
+// invocations' sums: 64^3 N = 200 float32 1.2-2.1x faster in each of seven runs alternating with
+// the previous version (75-204 -> 50-124 ms), 256^2 and 48^3 0.6-2x (typically 1.1-1.4x).
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
 #extension GL_EXT_control_flow_attributes : require
 #include "ProjectForceParams.h"
 
 layout(local_size_x = 64, local_size_x_id = 0) in;
+// Fixed per pipeline (engine/kernels/ForceProjection): lavapipe runs both sides of a runtime
+// branch, and a fixed count of mode slots unrolls.
+layout(constant_id = 1) const uint HALF = 0u;    // 1: float16 modes, 0: float32
+layout(constant_id = 2) const uint GATHER = 0u;  // 1: q is a whole-grid face field read at the DOF faces
+layout(constant_id = 3) const uint MODES = 64u;  // mode slots of a workgroup, a multiple of 4
 
 layout(std430, set = 0, binding = 0) readonly buffer Modes { u64vec4 modeWords[]; };
 layout(std430, set = 0, binding = 1) readonly buffer Input { float q[]; };
-// Zero-padded to whole tiles of float16 modes (engine/kernels/ForceProjection), read four at a time.
-layout(std430, set = 0, binding = 2) readonly buffer Weights { u64vec2 w[]; };
+// The same buffer, 8 floats a load where a unit's DOFs are all inside it.
+layout(std430, set = 0, binding = 1) readonly buffer InputOctets { u64vec4 qOctets[]; };
+// Zero-padded to whole tiles of float16 modes (engine/kernels/ForceProjection), read 8 at a time.
+layout(std430, set = 0, binding = 2) readonly buffer Weights { u64vec4 w[]; };
 layout(std430, set = 0, binding = 3) readonly buffer Faces { uint faces[]; };
 layout(std430, set = 0, binding = 4) writeonly buffer Partials { float partials[]; };
 layout(push_constant) uniform Push { ProjectForceParams params; };
 
 #include "ModeAccess.glsl"
 
-const uint MODES = PROJECT_FORCE_MODES_PER_GROUP;
+const uint OCTETS = HALF + 1u;  // 8-DOF octets per unit
 
-shared vec4 partial[gl_WorkGroupSize.x][MODES / 4];
+shared vec4 partial[gl_WorkGroupSize.x][MODES / 4u];
 
-// w q at DOFs 4 quad ... 4 quad + 3; past the last DOF q is read at the last one (in bounds) and
-// the weight is 0.
-vec4 weightedInput(uint quad) {
-    const uvec4 d = min(uvec4(4u * quad) + uvec4(0u, 1u, 2u, 3u), uvec4(params.dofCount - 1u));
-    const vec4 x = params.gatherFaces != 0u ? vec4(q[faces[d.x]], q[faces[d.y]], q[faces[d.z]], q[faces[d.w]])
-                                            : vec4(q[d.x], q[d.y], q[d.z], q[d.w]);
-    return floatsOf(w[quad]) * x;
+float sum[MODES];  // this invocation's sums
+uint firstLocal;   // the group's first mode in the chunk
+uint modes;        // the group's modes: slots past them are skipped and not written
+
+// q at DOFs first ... first + 3 read one by one; past the last DOF at the last one (in bounds,
+// the weight there is 0).
+vec4 inputQuad(uint first) {
+    const uvec4 d = min(uvec4(first) + uvec4(0u, 1u, 2u, 3u), uvec4(params.dofCount - 1u));
+    if (GATHER != 0u) return vec4(q[faces[d.x]], q[faces[d.y]], q[faces[d.z]], q[faces[d.w]]);
+    return vec4(q[d.x], q[d.y], q[d.z], q[d.w]);
+}
+
+// Adds the unit's word of each mode dotted with x = w q at its DOFs. `whole` (a constant at each
+// call): the unit's DOFs are all inside density q, read 8 floats a load.
+void accumulate(uint unit, const bool whole) {
+    vec4 x[4];  // four DOFs per vec4 (float32: the first two)
+    [[unroll]] for (uint h = 0; h < OCTETS; ++h) {
+        const uint octet = OCTETS * unit + h;
+        const u64vec4 weights = w[octet];
+        vec4 low, high;
+        if (whole) {
+            const u64vec4 values = qOctets[octet];
+            low = floatsOf(values.xy);
+            high = floatsOf(values.zw);
+        } else {
+            low = inputQuad(8u * octet);
+            high = inputQuad(8u * octet + 4u);
+        }
+        x[2 * h] = floatsOf(weights.xy) * low;
+        x[2 * h + 1] = floatsOf(weights.zw) * high;
+    }
+    const uint base = unitBase(unit, params.modeCount);
+    [[unroll]] for (uint m = 0; m < MODES; ++m) {
+        if (m >= modes) break;
+        const u64vec4 word = modeWords[base + (firstLocal + m) * TILE_LANES];
+        if (HALF != 0u) {
+            vec4 low, high, low2, high2;
+            halvesOf(word.xy, low, high);
+            halvesOf(word.zw, low2, high2);
+            sum[m] += dot(low, x[0]) + dot(high, x[1]) + dot(low2, x[2]) + dot(high2, x[3]);
+        } else {
+            sum[m] += dot(floatsOf(word.xy), x[0]) + dot(floatsOf(word.zw), x[1]);
+        }
+    }
 }
 
 void main() {
     const uint lane = gl_LocalInvocationID.x;
     const uint size = gl_WorkGroupSize.x;
     const uint block = gl_WorkGroupID.x % params.blockCount;
-    const uint firstLocal = (gl_WorkGroupID.x / params.blockCount) * MODES;
-    // The group's modes in the chunk; the slots past them are skipped and not written.
-    const uint modes = min(params.modeCount - firstLocal, MODES);
-    uint mode[MODES];  // offsets of the modes in a tile
-    [[unroll]] for (uint m = 0; m < MODES; ++m) mode[m] = min(firstLocal + m, params.modeCount - 1u) * TILE_LANES;
+    firstLocal = (gl_WorkGroupID.x / params.blockCount) * MODES;
+    modes = min(params.modeCount - firstLocal, MODES);
 
-    // The block's units. With whole batches of TILE_LANES invocations each batch takes a run of
-    // consecutive tiles: on lavapipe a batch is the SIMD width, and its loads then advance by a
-    // fixed stride the prefetcher follows. Otherwise the invocations stride over the units.
+    // The block's units.
     const uint blockBegin = block * params.blockTiles;
-    const uint tiles = min(params.blockTiles, params.tileCount - blockBegin);
-    uint begin = blockBegin * TILE_LANES + lane, step = size, end = (blockBegin + tiles) * TILE_LANES;
-    if (size % TILE_LANES == 0u) {
-        const uint batches = size / TILE_LANES, perBatch = (tiles + batches - 1u) / batches;
-        const uint first = min((lane / TILE_LANES) * perBatch, tiles);
-        begin = (blockBegin + first) * TILE_LANES + lane % TILE_LANES;
-        step = TILE_LANES;
-        end = (blockBegin + min(first + perBatch, tiles)) * TILE_LANES;
-    }
+    uint begin, step, end;
+    unitRange(lane, size, blockBegin, min(blockBegin + params.blockTiles, params.tileCount), begin, step, end);
 
-    float sum[MODES];
     [[unroll]] for (uint m = 0; m < MODES; ++m) sum[m] = 0.0;
-    if (params.halfPrecision != 0u) {
-        for (uint unit = begin; unit < end; unit += step) {
-            const uint base = unitBase(unit, params.modeCount);
-            vec4 x[2 * TILE_ROWS];  // the unit's 16 DOFs, four per vec4
-            [[unroll]] for (uint j = 0; j < 2 * TILE_ROWS; ++j) x[j] = weightedInput(2u * TILE_ROWS * unit + j);
-            [[unroll]] for (uint m = 0; m < MODES; ++m) {
-                if (m >= modes) break;
-                const u64vec4 word = modeWords[base + mode[m]];
-                vec4 low, high, low2, high2;
-                halvesOf(word.xy, low, high);
-                halvesOf(word.zw, low2, high2);
-                sum[m] += dot(low, x[0]) + dot(high, x[1]) + dot(low2, x[2]) + dot(high2, x[3]);
-            }
-        }
-    } else {
-        for (uint unit = begin; unit < end; unit += step) {
-            const uint base = unitBase(unit, params.modeCount);
-            vec4 x[TILE_ROWS];  // the unit's 8 DOFs, four per vec4
-            [[unroll]] for (uint r = 0; r < TILE_ROWS; ++r) x[r] = weightedInput(TILE_ROWS * unit + r);
-            [[unroll]] for (uint m = 0; m < MODES; ++m) {
-                if (m >= modes) break;
-                const u64vec4 word = modeWords[base + mode[m]];
-                sum[m] += dot(floatsOf(word.xy), x[0]) + dot(floatsOf(word.zw), x[1]);
-            }
-        }
-    }
+    // Units wholly inside density q first (8 floats a load), then the rest (the partial last unit
+    // and the padding; all units of a face-field input) one DOF a load: two loops, as a branch per
+    // unit would run both sides on lavapipe.
+    const uint wholeUnits = GATHER != 0u ? 0u : params.dofCount / (8u * OCTETS);
+    uint unit = begin;
+    for (; unit < min(end, wholeUnits); unit += step) accumulate(unit, true);
+    for (; unit < end; unit += step) accumulate(unit, false);
 
-    [[unroll]] for (uint j = 0; j < MODES / 4; ++j)
+    [[unroll]] for (uint j = 0; j < MODES / 4u; ++j)
         partial[lane][j] = vec4(sum[4 * j], sum[4 * j + 1], sum[4 * j + 2], sum[4 * j + 3]);
     barrier();
-    // Works for any workgroup size, not only powers of two.
-    for (uint stride = 1u; stride < size; stride *= 2u) {
-        if (lane % (2u * stride) == 0u && lane + stride < size)
-            [[unroll]] for (uint j = 0; j < MODES / 4; ++j) partial[lane][j] += partial[lane + stride][j];
-        barrier();
+    // Invocation j adds the sums of modes 4j ... 4j + 3 over the invocations in order: one pass
+    // over shared memory (a tree took log2(size) passes and barriers, run invocation by invocation
+    // on lavapipe). A loop, not `lane < MODES / 4`: workgroups may have fewer invocations.
+    for (uint j = lane; 4u * j < modes; j += size) {
+        vec4 total = vec4(0.0);
+        for (uint i = 0; i < size; ++i) total += partial[i][j];
+        [[unroll]] for (uint k = 0; k < 4; ++k)
+            if (4u * j + k < modes)
+                partials[(params.firstMode + firstLocal + 4u * j + k) * params.blockCount + block] = total[k];
     }
-    // A loop, not `lane < modes`: workgroups may have fewer than MODES invocations.
-    for (uint m = lane; m < modes; m += size)
-        partials[(params.firstMode + firstLocal + m) * params.blockCount + block] = partial[0][m / 4u][m % 4u];
 }

@@ -1,7 +1,9 @@
 #version 450
-// Force projection, pass 2 of 2: f_k = s_k * sum_b partial[k][b], one workgroup per mode k, the
-// partial sums of project_force.comp added in a fixed order (strided private sums, then a
-// shared-memory tree), s_k the mode's scale factor (engine/kernels/ModeBuffer).
+// Force projection, pass 2 of 2: f_k = s_k * sum_b partial[k][b], one invocation per mode k adding
+// the partial sums of project_force.comp in order (deterministic), s_k the mode's scale factor
+// (engine/kernels/ModeBuffer). A loop per mode, not a workgroup per mode with a shared-memory
+// tree: the blocks are few on a CPU device (about 16), where lavapipe ran each workgroup's tree
+// invocation by invocation, and a few hundred on a GPU.
 #extension GL_GOOGLE_include_directive : require
 #include "ProjectForceParams.h"
 
@@ -12,20 +14,10 @@ layout(std430, set = 0, binding = 1) readonly buffer Scales { float scales[]; };
 layout(std430, set = 0, binding = 2) writeonly buffer Force { float f[]; };
 layout(push_constant) uniform Push { ProjectForceSumParams params; };
 
-shared float partial[gl_WorkGroupSize.x];
-
 void main() {
-    const uint k = gl_WorkGroupID.x;
-    const uint lane = gl_LocalInvocationID.x;
-    const uint size = gl_WorkGroupSize.x;
+    const uint k = gl_GlobalInvocationID.x;
+    if (k >= params.modeCount) return;
     float sum = 0.0;
-    if (k < params.modeCount)
-        for (uint b = lane; b < params.blockCount; b += size) sum += partials[k * params.blockCount + b];
-    partial[lane] = sum;
-    barrier();
-    for (uint stride = 1u; stride < size; stride *= 2u) {
-        if (lane % (2u * stride) == 0u && lane + stride < size) partial[lane] += partial[lane + stride];
-        barrier();
-    }
-    if (lane == 0u && k < params.modeCount) f[k] = scales[k] * partial[0];
+    for (uint b = 0; b < params.blockCount; ++b) sum += partials[k * params.blockCount + b];
+    f[k] = scales[k] * sum;
 }

@@ -24,8 +24,8 @@ static_assert(ModeBuffer::kTileLanes == MODE_TILE_LANES && ModeBuffer::kTileRows
               "the shader reads the tiles ModeBuffer writes");
 /// Default DOFs per workgroup of pass 1. A GPU wants many workgroups (a 64³ basis, ~750k DOFs,
 /// makes ~380 blocks). A CPU device wants few, large ones: lavapipe runs each workgroup's closing
-/// shared-memory tree invocation by invocation (32768 measured ~10% faster than 8192 there), but
-/// still about kCpuGroups of them to share among its threads.
+/// shared-memory sums invocation by invocation (32768 measured ~10% faster than 8192 there, when
+/// they were a tree), but still about kCpuGroups of them to share among its threads.
 constexpr std::uint32_t kGpuDofsPerGroup = 2048;
 constexpr std::uint32_t kCpuMinDofsPerGroup = 4096, kCpuMaxDofsPerGroup = 32768, kCpuGroups = 16;
 /// DOFs of a tile of float16 modes: blocks are whole tiles of either precision.
@@ -40,6 +40,15 @@ const VulkanContext& requireShaderInt64(const VulkanContext& context) {
 }
 
 std::uint32_t modeGroups(std::uint32_t modes) { return (modes + kModesPerGroup - 1) / kModesPerGroup; }
+
+/// Mode slots of a workgroup (the shader's MODES) for a chunk of `modes`: the chunk split into
+/// equal groups of at most kModesPerGroup, rounded up to 4, so that few slots go unused (lavapipe
+/// still loops over an unused slot's lanes). Larger groups on a CPU device, their closing sums in
+/// rounds of 64, measured slower with float32 modes (sums spilled; 48^3 N = 200: 28 -> 37 ms).
+std::uint32_t slotsFor(std::uint32_t modes) {
+    const std::uint32_t groups = modeGroups(modes);
+    return ((modes + groups - 1) / groups + 3) / 4 * 4;
+}
 
 /// DOFs per block: the wish rounded up to whole float16 tiles, and to a whole number of units
 /// (16 float16 DOFs) per invocation, raised until every chunk's dispatch (at most all modes) stays
@@ -70,7 +79,7 @@ std::uint32_t blockSizeFor(const VulkanContext& context, std::uint32_t dofs, std
     return std::uint32_t((block + unit - 1) / unit * unit);
 }
 
-/// The weights, zero-padded to whole float16 tiles like the modes (read four at a time; a padded
+/// The weights, zero-padded to whole float16 tiles like the modes (read eight at a time; a padded
 /// DOF adds 0).
 DeviceBuffer weightBuffer(const VulkanContext& context, const BasisCache& cache, FaceQuantity quantity) {
     const Eigen::VectorXd w = projectionWeights(cache, quantity);
@@ -93,8 +102,8 @@ ForceProjectionKernel::ForceProjectionKernel(const VulkanContext& context, const
       mWeights(weightBuffer(context, cache, quantity)),
       mPartials(context, std::max<VkDeviceSize>(1, VkDeviceSize(mModeCount) * mBlockCount) * sizeof(float),
                 "projection partial sums"),
-      mPartialKernel(context, ComputeKernelSpec{"project_force", project_force_spv, 5,
-                                                sizeof(shaders::ProjectForceParams), options.workgroupSize}),
+      mContext(context),
+      mWorkgroupSize(options.workgroupSize),
       mSumKernel(context, ComputeKernelSpec{"project_force_sum", project_force_sum_spv, 3,
                                             sizeof(shaders::ProjectForceSumParams), options.workgroupSize}) {}
 
@@ -110,19 +119,34 @@ void ForceProjectionKernel::record(CommandSequence& sequence, const ModeBuffer& 
     shaders::ProjectForceParams params{};
     params.dofCount = mDofCount;
     params.tileCount = modes.tileCount();
-    params.halfPrecision = modes.precision() == ModePrecision::Float16;
-    params.gatherFaces = mQuantity == FaceQuantity::FaceField;
     params.blockCount = mBlockCount;
     params.blockTiles = mBlockSize / (ModeBuffer::kTileVectors * modes.dofsPerVector());
     for (const ModeBuffer::Chunk& chunk : modes.chunks()) {
         params.firstMode = chunk.firstMode;
         params.modeCount = chunk.modeCount;
+        const std::uint32_t slots = slotsFor(chunk.modeCount);
         const std::array<const DeviceBuffer*, 5> buffers{&chunk.buffer, &q, &mWeights, &mFaces, &mPartials};
-        sequence.dispatch(mPartialKernel, buffers, params, modeGroups(chunk.modeCount) * mBlockCount);
+        sequence.dispatch(partialKernel(modes.precision(), slots), buffers, params,
+                          (chunk.modeCount + slots - 1) / slots * mBlockCount);
     }
     const shaders::ProjectForceSumParams sum{mModeCount, mBlockCount, 0, 0};
     const std::array<const DeviceBuffer*, 3> buffers{&mPartials, &modes.scales(), &f};
-    sequence.dispatch(mSumKernel, buffers, sum, mModeCount);
+    sequence.dispatch(mSumKernel, buffers, sum, groupsFor(mContext, mModeCount, mWorkgroupSize));
+}
+
+const ComputeKernel& ForceProjectionKernel::partialKernel(ModePrecision precision, std::uint32_t slots) const {
+    const bool half = precision == ModePrecision::Float16;
+    auto found = mPartialKernels.find({half, slots});
+    if (found == mPartialKernels.end()) {
+        const std::uint32_t gather = mQuantity == FaceQuantity::FaceField;
+        found = mPartialKernels
+                    .try_emplace({half, slots}, mContext,
+                                 ComputeKernelSpec{"project_force", project_force_spv, 5,
+                                                   sizeof(shaders::ProjectForceParams), mWorkgroupSize,
+                                                   {std::uint32_t(half), gather, slots}})
+                    .first;
+    }
+    return found->second;
 }
 
 }  // namespace modeflow::vulkan

@@ -4,7 +4,7 @@
 /// project_force_sum.comp; CPU reference: engine/field/ForceProjection.h):
 /// f_k = Σ_d Ψ_k[d] w_d q_d, float32, deterministic (no atomics).
 ///
-/// Pass 1 splits the DOFs into blocks and gives each workgroup 64 modes × one block, writing one
+/// Pass 1 splits the DOFs into blocks and gives each workgroup up to 64 modes × one block, writing one
 /// partial sum per mode and block (one dispatch per chunk of the ModeBuffer); pass 2 adds each
 /// mode's partial sums in a fixed order and applies the mode's scale. Blocks keep a projection
 /// parallel across a GPU however few modes there are: a 64³ basis (~750k DOFs) with 100 modes
@@ -12,6 +12,8 @@
 /// reads 64-bit words: the device needs shaderInt64.
 
 #include <cstdint>
+#include <map>
+#include <utility>
 
 #include "engine/field/ForceProjection.h"
 #include "engine/format/BasisCache.h"
@@ -23,6 +25,7 @@ namespace modeflow::vulkan {
 class CommandSequence;
 class ModeBuffer;
 class VulkanContext;
+enum class ModePrecision;
 
 struct ForceProjectionOptions {
     std::uint32_t workgroupSize = 64;
@@ -53,6 +56,10 @@ public:
     std::uint32_t blockSize() const { return mBlockSize; }
 
 private:
+    /// Pass 1's pipeline for `precision` and `slots` modes per workgroup (specialization
+    /// constants), built on first use: a basis's chunks need one or two.
+    const ComputeKernel& partialKernel(ModePrecision precision, std::uint32_t slots) const;
+
     FaceQuantity mQuantity;
     std::uint32_t mDofCount = 0;
     std::uint32_t mModeCount = 0;
@@ -62,7 +69,10 @@ private:
     DeviceBuffer mFaces;
     DeviceBuffer mWeights;
     DeviceBuffer mPartials;
-    ComputeKernel mPartialKernel;
+    const VulkanContext& mContext;
+    std::uint32_t mWorkgroupSize = 64;
+    /// By (float16, slots); recording, like CommandSequence, is for one thread at a time.
+    mutable std::map<std::pair<bool, std::uint32_t>, ComputeKernel> mPartialKernels;
     ComputeKernel mSumKernel;
 };
 

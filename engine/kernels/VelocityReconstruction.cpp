@@ -19,6 +19,10 @@ namespace {
 
 static_assert(ModeBuffer::kTileLanes == MODE_TILE_LANES && ModeBuffer::kTileRows == MODE_TILE_ROWS,
               "the shader reads the tiles ModeBuffer writes");
+/// Units (32-byte words of a tile) per invocation at least, on a CPU device: each invocation first
+/// reads the chunk's coefficients (one load a quad of modes on lavapipe, for every lane), which
+/// many units then share. A GPU gets one invocation per unit.
+constexpr std::uint64_t kCpuUnitsPerInvocation = 16;
 
 const VulkanContext& requireShaderInt64(const VulkanContext& context) {
     if (!context.hasShaderInt64())
@@ -56,8 +60,8 @@ ReconstructionKernel::ReconstructionKernel(const VulkanContext& context, const B
       mGrid(MacGrid::fromSpec(cache.grid)),
       mDofCount(std::uint32_t(cache.faces.size())),
       mFaces(paddedDofFaces(context, cache)),
-      mKernel(context, ComputeKernelSpec{"reconstruct_velocity", reconstruct_velocity_spv, 5,
-                                         sizeof(shaders::ReconstructVelocityParams), workgroupSize}) {}
+      mScratch(context, mFaces.bytes(), "reconstruction sums"),
+      mWorkgroupSize(workgroupSize) {}
 
 DeviceBuffer ReconstructionKernel::makeFaceField(std::string name) const {
     const std::vector<float> zeros(std::size_t(mGrid.faceTotal()), 0.0f);
@@ -75,20 +79,35 @@ void ReconstructionKernel::record(CommandSequence& sequence, const ModeBuffer& m
     shaders::ReconstructVelocityParams params{};
     params.dofCount = mDofCount;
     params.tileCount = modes.tileCount();
-    params.halfPrecision = modes.precision() == ModePrecision::Float16;
     params.faceStart1 = std::uint32_t(mGrid.faceOffset(1));
     params.faceStart2 = std::uint32_t(mGrid.faceOffset(2));
     for (int a = 0; a < 3; ++a) params.inverseArea[a] = float(1.0 / mGrid.faceArea(a));
-    // One invocation per unit (kTileRows vectors of a tile, one 32-byte word; ModeAccess.glsl).
+    // Units: kTileRows vectors of a tile, one 32-byte word (ModeAccess.glsl).
+    const std::uint64_t units = std::uint64_t(modes.tileCount()) * ModeBuffer::kTileLanes;
+    const bool cpu = mContext.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
     const std::uint32_t groups =
-        groupsFor(mContext, std::uint64_t(modes.tileCount()) * ModeBuffer::kTileLanes, mKernel.workgroupSize());
+        groupsFor(mContext, cpu ? (units + kCpuUnitsPerInvocation - 1) / kCpuUnitsPerInvocation : units, mWorkgroupSize);
     for (const ModeBuffer::Chunk& chunk : modes.chunks()) {
         params.firstMode = chunk.firstMode;
-        params.modeCount = chunk.modeCount;
-        params.accumulate = chunk.firstMode > 0;
-        const std::array<const DeviceBuffer*, 5> buffers{&chunk.buffer, &modes.scales(), &v, &mFaces, &faceField};
-        sequence.dispatch(mKernel, buffers, params, groups);
+        const bool first = &chunk == &modes.chunks().front(), last = &chunk == &modes.chunks().back();
+        const std::array<std::uint32_t, 5> constants{modes.precision() == ModePrecision::Float16, !first, last,
+                                                     chunk.modeCount, chunk.firstMode % 4};
+        const std::array<const DeviceBuffer*, 6> buffers{&chunk.buffer, &modes.scales(), &v,
+                                                         &mFaces, &faceField, &mScratch};
+        sequence.dispatch(kernel(constants), buffers, params, groups);
     }
+}
+
+const ComputeKernel& ReconstructionKernel::kernel(const std::array<std::uint32_t, 5>& key) const {
+    auto found = mKernels.find(key);
+    if (found == mKernels.end())
+        found = mKernels
+                    .try_emplace(key, mContext,
+                                 ComputeKernelSpec{"reconstruct_velocity", reconstruct_velocity_spv, 6,
+                                                   sizeof(shaders::ReconstructVelocityParams), mWorkgroupSize,
+                                                   {key.begin(), key.end()}})
+                    .first;
+    return found->second;
 }
 
 }  // namespace modeflow::vulkan

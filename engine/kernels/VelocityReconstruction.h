@@ -2,11 +2,14 @@
 /// @file VelocityReconstruction.h
 /// Modal velocity → face field on the device (shaders/reconstruct_velocity.comp; CPU reference:
 /// engine/field/VelocityReconstruction.h): field[face(d)] = (Σ_i v_i Ψ_i)[d] / area(axis), one
-/// dispatch per chunk of the ModeBuffer. v stays on the device, so a modal step's output can be
-/// reconstructed in the same submission. The kernel reads 64-bit words: the device needs
-/// shaderInt64.
+/// dispatch per chunk of the ModeBuffer (all but the last leave their sums in the kernel's scratch
+/// buffer; CommandSequence's barrier between dispatches orders its reuse by later reconstructions).
+/// v stays on the device, so a modal step's output can be reconstructed in the same submission.
+/// The kernel reads 64-bit words: the device needs shaderInt64.
 
+#include <array>
 #include <cstdint>
+#include <map>
 #include <string>
 
 #include "engine/field/MacGrid.h"
@@ -41,11 +44,18 @@ public:
     std::uint32_t dofCount() const { return mDofCount; }
 
 private:
+    /// The pipeline for the shader's specialization constants (float16 modes, a chunk after the
+    /// first, the last chunk, the chunk's mode count, its first mode % 4), built on first use.
+    const ComputeKernel& kernel(const std::array<std::uint32_t, 5>& constants) const;
+
     const VulkanContext& mContext;
     MacGrid mGrid;
     std::uint32_t mDofCount = 0;
     DeviceBuffer mFaces;
-    ComputeKernel mKernel;
+    DeviceBuffer mScratch;  ///< the sums of the chunks so far, in DOF order (as many floats as mFaces)
+    std::uint32_t mWorkgroupSize = 64;
+    /// By the specialization constants; recording, like CommandSequence, is for one thread at a time.
+    mutable std::map<std::array<std::uint32_t, 5>, ComputeKernel> mKernels;
 };
 
 }  // namespace modeflow::vulkan

@@ -63,8 +63,14 @@ ComputeKernel::ComputeKernel(const VulkanContext& context, const ComputeKernelSp
     check(vkCreateShaderModule(device, &shaderInfo, nullptr, &shader), "vkCreateShaderModule");
     mShader = DeviceHandle<VkShaderModule>(device, shader, vkDestroyShaderModule);
 
-    const VkSpecializationMapEntry entry{0, 0, sizeof(std::uint32_t)};
-    VkSpecializationInfo specialization{1, &entry, sizeof(std::uint32_t), &mSpec.workgroupSize};
+    // Constant i (0: the workgroup size) is the i-th uint of `values`.
+    std::vector<std::uint32_t> values{spec.workgroupSize};
+    values.insert(values.end(), spec.constants.begin(), spec.constants.end());
+    std::vector<VkSpecializationMapEntry> entries(values.size());
+    for (std::uint32_t i = 0; i < entries.size(); ++i)
+        entries[i] = {i, i * std::uint32_t(sizeof(std::uint32_t)), sizeof(std::uint32_t)};
+    const VkSpecializationInfo specialization{std::uint32_t(entries.size()), entries.data(),
+                                              values.size() * sizeof(std::uint32_t), values.data()};
     VkComputePipelineCreateInfo pipelineInfo{};
     pipelineInfo.sType = VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO;
     pipelineInfo.stage.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;

@@ -1,8 +1,10 @@
 #pragma once
 /// @file ComputeKernel.h
 /// One compute pipeline built from embedded SPIR-V (Kompute's Algorithm): a descriptor set
-/// layout of N storage buffers (bindings 0…N−1 of set 0), a push-constant block, and the
-/// workgroup size as specialization constant 0. Shaders declare
+/// layout of N storage buffers (bindings 0…N−1 of set 0), a push-constant block, the
+/// workgroup size as specialization constant 0 and optional further uint constants 1…k (fixed at
+/// pipeline creation, so a shader's branches and loop counts on them fold away: lavapipe executes
+/// both sides of a runtime branch). Shaders declare
 /// `layout(local_size_x = 64, local_size_x_id = 0) in;` so the size written there is also the
 /// default (see PLATFORM.md). Buffers are bound by push descriptors at record time, so recording
 /// needs no descriptor pool and a kernel can be recorded any number of times.
@@ -11,6 +13,7 @@
 #include <cstdint>
 #include <span>
 #include <string>
+#include <vector>
 
 #include <vulkan/vulkan.h>
 
@@ -27,6 +30,7 @@ struct ComputeKernelSpec {
     std::uint32_t bufferCount = 0;         ///< storage buffers at bindings 0…N−1
     std::uint32_t pushConstantBytes = 0;   ///< size of the push-constant block (multiple of 4)
     std::uint32_t workgroupSize = 64;      ///< local_size_x, specialization constant 0
+    std::vector<std::uint32_t> constants = {};  ///< specialization constants 1…k, in order
 };
 
 class ComputeKernel {
