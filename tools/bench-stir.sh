@@ -10,7 +10,7 @@ modeflow="$root/build/tools/modeflow/modeflow"
 frames=${1:-200}
 device=${2:-vulkan}
 window=()
-[[ -n ${DISPLAY:-} ]] || window=(xvfb-run -a -s "-screen 0 1280x720x24")
+[[ -n ${DISPLAY:-} ]] || window=(xvfb-run -a -s "-screen 0 1280x720x24 -noreset")
 export MODEFLOW_CACHE_DIR=${MODEFLOW_CACHE_DIR:-$root/build/bench-cache}
 
 printf '| scene | window | frames | fps | ms per step | ms per picture | device |\n|---|---|---|---|---|---|---|\n'
