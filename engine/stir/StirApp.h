@@ -28,7 +28,9 @@
 namespace modeflow::stir {
 
 struct StirOptions {
-    int width = 1280, height = 720;  ///< the window's first size, screen units
+    /// The window's first size, screen units. Unset: 1280 × 720, or 960 × 540 on a CPU device
+    /// (lavapipe), where drawing costs per pixel and the smaller window keeps 30 fps.
+    std::optional<int> width, height;
     std::optional<int> frames;       ///< close after this many frames (frame clock)
     std::filesystem::path screenshot;                 ///< the last frame as PNG, if not empty
     std::filesystem::path screenshotFolder = ".";     ///< where the screenshot key writes

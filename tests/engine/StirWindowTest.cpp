@@ -71,12 +71,15 @@ fs::path scratch(const std::string& name) {
     return dir / name;
 }
 
+/// A scripted run in a 640 × 480 window (`sized` false: the default size).
 stir::StirReport run(int dim, const std::string& script, int frames = 40,
-                     const fs::path& screenshot = {}) {
+                     const fs::path& screenshot = {}, bool sized = true) {
     const Prepared& p = prepared(dim);
     stir::StirOptions options;
-    options.width = 640;
-    options.height = 480;
+    if (sized) {
+        options.width = 640;
+        options.height = 480;
+    }
     options.frames = frames;
     options.screenshot = screenshot;
     options.screenshotFolder = scratch("");
@@ -177,6 +180,13 @@ TEST(StirWindowTest, WindowResizesWithoutErrors) {
     brightCentreX(shot, w, h);
     EXPECT_EQ(w, 320);
     EXPECT_EQ(h, 240);
+}
+
+TEST(StirWindowTest, DefaultWindowFitsTheDevice) {
+    const stir::StirReport report = run(2, "", 5, {}, false);
+    const bool cpu = vulkan::VulkanContext().properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
+    EXPECT_EQ(report.width, cpu ? 960 : 1280);
+    EXPECT_EQ(report.height, cpu ? 540 : 720);
 }
 
 TEST(StirWindowTest, KeysPauseSwitchAndReset) {

@@ -23,7 +23,7 @@ Command addStir(CLI::App& app) {
         std::optional<std::string> script;
         std::optional<std::string> cacheDir;
         std::string device = "vulkan";
-        int width = 1280, height = 720;
+        std::optional<int> width, height;
         double force = stir::StirSettings{}.force;
     };
     auto opts = std::make_shared<Options>();
@@ -36,8 +36,11 @@ Command addStir(CLI::App& app) {
         ->check(CLI::PositiveNumber);
     sub->add_option("--screenshot", opts->screenshot, "write the last frame to this PNG file");
     sub->add_option("--script", opts->script, "replay timed mouse and key events from FILE");
-    sub->add_option("--width", opts->width, "window width in screen units")->check(CLI::PositiveNumber);
-    sub->add_option("--height", opts->height, "window height")->check(CLI::PositiveNumber);
+    sub->add_option("--width", opts->width,
+                    "window width in screen units (default 1280, or 960 on a CPU device such as lavapipe)")
+        ->check(CLI::PositiveNumber);
+    sub->add_option("--height", opts->height, "window height (default 720, or 540 on a CPU device)")
+        ->check(CLI::PositiveNumber);
     sub->add_option("--force", opts->force, "stirring acceleration per unit pointer speed (1/s)")
         ->check(CLI::NonNegativeNumber);
     sub->add_option("--device", opts->device, "a Vulkan device: vulkan (first suitable) or an index");
