@@ -31,14 +31,6 @@ constexpr std::uint32_t kCpuMinDofsPerGroup = 4096, kCpuMaxDofsPerGroup = 32768,
 /// DOFs of a tile of float16 modes: blocks are whole tiles of either precision.
 constexpr std::uint32_t kTileDofs = ModeBuffer::kTileVectors * 8;
 
-const VulkanContext& requireShaderInt64(const VulkanContext& context) {
-    if (!context.hasShaderInt64())
-        throw Error("Vulkan device " + context.deviceName() +
-                    " lacks 64-bit integers in shaders (shaderInt64), which the force projection needs; "
-                    "run with --device cpu");
-    return context;
-}
-
 std::uint32_t modeGroups(std::uint32_t modes) { return (modes + kModesPerGroup - 1) / kModesPerGroup; }
 
 /// Mode slots of a workgroup (the shader's MODES) for a chunk of `modes`: the chunk split into
@@ -96,7 +88,7 @@ ForceProjectionKernel::ForceProjectionKernel(const VulkanContext& context, const
       mDofCount(std::uint32_t(cache.faces.size())),
       mModeCount(std::uint32_t(cache.velocity.modes.cols())),
       mFaceTotal(std::uint64_t(MacGrid::fromSpec(cache.grid).faceTotal())),
-      mBlockSize(blockSizeFor(requireShaderInt64(context), mDofCount, mModeCount, options)),
+      mBlockSize(blockSizeFor(context.requireShaderInt64("the force projection"), mDofCount, mModeCount, options)),
       mBlockCount((mDofCount + mBlockSize - 1) / mBlockSize),
       mFaces(uploadDofFaces(context, cache)),
       mWeights(weightBuffer(context, cache, quantity)),

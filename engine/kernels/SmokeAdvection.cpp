@@ -24,14 +24,6 @@
 namespace modeflow::vulkan {
 namespace {
 
-const VulkanContext& requireInt64(const VulkanContext& context) {
-    if (!context.hasShaderInt64())
-        throw Error("Vulkan device " + context.deviceName() +
-                    " lacks 64-bit integers in shaders (shaderInt64), which the smoke advection needs; run with "
-                    "--device cpu");
-    return context;
-}
-
 shaders::SmokeAdvectParams stepParams(const SmokeState& state, double dt) {
     const MacGrid& basis = state.basisGrid();
     const MacGrid& smoke = state.smokeGrid();
@@ -69,7 +61,7 @@ ComputeKernel advectKernel(const VulkanContext& context, const char* name, std::
 }  // namespace
 
 SmokeAdvectionKernels::SmokeAdvectionKernels(const VulkanContext& context, std::uint32_t workgroupSize)
-    : mContext(requireInt64(context)),
+    : mContext(context.requireShaderInt64("the smoke advection")),
       mFacePairs(context, ComputeKernelSpec{"smoke_face_pairs", smoke_face_pairs_spv, 3,
                                             sizeof(shaders::SmokeFacePairsParams), workgroupSize}),
       mStages{advectKernel(context, "smoke_advect_sl_2d", smoke_advect_sl_2d_spv, workgroupSize),

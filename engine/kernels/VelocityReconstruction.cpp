@@ -24,14 +24,6 @@ static_assert(ModeBuffer::kTileLanes == MODE_TILE_LANES && ModeBuffer::kTileRows
 /// many units then share. A GPU gets one invocation per unit.
 constexpr std::uint64_t kCpuUnitsPerInvocation = 16;
 
-const VulkanContext& requireShaderInt64(const VulkanContext& context) {
-    if (!context.hasShaderInt64())
-        throw Error("Vulkan device " + context.deviceName() +
-                    " lacks 64-bit integers in shaders (shaderInt64), which the velocity reconstruction needs; "
-                    "run with --device cpu");
-    return context;
-}
-
 /// cache.faces as uint32 face numbers (uploadDofFaces' checks), zero-padded to whole tiles of
 /// float16 modes: the kernel reads them four at a time for each tile row (padded DOFs are not
 /// written).
@@ -56,7 +48,7 @@ DeviceBuffer paddedDofFaces(const VulkanContext& context, const BasisCache& cach
 
 ReconstructionKernel::ReconstructionKernel(const VulkanContext& context, const BasisCache& cache,
                                            std::uint32_t workgroupSize)
-    : mContext(requireShaderInt64(context)),
+    : mContext(context.requireShaderInt64("the velocity reconstruction")),
       mGrid(MacGrid::fromSpec(cache.grid)),
       mDofCount(std::uint32_t(cache.faces.size())),
       mFaces(paddedDofFaces(context, cache)),

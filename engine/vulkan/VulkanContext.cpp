@@ -197,6 +197,13 @@ std::vector<std::string> VulkanContext::validationMessages() const {
     return mValidationLog ? mValidationLog->messages() : std::vector<std::string>{};
 }
 
+const VulkanContext& VulkanContext::requireShaderInt64(const char* user) const {
+    if (!mShaderInt64)
+        throw Error("Vulkan device " + deviceName() + " lacks 64-bit integers in shaders (shaderInt64), which " +
+                    user + " needs; run with --device cpu");
+    return *this;
+}
+
 void VulkanContext::waitIdle() const {
     check(vkDeviceWaitIdle(mDevice), "vkDeviceWaitIdle");
 }

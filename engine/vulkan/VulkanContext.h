@@ -72,6 +72,9 @@ public:
     std::uint32_t subgroupSize() const { return mSubgroupSize; }
     /// True when shaders may use 64-bit integers (shaderInt64, enabled whenever supported).
     bool hasShaderInt64() const { return mShaderInt64; }
+    /// This context, for kernels whose 64-bit loads need shaderInt64 (`user` names them).
+    /// @throw modeflow::Error naming the device, `user` and `--device cpu` when it lacks it.
+    const VulkanContext& requireShaderInt64(const char* user) const;
     /// True when compute shaders may use subgroupAdd and friends
     /// (GL_KHR_shader_subgroup_arithmetic).
     bool hasSubgroupArithmetic() const { return mSubgroupArithmetic; }
