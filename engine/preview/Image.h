@@ -7,6 +7,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 namespace modeflow::preview {
@@ -38,5 +39,22 @@ struct Image {
         for (int k = 0; k < 4; ++k) rgba[o + k] = c[k];
     }
 };
+
+/// A width × height picture from packed 8-bit pixels as kernels write them: red in the lowest
+/// byte, or blue there with `blueFirst` (B8G8R8A8 swapchains); alpha made opaque. Unpacked byte
+/// by byte, so it is right on any host.
+inline Image unpackImage(std::span<const std::uint32_t> words, int width, int height,
+                         bool blueFirst = false) {
+    Image image(width, height);
+    for (std::size_t p = 0; p < words.size() && p < std::size_t(width) * std::size_t(height); ++p) {
+        const std::uint32_t w = words[p];
+        const std::uint8_t low = std::uint8_t(w), high = std::uint8_t(w >> 16);
+        image.rgba[4 * p + 0] = blueFirst ? high : low;
+        image.rgba[4 * p + 1] = std::uint8_t(w >> 8);
+        image.rgba[4 * p + 2] = blueFirst ? low : high;
+        image.rgba[4 * p + 3] = 255;
+    }
+    return image;
+}
 
 }  // namespace modeflow::preview

@@ -93,12 +93,7 @@ void VolumeRenderer::record(vulkan::CommandSequence& sequence, const DeviceBuffe
 Image VolumeRenderer::picture() const {
     std::vector<std::uint32_t> words(std::size_t(mWidth) * std::size_t(mHeight));
     mPixels.download<std::uint32_t>(words);
-    Image image(mWidth, mHeight);
-    // Red in the low byte: on a little-endian host the words already are RGBA bytes, but
-    // unpacking explicitly keeps this right on any host.
-    for (std::size_t p = 0; p < words.size(); ++p)
-        for (int c = 0; c < 4; ++c) image.rgba[4 * p + c] = std::uint8_t(words[p] >> (8 * c));
-    return image;
+    return unpackImage(words, mWidth, mHeight);
 }
 
 Image VolumeRenderer::render(const DeviceBuffer& density, float densityScale) {

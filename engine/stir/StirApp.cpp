@@ -302,19 +302,10 @@ bool StirWindow::draw() {
 }
 
 preview::Image StirWindow::picture() const {
-    preview::Image image(int(mPixelsExtent.width), int(mPixelsExtent.height));
-    std::vector<std::uint32_t> words(std::size_t(image.width) * std::size_t(image.height));
+    const int width = int(mPixelsExtent.width), height = int(mPixelsExtent.height);
+    std::vector<std::uint32_t> words(std::size_t(width) * std::size_t(height));
     mPixels->download<std::uint32_t>(words);
-    const bool blueFirst = mPresenter.blueFirst();
-    for (std::size_t p = 0; p < words.size(); ++p) {
-        const std::uint32_t w = words[p];
-        const std::uint8_t low = std::uint8_t(w), high = std::uint8_t(w >> 16);
-        image.rgba[4 * p + 0] = blueFirst ? high : low;
-        image.rgba[4 * p + 1] = std::uint8_t(w >> 8);
-        image.rgba[4 * p + 2] = blueFirst ? low : high;
-        image.rgba[4 * p + 3] = 255;
-    }
-    return image;
+    return preview::unpackImage(words, width, height, mPresenter.blueFirst());
 }
 
 void StirWindow::saveScreenshot(const std::filesystem::path& file) {
