@@ -1,11 +1,10 @@
-/* ModeAccess.glsl: the stored values of a chunk of modes uploaded by engine/kernels/ModeBuffer
-   (and float arrays read eight at a time) as 32-byte words: 8 float32 DOFs, or 16 float16 DOFs
-   (DOFs 2w and 2w+1 in 32-bit half-word w, the even one in the low half, as unpackHalf2x16
-   returns it in .x), each word two of ModeBuffer's 16-byte vectors. The stored values still need
-   the mode's scale factor. The includer enables GL_EXT_shader_explicit_arithmetic_types_int64,
-   defines MODE_TILE_LANES and MODE_TILE_ROWS (its params header; engine/kernels/ModeBuffer's
-   kTileLanes and kTileRows = 2, the 16-byte vectors of a word) and declares
-   `u64vec4 modeWords[]` (the chunk) first.
+/* ModeAccess.glsl: the stored values of a chunk of modes uploaded by engine/kernels/ModeBuffer,
+   read as 32-byte words of 8 float32 DOFs or 16 float16 DOFs (DOFs 2w and 2w+1 in 32-bit half-word
+   w, the even one in the low half, as unpackHalf2x16 returns it in .x), each word two of
+   ModeBuffer's 16-byte vectors, fetched as two texels (TexelAccess.glsl). The stored values still
+   need the mode's scale factor. The includer defines MODE_TILE_LANES and MODE_TILE_ROWS (its
+   params header; engine/kernels/ModeBuffer's kTileLanes and kTileRows = 2, the 16-byte vectors of
+   a word) and declares `uniform usamplerBuffer modeTexels` (the chunk) first.
 
    Layout: tile-major. Each mode is cut into tiles of MODE_TILE_LANES words; the chunk holds tile 0
    of each of its modes, then tile 1 of each, and so on. A "unit" is one invocation's share of a
@@ -13,36 +12,36 @@
    is word u of the mode (DOFs 8u ... 8u + 7 in float32, 16u ... 16u + 15 in float16).
 
    Why, measured on lavapipe (Mesa 22.3, LLVM 15; tools/bench/bench_runtime and profiles of the
-   JIT code): each lane's load is a scalar load of its own per component, wrapped in mask and
-   bounds checks, in a loop over the lanes (the address vector is spilled and reloaded per lane),
-   so a load costs about the same whatever it brings, and a cache miss its full latency unless the
-   prefetcher has fetched the line. 64-bit components bring the most per component, and a u64vec4
-   load (one lane loop for four components) beat two u64vec2 loads. Mode-major modes summed per
-   invocation jump to another mode at every load, and the prefetcher loses track: a probe kernel
-   streaming the same bytes that way ran at 0.75 GB/s, contiguously at 3.5-4.4. Tiles make what
-   one 8-wide batch of invocations (lavapipe's SIMD width with AVX2) reads of all the modes one
-   contiguous stream: the reconstruction went from 113 to 32 ms (reconstruct_velocity.comp). On a
-   GPU each load of a warp covers whole, aligned segments (a tile: 8 neighbouring invocations x 32
-   bytes). */
+   JIT code): each lane's storage-buffer load is a scalar load of its own per component, wrapped in
+   mask and bounds checks, in a loop over the lanes, so a load costs about the same whatever it
+   brings, and a cache miss its full latency unless the prefetcher has fetched the line. Mode-major
+   modes summed per invocation jump to another mode at every load, and the prefetcher loses track:
+   a probe kernel streaming the same bytes that way ran at 0.75 GB/s, contiguously at 3.5-4.4.
+   Tiles make what one 8-wide batch of invocations (lavapipe's SIMD width with AVX2) reads of all
+   the modes one contiguous stream: the reconstruction went from 113 to 32 ms
+   (reconstruct_velocity.comp). Texel fetches, vector gathers on lavapipe, then read that stream
+   about 3x faster than 32-byte storage loads (README "Speed"). On a GPU each fetch of a warp
+   covers whole, aligned segments (a tile: 8 neighbouring invocations x 32 bytes). */
 #ifndef MODEFLOW_SHADERS_MODE_ACCESS_GLSL
 #define MODEFLOW_SHADERS_MODE_ACCESS_GLSL
 
 #if MODE_TILE_ROWS != 2
-#error "a word is two 16-byte vectors (one u64vec4)"
+#error "a word is two 16-byte vectors (two texels)"
 #endif
+
+#include "TexelAccess.glsl"
 const uint TILE_LANES = MODE_TILE_LANES;
 const uint TILE_ROWS = MODE_TILE_ROWS;  // 16-byte vectors per word
 
-/* Four float32 values stored in 16 bytes. */
-vec4 floatsOf(u64vec2 vector) {
-    return vec4(uintBitsToFloat(unpack32(vector.x)), uintBitsToFloat(unpack32(vector.y)));
+/* Word `word` of the chunk as 8 float32 values (a: the first four) or 16 float16 values (a, b:
+   the first eight, c, d: the last). */
+void modeFloats(uint word, out vec4 a, out vec4 b) {
+    a = floatTexel(modeTexels, 2u * word);
+    b = floatTexel(modeTexels, 2u * word + 1u);
 }
-
-/* Eight float16 values stored in 16 bytes: the first four in `low`, the last in `high`. */
-void halvesOf(u64vec2 vector, out vec4 low, out vec4 high) {
-    const uvec2 a = unpack32(vector.x), b = unpack32(vector.y);
-    low = vec4(unpackHalf2x16(a.x), unpackHalf2x16(a.y));
-    high = vec4(unpackHalf2x16(b.x), unpackHalf2x16(b.y));
+void modeHalves(uint word, out vec4 a, out vec4 b, out vec4 c, out vec4 d) {
+    halfTexel(modeTexels, 2u * word, a, b);
+    halfTexel(modeTexels, 2u * word + 1u, c, d);
 }
 
 /* Index of unit `unit`'s word of the chunk's mode 0 (add mode * TILE_LANES for mode `mode`); the

@@ -12,37 +12,34 @@
 // (zero-padded), the rows in tiles of PAIR_TILE_ROWS (the chunk zero-padded to whole tiles). A tile
 // stores octet 0 of its rows, then octet 1 of them, and so on: octet q of row j of tile t is element
 // (t rowOctets + q) PAIR_TILE_ROWS + j. Each batch of PAIR_TILE_LANES invocations sums one tile,
-// each invocation ROWS of its rows (j = r PAIR_TILE_LANES + lane) front to back, one load of a's
-// octet q serving all ROWS. An octet is one load of four 64-bit words.
+// each invocation ROWS of its rows (j = r PAIR_TILE_LANES + lane) front to back, one fetch of a's
+// octet q serving all ROWS.
 //
 // Why, measured on lavapipe (tools/bench/bench_runtime, N = 200): lavapipe issues every lane's
-// load as a loop over the lanes with a mask and bounds check per lane and per component, so the
-// count of loads and components is what costs, not bytes. Floats: 1.5 GB/s; 64-bit words: 2.8;
-// four rows per a[q]: 4.2. A subgroup per row with coalesced loads and subgroupAdd, or a[q] shared
-// by subgroupBroadcast, were no faster. Tiles, which make what one 8-wide batch (lavapipe's SIMD
-// width with AVX2) reads one contiguous stream instead of 32 (one per row): 4.6-7.8 GB/s;
-// octets (four words a load instead of two) and eight rows a lane: 7.0-8.8. On a GPU each load of
-// a warp covers whole, aligned segments (8 lanes x 32 bytes). Tiles are visited grid-stride, so
-// any group count works.
+// storage-buffer load as a loop over the lanes with a mask and bounds check per lane and per
+// component, so the count of loads and components is what costs, not bytes. Floats: 1.5 GB/s;
+// 64-bit words: 2.8; four rows per a[q]: 4.2. A subgroup per row with coalesced loads and
+// subgroupAdd, or a[q] shared by subgroupBroadcast, were no faster. Tiles, which make what one
+// 8-wide batch (lavapipe's SIMD width with AVX2) reads one contiguous stream instead of 32 (one
+// per row): 4.6-7.8 GB/s; octets as one load of four 64-bit words and eight rows a lane: 7.0-8.8.
+// Then both inputs read as uniform texel buffers (TexelAccess.glsl), which lavapipe fetches with
+// unmasked vector gathers: see README "Speed". On a GPU each fetch of a warp covers whole,
+// aligned segments (8 lanes x 32 bytes). Tiles are visited grid-stride, so any group count works.
 #extension GL_GOOGLE_include_directive : require
-#extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
 #extension GL_EXT_control_flow_attributes : require
 #include "ModalStepParams.h"
+#include "TexelAccess.glsl"
 
 layout(local_size_x = 64, local_size_x_id = 0) in;
 
-// 8 floats per element; `a` holds rowOctets of them (zero-padded).
-layout(std430, set = 0, binding = 0) readonly buffer Coefficients { u64vec4 coefficients[]; };
-layout(std430, set = 0, binding = 1) readonly buffer VectorA { u64vec4 a[]; };
+// Octets of 8 floats, two texels each; `a` holds rowOctets of them (zero-padded).
+layout(set = 0, binding = 0) uniform usamplerBuffer coefficients;
+layout(set = 0, binding = 1) uniform usamplerBuffer a;
 layout(std430, set = 0, binding = 2) buffer Sums { float sums[]; };
 layout(push_constant) uniform Push { PairSumsParams params; };
 
 const uint LANES = PAIR_TILE_LANES;
 const uint ROWS = PAIR_TILE_ROWS / PAIR_TILE_LANES;  // rows per invocation
-
-vec4 floatsOf(u64vec2 words) {
-    return vec4(uintBitsToFloat(unpack32(words.x)), uintBitsToFloat(unpack32(words.y)));
-}
 
 void main() {
     const uint lane = gl_GlobalInvocationID.x % LANES;
@@ -53,11 +50,11 @@ void main() {
         [[unroll]] for (uint r = 0; r < ROWS; ++r) sum[r] = 0.0;
         uint index = tile * params.rowOctets * PAIR_TILE_ROWS + lane;
         for (uint q = 0; q < params.rowOctets; ++q, index += PAIR_TILE_ROWS) {
-            const u64vec4 aq = a[q];
-            const vec4 low = floatsOf(aq.xy), high = floatsOf(aq.zw);
+            const vec4 low = floatTexel(a, 2u * q), high = floatTexel(a, 2u * q + 1u);
             [[unroll]] for (uint r = 0; r < ROWS; ++r) {
-                const u64vec4 c = coefficients[index + r * LANES];
-                sum[r] += dot(floatsOf(c.xy), low) + dot(floatsOf(c.zw), high);
+                const uint octet = index + r * LANES;
+                sum[r] += dot(floatTexel(coefficients, 2u * octet), low) +
+                          dot(floatTexel(coefficients, 2u * octet + 1u), high);
             }
         }
         [[unroll]] for (uint r = 0; r < ROWS; ++r) {

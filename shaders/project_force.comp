@@ -23,9 +23,9 @@
 // and the group's mode count as specialization constants (no unused path, few masked slots), w and
 // density q read 8 floats a load, and the shared-memory tree replaced by one ordered pass over the
 // invocations' sums: 64^3 N = 200 float32 1.2-2.1x faster in each of seven runs alternating with
-// the previous version (75-204 -> 50-124 ms), 256^2 and 48^3 0.6-2x (typically 1.1-1.4x).
+// the previous version (75-204 -> 50-124 ms), 256^2 and 48^3 0.6-2x (typically 1.1-1.4x). Then
+// the modes, w and density q fetched as texels (TexelAccess.glsl): README "Speed".
 #extension GL_GOOGLE_include_directive : require
-#extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
 #extension GL_EXT_control_flow_attributes : require
 #include "ProjectForceParams.h"
 
@@ -36,14 +36,15 @@ layout(constant_id = 1) const uint HALF = 0u;    // 1: float16 modes, 0: float32
 layout(constant_id = 2) const uint GATHER = 0u;  // 1: q is a whole-grid face field read at the DOF faces
 layout(constant_id = 3) const uint MODES = 64u;  // mode slots of a workgroup, a multiple of 4
 
-layout(std430, set = 0, binding = 0) readonly buffer Modes { u64vec4 modeWords[]; };
-layout(std430, set = 0, binding = 1) readonly buffer Input { float q[]; };
-// The same buffer, 8 floats a load where a unit's DOFs are all inside it.
-layout(std430, set = 0, binding = 1) readonly buffer InputOctets { u64vec4 qOctets[]; };
-// Zero-padded to whole tiles of float16 modes (engine/kernels/ForceProjection), read 8 at a time.
-layout(std430, set = 0, binding = 2) readonly buffer Weights { u64vec4 w[]; };
+layout(set = 0, binding = 0) uniform usamplerBuffer modeTexels;
+// The input's whole texels, for the units whose DOFs all lie in them (density q only).
+layout(set = 0, binding = 1) uniform usamplerBuffer qTexels;
+// Zero-padded to whole tiles of float16 modes (engine/kernels/ForceProjection).
+layout(set = 0, binding = 2) uniform usamplerBuffer wTexels;
 layout(std430, set = 0, binding = 3) readonly buffer Faces { uint faces[]; };
 layout(std430, set = 0, binding = 4) writeonly buffer Partials { float partials[]; };
+// The input again, one value at a time: the partial last unit, the padding, a face field.
+layout(std430, set = 0, binding = 5) readonly buffer Input { float q[]; };
 layout(push_constant) uniform Push { ProjectForceParams params; };
 
 #include "ModeAccess.glsl"
@@ -65,35 +66,25 @@ vec4 inputQuad(uint first) {
 }
 
 // Adds the unit's word of each mode dotted with x = w q at its DOFs. `whole` (a constant at each
-// call): the unit's DOFs are all inside density q, read 8 floats a load.
+// call): the unit's DOFs all lie in density q's whole texels.
 void accumulate(uint unit, const bool whole) {
     vec4 x[4];  // four DOFs per vec4 (float32: the first two)
-    [[unroll]] for (uint h = 0; h < OCTETS; ++h) {
-        const uint octet = OCTETS * unit + h;
-        const u64vec4 weights = w[octet];
-        vec4 low, high;
-        if (whole) {
-            const u64vec4 values = qOctets[octet];
-            low = floatsOf(values.xy);
-            high = floatsOf(values.zw);
-        } else {
-            low = inputQuad(8u * octet);
-            high = inputQuad(8u * octet + 4u);
-        }
-        x[2 * h] = floatsOf(weights.xy) * low;
-        x[2 * h + 1] = floatsOf(weights.zw) * high;
+    [[unroll]] for (uint h = 0; h < 2 * OCTETS; ++h) {
+        const uint quad = 2u * OCTETS * unit + h;  // DOFs 4 quad ... 4 quad + 3
+        x[h] = floatTexel(wTexels, quad) * (whole ? floatTexel(qTexels, quad) : inputQuad(4u * quad));
     }
     const uint base = unitBase(unit, params.modeCount);
     [[unroll]] for (uint m = 0; m < MODES; ++m) {
         if (m >= modes) break;
-        const u64vec4 word = modeWords[base + (firstLocal + m) * TILE_LANES];
+        const uint word = base + (firstLocal + m) * TILE_LANES;
         if (HALF != 0u) {
-            vec4 low, high, low2, high2;
-            halvesOf(word.xy, low, high);
-            halvesOf(word.zw, low2, high2);
-            sum[m] += dot(low, x[0]) + dot(high, x[1]) + dot(low2, x[2]) + dot(high2, x[3]);
+            vec4 h0, h1, h2, h3;
+            modeHalves(word, h0, h1, h2, h3);
+            sum[m] += dot(h0, x[0]) + dot(h1, x[1]) + dot(h2, x[2]) + dot(h3, x[3]);
         } else {
-            sum[m] += dot(floatsOf(word.xy), x[0]) + dot(floatsOf(word.zw), x[1]);
+            vec4 f0, f1;
+            modeFloats(word, f0, f1);
+            sum[m] += dot(f0, x[0]) + dot(f1, x[1]);
         }
     }
 }
@@ -111,8 +102,8 @@ void main() {
     unitRange(lane, size, blockBegin, min(blockBegin + params.blockTiles, params.tileCount), begin, step, end);
 
     [[unroll]] for (uint m = 0; m < MODES; ++m) sum[m] = 0.0;
-    // Units wholly inside density q first (8 floats a load), then the rest (the partial last unit
-    // and the padding; all units of a face-field input) one DOF a load: two loops, as a branch per
+    // Units wholly inside density q's whole texels first, then the rest (the partial last unit and
+    // the padding; all units of a face-field input) one DOF a load: two loops, as a branch per
     // unit would run both sides on lavapipe.
     const uint wholeUnits = GATHER != 0u ? 0u : params.dofCount / (8u * OCTETS);
     uint unit = begin;

@@ -23,6 +23,7 @@
 // the modes unrolled: 64^3 N = 200 (five 40-mode chunks) float32 1.5-3.2x faster in each of seven
 // runs alternating with the previous version (101-312 -> 62-104 ms), 48^3 N <= 100 1.3-2x, one
 // chunk of 200 modes (256^2) no faster (0.6-1.25x; runs of 64 modes each, tried, were slower).
+// Then the modes and face indices fetched as texels (TexelAccess.glsl): README "Speed".
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
 #extension GL_EXT_control_flow_attributes : require
@@ -37,12 +38,12 @@ layout(constant_id = 3) const uint TO_FIELD = 1u;      // 1: write the faces, 0:
 layout(constant_id = 4) const uint MODES = 4u;         // the chunk's modes
 layout(constant_id = 5) const uint SKIP = 0u;          // the chunk's first mode % 4: its place in v's quads
 
-layout(std430, set = 0, binding = 0) readonly buffer Modes { u64vec4 modeWords[]; };
+layout(set = 0, binding = 0) uniform usamplerBuffer modeTexels;
 // Both hold a multiple of 4 floats (engine/kernels/ModeBuffer), read four at a time.
 layout(std430, set = 0, binding = 1) readonly buffer Scales { u64vec2 scales[]; };
 layout(std430, set = 0, binding = 2) readonly buffer State { u64vec2 v[]; };
-// Zero-padded to whole tiles (engine/kernels/VelocityReconstruction), read four at a time.
-layout(std430, set = 0, binding = 3) readonly buffer Faces { u64vec2 faceQuads[]; };
+// Zero-padded to whole tiles (engine/kernels/VelocityReconstruction), four a texel.
+layout(set = 0, binding = 3) uniform usamplerBuffer faceQuads;
 layout(std430, set = 0, binding = 4) writeonly buffer FaceField { float field[]; };
 // The sums over the chunks so far, DOF order, 8 floats a word (as long as the padded faces).
 layout(std430, set = 0, binding = 5) buffer Scratch { u64vec4 scratch[]; };
@@ -51,13 +52,17 @@ layout(push_constant) uniform Push { ReconstructVelocityParams params; };
 #include "FaceLocation.glsl"
 #include "ModeAccess.glsl"
 
+/* Four float32 values stored in 16 bytes. */
+vec4 floatsOf(u64vec2 vector) {
+    return vec4(uintBitsToFloat(unpack32(vector.x)), uintBitsToFloat(unpack32(vector.y)));
+}
+
 const uint OCTETS = HALF + 1u;                  // 8-DOF octets per unit
 const uint QUADS = (SKIP + MODES + 3u) / 4u;    // quads of v the chunk's modes lie in
 
 // Writes the sums of DOFs 4 quad ... 4 quad + 3 to their faces.
 void store(uint quad, vec4 sum) {
-    const u64vec2 word = faceQuads[quad];
-    const uvec4 face = uvec4(unpack32(word.x), unpack32(word.y));
+    const uvec4 face = texelFetch(faceQuads, int(quad));
     [[unroll]] for (uint j = 0; j < 4; ++j) {
         if (4u * quad + j >= params.dofCount) break;  // padding
         const uint axis = faceAxis(face[j], params.faceStart1, params.faceStart2);
@@ -89,18 +94,19 @@ void main() {
         }
         [[unroll]] for (uint j = 0; j < MODES; ++j) {
             const float cj = c[(SKIP + j) / 4u][(SKIP + j) % 4u];
-            const u64vec4 word = modeWords[base + j * TILE_LANES];
+            const uint word = base + j * TILE_LANES;
             if (HALF != 0u) {
-                vec4 low, high;
-                halvesOf(word.xy, low, high);
-                sum[0] += cj * low;
-                sum[1] += cj * high;
-                halvesOf(word.zw, low, high);
-                sum[2] += cj * low;
-                sum[3] += cj * high;
+                vec4 h0, h1, h2, h3;
+                modeHalves(word, h0, h1, h2, h3);
+                sum[0] += cj * h0;
+                sum[1] += cj * h1;
+                sum[2] += cj * h2;
+                sum[3] += cj * h3;
             } else {
-                sum[0] += cj * floatsOf(word.xy);
-                sum[1] += cj * floatsOf(word.zw);
+                vec4 f0, f1;
+                modeFloats(word, f0, f1);
+                sum[0] += cj * f0;
+                sum[1] += cj * f1;
             }
         }
         if (TO_FIELD != 0u) {

@@ -50,12 +50,13 @@ DeviceCoefficients::DeviceCoefficients(const VulkanContext& context,
     if (const auto* dense = dynamic_cast<const DenseCoefficients*>(&coefficients)) {
         const std::size_t rowOctets = paddedSize(mN) / 8, rowBytes = paddedSize(mN) * sizeof(float);
         const std::size_t tileBytes = kPairTileRows * rowBytes;
-        const std::size_t rowsPerChunk = context.storageBufferLimit() / tileBytes * kPairTileRows;
+        // The pair sums read a chunk as texels: within the texel limit too.
+        const std::size_t rowsPerChunk = context.texelBufferLimit() / tileBytes * kPairTileRows;
         if (rowsPerChunk == 0)
             throw Error("modal contraction: " + std::to_string(kPairTileRows) + " rows of N = " +
                         std::to_string(n) + " coefficients exceed the " +
-                        std::to_string(context.storageBufferLimit()) +
-                        "-byte storage buffer limit of " + context.deviceName());
+                        std::to_string(context.texelBufferLimit()) +
+                        "-byte buffer limit of " + context.deviceName());
         const std::vector<double>& packed = dense->packed();
         for (std::size_t first = 0; first < pairCount(n); first += rowsPerChunk) {
             const std::size_t rows = std::min(rowsPerChunk, pairCount(n) - first);

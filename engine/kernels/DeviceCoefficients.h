@@ -7,8 +7,8 @@
 ///   2. combine    out_k = Σ_{j>k} s(k,j) b_j − Σ_{j<k} s(j,k) b_j   (antisymmetry).
 /// Dense coefficients are stored in tiles of PAIR_TILE_ROWS pair rows (shaders/modal_pair_sums.comp
 /// has the layout and why) and split into chunks of whole tiles when they exceed the device's
-/// storage buffer limit (lavapipe: 128 MiB, i.e. N ≳ 400); sparse ones are uploaded as their CSR
-/// rows.
+/// buffer limit (VulkanContext::texelBufferLimit; lavapipe: 128 MiB, i.e. N ≳ 400); sparse ones
+/// are uploaded as their CSR rows.
 
 #include <cstdint>
 #include <optional>

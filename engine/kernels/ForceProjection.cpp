@@ -88,7 +88,7 @@ ForceProjectionKernel::ForceProjectionKernel(const VulkanContext& context, const
       mDofCount(std::uint32_t(cache.faces.size())),
       mModeCount(std::uint32_t(cache.velocity.modes.cols())),
       mFaceTotal(std::uint64_t(MacGrid::fromSpec(cache.grid).faceTotal())),
-      mBlockSize(blockSizeFor(context.requireShaderInt64("the force projection"), mDofCount, mModeCount, options)),
+      mBlockSize(blockSizeFor(context, mDofCount, mModeCount, options)),
       mBlockCount((mDofCount + mBlockSize - 1) / mBlockSize),
       mFaces(uploadDofFaces(context, cache)),
       mWeights(weightBuffer(context, cache, quantity)),
@@ -117,7 +117,8 @@ void ForceProjectionKernel::record(CommandSequence& sequence, const ModeBuffer& 
         params.firstMode = chunk.firstMode;
         params.modeCount = chunk.modeCount;
         const std::uint32_t slots = slotsFor(chunk.modeCount);
-        const std::array<const DeviceBuffer*, 5> buffers{&chunk.buffer, &q, &mWeights, &mFaces, &mPartials};
+        // q twice: its whole texels (binding 1) and one float at a time (binding 5).
+        const std::array<const DeviceBuffer*, 6> buffers{&chunk.buffer, &q, &mWeights, &mFaces, &mPartials, &q};
         sequence.dispatch(partialKernel(modes.precision(), slots), buffers, params,
                           (chunk.modeCount + slots - 1) / slots * mBlockCount);
     }
@@ -133,9 +134,9 @@ const ComputeKernel& ForceProjectionKernel::partialKernel(ModePrecision precisio
         const std::uint32_t gather = mQuantity == FaceQuantity::FaceField;
         found = mPartialKernels
                     .try_emplace({half, slots}, mContext,
-                                 ComputeKernelSpec{"project_force", project_force_spv, 5,
+                                 ComputeKernelSpec{"project_force", project_force_spv, 6,
                                                    sizeof(shaders::ProjectForceParams), mWorkgroupSize,
-                                                   {std::uint32_t(half), gather, slots}})
+                                                   {std::uint32_t(half), gather, slots}, {0, 1, 2}})
                     .first;
     }
     return found->second;

@@ -8,8 +8,8 @@
 /// partial sum per mode and block (one dispatch per chunk of the ModeBuffer); pass 2 adds each
 /// mode's partial sums in a fixed order and applies the mode's scale. Blocks keep a projection
 /// parallel across a GPU however few modes there are: a 64³ basis (~750k DOFs) with 100 modes
-/// makes ~760 workgroups of 2048 DOFs. f stays on the device for the next modal step. The kernel
-/// reads 64-bit words: the device needs shaderInt64.
+/// makes ~760 workgroups of 2048 DOFs. f stays on the device for the next modal step. The modes,
+/// weights and density are read as texels (shaders/TexelAccess.glsl).
 
 #include <cstdint>
 #include <map>
@@ -41,7 +41,7 @@ public:
     /// Density: one force density per DOF (ForceFieldKernel's output), weights h_axis;
     /// FaceField: a whole-grid face field (ReconstructionKernel's layout) read at the DOF faces,
     /// weights area × ⋆ (the exact inverse of the reconstruction).
-    /// @throw modeflow::Error if the device lacks shaderInt64, there are more modes than the
+    /// @throw modeflow::Error if there are more modes than the
     /// device's group count limit, the workgroup needs more shared memory than the device has
     /// (64 floats per invocation), or a creation call fails.
     ForceProjectionKernel(const VulkanContext& context, const BasisCache& cache, FaceQuantity quantity,

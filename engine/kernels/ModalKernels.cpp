@@ -15,13 +15,10 @@ namespace modeflow::vulkan {
 namespace {
 
 const VulkanContext& requireFeatures(const VulkanContext& context) {
-    const char* missing = !context.hasSubgroupArithmetic()
-                              ? "subgroup arithmetic in compute shaders"
-                          : !context.hasShaderInt64() ? "64-bit integers in shaders (shaderInt64)"
-                                                      : nullptr;
-    if (missing)
-        throw Error("Vulkan device " + context.deviceName() + " lacks " + missing +
-                    ", which the modal step needs; run with --device cpu");
+    if (!context.hasSubgroupArithmetic())
+        throw Error("Vulkan device " + context.deviceName() +
+                    " lacks subgroup arithmetic in compute shaders, which the modal step needs; "
+                    "run with --device cpu");
     return context;
 }
 
@@ -29,7 +26,8 @@ const VulkanContext& requireFeatures(const VulkanContext& context) {
 
 ModalKernels::ModalKernels(const VulkanContext& context)
     : pairSums(requireFeatures(context),
-               {"modal_pair_sums", modal_pair_sums_spv, 3, sizeof(shaders::PairSumsParams), 64}),
+               {"modal_pair_sums", modal_pair_sums_spv, 3, sizeof(shaders::PairSumsParams), 64,
+                {}, {0, 1}}),
       sparsePairSums(context, {"modal_pair_sums_sparse", modal_pair_sums_sparse_spv, 6,
                                sizeof(shaders::SparsePairSumsParams), 64}),
       combine(context, {"modal_combine", modal_combine_spv, 3, sizeof(shaders::CombineParams), 64}),

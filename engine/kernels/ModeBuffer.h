@@ -7,16 +7,17 @@
 /// the factor kept per mode (scales()): ⋆-orthonormal fluxes of fine 3D grids are ~1e-4, where
 /// float16 is already subnormal.
 ///
-/// Layout, for the kernels' loads (shaders/ModeAccess.glsl says why): each mode is cut into
+/// Layout, for the kernels' fetches (shaders/ModeAccess.glsl says why): each mode is cut into
 /// 16-byte vectors (4 float32 or 8 float16 DOFs) and zero-padded to whole tiles of kTileVectors
 /// vectors (a padded DOF adds 0 to every sum); a chunk holds tile 0 of each of its modes in mode
 /// order, then tile 1 of each, and so on. One tile of one mode is what kTileLanes neighbouring
-/// invocations read, vectors kTileRows·lane … kTileRows·lane + kTileRows − 1 of it in one
-/// 32-byte load.
+/// invocations read, vectors kTileRows·lane … kTileRows·lane + kTileRows − 1 of it (one texel
+/// each).
 ///
-/// A basis larger than the device's storage buffer limit is split by whole modes into several
-/// buffers (chunks), a multiple of 4 modes each where the limit allows it (the kernels read the
-/// modal state four modes at a time); the kernels take one dispatch per chunk.
+/// A basis larger than the device's buffer limit (VulkanContext::texelBufferLimit: the kernels read
+/// it as texels) is split by whole modes into several buffers (chunks), a multiple of 4 modes each
+/// where the limit allows it (the kernels read the modal state four modes at a time); the kernels
+/// take one dispatch per chunk.
 
 #include <cstdint>
 #include <vector>
@@ -34,8 +35,7 @@ enum class ModePrecision { Float32, Float16 };
 class ModeBuffer {
 public:
     /// Invocations that share a tile (lavapipe's SIMD width with AVX2: its batches of
-    /// invocations then read one contiguous stream) and the vectors each reads per mode (one
-    /// 32-byte load).
+    /// invocations then read one contiguous stream) and the vectors (texels) each reads per mode.
     static constexpr std::uint32_t kTileLanes = 8;
     static constexpr std::uint32_t kTileRows = 2;
     static constexpr std::uint32_t kTileVectors = kTileLanes * kTileRows;
@@ -48,7 +48,7 @@ public:
 
     /// Uploads `modes` (DOFs × N, one column per mode, e.g. BasisCache::velocity.modes).
     /// @throw modeflow::Error when there are no modes or DOFs, more than 2^32 DOFs, or a single
-    /// mode exceeds the storage buffer limit.
+    /// mode exceeds the buffer limit.
     ModeBuffer(const VulkanContext& context, const Eigen::MatrixXd& modes,
                ModePrecision precision = ModePrecision::Float32);
 

@@ -97,7 +97,7 @@ const ComputeKernel& ReconstructionKernel::kernel(const std::array<std::uint32_t
                     .try_emplace(key, mContext,
                                  ComputeKernelSpec{"reconstruct_velocity", reconstruct_velocity_spv, 6,
                                                    sizeof(shaders::ReconstructVelocityParams), mWorkgroupSize,
-                                                   {key.begin(), key.end()}})
+                                                   {key.begin(), key.end()}, {0, 3}})
                     .first;
     return found->second;
 }

@@ -1,5 +1,6 @@
 #include "engine/vulkan/ComputeKernel.h"
 
+#include <algorithm>
 #include <vector>
 
 #include "engine/format/Error.h"
@@ -24,10 +25,15 @@ ComputeKernel::ComputeKernel(const VulkanContext& context, const ComputeKernelSp
                     " bytes of push constants (must be a multiple of 4 and at most " +
                     std::to_string(limits.maxPushConstantsSize) + ")");
 
+    for (const std::uint32_t b : spec.texelBindings)
+        if (b >= spec.bufferCount)
+            throw Error("kernel " + spec.name + ": texel binding " + std::to_string(b) +
+                        " is not among its " + std::to_string(spec.bufferCount) + " bindings");
     std::vector<VkDescriptorSetLayoutBinding> bindings(spec.bufferCount);
     for (std::uint32_t b = 0; b < spec.bufferCount; ++b) {
         bindings[b].binding = b;
-        bindings[b].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+        bindings[b].descriptorType = isTexelBinding(b) ? VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER
+                                                       : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
         bindings[b].descriptorCount = 1;
         bindings[b].stageFlags = VK_SHADER_STAGE_COMPUTE_BIT;
     }
@@ -85,6 +91,11 @@ ComputeKernel::ComputeKernel(const VulkanContext& context, const ComputeKernelSp
     mPipeline = DeviceHandle<VkPipeline>(device, pipeline, vkDestroyPipeline);
 }
 
+bool ComputeKernel::isTexelBinding(std::uint32_t binding) const {
+    return std::find(mSpec.texelBindings.begin(), mSpec.texelBindings.end(), binding) !=
+           mSpec.texelBindings.end();
+}
+
 void ComputeKernel::bind(VkCommandBuffer commandBuffer,
                          std::span<const DeviceBuffer* const> buffers,
                          std::span<const std::byte> pushConstants) const {
@@ -97,14 +108,27 @@ void ComputeKernel::bind(VkCommandBuffer commandBuffer,
                     " expected");
 
     std::vector<VkDescriptorBufferInfo> infos(buffers.size());
+    std::vector<VkBufferView> views(buffers.size());
     std::vector<VkWriteDescriptorSet> writes(buffers.size());
-    for (std::size_t b = 0; b < buffers.size(); ++b) {
-        infos[b] = {buffers[b]->handle(), 0, VK_WHOLE_SIZE};
+    for (std::uint32_t b = 0; b < buffers.size(); ++b) {
         writes[b].sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
-        writes[b].dstBinding = std::uint32_t(b);
+        writes[b].dstBinding = b;
         writes[b].descriptorCount = 1;
-        writes[b].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-        writes[b].pBufferInfo = &infos[b];
+        if (isTexelBinding(b)) {
+            views[b] = buffers[b]->texelView();
+            if (views[b] == VK_NULL_HANDLE)
+                throw Error("kernel " + mSpec.name + ": binding " + std::to_string(b) +
+                            " reads buffer \"" + buffers[b]->name() + "\" (" +
+                            std::to_string(buffers[b]->bytes()) +
+                            " bytes) as 16-byte texels, but it is smaller than one texel or "
+                            "larger than the texel buffer limit");
+            writes[b].descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
+            writes[b].pTexelBufferView = &views[b];
+        } else {
+            infos[b] = {buffers[b]->handle(), 0, VK_WHOLE_SIZE};
+            writes[b].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+            writes[b].pBufferInfo = &infos[b];
+        }
     }
     vkCmdBindPipeline(commandBuffer, VK_PIPELINE_BIND_POINT_COMPUTE, mPipeline.get());
     mContext.cmdPushDescriptorSet()(commandBuffer, VK_PIPELINE_BIND_POINT_COMPUTE,

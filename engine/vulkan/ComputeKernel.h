@@ -1,7 +1,8 @@
 #pragma once
 /// @file ComputeKernel.h
 /// One compute pipeline built from embedded SPIR-V (Kompute's Algorithm): a descriptor set
-/// layout of N storage buffers (bindings 0…N−1 of set 0), a push-constant block, the
+/// layout of N buffers (bindings 0…N−1 of set 0: storage buffers, or uniform texel buffers of
+/// 16-byte RGBA32UI texels for the read-only streams named in texelBindings), a push-constant block, the
 /// workgroup size as specialization constant 0 and optional further uint constants 1…k (fixed at
 /// pipeline creation, so a shader's branches and loop counts on them fold away: lavapipe executes
 /// both sides of a runtime branch). Shaders declare
@@ -27,10 +28,13 @@ class VulkanContext;
 struct ComputeKernelSpec {
     std::string name;                      ///< for error messages
     std::span<const std::uint32_t> spirv;  ///< SPIR-V words (a glslangValidator --vn array)
-    std::uint32_t bufferCount = 0;         ///< storage buffers at bindings 0…N−1
+    std::uint32_t bufferCount = 0;         ///< buffers at bindings 0…N−1
     std::uint32_t pushConstantBytes = 0;   ///< size of the push-constant block (multiple of 4)
     std::uint32_t workgroupSize = 64;      ///< local_size_x, specialization constant 0
     std::vector<std::uint32_t> constants = {};  ///< specialization constants 1…k, in order
+    /// The bindings a shader reads as `usamplerBuffer` (DeviceBuffer::texelView), the rest being
+    /// storage buffers. For read-only streams: lavapipe gathers texels with vector loads.
+    std::vector<std::uint32_t> texelBindings = {};
 };
 
 class ComputeKernel {
@@ -39,10 +43,12 @@ public:
     /// constants exceed maxPushConstantsSize, or a creation call fails (with its VkResult).
     ComputeKernel(const VulkanContext& context, const ComputeKernelSpec& spec);
 
-    /// Binds the pipeline and `buffers` (exactly bufferCount, in binding order), pushes
+    /// Binds the pipeline and `buffers` (exactly bufferCount, in binding order; those at texel
+    /// bindings through their texel views), pushes
     /// `pushConstants` (exactly pushConstantBytes) and dispatches `groupCount` workgroups along x.
     /// Records only: barriers and submission belong to CommandSequence.
-    /// @throw modeflow::Error on a wrong buffer count, push size or a group count over the limit.
+    /// @throw modeflow::Error on a wrong buffer count, push size, a texel binding given a buffer
+    /// without a texel view, or a group count over the limit.
     void record(VkCommandBuffer commandBuffer, std::span<const DeviceBuffer* const> buffers,
                 std::span<const std::byte> pushConstants, std::uint32_t groupCount) const;
 
@@ -65,6 +71,7 @@ public:
     std::uint32_t workgroupSize() const { return mSpec.workgroupSize; }
 
 private:
+    bool isTexelBinding(std::uint32_t binding) const;
     /// Binds the pipeline and buffers and pushes the constants, after checking their counts.
     void bind(VkCommandBuffer commandBuffer, std::span<const DeviceBuffer* const> buffers,
               std::span<const std::byte> pushConstants) const;

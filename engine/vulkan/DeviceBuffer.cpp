@@ -42,8 +42,10 @@ DeviceBuffer::DeviceBuffer(const VulkanContext& context, VkDeviceSize bytes, std
     VkBufferCreateInfo info{};
     info.sType = VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO;
     info.size = bytes;
+    const bool texels = bytes >= kTexelBytes && bytes <= context.texelBufferLimit();
     info.usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT |
-                 VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
+                 VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT |
+                 (texels ? VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT : 0);
     info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
     VkBuffer buffer = VK_NULL_HANDLE;
     check(vkCreateBuffer(device, &info, nullptr, &buffer), "vkCreateBuffer");
@@ -69,6 +71,17 @@ DeviceBuffer::DeviceBuffer(const VulkanContext& context, VkDeviceSize bytes, std
     mMemory = DeviceHandle<VkDeviceMemory>(device, memory, vkFreeMemory);
     check(vkBindBufferMemory(device, buffer, memory, 0), "vkBindBufferMemory");
     if (mapped) check(vkMapMemory(device, memory, 0, VK_WHOLE_SIZE, 0, &mMapped), "vkMapMemory");
+    if (texels) {
+        // RGBA32UI texel buffers are mandatory in Vulkan; shaders reinterpret the bits.
+        VkBufferViewCreateInfo view{};
+        view.sType = VK_STRUCTURE_TYPE_BUFFER_VIEW_CREATE_INFO;
+        view.buffer = buffer;
+        view.format = VK_FORMAT_R32G32B32A32_UINT;
+        view.range = bytes / kTexelBytes * kTexelBytes;
+        VkBufferView texelView = VK_NULL_HANDLE;
+        check(vkCreateBufferView(device, &view, nullptr, &texelView), "vkCreateBufferView");
+        mTexelView = DeviceHandle<VkBufferView>(device, texelView, vkDestroyBufferView);
+    }
 }
 
 void DeviceBuffer::write(const void* source, VkDeviceSize offset, VkDeviceSize bytes) {

@@ -5,6 +5,12 @@
 /// download are plain copies. On a discrete GPU it lives in device-local memory, which kernels
 /// read at full speed but the host cannot map: upload and download then go through a temporary
 /// host-visible staging buffer and a copy command (VulkanContext::usesStaging()).
+///
+/// A buffer of at least one 16-byte texel within VulkanContext::texelBufferLimit() also has a
+/// texel view (RGBA32UI) over its whole texels, so kernels may read it as a uniform texel buffer
+/// (`usamplerBuffer`, ComputeKernelSpec::texelBindings): lavapipe fetches texels with vector
+/// gathers, about 3× the bandwidth of its storage buffer loads (shaders/TexelAccess.glsl). Bytes
+/// past the last whole texel read as zero there.
 
 #include <cstddef>
 #include <span>
@@ -43,9 +49,15 @@ public:
         return buffer;
     }
 
+    /// Bytes per texel of texelView().
+    static constexpr VkDeviceSize kTexelBytes = 16;
+
     VkBuffer handle() const { return mBuffer.get(); }
     VkDeviceSize bytes() const { return mBytes; }
     const std::string& name() const { return mName; }
+    /// The RGBA32UI view over the buffer's whole 16-byte texels, or VK_NULL_HANDLE when it is
+    /// smaller than one texel or larger than VulkanContext::texelBufferLimit().
+    VkBufferView texelView() const { return mTexelView.get(); }
     /// True when the host reads and writes the memory directly (no staging copy).
     bool isMapped() const { return mMapped != nullptr; }
 
@@ -79,6 +91,7 @@ private:
     // Memory before buffer: the buffer is destroyed first, then its memory is freed (which unmaps).
     DeviceHandle<VkDeviceMemory> mMemory;
     DeviceHandle<VkBuffer> mBuffer;
+    DeviceHandle<VkBufferView> mTexelView;  // destroyed before the buffer
     void* mMapped = nullptr;
 };
 

@@ -81,6 +81,9 @@ public:
     /// The largest storage buffer a kernel may bind: maxStorageBufferRange, or the smaller
     /// VulkanContextOptions::storageBufferLimit.
     VkDeviceSize storageBufferLimit() const { return mStorageBufferLimit; }
+    /// The largest buffer a kernel may also read as a uniform texel buffer of 16-byte texels
+    /// (DeviceBuffer::texelView): storageBufferLimit(), or maxTexelBufferElements texels if less.
+    VkDeviceSize texelBufferLimit() const { return mTexelBufferLimit; }
 
     /// The chosen device's name.
     const std::string& deviceName() const { return mSelection.name; }
@@ -112,6 +115,7 @@ private:
     VkPhysicalDeviceMemoryProperties mMemoryProperties{};
     std::uint32_t mTimestampValidBits = 0;
     VkDeviceSize mStorageBufferLimit = 0;
+    VkDeviceSize mTexelBufferLimit = 0;
     bool mUsesStaging = false;
     bool mShaderInt64 = false;
     std::uint32_t mSubgroupSize = 1;

@@ -2,7 +2,9 @@
 /// DeviceCoefficients::recordApply (shaders/modal_pair_sums*.comp + modal_combine.comp) against
 /// the CPU reference StructuralCoefficients::apply: dense, sparse, and dense split into chunks.
 
+#include <array>
 #include <cmath>
+#include <string>
 #include <limits>
 #include <memory>
 #include <vector>
@@ -14,6 +16,7 @@
 #include "engine/kernels/ModalKernels.h"
 #include "engine/vulkan/CommandSequence.h"
 #include "engine/vulkan/DeviceBuffer.h"
+#include "shaders/ModalStepParams.h"
 #include "tests/engine/RandomCoefficients.h"
 #include "tests/engine/VulkanTestContext.h"
 
@@ -117,6 +120,28 @@ TEST_P(ModalContractionKernelTest, TimestampsGiveOneDurationPerDispatch) {
         std::cout << "N = 150 on " << context().deviceName() << ": pair sums " << times[0]
                   << " ms, combine " << times[1] << " ms\n";
     }
+}
+
+TEST_P(ModalContractionKernelTest, TexelBindingOfABufferWithoutTexelsIsRefusedClearly) {
+    // The pair sums read the coefficients and `a` as texels (binding 0 and 1): a buffer smaller
+    // than one 16-byte texel has no texel view, and binding it must say so, not read zeros.
+    const ModalKernels kernels(context());
+    const DeviceBuffer tiny(context(), 12, "tiny coefficients");
+    const DeviceBuffer a(context(), 32, "a"), sums(context(), 64, "sums");
+    EXPECT_EQ(tiny.texelView(), VK_NULL_HANDLE);
+    ASSERT_NE(a.texelView(), VK_NULL_HANDLE);
+    CommandSequence sequence(context());
+    const std::array<const DeviceBuffer*, 3> buffers{&tiny, &a, &sums};
+    try {
+        sequence.dispatch(kernels.pairSums, buffers, shaders::PairSumsParams{1, 0, 1, 0}, 1);
+        FAIL() << "a buffer without a texel view was bound as texels";
+    } catch (const Error& e) {
+        const std::string message = e.what();
+        EXPECT_NE(message.find("tiny coefficients"), std::string::npos) << message;
+        EXPECT_NE(message.find("texel"), std::string::npos) << message;
+        EXPECT_NE(message.find("binding 0"), std::string::npos) << message;
+    }
+    expectNoValidationMessages();
 }
 
 INSTANTIATE_TEST_SUITE_P(PlainAndValidated, ModalContractionKernelTest, ::testing::Bool(),

@@ -1,6 +1,7 @@
 /// @file VulkanContextTest.cpp
 /// The Vulkan foundation: device choice and its explanation, validation switch, buffers.
 
+#include <algorithm>
 #include <numeric>
 #include <vector>
 
@@ -131,6 +132,18 @@ TEST_P(VulkanContextTest, BufferOverMaxStorageBufferRangeIsRefusedClearly) {
         EXPECT_NE(message.find("too big"), std::string::npos) << message;
     }
     EXPECT_THROW(DeviceBuffer(context(), 0, "empty"), Error);
+}
+
+TEST_P(VulkanContextTest, BuffersOfWholeTexelsCanBeReadAsTexels) {
+    // Kernels read read-only streams as uniform texel buffers of 16-byte texels (RGBA32UI).
+    const VkDeviceSize texelLimit =
+        VkDeviceSize(context().properties().limits.maxTexelBufferElements) * DeviceBuffer::kTexelBytes;
+    EXPECT_EQ(context().texelBufferLimit(), std::min(context().storageBufferLimit(), texelLimit));
+    EXPECT_NE(DeviceBuffer(context(), 16, "one texel").texelView(), VK_NULL_HANDLE);
+    // The view covers the whole texels; the ragged tail is read some other way.
+    EXPECT_NE(DeviceBuffer(context(), 20, "one texel and a float").texelView(), VK_NULL_HANDLE);
+    EXPECT_EQ(DeviceBuffer(context(), 12, "three floats").texelView(), VK_NULL_HANDLE);
+    expectNoValidationMessages();
 }
 
 INSTANTIATE_TEST_SUITE_P(Vulkan, VulkanContextTest, ::testing::Bool(), testing::validationName);
