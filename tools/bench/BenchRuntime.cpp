@@ -8,10 +8,12 @@
 /// reconstruction's GB/s over the float32 basis against Eigen's GEMV Ψv on the same data; then the
 /// two basis kernels alone (reconstruction Ψv and force projection Ψᵀx, float32 and float16
 /// modes) on the same grids, their GB/s over the float32 basis against Eigen's float GEMVs. Times
-/// are medians over repeated dispatches or steps. The grid tables use synthetic bases (random
+/// are medians over repeated dispatches or steps; every device round is followed by one Eigen
+/// GEMV, so the two meet the same machine (on a shared 2-core VM the load and the cache left to
+/// us vary 2× within minutes, and so did the ratio when all device runs came first). The grid tables use synthetic bases (random
 /// modes on every interior face, random coefficients): kernel speed does not depend on the
 /// basis being an eigenbasis, and a 64³ eigenbasis takes minutes to compute.
-/// Run: bench_runtime [--device INDEX] [--repeat R] [--skip-grids] [--kernels-only].
+/// Run: bench_runtime [--device INDEX] [--repeat R] [--only contraction|steps|runtime|kernels].
 
 #include <algorithm>
 #include <array>
@@ -22,6 +24,8 @@
 #include <cstring>
 #include <random>
 #include <string>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Core>
@@ -56,24 +60,47 @@ DenseCoefficients randomCoefficients(int n) {
     return DenseCoefficients(n, std::move(packed));
 }
 
-/// Median seconds of Eigen's float GEMV over the packed (pairs × N) row-major matrix.
-double eigenGemvSeconds(const DenseCoefficients& c, int repeat) {
-    const int n = c.size();
-    const auto rows = Eigen::Index(pairCount(std::size_t(n)));
-    const std::vector<float> packed(c.packed().begin(), c.packed().end());
-    const Eigen::Map<const Eigen::Matrix<float, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>> matrix(
-        packed.data(), rows, n);
-    const Eigen::VectorXf a = Eigen::VectorXf::Random(n);
-    Eigen::VectorXf sums(rows);
-    std::vector<double> seconds;
-    for (int r = 0; r < repeat; ++r) {
-        const auto start = std::chrono::steady_clock::now();
-        sums.noalias() = matrix * a;
-        seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+/// Seconds of one call of `work`.
+template <typename Work>
+double secondsOf(Work work) {
+    const auto start = std::chrono::steady_clock::now();
+    work();
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+/// Eigen's float GEMV over the packed (pairs × N) row-major coefficient matrix, one call a run.
+class PackedGemv {
+public:
+    explicit PackedGemv(const DenseCoefficients& c)
+        : mPacked(c.packed().begin(), c.packed().end()),
+          mRows(Eigen::Index(pairCount(std::size_t(c.size())))),
+          mA(Eigen::VectorXf::Random(c.size())),
+          mSums(mRows) {}
+    double seconds() {
+        const Eigen::Map<const Eigen::Matrix<float, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>> matrix(
+            mPacked.data(), mRows, mA.size());
+        const double s = secondsOf([&] { mSums.noalias() = matrix * mA; });
+        volatile float sink = mSums[0];
+        (void)sink;
+        return s;
     }
-    volatile float sink = sums.sum();
-    (void)sink;
-    return median(seconds);
+
+private:
+    std::vector<float> mPacked;
+    Eigen::Index mRows;
+    Eigen::VectorXf mA, mSums;
+};
+
+/// Medians over `repeat` rounds of `device()` (ms) and `eigen()` (seconds, returned as ms), each
+/// round running one then the other.
+template <typename Device, typename Eigen>
+std::pair<double, double> pairedMediansMs(int repeat, Device device, Eigen eigen) {
+    std::vector<double> deviceMs, eigenMs;
+    for (int r = 0; r < repeat; ++r) {
+        deviceMs.push_back(device());
+        eigenMs.push_back(eigen() * 1e3);
+    }
+    return {median(deviceMs), median(eigenMs)};
 }
 
 void contractionTable(const VulkanContext& context, int repeat) {
@@ -87,19 +114,21 @@ void contractionTable(const VulkanContext& context, int repeat) {
         const std::vector<float> ones(paddedSize(n), 1.0f);
         const DeviceBuffer a = DeviceBuffer::fromValues<float>(context, ones, "a");
         DeviceBuffer out(context, std::size_t(n) * sizeof(float), "out");
-        CommandSequence sequence(context, true, std::uint32_t(2 * repeat));
-        for (int r = 0; r < repeat; ++r) device.recordApply(sequence, kernels, a, a, out);
-        sequence.submitAndWait();
-        std::vector<double> sums, combines;
-        for (int r = 0; r < repeat; ++r) {
-            sums.push_back(sequence.dispatchTimesMs()[2 * r]);
-            combines.push_back(sequence.dispatchTimesMs()[2 * r + 1]);
-        }
+        PackedGemv gemv(c);
+        std::vector<double> combines;
+        const auto [sumsMs, eigenMs] = pairedMediansMs(
+            repeat,
+            [&] {
+                CommandSequence sequence(context, true, 2);
+                device.recordApply(sequence, kernels, a, a, out);
+                sequence.submitAndWait();
+                combines.push_back(sequence.dispatchTimesMs()[1]);
+                return sequence.dispatchTimesMs()[0];
+            },
+            [&] { return gemv.seconds(); });
         const double bytes = double(device.streamedBytes());
-        const double deviceSeconds = median(sums) * 1e-3;
-        const double eigenSeconds = eigenGemvSeconds(c, repeat);
-        const double deviceRate = bytes / deviceSeconds * 1e-9, eigenRate = bytes / eigenSeconds * 1e-9;
-        std::printf("%5d %10.2f %12.3f %10.3f %12.2f %12.2f %7.0f%%\n", n, bytes * 1e-6, median(sums),
+        const double deviceRate = bytes / sumsMs * 1e-6, eigenRate = bytes / eigenMs * 1e-6;
+        std::printf("%5d %10.2f %12.3f %10.3f %12.2f %12.2f %7.0f%%\n", n, bytes * 1e-6, sumsMs,
                     median(combines), deviceRate, eigenRate, 100.0 * deviceRate / eigenRate);
     }
 }
@@ -172,22 +201,29 @@ SyntheticScene syntheticScene(int dim, int cells, int modes) {
     return scene;
 }
 
-/// Median seconds of Eigen's float GEMV Ψv (or Ψᵀx when `transposed`) over the DOFs × N basis.
-double eigenGemvSeconds(const Eigen::MatrixXd& modes, int repeat, bool transposed) {
-    const Eigen::MatrixXf basis = modes.cast<float>();
-    const Eigen::VectorXf v = Eigen::VectorXf::Random(transposed ? basis.rows() : basis.cols());
-    Eigen::VectorXf out(transposed ? basis.cols() : basis.rows());
-    std::vector<double> seconds;
-    for (int r = 0; r < repeat; ++r) {
-        const auto start = std::chrono::steady_clock::now();
-        if (transposed) out.noalias() = basis.transpose() * v;
-        else out.noalias() = basis * v;
-        seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+/// Eigen's float GEMV Ψv (or Ψᵀx when `transposed`) over the DOFs × N basis, one call a run.
+class BasisGemv {
+public:
+    BasisGemv(const Eigen::MatrixXd& modes, bool transposed)
+        : mBasis(modes.cast<float>()),
+          mTransposed(transposed),
+          mIn(Eigen::VectorXf::Random(transposed ? modes.rows() : modes.cols())),
+          mOut(transposed ? modes.cols() : modes.rows()) {}
+    double seconds() {
+        const double s = secondsOf([&] {
+            if (mTransposed) mOut.noalias() = mBasis.transpose() * mIn;
+            else mOut.noalias() = mBasis * mIn;
+        });
+        volatile float sink = mOut[0];
+        (void)sink;
+        return s;
     }
-    volatile float sink = out.sum();
-    (void)sink;
-    return median(seconds);
-}
+
+private:
+    Eigen::MatrixXf mBasis;
+    bool mTransposed;
+    Eigen::VectorXf mIn, mOut;
+};
 
 /// The grids of the runtime and basis kernel tables.
 struct Grid {
@@ -220,41 +256,40 @@ void runtimeTable(const VulkanContext& context, int repeat) {
             v *= 0.05 / (settings.dt * r.norm() / v.norm());  // a twentieth of a turnover per step
             simulation.setVelocity(v);
             simulation.advanceFrame();  // warm-up
-            std::vector<double> forces, modal, recon, advect, step;
+            std::vector<double> forces, modal, advect, step;
             int iterations = 0;
-            for (int r2 = 0; r2 < repeat; ++r2) {
-                const FrameStats stats = simulation.advanceFrame();
-                forces.push_back(stats.forcesMs);
-                modal.push_back(stats.modalMs);
-                recon.push_back(stats.reconstructionMs);
-                advect.push_back(stats.advectionMs);
-                step.push_back(stats.forcesMs + stats.modalMs + stats.reconstructionMs + stats.advectionMs);
-                iterations = std::max(iterations, stats.maxIterations);
-            }
+            BasisGemv gemv(scene.cache.velocity.modes, false);
+            const auto [reconMs, eigenMs] = pairedMediansMs(
+                repeat,
+                [&] {
+                    const FrameStats stats = simulation.advanceFrame();
+                    forces.push_back(stats.forcesMs);
+                    modal.push_back(stats.modalMs);
+                    advect.push_back(stats.advectionMs);
+                    step.push_back(stats.forcesMs + stats.modalMs + stats.reconstructionMs + stats.advectionMs);
+                    iterations = std::max(iterations, stats.maxIterations);
+                    return stats.reconstructionMs;
+                },
+                [&] { return gemv.seconds(); });
             const double basisBytes = double(scene.cache.faces.size()) * n * sizeof(float);
-            const double deviceRate = basisBytes / (median(recon) * 1e-3) * 1e-9;
-            const double eigenRate = basisBytes / eigenGemvSeconds(scene.cache.velocity.modes, repeat, false) * 1e-9;
+            const double deviceRate = basisBytes / reconMs * 1e-6, eigenRate = basisBytes / eigenMs * 1e-6;
             std::printf("%-6s %4d %9zu %8.2f %8.2f %6d %8.2f %8.2f %8.2f %9.2f %9.2f %5.0f%%\n", g.name, n,
-                        scene.cache.faces.size(), median(forces), median(modal), iterations, median(recon),
+                        scene.cache.faces.size(), median(forces), median(modal), iterations, reconMs,
                         median(advect), median(step), deviceRate, eigenRate, 100.0 * deviceRate / eigenRate);
             std::fflush(stdout);
         }
     }
 }
 
-/// Median over `repeat` submissions of the GPU ms of what `record` records (its dispatches summed).
+/// The GPU ms of what `record` records (its dispatches summed), one submission.
 template <typename Record>
-double medianKernelMs(const VulkanContext& context, int repeat, Record record) {
-    std::vector<double> times;
-    for (int r = 0; r < repeat; ++r) {
-        CommandSequence sequence(context, true, 64);
-        record(sequence);
-        sequence.submitAndWait();
-        double total = 0.0;
-        for (const double t : sequence.dispatchTimesMs()) total += t;
-        times.push_back(total);
-    }
-    return median(times);
+double kernelMs(const VulkanContext& context, Record record) {
+    CommandSequence sequence(context, true, 64);
+    record(sequence);
+    sequence.submitAndWait();
+    double total = 0.0;
+    for (const double t : sequence.dispatchTimesMs()) total += t;
+    return total;
 }
 
 void kernelTable(const VulkanContext& context, int repeat) {
@@ -274,21 +309,22 @@ void kernelTable(const VulkanContext& context, int repeat) {
             const std::vector<float> density(cache.faces.size(), 1.0f);
             const DeviceBuffer q = DeviceBuffer::fromValues<float>(context, density, "q");
             const DeviceBuffer f(context, std::size_t(n) * sizeof(float), "f");
-            double reconMs[2], projMs[2];
+            double reconMs[2], projMs[2], eigenReconMs[2], eigenProjMs[2];
+            BasisGemv reconGemv(cache.velocity.modes, false), projGemv(cache.velocity.modes, true);
             for (const ModePrecision precision : {ModePrecision::Float32, ModePrecision::Float16}) {
                 const ModeBuffer modes(context, cache.velocity.modes, precision);
                 const int p = precision == ModePrecision::Float16;
-                reconMs[p] = medianKernelMs(context, repeat, [&](CommandSequence& s) {
-                    reconstruction.record(s, modes, v, field);
-                });
-                projMs[p] = medianKernelMs(context, repeat, [&](CommandSequence& s) {
-                    projection.record(s, modes, q, f);
-                });
+                std::tie(reconMs[p], eigenReconMs[p]) = pairedMediansMs(
+                    repeat, [&] { return kernelMs(context, [&](CommandSequence& s) { reconstruction.record(s, modes, v, field); }); },
+                    [&] { return reconGemv.seconds(); });
+                std::tie(projMs[p], eigenProjMs[p]) = pairedMediansMs(
+                    repeat, [&] { return kernelMs(context, [&](CommandSequence& s) { projection.record(s, modes, q, f); }); },
+                    [&] { return projGemv.seconds(); });
             }
+            // The ratios compare the float32 rounds with the Eigen runs paired with them.
             const double bytes = double(cache.faces.size()) * n * sizeof(float);
             const double reconRate = bytes / reconMs[0] * 1e-6, projRate = bytes / projMs[0] * 1e-6;
-            const double eigenRecon = bytes / eigenGemvSeconds(cache.velocity.modes, repeat, false) * 1e-9;
-            const double eigenProj = bytes / eigenGemvSeconds(cache.velocity.modes, repeat, true) * 1e-9;
+            const double eigenRecon = bytes / eigenReconMs[0] * 1e-6, eigenProj = bytes / eigenProjMs[0] * 1e-6;
             std::printf("%-6s %4d %9zu | %8.2f %7.2f %5.0f%% %8.2f | %8.2f %7.2f %5.0f%% %8.2f\n", g.name, n,
                         cache.faces.size(), reconMs[0], reconRate, 100.0 * reconRate / eigenRecon, reconMs[1],
                         projMs[0], projRate, 100.0 * projRate / eigenProj, projMs[1]);
@@ -302,26 +338,22 @@ void kernelTable(const VulkanContext& context, int repeat) {
 int main(int argc, char** argv) {
     VulkanContextOptions options;
     int repeat = 20;
-    bool grids = true, kernelsOnly = false;
+    std::string only;  // one table, or all
     for (int i = 1; i < argc; ++i) {
-        if (!std::strcmp(argv[i], "--skip-grids")) grids = false;
-        else if (!std::strcmp(argv[i], "--kernels-only")) kernelsOnly = true;
+        if (i + 1 < argc && !std::strcmp(argv[i], "--only")) only = argv[++i];
         else if (i + 1 < argc && !std::strcmp(argv[i], "--device")) options.deviceIndex = std::uint32_t(std::atoi(argv[++i]));
         else if (i + 1 < argc && !std::strcmp(argv[i], "--repeat")) repeat = std::max(3, std::atoi(argv[++i]));
     }
     try {
         const VulkanContext context(options);
         std::printf("%s", context.describe().c_str());
-        if (kernelsOnly) {
-            kernelTable(context, repeat);
-            return 0;
-        }
-        contractionTable(context, repeat);
-        stepTable(context, repeat);
-        if (grids) {
-            runtimeTable(context, std::max(3, repeat / 4));
-            kernelTable(context, std::max(3, repeat / 4));
-        }
+        // The grid tables repeat less by default: each repetition is a whole step or dispatch
+        // over a 64^3 grid.
+        const int gridRepeat = only.empty() ? std::max(3, repeat / 4) : repeat;
+        if (only.empty() || only == "contraction") contractionTable(context, repeat);
+        if (only.empty() || only == "steps") stepTable(context, repeat);
+        if (only.empty() || only == "runtime") runtimeTable(context, gridRepeat);
+        if (only.empty() || only == "kernels") kernelTable(context, gridRepeat);
     } catch (const std::exception& e) {
         std::fprintf(stderr, "bench_runtime: %s\n", e.what());
         return 1;
