@@ -25,7 +25,7 @@ struct PairSumsParams {
     uint pad0;
 };
 
-/* The sparse rows: rowCount rows of CSR entries, each row one pair k < j. */
+/* The sparse rows: rowCount rows of entries, each row one pair k < j (sliced: modal_pair_sums_sparse.comp). */
 struct SparsePairSumsParams {
     uint n;
     uint rowCount;

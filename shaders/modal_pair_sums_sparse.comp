@@ -1,29 +1,43 @@
 #version 450
 // modal_pair_sums.comp for sparse coefficients (engine/dynamics/SparseCoefficients.h): rows are
-// the pairs k < j with any non-zero, each a CSR run of (i, value) entries, and
+// the pairs k < j with any non-zero, each a run of (i, value) entries, and
 //
 //     sums[pairIndex(k, j)] = sum over the row's entries of value * a_i.
 //
-// Pairs without a row keep the zero their sum was initialized with. One invocation per row
-// (rows hold few entries; a subgroup per row would leave most lanes idle), grid-stride.
+// Pairs without a row keep the zero their sum was initialized with. One invocation per row,
+// grid-stride. Layout (engine/kernels/DeviceCoefficients::slicedRows), sliced ELLPACK: the rows,
+// longest first, in slices of PAIR_TILE_LANES; a slice pads its rows to its longest with (0, 0.0)
+// entries and stores texel t (entries 2t, 2t + 1) of each of its rows side by side, so the lanes
+// of an 8-wide batch (one slice) read one contiguous run per step and stop together. Every input
+// is fetched as texels (TexelAccess.glsl), a_i gathered. Why, measured on lavapipe
+// (tools/bench/bench_runtime, 10% density): CSR rows read one float and one index a load, one
+// invocation per row: N = 200 0.8 GB/s (11% of Eigen's sparse GEMV); sliced texels: README "Speed".
 #extension GL_GOOGLE_include_directive : require
 #include "ModalStepParams.h"
+#include "TexelAccess.glsl"
 
 layout(local_size_x = 64, local_size_x_id = 0) in;
 
-layout(std430, set = 0, binding = 0) readonly buffer RowPair { uint rowPair[]; };
-layout(std430, set = 0, binding = 1) readonly buffer RowStart { uint rowStart[]; };
-layout(std430, set = 0, binding = 2) readonly buffer Columns { uint columns[]; };
-layout(std430, set = 0, binding = 3) readonly buffer Values { float values[]; };
-layout(std430, set = 0, binding = 4) readonly buffer VectorA { float a[]; };
-layout(std430, set = 0, binding = 5) buffer Sums { float sums[]; };
+// Per row: pair index, first texel of its slice, texels per row of the slice, 0.
+layout(set = 0, binding = 0) uniform usamplerBuffer rows;
+// Two (column, value bits) entries a texel.
+layout(set = 0, binding = 1) uniform usamplerBuffer entries;
+layout(set = 0, binding = 2) uniform usamplerBuffer a;
+layout(std430, set = 0, binding = 3) buffer Sums { float sums[]; };
 layout(push_constant) uniform Push { SparsePairSumsParams params; };
+
+float aAt(uint i) { return floatTexel(a, i >> 2)[i & 3u]; }
 
 void main() {
     const uint stride = gl_NumWorkGroups.x * gl_WorkGroupSize.x;
     for (uint row = gl_GlobalInvocationID.x; row < params.rowCount; row += stride) {
+        const uvec4 record = texelFetch(rows, int(row));
+        const uint lane = row % PAIR_TILE_LANES;
         float sum = 0.0;
-        for (uint e = rowStart[row]; e < rowStart[row + 1]; ++e) sum += values[e] * a[columns[e]];
-        sums[rowPair[row]] = sum;
+        for (uint t = 0; t < record.z; ++t) {
+            const uvec4 pair = texelFetch(entries, int(record.y + t * PAIR_TILE_LANES + lane));
+            sum += uintBitsToFloat(pair.y) * aAt(pair.x) + uintBitsToFloat(pair.w) * aAt(pair.z);
+        }
+        sums[record.x] = sum;
     }
 }

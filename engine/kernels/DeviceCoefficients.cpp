@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
+#include <numeric>
 #include <string>
 
 #include "engine/dynamics/DenseCoefficients.h"
@@ -16,10 +18,6 @@
 namespace modeflow::vulkan {
 namespace {
 
-template <typename To, typename From>
-std::vector<To> converted(const std::vector<From>& values) {
-    return std::vector<To>(values.begin(), values.end());
-}
 
 void requireFloats(const DeviceBuffer& buffer, int n) {
     if (buffer.bytes() < std::size_t(n) * sizeof(float))
@@ -29,6 +27,8 @@ void requireFloats(const DeviceBuffer& buffer, int n) {
 }
 
 constexpr std::size_t kPairTileRows = PAIR_TILE_ROWS, kPairTileLanes = PAIR_TILE_LANES;
+/// Rows of a slice of the sparse layout: one 8-wide batch of invocations on lavapipe.
+constexpr std::size_t kSliceRows = PAIR_TILE_LANES;
 
 std::uint32_t groupsFor(std::size_t items, std::size_t perGroup, std::uint32_t maxGroups) {
     return std::uint32_t(std::clamp<std::size_t>((items + perGroup - 1) / perGroup, 1, maxGroups));
@@ -79,27 +79,49 @@ DeviceCoefficients::DeviceCoefficients(const VulkanContext& context,
             throw Error(
                 "modal contraction: the sparse coefficients have no entries (a basis without "
                 "interactions)");
-        std::vector<std::uint32_t> rowPair(sparse->pairK().size());
-        for (std::size_t r = 0; r < rowPair.size(); ++r)
-            rowPair[r] = std::uint32_t(pairIndex(n, sparse->pairK()[r], sparse->pairJ()[r]));
-        const auto rowStart = converted<std::uint32_t>(sparse->rowStart());
-        const auto columns = converted<std::uint32_t>(sparse->columns());
-        const auto values = converted<float>(sparse->values());
-        mSparse.emplace(SparseRows{
-            DeviceBuffer::fromValues<std::uint32_t>(context, rowPair, "sparse row pairs"),
-            DeviceBuffer::fromValues<std::uint32_t>(context, rowStart, "sparse row starts"),
-            DeviceBuffer::fromValues<std::uint32_t>(context, columns, "sparse columns"),
-            DeviceBuffer::fromValues<float>(context, values, "sparse values"),
-            std::uint32_t(rowPair.size())});
-        mStreamedBytes = (rowPair.size() + rowStart.size() + columns.size() + values.size()) * 4;
+        mSparse.emplace(slicedRows(context, *sparse));
+        mStreamedBytes = (sparse->nonZeros() + sparse->pairK().size()) * 8;
     } else {
         throw Error("modal contraction: the device takes dense or sparse coefficients only");
     }
 }
 
+/// The sparse rows in slices of kSliceRows (modal_pair_sums_sparse.comp): rows sorted by entry
+/// count, longest first, so a slice's rows need about the same padding; within a slice, texel t
+/// (entries 2t and 2t + 1) of each row side by side.
+DeviceCoefficients::SparseRows DeviceCoefficients::slicedRows(const VulkanContext& context,
+                                                              const SparseCoefficients& sparse) {
+    const std::size_t rows = sparse.pairK().size(), n = std::size_t(sparse.size());
+    const auto length = [&](std::size_t r) { return sparse.rowStart()[r + 1] - sparse.rowStart()[r]; };
+    std::vector<std::size_t> order(rows);
+    std::iota(order.begin(), order.end(), std::size_t(0));
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return length(a) > length(b); });
+
+    std::vector<std::uint32_t> records(rows * 4, 0u), entries;
+    for (std::size_t first = 0; first < rows; first += kSliceRows) {
+        const std::size_t texels = (length(order[first]) + 1) / 2;  // the slice's longest row
+        const std::size_t sliceStart = entries.size() / 4;
+        entries.resize(entries.size() + texels * kSliceRows * 4, 0u);  // padding: column 0, value 0
+        for (std::size_t lane = 0; lane < kSliceRows && first + lane < rows; ++lane) {
+            const std::size_t r = order[first + lane], row = first + lane;
+            records[4 * row] = std::uint32_t(pairIndex(n, std::size_t(sparse.pairK()[r]), std::size_t(sparse.pairJ()[r])));
+            records[4 * row + 1] = std::uint32_t(sliceStart);
+            records[4 * row + 2] = std::uint32_t(texels);
+            for (std::size_t e = 0; e < length(r); ++e) {
+                const std::size_t source = sparse.rowStart()[r] + e;
+                const std::size_t word = ((sliceStart + (e / 2) * kSliceRows + lane) * 2 + e % 2) * 2;
+                entries[word] = std::uint32_t(sparse.columns()[source]);
+                entries[word + 1] = std::bit_cast<std::uint32_t>(float(sparse.values()[source]));
+            }
+        }
+    }
+    return {DeviceBuffer::fromValues<std::uint32_t>(context, records, "sparse rows"),
+            DeviceBuffer::fromValues<std::uint32_t>(context, entries, "sparse entries"), std::uint32_t(rows)};
+}
+
 std::vector<std::uint32_t> DeviceCoefficients::dispatchGroups() const {
     std::vector<std::uint32_t> groups;
-    if (mSparse) groups.push_back(groupsFor(mSparse->rows, 64, mMaxGroups));
+    if (mSparse) groups.push_back(groupsFor(mSparse->rowCount, 64, mMaxGroups));
     for (const Chunk& chunk : mChunks)
         // A tile per kPairTileLanes invocations of 64.
         groups.push_back(groupsFor(chunk.pairs, kPairTileRows * 64 / kPairTileLanes, mMaxGroups));
@@ -127,11 +149,10 @@ void DeviceCoefficients::recordApply(CommandSequence& sequence, const ModalKerne
     };
     const auto n = std::uint32_t(mN);
     if (mSparse) {
-        const std::array<const DeviceBuffer*, 6> buffers{
-            &mSparse->rowPair, &mSparse->rowStart, &mSparse->columns, &mSparse->values, &a,
-            &*mPairSums};
+        const std::array<const DeviceBuffer*, 4> buffers{&mSparse->rows, &mSparse->entries, &a,
+                                                         &*mPairSums};
         dispatch(kernels.sparsePairSums, buffers,
-                 shaders::SparsePairSumsParams{n, mSparse->rows, 0, 0});
+                 shaders::SparsePairSumsParams{n, mSparse->rowCount, 0, 0});
     }
     for (const Chunk& chunk : mChunks) {
         const std::array<const DeviceBuffer*, 3> buffers{&chunk.values, &a, &*mPairSums};

@@ -8,7 +8,7 @@
 /// Dense coefficients are stored in tiles of PAIR_TILE_ROWS pair rows (shaders/modal_pair_sums.comp
 /// has the layout and why) and split into chunks of whole tiles when they exceed the device's
 /// buffer limit (VulkanContext::texelBufferLimit; lavapipe: 128 MiB, i.e. N ≳ 400); sparse ones
-/// are uploaded as their CSR rows.
+/// are uploaded in slices of PAIR_TILE_LANES rows (shaders/modal_pair_sums_sparse.comp).
 
 #include <cstdint>
 #include <optional>
@@ -17,6 +17,7 @@
 #include "engine/vulkan/DeviceBuffer.h"
 
 namespace modeflow {
+class SparseCoefficients;
 class StructuralCoefficients;
 }
 
@@ -51,7 +52,8 @@ public:
     int size() const { return mN; }
     bool isSparse() const { return mSparse.has_value(); }
     std::size_t chunkCount() const { return mChunks.size(); }
-    /// Bytes of coefficient data (values and indices) one contraction reads.
+    /// Bytes of coefficient data (values and indices) one contraction reads; sparse: as CSR,
+    /// 8 bytes per entry and per row (the slices' padding not counted).
     std::size_t streamedBytes() const { return mStreamedBytes; }
 
     /// Group counts of the dispatches recordApply makes, in order (pair-sum dispatches, then
@@ -72,9 +74,12 @@ private:
         std::uint32_t pairs = 0;
     };
     struct SparseRows {
-        DeviceBuffer rowPair, rowStart, columns, values;
-        std::uint32_t rows = 0;
+        DeviceBuffer rows;     ///< per row: pair index, first texel of its slice, texels per row, 0
+        DeviceBuffer entries;  ///< texels of two (column, value bits) entries, slice-interleaved
+        std::uint32_t rowCount = 0;
     };
+    /// `sparse` in slices of PAIR_TILE_LANES rows (DeviceCoefficients.cpp).
+    static SparseRows slicedRows(const VulkanContext& context, const SparseCoefficients& sparse);
 
     int mN = 0;
     std::uint32_t mSubgroupsPerGroup = 1;

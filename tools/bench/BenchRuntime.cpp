@@ -29,9 +29,11 @@
 #include <vector>
 
 #include <Eigen/Core>
+#include <Eigen/SparseCore>
 
 #include "engine/dynamics/DenseCoefficients.h"
 #include "engine/dynamics/PackedLayout.h"
+#include "engine/dynamics/SparseCoefficients.h"
 #include "engine/kernels/DeviceCoefficients.h"
 #include "engine/kernels/ForceProjection.h"
 #include "engine/kernels/ModalKernels.h"
@@ -52,11 +54,13 @@ double median(std::vector<double> values) {
     return values.empty() ? 0.0 : values[values.size() / 2];
 }
 
-DenseCoefficients randomCoefficients(int n) {
+/// Random coefficients, a random `density` share of them non-zero.
+DenseCoefficients randomCoefficients(int n, double density = 1.0) {
     std::mt19937_64 rng(std::uint64_t(n) * 7919);
     std::uniform_real_distribution<double> value(-1.0, 1.0);
+    std::bernoulli_distribution keep(density);
     std::vector<double> packed(packedSize(std::size_t(n)));
-    for (double& c : packed) c = value(rng);
+    for (double& c : packed) c = keep(rng) ? value(rng) : 0.0;
     return DenseCoefficients(n, std::move(packed));
 }
 
@@ -91,6 +95,30 @@ private:
     Eigen::VectorXf mA, mSums;
 };
 
+/// Eigen's float sparse GEMV over the same rows in CSR (pairs × N, row-major), one call a run.
+class SparseGemv {
+public:
+    explicit SparseGemv(const SparseCoefficients& c)
+        : mMatrix(Eigen::Index(c.pairK().size()), c.size()), mA(Eigen::VectorXf::Random(c.size())) {
+        std::vector<Eigen::Triplet<float>> entries;
+        for (std::size_t r = 0; r < c.pairK().size(); ++r)
+            for (std::size_t e = std::size_t(c.rowStart()[r]); e < std::size_t(c.rowStart()[r + 1]); ++e)
+                entries.emplace_back(int(r), int(c.columns()[e]), float(c.values()[e]));
+        mMatrix.setFromTriplets(entries.begin(), entries.end());
+        mSums.resize(mMatrix.rows());
+    }
+    double seconds() {
+        const double s = secondsOf([&] { mSums.noalias() = mMatrix * mA; });
+        volatile float sink = mSums[0];
+        (void)sink;
+        return s;
+    }
+
+private:
+    Eigen::SparseMatrix<float, Eigen::RowMajor> mMatrix;
+    Eigen::VectorXf mA, mSums;
+};
+
 /// Medians over `repeat` rounds of `device()` (ms) and `eigen()` (seconds, returned as ms), each
 /// round running one then the other.
 template <typename Device, typename Eigen>
@@ -103,33 +131,48 @@ std::pair<double, double> pairedMediansMs(int repeat, Device device, Eigen eigen
     return {median(deviceMs), median(eigenMs)};
 }
 
+/// One row of the contraction table: the pair-sum pass of `c` on the device against `gemv` (an
+/// Eigen GEMV over the same stored values).
+template <typename Gemv>
+void contractionRow(const VulkanContext& context, const ModalKernels& kernels, const char* storage,
+                    const StructuralCoefficients& c, Gemv& gemv, int repeat) {
+    const int n = c.size();
+    const DeviceCoefficients device(context, c);
+    const std::vector<float> ones(paddedSize(n), 1.0f);
+    const DeviceBuffer a = DeviceBuffer::fromValues<float>(context, ones, "a");
+    DeviceBuffer out(context, std::size_t(n) * sizeof(float), "out");
+    std::vector<double> combines;
+    const auto [sumsMs, eigenMs] = pairedMediansMs(
+        repeat,
+        [&] {
+            CommandSequence sequence(context, true, 2);
+            device.recordApply(sequence, kernels, a, a, out);
+            sequence.submitAndWait();
+            combines.push_back(sequence.dispatchTimesMs()[1]);
+            return sequence.dispatchTimesMs()[0];
+        },
+        [&] { return gemv.seconds(); });
+    const double bytes = double(device.streamedBytes());
+    const double deviceRate = bytes / sumsMs * 1e-6, eigenRate = bytes / eigenMs * 1e-6;
+    std::printf("%-7s %5d %10.2f %12.3f %10.3f %12.2f %12.2f %7.0f%%\n", storage, n, bytes * 1e-6, sumsMs,
+                median(combines), deviceRate, eigenRate, 100.0 * deviceRate / eigenRate);
+}
+
 void contractionTable(const VulkanContext& context, int repeat) {
-    std::printf("\nDense contraction out = C(a, b), float32 (GB/s over the coefficient bytes)\n");
-    std::printf("%5s %10s %12s %10s %12s %12s %8s\n", "N", "MB", "pair sums ms", "combine ms", "device GB/s",
-                "Eigen GB/s", "ratio");
+    std::printf("\nContraction out = C(a, b), float32 (GB/s over the coefficient bytes; sparse: 10%% of the\n"
+                "entries, values and indices, against Eigen's sparse row-major GEMV)\n");
+    std::printf("%-7s %5s %10s %12s %10s %12s %12s %8s\n", "storage", "N", "MB", "pair sums ms", "combine ms",
+                "device GB/s", "Eigen GB/s", "ratio");
     const ModalKernels kernels(context);
     for (const int n : {50, 100, 200}) {
         const DenseCoefficients c = randomCoefficients(n);
-        const DeviceCoefficients device(context, c);
-        const std::vector<float> ones(paddedSize(n), 1.0f);
-        const DeviceBuffer a = DeviceBuffer::fromValues<float>(context, ones, "a");
-        DeviceBuffer out(context, std::size_t(n) * sizeof(float), "out");
         PackedGemv gemv(c);
-        std::vector<double> combines;
-        const auto [sumsMs, eigenMs] = pairedMediansMs(
-            repeat,
-            [&] {
-                CommandSequence sequence(context, true, 2);
-                device.recordApply(sequence, kernels, a, a, out);
-                sequence.submitAndWait();
-                combines.push_back(sequence.dispatchTimesMs()[1]);
-                return sequence.dispatchTimesMs()[0];
-            },
-            [&] { return gemv.seconds(); });
-        const double bytes = double(device.streamedBytes());
-        const double deviceRate = bytes / sumsMs * 1e-6, eigenRate = bytes / eigenMs * 1e-6;
-        std::printf("%5d %10.2f %12.3f %10.3f %12.2f %12.2f %7.0f%%\n", n, bytes * 1e-6, sumsMs,
-                    median(combines), deviceRate, eigenRate, 100.0 * deviceRate / eigenRate);
+        contractionRow(context, kernels, "dense", c, gemv, repeat);
+    }
+    for (const int n : {100, 200}) {
+        const SparseCoefficients c = SparseCoefficients::fromDense(randomCoefficients(n, 0.1));
+        SparseGemv gemv(c);
+        contractionRow(context, kernels, "sparse", c, gemv, repeat);
     }
 }
 
