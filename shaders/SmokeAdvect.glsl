@@ -14,28 +14,37 @@
    first each step. Cells outside the fluid mask are never written: SmokeState keeps them 0.
 
    Layout and work, chosen by measurement on lavapipe (Mesa 22.3; SmokeKernelTest's TimingPerStep,
-   totals in engine/kernels/SmokeAdvection.h), where every lane's load or store of every 32- or
-   64-bit component is a separate scalar access whatever the pattern, so the count of components
-   executed is the cost (shaders/modal_pair_sums.comp; u64vec2 loads of two rows at once were no
-   faster than two u64 loads here), and where an `if` only masks lanes: its body runs, loads
+   totals in engine/kernels/SmokeAdvection.h). There every lane's storage-buffer load or store of
+   every 32- or 64-bit component is a separate scalar access whatever the pattern, so the count of
+   components is the cost (shaders/modal_pair_sums.comp), while a texel fetch is one vector gather
+   for all lanes (shaders/TexelAccess.glsl); and an `if` only masks lanes: its body runs, loads
    included, even when no lane takes it (gallivm's if_cond):
+   - every read-only input fetched as texels (uniform texel buffers of RGBA32UI): the velocity
+     pairs, the cell list, the stencil mask, the fields (in, and MacCormack's hat in the
+     correction) and the record; a 64-bit word i is texel i >> 1, .xy or .zw. Against 64-bit
+     storage loads, steps ran 1.3-2x faster (3D 48^3 with 2 lavapipe threads, four runs
+     alternating: semi-Lagrangian 6.7-7.5 -> 3.0-4.1 ms, MacCormack 12.2-13.2 -> 6.9-8.3 ms;
+     one thread: SmokeAdvection.h), most where the stencil corners are gathered at random;
+   - results still stored as 64-bit words, one scalar access per lane, where a uvec2 takes two;
    - stage and dimension fixed at compile time, one pipeline each: with a run-time stage switch
      the correction cost 80% of the forward stage, split 30%;
    - one invocation per entry of a list of the fluid cells (x fastest, so neighbouring lanes read
      neighbouring cells): no lane works outside the mask (most of the cells of the tests' disks
-     and balls), and the entry carries the coordinates, so no integer division;
-   - density and temperature interleaved, one 64-bit word per cell: one load per stencil corner
+     and balls); an entry is one texel: the coordinates (no integer division) and the emitters'
+     rates summed per fluid cell on the host (SmokeState::setEmitters), not a loop over emitter
+     records in every lane;
+   - density and temperature interleaved, one 64-bit word per cell: one fetch per stencil corner
      for both fields;
-   - the fluid flags of a whole stencil in one byte (SmokeState's stencil mask): one load per
-     stencil; a mask load per corner made steps ~10% slower;
+   - the fluid flags of a whole stencil in one byte (SmokeState's stencil mask): one fetch per
+     stencil; a mask load per corner made steps ~10% slower (storage loads);
    - velocity faces read in x-neighbour pairs (MacSampling.glsl, smoke_face_pairs.comp): one
-     load per two corners; reading the faces as floats made 3D steps 30-40% slower at scale 1;
+     fetch per two corners; reading the faces as floats made 3D steps 30-40% slower at scale 1
+     (storage loads);
    - MacCormack's forward stage also traces backward (the centre velocity serves both traces) and
      records the clamp range and the backward end point, so the correction re-traces and
-     re-samples nothing of the forward step: 3 velocity samples per cell instead of 6;
-   - the emitters' rates summed per fluid cell on the host (SmokeState::setEmitters): one load
-     instead of a loop over emitter records in every lane.
-   On a GPU the same choices cut memory transactions and leave no lane idle. */
+     re-samples nothing of the forward step: 3 velocity samples per cell instead of 6.
+   On a GPU the same choices cut memory transactions and leave no lane idle, and texel fetches go
+   through the texture cache. */
 #ifndef MODEFLOW_SHADERS_SMOKE_ADVECT_GLSL
 #define MODEFLOW_SHADERS_SMOKE_ADVECT_GLSL
 
@@ -46,25 +55,38 @@
 
 layout(local_size_x = 128, local_size_x_id = 0) in;
 
-layout(std430, set = 0, binding = 0) readonly buffer FacePairs { uint64_t facePairs[]; };
-layout(std430, set = 0, binding = 1) readonly buffer FluidCells { uint64_t fluidCells[]; };
-layout(std430, set = 0, binding = 2) readonly buffer StencilMask { uint stencilMask[]; }; // 4 cells a word
-layout(std430, set = 0, binding = 3) readonly buffer Emission { uint64_t emission[]; };   // list order
-layout(std430, set = 0, binding = 4) readonly buffer FieldsIn { uint64_t fieldsIn[]; };
-layout(std430, set = 0, binding = 5) buffer Hat { uint64_t hat[]; };
-layout(std430, set = 0, binding = 6) buffer Record { uint64_t record[]; };  // list order
-layout(std430, set = 0, binding = 7) writeonly buffer FieldsOut { uint64_t fieldsOut[]; };
-layout(std430, set = 0, binding = 8) writeonly buffer TemperatureOut { float temperatureOut[]; };
+// Read-only inputs as uniform texel buffers of RGBA32UI texels (why: the header).
+layout(set = 0, binding = 0) uniform usamplerBuffer facePairs;   // two pairs a texel
+layout(set = 0, binding = 1) uniform usamplerBuffer fluidCells;  // one entry a texel
+layout(set = 0, binding = 2) uniform usamplerBuffer stencilMask; // 16 cells a texel
+layout(set = 0, binding = 3) uniform usamplerBuffer fieldsIn;    // two cells a texel
+#if SMOKE_STAGE == SMOKE_STAGE_MACCORMACK_CORRECT
+layout(set = 0, binding = 4) uniform usamplerBuffer hat;     // the forward stage's, two cells a texel
+layout(set = 0, binding = 5) uniform usamplerBuffer record;  // list order, two texels an entry
+#else
+// Stores of 64-bit words: one scalar access per lane each on lavapipe, where a uvec2 takes two.
+layout(std430, set = 0, binding = 4) writeonly buffer Hat { uint64_t hat[]; };
+layout(std430, set = 0, binding = 5) writeonly buffer Record { uint64_t record[]; };  // list order
+#endif
+layout(std430, set = 0, binding = 6) writeonly buffer FieldsOut { uint64_t fieldsOut[]; };
+layout(std430, set = 0, binding = 7) writeonly buffer TemperatureOut { float temperatureOut[]; };
 layout(push_constant) uniform Push { SmokeAdvectParams params; };
 
-vec2 unpackPair(uint64_t word) { return uintBitsToFloat(unpack32(word)); }
+// The 64-bit word `index` of a texel buffer as two floats.
+vec2 wordAt(usamplerBuffer texels, uint index) {
+    const uvec4 t = texelFetch(texels, int(index >> 1));
+    return uintBitsToFloat((index & 1u) != 0u ? t.zw : t.xy);
+}
 uint64_t packPair(vec2 v) { return pack64(floatBitsToUint(v)); }
 
 #define MAC_DIM SMOKE_DIM
-vec2 macFacePair(uint face) { return unpackPair(facePairs[face]); }
+vec2 macFacePair(uint face) { return wordAt(facePairs, face); }
 #include "MacSampling.glsl"
 
-uint stencilBits(uint cell) { return (stencilMask[cell >> 2] >> ((cell & 3u) * 8u)) & 0xffu; }
+uint stencilBits(uint cell) {
+    const uint word = texelFetch(stencilMask, int(cell >> 4))[(cell >> 2) & 3u];
+    return (word >> ((cell & 3u) * 8u)) & 0xffu;
+}
 
 uint cellIndex(ivec3 p) { return uint((p.z * int(params.cellsY) + p.y) * int(params.cellsX) + p.x); }
 
@@ -82,7 +104,7 @@ vec3 traceEnd(vec3 start, vec3 u0, vec3 step) {
     return start - velocityAt(mid) * step;
 }
 
-// A masked trilinear sample of (density, temperature) from `in` or `hat`, and the range of the
+// A masked trilinear sample of (density, temperature) from `fields` (in or hat), and the range of the
 // fluid cells of its stencil (lo > hi: none).
 struct FluidSample {
     vec2 value;
@@ -90,9 +112,7 @@ struct FluidSample {
     vec2 hi;
 };
 
-vec2 fieldsAt(uint cell, bool fromHat) { return unpackPair(fromHat ? hat[cell] : fieldsIn[cell]); }
-
-FluidSample sampleFluid(vec3 g, bool fromHat, vec2 fallback) {
+FluidSample sampleFluid(usamplerBuffer fields, vec3 g, vec2 fallback) {
     const ivec3 cells = ivec3(params.cellsX, params.cellsY, params.cellsZ);
     AxisStencil s[3];
     s[2] = AxisStencil(0, 0, 0.0);
@@ -110,7 +130,7 @@ FluidSample sampleFluid(vec3 g, bool fromHat, vec2 fallback) {
     [[unroll]] for (int cz = 0; cz < (SMOKE_DIM == 3 ? 2 : 1); ++cz)
         [[unroll]] for (int cy = 0; cy < 2; ++cy)
             [[unroll]] for (int cx = 0; cx < 2; ++cx) {
-                const vec2 v = fieldsAt(base + uint(cx) * dx + uint(cy) * dy + uint(cz) * dz, fromHat);
+                const vec2 v = wordAt(fields, base + uint(cx) * dx + uint(cy) * dy + uint(cz) * dz);
                 if ((fluid & (1u << (cx + 2 * cy + 4 * cz))) == 0u) continue;
                 float w = (cx != 0 ? s[0].f : 1.0 - s[0].f) * (cy != 0 ? s[1].f : 1.0 - s[1].f);
 #if SMOKE_DIM == 3
@@ -128,18 +148,18 @@ FluidSample sampleFluid(vec3 g, bool fromHat, vec2 fallback) {
 void main() {
     const uint entry = params.firstCell + gl_GlobalInvocationID.x;
     if (entry >= params.fluidCount) return;
-    const uvec2 packed = unpack32(fluidCells[entry]);
-    const ivec3 cell = ivec3(packed.x & 0xffffu, packed.x >> 16, packed.y);
+    const uvec4 listed = texelFetch(fluidCells, int(entry));
+    const ivec3 cell = ivec3(listed.x & 0xffffu, listed.x >> 16, listed.y);
     const uint id = cellIndex(cell);
     const vec3 start = vec3(cell) + 0.5;
     const vec3 step = vec3(params.stepX, params.stepY, params.stepZ);
-    const vec2 old = fieldsAt(id, false);
-    const uint r = entry * SMOKE_RECORD_WORDS;
+    const vec2 old = wordAt(fieldsIn, id);
 
 #if SMOKE_STAGE == SMOKE_STAGE_MACCORMACK_FORWARD
     const vec3 u0 = velocityAt(start);
-    const FluidSample forward = sampleFluid(traceEnd(start, u0, step), false, old);
+    const FluidSample forward = sampleFluid(fieldsIn, traceEnd(start, u0, step), old);
     const vec3 ahead = traceEnd(start, u0, -step);
+    const uint r = entry * SMOKE_RECORD_WORDS;
     hat[id] = packPair(forward.value);
     record[r] = packPair(forward.lo);
     record[r + 1u] = packPair(forward.hi);
@@ -149,19 +169,15 @@ void main() {
 #endif
 #else
 #if SMOKE_STAGE == SMOKE_STAGE_SEMI_LAGRANGIAN
-    vec2 result = sampleFluid(traceEnd(start, velocityAt(start), step), false, old).value;
+    vec2 result = sampleFluid(fieldsIn, traceEnd(start, velocityAt(start), step), old).value;
 #else
-    const vec2 lo = unpackPair(record[r]);
-    const vec2 hi = unpackPair(record[r + 1u]);
-    vec3 ahead = vec3(unpackPair(record[r + 2u]), 0.5);
-#if SMOKE_DIM == 3
-    ahead.z = unpackPair(record[r + 3u]).x;
+    const vec4 range = uintBitsToFloat(texelFetch(record, int(2u * entry)));  // lo, hi
+    const vec3 ahead = uintBitsToFloat(texelFetch(record, int(2u * entry + 1u)).xyz);  // z unused in 2D
+    const vec2 forward = wordAt(hat, id);
+    const vec2 backward = sampleFluid(hat, ahead, forward).value;
+    vec2 result = range.x <= range.z ? clamp(forward + 0.5 * (old - backward), range.xy, range.zw) : forward;
 #endif
-    const vec2 forward = fieldsAt(id, true);
-    const vec2 backward = sampleFluid(ahead, true, forward).value;
-    vec2 result = lo.x <= hi.x ? clamp(forward + 0.5 * (old - backward), lo, hi) : forward;
-#endif
-    result += unpackPair(emission[entry]) * params.dt;
+    result += uintBitsToFloat(listed.zw) * params.dt;
     fieldsOut[id] = packPair(result);
     temperatureOut[id] = result.y;
 #endif

@@ -18,6 +18,16 @@
 ///     3D 32³      9.7  ->  2.3      23.9  ->  4.1
 ///     3D 48³     37.4  -> 12.0     102.7  -> 18.1
 ///     3D 64³    103.7  -> 23.3     286.8  -> 32.7
+///
+/// Then every read-only input fetched as texels instead of 64-bit storage loads; same settings,
+/// three runs alternating old and new in one session, range of each ms:
+///
+///                semi-Lagrangian              MacCormack
+///     2D 128²   0.67-1.00 -> 0.56-0.69     1.23-1.90 -> 0.90-1.22
+///     2D 256²   2.76-4.40 -> 1.95-2.68     4.72-6.87 -> 3.51-3.67
+///     3D 32³    2.45-4.06 -> 1.60-2.10     4.17-4.73 -> 2.95-4.07
+///     3D 48³   10.8-13.6  -> 5.6-7.6      14.8-23.3  -> 9.4-13.2
+///     3D 64³   22.9-30.4  -> 12.9-19.2    33.3-36.4  -> 22.8-31.4
 
 #include <array>
 #include <cstdint>
@@ -45,7 +55,8 @@ public:
     /// that its current fields are the step's result once the sequence is submitted. Grids
     /// larger than one dispatch can cover are split over several dispatches.
     /// @throw modeflow::Error when the velocity buffer is smaller than the basis grid's face
-    /// count, dt is not finite, or the smoke grid has 2^32 cells or more.
+    /// count or has no texel view (it is read as texels), dt is not finite, or the smoke grid has
+    /// 2^32 cells or more.
     void record(CommandSequence& sequence, SmokeState& state, const DeviceBuffer& velocity, double dt,
                 AdvectionScheme scheme) const;
 

@@ -1,9 +1,11 @@
 #include "engine/kernels/SmokeState.h"
 
 #include <algorithm>
+#include <bit>
 #include <string>
 
 #include "engine/format/Error.h"
+#include "engine/vulkan/VulkanContext.h"
 #include "shaders/SmokeAdvectParams.h"
 
 namespace modeflow::vulkan {
@@ -30,16 +32,24 @@ std::vector<std::int64_t> fluidIndices(const std::vector<std::uint8_t>& fluid) {
     return indices;
 }
 
-/// A buffer of `bytes` bytes holding zeros, at least one 64-bit word (buffers may not be empty).
-DeviceBuffer zeroBuffer(const VulkanContext& context, std::size_t bytes, const std::string& name) {
-    const std::vector<std::uint32_t> zeros(std::max<std::size_t>((bytes + 3) / 4, 2), 0);
-    return DeviceBuffer::fromValues<std::uint32_t>(context, zeros, name);
+/// `values` padded with zeros to whole texels, at least one: the kernels read these buffers as
+/// texels (DeviceBuffer::texelView), which cover whole texels only.
+template <typename T>
+DeviceBuffer texelBuffer(const VulkanContext& context, std::vector<T> values, const std::string& name) {
+    static_assert(DeviceBuffer::kTexelBytes % sizeof(T) == 0);
+    constexpr std::size_t perTexel = DeviceBuffer::kTexelBytes / sizeof(T);
+    values.resize(std::max<std::size_t>((values.size() + perTexel - 1) / perTexel, 1) * perTexel, T{});
+    const std::size_t bytes = values.size() * sizeof(T);
+    if (bytes > context.texelBufferLimit())
+        throw Error("smoke state: " + name + " would take " + std::to_string(bytes) + " bytes, more than the " +
+                    std::to_string(context.texelBufferLimit()) + "-byte texel buffer limit of " +
+                    context.deviceName());
+    return DeviceBuffer::fromValues<T>(context, values, name);
 }
 
-/// Bytes padded to whole 32-bit words (the shaders read 4 cells a word).
-DeviceBuffer byteBuffer(const VulkanContext& context, std::vector<std::uint8_t> bytes, const std::string& name) {
-    bytes.resize((bytes.size() + 3) / 4 * 4 + (bytes.empty() ? 4 : 0), 0);
-    return DeviceBuffer::fromValues<std::uint8_t>(context, bytes, name);
+/// A buffer of `bytes` (a multiple of 4) holding zeros, padded to whole texels.
+DeviceBuffer zeroBuffer(const VulkanContext& context, std::size_t bytes, const std::string& name) {
+    return texelBuffer(context, std::vector<std::uint32_t>(bytes / 4, 0), name);
 }
 
 /// Per cell: bit cx + 2 cy + 4 cz set when cell (x + cx, y + cy, z + cz) exists and is fluid.
@@ -60,18 +70,24 @@ std::vector<std::uint8_t> stencilFlags(const MacGrid& smoke, const std::vector<s
     return bits;
 }
 
-/// The fluid cell list: x | y << 16 and z per entry, one 64-bit word.
-DeviceBuffer cellList(const VulkanContext& context, const MacGrid& smoke, const std::vector<std::int64_t>& indices) {
-    std::vector<std::uint32_t> words(std::max<std::size_t>(2 * indices.size(), 2), 0);
+/// The fluid cell list, one texel per entry: x | y << 16, z, and the emitters' density and
+/// temperature rates (`rates`, two per entry, empty: none).
+std::vector<std::uint32_t> cellList(const MacGrid& smoke, const std::vector<std::int64_t>& indices,
+                                    std::span<const float> rates) {
+    std::vector<std::uint32_t> words(std::max<std::size_t>(indices.size(), 1) * 4, 0);  // never empty
     for (std::size_t e = 0; e < indices.size(); ++e) {
         const std::int64_t c = indices[e];
         const std::int64_t row = c / smoke.cells[0];
         const auto x = std::uint32_t(c % smoke.cells[0]), y = std::uint32_t(row % smoke.cells[1]),
                    z = std::uint32_t(row / smoke.cells[1]);
-        words[2 * e] = x | y << 16;
-        words[2 * e + 1] = z;
+        words[4 * e] = x | y << 16;
+        words[4 * e + 1] = z;
+        if (!rates.empty()) {
+            words[4 * e + 2] = std::bit_cast<std::uint32_t>(rates[2 * e]);
+            words[4 * e + 3] = std::bit_cast<std::uint32_t>(rates[2 * e + 1]);
+        }
     }
-    return DeviceBuffer::fromValues<std::uint32_t>(context, words, "smoke fluid cells");
+    return words;
 }
 
 }  // namespace
@@ -87,13 +103,12 @@ SmokeState::SmokeState(const VulkanContext& context, const MacGrid& basisGrid, i
       mFields{zeroBuffer(context, std::size_t(mSmoke.cellCount()) * 8, "smoke fields 0"),
               zeroBuffer(context, std::size_t(mSmoke.cellCount()) * 8, "smoke fields 1")},
       mTemperature(zeroBuffer(context, std::size_t(mSmoke.cellCount()) * 4, "smoke temperature")),
-      mMask(byteBuffer(context, mFluid, "smoke fluid mask")),
-      mFluidCells(cellList(context, mSmoke, mFluidIndex)),
-      mEmission(zeroBuffer(context, std::size_t(mFluidCount) * 8, "smoke emission rates")),
-      mStencilMask(byteBuffer(context, stencilFlags(mSmoke, mFluid), "smoke stencil mask")),
+      mMask(texelBuffer(context, mFluid, "smoke fluid mask")),
+      mFluidCells(texelBuffer(context, cellList(mSmoke, mFluidIndex, {}), "smoke fluid cells")),
+      mStencilMask(texelBuffer(context, stencilFlags(mSmoke, mFluid), "smoke stencil mask")),
       mHat(zeroBuffer(context, std::size_t(mSmoke.cellCount()) * 8, "MacCormack fields")),
       mRecord(zeroBuffer(context, std::size_t(mFluidCount) * SMOKE_RECORD_WORDS * 8, "MacCormack record")),
-      mFacePairs(zeroBuffer(context, std::size_t(mBasis.faceTotal() + 1) / 2 * 16, "smoke face pairs")) {}
+      mFacePairs(zeroBuffer(context, std::size_t(mBasis.faceTotal() + 3) / 4 * 32, "smoke face pairs")) {}
 
 void SmokeState::upload(std::span<const float> density, std::span<const float> temperature) {
     if (density.size() != std::size_t(cellCount()) || temperature.size() != std::size_t(cellCount()))
@@ -128,12 +143,12 @@ void SmokeState::setEmitters(std::span<const SmokeEmitter> emitters) {
     // The rates per unit time: the reference's emitters over a step of 1.
     std::vector<double> density(mFluid.size(), 0.0), temperature(mFluid.size(), 0.0);
     applyEmitters(mSmoke, mFluid, emitters, 1.0, density, temperature);
-    std::vector<float> rates(std::max<std::size_t>(2 * mFluidIndex.size(), 2), 0.0f);
+    std::vector<float> rates(2 * mFluidIndex.size());
     for (std::size_t e = 0; e < mFluidIndex.size(); ++e) {
         rates[2 * e] = float(density[mFluidIndex[e]]);
         rates[2 * e + 1] = float(temperature[mFluidIndex[e]]);
     }
-    mEmission.upload<float>(rates);
+    mFluidCells.upload<std::uint32_t>(cellList(mSmoke, mFluidIndex, rates));
     mEmitterCount = std::uint32_t(emitters.size());
 }
 

@@ -9,7 +9,8 @@
 /// fence (CommandSequence::submitAndWait()).
 ///
 /// Cells outside the fluid mask are 0 in every field at all times: upload() drops what it is
-/// given there, and the kernels never write them.
+/// given there, and the kernels never write them. Every buffer is padded with zeros to whole
+/// 16-byte texels, as the kernels read them through DeviceBuffer::texelView.
 
 #include <array>
 #include <cstdint>
@@ -28,7 +29,8 @@ class SmokeState {
 public:
     /// Fields start at 0. `fluidMask`: one entry per smoke cell, non-zero inside Ω.
     /// @throw modeflow::Error when scale < 1, the mask has the wrong size, the smoke grid has more
-    /// than 65535 cells along x or y, or a buffer would exceed the device's storage buffer range.
+    /// than 65535 cells along x or y, or a buffer would exceed the device's texel or storage
+    /// buffer limit.
     SmokeState(const VulkanContext& context, const MacGrid& basisGrid, int scale,
                std::span<const std::uint8_t> fluidMask);
 
@@ -62,10 +64,9 @@ public:
     const DeviceBuffer& mask() const { return mMask; }
 
     /// Buffers of the advection kernels (shaders/SmokeAdvectParams.h gives their layouts): the
-    /// fluid cells' list and their emitters' rates (list order), the stencil mask, MacCormack's
-    /// intermediate fields and per-cell record, and the basis velocity as face pairs.
+    /// fluid cells' list with their emitters' rates, the stencil mask, MacCormack's intermediate
+    /// fields and per-cell record, and the basis velocity as face pairs.
     const DeviceBuffer& fluidCells() const { return mFluidCells; }
-    const DeviceBuffer& emission() const { return mEmission; }
     const DeviceBuffer& stencilMask() const { return mStencilMask; }
     const DeviceBuffer& hat() const { return mHat; }
     const DeviceBuffer& record() const { return mRecord; }
@@ -85,7 +86,6 @@ private:
     DeviceBuffer mTemperature;
     DeviceBuffer mMask;
     DeviceBuffer mFluidCells;
-    DeviceBuffer mEmission;
     DeviceBuffer mStencilMask;
     DeviceBuffer mHat;
     DeviceBuffer mRecord;
