@@ -1,18 +1,19 @@
 /// @file BenchRuntime.cpp
-/// Speed of the Vulkan runtime's modal kernels (issue 4), as a table: for N = 50, 100, 200 the GPU
-/// time of the dense pair-sum pass (the bandwidth-bound GEMV over the packed coefficients) and of
-/// the combine pass, their GB/s over the float32 coefficient bytes, and the same contraction by
-/// Eigen's GEMV on the same float32 data in the same run (1 thread), as a ratio; then the GPU time
-/// of whole steps per scheme; then the whole runtime step (Simulation: forces, midpoint step,
-/// reconstruction, MacCormack advection) per stage on 2D 256² and 3D 48³, 64³ grids, with the
-/// reconstruction's GB/s over the float32 basis against Eigen's GEMV Ψv on the same data; then the
-/// two basis kernels alone (reconstruction Ψv and force projection Ψᵀx, float32 and float16
-/// modes) on the same grids, their GB/s over the float32 basis against Eigen's float GEMVs. Times
-/// are medians over repeated dispatches or steps; every device round is followed by one Eigen
-/// GEMV, so the two meet the same machine (on a shared 2-core VM the load and the cache left to
-/// us vary 2× within minutes, and so did the ratio when all device runs came first). The grid tables use synthetic bases (random
-/// modes on every interior face, random coefficients): kernel speed does not depend on the
-/// basis being an eigenbasis, and a 64³ eigenbasis takes minutes to compute.
+/// Speed of the Vulkan runtime's kernels (issue 4), as tables: for N = 50, 100, 200 the GPU time of
+/// the dense pair-sum pass (the bandwidth-bound GEMV over the packed coefficients) and of the
+/// combine pass, their GB/s over the float32 coefficient bytes against Eigen's GEMV on the same
+/// float32 data (1 thread), and the same for sparse coefficients against Eigen's sparse GEMV; then
+/// the GPU time of whole steps per scheme; then the whole runtime step (Simulation: forces,
+/// midpoint step, reconstruction, MacCormack advection) per stage on 2D 256² and 3D 48³, 64³ grids,
+/// with the reconstruction's GB/s over the float32 basis against Eigen's GEMV Ψv on the same data;
+/// then the two basis kernels alone (reconstruction Ψv and force projection Ψᵀx, float32 and
+/// float16 modes) on the same grids against Eigen's float GEMVs. Times are medians over repeated
+/// dispatches or steps. Eigen is timed two ways (`timings`): paired, one run after each device
+/// round, so both meet the same machine (on this shared 2-core VM the load and the share of the L3
+/// cache left to us vary 2× within minutes), and warm, back to back, its data in the cache where
+/// it fits; shares are printed as paired/warm. The grid tables use synthetic bases (random modes
+/// on every interior face, random coefficients): kernel speed does not depend on the basis being
+/// an eigenbasis, and a 64³ eigenbasis takes minutes to compute.
 /// Run: bench_runtime [--device INDEX] [--repeat R] [--only contraction|steps|runtime|kernels].
 
 #include <algorithm>
@@ -24,8 +25,6 @@
 #include <cstring>
 #include <random>
 #include <string>
-#include <tuple>
-#include <utility>
 #include <vector>
 
 #include <Eigen/Core>
@@ -119,16 +118,30 @@ private:
     Eigen::VectorXf mA, mSums;
 };
 
-/// Medians over `repeat` rounds of `device()` (ms) and `eigen()` (seconds, returned as ms), each
-/// round running one then the other.
+/// Medians (ms) of `device()` (ms) and of `eigen()` (seconds), Eigen two ways: paired, each device
+/// round followed by one Eigen run, so both meet the same machine (Eigen's data is then usually
+/// out of the cache, as within a simulation step where other work runs between contractions);
+/// and warm, Eigen's runs back to back after the rounds (its data in the cache where it fits: the
+/// strictest comparison for small data).
+struct Timings {
+    double deviceMs = 0.0, eigenPairedMs = 0.0, eigenWarmMs = 0.0;
+};
 template <typename Device, typename Eigen>
-std::pair<double, double> pairedMediansMs(int repeat, Device device, Eigen eigen) {
-    std::vector<double> deviceMs, eigenMs;
+Timings timings(int repeat, Device device, Eigen eigen) {
+    std::vector<double> deviceMs, paired, warm;
     for (int r = 0; r < repeat; ++r) {
         deviceMs.push_back(device());
-        eigenMs.push_back(eigen() * 1e3);
+        paired.push_back(eigen() * 1e3);
     }
-    return {median(deviceMs), median(eigenMs)};
+    for (int r = 0; r < repeat; ++r) warm.push_back(eigen() * 1e3);
+    return {median(deviceMs), median(paired), median(warm)};
+}
+
+/// "paired/warm%": the device's rate as a share of Eigen's, both ways (same bytes, so a time ratio).
+std::string shares(double deviceMs, double eigenPairedMs, double eigenWarmMs) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.0f/%.0f%%", 100.0 * eigenPairedMs / deviceMs, 100.0 * eigenWarmMs / deviceMs);
+    return text;
 }
 
 /// One row of the contraction table: the pair-sum pass of `c` on the device against `gemv` (an
@@ -142,7 +155,7 @@ void contractionRow(const VulkanContext& context, const ModalKernels& kernels, c
     const DeviceBuffer a = DeviceBuffer::fromValues<float>(context, ones, "a");
     DeviceBuffer out(context, std::size_t(n) * sizeof(float), "out");
     std::vector<double> combines;
-    const auto [sumsMs, eigenMs] = pairedMediansMs(
+    const Timings t = timings(
         repeat,
         [&] {
             CommandSequence sequence(context, true, 2);
@@ -153,16 +166,16 @@ void contractionRow(const VulkanContext& context, const ModalKernels& kernels, c
         },
         [&] { return gemv.seconds(); });
     const double bytes = double(device.streamedBytes());
-    const double deviceRate = bytes / sumsMs * 1e-6, eigenRate = bytes / eigenMs * 1e-6;
-    std::printf("%-7s %5d %10.2f %12.3f %10.3f %12.2f %12.2f %7.0f%%\n", storage, n, bytes * 1e-6, sumsMs,
-                median(combines), deviceRate, eigenRate, 100.0 * deviceRate / eigenRate);
+    std::printf("%-7s %5d %8.2f %12.3f %10.3f %9.2f %8.2f %6.2f %11s\n", storage, n, bytes * 1e-6, t.deviceMs,
+                median(combines), bytes / t.deviceMs * 1e-6, bytes / t.eigenPairedMs * 1e-6,
+                bytes / t.eigenWarmMs * 1e-6, shares(t.deviceMs, t.eigenPairedMs, t.eigenWarmMs).c_str());
 }
 
 void contractionTable(const VulkanContext& context, int repeat) {
     std::printf("\nContraction out = C(a, b), float32 (GB/s over the coefficient bytes; sparse: 10%% of the\n"
                 "entries, values and indices, against Eigen's sparse row-major GEMV)\n");
-    std::printf("%-7s %5s %10s %12s %10s %12s %12s %8s\n", "storage", "N", "MB", "pair sums ms", "combine ms",
-                "device GB/s", "Eigen GB/s", "ratio");
+    std::printf("%-7s %5s %8s %12s %10s %9s %15s %11s\n", "storage", "N", "MB", "pair sums ms", "combine ms",
+                "dev GB/s", "Eigen GB/s p/w", "share p/w");
     const ModalKernels kernels(context);
     for (const int n : {50, 100, 200}) {
         const DenseCoefficients c = randomCoefficients(n);
@@ -278,8 +291,8 @@ constexpr std::array<Grid, 3> kGrids{Grid{"256^2", 2, 256}, Grid{"48^3", 3, 48},
 void runtimeTable(const VulkanContext& context, int repeat) {
     std::printf("\nWhole runtime step (Simulation, midpoint, MacCormack, smoke scale 1, buoyancy + one emitter):\n"
                 "GPU ms per step by stage; reconstruction GB/s over the float32 basis vs Eigen GEMV\n");
-    std::printf("%-6s %4s %9s %8s %8s %6s %8s %8s %8s %9s %9s %6s\n", "grid", "N", "DOFs", "forces", "modal", "iters",
-                "recon", "advect", "step", "dev GB/s", "Eigen", "ratio");
+    std::printf("%-6s %4s %9s %8s %8s %6s %8s %8s %8s %9s %11s\n", "grid", "N", "DOFs", "forces", "modal", "iters",
+                "recon", "advect", "step", "dev GB/s", "share p/w");
     for (const Grid& g : kGrids) {
         for (const int n : {50, 100, 200}) {
             const SyntheticScene scene = syntheticScene(g.dim, g.cells, n);
@@ -302,7 +315,7 @@ void runtimeTable(const VulkanContext& context, int repeat) {
             std::vector<double> forces, modal, advect, step;
             int iterations = 0;
             BasisGemv gemv(scene.cache.velocity.modes, false);
-            const auto [reconMs, eigenMs] = pairedMediansMs(
+            const Timings t = timings(
                 repeat,
                 [&] {
                     const FrameStats stats = simulation.advanceFrame();
@@ -315,10 +328,10 @@ void runtimeTable(const VulkanContext& context, int repeat) {
                 },
                 [&] { return gemv.seconds(); });
             const double basisBytes = double(scene.cache.faces.size()) * n * sizeof(float);
-            const double deviceRate = basisBytes / reconMs * 1e-6, eigenRate = basisBytes / eigenMs * 1e-6;
-            std::printf("%-6s %4d %9zu %8.2f %8.2f %6d %8.2f %8.2f %8.2f %9.2f %9.2f %5.0f%%\n", g.name, n,
-                        scene.cache.faces.size(), median(forces), median(modal), iterations, reconMs,
-                        median(advect), median(step), deviceRate, eigenRate, 100.0 * deviceRate / eigenRate);
+            std::printf("%-6s %4d %9zu %8.2f %8.2f %6d %8.2f %8.2f %8.2f %9.2f %11s\n", g.name, n,
+                        scene.cache.faces.size(), median(forces), median(modal), iterations, t.deviceMs,
+                        median(advect), median(step), basisBytes / t.deviceMs * 1e-6,
+                        shares(t.deviceMs, t.eigenPairedMs, t.eigenWarmMs).c_str());
             std::fflush(stdout);
         }
     }
@@ -338,8 +351,8 @@ double kernelMs(const VulkanContext& context, Record record) {
 void kernelTable(const VulkanContext& context, int repeat) {
     std::printf("\nBasis kernels alone (GPU ms; GB/s over the float32 basis bytes vs Eigen's float GEMV, 1 thread):\n"
                 "reconstruction Psi v (one dispatch), projection Psi^T (w q) (both passes), float32 and float16 modes\n");
-    std::printf("%-6s %4s %9s | %8s %7s %6s %8s | %8s %7s %6s %8s\n", "grid", "N", "DOFs", "recon32", "GB/s", "ratio",
-                "recon16", "proj32", "GB/s", "ratio", "proj16");
+    std::printf("%-6s %4s %9s | %8s %7s %10s %8s | %8s %7s %10s %8s\n", "grid", "N", "DOFs", "recon32", "GB/s", "share p/w",
+                "recon16", "proj32", "GB/s", "share p/w", "proj16");
     for (const Grid& g : kGrids) {
         for (const int n : {50, 100, 200}) {
             const SyntheticScene scene = syntheticScene(g.dim, g.cells, n);
@@ -352,25 +365,26 @@ void kernelTable(const VulkanContext& context, int repeat) {
             const std::vector<float> density(cache.faces.size(), 1.0f);
             const DeviceBuffer q = DeviceBuffer::fromValues<float>(context, density, "q");
             const DeviceBuffer f(context, std::size_t(n) * sizeof(float), "f");
-            double reconMs[2], projMs[2], eigenReconMs[2], eigenProjMs[2];
+            Timings recon[2], proj[2];
             BasisGemv reconGemv(cache.velocity.modes, false), projGemv(cache.velocity.modes, true);
             for (const ModePrecision precision : {ModePrecision::Float32, ModePrecision::Float16}) {
                 const ModeBuffer modes(context, cache.velocity.modes, precision);
                 const int p = precision == ModePrecision::Float16;
-                std::tie(reconMs[p], eigenReconMs[p]) = pairedMediansMs(
+                recon[p] = timings(
                     repeat, [&] { return kernelMs(context, [&](CommandSequence& s) { reconstruction.record(s, modes, v, field); }); },
                     [&] { return reconGemv.seconds(); });
-                std::tie(projMs[p], eigenProjMs[p]) = pairedMediansMs(
+                proj[p] = timings(
                     repeat, [&] { return kernelMs(context, [&](CommandSequence& s) { projection.record(s, modes, q, f); }); },
                     [&] { return projGemv.seconds(); });
             }
-            // The ratios compare the float32 rounds with the Eigen runs paired with them.
+            // The shares compare the float32 rounds with Eigen.
             const double bytes = double(cache.faces.size()) * n * sizeof(float);
-            const double reconRate = bytes / reconMs[0] * 1e-6, projRate = bytes / projMs[0] * 1e-6;
-            const double eigenRecon = bytes / eigenReconMs[0] * 1e-6, eigenProj = bytes / eigenProjMs[0] * 1e-6;
-            std::printf("%-6s %4d %9zu | %8.2f %7.2f %5.0f%% %8.2f | %8.2f %7.2f %5.0f%% %8.2f\n", g.name, n,
-                        cache.faces.size(), reconMs[0], reconRate, 100.0 * reconRate / eigenRecon, reconMs[1],
-                        projMs[0], projRate, 100.0 * projRate / eigenProj, projMs[1]);
+            std::printf("%-6s %4d %9zu | %8.2f %7.2f %10s %8.2f | %8.2f %7.2f %10s %8.2f\n", g.name, n,
+                        cache.faces.size(), recon[0].deviceMs, bytes / recon[0].deviceMs * 1e-6,
+                        shares(recon[0].deviceMs, recon[0].eigenPairedMs, recon[0].eigenWarmMs).c_str(),
+                        recon[1].deviceMs, proj[0].deviceMs, bytes / proj[0].deviceMs * 1e-6,
+                        shares(proj[0].deviceMs, proj[0].eigenPairedMs, proj[0].eigenWarmMs).c_str(),
+                        proj[1].deviceMs);
             std::fflush(stdout);
         }
     }
