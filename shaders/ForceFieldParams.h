@@ -18,21 +18,26 @@ struct ForceSplatRecord {
     float pad0;
 };
 
+/* force_field.comp's stages (its specialization constant STAGE). */
+#define FORCE_STAGE_ZERO 0u
+#define FORCE_STAGE_SPLATS 1u
+#define FORCE_STAGE_BUOYANCY 2u
+
 struct ForceFieldParams {
     uint dofCount;     /* velocity DOFs; one invocation per DOF (grid-stride loop) */
-    uint dim;          /* 2 or 3; up is axis dim - 1 */
-    uint scale;        /* smoke cells per basis cell and axis */
+    uint upCount;      /* entries of the up-DOF list (the buoyancy stage) */
+    uint pad0;
     uint splatCount;   /* splats in the splat buffer */
     uint cells[3];     /* basis grid cells per axis (1 on the unused 2D axis) */
-    uint useMask;      /* 1: average over fluid smoke cells only */
+    uint pad1;
     uint faceStart1;   /* first normal-y face */
     uint faceStart2;   /* first normal-z face (the face total in 2D) */
     float buoyancy;    /* upward acceleration per unit temperature; 0: no buoyancy */
-    uint pad0;
+    uint pad2;
     float origin[3];   /* lower corner of the box */
-    float pad1;
+    float pad3;
     float spacing[3];  /* basis cell size per axis */
-    float pad2;
+    float pad4;
 };
 
 #ifdef __cplusplus

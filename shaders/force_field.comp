@@ -1,56 +1,81 @@
 #version 450
 // Force density g on the velocity DOFs (DESIGN sections 3-4; CPU reference and definitions:
-// engine/field/ForceField.h): buoyancy times the mean temperature over the dual cell of each
-// up-facing face, plus Gaussian stirring splats (force . n) exp(-|x - centre|^2 / radius^2) at
-// the face centres. One invocation per DOF; the summation order matches the CPU reference.
+// engine/field/ForceField.h): Gaussian stirring splats (force . n) exp(-|x - centre|^2 / radius^2)
+// at the face centres, plus buoyancy times the mean temperature over the dual cell of each
+// up-facing face. Three stages, one pipeline each (engine/kernels/ForceField):
+//   STAGE_ZERO    g = 0 on every DOF (no splats),
+//   STAGE_SPLATS  g = splats on every DOF,
+//   STAGE_BUOYANCY g += buoyancy * dual-cell temperature on the up DOFs only, from a host-made
+//                 list of (DOF, face position) texels; the CPU reference sums in the same order.
+// Why, measured on lavapipe (tools/bench/bench_runtime `forces`, README "Speed"): one pass over
+// every DOF with the buoyancy behind `if (axis == up)` and the dual cell's loop bounds per lane ran
+// the dual-cell code for every DOF (an `if` on lavapipe masks lanes, its body runs), decoded the
+// face position by integer division and looped with lane-varying bounds. The stages, the up list
+// and the scale and dimension as specialization constants (the dual cell's loops unroll, cells
+// outside the grid weigh 0) remove all three.
 #extension GL_GOOGLE_include_directive : require
+#extension GL_EXT_control_flow_attributes : require
 #include "ForceFieldParams.h"
 
 layout(local_size_x = 64, local_size_x_id = 0) in;
+layout(constant_id = 1) const uint STAGE = 0u;     // FORCE_STAGE_* (ForceFieldParams.h)
+layout(constant_id = 2) const uint DIM = 3u;       // 2 or 3; up is axis DIM - 1
+layout(constant_id = 3) const uint SCALE = 1u;     // smoke cells per basis cell and axis
+layout(constant_id = 4) const uint USE_MASK = 0u;  // 1: average over fluid smoke cells only
 
 layout(std430, set = 0, binding = 0) readonly buffer Faces { uint faces[]; };
-layout(std430, set = 0, binding = 1) readonly buffer Temperature { float temperature[]; };
-layout(std430, set = 0, binding = 2) readonly buffer Mask { uint maskWords[]; };  // 4 bytes a word
-layout(std430, set = 0, binding = 3) readonly buffer Splats { ForceSplatRecord splats[]; };
-layout(std430, set = 0, binding = 4) writeonly buffer Density { float g[]; };
+// Per up DOF: the DOF, and its face's lower-corner position x, y, z.
+layout(set = 0, binding = 1) uniform usamplerBuffer upDofs;
+layout(std430, set = 0, binding = 2) readonly buffer Temperature { float temperature[]; };
+layout(std430, set = 0, binding = 3) readonly buffer Mask { uint maskWords[]; };  // 4 bytes a word
+layout(std430, set = 0, binding = 4) readonly buffer Splats { ForceSplatRecord splats[]; };
+layout(std430, set = 0, binding = 5) buffer Density { float g[]; };
 layout(push_constant) uniform Push { ForceFieldParams params; };
 
 #include "FaceLocation.glsl"
 
 bool isFluid(uint cell) { return ((maskWords[cell >> 2] >> ((cell & 3u) * 8u)) & 0xffu) != 0u; }
 
-// Mean temperature over the dual cell of the up-facing face at `pos`: s smoke cells across per
-// tangential axis, [p s - s/2, p s + s/2] along up (odd s: the end cells count half).
-float dualCellTemperature(uvec3 pos, uint up) {
-    const int s = int(params.scale);
-    const int reach = (s + 1) / 2;
-    ivec3 begin = ivec3(0), end = ivec3(1);
-    for (uint a = 0u; a < params.dim; ++a) {
-        begin[a] = a == up ? int(pos[a]) * s - reach : int(pos[a]) * s;
-        end[a] = a == up ? int(pos[a]) * s + reach : int(pos[a] + 1u) * s;
-    }
-    const float endWeight = (s & 1) != 0 ? 0.5 : 1.0;
+const uint UP = DIM - 1u;
+const int REACH = int(SCALE + 1u) / 2;  // smoke cells of the dual cell on each side of the face
+const int ALONG = 2 * REACH;            // smoke cells of the dual cell along up
+const float END_WEIGHT = (SCALE & 1u) != 0u ? 0.5 : 1.0;  // odd scale: the end cells count half
+
+// Mean temperature over the dual cell of the up-facing face at `pos`: SCALE smoke cells across
+// per tangential axis, [p s - REACH, p s + REACH) along up, cells outside the grid (and, with the
+// mask, solid ones) left out.
+float dualCellTemperature(uvec3 pos) {
     const ivec3 smokeCells = ivec3(params.cells[0], params.cells[1], params.cells[2]) *
-                             ivec3(s, s, params.dim == 3u ? s : 1);
+                             ivec3(SCALE, SCALE, DIM == 3u ? SCALE : 1u);
+    ivec3 begin = ivec3(pos) * int(SCALE);
+    begin[UP] -= REACH;
+    const int countY = UP == 1u ? ALONG : int(SCALE);
+    const int countZ = DIM == 3u ? ALONG : 1;
     float sum = 0.0, weight = 0.0;
-    for (int z = max(begin.z, 0); z < min(end.z, smokeCells.z); ++z)
-        for (int y = max(begin.y, 0); y < min(end.y, smokeCells.y); ++y)
-            for (int x = max(begin.x, 0); x < min(end.x, smokeCells.x); ++x) {
-                const uint cell = uint((z * smokeCells.y + y) * smokeCells.x + x);
-                if (params.useMask != 0u && !isFluid(cell)) continue;
-                const int along = up == 1u ? y : z;
-                const float w = along == begin[up] || along == end[up] - 1 ? endWeight : 1.0;
+    [[unroll]] for (int k = 0; k < countZ; ++k)
+        [[unroll]] for (int j = 0; j < countY; ++j)
+            [[unroll]] for (int i = 0; i < int(SCALE); ++i) {
+                ivec3 c = begin + ivec3(i, j, k);
+                const int step = UP == 1u ? j : k;  // position along up within the dual cell
+                float w = step == 0 || step == ALONG - 1 ? END_WEIGHT : 1.0;
+                if (c[UP] < 0 || c[UP] >= smokeCells[UP]) w = 0.0;
+                c[UP] = clamp(c[UP], 0, smokeCells[UP] - 1);  // read in bounds, weigh 0
+                const uint cell = uint((c.z * smokeCells.y + c.y) * smokeCells.x + c.x);
+                if (USE_MASK != 0u && !isFluid(cell)) w = 0.0;
                 sum += w * temperature[cell];
                 weight += w;
             }
     return weight > 0.0 ? sum / weight : 0.0;
 }
 
-float splatForce(uvec3 pos, uint axis) {
+float splatForce(uint face) {
+    const uint axis = faceAxis(face, params.faceStart1, params.faceStart2);
+    const uint start = axis == 0u ? 0u : (axis == 1u ? params.faceStart1 : params.faceStart2);
+    const uvec3 pos = facePosition(face - start, axis, uvec3(params.cells[0], params.cells[1], params.cells[2]));
     float value = 0.0;
     for (uint k = 0u; k < params.splatCount; ++k) {
         float r2 = 0.0;
-        for (uint a = 0u; a < params.dim; ++a) {
+        [[unroll]] for (uint a = 0u; a < DIM; ++a) {
             const float x = params.origin[a] + (float(pos[a]) + (a == axis ? 0.0 : 0.5)) * params.spacing[a];
             r2 += (x - splats[k].centre[a]) * (x - splats[k].centre[a]);
         }
@@ -61,15 +86,13 @@ float splatForce(uvec3 pos, uint axis) {
 
 void main() {
     const uint invocations = gl_NumWorkGroups.x * gl_WorkGroupSize.x;
-    const uvec3 cells = uvec3(params.cells[0], params.cells[1], params.cells[2]);
-    const uint up = params.dim - 1u;
-    for (uint d = gl_GlobalInvocationID.x; d < params.dofCount; d += invocations) {
-        const uint face = faces[d];
-        const uint axis = faceAxis(face, params.faceStart1, params.faceStart2);
-        const uint start = axis == 0u ? 0u : (axis == 1u ? params.faceStart1 : params.faceStart2);
-        const uvec3 pos = facePosition(face - start, axis, cells);
-        float value = splatForce(pos, axis);
-        if (axis == up && params.buoyancy != 0.0) value += params.buoyancy * dualCellTemperature(pos, up);
-        g[d] = value;
+    if (STAGE == FORCE_STAGE_BUOYANCY) {
+        for (uint i = gl_GlobalInvocationID.x; i < params.upCount; i += invocations) {
+            const uvec4 entry = texelFetch(upDofs, int(i));
+            g[entry.x] += params.buoyancy * dualCellTemperature(entry.yzw);
+        }
+    } else {
+        for (uint d = gl_GlobalInvocationID.x; d < params.dofCount; d += invocations)
+            g[d] = STAGE == FORCE_STAGE_SPLATS ? splatForce(faces[d]) : 0.0;
     }
 }

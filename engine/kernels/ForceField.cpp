@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "engine/format/Error.h"
+#include "engine/field/FaceLocation.h"
 #include "engine/kernels/DofFaces.h"
 #include "engine/vulkan/CommandSequence.h"
 #include "engine/vulkan/VulkanContext.h"
@@ -13,6 +14,24 @@
 
 namespace modeflow::vulkan {
 namespace {
+
+/// Per DOF whose face points up: the DOF and its face's lower-corner position.
+std::vector<std::uint32_t> upDofList(const MacGrid& grid, const BasisCache& cache) {
+    std::vector<std::uint32_t> entries;
+    for (std::size_t d = 0; d < cache.faces.size(); ++d) {
+        const FaceLocation face = locateFace(grid, cache.faces[d]);
+        if (face.axis != upAxis(grid)) continue;
+        entries.insert(entries.end(), {std::uint32_t(d), std::uint32_t(face.pos[0]), std::uint32_t(face.pos[1]),
+                                       std::uint32_t(face.pos[2])});
+    }
+    return entries;
+}
+
+/// upDofList on the device (one unused entry when it is empty: a buffer is never empty).
+DeviceBuffer uploadUpDofs(const VulkanContext& context, std::vector<std::uint32_t> entries) {
+    if (entries.empty()) entries.resize(4, 0u);
+    return DeviceBuffer::fromValues<std::uint32_t>(context, entries, "up DOFs");
+}
 
 std::uint32_t checkedSplatCapacity(std::uint32_t maxSplats) {
     if (maxSplats < 1) throw Error("force_field: room for at least one splat is needed, got " + std::to_string(maxSplats));
@@ -27,12 +46,24 @@ ForceFieldKernel::ForceFieldKernel(const VulkanContext& context, const BasisCach
       mSmoke(mGrid.refined(scale)),
       mScale(scale),
       mDofCount(std::uint32_t(cache.faces.size())),
+      mUpCount(std::uint32_t(upDofList(mGrid, cache).size() / 4)),
       mMaxSplats(checkedSplatCapacity(maxSplats)),
       mGroups(groupsFor(context, cache.faces.size(), workgroupSize)),
       mFaces(uploadDofFaces(context, cache)),
+      mUpDofs(uploadUpDofs(context, upDofList(mGrid, cache))),
       mSplats(context, VkDeviceSize(mMaxSplats) * sizeof(shaders::ForceSplatRecord), "force splats"),
-      mKernel(context, ComputeKernelSpec{"force_field", force_field_spv, 5, sizeof(shaders::ForceFieldParams),
-                                         workgroupSize}) {}
+      mZero(makeKernel(context, FORCE_STAGE_ZERO, false, workgroupSize)),
+      mSplatForce(makeKernel(context, FORCE_STAGE_SPLATS, false, workgroupSize)),
+      mBuoyancy(makeKernel(context, FORCE_STAGE_BUOYANCY, false, workgroupSize)),
+      mMaskedBuoyancy(makeKernel(context, FORCE_STAGE_BUOYANCY, true, workgroupSize)) {}
+
+ComputeKernel ForceFieldKernel::makeKernel(const VulkanContext& context, std::uint32_t stage, bool useMask,
+                                           std::uint32_t workgroupSize) const {
+    return ComputeKernel(context, ComputeKernelSpec{"force_field", force_field_spv, 6, sizeof(shaders::ForceFieldParams),
+                                                    workgroupSize,
+                                                    {stage, std::uint32_t(mGrid.dim), std::uint32_t(mScale), useMask},
+                                                    {1}});
+}
 
 void ForceFieldKernel::setSplats(std::span<const ForceSplat> splats) {
     if (splats.size() > mMaxSplats)
@@ -60,10 +91,8 @@ void ForceFieldKernel::record(CommandSequence& sequence, double buoyancy, const 
 
     shaders::ForceFieldParams params{};
     params.dofCount = mDofCount;
-    params.dim = std::uint32_t(mGrid.dim);
-    params.scale = std::uint32_t(mScale);
+    params.upCount = mUpCount;
     params.splatCount = mSplatCount;
-    params.useMask = fluidMask != nullptr;
     params.faceStart1 = std::uint32_t(mGrid.faceOffset(1));
     params.faceStart2 = std::uint32_t(mGrid.faceOffset(2));
     params.buoyancy = float(buoyancy);
@@ -73,9 +102,11 @@ void ForceFieldKernel::record(CommandSequence& sequence, double buoyancy, const 
         params.spacing[a] = float(mGrid.spacing[a]);
     }
     // Without a mask the temperature buffer fills the mask's binding; the shader never reads it.
-    const std::array<const DeviceBuffer*, 5> buffers{&mFaces, &temperature, fluidMask ? fluidMask : &temperature,
-                                                     &mSplats, &g};
-    sequence.dispatch(mKernel, buffers, params, mGroups);
+    const std::array<const DeviceBuffer*, 6> buffers{&mFaces, &mUpDofs, &temperature,
+                                                     fluidMask ? fluidMask : &temperature, &mSplats, &g};
+    sequence.dispatch(mSplatCount > 0 ? mSplatForce : mZero, buffers, params, mGroups);
+    if (buoyancy != 0.0 && mUpCount > 0)
+        sequence.dispatch(fluidMask ? mMaskedBuoyancy : mBuoyancy, buffers, params, mGroups);
 }
 
 }  // namespace modeflow::vulkan

@@ -42,16 +42,22 @@ public:
     std::uint32_t dofCount() const { return mDofCount; }
 
 private:
+    /// force_field.comp's pipeline for `stage` (FORCE_STAGE_*), with or without the fluid mask.
+    ComputeKernel makeKernel(const VulkanContext& context, std::uint32_t stage, bool useMask,
+                             std::uint32_t workgroupSize) const;
+
     MacGrid mGrid;
     MacGrid mSmoke;
     int mScale;
     std::uint32_t mDofCount = 0;
+    std::uint32_t mUpCount = 0;
     std::uint32_t mMaxSplats = 0;
     std::uint32_t mSplatCount = 0;
     std::uint32_t mGroups = 1;
     DeviceBuffer mFaces;
+    DeviceBuffer mUpDofs;  ///< per up-facing DOF: the DOF and its face position (4 uints)
     DeviceBuffer mSplats;
-    ComputeKernel mKernel;
+    ComputeKernel mZero, mSplatForce, mBuoyancy, mMaskedBuoyancy;
 };
 
 }  // namespace modeflow::vulkan
