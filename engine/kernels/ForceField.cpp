@@ -15,24 +15,6 @@
 namespace modeflow::vulkan {
 namespace {
 
-/// Per DOF whose face points up: the DOF and its face's lower-corner position.
-std::vector<std::uint32_t> upDofList(const MacGrid& grid, const BasisCache& cache) {
-    std::vector<std::uint32_t> entries;
-    for (std::size_t d = 0; d < cache.faces.size(); ++d) {
-        const FaceLocation face = locateFace(grid, cache.faces[d]);
-        if (face.axis != upAxis(grid)) continue;
-        entries.insert(entries.end(), {std::uint32_t(d), std::uint32_t(face.pos[0]), std::uint32_t(face.pos[1]),
-                                       std::uint32_t(face.pos[2])});
-    }
-    return entries;
-}
-
-/// upDofList on the device (one unused entry when it is empty: a buffer is never empty).
-DeviceBuffer uploadUpDofs(const VulkanContext& context, std::vector<std::uint32_t> entries) {
-    if (entries.empty()) entries.resize(4, 0u);
-    return DeviceBuffer::fromValues<std::uint32_t>(context, entries, "up DOFs");
-}
-
 std::uint32_t checkedSplatCapacity(std::uint32_t maxSplats) {
     if (maxSplats < 1) throw Error("force_field: room for at least one splat is needed, got " + std::to_string(maxSplats));
     return maxSplats;
@@ -40,17 +22,30 @@ std::uint32_t checkedSplatCapacity(std::uint32_t maxSplats) {
 
 }  // namespace
 
+ForceFieldKernel::UpDofs ForceFieldKernel::uploadUpDofs(const VulkanContext& context, const MacGrid& grid,
+                                                        const BasisCache& cache) {
+    std::vector<std::uint32_t> entries;
+    for (std::size_t d = 0; d < cache.faces.size(); ++d) {
+        const FaceLocation face = locateFace(grid, cache.faces[d]);
+        if (face.axis != upAxis(grid)) continue;
+        entries.insert(entries.end(), {std::uint32_t(d), std::uint32_t(face.pos[0]), std::uint32_t(face.pos[1]),
+                                       std::uint32_t(face.pos[2])});
+    }
+    const auto count = std::uint32_t(entries.size() / 4);
+    if (entries.empty()) entries.resize(4, 0u);  // a buffer is never empty; count stays 0
+    return {DeviceBuffer::fromValues<std::uint32_t>(context, entries, "up DOFs"), count};
+}
+
 ForceFieldKernel::ForceFieldKernel(const VulkanContext& context, const BasisCache& cache, int scale,
                                    std::uint32_t maxSplats, std::uint32_t workgroupSize)
     : mGrid(MacGrid::fromSpec(cache.grid)),
       mSmoke(mGrid.refined(scale)),
       mScale(scale),
       mDofCount(std::uint32_t(cache.faces.size())),
-      mUpCount(std::uint32_t(upDofList(mGrid, cache).size() / 4)),
       mMaxSplats(checkedSplatCapacity(maxSplats)),
       mGroups(groupsFor(context, cache.faces.size(), workgroupSize)),
       mFaces(uploadDofFaces(context, cache)),
-      mUpDofs(uploadUpDofs(context, upDofList(mGrid, cache))),
+      mUp(uploadUpDofs(context, mGrid, cache)),
       mSplats(context, VkDeviceSize(mMaxSplats) * sizeof(shaders::ForceSplatRecord), "force splats"),
       mZero(makeKernel(context, FORCE_STAGE_ZERO, false, workgroupSize)),
       mSplatForce(makeKernel(context, FORCE_STAGE_SPLATS, false, workgroupSize)),
@@ -91,7 +86,7 @@ void ForceFieldKernel::record(CommandSequence& sequence, double buoyancy, const 
 
     shaders::ForceFieldParams params{};
     params.dofCount = mDofCount;
-    params.upCount = mUpCount;
+    params.upCount = mUp.count;
     params.splatCount = mSplatCount;
     params.faceStart1 = std::uint32_t(mGrid.faceOffset(1));
     params.faceStart2 = std::uint32_t(mGrid.faceOffset(2));
@@ -102,10 +97,10 @@ void ForceFieldKernel::record(CommandSequence& sequence, double buoyancy, const 
         params.spacing[a] = float(mGrid.spacing[a]);
     }
     // Without a mask the temperature buffer fills the mask's binding; the shader never reads it.
-    const std::array<const DeviceBuffer*, 6> buffers{&mFaces, &mUpDofs, &temperature,
+    const std::array<const DeviceBuffer*, 6> buffers{&mFaces, &mUp.buffer, &temperature,
                                                      fluidMask ? fluidMask : &temperature, &mSplats, &g};
     sequence.dispatch(mSplatCount > 0 ? mSplatForce : mZero, buffers, params, mGroups);
-    if (buoyancy != 0.0 && mUpCount > 0)
+    if (buoyancy != 0.0 && mUp.count > 0)
         sequence.dispatch(fluidMask ? mMaskedBuoyancy : mBuoyancy, buffers, params, mGroups);
 }
 

@@ -50,12 +50,16 @@ private:
     MacGrid mSmoke;
     int mScale;
     std::uint32_t mDofCount = 0;
-    std::uint32_t mUpCount = 0;
     std::uint32_t mMaxSplats = 0;
     std::uint32_t mSplatCount = 0;
     std::uint32_t mGroups = 1;
     DeviceBuffer mFaces;
-    DeviceBuffer mUpDofs;  ///< per up-facing DOF: the DOF and its face position (4 uints)
+    struct UpDofs {
+        DeviceBuffer buffer;  ///< per up-facing DOF: the DOF and its face position (4 uints)
+        std::uint32_t count = 0;
+    };
+    static UpDofs uploadUpDofs(const VulkanContext& context, const MacGrid& grid, const BasisCache& cache);
+    UpDofs mUp;
     DeviceBuffer mSplats;
     ComputeKernel mZero, mSplatForce, mBuoyancy, mMaskedBuoyancy;
 };
