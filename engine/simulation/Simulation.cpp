@@ -136,6 +136,7 @@ FrameStats Simulation::advanceSteps(int steps) {
         stats.substeps = std::max(stats.substeps, mSubsteps);
         const std::vector<double>& times = mSequence.dispatchTimesMs();
         if (times.empty()) continue;
+        ++stats.timedSteps;
         const std::array<double*, 5> stages{&stats.forcesMs, &stats.modalMs, &stats.reconstructionMs,
                                             &stats.obstaclesMs, &stats.advectionMs};
         for (std::size_t stage = 0; stage < stages.size(); ++stage)

@@ -57,6 +57,10 @@ public:
     void setObstacles(std::vector<MovingObstacle> obstacles);
     void setViscosity(double viscosity);
     void setIntegrator(Integrator integrator);
+    /// Whether the following steps are timed (constructed with `timestamps`; on by default then):
+    /// timestamps cost lavapipe about as much as the step itself, so a window showing times a few
+    /// times a second times a sample (FrameStats::timedSteps).
+    void setTiming(bool on) { mSequence.setTiming(on); }
     /// The smoke and the grid velocity on the device, for kernels that draw them (valid between
     /// frames; the velocity is a face field of the basis grid).
     const vulkan::SmokeState& smokeState() const { return mSmoke; }

@@ -54,10 +54,10 @@ struct FrameStats {
     int maxIterations = 0;     ///< implicit schemes: most iterations a step took
     int unconvergedSteps = 0;  ///< steps whose implicit solve missed its tolerance
     int substeps = 1;          ///< most modal substeps a step took (the device adapts them)
-    /// Device time per stage over the frame, milliseconds (0 on the CPU reference or without
-    /// timestamps): forces (force field + projection), modal step, reconstruction, moving
+    int timedSteps = 0;        ///< steps whose device times were measured (Simulation::setTiming)
+    /// Device time per stage summed over the timed steps, milliseconds (0 on the CPU reference or
+    /// without timestamps): forces (force field + projection), modal step, reconstruction, moving
     /// obstacles (their correction and the reconstruction after it), advection.
-    /// Obstacles: their correction and the reconstruction after it.
     double forcesMs = 0.0, modalMs = 0.0, reconstructionMs = 0.0, obstaclesMs = 0.0, advectionMs = 0.0;
 };
 

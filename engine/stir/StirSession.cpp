@@ -182,6 +182,7 @@ FrameStats StirSession::advance(int steps, double elapsed) {
         simulation.setObstacles(std::move(obstacles));
         if (mDragging) mPaddleAt = mPointer;
     }
+    simulation.setTiming(mTiming);
     const FrameStats stats = simulation.advanceSteps(steps);
     mStrokeFrom = mPointer;
     mStrokeTime = 0.0;

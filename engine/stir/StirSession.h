@@ -60,8 +60,10 @@ public:
 
     /// `steps` steps with the pointer's motion since the last call spread over them; `elapsed`:
     /// the window clock's seconds since the last call (the pointer's speed). The stats carry
-    /// each stage's device time where the queue has timestamps.
+    /// each stage's device time where the queue has timestamps and timing is on.
     FrameStats advance(int steps, double elapsed);
+    /// Whether the following advance() calls time their steps (Simulation::setTiming).
+    void setTiming(bool on) { mTiming = on; }
 
     const Simulation& simulation() const { return *mSimulations[mBasis]; }
     const SimulationSettings& settings() const { return simulation().settings(); }
@@ -93,6 +95,7 @@ private:
 
     bool mPaddleMode = false;
     bool mDragging = false;
+    bool mTiming = true;
     Vec3 mPointer{};     ///< now
     Vec3 mStrokeFrom{};  ///< at the last step
     Vec3 mPaddleAt{};

@@ -48,6 +48,11 @@ CommandSequence::CommandSequence(const VulkanContext& context, bool timestamps,
     }
 }
 
+void CommandSequence::setTiming(bool on) {
+    if (mRecording) throw Error("CommandSequence: timing switched while a submission is being recorded");
+    mTimingOn = on;
+}
+
 void CommandSequence::beginIfNeeded() {
     if (mRecording) return;
     VkCommandBufferBeginInfo begin{};

@@ -60,7 +60,13 @@ public:
     /// @throw modeflow::Error if nothing was recorded or a call fails (e.g. VK_ERROR_DEVICE_LOST).
     void submitAndWait();
 
-    bool isTiming() const { return mQueryPool.isValid(); }
+    /// Times the following submissions, or not. A timestamp costs lavapipe about as much as a
+    /// small dispatch (a stir step: 14-16 ms timed, 6-7 ms untimed), so a caller that shows times
+    /// a few times a second times a sample of its submissions. Between submissions only; without
+    /// timestamps (constructor) it stays off.
+    /// @throw modeflow::Error while a submission is being recorded.
+    void setTiming(bool on);
+    bool isTiming() const { return mQueryPool.isValid() && mTimingOn; }
     /// Dispatches recorded since the last submission (0 right after submitAndWait()).
     std::size_t dispatchCount() const { return mDispatchCount; }
     /// Duration of each dispatch of the last submission, in milliseconds (empty without timing).
@@ -78,6 +84,7 @@ private:
     DeviceHandle<VkFence> mFence;
     DeviceHandle<VkQueryPool> mQueryPool;
     bool mRecording = false;
+    bool mTimingOn = true;
     std::size_t mDispatchCount = 0;
     std::vector<double> mTimesMs;
 };

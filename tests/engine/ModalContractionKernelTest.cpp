@@ -4,9 +4,9 @@
 
 #include <array>
 #include <cmath>
-#include <string>
 #include <limits>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -120,6 +120,26 @@ TEST_P(ModalContractionKernelTest, TimestampsGiveOneDurationPerDispatch) {
         std::cout << "N = 150 on " << context().deviceName() << ": pair sums " << times[0]
                   << " ms, combine " << times[1] << " ms\n";
     }
+}
+
+TEST_P(ModalContractionKernelTest, TimingCanBeSwitchedOffBetweenSubmissions) {
+    // Windows time a sample of their steps: timestamps cost lavapipe about a dispatch each.
+    const DenseCoefficients c = roundedDense(testing::randomDense(40, 5));
+    const ModalKernels kernels(context());
+    const DeviceCoefficients device(context(), c);
+    const DeviceBuffer a = DeviceBuffer::fromValues<float>(context(), toFloat(testing::randomVector(40, 1)), "a");
+    DeviceBuffer out(context(), 40 * sizeof(float), "out");
+    CommandSequence sequence(context(), true);
+    if (!sequence.isTiming()) GTEST_SKIP() << "the queue writes no timestamps";
+    for (const bool timed : {false, true, false}) {
+        sequence.setTiming(timed);
+        EXPECT_EQ(sequence.isTiming(), timed);
+        device.recordApply(sequence, kernels, a, a, out);
+        EXPECT_THROW(sequence.setTiming(!timed), Error);  // not while recording
+        sequence.submitAndWait();
+        EXPECT_EQ(sequence.dispatchTimesMs().size(), timed ? 2u : 0u);
+    }
+    expectNoValidationMessages();
 }
 
 TEST_P(ModalContractionKernelTest, TexelBindingOfABufferWithoutTexelsIsRefusedClearly) {

@@ -148,6 +148,24 @@ TEST_P(SimulationTest, DeviceRunFollowsTheCpuReference) {
     }
 }
 
+TEST_P(SimulationTest, TimingSamplesOnlyTheStepsAskedFor) {
+    const auto& disk = hotDisk();
+    const SimulationSettings settings = SimulationSettings::fromScene(disk.scene, disk.cache);
+    Simulation device(context(), disk.cache, *disk.coefficients, settings, disk.mask, true);
+    if (context().timestampValidBits() == 0) GTEST_SKIP() << "the queue writes no timestamps";
+    const FrameStats timed = device.advanceSteps(2);
+    EXPECT_EQ(timed.timedSteps, 2);
+    EXPECT_GT(timed.modalMs, 0.0);
+    device.setTiming(false);
+    const FrameStats untimed = device.advanceSteps(3);
+    EXPECT_EQ(untimed.steps, 3);
+    EXPECT_EQ(untimed.timedSteps, 0);
+    EXPECT_EQ(untimed.forcesMs + untimed.modalMs + untimed.reconstructionMs + untimed.advectionMs, 0.0);
+    device.setTiming(true);
+    EXPECT_EQ(device.advanceSteps(1).timedSteps, 1);
+    expectNoValidationMessages();
+}
+
 TEST_P(SimulationTest, HotSmokeRisesAndStaysInsideTheDomain) {
     const HotScene& disk = hotDisk();
     const SimulationSettings settings = SimulationSettings::fromScene(disk.scene, disk.cache);
