@@ -25,7 +25,8 @@ struct PairSumsParams {
     uint pad0;
 };
 
-/* The sparse rows: rowCount rows of entries, each row one pair k < j (sliced: modal_pair_sums_sparse.comp). */
+/* The sparse rows: rowCount rows of entries, each row one pair k < j (sliced:
+ * modal_pair_sums_sparse.comp). */
 struct SparsePairSumsParams {
     uint n;
     uint rowCount;

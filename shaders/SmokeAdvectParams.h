@@ -18,12 +18,13 @@ using uint = std::uint32_t;
 #define SMOKE_STAGE_MACCORMACK_CORRECT 2  /* out = clamp(hat + (in - SL_-dt(hat)) / 2) + emitters */
 
 /* A fluid cell of the list the advection runs over: one 16-byte texel, x | y << 16 (so at most
-   65535 cells along x and y), z, and the cell's emitters' density and temperature rates (floats). */
+   65535 cells along x and y), z, and the cell's emitters' density and temperature rates (floats).
+ */
 #define SMOKE_CELL_AXIS_LIMIT 65535u
 
-/* The stencil mask: one byte per cell, 4 to a 32-bit word, 16 to a texel; bit cx + 2 cy + 4 cz of the byte of
-   cell (i, j, k) is set when cell (i + cx, j + cy, k + cz) exists and is fluid, so one load gives
-   the fluid flags of a whole trilinear stencil whose low corner is (i, j, k). */
+/* The stencil mask: one byte per cell, 4 to a 32-bit word, 16 to a texel; bit cx + 2 cy + 4 cz of
+   the byte of cell (i, j, k) is set when cell (i + cx, j + cy, k + cz) exists and is fluid, so one
+   load gives the fluid flags of a whole trilinear stencil whose low corner is (i, j, k). */
 
 /* MacCormack's record of a fluid cell (list order), written by the forward stage for the
    correction: 64-bit words (lo.density, lo.temperature), (hi.density, hi.temperature) over the
@@ -52,7 +53,8 @@ struct SmokeAdvectParams {
 
 struct SmokeFacePairsParams {
     uint faceCount; /* MacGrid::faceTotal of the basis grid */
-    uint firstFace; /* a multiple of 4: this dispatch handles faces firstFace ... firstFace + 4 invocations - 1 */
+    uint firstFace; /* a multiple of 4: this dispatch handles faces firstFace ... firstFace + 4
+                       invocations - 1 */
     uint pad0;
     uint pad1;
 };

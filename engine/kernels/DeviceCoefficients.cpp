@@ -18,7 +18,6 @@
 namespace modeflow::vulkan {
 namespace {
 
-
 void requireFloats(const DeviceBuffer& buffer, int n) {
     if (buffer.bytes() < std::size_t(n) * sizeof(float))
         throw Error("modal contraction: buffer \"" + buffer.name() + "\" holds " +
@@ -53,10 +52,10 @@ DeviceCoefficients::DeviceCoefficients(const VulkanContext& context,
         // The pair sums read a chunk as texels: within the texel limit too.
         const std::size_t rowsPerChunk = context.texelBufferLimit() / tileBytes * kPairTileRows;
         if (rowsPerChunk == 0)
-            throw Error("modal contraction: " + std::to_string(kPairTileRows) + " rows of N = " +
-                        std::to_string(n) + " coefficients exceed the " +
-                        std::to_string(context.texelBufferLimit()) +
-                        "-byte buffer limit of " + context.deviceName());
+            throw Error("modal contraction: " + std::to_string(kPairTileRows) +
+                        " rows of N = " + std::to_string(n) + " coefficients exceed the " +
+                        std::to_string(context.texelBufferLimit()) + "-byte buffer limit of " +
+                        context.deviceName());
         const std::vector<double>& packed = dense->packed();
         for (std::size_t first = 0; first < pairCount(n); first += rowsPerChunk) {
             const std::size_t rows = std::min(rowsPerChunk, pairCount(n) - first);
@@ -92,10 +91,13 @@ DeviceCoefficients::DeviceCoefficients(const VulkanContext& context,
 DeviceCoefficients::SparseRows DeviceCoefficients::slicedRows(const VulkanContext& context,
                                                               const SparseCoefficients& sparse) {
     const std::size_t rows = sparse.pairK().size(), n = std::size_t(sparse.size());
-    const auto length = [&](std::size_t r) { return sparse.rowStart()[r + 1] - sparse.rowStart()[r]; };
+    const auto length = [&](std::size_t r) {
+        return sparse.rowStart()[r + 1] - sparse.rowStart()[r];
+    };
     std::vector<std::size_t> order(rows);
     std::iota(order.begin(), order.end(), std::size_t(0));
-    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return length(a) > length(b); });
+    std::stable_sort(order.begin(), order.end(),
+                     [&](std::size_t a, std::size_t b) { return length(a) > length(b); });
 
     std::vector<std::uint32_t> records(rows * 4, 0u), entries;
     for (std::size_t first = 0; first < rows; first += kSliceRows) {
@@ -104,19 +106,22 @@ DeviceCoefficients::SparseRows DeviceCoefficients::slicedRows(const VulkanContex
         entries.resize(entries.size() + texels * kSliceRows * 4, 0u);  // padding: column 0, value 0
         for (std::size_t lane = 0; lane < kSliceRows && first + lane < rows; ++lane) {
             const std::size_t r = order[first + lane], row = first + lane;
-            records[4 * row] = std::uint32_t(pairIndex(n, std::size_t(sparse.pairK()[r]), std::size_t(sparse.pairJ()[r])));
+            records[4 * row] = std::uint32_t(
+                pairIndex(n, std::size_t(sparse.pairK()[r]), std::size_t(sparse.pairJ()[r])));
             records[4 * row + 1] = std::uint32_t(sliceStart);
             records[4 * row + 2] = std::uint32_t(texels);
             for (std::size_t e = 0; e < length(r); ++e) {
                 const std::size_t source = sparse.rowStart()[r] + e;
-                const std::size_t word = ((sliceStart + (e / 2) * kSliceRows + lane) * 2 + e % 2) * 2;
+                const std::size_t word =
+                    ((sliceStart + (e / 2) * kSliceRows + lane) * 2 + e % 2) * 2;
                 entries[word] = std::uint32_t(sparse.columns()[source]);
                 entries[word + 1] = std::bit_cast<std::uint32_t>(float(sparse.values()[source]));
             }
         }
     }
     return {DeviceBuffer::fromValues<std::uint32_t>(context, records, "sparse rows"),
-            DeviceBuffer::fromValues<std::uint32_t>(context, entries, "sparse entries"), std::uint32_t(rows)};
+            DeviceBuffer::fromValues<std::uint32_t>(context, entries, "sparse entries"),
+            std::uint32_t(rows)};
 }
 
 std::vector<std::uint32_t> DeviceCoefficients::dispatchGroups() const {

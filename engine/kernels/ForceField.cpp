@@ -4,8 +4,8 @@
 #include <cstdint>  // the generated header uses uint32_t without including it
 #include <vector>
 
-#include "engine/format/Error.h"
 #include "engine/field/FaceLocation.h"
+#include "engine/format/Error.h"
 #include "engine/kernels/DofFaces.h"
 #include "engine/vulkan/CommandSequence.h"
 #include "engine/vulkan/VulkanContext.h"
@@ -22,14 +22,15 @@ std::uint32_t checkedSplatCapacity(std::uint32_t maxSplats) {
 
 }  // namespace
 
-ForceFieldKernel::UpDofs ForceFieldKernel::uploadUpDofs(const VulkanContext& context, const MacGrid& grid,
+ForceFieldKernel::UpDofs ForceFieldKernel::uploadUpDofs(const VulkanContext& context,
+                                                        const MacGrid& grid,
                                                         const BasisCache& cache) {
     std::vector<std::uint32_t> entries;
     for (std::size_t d = 0; d < cache.faces.size(); ++d) {
         const FaceLocation face = locateFace(grid, cache.faces[d]);
         if (face.axis != upAxis(grid)) continue;
-        entries.insert(entries.end(), {std::uint32_t(d), std::uint32_t(face.pos[0]), std::uint32_t(face.pos[1]),
-                                       std::uint32_t(face.pos[2])});
+        entries.insert(entries.end(), {std::uint32_t(d), std::uint32_t(face.pos[0]),
+                                       std::uint32_t(face.pos[1]), std::uint32_t(face.pos[2])});
     }
     const auto count = std::uint32_t(entries.size() / 4);
     if (entries.empty()) entries.resize(4, 0u);  // a buffer is never empty; count stays 0
@@ -46,17 +47,22 @@ ForceFieldKernel::ForceFieldKernel(const VulkanContext& context, const BasisCach
       mGroups(groupsFor(context, cache.faces.size(), workgroupSize)),
       mFaces(uploadDofFaces(context, cache)),
       mUp(uploadUpDofs(context, mGrid, cache)),
-      mSplats(context, VkDeviceSize(mMaxSplats) * sizeof(shaders::ForceSplatRecord), "force splats"),
+      mSplats(context, VkDeviceSize(mMaxSplats) * sizeof(shaders::ForceSplatRecord),
+              "force splats"),
       mZero(makeKernel(context, FORCE_STAGE_ZERO, false, workgroupSize)),
       mSplatForce(makeKernel(context, FORCE_STAGE_SPLATS, false, workgroupSize)),
       mBuoyancy(makeKernel(context, FORCE_STAGE_BUOYANCY, false, workgroupSize)),
       mMaskedBuoyancy(makeKernel(context, FORCE_STAGE_BUOYANCY, true, workgroupSize)) {}
 
-ComputeKernel ForceFieldKernel::makeKernel(const VulkanContext& context, std::uint32_t stage, bool useMask,
-                                           std::uint32_t workgroupSize) const {
-    return ComputeKernel(context, ComputeKernelSpec{"force_field", force_field_spv, 6, sizeof(shaders::ForceFieldParams),
+ComputeKernel ForceFieldKernel::makeKernel(const VulkanContext& context, std::uint32_t stage,
+                                           bool useMask, std::uint32_t workgroupSize) const {
+    return ComputeKernel(context, ComputeKernelSpec{"force_field",
+                                                    force_field_spv,
+                                                    6,
+                                                    sizeof(shaders::ForceFieldParams),
                                                     workgroupSize,
-                                                    {stage, std::uint32_t(mGrid.dim), std::uint32_t(mScale), useMask},
+                                                    {stage, std::uint32_t(mGrid.dim),
+                                                     std::uint32_t(mScale), useMask},
                                                     {1}});
 }
 
@@ -97,8 +103,8 @@ void ForceFieldKernel::record(CommandSequence& sequence, double buoyancy, const 
         params.spacing[a] = float(mGrid.spacing[a]);
     }
     // Without a mask the temperature buffer fills the mask's binding; the shader never reads it.
-    const std::array<const DeviceBuffer*, 6> buffers{&mFaces, &mUp.buffer, &temperature,
-                                                     fluidMask ? fluidMask : &temperature, &mSplats, &g};
+    const std::array<const DeviceBuffer*, 6> buffers{
+        &mFaces, &mUp.buffer, &temperature, fluidMask ? fluidMask : &temperature, &mSplats, &g};
     sequence.dispatch(mSplatCount > 0 ? mSplatForce : mZero, buffers, params, mGroups);
     if (buoyancy != 0.0 && mUp.count > 0)
         sequence.dispatch(fluidMask ? mMaskedBuoyancy : mBuoyancy, buffers, params, mGroups);

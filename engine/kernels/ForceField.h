@@ -58,7 +58,8 @@ private:
         DeviceBuffer buffer;  ///< per up-facing DOF: the DOF and its face position (4 uints)
         std::uint32_t count = 0;
     };
-    static UpDofs uploadUpDofs(const VulkanContext& context, const MacGrid& grid, const BasisCache& cache);
+    static UpDofs uploadUpDofs(const VulkanContext& context, const MacGrid& grid,
+                               const BasisCache& cache);
     UpDofs mUp;
     DeviceBuffer mSplats;
     ComputeKernel mZero, mSplatForce, mBuoyancy, mMaskedBuoyancy;

@@ -83,7 +83,8 @@ DeviceBuffer weightBuffer(const VulkanContext& context, const BasisCache& cache,
 }  // namespace
 
 ForceProjectionKernel::ForceProjectionKernel(const VulkanContext& context, const BasisCache& cache,
-                                             FaceQuantity quantity, const ForceProjectionOptions& options)
+                                             FaceQuantity quantity,
+                                             const ForceProjectionOptions& options)
     : mQuantity(quantity),
       mDofCount(std::uint32_t(cache.faces.size())),
       mModeCount(std::uint32_t(cache.velocity.modes.cols())),
@@ -92,12 +93,14 @@ ForceProjectionKernel::ForceProjectionKernel(const VulkanContext& context, const
       mBlockCount((mDofCount + mBlockSize - 1) / mBlockSize),
       mFaces(uploadDofFaces(context, cache)),
       mWeights(weightBuffer(context, cache, quantity)),
-      mPartials(context, std::max<VkDeviceSize>(1, VkDeviceSize(mModeCount) * mBlockCount) * sizeof(float),
+      mPartials(context,
+                std::max<VkDeviceSize>(1, VkDeviceSize(mModeCount) * mBlockCount) * sizeof(float),
                 "projection partial sums"),
       mContext(context),
       mWorkgroupSize(options.workgroupSize),
       mSumKernel(context, ComputeKernelSpec{"project_force_sum", project_force_sum_spv, 3,
-                                            sizeof(shaders::ProjectForceSumParams), options.workgroupSize}) {}
+                                            sizeof(shaders::ProjectForceSumParams),
+                                            options.workgroupSize}) {}
 
 void ForceProjectionKernel::record(CommandSequence& sequence, const ModeBuffer& modes, const DeviceBuffer& q,
                                    const DeviceBuffer& f) const {
@@ -118,7 +121,8 @@ void ForceProjectionKernel::record(CommandSequence& sequence, const ModeBuffer& 
         params.modeCount = chunk.modeCount;
         const std::uint32_t slots = slotsFor(chunk.modeCount);
         // q twice: its whole texels (binding 1) and one float at a time (binding 5).
-        const std::array<const DeviceBuffer*, 6> buffers{&chunk.buffer, &q, &mWeights, &mFaces, &mPartials, &q};
+        const std::array<const DeviceBuffer*, 6> buffers{&chunk.buffer, &q,         &mWeights,
+                                                         &mFaces,       &mPartials, &q};
         sequence.dispatch(partialKernel(modes.precision(), slots), buffers, params,
                           (chunk.modeCount + slots - 1) / slots * mBlockCount);
     }
@@ -134,9 +138,13 @@ const ComputeKernel& ForceProjectionKernel::partialKernel(ModePrecision precisio
         const std::uint32_t gather = mQuantity == FaceQuantity::FaceField;
         found = mPartialKernels
                     .try_emplace({half, slots}, mContext,
-                                 ComputeKernelSpec{"project_force", project_force_spv, 6,
-                                                   sizeof(shaders::ProjectForceParams), mWorkgroupSize,
-                                                   {std::uint32_t(half), gather, slots}, {0, 1, 2}})
+                                 ComputeKernelSpec{"project_force",
+                                                   project_force_spv,
+                                                   6,
+                                                   sizeof(shaders::ProjectForceParams),
+                                                   mWorkgroupSize,
+                                                   {std::uint32_t(half), gather, slots},
+                                                   {0, 1, 2}})
                     .first;
     }
     return found->second;

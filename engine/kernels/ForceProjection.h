@@ -4,8 +4,8 @@
 /// project_force_sum.comp; CPU reference: engine/field/ForceProjection.h):
 /// f_k = Σ_d Ψ_k[d] w_d q_d, float32, deterministic (no atomics).
 ///
-/// Pass 1 splits the DOFs into blocks and gives each workgroup up to 64 modes × one block, writing one
-/// partial sum per mode and block (one dispatch per chunk of the ModeBuffer); pass 2 adds each
+/// Pass 1 splits the DOFs into blocks and gives each workgroup up to 64 modes × one block, writing
+/// one partial sum per mode and block (one dispatch per chunk of the ModeBuffer); pass 2 adds each
 /// mode's partial sums in a fixed order and applies the mode's scale. Blocks keep a projection
 /// parallel across a GPU however few modes there are: a 64³ basis (~750k DOFs) with 100 modes
 /// makes ~760 workgroups of 2048 DOFs. f stays on the device for the next modal step. The modes,

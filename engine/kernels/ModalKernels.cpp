@@ -25,11 +25,20 @@ const VulkanContext& requireFeatures(const VulkanContext& context) {
 }  // namespace
 
 ModalKernels::ModalKernels(const VulkanContext& context)
-    : pairSums(requireFeatures(context),
-               {"modal_pair_sums", modal_pair_sums_spv, 3, sizeof(shaders::PairSumsParams), 64,
-                {}, {0, 1}}),
-      sparsePairSums(context, {"modal_pair_sums_sparse", modal_pair_sums_sparse_spv, 4,
-                               sizeof(shaders::SparsePairSumsParams), 64, {}, {0, 1, 2}}),
+    : pairSums(requireFeatures(context), {"modal_pair_sums",
+                                          modal_pair_sums_spv,
+                                          3,
+                                          sizeof(shaders::PairSumsParams),
+                                          64,
+                                          {},
+                                          {0, 1}}),
+      sparsePairSums(context, {"modal_pair_sums_sparse",
+                               modal_pair_sums_sparse_spv,
+                               4,
+                               sizeof(shaders::SparsePairSumsParams),
+                               64,
+                               {},
+                               {0, 1, 2}}),
       combine(context, {"modal_combine", modal_combine_spv, 3, sizeof(shaders::CombineParams), 64}),
       update(context,
              {"modal_update", modal_update_spv, 10, sizeof(shaders::ModalUpdateParams), 256}) {}

@@ -75,8 +75,9 @@ ModeBuffer::ModeBuffer(const VulkanContext& context, const Eigen::MatrixXd& mode
     // The kernels read a chunk as texels: within the texel limit too.
     const VkDeviceSize limit = context.texelBufferLimit();
     if (modeBytes > limit)
-        throw Error("mode buffer: one mode takes " + std::to_string(modeBytes) + " bytes, more than the " +
-                    std::to_string(limit) + "-byte buffer limit of " + context.deviceName());
+        throw Error("mode buffer: one mode takes " + std::to_string(modeBytes) +
+                    " bytes, more than the " + std::to_string(limit) + "-byte buffer limit of " +
+                    context.deviceName());
     // A multiple of 4 modes per chunk where 4 fit, so the kernels' reads of four modes' state
     // values at a time never straddle two chunks (they handle it where the limit forces it).
     auto perChunk = std::uint32_t(std::min<VkDeviceSize>(mModeCount, limit / modeBytes));

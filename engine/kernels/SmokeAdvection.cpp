@@ -57,20 +57,32 @@ shaders::SmokeFacePairsParams pairParams(const MacGrid& basis) {
 /// One of the smoke_advect_<stage>_<dim>d kernels (bindings 0-7 of shaders/SmokeAdvect.glsl):
 /// the read-only inputs as texels, and MacCormack's hat and record too in the correction, which
 /// reads what the forward stage wrote.
-ComputeKernel advectKernel(const VulkanContext& context, const char* name, std::span<const std::uint32_t> spirv,
-                           std::uint32_t stage, std::uint32_t workgroupSize) {
+ComputeKernel advectKernel(const VulkanContext& context, const char* name,
+                           std::span<const std::uint32_t> spirv, std::uint32_t stage,
+                           std::uint32_t workgroupSize) {
     std::vector<std::uint32_t> texels{0, 1, 2, 3};
     if (stage == SMOKE_STAGE_MACCORMACK_CORRECT) texels.insert(texels.end(), {4, 5});
-    return ComputeKernel(context, ComputeKernelSpec{name, spirv, 8, sizeof(shaders::SmokeAdvectParams), workgroupSize,
-                                                    {}, std::move(texels)});
+    return ComputeKernel(context, ComputeKernelSpec{name,
+                                                    spirv,
+                                                    8,
+                                                    sizeof(shaders::SmokeAdvectParams),
+                                                    workgroupSize,
+                                                    {},
+                                                    std::move(texels)});
 }
 
 }  // namespace
 
-SmokeAdvectionKernels::SmokeAdvectionKernels(const VulkanContext& context, std::uint32_t workgroupSize)
+SmokeAdvectionKernels::SmokeAdvectionKernels(const VulkanContext& context,
+                                             std::uint32_t workgroupSize)
     : mContext(context.requireShaderInt64("the smoke advection")),
-      mFacePairs(context, ComputeKernelSpec{"smoke_face_pairs", smoke_face_pairs_spv, 3,
-                                            sizeof(shaders::SmokeFacePairsParams), workgroupSize, {}, {0}}),
+      mFacePairs(context, ComputeKernelSpec{"smoke_face_pairs",
+                                            smoke_face_pairs_spv,
+                                            3,
+                                            sizeof(shaders::SmokeFacePairsParams),
+                                            workgroupSize,
+                                            {},
+                                            {0}}),
       mStages{advectKernel(context, "smoke_advect_sl_2d", smoke_advect_sl_2d_spv,
                            SMOKE_STAGE_SEMI_LAGRANGIAN, workgroupSize),
               advectKernel(context, "smoke_advect_forward_2d", smoke_advect_forward_2d_spv,
@@ -117,14 +129,14 @@ void SmokeAdvectionKernels::record(CommandSequence& sequence, SmokeState& state,
     shaders::SmokeFacePairsParams pairs = pairParams(state.basisGrid());
     // Bindings 0-2 of shaders/smoke_face_pairs.comp: the velocity as texels and as floats.
     const std::array<const DeviceBuffer*, 3> pairBuffers{&velocity, &velocity, &state.facePairs()};
-    dispatchAll(sequence, mFacePairs, pairBuffers, pairs, &shaders::SmokeFacePairsParams::firstFace, (faces + 3) / 4,
-                4);
+    dispatchAll(sequence, mFacePairs, pairBuffers, pairs, &shaders::SmokeFacePairsParams::firstFace,
+                (faces + 3) / 4, 4);
 
     shaders::SmokeAdvectParams params = stepParams(state, dt);
     // Bindings 0-7 of shaders/SmokeAdvect.glsl.
-    const std::array<const DeviceBuffer*, 8> buffers{&state.facePairs(), &state.fluidCells(), &state.stencilMask(),
-                                                     &state.fields(),    &state.hat(),        &state.record(),
-                                                     &state.nextFields(), &state.temperature()};
+    const std::array<const DeviceBuffer*, 8> buffers{
+        &state.facePairs(), &state.fluidCells(), &state.stencilMask(), &state.fields(),
+        &state.hat(),       &state.record(),     &state.nextFields(),  &state.temperature()};
     const auto stage = [&](std::uint32_t s) {
         dispatchAll(sequence, stageKernel(s, state.smokeGrid().dim), buffers, params,
                     &shaders::SmokeAdvectParams::firstCell, state.fluidCellCount());

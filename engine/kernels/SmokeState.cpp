@@ -35,15 +35,17 @@ std::vector<std::int64_t> fluidIndices(const std::vector<std::uint8_t>& fluid) {
 /// `values` padded with zeros to whole texels, at least one: the kernels read these buffers as
 /// texels (DeviceBuffer::texelView), which cover whole texels only.
 template <typename T>
-DeviceBuffer texelBuffer(const VulkanContext& context, std::vector<T> values, const std::string& name) {
+DeviceBuffer texelBuffer(const VulkanContext& context, std::vector<T> values,
+                         const std::string& name) {
     static_assert(DeviceBuffer::kTexelBytes % sizeof(T) == 0);
     constexpr std::size_t perTexel = DeviceBuffer::kTexelBytes / sizeof(T);
-    values.resize(std::max<std::size_t>((values.size() + perTexel - 1) / perTexel, 1) * perTexel, T{});
+    values.resize(std::max<std::size_t>((values.size() + perTexel - 1) / perTexel, 1) * perTexel,
+                  T{});
     const std::size_t bytes = values.size() * sizeof(T);
     if (bytes > context.texelBufferLimit())
-        throw Error("smoke state: " + name + " would take " + std::to_string(bytes) + " bytes, more than the " +
-                    std::to_string(context.texelBufferLimit()) + "-byte texel buffer limit of " +
-                    context.deviceName());
+        throw Error("smoke state: " + name + " would take " + std::to_string(bytes) +
+                    " bytes, more than the " + std::to_string(context.texelBufferLimit()) +
+                    "-byte texel buffer limit of " + context.deviceName());
     return DeviceBuffer::fromValues<T>(context, values, name);
 }
 
@@ -74,7 +76,8 @@ std::vector<std::uint8_t> stencilFlags(const MacGrid& smoke, const std::vector<s
 /// temperature rates (`rates`, two per entry, empty: none).
 std::vector<std::uint32_t> cellList(const MacGrid& smoke, const std::vector<std::int64_t>& indices,
                                     std::span<const float> rates) {
-    std::vector<std::uint32_t> words(std::max<std::size_t>(indices.size(), 1) * 4, 0);  // never empty
+    std::vector<std::uint32_t> words(std::max<std::size_t>(indices.size(), 1) * 4,
+                                     0);  // never empty
     for (std::size_t e = 0; e < indices.size(); ++e) {
         const std::int64_t c = indices[e];
         const std::int64_t row = c / smoke.cells[0];
@@ -107,8 +110,10 @@ SmokeState::SmokeState(const VulkanContext& context, const MacGrid& basisGrid, i
       mFluidCells(texelBuffer(context, cellList(mSmoke, mFluidIndex, {}), "smoke fluid cells")),
       mStencilMask(texelBuffer(context, stencilFlags(mSmoke, mFluid), "smoke stencil mask")),
       mHat(zeroBuffer(context, std::size_t(mSmoke.cellCount()) * 8, "MacCormack fields")),
-      mRecord(zeroBuffer(context, std::size_t(mFluidCount) * SMOKE_RECORD_WORDS * 8, "MacCormack record")),
-      mFacePairs(zeroBuffer(context, std::size_t(mBasis.faceTotal() + 3) / 4 * 32, "smoke face pairs")) {}
+      mRecord(zeroBuffer(context, std::size_t(mFluidCount) * SMOKE_RECORD_WORDS * 8,
+                         "MacCormack record")),
+      mFacePairs(
+          zeroBuffer(context, std::size_t(mBasis.faceTotal() + 3) / 4 * 32, "smoke face pairs")) {}
 
 void SmokeState::upload(std::span<const float> density, std::span<const float> temperature) {
     if (density.size() != std::size_t(cellCount()) || temperature.size() != std::size_t(cellCount()))

@@ -95,9 +95,13 @@ const ComputeKernel& ReconstructionKernel::kernel(const std::array<std::uint32_t
     if (found == mKernels.end())
         found = mKernels
                     .try_emplace(key, mContext,
-                                 ComputeKernelSpec{"reconstruct_velocity", reconstruct_velocity_spv, 6,
-                                                   sizeof(shaders::ReconstructVelocityParams), mWorkgroupSize,
-                                                   {key.begin(), key.end()}, {0, 3}})
+                                 ComputeKernelSpec{"reconstruct_velocity",
+                                                   reconstruct_velocity_spv,
+                                                   6,
+                                                   sizeof(shaders::ReconstructVelocityParams),
+                                                   mWorkgroupSize,
+                                                   {key.begin(), key.end()},
+                                                   {0, 3}})
                     .first;
     return found->second;
 }

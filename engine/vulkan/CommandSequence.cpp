@@ -49,7 +49,8 @@ CommandSequence::CommandSequence(const VulkanContext& context, bool timestamps,
 }
 
 void CommandSequence::setTiming(bool on) {
-    if (mRecording) throw Error("CommandSequence: timing switched while a submission is being recorded");
+    if (mRecording)
+        throw Error("CommandSequence: timing switched while a submission is being recorded");
     mTimingOn = on;
 }
 

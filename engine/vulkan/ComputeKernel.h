@@ -2,13 +2,13 @@
 /// @file ComputeKernel.h
 /// One compute pipeline built from embedded SPIR-V (Kompute's Algorithm): a descriptor set
 /// layout of N buffers (bindings 0…N−1 of set 0: storage buffers, or uniform texel buffers of
-/// 16-byte RGBA32UI texels for the read-only streams named in texelBindings), a push-constant block, the
-/// workgroup size as specialization constant 0 and optional further uint constants 1…k (fixed at
-/// pipeline creation, so a shader's branches and loop counts on them fold away: lavapipe executes
-/// both sides of a runtime branch). Shaders declare
-/// `layout(local_size_x = 64, local_size_x_id = 0) in;` so the size written there is also the
-/// default (see PLATFORM.md). Buffers are bound by push descriptors at record time, so recording
-/// needs no descriptor pool and a kernel can be recorded any number of times.
+/// 16-byte RGBA32UI texels for the read-only streams named in texelBindings), a push-constant
+/// block, the workgroup size as specialization constant 0 and optional further uint constants 1…k
+/// (fixed at pipeline creation, so a shader's branches and loop counts on them fold away: lavapipe
+/// executes both sides of a runtime branch). Shaders declare `layout(local_size_x = 64,
+/// local_size_x_id = 0) in;` so the size written there is also the default (see PLATFORM.md).
+/// Buffers are bound by push descriptors at record time, so recording needs no descriptor pool and
+/// a kernel can be recorded any number of times.
 
 #include <cstddef>
 #include <cstdint>

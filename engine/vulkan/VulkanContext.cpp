@@ -119,8 +119,8 @@ VulkanContext::VulkanContext(const VulkanContextOptions& options) {
                           (subgroup.supportedOperations & VK_SUBGROUP_FEATURE_ARITHMETIC_BIT);
     if (options.storageBufferLimit > 0)
         mStorageBufferLimit = std::min(mStorageBufferLimit, options.storageBufferLimit);
-    mTexelBufferLimit = std::min(mStorageBufferLimit,
-                                 VkDeviceSize(mProperties.limits.maxTexelBufferElements) * 16);
+    mTexelBufferLimit =
+        std::min(mStorageBufferLimit, VkDeviceSize(mProperties.limits.maxTexelBufferElements) * 16);
 
     const float priority = 1.0f;
     VkDeviceQueueCreateInfo queueInfo{};

@@ -127,7 +127,8 @@ TEST_P(ModalContractionKernelTest, TimingCanBeSwitchedOffBetweenSubmissions) {
     const DenseCoefficients c = roundedDense(testing::randomDense(40, 5));
     const ModalKernels kernels(context());
     const DeviceCoefficients device(context(), c);
-    const DeviceBuffer a = DeviceBuffer::fromValues<float>(context(), toFloat(testing::randomVector(40, 1)), "a");
+    const DeviceBuffer a =
+        DeviceBuffer::fromValues<float>(context(), toFloat(testing::randomVector(40, 1)), "a");
     DeviceBuffer out(context(), 40 * sizeof(float), "out");
     CommandSequence sequence(context(), true);
     if (!sequence.isTiming()) GTEST_SKIP() << "the queue writes no timestamps";

@@ -160,7 +160,8 @@ TEST_P(SimulationTest, TimingSamplesOnlyTheStepsAskedFor) {
     const FrameStats untimed = device.advanceSteps(3);
     EXPECT_EQ(untimed.steps, 3);
     EXPECT_EQ(untimed.timedSteps, 0);
-    EXPECT_EQ(untimed.forcesMs + untimed.modalMs + untimed.reconstructionMs + untimed.advectionMs, 0.0);
+    EXPECT_EQ(untimed.forcesMs + untimed.modalMs + untimed.reconstructionMs + untimed.advectionMs,
+              0.0);
     device.setTiming(true);
     EXPECT_EQ(device.advanceSteps(1).timedSteps, 1);
     expectNoValidationMessages();

@@ -137,7 +137,8 @@ TEST_P(VulkanContextTest, BufferOverMaxStorageBufferRangeIsRefusedClearly) {
 TEST_P(VulkanContextTest, BuffersOfWholeTexelsCanBeReadAsTexels) {
     // Kernels read read-only streams as uniform texel buffers of 16-byte texels (RGBA32UI).
     const VkDeviceSize texelLimit =
-        VkDeviceSize(context().properties().limits.maxTexelBufferElements) * DeviceBuffer::kTexelBytes;
+        VkDeviceSize(context().properties().limits.maxTexelBufferElements) *
+        DeviceBuffer::kTexelBytes;
     EXPECT_EQ(context().texelBufferLimit(), std::min(context().storageBufferLimit(), texelLimit));
     EXPECT_NE(DeviceBuffer(context(), 16, "one texel").texelView(), VK_NULL_HANDLE);
     // The view covers the whole texels; the ragged tail is read some other way.

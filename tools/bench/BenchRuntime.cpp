@@ -80,8 +80,9 @@ public:
           mA(Eigen::VectorXf::Random(c.size())),
           mSums(mRows) {}
     double seconds() {
-        const Eigen::Map<const Eigen::Matrix<float, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>> matrix(
-            mPacked.data(), mRows, mA.size());
+        const Eigen::Map<
+            const Eigen::Matrix<float, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>
+            matrix(mPacked.data(), mRows, mA.size());
         const double s = secondsOf([&] { mSums.noalias() = matrix * mA; });
         volatile float sink = mSums[0];
         (void)sink;
@@ -101,7 +102,8 @@ public:
         : mMatrix(Eigen::Index(c.pairK().size()), c.size()), mA(Eigen::VectorXf::Random(c.size())) {
         std::vector<Eigen::Triplet<float>> entries;
         for (std::size_t r = 0; r < c.pairK().size(); ++r)
-            for (std::size_t e = std::size_t(c.rowStart()[r]); e < std::size_t(c.rowStart()[r + 1]); ++e)
+            for (std::size_t e = std::size_t(c.rowStart()[r]); e < std::size_t(c.rowStart()[r + 1]);
+                 ++e)
                 entries.emplace_back(int(r), int(c.columns()[e]), float(c.values()[e]));
         mMatrix.setFromTriplets(entries.begin(), entries.end());
         mSums.resize(mMatrix.rows());
@@ -137,10 +139,12 @@ Timings timings(int repeat, Device device, Eigen eigen) {
     return {median(deviceMs), median(paired), median(warm)};
 }
 
-/// "paired/warm%": the device's rate as a share of Eigen's, both ways (same bytes, so a time ratio).
+/// "paired/warm%": the device's rate as a share of Eigen's, both ways (same bytes, so a time
+/// ratio).
 std::string shares(double deviceMs, double eigenPairedMs, double eigenWarmMs) {
     char text[32];
-    std::snprintf(text, sizeof text, "%.0f/%.0f%%", 100.0 * eigenPairedMs / deviceMs, 100.0 * eigenWarmMs / deviceMs);
+    std::snprintf(text, sizeof text, "%.0f/%.0f%%", 100.0 * eigenPairedMs / deviceMs,
+                  100.0 * eigenWarmMs / deviceMs);
     return text;
 }
 
@@ -166,16 +170,19 @@ void contractionRow(const VulkanContext& context, const ModalKernels& kernels, c
         },
         [&] { return gemv.seconds(); });
     const double bytes = double(device.streamedBytes());
-    std::printf("%-7s %5d %8.2f %12.3f %10.3f %9.2f %8.2f %6.2f %11s\n", storage, n, bytes * 1e-6, t.deviceMs,
-                median(combines), bytes / t.deviceMs * 1e-6, bytes / t.eigenPairedMs * 1e-6,
-                bytes / t.eigenWarmMs * 1e-6, shares(t.deviceMs, t.eigenPairedMs, t.eigenWarmMs).c_str());
+    std::printf("%-7s %5d %8.2f %12.3f %10.3f %9.2f %8.2f %6.2f %11s\n", storage, n, bytes * 1e-6,
+                t.deviceMs, median(combines), bytes / t.deviceMs * 1e-6,
+                bytes / t.eigenPairedMs * 1e-6, bytes / t.eigenWarmMs * 1e-6,
+                shares(t.deviceMs, t.eigenPairedMs, t.eigenWarmMs).c_str());
 }
 
 void contractionTable(const VulkanContext& context, int repeat) {
-    std::printf("\nContraction out = C(a, b), float32 (GB/s over the coefficient bytes; sparse: 10%% of the\n"
-                "entries, values and indices, against Eigen's sparse row-major GEMV)\n");
-    std::printf("%-7s %5s %8s %12s %10s %9s %15s %11s\n", "storage", "N", "MB", "pair sums ms", "combine ms",
-                "dev GB/s", "Eigen GB/s p/w", "share p/w");
+    std::printf(
+        "\nContraction out = C(a, b), float32 (GB/s over the coefficient bytes; sparse: 10%% of "
+        "the\n"
+        "entries, values and indices, against Eigen's sparse row-major GEMV)\n");
+    std::printf("%-7s %5s %8s %12s %10s %9s %15s %11s\n", "storage", "N", "MB", "pair sums ms",
+                "combine ms", "dev GB/s", "Eigen GB/s p/w", "share p/w");
     const ModalKernels kernels(context);
     for (const int n : {50, 100, 200}) {
         const DenseCoefficients c = randomCoefficients(n);
@@ -267,8 +274,10 @@ public:
           mOut(transposed ? modes.cols() : modes.rows()) {}
     double seconds() {
         const double s = secondsOf([&] {
-            if (mTransposed) mOut.noalias() = mBasis.transpose() * mIn;
-            else mOut.noalias() = mBasis * mIn;
+            if (mTransposed)
+                mOut.noalias() = mBasis.transpose() * mIn;
+            else
+                mOut.noalias() = mBasis * mIn;
         });
         volatile float sink = mOut[0];
         (void)sink;
@@ -291,8 +300,8 @@ constexpr std::array<Grid, 3> kGrids{Grid{"256^2", 2, 256}, Grid{"48^3", 3, 48},
 void runtimeTable(const VulkanContext& context, int repeat) {
     std::printf("\nWhole runtime step (Simulation, midpoint, MacCormack, smoke scale 1, buoyancy + one emitter):\n"
                 "GPU ms per step by stage; reconstruction GB/s over the float32 basis vs Eigen GEMV\n");
-    std::printf("%-6s %4s %9s %8s %8s %6s %8s %8s %8s %9s %11s\n", "grid", "N", "DOFs", "forces", "modal", "iters",
-                "recon", "advect", "step", "dev GB/s", "share p/w");
+    std::printf("%-6s %4s %9s %8s %8s %6s %8s %8s %8s %9s %11s\n", "grid", "N", "DOFs", "forces",
+                "modal", "iters", "recon", "advect", "step", "dev GB/s", "share p/w");
     for (const Grid& g : kGrids) {
         for (const int n : {50, 100, 200}) {
             const SyntheticScene scene = syntheticScene(g.dim, g.cells, n);
@@ -322,15 +331,16 @@ void runtimeTable(const VulkanContext& context, int repeat) {
                     forces.push_back(stats.forcesMs);
                     modal.push_back(stats.modalMs);
                     advect.push_back(stats.advectionMs);
-                    step.push_back(stats.forcesMs + stats.modalMs + stats.reconstructionMs + stats.advectionMs);
+                    step.push_back(stats.forcesMs + stats.modalMs + stats.reconstructionMs +
+                                   stats.advectionMs);
                     iterations = std::max(iterations, stats.maxIterations);
                     return stats.reconstructionMs;
                 },
                 [&] { return gemv.seconds(); });
             const double basisBytes = double(scene.cache.faces.size()) * n * sizeof(float);
             std::printf("%-6s %4d %9zu %8.2f %8.2f %6d %8.2f %8.2f %8.2f %9.2f %11s\n", g.name, n,
-                        scene.cache.faces.size(), median(forces), median(modal), iterations, t.deviceMs,
-                        median(advect), median(step), basisBytes / t.deviceMs * 1e-6,
+                        scene.cache.faces.size(), median(forces), median(modal), iterations,
+                        t.deviceMs, median(advect), median(step), basisBytes / t.deviceMs * 1e-6,
                         shares(t.deviceMs, t.eigenPairedMs, t.eigenWarmMs).c_str());
             std::fflush(stdout);
         }
@@ -351,8 +361,8 @@ double kernelMs(const VulkanContext& context, Record record) {
 void kernelTable(const VulkanContext& context, int repeat) {
     std::printf("\nBasis kernels alone (GPU ms; GB/s over the float32 basis bytes vs Eigen's float GEMV, 1 thread):\n"
                 "reconstruction Psi v (one dispatch), projection Psi^T (w q) (both passes), float32 and float16 modes\n");
-    std::printf("%-6s %4s %9s | %8s %7s %10s %8s | %8s %7s %10s %8s\n", "grid", "N", "DOFs", "recon32", "GB/s", "share p/w",
-                "recon16", "proj32", "GB/s", "share p/w", "proj16");
+    std::printf("%-6s %4s %9s | %8s %7s %10s %8s | %8s %7s %10s %8s\n", "grid", "N", "DOFs",
+                "recon32", "GB/s", "share p/w", "recon16", "proj32", "GB/s", "share p/w", "proj16");
     for (const Grid& g : kGrids) {
         for (const int n : {50, 100, 200}) {
             const SyntheticScene scene = syntheticScene(g.dim, g.cells, n);
@@ -371,20 +381,31 @@ void kernelTable(const VulkanContext& context, int repeat) {
                 const ModeBuffer modes(context, cache.velocity.modes, precision);
                 const int p = precision == ModePrecision::Float16;
                 recon[p] = timings(
-                    repeat, [&] { return kernelMs(context, [&](CommandSequence& s) { reconstruction.record(s, modes, v, field); }); },
+                    repeat,
+                    [&] {
+                        return kernelMs(context, [&](CommandSequence& s) {
+                            reconstruction.record(s, modes, v, field);
+                        });
+                    },
                     [&] { return reconGemv.seconds(); });
                 proj[p] = timings(
-                    repeat, [&] { return kernelMs(context, [&](CommandSequence& s) { projection.record(s, modes, q, f); }); },
+                    repeat,
+                    [&] {
+                        return kernelMs(context, [&](CommandSequence& s) {
+                            projection.record(s, modes, q, f);
+                        });
+                    },
                     [&] { return projGemv.seconds(); });
             }
             // The shares compare the float32 rounds with Eigen.
             const double bytes = double(cache.faces.size()) * n * sizeof(float);
-            std::printf("%-6s %4d %9zu | %8.2f %7.2f %10s %8.2f | %8.2f %7.2f %10s %8.2f\n", g.name, n,
-                        cache.faces.size(), recon[0].deviceMs, bytes / recon[0].deviceMs * 1e-6,
-                        shares(recon[0].deviceMs, recon[0].eigenPairedMs, recon[0].eigenWarmMs).c_str(),
-                        recon[1].deviceMs, proj[0].deviceMs, bytes / proj[0].deviceMs * 1e-6,
-                        shares(proj[0].deviceMs, proj[0].eigenPairedMs, proj[0].eigenWarmMs).c_str(),
-                        proj[1].deviceMs);
+            std::printf(
+                "%-6s %4d %9zu | %8.2f %7.2f %10s %8.2f | %8.2f %7.2f %10s %8.2f\n", g.name, n,
+                cache.faces.size(), recon[0].deviceMs, bytes / recon[0].deviceMs * 1e-6,
+                shares(recon[0].deviceMs, recon[0].eigenPairedMs, recon[0].eigenWarmMs).c_str(),
+                recon[1].deviceMs, proj[0].deviceMs, bytes / proj[0].deviceMs * 1e-6,
+                shares(proj[0].deviceMs, proj[0].eigenPairedMs, proj[0].eigenWarmMs).c_str(),
+                proj[1].deviceMs);
             std::fflush(stdout);
         }
     }
@@ -397,7 +418,8 @@ int main(int argc, char** argv) {
     int repeat = 20;
     std::string only;  // one table, or all
     for (int i = 1; i < argc; ++i) {
-        if (i + 1 < argc && !std::strcmp(argv[i], "--only")) only = argv[++i];
+        if (i + 1 < argc && !std::strcmp(argv[i], "--only"))
+            only = argv[++i];
         else if (i + 1 < argc && !std::strcmp(argv[i], "--device")) options.deviceIndex = std::uint32_t(std::atoi(argv[++i]));
         else if (i + 1 < argc && !std::strcmp(argv[i], "--repeat")) repeat = std::max(3, std::atoi(argv[++i]));
     }
