@@ -377,25 +377,20 @@ void kernelTable(const VulkanContext& context, int repeat) {
             const DeviceBuffer f(context, std::size_t(n) * sizeof(float), "f");
             Timings recon[2], proj[2];
             BasisGemv reconGemv(cache.velocity.modes, false), projGemv(cache.velocity.modes, true);
+            // The kernel `record` records, timed against `gemv`.
+            const auto against = [&](BasisGemv& gemv, const auto& record) {
+                return timings(
+                    repeat, [&] { return kernelMs(context, record); },
+                    [&] { return gemv.seconds(); });
+            };
             for (const ModePrecision precision : {ModePrecision::Float32, ModePrecision::Float16}) {
                 const ModeBuffer modes(context, cache.velocity.modes, precision);
                 const int p = precision == ModePrecision::Float16;
-                recon[p] = timings(
-                    repeat,
-                    [&] {
-                        return kernelMs(context, [&](CommandSequence& s) {
-                            reconstruction.record(s, modes, v, field);
-                        });
-                    },
-                    [&] { return reconGemv.seconds(); });
-                proj[p] = timings(
-                    repeat,
-                    [&] {
-                        return kernelMs(context, [&](CommandSequence& s) {
-                            projection.record(s, modes, q, f);
-                        });
-                    },
-                    [&] { return projGemv.seconds(); });
+                recon[p] = against(reconGemv, [&](CommandSequence& s) {
+                    reconstruction.record(s, modes, v, field);
+                });
+                proj[p] = against(projGemv,
+                                  [&](CommandSequence& s) { projection.record(s, modes, q, f); });
             }
             // The shares compare the float32 rounds with Eigen.
             const double bytes = double(cache.faces.size()) * n * sizeof(float);
