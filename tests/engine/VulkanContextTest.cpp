@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include "engine/vulkan/ComputeKernel.h"
 #include "engine/vulkan/DeviceBuffer.h"
 #include "engine/vulkan/DeviceSelector.h"
 #include "engine/vulkan/VulkanError.h"
@@ -144,6 +145,15 @@ TEST_P(VulkanContextTest, BuffersOfWholeTexelsCanBeReadAsTexels) {
     // The view covers the whole texels; the ragged tail is read some other way.
     EXPECT_NE(DeviceBuffer(context(), 20, "one texel and a float").texelView(), VK_NULL_HANDLE);
     EXPECT_EQ(DeviceBuffer(context(), 12, "three floats").texelView(), VK_NULL_HANDLE);
+    // A texel binding must be one of the kernel's bindings (checked before any SPIR-V is read).
+    try {
+        const vulkan::ComputeKernel kernel(context(), {"probe", {}, 2, 0, 64, {}, {2}});
+        FAIL() << "a kernel with texel binding 2 of 2 bindings was made";
+    } catch (const Error& e) {
+        const std::string message = e.what();
+        EXPECT_NE(message.find("texel binding 2"), std::string::npos) << message;
+        EXPECT_NE(message.find("probe"), std::string::npos) << message;
+    }
     expectNoValidationMessages();
 }
 
