@@ -1,0 +1,102 @@
+#pragma once
+/// @file SceneSchema.h
+/// Internal to precompute/scene: what a scene file may hold. The spelling of every choice (keyword
+/// ↔ enum tables) and the keys each table takes, so that a key is checked before it is read and
+/// a typo is never silently replaced by a default.
+
+#include <span>
+#include <string_view>
+#include <utility>
+
+#include "precompute/scene/SceneSpec.h"
+
+namespace modeflow::scene {
+
+template <typename T>
+using Choices = std::span<const std::pair<std::string_view, T>>;
+
+inline constexpr std::pair<std::string_view, ShapeKind> kShapeKinds[] = {
+    {"ball", ShapeKind::Ball},           {"box", ShapeKind::Box},
+    {"ellipsoid", ShapeKind::Ellipsoid}, {"cylinder", ShapeKind::Cylinder},
+    {"torus", ShapeKind::Torus},         {"mesh", ShapeKind::Mesh},
+};
+inline constexpr std::pair<std::string_view, CsgOp> kCsgOps[] = {
+    {"union", CsgOp::Union}, {"subtract", CsgOp::Subtract}, {"intersect", CsgOp::Intersect}};
+inline constexpr std::pair<std::string_view, ScalarBoundary> kScalarBoundaries[] = {
+    {"neumann", ScalarBoundary::Neumann}, {"dirichlet", ScalarBoundary::Dirichlet}};
+inline constexpr std::pair<std::string_view, WallKind> kWalls[] = {
+    {"free-slip", WallKind::FreeSlip}, {"no-slip", WallKind::NoSlip}};
+inline constexpr std::pair<std::string_view, BoundaryTreatment> kBoundaries[] = {
+    {"cut-cell", BoundaryTreatment::CutCell}, {"staircase", BoundaryTreatment::Staircase}};
+inline constexpr std::pair<std::string_view, Integrator> kIntegrators[] = {
+    {"explicit", Integrator::Explicit},
+    {"rk4", Integrator::Rk4},
+    {"midpoint", Integrator::Midpoint},
+    {"trapezoidal", Integrator::Trapezoidal}};
+inline constexpr std::pair<std::string_view, InitialVelocity> kInitialVelocities[] = {
+    {"zero", InitialVelocity::Zero},
+    {"random", InitialVelocity::Random},
+    {"modes", InitialVelocity::Modes},
+    {"vortices", InitialVelocity::Vortices}};
+inline constexpr std::pair<std::string_view, InitialMagnetic> kInitialMagnetics[] = {
+    {"random", InitialMagnetic::Random}, {"uniform", InitialMagnetic::Uniform}};
+inline constexpr std::pair<std::string_view, ObstacleShape> kObstacleShapes[] = {
+    {"ball", ObstacleShape::Ball},
+    {"box", ObstacleShape::Box},
+    {"capsule", ObstacleShape::Capsule}};
+inline constexpr std::pair<std::string_view, AdvectionScheme> kAdvectionSchemes[] = {
+    {"maccormack", AdvectionScheme::MacCormack},
+    {"semi-lagrangian", AdvectionScheme::SemiLagrangian}};
+inline constexpr std::pair<std::string_view, bool> kBasisPrecisions[] = {{"float32", false},
+                                                                         {"float16", true}};
+
+template <typename T>
+std::string_view keywordOf(Choices<T> choices, T value) {
+    for (const auto& [name, v] : choices) {
+        if (v == value) return name;
+    }
+    return "?";
+}
+
+inline constexpr std::string_view kTopLevelTables[] = {
+    "grid", "domain", "basis", "simulation", "initial", "source", "obstacle", "smoke", "output"};
+inline constexpr std::string_view kGridKeys[] = {"resolution", "bounds_min", "bounds_max"};
+inline constexpr std::string_view kBasisKeys[] = {
+    "velocity_modes", "modes", "scalar_modes", "scalar_boundary", "wall", "boundary", "subsamples"};
+inline constexpr std::string_view kSimulationKeys[] = {
+    "dt", "integrator", "viscosity", "alpha", "mhd", "magnetic_diffusivity", "basis_precision"};
+inline constexpr std::string_view kInitialKeys[] = {"velocity",
+                                                    "energy",
+                                                    "seed",
+                                                    "band",
+                                                    "amplitudes",
+                                                    "vortex",
+                                                    "magnetic",
+                                                    "magnetic_energy",
+                                                    "magnetic_seed",
+                                                    "magnetic_direction",
+                                                    "magnetic_strength",
+                                                    "magnetic_wall_layer"};
+/// [initial] keys of the magnetic field (MHD only), which go with any velocity choice.
+inline constexpr std::string_view kInitialFieldKeys[] = {
+    "magnetic",           "magnetic_energy",   "magnetic_seed",
+    "magnetic_direction", "magnetic_strength", "magnetic_wall_layer"};
+inline constexpr std::string_view kVortexKeys2d[] = {"center", "strength", "radius"};
+inline constexpr std::string_view kVortexKeys3d[] = {"center", "normal", "ring_radius", "radius",
+                                                     "strength"};
+inline constexpr std::string_view kObstacleKeys[] = {"shape", "radius", "half_size", "axis",
+                                                     "path"};
+inline constexpr std::string_view kSmokeKeys[] = {"buoyancy", "resolution_scale", "advection"};
+inline constexpr std::string_view kOutputKeys[] = {"frames", "steps_per_frame"};
+inline constexpr std::string_view kSourceExtraKeys[] = {"density", "temperature", "start", "end"};
+
+/// The `[initial]` keys each velocity choice reads besides `velocity`.
+std::span<const std::string_view> initialKeys(InitialVelocity velocity);
+
+/// The `[initial]` keys each magnetic field choice reads besides `magnetic`.
+std::span<const std::string_view> magneticKeys(InitialMagnetic magnetic);
+
+/// The keys each shape takes besides `shape` (and `op` in `[[domain]]`).
+std::span<const std::string_view> shapeKeys(ShapeKind kind);
+
+}  // namespace modeflow::scene
