@@ -8,9 +8,9 @@
 #include <cerrno>
 #include <cstring>
 #include <fstream>
-#include <sstream>
 #include <string>
 
+#include "engine/format/FileKind.h"
 #include "precompute/scene/SceneSections.h"
 #include "precompute/scene/SceneValidation.h"
 #include "precompute/scene/TomlReader.h"
@@ -79,29 +79,41 @@ SceneSpec readScene(std::string_view text, const std::filesystem::path& origin) 
     return scene;
 }
 
+std::string tooLarge(const std::string& file, std::uintmax_t bytes) {
+    return file + ": " + std::to_string(bytes) + " bytes is too large for a scene file (at most " +
+           std::to_string(kMaxSceneFileBytes >> 20) + " MiB); is it the right file?";
+}
+
 }  // namespace
 
 SceneSpec parseScene(std::string_view text, const std::filesystem::path& origin) {
+    if (text.size() > kMaxSceneFileBytes) throw Error(tooLarge(origin.string(), text.size()));
     return readScene(text, origin);
 }
 
 SceneSpec loadScene(const std::filesystem::path& file) {
+    const std::string name = file.string();
     std::error_code ec;
-    const auto status = std::filesystem::status(file, ec);
-    if (!std::filesystem::exists(status)) {
-        throw Error(file.string() + ": no such scene file");
+    if (auto why = whyNotARegularFile(file)) {
+        throw Error(name + ": " +
+                    (std::filesystem::exists(file, ec) ? *why + ", not a scene file"
+                                                       : "no such scene file"));
     }
-    if (std::filesystem::is_directory(status)) {
-        throw Error(file.string() + ": is a folder, not a scene file");
-    }
+    const std::uintmax_t size = std::filesystem::file_size(file, ec);
+    if (!ec && size > kMaxSceneFileBytes) throw Error(tooLarge(name, size));
     std::ifstream in(file, std::ios::binary);
     if (!in) {
-        throw Error(file.string() + ": cannot open the scene file (" + std::strerror(errno) + ")");
+        throw Error(name + ": cannot open the scene file (" + std::strerror(errno) + ")");
     }
-    std::ostringstream text;
-    text << in.rdbuf();
-    if (in.bad()) throw Error(file.string() + ": error while reading the scene file");
-    return parseScene(text.str(), file);
+    // Read in pieces up to the limit: the file may have grown since its size was taken.
+    std::string text;
+    char piece[1 << 16];
+    while (in.read(piece, sizeof piece) || in.gcount() > 0) {
+        text.append(piece, static_cast<std::size_t>(in.gcount()));
+        if (text.size() > kMaxSceneFileBytes) throw Error(tooLarge(name, text.size()));
+    }
+    if (in.bad()) throw Error(name + ": error while reading the scene file");
+    return parseScene(text, file);
 }
 
 }  // namespace modeflow

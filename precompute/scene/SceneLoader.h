@@ -2,7 +2,7 @@
 /// @file SceneLoader.h
 /// Reads a scene file (DESIGN §5) into a validated SceneSpec. Everything a user can get wrong in a
 /// scene is caught here, with a message that names the file and the key, so later stages can trust
-/// the values they are given. The TOML library stays inside SceneLoader.cpp.
+/// the values they are given. The TOML library stays inside precompute/scene.
 
 #include <cstdint>
 #include <filesystem>
@@ -14,6 +14,10 @@
 
 namespace modeflow {
 
+/// Largest accepted scene file, 4 MiB: a hand-written scene is a few kilobytes, a generated one
+/// with long key-frame paths well under a megabyte. Checked before reading (parsing costs about
+/// 40 bytes of memory per byte of file), like the file's kind: a device or a FIFO is refused.
+inline constexpr std::uintmax_t kMaxSceneFileBytes = std::uintmax_t{4} << 20;
 /// Largest accepted entry of `[grid].resolution`.
 inline constexpr int kMaxGridResolution = 4096;
 /// Largest accepted cell count of the basis grid (2^27): beyond it no eigensolve finishes anyway.

@@ -3,6 +3,7 @@
 /// mistake is refused with a message naming the file and the key.
 
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <cstdint>
 #include <filesystem>
@@ -740,6 +741,41 @@ TEST_F(SceneLoaderTest, MissingFileGivesClearMessage) {
     } catch (const Error& e) {
         EXPECT_CONTAINS(e.what(), "not a scene file");
     }
+}
+
+TEST_F(SceneLoaderTest, NonRegularFilesAreRefusedBeforeReading) {
+    // /dev/zero never ends: read whole, it grew until the kernel killed the process.
+    const auto expectRefused = [](const fs::path& file, const std::string& kind) {
+        try {
+            loadScene(file);
+            ADD_FAILURE() << "loaded " << file;
+        } catch (const Error& e) {
+            EXPECT_EQ(std::string(e.what()).rfind(file.string() + ": ", 0), 0u) << e.what();
+            EXPECT_CONTAINS(e.what(), kind);
+        }
+    };
+    expectRefused("/dev/zero", "is a character device, not a scene file");
+    expectRefused(mDir, "is a directory, not a scene file");
+    const fs::path fifo = mDir / "pipe.toml";
+    ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+    expectRefused(fifo, "is a FIFO, not a scene file");  // opening it would wait for a writer
+    fs::create_symlink("/dev/zero", mDir / "zero.toml");
+    expectRefused(mDir / "zero.toml", "is a character device");
+}
+
+TEST_F(SceneLoaderTest, OversizedSceneFileIsRefusedBeforeReading) {
+    const fs::path file = write("huge.toml", std::string(kGrid2d) + kBasis);
+    fs::resize_file(file, kMaxSceneFileBytes + 1);  // sparse: no disk space used
+    try {
+        loadScene(file);
+        FAIL() << "loaded a file of " << fs::file_size(file) << " bytes";
+    } catch (const Error& e) {
+        EXPECT_EQ(std::string(e.what()).rfind(file.string() + ": ", 0), 0u) << e.what();
+        EXPECT_CONTAINS(e.what(), std::to_string(kMaxSceneFileBytes + 1) + " bytes");
+        EXPECT_CONTAINS(e.what(), "at most " + std::to_string(kMaxSceneFileBytes >> 20) + " MiB");
+    }
+    // The same limit holds for text already in memory.
+    EXPECT_CONTAINS(errorOf(std::string(kMaxSceneFileBytes + 1, '#')), "too large for a scene file");
 }
 
 TEST_F(SceneLoaderTest, ErrorsCarryTheLine) {
