@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "engine/format/Error.h"
+#include "engine/format/FileKind.h"
 
 namespace modeflow {
 namespace {
@@ -49,9 +50,11 @@ struct RawMesh {
 /// polygon); drops triangles with a repeated vertex, which have no area.
 RawMesh readObj(const fs::path& file) {
     const std::string name = file.string();
-    std::error_code ec;
-    if (!fs::exists(file, ec)) throw Error("mesh file " + name + " does not exist");
-    if (!fs::is_regular_file(file, ec)) throw Error("mesh file " + name + " is not a regular file");
+    if (auto why = whyNotARegularFile(file)) {
+        std::error_code ec;
+        throw Error("mesh file " + name + " " + *why +
+                    (fs::exists(file, ec) ? ", not a regular file" : ""));
+    }
 
     tinyobj::ObjReaderConfig config;
     config.triangulate = true;

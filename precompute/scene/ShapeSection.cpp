@@ -7,6 +7,7 @@
 #include <iterator>
 #include <system_error>
 
+#include "engine/format/FileKind.h"
 #include "precompute/scene/SceneSections.h"
 #include "precompute/scene/SceneValidation.h"
 
@@ -29,9 +30,12 @@ fs::path readMeshFile(const TomlReader& reader, const Section& s) {
         reader.fail(s, "file", "only OBJ meshes are supported, got \"" + *file + "\"",
                     s.table.get("file"));
     }
-    std::error_code ec;
-    if (!fs::is_regular_file(path, ec)) {
-        reader.fail(s, "file", "no such file: " + path.string(), s.table.get("file"));
+    if (auto why = whyNotARegularFile(path)) {
+        std::error_code ec;
+        reader.fail(s, "file",
+                    fs::exists(path, ec) ? path.string() + " " + *why + ", not an OBJ file"
+                                         : "no such file: " + path.string(),
+                    s.table.get("file"));
     }
     return path;
 }

@@ -524,6 +524,22 @@ TEST_F(SceneLoaderTest, ShapeValuesAreValidated) {
     EXPECT_CONTAINS(message, "[[domain]] #1 (ball).op");
 }
 
+TEST_F(SceneLoaderTest, MeshPathThatIsNotAFileSaysWhatItIs) {
+    fs::create_directories(mDir / "folder.obj");
+    ASSERT_EQ(::mkfifo((mDir / "pipe.obj").c_str(), 0600), 0);
+    const auto meshScene = [](const std::string& file) {
+        return std::string(kGrid3d) + kBasis + "[[domain]]\nshape = \"mesh\"\nfile = \"" + file +
+               "\"\n";
+    };
+    std::string message = errorOf(meshScene("folder.obj"), mDir / "s.toml");
+    EXPECT_CONTAINS(message, "[[domain]] #1 (mesh).file: " + (mDir / "folder.obj").string() +
+                                 " is a directory, not an OBJ file");
+    message = errorOf(meshScene("pipe.obj"), mDir / "s.toml");
+    EXPECT_CONTAINS(message, "pipe.obj is a FIFO, not an OBJ file");
+    message = errorOf(meshScene("missing.obj"), mDir / "s.toml");
+    EXPECT_CONTAINS(message, "[[domain]] #1 (mesh).file: no such file: ");
+}
+
 TEST_F(SceneLoaderTest, BothVelocityModesAndModesIsAnError) {
     const std::string message =
         errorOf(std::string(kGrid2d) + "[basis]\nvelocity_modes = 10\nmodes = \"1-10\"\n");
