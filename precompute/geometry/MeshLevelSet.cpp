@@ -19,6 +19,7 @@
 
 #include "engine/format/Error.h"
 #include "engine/format/FileKind.h"
+#include "precompute/geometry/ObjLineCheck.h"
 
 namespace modeflow {
 namespace {
@@ -47,7 +48,8 @@ struct RawMesh {
 };
 
 /// Parses the OBJ and triangulates every face (fans for anything tinyobjloader left as a
-/// polygon); drops triangles with a repeated vertex, which have no area.
+/// polygon); drops triangles with a repeated vertex, which have no area. checkObjLines names bad
+/// vertices and faces with their line first; the checks here guard what tinyobjloader returns.
 RawMesh readObj(const fs::path& file) {
     const std::string name = file.string();
     if (auto why = whyNotARegularFile(file)) {
@@ -55,6 +57,7 @@ RawMesh readObj(const fs::path& file) {
         throw Error("mesh file " + name + " " + *why +
                     (fs::exists(file, ec) ? ", not a regular file" : ""));
     }
+    checkObjLines(file);
 
     tinyobj::ObjReaderConfig config;
     config.triangulate = true;

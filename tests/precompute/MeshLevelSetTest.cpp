@@ -290,6 +290,51 @@ TEST_F(MeshLevelSetTest, BadFaceIndexIsReported) {
     expectMeshError(write("badindex.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n"));
 }
 
+/// cubeObj(0.5) with its line `line` (1-based) replaced.
+std::string cubeWithLine(int line, const std::string& text) {
+    std::istringstream in(cubeObj(0.5));
+    std::string out, current;
+    for (int n = 1; std::getline(in, current); ++n) out += (n == line ? text : current) + "\n";
+    return out;
+}
+
+TEST_F(MeshLevelSetTest, UnreadableVertexCoordinatesAreRefusedWithTheirLine) {
+    // tinyobjloader reads each of these as 0: the mesh loses a corner without a word.
+    const std::pair<std::string, std::string> cases[] = {
+        {"v nan 0.5 0.5", "coordinate nan is not finite"},
+        {"v 0.5 abc 0.5", "coordinate \"abc\" is not a number"},
+        {"v 0.5 0.5 -inf", "coordinate -inf is not finite"},
+        {"v 1e39 0.5 0.5", "coordinate 1e39 is beyond the float range"},
+        {"v 0.5 0.5 0.5x", "coordinate \"0.5x\" is not a number"},
+        {"v 0.5 0.5", "has 2 coordinates, expected 3"},
+        {"v 0.5 \x01\x1b[2J 0.5", "coordinate \"\\x01\\x1b[2J\" is not a number"},
+    };
+    for (const auto& [line, problem] : cases) {
+        const std::string what = expectMeshError(write("bad.obj", cubeWithLine(7, line)));
+        EXPECT_NE(what.find(", line 7: vertex 7 " + problem), std::string::npos) << what;
+    }
+    // Vertex colours and a fourth (w) coordinate are not coordinates of the position.
+    EXPECT_NO_THROW(
+        loadMeshShape(write("colours.obj", cubeWithLine(7, "v 0.5 0.5 0.5 1 0 0")), 0.05));
+}
+
+TEST_F(MeshLevelSetTest, FacesReferringToMissingVerticesNameTheirLine) {
+    const std::pair<std::string, std::string> cases[] = {
+        {"f 5 6 8 9", "line 14: a face refers to vertex 9, but the file has 8 vertices"},
+        {"f 5 6 0 7", "line 14: a face refers to vertex 0 (vertices are numbered from 1)"},
+        {"f -9 6 8 7",
+         "line 14: a face refers to vertex -9 (relative), but only 8 vertices precede it"},
+        {"f 5 6 x/1 7", "line 14: a face refers to vertex \"x/1\", which is not a vertex number"},
+    };
+    for (const auto& [line, problem] : cases) {
+        const std::string what = expectMeshError(write("bad.obj", cubeWithLine(14, line)));
+        EXPECT_NE(what.find(problem), std::string::npos) << what;
+    }
+    // Texture and normal indices after the vertex's own are allowed; relative indices count back.
+    EXPECT_NO_THROW(
+        loadMeshShape(write("relative.obj", cubeWithLine(14, "f -4/1/1 -3//2 -1 -2")), 0.05));
+}
+
 TEST_F(MeshLevelSetTest, OpenMeshIsRejected) {
     const std::string what = expectMeshError(write("open.obj", cubeObj(0.5, true)));
     EXPECT_NE(what.find("not a closed surface"), std::string::npos) << what;
