@@ -359,6 +359,30 @@ TEST_F(MeshLevelSetTest, SurfaceEnclosingNothingIsRejected) {
     EXPECT_NE(what.find("encloses no volume"), std::string::npos) << what;
 }
 
+TEST_F(MeshLevelSetTest, HugeMeshIsRefusedWithASaneVoxelCount) {
+    // 4e21 voxels across: the count was cast to an integer and read -9223372036854775808.
+    std::string what = expectMeshError(write("huge.obj", cubeObj(1e20)));
+    EXPECT_NE(what.find("spans 4e+21 voxels (of 0.05) along x, from -1e+20 to 1e+20"),
+              std::string::npos)
+        << what;
+    EXPECT_EQ(what.find("-9223372036854775808"), std::string::npos) << what;
+    // 10000 voxels across, within the extent limit, but its band would hold 3.6e9 voxels.
+    what = expectMeshError(write("big.obj", cubeObj(250)));
+    EXPECT_NE(what.find("would need about 3.6e+09 voxels (at most 4e+08)"), std::string::npos)
+        << what;
+}
+
+TEST_F(MeshLevelSetTest, FarReachingSliverIsRefusedBeforeConversion) {
+    // A closed sliver 1e9 long and thinner than a voxel: little area, so the band count passes,
+    // but the conversion ran for minutes and took 23 GB before it was refused.
+    const std::string text =
+        "v 0.5 0.5 0.5\nv 1e9 0.5 0.5\nv 0.5 0.500000001 0.5\nv 0.5 0.5 0.500000001\n"
+        "f 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n";
+    const std::string what = expectMeshError(write("sliver.obj", text), 0.0625);
+    EXPECT_NE(what.find("spans 1.6e+10 voxels (of 0.0625) along x"), std::string::npos) << what;
+    EXPECT_NE(what.find("at most 131072"), std::string::npos) << what;
+}
+
 TEST_F(MeshLevelSetTest, BadVoxelSizeIsReported) {
     const fs::path file = write("cube.obj", cubeObj(0.5));
     EXPECT_THROW(loadMeshShape(file, 0.0), Error);
