@@ -1,12 +1,86 @@
 /// @file GridSection.cpp
 /// `[grid]`: resolution (2 or 3 entries, which sets the scene's dimension) and bounds.
 
+#include <cmath>
 #include <cstdint>
+#include <cstdio>
+#include <limits>
+#include <string>
 
 #include "precompute/scene/SceneLoader.h"
 #include "precompute/scene/SceneSections.h"
 
 namespace modeflow::scene {
+namespace {
+
+// Within the cell size limits, volumes, areas and 1/h² are normal doubles, far from overflow.
+constexpr double kLeast = std::numeric_limits<double>::min(),
+                 kMost = std::numeric_limits<double>::max();
+static_assert(kMinCellSize * kMinCellSize * kMinCellSize > kLeast * 1e100);
+static_assert(kMaxCellSize * kMaxCellSize * kMaxCellSize < kMost * 1e-100);
+static_assert(1.0 / (kMinCellSize * kMinCellSize) < kMost * 1e-100);
+
+/// Decimal bounds divide with rounding: a limit met exactly in the file must pass.
+constexpr double kRounding = 1e-9;
+
+/// "2.5e+299": two significant digits, for numbers that only need to be recognised.
+std::string roughNumber(double x) {
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%.2g", x);
+    return buffer;
+}
+
+/// Bounds that give cells too small, too large, too stretched or too far from the origin.
+void checkCellSizes(const TomlReader& reader, const Section& s, const GridSpec& grid) {
+    const std::string_view pair = "bounds_min/bounds_max";
+    const toml::node* at = s.table.get("bounds_max");
+    for (int a = 0; a < grid.dim; ++a) {
+        const double h = grid.spacing(a);
+        const std::string along = std::string(" along ") + axisName(a);
+        if (!std::isfinite(grid.boundsMax[a] - grid.boundsMin[a]))
+            reader.fail(s, pair, "bounds_max - bounds_min" + along + " is not a finite number", at);
+        if (h < kMinCellSize * (1.0 - kRounding) || h > kMaxCellSize * (1.0 + kRounding)) {
+            reader.fail(s, pair,
+                        "cells of " + formatNumber(h) + along + " are " +
+                            (h < kMinCellSize ? "smaller than " + formatNumber(kMinCellSize)
+                                              : "larger than " + formatNumber(kMaxCellSize)) +
+                            " (scene units per cell); scale the scene",
+                        at);
+        }
+    }
+    int longest = 0, shortest = 0;
+    for (int a = 1; a < grid.dim; ++a) {
+        if (grid.spacing(a) > grid.spacing(longest)) longest = a;
+        if (grid.spacing(a) < grid.spacing(shortest)) shortest = a;
+    }
+    const double ratio = grid.spacing(longest) / grid.spacing(shortest);
+    if (ratio > kMaxCellAspectRatio * (1.0 + kRounding)) {
+        reader.fail(s, pair,
+                    "cells are " + formatNumber(std::round(ratio)) + " times longer along " +
+                        axisName(longest) + " (" + formatNumber(grid.spacing(longest)) +
+                        ") than along " + axisName(shortest) + " (" +
+                        formatNumber(grid.spacing(shortest)) + "); at most " +
+                        formatNumber(kMaxCellAspectRatio) + ": raise the resolution along " +
+                        axisName(longest),
+                    at);
+    }
+    for (int a = 0; a < grid.dim; ++a) {
+        const bool maxIsFarther = std::abs(grid.boundsMax[a]) >= std::abs(grid.boundsMin[a]);
+        const double cells =
+            std::abs(maxIsFarther ? grid.boundsMax[a] : grid.boundsMin[a]) / grid.spacing(a);
+        if (cells > kMaxCellsFromOrigin * (1.0 + kRounding)) {
+            reader.fail(s, maxIsFarther ? "bounds_max" : "bounds_min",
+                        "the grid lies " + roughNumber(cells) + " cells (of " +
+                            formatNumber(grid.spacing(a)) + ") from the origin along " +
+                            axisName(a) + "; at most " + roughNumber(kMaxCellsFromOrigin) +
+                            ": coordinates that far out lose their precision; move the grid "
+                            "nearer the origin",
+                        s.table.get(maxIsFarther ? "bounds_max" : "bounds_min"));
+        }
+    }
+}
+
+}  // namespace
 
 GridSpec readGrid(TomlReader& reader, const Section& s) {
     reader.checkKeys(s, kGridKeys);
@@ -63,6 +137,7 @@ GridSpec readGrid(TomlReader& reader, const Section& s) {
         grid.boundsMin[a] = lo[a];
         grid.boundsMax[a] = hi[a];
     }
+    checkCellSizes(reader, s, grid);
     return grid;
 }
 

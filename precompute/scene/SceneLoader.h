@@ -20,6 +20,18 @@ namespace modeflow {
 inline constexpr std::uintmax_t kMaxSceneFileBytes = std::uintmax_t{4} << 20;
 /// Largest accepted entry of `[grid].resolution`.
 inline constexpr int kMaxGridResolution = 4096;
+/// Accepted cell sizes ((bounds_max - bounds_min) / resolution on each axis), in scene units. The
+/// solver is scale-free well beyond them (it fails near 1e±100), but no scene needs more, and
+/// within them every derived quantity (cell volume, face area, 1/h²) is a normal double.
+inline constexpr double kMinCellSize = 1e-6;
+inline constexpr double kMaxCellSize = 1e6;
+/// Largest accepted ratio between the cell sizes of two axes: cells stretched further resolve
+/// nothing along their long side.
+inline constexpr double kMaxCellAspectRatio = 1e3;
+/// Farthest a grid bound may lie from the origin, in cells of that axis: at 1e12 cells a
+/// coordinate rounds by 2e-4 of a cell (relative precision 2^-52), and much farther out cells
+/// shrink to nothing in floating point.
+inline constexpr double kMaxCellsFromOrigin = 1e12;
 /// Largest accepted cell count of the basis grid (2^27): beyond it no eigensolve finishes anyway.
 inline constexpr std::int64_t kMaxGridCells = std::int64_t{1} << 27;
 /// Largest accepted cell count of the smoke grid (basis grid refined by `resolution_scale`).

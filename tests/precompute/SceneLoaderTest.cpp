@@ -469,6 +469,39 @@ TEST_F(SceneLoaderTest, InvertedBoundsAreRejected) {
     EXPECT_CONTAINS(message, "axis y");
 }
 
+/// A 2D [grid] of 8 x 8 cells with the given bounds, and a basis.
+std::string grid2d(const std::string& lo, const std::string& hi) {
+    return "[grid]\nresolution = [8, 8]\nbounds_min = [" + lo + "]\nbounds_max = [" + hi + "]\n" +
+           kBasis;
+}
+
+TEST_F(SceneLoaderTest, ExtremeBoundsAreRefusedAtLoad) {
+    // These passed the loader and failed deep inside the eigensolver ("penalty to nan").
+    std::string message = errorOf(grid2d("-1e300, 0", "1e300, 1"));
+    EXPECT_CONTAINS(message, "[grid].bounds_min/bounds_max: cells of 2.5e+299 along x are larger "
+                             "than 1e+06");
+    EXPECT_CONTAINS(message, "(line 4)");
+    message = errorOf(grid2d("0, 0", "1e-200, 1e-200"));
+    EXPECT_CONTAINS(message, "[grid].bounds_min/bounds_max: cells of 1.25e-201 along x are smaller "
+                             "than 1e-06");
+    message = errorOf(grid2d("-1e308, 0", "1e308, 1"));
+    EXPECT_CONTAINS(message, "[grid].bounds_min/bounds_max: bounds_max - bounds_min along x is "
+                             "not a finite number");
+    message = errorOf(grid2d("0, 0", "8000, 4"));
+    EXPECT_CONTAINS(message, "[grid].bounds_min/bounds_max: cells are 2000 times longer along x "
+                             "(1000) than along y (0.5); at most 1000");
+    message = errorOf(grid2d("1e15, 0", "1.000000000000064e15, 64"));
+    EXPECT_CONTAINS(message, "[grid].bounds_max: the grid lies 1.3e+14 cells (of 8) from the "
+                             "origin along x; at most 1e+12");
+
+    // The limits themselves are accepted, in 3D too.
+    EXPECT_EQ(errorOf(grid2d("0, 0", "8e-6, 8e-3")), "");
+    EXPECT_EQ(errorOf(grid2d("-4e6, 0", "4e6, 8e3")), "");
+    EXPECT_EQ(errorOf("[grid]\nresolution = [8, 8, 8]\nbounds_min = [0, 0, 0]\n"
+                      "bounds_max = [8e-6, 8e-3, 8e-4]\n" + std::string(kBasis)),
+              "");
+}
+
 TEST_F(SceneLoaderTest, BoundsMustMatchDimension) {
     const std::string message =
         errorOf("[grid]\nresolution = [8, 8]\nbounds_min = [0, 0, 0]\nbounds_max = [1, 1]\n" +
