@@ -12,6 +12,7 @@
 #include <Eigen/Core>
 
 #include "engine/field/MacGrid.h"
+#include "engine/field/RuntimeLimits.h"
 #include "engine/format/BasisCache.h"
 #include "precompute/scene/SceneSpec.h"
 
@@ -27,9 +28,6 @@ struct MovingObstacle {
     /// Whether the world point lies in the solid when its centre is `centre` (first `dim` axes).
     bool covers(const Vec3& point, const Vec3& centre, int dim) const;
 };
-
-/// The most obstacles one scene takes (the device kernel's obstacle buffer).
-inline constexpr int maxObstacles = 8;
 
 /// A face field of the cache's grid: on every DOF face whose centre an obstacle covers at time
 /// t, the fluid's face velocity minus the obstacle's velocity along the face normal; 0 elsewhere.

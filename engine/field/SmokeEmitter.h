@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "engine/field/MacGrid.h"
+#include "engine/field/RuntimeLimits.h"
 #include "precompute/scene/SceneSpec.h"
 
 namespace modeflow {
@@ -32,9 +33,6 @@ struct SmokeEmitter {
     /// Whether the world point is inside (boundary included); only the first `dim` axes count.
     bool contains(const Vec3& point, int dim) const;
 };
-
-/// The most emitters one device step takes (the kernels' emitter buffer).
-inline constexpr int maxSmokeEmitters = 8;
 
 /// The emitters of `all` active at time t (SmokeEmitter::activeAt).
 std::vector<SmokeEmitter> activeEmitters(std::span<const SmokeEmitter> all, double t);

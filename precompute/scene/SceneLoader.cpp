@@ -10,6 +10,7 @@
 #include <fstream>
 #include <string>
 
+#include "engine/field/RuntimeLimits.h"
 #include "engine/format/FileKind.h"
 #include "precompute/scene/SceneSections.h"
 #include "precompute/scene/SceneValidation.h"
@@ -61,9 +62,11 @@ SceneSpec readScene(std::string_view text, const std::filesystem::path& origin) 
         scene.initial = readInitial(reader, initial);
         checkInitialFitsBasis(reader, initial, scene.initial, scene.basis);
     }
+    checkEntryCount(reader, root, "source", maxSmokeEmitters, "sources");
     reader.forEachEntry(root, "source", [&](const toml::table& t, int index) {
         scene.sources.push_back(readSource(reader, t, index));
     });
+    checkEntryCount(reader, root, "obstacle", maxObstacles, "obstacles");
     reader.forEachEntry(root, "obstacle", [&](const toml::table& t, int index) {
         scene.obstacles.push_back(
             readObstacle(reader, {t, "[[obstacle]] #" + std::to_string(index)}));

@@ -96,4 +96,15 @@ void checkSmokeGridSize(const TomlReader& reader, const Section& s, const SmokeS
     }
 }
 
+void checkEntryCount(const TomlReader& reader, const toml::table& root, std::string_view name,
+                     int limit, std::string_view what) {
+    const toml::node* node = root.get(name);
+    const toml::array* entries = node != nullptr ? node->as_array() : nullptr;
+    if (entries == nullptr || entries->size() <= static_cast<std::size_t>(limit)) return;
+    reader.fail("[[" + std::string(name) + "]]",
+                std::to_string(entries->size()) + " entries; at most " + std::to_string(limit) +
+                    " " + std::string(what) + " take part in a simulation",
+                &(*entries)[static_cast<std::size_t>(limit)]);
+}
+
 }  // namespace modeflow::scene

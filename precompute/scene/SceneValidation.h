@@ -1,8 +1,9 @@
 #pragma once
 /// @file SceneValidation.h
 /// Internal to precompute/scene: the checks that involve more than one table (a basis that fits
-/// the grid, initial modes inside the basis, 2D/3D consistency, ...). Each is called as soon as
-/// the tables it needs are read, so a file's first mistake is the one reported.
+/// the grid, initial modes inside the basis, 2D/3D consistency, ...) or the runtime's limits
+/// (engine/field/RuntimeLimits.h). Each is called as soon as the tables it needs are read, so a
+/// file's first mistake is the one reported.
 
 #include "precompute/scene/SceneSpec.h"
 #include "precompute/scene/TomlReader.h"
@@ -29,5 +30,9 @@ void checkInitialFitsBasis(const TomlReader& reader, const Section& s, const Ini
 /// The smoke grid (the grid refined by `[smoke]` resolution_scale) within kMaxSmokeCells.
 void checkSmokeGridSize(const TomlReader& reader, const Section& s, const SmokeSpec& smoke,
                         const GridSpec& grid);
+
+/// At most `limit` `[[name]]` entries (`what` names them in the message, "sources").
+void checkEntryCount(const TomlReader& reader, const toml::table& root, std::string_view name,
+                     int limit, std::string_view what);
 
 }  // namespace modeflow::scene

@@ -620,6 +620,23 @@ TEST_F(SceneLoaderTest, RangeChecksOnScalars) {
                     "[output].steps_per_frame: is too large");
 }
 
+TEST_F(SceneLoaderTest, MoreSourcesOrObstaclesThanTheRuntimeTakesAreRefusedAtLoad) {
+    // They were refused only after the whole precompute, when the simulation was set up.
+    const std::string source = "[[source]]\nshape = \"ball\"\ncenter = [0, 0]\nradius = 0.1\n";
+    const std::string obstacle = "[[obstacle]]\nshape = \"ball\"\nradius = 0.1\npath = [[0, 0, 0]]\n";
+    std::string eight = std::string(kGrid2d) + kBasis;
+    for (int i = 0; i < 8; ++i) eight += source + obstacle;
+    const SceneSpec scene = parseScene(eight, "s.toml");
+    EXPECT_EQ(scene.sources.size(), 8u);
+    EXPECT_EQ(scene.obstacles.size(), 8u);
+
+    std::string message = errorOf(eight + source);
+    EXPECT_CONTAINS(message, "[[source]]: 9 entries; at most 8 sources take part in a simulation");
+    EXPECT_CONTAINS(message, "(line 73)");  // the ninth entry
+    message = errorOf(eight + obstacle);
+    EXPECT_CONTAINS(message, "[[obstacle]]: 9 entries; at most 8 obstacles take part in a simulation");
+}
+
 TEST_F(SceneLoaderTest, RandomInitialVelocityTakesEnergySeedAndBand) {
     const std::string base = std::string(kGrid2d) + kBasis + "[initial]\nvelocity = \"random\"\n";
     const SceneSpec all = parseScene(base + "energy = 0.5\nseed = 9\n", "s.toml");
