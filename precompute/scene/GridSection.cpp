@@ -3,7 +3,6 @@
 
 #include <cmath>
 #include <cstdint>
-#include <cstdio>
 #include <limits>
 #include <string>
 
@@ -22,13 +21,6 @@ static_assert(1.0 / (kMinCellSize * kMinCellSize) < kMost * 1e-100);
 
 /// Decimal bounds divide with rounding: a limit met exactly in the file must pass.
 constexpr double kRounding = 1e-9;
-
-/// "2.5e+299": two significant digits, for numbers that only need to be recognised.
-std::string roughNumber(double x) {
-    char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%.2g", x);
-    return buffer;
-}
 
 /// Bounds that give cells too small, too large, too stretched or too far from the origin.
 void checkCellSizes(const TomlReader& reader, const Section& s, const GridSpec& grid) {

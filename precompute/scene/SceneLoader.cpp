@@ -61,6 +61,7 @@ SceneSpec readScene(std::string_view text, const std::filesystem::path& origin) 
         checkInitialFieldKeys(reader, initial, scene.simulation);
         scene.initial = readInitial(reader, initial);
         checkInitialFitsBasis(reader, initial, scene.initial, scene.basis);
+        checkInitialSpeeds(reader, initial, scene.initial, scene.grid);
     }
     checkEntryCount(reader, root, "source", maxSmokeEmitters, "sources");
     reader.forEachEntry(root, "source", [&](const toml::table& t, int index) {

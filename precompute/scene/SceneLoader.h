@@ -32,6 +32,11 @@ inline constexpr double kMaxCellAspectRatio = 1e3;
 /// coordinate rounds by 2e-4 of a cell (relative precision 2^-52), and much farther out cells
 /// shrink to nothing in floating point.
 inline constexpr double kMaxCellsFromOrigin = 1e12;
+/// Largest accepted initial speed, in scene units per unit of time, as [initial] sets it: the mean
+/// speed sqrt(2 energy / grid volume) of `energy` or of the modal amplitudes, the mean field of
+/// `magnetic_energy`, `magnetic_strength`, and a vortex's strength over the grid's longest side.
+/// Example scenes use about 1; 1e300 overflowed the squares of the dynamics into "energy = inf".
+inline constexpr double kMaxInitialSpeed = 1e6;
 /// Largest accepted cell count of the basis grid (2^27): beyond it no eigensolve finishes anyway.
 inline constexpr std::int64_t kMaxGridCells = std::int64_t{1} << 27;
 /// Largest accepted cell count of the smoke grid (basis grid refined by `resolution_scale`).

@@ -2,7 +2,10 @@
 
 #include "precompute/scene/SceneValidation.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
+#include <string>
 
 #include "precompute/scene/SceneLoader.h"
 
@@ -79,6 +82,58 @@ void checkInitialFitsBasis(const TomlReader& reader, const Section& s, const Ini
                             &entry);
             }
         }
+    }
+}
+
+void checkInitialSpeeds(const TomlReader& reader, const Section& s, const InitialSpec& initial,
+                        const GridSpec& grid) {
+    // Energies are ½∫|u|² dV (the basis is ⋆-orthonormal); 2D grids are one unit deep.
+    double volume = 1.0, longest = 0.0;
+    for (int a = 0; a < 3; ++a) {
+        const double side = grid.boundsMax[a] - grid.boundsMin[a];
+        volume *= side;
+        if (a < grid.dim) longest = std::max(longest, side);
+    }
+    const auto meanOf = [&](double energy) { return std::sqrt(2.0 * energy / volume); };
+    const std::string limit =
+        "; at most " + roughNumber(kMaxInitialSpeed) + " scene units per unit time";
+    const auto checkEnergy = [&](std::string_view key, double energy, std::string_view what,
+                                 std::string_view mean) {
+        if (!(meanOf(energy) > kMaxInitialSpeed)) return;
+        reader.fail(s, key,
+                    std::string(what) + " is a mean " + std::string(mean) + " of " +
+                        roughNumber(meanOf(energy)) + " (sqrt(2 energy / grid volume " +
+                        roughNumber(volume) + "))" + limit,
+                    s.table.get(key));
+    };
+    if (s.table.contains("energy"))
+        checkEnergy("energy", initial.energy, roughNumber(initial.energy), "speed");
+    if (!initial.amplitudes.empty()) {
+        double energy = 0.0;
+        for (const auto& [mode, amplitude] : initial.amplitudes)
+            energy += 0.5 * amplitude * amplitude;
+        checkEnergy("amplitudes", energy, "½Σa² = " + roughNumber(energy), "speed");
+    }
+    if (s.table.contains("magnetic_energy"))
+        checkEnergy("magnetic_energy", initial.magneticEnergy, roughNumber(initial.magneticEnergy),
+                    "field");
+    if (s.table.contains("magnetic_strength") && initial.magneticStrength > kMaxInitialSpeed)
+        reader.fail(s, "magnetic_strength",
+                    roughNumber(initial.magneticStrength) + " is beyond " +
+                        roughNumber(kMaxInitialSpeed) + " (scene units per unit time)",
+                    s.table.get("magnetic_strength"));
+    // A circulation is a speed times a length.
+    const double maxStrength = kMaxInitialSpeed * longest;
+    for (std::size_t v = 0; v < initial.vortices.size(); ++v) {
+        const double strength = initial.vortices[v].strength;
+        if (!(std::abs(strength) > maxStrength)) continue;
+        const toml::node& entry = (*s.table.get("vortex")->as_array())[v];
+        reader.fail("[[initial.vortex]] #" + std::to_string(v + 1) + ".strength",
+                    "magnitude " + roughNumber(std::abs(strength)) + " is beyond " +
+                        roughNumber(maxStrength) + " (" + roughNumber(kMaxInitialSpeed) +
+                        " scene units per unit time times the grid's longest side, " +
+                        formatNumber(longest) + ")",
+                    entry.as_table()->get("strength"));
     }
 }
 

@@ -27,6 +27,10 @@ void checkInitialFieldKeys(const TomlReader& reader, const Section& s,
 void checkInitialFitsBasis(const TomlReader& reader, const Section& s, const InitialSpec& initial,
                            const BasisSpec& basis);
 
+/// The speeds `[initial]` (`s`) sets within kMaxInitialSpeed, measured on the grid's box.
+void checkInitialSpeeds(const TomlReader& reader, const Section& s, const InitialSpec& initial,
+                        const GridSpec& grid);
+
 /// The smoke grid (the grid refined by `[smoke]` resolution_scale) within kMaxSmokeCells.
 void checkSmokeGridSize(const TomlReader& reader, const Section& s, const SmokeSpec& smoke,
                         const GridSpec& grid);

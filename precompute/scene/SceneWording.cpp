@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cctype>
 #include <charconv>
+#include <cstdio>
 #include <vector>
 
 namespace modeflow::scene {
@@ -71,6 +72,12 @@ std::string formatNumber(double x) {
     char buffer[64];
     const auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, x);
     return ec == std::errc{} ? std::string(buffer, end) : std::to_string(x);
+}
+
+std::string roughNumber(double x) {
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%.2g", x);
+    return buffer;
 }
 
 const char* axisName(int axis) {

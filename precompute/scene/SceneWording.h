@@ -23,6 +23,9 @@ std::string joinWords(std::span<const std::string_view> words, std::string_view 
 /// The shortest text that reads back as `x`.
 std::string formatNumber(double x);
 
+/// "2.5e+299": two significant digits, for numbers that only need to be recognised.
+std::string roughNumber(double x);
+
 /// "x", "y" or "z".
 const char* axisName(int axis);
 

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 
+#include <charconv>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
@@ -68,6 +69,13 @@ std::string errorOf(const std::string& text, const fs::path& origin = "scenes/ba
         return e.what();
     }
     return "";
+}
+
+/// The shortest text that reads back as `x`, for numbers put in scene text.
+std::string formatNumberForTest(double x) {
+    char buffer[64];
+    const auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, x);
+    return std::string(buffer, end);
 }
 
 #define EXPECT_CONTAINS(haystack, needle)                            \
@@ -478,27 +486,33 @@ std::string grid2d(const std::string& lo, const std::string& hi) {
 TEST_F(SceneLoaderTest, ExtremeBoundsAreRefusedAtLoad) {
     // These passed the loader and failed deep inside the eigensolver ("penalty to nan").
     std::string message = errorOf(grid2d("-1e300, 0", "1e300, 1"));
-    EXPECT_CONTAINS(message, "[grid].bounds_min/bounds_max: cells of 2.5e+299 along x are larger "
-                             "than 1e+06");
+    EXPECT_CONTAINS(message,
+                    "[grid].bounds_min/bounds_max: cells of 2.5e+299 along x are larger "
+                    "than 1e+06");
     EXPECT_CONTAINS(message, "(line 4)");
     message = errorOf(grid2d("0, 0", "1e-200, 1e-200"));
-    EXPECT_CONTAINS(message, "[grid].bounds_min/bounds_max: cells of 1.25e-201 along x are smaller "
-                             "than 1e-06");
+    EXPECT_CONTAINS(message,
+                    "[grid].bounds_min/bounds_max: cells of 1.25e-201 along x are smaller "
+                    "than 1e-06");
     message = errorOf(grid2d("-1e308, 0", "1e308, 1"));
-    EXPECT_CONTAINS(message, "[grid].bounds_min/bounds_max: bounds_max - bounds_min along x is "
-                             "not a finite number");
+    EXPECT_CONTAINS(message,
+                    "[grid].bounds_min/bounds_max: bounds_max - bounds_min along x is "
+                    "not a finite number");
     message = errorOf(grid2d("0, 0", "8000, 4"));
-    EXPECT_CONTAINS(message, "[grid].bounds_min/bounds_max: cells are 2000 times longer along x "
-                             "(1000) than along y (0.5); at most 1000");
+    EXPECT_CONTAINS(message,
+                    "[grid].bounds_min/bounds_max: cells are 2000 times longer along x "
+                    "(1000) than along y (0.5); at most 1000");
     message = errorOf(grid2d("1e15, 0", "1.000000000000064e15, 64"));
-    EXPECT_CONTAINS(message, "[grid].bounds_max: the grid lies 1.3e+14 cells (of 8) from the "
-                             "origin along x; at most 1e+12");
+    EXPECT_CONTAINS(message,
+                    "[grid].bounds_max: the grid lies 1.3e+14 cells (of 8) from the "
+                    "origin along x; at most 1e+12");
 
     // The limits themselves are accepted, in 3D too.
     EXPECT_EQ(errorOf(grid2d("0, 0", "8e-6, 8e-3")), "");
     EXPECT_EQ(errorOf(grid2d("-4e6, 0", "4e6, 8e3")), "");
     EXPECT_EQ(errorOf("[grid]\nresolution = [8, 8, 8]\nbounds_min = [0, 0, 0]\n"
-                      "bounds_max = [8e-6, 8e-3, 8e-4]\n" + std::string(kBasis)),
+                      "bounds_max = [8e-6, 8e-3, 8e-4]\n" +
+                      std::string(kBasis)),
               "");
 }
 
@@ -623,7 +637,8 @@ TEST_F(SceneLoaderTest, RangeChecksOnScalars) {
 TEST_F(SceneLoaderTest, MoreSourcesOrObstaclesThanTheRuntimeTakesAreRefusedAtLoad) {
     // They were refused only after the whole precompute, when the simulation was set up.
     const std::string source = "[[source]]\nshape = \"ball\"\ncenter = [0, 0]\nradius = 0.1\n";
-    const std::string obstacle = "[[obstacle]]\nshape = \"ball\"\nradius = 0.1\npath = [[0, 0, 0]]\n";
+    const std::string obstacle =
+        "[[obstacle]]\nshape = \"ball\"\nradius = 0.1\npath = [[0, 0, 0]]\n";
     std::string eight = std::string(kGrid2d) + kBasis;
     for (int i = 0; i < 8; ++i) eight += source + obstacle;
     const SceneSpec scene = parseScene(eight, "s.toml");
@@ -634,7 +649,8 @@ TEST_F(SceneLoaderTest, MoreSourcesOrObstaclesThanTheRuntimeTakesAreRefusedAtLoa
     EXPECT_CONTAINS(message, "[[source]]: 9 entries; at most 8 sources take part in a simulation");
     EXPECT_CONTAINS(message, "(line 73)");  // the ninth entry
     message = errorOf(eight + obstacle);
-    EXPECT_CONTAINS(message, "[[obstacle]]: 9 entries; at most 8 obstacles take part in a simulation");
+    EXPECT_CONTAINS(message,
+                    "[[obstacle]]: 9 entries; at most 8 obstacles take part in a simulation");
 }
 
 TEST_F(SceneLoaderTest, RandomInitialVelocityTakesEnergySeedAndBand) {
@@ -659,6 +675,127 @@ TEST_F(SceneLoaderTest, RandomInitialVelocityTakesEnergySeedAndBand) {
     EXPECT_CONTAINS(errorOf(base + "amplitudes = [[1, 1.0]]\n"),
                     "[initial].amplitudes: not used with velocity = \"random\" (it takes energy, "
                     "seed and band)");
+}
+
+TEST_F(SceneLoaderTest, NonFiniteNumbersAreRefusedForEveryFloatKey) {
+    // TOML spells them nan, inf and -inf; each float key names itself when given one.
+    const std::string mhd = std::string(kGrid2d) + kBasis + "[simulation]\nmhd = true\n[initial]\n";
+    const std::string vortex2 =
+        std::string(kGrid2d) + kBasis + "[initial]\nvelocity = \"vortices\"\n[[initial.vortex]]\n";
+    const std::string vortex3 =
+        std::string(kGrid3d) + kBasis + "[initial]\nvelocity = \"vortices\"\n[[initial.vortex]]\n";
+    const std::string source = std::string(kGrid2d) + kBasis + "[[source]]\nshape = \"ball\"\n";
+    const std::string obstacle = std::string(kGrid2d) + kBasis + "[[obstacle]]\n";
+    const std::string domain3 = std::string(kGrid3d) + kBasis + "[[domain]]\n";
+    const std::pair<std::string, std::string> cases[] = {
+        {"[grid]\nresolution = [8, 8]\nbounds_min = [0, X]\nbounds_max = [1, 1]\n" +
+             std::string(kBasis),
+         "[grid].bounds_min[1]"},
+        {"[grid]\nresolution = [8, 8]\nbounds_min = [0, 0]\nbounds_max = [X, 1]\n" +
+             std::string(kBasis),
+         "[grid].bounds_max[0]"},
+        {domain3 + "shape = \"ball\"\ncenter = [0, X, 0]\nradius = 1\n", "center[1]"},
+        {domain3 + "shape = \"ball\"\ncenter = [0, 0, 0]\nradius = X\n", "(ball).radius"},
+        {domain3 + "shape = \"box\"\nmin = [0, 0, X]\nmax = [1, 1, 1]\n", "(box).min[2]"},
+        {domain3 + "shape = \"box\"\nmin = [0, 0, 0]\nmax = [1, X, 1]\n", "(box).max[1]"},
+        {domain3 + "shape = \"ellipsoid\"\ncenter = [0, 0, 0]\nradii = [X, 1, 1]\n",
+         "(ellipsoid).radii[0]"},
+        {domain3 + "shape = \"cylinder\"\ncenter = [0, 0, 0]\nradius = 1\nhalf_height = X\n",
+         "(cylinder).half_height"},
+        {domain3 + "shape = \"torus\"\ncenter = [0, 0, 0]\nmajor_radius = X\nminor_radius = 0.1\n",
+         "(torus).major_radius"},
+        {domain3 + "shape = \"torus\"\ncenter = [0, 0, 0]\nmajor_radius = 1\nminor_radius = X\n",
+         "(torus).minor_radius"},
+        {std::string(kGrid2d) + kBasis + "[simulation]\ndt = X\n", "[simulation].dt"},
+        {std::string(kGrid2d) + kBasis + "[simulation]\nviscosity = X\n", "[simulation].viscosity"},
+        {std::string(kGrid2d) + kBasis + "[simulation]\nalpha = X\n", "[simulation].alpha"},
+        {std::string(kGrid2d) + kBasis + "[simulation]\nmhd = true\nmagnetic_diffusivity = X\n",
+         "[simulation].magnetic_diffusivity"},
+        {std::string(kGrid2d) + kBasis + "[initial]\nvelocity = \"random\"\nenergy = X\n",
+         "[initial].energy"},
+        {std::string(kGrid2d) + kBasis + "[initial]\nvelocity = \"modes\"\namplitudes = [[1, X]]\n",
+         "[initial].amplitudes[0][1]"},
+        {mhd + "magnetic_energy = X\n", "[initial].magnetic_energy"},
+        {mhd + "magnetic = \"uniform\"\nmagnetic_direction = [X, 1]\n",
+         "[initial].magnetic_direction[0]"},
+        {mhd + "magnetic = \"uniform\"\nmagnetic_direction = [1, 0]\nmagnetic_strength = X\n",
+         "[initial].magnetic_strength"},
+        {mhd + "magnetic = \"uniform\"\nmagnetic_direction = [1, 0]\nmagnetic_wall_layer = X\n",
+         "[initial].magnetic_wall_layer"},
+        {vortex2 + "center = [X, 0]\nstrength = 1\nradius = 0.1\n",
+         "[[initial.vortex]] #1.center[0]"},
+        {vortex2 + "center = [0, 0]\nstrength = X\nradius = 0.1\n",
+         "[[initial.vortex]] #1.strength"},
+        {vortex2 + "center = [0, 0]\nstrength = 1\nradius = X\n", "[[initial.vortex]] #1.radius"},
+        {vortex3 + "center = [0, 0, 0]\nnormal = [0, X, 1]\nring_radius = 0.5\nradius = 0.1\n"
+                   "strength = 1\n",
+         "[[initial.vortex]] #1.normal[1]"},
+        {vortex3 + "center = [0, 0, 0]\nnormal = [0, 0, 1]\nring_radius = X\nradius = 0.1\n"
+                   "strength = 1\n",
+         "[[initial.vortex]] #1.ring_radius"},
+        {source + "center = [0, 0]\nradius = 0.1\ndensity = X\n", "(ball).density"},
+        {source + "center = [0, 0]\nradius = 0.1\ntemperature = X\n", "(ball).temperature"},
+        {source + "center = [0, 0]\nradius = 0.1\nstart = X\n", "(ball).start"},
+        {source + "center = [0, 0]\nradius = 0.1\nend = X\n", "(ball).end"},
+        {obstacle + "shape = \"ball\"\nradius = X\npath = [[0, 0, 0]]\n", "[[obstacle]] #1.radius"},
+        {obstacle + "shape = \"box\"\nhalf_size = [0.1, X]\npath = [[0, 0, 0]]\n",
+         "[[obstacle]] #1.half_size[1]"},
+        {obstacle + "shape = \"capsule\"\nradius = 0.1\naxis = [X, 0]\npath = [[0, 0, 0]]\n",
+         "[[obstacle]] #1.axis[0]"},
+        {obstacle + "shape = \"ball\"\nradius = 0.1\npath = [[X, 0, 0]]\n",
+         "[[obstacle]] #1.path time"},
+        {obstacle + "shape = \"ball\"\nradius = 0.1\npath = [[0, 0, X]]\n", "[[obstacle]] #1.path"},
+        {std::string(kGrid2d) + kBasis + "[smoke]\nbuoyancy = X\n", "[smoke].buoyancy"},
+    };
+    for (const auto& [text, key] : cases) {
+        const std::size_t x = text.find('X');
+        ASSERT_NE(x, std::string::npos) << key;
+        for (const std::string value : {"nan", "inf", "-inf"}) {
+            const std::string message = errorOf(text.substr(0, x) + value + text.substr(x + 1));
+            EXPECT_CONTAINS(message, key + ": must be finite, got " + value);
+        }
+    }
+    // Beyond a double's range TOML itself refuses the number, with its line.
+    EXPECT_CONTAINS(errorOf(std::string(kGrid2d) + kBasis + "[simulation]\ndt = 1e400\n"),
+                    "line 10, column");
+}
+
+TEST_F(SceneLoaderTest, AbsurdInitialSpeedsAreRefused) {
+    // energy = 1e300 was accepted and later blamed on dt ("energy = inf"). Energies are ½∫|u|²
+    // over the grid's box (2.2 x 2.2 x 1 here), so the cap is a mean speed, scale-free in space.
+    const std::string base = std::string(kGrid2d) + kBasis;
+    const double volume = 2.2 * 2.2;
+    const auto energyAt = [&](double speed) {
+        return formatNumberForTest(0.5 * speed * speed * volume);
+    };
+    EXPECT_EQ(
+        errorOf(base + "[initial]\nvelocity = \"random\"\nenergy = " + energyAt(0.99e6) + "\n"),
+        "");
+    std::string message = errorOf(base + "[initial]\nvelocity = \"random\"\nenergy = 1e300\n");
+    EXPECT_CONTAINS(message,
+                    "[initial].energy: 1e+300 is a mean speed of 6.4e+149 (sqrt(2 energy / "
+                    "grid volume 4.8)); at most 1e+06 scene units per unit time (line 11)");
+    message =
+        errorOf(base + "[initial]\nvelocity = \"random\"\nenergy = " + energyAt(1.01e6) + "\n");
+    EXPECT_CONTAINS(message, "[initial].energy: ");
+    EXPECT_CONTAINS(message, "is a mean speed of 1e+06");
+
+    message =
+        errorOf(base + "[initial]\nvelocity = \"modes\"\namplitudes = [[1, 1], [2, 1e200]]\n");
+    EXPECT_CONTAINS(message, "[initial].amplitudes: ½Σa² = inf is a mean speed of inf");
+    const std::string mhd = base + "[simulation]\nmhd = true\n[initial]\n";
+    message = errorOf(mhd + "magnetic_energy = 1e300\n");
+    EXPECT_CONTAINS(message, "[initial].magnetic_energy: 1e+300 is a mean field of 6.4e+149");
+    message = errorOf(
+        mhd + "magnetic = \"uniform\"\nmagnetic_direction = [1, 0]\nmagnetic_strength = 2e6\n");
+    EXPECT_CONTAINS(message, "[initial].magnetic_strength: 2e+06 is beyond 1e+06");
+    message = errorOf(base +
+                      "[initial]\nvelocity = \"vortices\"\n[[initial.vortex]]\ncenter = [0, 0]\n"
+                      "strength = 1e300\nradius = 0.1\n");
+    EXPECT_CONTAINS(
+        message,
+        "[[initial.vortex]] #1.strength: magnitude 1e+300 is beyond 2.2e+06 (1e+06 scene "
+        "units per unit time times the grid's longest side, 2.2)");
 }
 
 TEST_F(SceneLoaderTest, MagneticFieldIsRandomOrUniformAndChecked) {
@@ -841,7 +978,8 @@ TEST_F(SceneLoaderTest, OversizedSceneFileIsRefusedBeforeReading) {
         EXPECT_CONTAINS(e.what(), "at most " + std::to_string(kMaxSceneFileBytes >> 20) + " MiB");
     }
     // The same limit holds for text already in memory.
-    EXPECT_CONTAINS(errorOf(std::string(kMaxSceneFileBytes + 1, '#')), "too large for a scene file");
+    EXPECT_CONTAINS(errorOf(std::string(kMaxSceneFileBytes + 1, '#')),
+                    "too large for a scene file");
 }
 
 TEST_F(SceneLoaderTest, ErrorsCarryTheLine) {
