@@ -2,6 +2,7 @@
 /// `[basis]`: which velocity modes (a count or a mode list), scalar modes and how the boundary is
 /// treated.
 
+#include "engine/format/PrintableText.h"
 #include "precompute/scene/ModeList.h"
 #include "precompute/scene/SceneSections.h"
 
@@ -25,7 +26,8 @@ BasisSpec readBasis(const TomlReader& reader, const Section& s) {
     } else {
         const std::string text = *reader.string(s, "modes");
         if (auto problem = parseModeList(text, basis.velocityModes)) {
-            reader.fail(s, "modes", "bad mode list \"" + text + "\": " + *problem, listNode);
+            reader.fail(s, "modes", "bad mode list \"" + printableText(text) + "\": " + *problem,
+                        listNode);
         }
     }
     basis.scalarModes = reader.readInt(s, "scalar_modes", 0, 0);

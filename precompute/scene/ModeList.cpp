@@ -5,6 +5,7 @@
 #include <cctype>
 #include <charconv>
 
+#include "engine/format/PrintableText.h"
 #include "precompute/scene/SceneLoader.h"
 
 namespace modeflow {
@@ -56,8 +57,8 @@ std::optional<std::string> parseModeList(std::string_view text, std::vector<Mode
         out.push_back(range);
         if (pos == text.size()) return std::nullopt;
         if (text[pos] != ',') {
-            return std::string("unexpected character '") + text[pos] + "' at position " +
-                   std::to_string(pos + 1) + " (expected ',' or '-')";
+            return "unexpected character '" + printableText(text.substr(pos, 1)) +
+                   "' at position " + std::to_string(pos + 1) + " (expected ',' or '-')";
         }
         ++pos;
     }
@@ -68,7 +69,7 @@ std::optional<std::string> parseModeList(std::string_view text, std::vector<Mode
 std::vector<ModeRange> parseModeRanges(std::string_view text, std::string_view key) {
     std::vector<ModeRange> ranges;
     if (auto problem = scene::parseModeList(text, ranges)) {
-        throw Error(std::string(key) + ": bad mode list \"" + std::string(text) +
+        throw Error(std::string(key) + ": bad mode list \"" + printableText(text) +
                     "\": " + *problem);
     }
     return ranges;

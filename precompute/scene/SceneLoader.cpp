@@ -12,6 +12,7 @@
 
 #include "engine/field/RuntimeLimits.h"
 #include "engine/format/FileKind.h"
+#include "engine/format/PrintableText.h"
 #include "precompute/scene/SceneSections.h"
 #include "precompute/scene/SceneValidation.h"
 #include "precompute/scene/TomlReader.h"
@@ -32,7 +33,7 @@ void checkTopLevel(const TomlReader& reader, const toml::table& root) {
         } else {
             what += " (a scene holds " + joinWords(kTopLevelTables, "and") + ")";
         }
-        reader.fail(std::string(name), what, &node);
+        reader.fail(printableText(name), what, &node);
     }
 }
 

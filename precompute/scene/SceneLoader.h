@@ -18,6 +18,12 @@ namespace modeflow {
 /// with long key-frame paths well under a megabyte. Checked before reading (parsing costs about
 /// 40 bytes of memory per byte of file), like the file's kind: a device or a FIFO is refused.
 inline constexpr std::uintmax_t kMaxSceneFileBytes = std::uintmax_t{4} << 20;
+/// Most '.' characters on one line of a scene file. Each dot of a key nests a table, and toml++
+/// walks nested tables recursively: 100000 of them overflowed the stack. Three lines can add up
+/// to one nesting (a [table.header], a dotted.key = [ and an inline {table} inside the array),
+/// about 12000 tables, well within the stack; floats count too, so a long array of them may
+/// need to be spread over several lines.
+inline constexpr int kMaxDotsPerLine = 4096;
 /// Largest accepted entry of `[grid].resolution`.
 inline constexpr int kMaxGridResolution = 4096;
 /// Accepted cell sizes ((bounds_max - bounds_min) / resolution on each axis), in scene units. The

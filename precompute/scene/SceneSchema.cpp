@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "engine/format/PrintableText.h"
 #include "precompute/scene/SceneLoader.h"
 #include "precompute/scene/SceneWording.h"
 
@@ -90,7 +91,7 @@ Integrator parseIntegrator(std::string_view text, std::string_view key) {
         if (name == text) return value;
         names.push_back(name);
     }
-    std::string what = std::string(key) + ": unknown integrator \"" + std::string(text) + "\"";
+    std::string what = std::string(key) + ": unknown integrator \"" + printableText(text) + "\"";
     if (auto guess = scene::closest(text, names))
         what += " (did you mean " + std::string(*guess) + "?)";
     throw Error(what + "; expected " + scene::joinWords(names));

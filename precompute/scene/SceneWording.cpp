@@ -46,6 +46,10 @@ std::optional<std::string_view> closest(std::string_view word,
     std::optional<std::string_view> best;
     std::size_t bestDistance = allowed + 1;
     for (std::string_view c : candidates) {
+        // The distance is at least the difference in length: a megabyte-long word is no typo.
+        const std::size_t gap =
+            word.size() > c.size() ? word.size() - c.size() : c.size() - word.size();
+        if (gap >= bestDistance) continue;
         const std::size_t d = editDistance(word, c);
         if (d < bestDistance) {
             best = c;

@@ -8,6 +8,7 @@
 #include <system_error>
 
 #include "engine/format/FileKind.h"
+#include "engine/format/PrintableText.h"
 #include "precompute/scene/SceneSections.h"
 #include "precompute/scene/SceneValidation.h"
 
@@ -15,6 +16,9 @@ namespace modeflow::scene {
 namespace {
 
 namespace fs = std::filesystem;
+
+/// Paths are longer than keys; 240 characters show any reasonable one whole.
+constexpr std::size_t kShownPathChars = 240;
 
 fs::path readMeshFile(const TomlReader& reader, const Section& s) {
     const std::optional<std::string> file = reader.string(s, "file");
@@ -27,14 +31,16 @@ fs::path readMeshFile(const TomlReader& reader, const Section& s) {
     std::transform(extension.begin(), extension.end(), extension.begin(),
                    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
     if (extension != ".obj") {
-        reader.fail(s, "file", "only OBJ meshes are supported, got \"" + *file + "\"",
+        reader.fail(s, "file",
+                    "only OBJ meshes are supported, got \"" + printableText(*file) + "\"",
                     s.table.get("file"));
     }
     if (auto why = whyNotARegularFile(path)) {
+        const std::string shown = printableText(path.string(), kShownPathChars);
         std::error_code ec;
         reader.fail(s, "file",
-                    fs::exists(path, ec) ? path.string() + " " + *why + ", not an OBJ file"
-                                         : "no such file: " + path.string(),
+                    fs::exists(path, ec) ? shown + " " + *why + ", not an OBJ file"
+                                         : "no such file: " + shown,
                     s.table.get("file"));
     }
     return path;

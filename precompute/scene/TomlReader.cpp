@@ -2,10 +2,13 @@
 
 #include "precompute/scene/TomlReader.h"
 
+#include <algorithm>
 #include <cmath>
 #include <utility>
 
 #include "engine/format/Error.h"
+#include "engine/format/PrintableText.h"
+#include "precompute/scene/SceneLoader.h"
 
 namespace modeflow::scene {
 namespace {
@@ -14,7 +17,7 @@ namespace {
     const auto& begin = e.source().begin;
     throw Error(file + ": line " + std::to_string(begin.line) + ", column " +
                 std::to_string(begin.column) +
-                ": TOML syntax error: " + std::string(e.description()));
+                ": TOML syntax error: " + printableText(e.description(), 200));
 }
 
 }  // namespace
@@ -49,6 +52,7 @@ TomlReader::TomlReader(const std::filesystem::path& origin)
     : mFile(origin.string()), mOrigin(origin) {}
 
 toml::table TomlReader::parse(std::string_view text) const {
+    checkNesting(text);
 #if TOML_EXCEPTIONS
     try {
         return toml::parse(text, mFile);
@@ -60,6 +64,26 @@ toml::table TomlReader::parse(std::string_view text) const {
     if (!result) throwSyntaxError(mFile, result.error());
     return std::move(result).table();
 #endif
+}
+
+void TomlReader::checkNesting(std::string_view text) const {
+    std::size_t line = 1, lineStart = 0;
+    int dots = 0;
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        if (text[i] == '\n') {
+            ++line;
+            lineStart = i + 1;
+            dots = 0;
+        } else if (text[i] == '.' && ++dots > kMaxDotsPerLine) {
+            const std::string_view rest = text.substr(lineStart);
+            const std::string_view whole = rest.substr(0, rest.find('\n'));
+            throw Error(mFile + ": line " + std::to_string(line) + ": " +
+                        std::to_string(std::count(whole.begin(), whole.end(), '.')) +
+                        " dots on one line (at most " + std::to_string(kMaxDotsPerLine) +
+                        "): each dot of a key nests a table, and nesting that deep is refused; "
+                        "spread long arrays of numbers over several lines");
+        }
+    }
 }
 
 // ---- messages -------------------------------------------------------------------------------
@@ -74,7 +98,8 @@ void TomlReader::fail(std::string_view where, std::string_view what, const toml:
 
 void TomlReader::fail(const Section& s, std::string_view key, std::string_view what,
                       const toml::node* at) const {
-    fail(s.name + "." + std::string(key), what, at != nullptr ? at : &s.table);
+    // Keys come from the file: a TOML escape can put a terminal command in one.
+    fail(s.name + "." + printableText(key), what, at != nullptr ? at : &s.table);
 }
 
 // ---- structure ------------------------------------------------------------------------------

@@ -15,6 +15,7 @@
 
 #include <toml++/toml.h>
 
+#include "engine/format/PrintableText.h"
 #include "precompute/scene/SceneSchema.h"
 #include "precompute/scene/SceneSpec.h"
 #include "precompute/scene/SceneWording.h"
@@ -114,7 +115,7 @@ public:
             if (name == *value) return v;
             names.push_back(name);
         }
-        std::string what = "unknown value \"" + *value + "\"";
+        std::string what = "unknown value \"" + printableText(*value) + "\"";
         if (auto guess = closest(*value, names))
             what += " (did you mean " + std::string(*guess) + "?)";
         fail(s, key, what + "; expected " + joinWords(names), s.table.get(key));
@@ -125,6 +126,9 @@ public:
     Vec3 requireVector(const Section& s, std::string_view key) const;
 
 private:
+    /// Refuses a line with more than kMaxDotsPerLine dots before toml++ recurses into it.
+    void checkNesting(std::string_view text) const;
+
     std::string mFile;
     std::filesystem::path mOrigin;
     int mDim = 2;

@@ -78,6 +78,16 @@ std::string formatNumberForTest(double x) {
     return std::string(buffer, end);
 }
 
+/// The message of parseModeRanges' Error for `text`, or "".
+std::string parseModeRangesError(const std::string& text) {
+    try {
+        parseModeRanges(text, "--modes");
+    } catch (const Error& e) {
+        return e.what();
+    }
+    return "";
+}
+
 #define EXPECT_CONTAINS(haystack, needle)                            \
     EXPECT_NE(std::string(haystack).find(needle), std::string::npos) \
         << "expected \"" << (needle) << "\" in \"" << (haystack) << "\""
@@ -987,6 +997,99 @@ TEST_F(SceneLoaderTest, ErrorsCarryTheLine) {
         errorOf(std::string(kGrid2d) + kBasis + "[simulation]\n\ndt = -1\n");
     // kGrid2d starts with a blank line: [grid] is line 2, so dt sits on line 11.
     EXPECT_CONTAINS(message, "(line 11)");
+}
+
+TEST_F(SceneLoaderTest, DeeplyNestedTablesAreRefusedNotACrash) {
+    // toml++ walks nested tables recursively: [a.a.a...] 100000 deep overflowed the stack.
+    std::string deep = "[a";
+    for (int i = 0; i < 100000; ++i) deep += ".a";
+    EXPECT_CONTAINS(errorOf(std::string(kGrid2d) + kBasis + deep + "]\n"),
+                    "scenes/bad.toml: line 9: 100000 dots on one line");
+    // At the limit, on the three lines a nesting can span, parsing ends in a plain message.
+    std::string header = "[a", key = "b", inner = "{c";
+    for (int i = 0; i < kMaxDotsPerLine; ++i) header += ".a", key += ".b", inner += ".c";
+    const std::string limit = header + "]\n" + key + " = [\n" + inner + " = 1}]\n";
+    EXPECT_CONTAINS(errorOf(limit), "a: unknown table");
+    // Long arrays of numbers fit, over several lines if need be.
+    std::string path = "[[obstacle]]\nshape = \"ball\"\nradius = 0.1\npath = [\n";
+    for (int i = 0; i < 3000; ++i)
+        path.append("[").append(std::to_string(i)).append(".5, 0.25, 0.5],\n");
+    EXPECT_EQ(errorOf(std::string(kGrid2d) + kBasis + path + "]\n"), "");
+}
+
+TEST_F(SceneLoaderTest, FileTextInMessagesIsPrintableAndShort) {
+    // TOML escapes let a key or a value hold terminal commands; they were printed as they were.
+    const std::string base = std::string(kGrid2d) + kBasis;
+    std::string message = errorOf(base + "[output]\n\"\\u001b[2J\" = 1\n");
+    EXPECT_CONTAINS(message, "[output].\\x1b[2J: unknown key");
+    EXPECT_EQ(message.find('\x1b'), std::string::npos) << message;
+    message = errorOf(base + "\"\\u001b]0;owned\\u0007\" = 1\n");
+    EXPECT_CONTAINS(message, "\\x1b]0;owned\\x07: unknown key");
+    message = errorOf(std::string(kGrid2d) + "[basis]\nmodes = \"1-3\\u001b[2J\"\n");
+    EXPECT_CONTAINS(message, "bad mode list \"1-3\\x1b[2J\": unexpected character '\\x1b'");
+    EXPECT_EQ(message.find('\x1b'), std::string::npos) << message;
+    message = errorOf(base + "[simulation]\nintegrator = \"\\u009b31m\"\n");
+    EXPECT_CONTAINS(message, "unknown value \"\\xc2\\x9b31m\"");
+
+    // A megabyte-long value or key is cut, and a suggestion is not searched for in it.
+    const std::string huge(1 << 20, '7');
+    message = errorOf(std::string(kGrid2d) + "[basis]\nmodes = \"1-" + huge + "\"\n");
+    EXPECT_LT(message.size(), 400u) << message.size() << " characters";
+    EXPECT_CONTAINS(message, "...");
+    message = errorOf(base + "[output]\n" + std::string(1 << 20, 'f') + " = 1\n");
+    EXPECT_LT(message.size(), 400u) << message.size() << " characters";
+    message = errorOf(base + "[simulation]\nintegrator = \"" + huge + "\"\n");
+    EXPECT_LT(message.size(), 400u) << message.size() << " characters";
+    EXPECT_CONTAINS(parseModeRangesError("1-3\x1b"), "\\x1b");
+}
+
+TEST_F(SceneLoaderTest, HostileValuesGetMessagesNamingTheKey) {
+    const std::string base = std::string(kGrid2d) + kBasis;
+    // Integers beyond their range.
+    EXPECT_CONTAINS(errorOf("[grid]\nresolution = [9223372036854775807, 8]\nbounds_min = [0, 0]\n"
+                            "bounds_max = [1, 1]\n" +
+                            std::string(kBasis)),
+                    "[grid].resolution[0]: must be between 2 and 4096, got 9223372036854775807");
+    EXPECT_CONTAINS(errorOf("[grid]\nresolution = [9223372036854775808, 8]\n"),
+                    "line 2, column");  // TOML refuses it: not representable in 64 bits
+    EXPECT_CONTAINS(errorOf(std::string(kGrid2d) + "[basis]\nmodes = \"1-2147483647\"\n"),
+                    "[basis].modes: mode 2147483647 is beyond the discrete space");
+    EXPECT_CONTAINS(errorOf(std::string(kGrid2d) + "[basis]\nmodes = \"1-2147483648\"\n"),
+                    "[basis].modes: bad mode list \"1-2147483648\": mode number at position 3 "
+                    "is too large");
+    EXPECT_CONTAINS(errorOf(base + "[initial]\nvelocity = \"random\"\nband = [1, 4294967297]\n"),
+                    "[initial].band: mode 4294967297 is beyond the basis");
+    EXPECT_CONTAINS(errorOf(base + "[simulation]\nmhd = true\n[initial]\nmagnetic_seed = -3\n"),
+                    "[initial].magnetic_seed: must be at least 0, got -3");
+    // frames x steps_per_frame is the step count, an int.
+    EXPECT_CONTAINS(errorOf(base + "[output]\nframes = 100000\nsteps_per_frame = 100000\n"),
+                    "[output].steps_per_frame: frames x steps_per_frame = 10000000000 steps, "
+                    "more than 2147483647");
+    // Negative zero is not a size.
+    EXPECT_CONTAINS(
+        errorOf(base + "[[domain]]\nshape = \"ball\"\ncenter = [0, 0]\nradius = -0.0\n"),
+        "[[domain]] #1 (ball).radius: must be > 0, got -0");
+    EXPECT_CONTAINS(
+        errorOf("[grid]\nresolution = [8, 8]\nbounds_min = [-0.0, 0]\nbounds_max = [0.0, 1]\n" +
+                std::string(kBasis)),
+        "[grid].bounds_max: must exceed bounds_min on every axis");
+    // Huge arrays are counted, not echoed.
+    std::string many = "[grid]\nresolution = [";
+    for (int i = 0; i < 100000; ++i) many += "8, ";
+    EXPECT_CONTAINS(errorOf(many + "8]\n"),
+                    "[grid].resolution: expected 2 or 3 integers, got "
+                    "100001 entries");
+    // An empty file, and arrays of tables where tables belong.
+    EXPECT_CONTAINS(errorOf(""), "scenes/bad.toml: [grid]: missing required table");
+    EXPECT_CONTAINS(errorOf("[[grid]]\nresolution = [8, 8]\n"),
+                    "[grid]: expected a table, got an array (line 1)");
+    EXPECT_CONTAINS(errorOf(std::string(kGrid2d) + "[[basis]]\nvelocity_modes = 4\n"),
+                    "[basis]: expected a table, got an array");
+    EXPECT_CONTAINS(errorOf(base + "[[initial]]\nvelocity = \"zero\"\n"),
+                    "[initial]: expected a table, got an array");
+    EXPECT_CONTAINS(errorOf(base + "[initial]\nvelocity = \"vortices\"\n[initial.vortex]\n"
+                                   "center = [0, 0]\n"),
+                    "[[initial.vortex]]: expected an array of tables");
 }
 
 TEST(SceneKeywords, MatchTheFileSpelling) {
