@@ -9,9 +9,9 @@
 #include <unistd.h>
 
 #include "engine/format/CacheFile.h"
-#include "engine/format/WritableDirectory.h"
-#include "engine/format/Error.h"
-#include "engine/dynamics/PackedLayout.h"
+#include "engine/core/WritableDirectory.h"
+#include "engine/core/Error.h"
+#include "engine/core/PackedLayout.h"
 #include "precompute/coefficients/CoefficientAssembly.h"
 #include "precompute/dec/CubicalComplex.h"
 #include "precompute/dec/CutCellDec.h"

@@ -8,7 +8,7 @@
 
 #include "engine/format/BasisCache.h"
 #include "precompute/Progress.h"
-#include "precompute/scene/SceneSpec.h"
+#include "engine/core/SceneSpec.h"
 
 namespace modeflow {
 

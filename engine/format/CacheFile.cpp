@@ -6,7 +6,7 @@
 
 #include <unistd.h>
 
-#include "engine/format/Error.h"
+#include "engine/core/Error.h"
 
 static_assert(__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__, "the cache format is little-endian");
 

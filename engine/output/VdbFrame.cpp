@@ -20,8 +20,8 @@
 #include <mutex>
 #include <system_error>
 
-#include "engine/field/MacSampling.h"
-#include "engine/format/Error.h"
+#include "engine/core/MacSampling.h"
+#include "engine/core/Error.h"
 
 namespace modeflow {
 namespace {

@@ -9,7 +9,7 @@
 #include <system_error>
 #include <vector>
 
-#include "engine/format/Error.h"
+#include "engine/core/Error.h"
 
 // The one translation unit with stb_image_write's definitions; static, so they cannot clash with
 // another copy of stb linked into the same program.

@@ -2,7 +2,7 @@
 
 #include <string>
 
-#include "engine/format/Error.h"
+#include "engine/core/Error.h"
 
 namespace modeflow {
 
@@ -31,7 +31,7 @@ SimulationSettings SimulationSettings::fromScene(const SceneSpec& scene, const B
     settings.smokeScale = scene.smoke.resolutionScale;
     settings.advection = scene.smoke.advection;
     settings.basisPrecision =
-        sim.halfPrecisionBasis ? vulkan::ModePrecision::Float16 : vulkan::ModePrecision::Float32;
+        sim.halfPrecisionBasis ? ModePrecision::Float16 : ModePrecision::Float32;
     for (const SourceSpec& source : scene.sources)
         settings.emitters.push_back(emitterFromSource(source));
     if (scene.obstacles.size() > std::size_t(maxObstacles))

@@ -1,8 +1,8 @@
 #pragma once
 /// @file Simulator.h
 /// One scene advancing frame by frame (DESIGN §1): modal velocity (and, with MHD, magnetic
-/// field), forces from the smoke, and the smoke it carries. Two implementations run the same model: Simulation on a Vulkan device
-/// (float32) and ReferenceSimulation on the CPU (double), so any run can be made on both and
+/// field), forces from the smoke, and the smoke it carries. Two implementations run the same model: device::Simulation on a Vulkan device
+/// (float32) and reference::Simulation on the CPU (double), so any run can be made on both and
 /// compared (`--device cpu`).
 
 #include <span>
@@ -10,10 +10,10 @@
 
 #include <Eigen/Core>
 
-#include "engine/field/ForceField.h"
-#include "engine/field/MacGrid.h"
-#include "engine/field/SmokeAdvection.h"
-#include "engine/format/Error.h"
+#include "engine/simulation/ForceSplat.h"
+#include "engine/core/MacGrid.h"
+#include "engine/simulation/SmokeFields.h"
+#include "engine/core/Error.h"
 #include "engine/simulation/SimulationSettings.h"
 
 namespace modeflow {

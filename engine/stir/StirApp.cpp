@@ -12,7 +12,7 @@
 #include "engine/display/Presenter.h"
 #include "engine/display/TextOverlay.h"
 #include "engine/display/Window.h"
-#include "engine/format/Error.h"
+#include "engine/core/Error.h"
 #include "engine/preview/PngWriter.h"
 #include "engine/preview/VolumeRenderer.h"
 #include "engine/stir/RealTimeClock.h"
@@ -274,7 +274,7 @@ bool StirWindow::draw() {
     const int scale = height >= 600 ? 2 : 1;
     mOverlay.update(width, height, overlayText(scale), scale);
     display::DisplayTarget target{width, height, mView.viewport(width, height), mPresenter.blueFirst()};
-    const vulkan::SmokeState& smoke = mSession.simulation().smokeState();
+    const device::SmokeState& smoke = mSession.simulation().smokeState();
     if (mRenderer) {
         mRenderer->record(mSequence, smoke.fields(), kOpticalDepth, 2, mView.camera());
         mKernels.recordPicture(mSequence, mRenderer->pictureBuffer(), mRenderer->width(),
@@ -293,7 +293,7 @@ bool StirWindow::draw() {
             look.arrowSpacing = float(std::max(16, target.viewport.width / 24));
             look.arrowScale = float(0.5 * look.arrowSpacing / std::max(rms, 1e-6));
         }
-        const Simulation& simulation = mSession.simulation();
+        const device::Simulation& simulation = mSession.simulation();
         mKernels.recordSmoke2D(mSequence, smoke, simulation.faceVelocityBuffer(), look,
                                mOverlay.buffer(), target, *mPixels);
     }

@@ -18,12 +18,12 @@
 #include <Eigen/Core>
 
 #include "engine/dynamics/StructuralCoefficients.h"
-#include "engine/field/SmokeAdvection.h"
+#include "engine/simulation/SmokeFields.h"
 #include "engine/format/BasisCache.h"
 #include "engine/stir/InputScript.h"
 #include "engine/stir/StirSession.h"
 #include "engine/vulkan/VulkanContext.h"
-#include "precompute/scene/SceneSpec.h"
+#include "engine/core/SceneSpec.h"
 
 namespace modeflow::stir {
 

@@ -5,7 +5,7 @@
 #include <cstdio>
 
 #include "engine/dynamics/Diagnostics.h"
-#include "engine/format/Error.h"
+#include "engine/core/Error.h"
 
 namespace modeflow::stir {
 namespace {
@@ -41,17 +41,17 @@ StirSession::StirSession(const vulkan::VulkanContext& context, const SceneSpec& 
     simulationOf(mBasis).setVelocity(mInitial);
 }
 
-Simulation& StirSession::simulationOf(std::size_t b) {
+device::Simulation& StirSession::simulationOf(std::size_t b) {
     if (!mSimulations[b]) {
         const int modes = mBases[b].modes;
         SimulationSettings settings = mSceneSettings;
         settings.fluid.kappaSquared = mCache.velocity.eigenvalues.head(modes);
         if (b + 1 == mBases.size()) {
             mSimulations[b] =
-                std::make_unique<Simulation>(mContext, mCache, *mCoefficients, settings, mMask, true);
+                std::make_unique<device::Simulation>(mContext, mCache, *mCoefficients, settings, mMask, true);
         } else {
             const BasisCache cache = leadingModes(mCache, modes);
-            mSimulations[b] = std::make_unique<Simulation>(
+            mSimulations[b] = std::make_unique<device::Simulation>(
                 mContext, cache, *leadingCoefficients(*mCoefficients, modes), settings, mMask, true);
         }
     }
@@ -105,8 +105,8 @@ void StirSession::scaleViscosity(bool up) {
 void StirSession::nextBasis() {
     if (mBases.size() < 2) return;
     const std::size_t next = (mBasis + 1) % mBases.size();
-    Simulation& from = current();
-    Simulation& to = simulationOf(next);
+    device::Simulation& from = current();
+    device::Simulation& to = simulationOf(next);
     to.setIntegrator(mSceneSettings.integrator);
     to.setViscosity(mSceneSettings.fluid.viscosity);
     // The leading modes are the same functions in both bases: they carry over, the rest start
@@ -173,7 +173,7 @@ MovingObstacle StirSession::paddleObstacle(int steps) const {
 FrameStats StirSession::advance(int steps, double elapsed) {
     mStrokeTime += elapsed;
     if (steps < 1) return {};
-    Simulation& simulation = current();
+    device::Simulation& simulation = current();
     const std::vector<ForceSplat> splats = strokeSplats(mStrokeTime);
     simulation.setSplats(splats);
     if (mPaddleMode) {

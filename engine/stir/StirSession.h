@@ -15,7 +15,7 @@
 
 #include <Eigen/Core>
 
-#include "engine/simulation/Simulation.h"
+#include "engine/device/Simulation.h"
 #include "engine/stir/ShapedBases.h"
 
 namespace modeflow::stir {
@@ -65,7 +65,7 @@ public:
     /// Whether the following advance() calls time their steps (Simulation::setTiming).
     void setTiming(bool on) { mTiming = on; }
 
-    const Simulation& simulation() const { return *mSimulations[mBasis]; }
+    const device::Simulation& simulation() const { return *mSimulations[mBasis]; }
     const SimulationSettings& settings() const { return simulation().settings(); }
     int modeCount() const { return mBases[mBasis].modes; }
     /// ½|v|², read from the device.
@@ -74,9 +74,9 @@ public:
     std::string status() const;
 
 private:
-    Simulation& current() { return *mSimulations[mBasis]; }
+    device::Simulation& current() { return *mSimulations[mBasis]; }
     /// The simulation of basis b, built the first time it is asked for.
-    Simulation& simulationOf(std::size_t b);
+    device::Simulation& simulationOf(std::size_t b);
     std::vector<ForceSplat> strokeSplats(double elapsed) const;
     MovingObstacle paddleObstacle(int steps) const;
 
@@ -90,7 +90,7 @@ private:
     double mBoxSize = 1.0;
     int mDim = 2;
     std::vector<ShapedBasis> mBases;
-    std::vector<std::unique_ptr<Simulation>> mSimulations;  ///< per basis, null until used
+    std::vector<std::unique_ptr<device::Simulation>> mSimulations;  ///< per basis, null until used
     std::size_t mBasis = 0;
 
     bool mPaddleMode = false;

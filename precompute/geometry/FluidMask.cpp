@@ -2,8 +2,8 @@
 
 #include <algorithm>
 
-#include "engine/field/MacGrid.h"
-#include "engine/format/Error.h"
+#include "engine/core/MacGrid.h"
+#include "engine/core/Error.h"
 #include "precompute/geometry/Domain.h"
 
 namespace modeflow {

@@ -17,7 +17,7 @@
 #include <unordered_map>
 #include <vector>
 
-#include "engine/format/Error.h"
+#include "engine/core/Error.h"
 
 namespace modeflow {
 namespace {

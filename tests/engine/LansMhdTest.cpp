@@ -20,11 +20,11 @@
 #include "engine/dynamics/MhdSystem.h"
 #include "engine/dynamics/ModalIntegrator.h"
 #include "precompute/scene/SceneLoader.h"
-#include "engine/dynamics/PackedLayout.h"
+#include "engine/core/PackedLayout.h"
 #include "engine/dynamics/SparseCoefficients.h"
-#include "engine/field/VelocityReconstruction.h"
-#include "engine/format/Error.h"
-#include "engine/simulation/ReferenceSimulation.h"
+#include "engine/reference/VelocityReconstruction.h"
+#include "engine/core/Error.h"
+#include "engine/reference/Simulation.h"
 #include "precompute/Precompute.h"
 #include "precompute/geometry/FluidMask.h"
 #include "tests/engine/RandomCoefficients.h"
@@ -252,7 +252,7 @@ TEST(MhdSimulation, ReferenceRunKeepsEnergyAndCrossHelicity) {
     const SimulationSettings settings =
         SimulationSettings::fromScene(disk.scene, disk.cache, Runtime::CpuReference);
     ASSERT_TRUE(settings.mhd);
-    ReferenceSimulation simulation(disk.cache, *disk.coefficients, settings, disk.mask);
+    reference::Simulation simulation(disk.cache, *disk.coefficients, settings, disk.mask);
     const Eigen::VectorXd v = randomVector(n, 601), f = 0.7 * randomVector(n, 602);
     simulation.setVelocity(v);
     simulation.setMagneticField(f);
@@ -267,8 +267,8 @@ TEST(MhdSimulation, ReferenceRunKeepsEnergyAndCrossHelicity) {
     // The field moved with the flow and exchanged energy with it.
     EXPECT_GT((f1 - f).norm(), 0.1 * f.norm());
     EXPECT_GT(std::abs(f1.squaredNorm() - f.squaredNorm()), 1e-3 * f.squaredNorm());
-    EXPECT_EQ(simulation.faceMagneticField(), reconstructFaceField(disk.cache, f1));
-    EXPECT_EQ(simulation.faceVelocity(), reconstructFaceField(disk.cache, v1));
+    EXPECT_EQ(simulation.faceMagneticField(), reference::reconstructFaceField(disk.cache, f1));
+    EXPECT_EQ(simulation.faceVelocity(), reference::reconstructFaceField(disk.cache, v1));
 }
 
 TEST(MhdSimulation, TheDeviceAndPlainFluidRunsRefuseAField) {
@@ -282,7 +282,7 @@ TEST(MhdSimulation, TheDeviceAndPlainFluidRunsRefuseAField) {
     }
     SimulationSettings fluid = SimulationSettings::fromScene(disk.scene, disk.cache, Runtime::CpuReference);
     fluid.mhd = false;
-    ReferenceSimulation simulation(disk.cache, *disk.coefficients, fluid, disk.mask);
+    reference::Simulation simulation(disk.cache, *disk.coefficients, fluid, disk.mask);
     EXPECT_EQ(simulation.magneticField().size(), 0);
     EXPECT_TRUE(simulation.faceMagneticField().empty());
     EXPECT_THROW(simulation.setMagneticField(Eigen::VectorXd::Zero(12)), Error);

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cctype>
 
-#include "engine/format/Error.h"
+#include "engine/core/Error.h"
 
 namespace modeflow::cli {
 

@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "engine/dynamics/InitialConditions.h"
-#include "engine/format/Error.h"
+#include "engine/core/Error.h"
 #include "precompute/initial/UniformField.h"
 #include "precompute/initial/VortexProjection.h"
 

@@ -13,8 +13,8 @@
 #include "engine/dynamics/MhdSystem.h"
 #include "engine/dynamics/ModalIntegrator.h"
 #include "engine/format/CacheFile.h"
-#include "engine/format/Error.h"
-#include "engine/kernels/ModalStepper.h"
+#include "engine/core/Error.h"
+#include "engine/device/ModalStepper.h"
 #include "engine/simulation/SimulationSettings.h"
 #include "engine/vulkan/CommandSequence.h"
 #include "precompute/Precompute.h"
@@ -85,22 +85,22 @@ Command addModes(CLI::App& app) {
         // One step of the chosen device; it updates x and says how the step went.
         std::function<StepReport()> advance;
         std::unique_ptr<vulkan::VulkanContext> context;
-        std::unique_ptr<vulkan::ModalStepper> stepper;
+        std::unique_ptr<device::ModalStepper> stepper;
         std::unique_ptr<vulkan::CommandSequence> sequence;
         ModalIntegrator integrator(*system, settings);
         if (deviceOptions) {
             context = std::make_unique<vulkan::VulkanContext>(*deviceOptions);
             std::cerr << context->describe();
-            stepper = std::make_unique<vulkan::ModalStepper>(
+            stepper = std::make_unique<device::ModalStepper>(
                 *context, *coefficients, FluidParameters{k2, sim.viscosity, sim.alpha},
-                vulkan::DeviceStepSettings{settings.scheme});
+                device::DeviceStepSettings{settings.scheme});
             stepper->setState(x);
             sequence = std::make_unique<vulkan::CommandSequence>(*context);
             advance = [&]() {
                 stepper->recordStep(*sequence, h);
                 sequence->submitAndWait();
                 x = stepper->state();
-                const vulkan::DeviceStepStatus status = stepper->status();
+                const device::DeviceStepStatus status = stepper->status();
                 return StepReport{status.iterations, 0, status.residual, status.converged};
             };
         } else {

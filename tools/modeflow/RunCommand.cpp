@@ -9,12 +9,12 @@
 
 #include "engine/dynamics/CachedCoefficients.h"
 #include "engine/format/CacheFile.h"
-#include "engine/format/Error.h"
-#include "engine/format/WritableDirectory.h"
+#include "engine/core/Error.h"
+#include "engine/core/WritableDirectory.h"
 #include "engine/output/VdbFrame.h"
 #include "engine/simulation/Checkpoint.h"
-#include "engine/simulation/ReferenceSimulation.h"
-#include "engine/simulation/Simulation.h"
+#include "engine/reference/Simulation.h"
+#include "engine/device/Simulation.h"
 #include "precompute/Precompute.h"
 #include "precompute/geometry/FluidMask.h"
 #include "precompute/scene/SceneLoader.h"
@@ -101,9 +101,9 @@ Command addRun(CLI::App& app) {
         if (deviceOptions) {
             context = std::make_unique<vulkan::VulkanContext>(*deviceOptions);
             std::cerr << context->describe();
-            simulator = std::make_unique<Simulation>(*context, cache, *coefficients, settings, mask);
+            simulator = std::make_unique<device::Simulation>(*context, cache, *coefficients, settings, mask);
         } else {
-            simulator = std::make_unique<ReferenceSimulation>(cache, *coefficients, settings, mask);
+            simulator = std::make_unique<reference::Simulation>(cache, *coefficients, settings, mask);
         }
 
         int first = 0;

@@ -4,7 +4,7 @@
 #include "engine/display/Window.h"
 #include "engine/dynamics/CachedCoefficients.h"
 #include "engine/format/CacheFile.h"
-#include "engine/format/Error.h"
+#include "engine/core/Error.h"
 #include "engine/stir/StirApp.h"
 #include "precompute/Precompute.h"
 #include "precompute/geometry/FluidMask.h"
