@@ -50,7 +50,8 @@ std::vector<std::uint32_t> iterationGroups(const DeviceCoefficients& coefficient
 
 ModalStepper::ModalStepper(const vulkan::VulkanContext& context, const StructuralCoefficients& coefficients,
                            const FluidParameters& parameters, DeviceStepSettings settings)
-    : mSettings(checked(settings)),
+    : mContext(context),
+      mSettings(checked(settings)),
       mKernels(context),
       mCoefficients(context, coefficients),
       mApplyDispatches(std::uint32_t(mCoefficients.dispatchGroups().size())),
@@ -165,6 +166,15 @@ std::size_t ModalStepper::dispatchesPerStep() const {
         default:
             return 2 + std::size_t(mSettings.maxIterations) * iteration;
     }
+}
+
+StepReport ModalStepper::step(double h) {
+    if (!mStandalone) mStandalone = std::make_unique<vulkan::CommandSequence>(mContext);
+    setForce(Eigen::VectorXd::Zero(size()));
+    recordStep(*mStandalone, h);
+    mStandalone->submitAndWait();
+    const DeviceStepStatus status = this->status();
+    return StepReport{status.iterations, 0, status.residual, status.converged};
 }
 
 }  // namespace modeflow::device

@@ -16,12 +16,15 @@
 /// Strang-split as on the CPU. (The trapezoidal rule and MHD run on the CPU reference only.)
 
 #include <cstdint>
+#include <memory>
 
 #include <Eigen/Core>
 
 #include "engine/dynamics/FluidSystem.h"
+#include "engine/simulation/ModalStepping.h"
 #include "engine/device/DeviceCoefficients.h"
 #include "engine/device/ModalKernels.h"
+#include "engine/vulkan/CommandSequence.h"
 #include "engine/vulkan/DeviceBuffer.h"
 #include "engine/core/SceneSpec.h"
 
@@ -44,7 +47,7 @@ struct DeviceStepStatus {
     int unconvergedSteps = 0;  ///< steps so far that reached maxIterations
 };
 
-class ModalStepper {
+class ModalStepper final : public ModalStepping {
 public:
     /// The decay rates νκ² and mass 1 + α²κ² come from `parameters` as in FluidSystem. The
     /// coefficients are uploaded; `coefficients` need not outlive the stepper.
@@ -65,8 +68,8 @@ public:
     /// @throw modeflow::Error for parameters FluidSystem refuses.
     void setParameters(const FluidParameters& parameters);
     /// Host ↔ device copies of the state v and the force f; call between submissions.
-    void setState(const Eigen::VectorXd& v);
-    Eigen::VectorXd state() const;
+    void setState(const Eigen::VectorXd& v) override;
+    Eigen::VectorXd state() const override;
     void setForce(const Eigen::VectorXd& f);
     /// The device vectors (N floats), for kernels that read v or write f in the same submission.
     const vulkan::DeviceBuffer& stateBuffer() const { return mState; }
@@ -79,13 +82,19 @@ public:
     std::size_t dispatchesPerStep() const;
     /// The last step's convergence, read from the device after the submission.
     DeviceStepStatus status() const;
+    /// One unforced step of size h in a submission of its own (`modeflow modes`): the force
+    /// buffer is zeroed first. Iterations are fixed-point iterations.
+    StepReport step(double h) override;
 
 private:
     void recordUpdate(vulkan::CommandSequence& sequence, std::uint32_t op, std::uint32_t stage, double h,
                       bool indirect) const;
     void upload(vulkan::DeviceBuffer& buffer, const Eigen::VectorXd& values, const char* what) const;
 
+    const vulkan::VulkanContext& mContext;
     DeviceStepSettings mSettings;
+    /// The submission of standalone steps, made by the first step().
+    std::unique_ptr<vulkan::CommandSequence> mStandalone;
     ModalKernels mKernels;
     DeviceCoefficients mCoefficients;
     std::uint32_t mApplyDispatches = 0;  ///< dispatches of one contraction

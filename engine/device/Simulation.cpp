@@ -4,11 +4,19 @@
 #include <array>
 
 #include "engine/core/Error.h"
+#include "engine/simulation/BackendCapabilities.h"
 
 namespace modeflow::device {
 namespace {
 
 constexpr int kMaxSubsteps = 16;
+
+/// The device's row of the capability table, checked before any upload.
+SimulationSettings supported(SimulationSettings settings) {
+    if (settings.mhd && !capabilitiesOf(BackendKind::Vulkan).mhd)
+        throw Error("[simulation].mhd runs on the CPU reference only; use --device cpu");
+    return settings;
+}
 
 /// Dispatches one step may record, for the timestamp pool: the midpoint iterations dominate.
 std::uint32_t maxDispatchesPerStep(const ModalStepper& stepper) {
@@ -24,7 +32,7 @@ std::vector<double> widened(const std::vector<float>& values) {
 Simulation::Simulation(const vulkan::VulkanContext& context, const BasisCache& cache,
                        const StructuralCoefficients& coefficients, SimulationSettings settings,
                        std::span<const std::uint8_t> smokeMask, bool timestamps)
-    : mSettings(std::move(settings)),
+    : mSettings(supported(std::move(settings))),
       mStepper(context, coefficients, mSettings.fluid,
                DeviceStepSettings{mSettings.integrator}),
       mModes(context, cache.velocity.modes, mSettings.basisPrecision),
@@ -104,10 +112,6 @@ void Simulation::recordStep(std::vector<std::size_t>& boundaries) {
     boundaries.push_back(mSequence.dispatchCount());
     mAdvection.record(mSequence, mSmoke, mFaceVelocity, dt, mSettings.advection);
     boundaries.push_back(mSequence.dispatchCount());
-}
-
-FrameStats Simulation::advanceFrame() {
-    return advanceSteps(mSettings.stepsPerFrame);
 }
 
 FrameStats Simulation::advanceSteps(int steps) {

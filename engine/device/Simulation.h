@@ -32,8 +32,8 @@ public:
     /// Uploads the basis and coefficients. `smokeMask`: one byte per cell of the smoke grid
     /// (basis grid refined by settings.smokeScale), non-zero inside Ω (precompute's fluidMask).
     /// `timestamps`: time each stage on the device (FrameStats), where the queue can.
-    /// @throw modeflow::Error for settings the device does not run (trapezoidal), a mask of the
-    /// wrong size, or a device error.
+    /// @throw modeflow::Error for settings the device does not run (BackendCapabilities: MHD,
+    /// trapezoidal), a mask of the wrong size, or a device error.
     Simulation(const vulkan::VulkanContext& context, const BasisCache& cache,
                const StructuralCoefficients& coefficients, SimulationSettings settings,
                std::span<const std::uint8_t> smokeMask, bool timestamps = false);
@@ -42,25 +42,21 @@ public:
     Eigen::VectorXd velocity() const override { return mStepper.state(); }
     void restore(double time, const Eigen::VectorXd& v, const SmokeFields& smoke) override;
     void setSplats(std::span<const ForceSplat> splats) override;
-    FrameStats advanceFrame() override;
-    /// `steps` steps (advanceFrame() takes settings().stepsPerFrame), each its own submission.
-    FrameStats advanceSteps(int steps);
+    /// Each step is its own submission.
+    FrameStats advanceSteps(int steps) override;
     SmokeFields smoke() const override;
     std::vector<double> faceVelocity() const override;
     const SimulationSettings& settings() const override { return mSettings; }
     const MacGrid& smokeGrid() const override { return mSmoke.smokeGrid(); }
     double time() const override { return mTime; }
 
-    /// Interactive changes (`modeflow stir`), between frames: the obstacles of the following
-    /// steps, the viscosity ν, and the integrator (explicit, rk4 or midpoint).
-    /// @throw modeflow::Error for more than maxObstacles, a negative ν or the trapezoidal rule.
-    void setObstacles(std::vector<MovingObstacle> obstacles);
-    void setViscosity(double viscosity);
-    void setIntegrator(Integrator integrator);
-    /// Whether the following steps are timed (constructed with `timestamps`; on by default then):
-    /// timestamps cost lavapipe about as much as the step itself, so a window showing times a few
-    /// times a second times a sample (FrameStats::timedSteps).
-    void setTiming(bool on) { mSequence.setTiming(on); }
+    void setObstacles(std::vector<MovingObstacle> obstacles) override;
+    void setViscosity(double viscosity) override;
+    void setIntegrator(Integrator integrator) override;
+    /// Timestamps (constructed with `timestamps`; on by default then) cost lavapipe about as much
+    /// as the step itself, so a window showing times a few times a second times a sample
+    /// (FrameStats::timedSteps).
+    void setTiming(bool on) override { mSequence.setTiming(on); }
     /// The smoke and the grid velocity on the device, for kernels that draw them (valid between
     /// frames; the velocity is a face field of the basis grid).
     const SmokeState& smokeState() const { return mSmoke; }

@@ -219,15 +219,6 @@ Header parseHeader(std::string_view bytes, const std::filesystem::path& path) {
 
 }  // namespace
 
-std::uint64_t fnv1a64(std::string_view bytes, std::uint64_t seed) {
-    std::uint64_t h = seed;
-    for (unsigned char c : bytes) {
-        h ^= c;
-        h *= 0x100000001b3ull;
-    }
-    return h;
-}
-
 void writeCache(const std::filesystem::path& path, const BasisCache& cache) {
     const std::string payload = serialize(cache);
     Writer w;

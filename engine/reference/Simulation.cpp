@@ -1,72 +1,34 @@
 #include "engine/reference/Simulation.h"
 
 #include <algorithm>
+#include <string>
 
-#include "engine/dynamics/FluidSystem.h"
-#include "engine/dynamics/MhdSystem.h"
+#include "engine/core/Error.h"
 #include "engine/reference/ForceField.h"
 #include "engine/reference/ForceProjection.h"
 #include "engine/reference/ObstacleCorrection.h"
 #include "engine/reference/VelocityReconstruction.h"
-#include "engine/core/Error.h"
 
 namespace modeflow::reference {
-namespace {
 
-std::unique_ptr<ModalSystem> modalSystem(const StructuralCoefficients& coefficients,
-                                         const SimulationSettings& settings) {
-    if (!settings.mhd) return std::make_unique<FluidSystem>(coefficients, settings.fluid);
-    if (settings.fluid.alpha > 0.0)
-        throw Error("simulation: LANS-alpha and MHD cannot be combined");
-    return std::make_unique<MhdSystem>(
-        coefficients, MhdParameters{settings.fluid.kappaSquared, settings.fluid.viscosity,
-                                    settings.magneticDiffusivity});
-}
-
-std::string sizeMismatch(const char* what, Eigen::Index given, int modes) {
-    return std::string("simulation: ") + what + " of " + std::to_string(given) +
-           " modes, the basis has " + std::to_string(modes);
-}
-
-}  // namespace
-
-Simulation::Simulation(const BasisCache& cache,
-                                         const StructuralCoefficients& coefficients,
-                                         SimulationSettings settings,
-                                         std::vector<std::uint8_t> smokeMask)
+Simulation::Simulation(const BasisCache& cache, const StructuralCoefficients& coefficients,
+                       SimulationSettings settings, std::vector<std::uint8_t> smokeMask)
     : mCache(cache),
       mSettings(std::move(settings)),
-      mModes(coefficients.size()),
-      mSystem(modalSystem(coefficients, mSettings)),
-      mIntegrator(*mSystem, IntegratorSettings{mSettings.integrator}),
+      mStepper(coefficients, mSettings),
       mAdvection(MacGrid::fromSpec(cache.grid), mSettings.smokeScale, std::move(smokeMask)),
-      mState(Eigen::VectorXd::Zero(mSystem->dimension())),
       mFaceVelocity(std::size_t(MacGrid::fromSpec(cache.grid).faceTotal()), 0.0) {
     if (!(mSettings.dt > 0.0)) throw Error("simulation: dt must be positive");
     if (mSettings.stepsPerFrame < 1) throw Error("simulation: steps per frame must be at least 1");
+    setObstacles(mSettings.obstacles);
     const auto cells = std::size_t(mAdvection.smokeGrid().cellCount());
     mFields.density.assign(cells, 0.0);
     mFields.temperature.assign(cells, 0.0);
 }
 
-void Simulation::setVelocity(const Eigen::VectorXd& v) {
-    if (v.size() != mModes) throw Error(sizeMismatch("velocity", v.size(), mModes));
-    mState.head(mModes) = v;
-}
-
-Eigen::VectorXd Simulation::magneticField() const {
-    return mSettings.mhd ? Eigen::VectorXd(mState.tail(mModes)) : Eigen::VectorXd();
-}
-
-void Simulation::setMagneticField(const Eigen::VectorXd& f) {
-    if (!mSettings.mhd) Simulator::setMagneticField(f);
-    if (f.size() != mModes) throw Error(sizeMismatch("magnetic field", f.size(), mModes));
-    mState.tail(mModes) = f;
-}
-
 std::vector<double> Simulation::faceMagneticField() const {
     if (!mSettings.mhd) return {};
-    return reconstructFaceField(mCache, mState.tail(mModes));
+    return reconstructFaceField(mCache, mStepper.magneticField());
 }
 
 void Simulation::restore(double time, const Eigen::VectorXd& v, const SmokeFields& smoke) {
@@ -78,24 +40,41 @@ void Simulation::restore(double time, const Eigen::VectorXd& v, const SmokeField
     mTime = time;
 }
 
-FrameStats Simulation::advanceFrame() {
+void Simulation::setObstacles(std::vector<MovingObstacle> obstacles) {
+    if (obstacles.size() > std::size_t(maxObstacles))
+        throw Error("simulation: " + std::to_string(obstacles.size()) + " obstacles, at most " +
+                    std::to_string(maxObstacles) + " move at once");
+    mSettings.obstacles = std::move(obstacles);
+}
+
+void Simulation::setViscosity(double viscosity) {
+    mStepper.setViscosity(viscosity);
+    mSettings.fluid.viscosity = viscosity;
+}
+
+void Simulation::setIntegrator(Integrator integrator) {
+    mStepper.setScheme(integrator);
+    mSettings.integrator = integrator;
+}
+
+FrameStats Simulation::advanceSteps(int steps) {
     FrameStats stats;
     const double dt = mSettings.dt;
-    for (int s = 0; s < mSettings.stepsPerFrame; ++s) {
-        // Buoyancy and splats push the fluid; with MHD the field's half of the force stays 0.
-        Eigen::VectorXd force = Eigen::VectorXd::Zero(mState.size());
+    for (int s = 0; s < steps; ++s) {
+        // Buoyancy and splats push the fluid.
+        Eigen::VectorXd force = Eigen::VectorXd::Zero(mStepper.modeCount());
         if (mSettings.buoyancy != 0.0 || !mSplats.empty()) {
             const BuoyancyInput buoyancy{mSettings.buoyancy, mSettings.smokeScale,
                                          mFields.temperature, mAdvection.fluidMask()};
-            force.head(mModes) = projectForce(mCache, forceDensity(mCache, buoyancy, mSplats),
-                                              FaceQuantity::Density);
+            force = projectForce(mCache, forceDensity(mCache, buoyancy, mSplats), FaceQuantity::Density);
         }
-        const StepReport report = mIntegrator.step(mState, dt, force);
+        mStepper.setForce(force);
+        const StepReport report = mStepper.step(dt);
         stats.maxIterations = std::max(stats.maxIterations, report.iterations);
         stats.unconvergedSteps += report.converged ? 0 : 1;
         mFaceVelocity = reconstructFaceField(mCache, velocity());
         if (!mSettings.obstacles.empty()) {
-            mState.head(mModes) -= obstacleCorrection(mCache, mFaceVelocity, mSettings.obstacles, mTime + dt);
+            setVelocity(velocity() - obstacleCorrection(mCache, mFaceVelocity, mSettings.obstacles, mTime + dt));
             mFaceVelocity = reconstructFaceField(mCache, velocity());
         }
         mAdvection.step(std::span<const double>(mFaceVelocity), dt, mSettings.advection,

@@ -1,16 +1,15 @@
 #pragma once
 /// @file Simulation.h
-/// The CPU, double-precision run of the same chain as Simulation (forces from the smoke, modal
-/// step, reconstruction, advection), built from the CPU references of each kernel: what
-/// `--device cpu` runs and what the device is compared with. It also runs MHD (seed §6.3.5),
-/// which the device does not: the modal state is then [v; F] (MhdSystem), forces and moving
-/// obstacles act on v alone, and the smoke is carried by v.
+/// The whole step on the CPU, in double precision: forces from the smoke, the modal step,
+/// reconstruction, moving obstacles, advection — each stage this folder's reference of the
+/// device stage of the same name. What `--device cpu` runs and what device::Simulation is
+/// compared with. It also runs MHD (seed §6.3.5): the modal state is then [v; F] (MhdSystem),
+/// forces and moving obstacles act on v alone, and the smoke is carried by v.
 
 #include <cstdint>
-#include <memory>
 #include <vector>
 
-#include "engine/dynamics/ModalIntegrator.h"
+#include "engine/reference/ModalStepper.h"
 #include "engine/reference/SmokeAdvection.h"
 #include "engine/simulation/Simulator.h"
 
@@ -21,17 +20,20 @@ public:
     /// Keeps references to `cache` and `coefficients`, which must outlive it.
     /// @throw modeflow::Error for bad settings or a mask of the wrong size.
     Simulation(const BasisCache& cache, const StructuralCoefficients& coefficients,
-                        SimulationSettings settings, std::vector<std::uint8_t> smokeMask);
+               SimulationSettings settings, std::vector<std::uint8_t> smokeMask);
 
-    void setVelocity(const Eigen::VectorXd& v) override;
-    Eigen::VectorXd velocity() const override { return mState.head(mModes); }
+    void setVelocity(const Eigen::VectorXd& v) override { mStepper.setVelocity(v); }
+    Eigen::VectorXd velocity() const override { return mStepper.velocity(); }
     void restore(double time, const Eigen::VectorXd& v, const SmokeFields& smoke) override;
-    Eigen::VectorXd magneticField() const override;
-    void setMagneticField(const Eigen::VectorXd& f) override;
+    Eigen::VectorXd magneticField() const override { return mStepper.magneticField(); }
+    void setMagneticField(const Eigen::VectorXd& f) override { mStepper.setMagneticField(f); }
     void setSplats(std::span<const ForceSplat> splats) override {
         mSplats.assign(splats.begin(), splats.end());
     }
-    FrameStats advanceFrame() override;
+    void setObstacles(std::vector<MovingObstacle> obstacles) override;
+    void setViscosity(double viscosity) override;
+    void setIntegrator(Integrator integrator) override;
+    FrameStats advanceSteps(int steps) override;
     SmokeFields smoke() const override { return mFields; }
     std::vector<double> faceVelocity() const override { return mFaceVelocity; }
     std::vector<double> faceMagneticField() const override;
@@ -42,12 +44,9 @@ public:
 private:
     const BasisCache& mCache;
     SimulationSettings mSettings;
-    int mModes;
-    std::unique_ptr<ModalSystem> mSystem;  ///< FluidSystem over v, or MhdSystem over [v; F]
-    ModalIntegrator mIntegrator;
+    ModalStepper mStepper;
     SmokeAdvection mAdvection;
     std::vector<ForceSplat> mSplats;
-    Eigen::VectorXd mState;  ///< v, or [v; F] with MHD
     std::vector<double> mFaceVelocity;
     SmokeFields mFields;
     double mTime = 0.0;

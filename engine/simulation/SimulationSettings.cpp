@@ -6,15 +6,7 @@
 
 namespace modeflow {
 
-void requireRuntimeSupport(const SceneSpec& scene, Runtime runtime) {
-    if (runtime == Runtime::Device && scene.simulation.mhd)
-        throw Error(scene.sourceFile.string() +
-                    ": [simulation].mhd runs on the CPU reference only; use --device cpu");
-}
-
-SimulationSettings SimulationSettings::fromScene(const SceneSpec& scene, const BasisCache& cache,
-                                                 Runtime runtime) {
-    requireRuntimeSupport(scene, runtime);
+SimulationSettings SimulationSettings::fromScene(const SceneSpec& scene, const BasisCache& cache) {
     const SimulationSpec& sim = scene.simulation;
     if (scene.sources.size() > std::size_t(maxSmokeEmitters))
         throw Error(scene.sourceFile.string() + ": " + std::to_string(scene.sources.size()) +
@@ -39,6 +31,13 @@ SimulationSettings SimulationSettings::fromScene(const SceneSpec& scene, const B
                     " [[obstacle]] entries; the runtime takes at most " + std::to_string(maxObstacles));
     for (const ObstacleSpec& obstacle : scene.obstacles) settings.obstacles.push_back({obstacle});
     return settings;
+}
+
+bool SimulationSettings::simulatesTemperature() const {
+    if (buoyancy != 0.0) return true;
+    for (const SmokeEmitter& emitter : emitters)
+        if (emitter.temperatureRate != 0.0) return true;
+    return false;
 }
 
 }  // namespace modeflow

@@ -16,14 +16,6 @@
 
 namespace modeflow {
 
-/// Which implementation runs a scene: the Vulkan device::Simulation or the CPU reference::Simulation.
-enum class Runtime { Device, CpuReference };
-
-/// Refuses, before any work, scenes `runtime` does not simulate: MHD runs on the CPU reference
-/// only (the device kernels advance the velocity alone).
-/// @throw modeflow::Error naming [simulation].mhd and `--device cpu`.
-void requireRuntimeSupport(const SceneSpec& scene, Runtime runtime);
-
 struct SimulationSettings {
     double dt = 0.02;
     int stepsPerFrame = 1;
@@ -40,12 +32,14 @@ struct SimulationSettings {
     std::vector<SmokeEmitter> emitters;
     std::vector<MovingObstacle> obstacles;
 
-    /// The scene's [simulation], [smoke], [[source]] and [output] values on this basis, for
-    /// `runtime`.
-    /// @throw modeflow::Error for scenes `runtime` does not simulate (requireRuntimeSupport), or
-    /// more emitters or obstacles than the runtime takes.
-    static SimulationSettings fromScene(const SceneSpec& scene, const BasisCache& cache,
-                                        Runtime runtime = Runtime::Device);
+    /// Whether the run simulates temperature: a source heats, or buoyancy reads it. Frames then
+    /// carry a temperature grid and pictures tint hot smoke.
+    bool simulatesTemperature() const;
+
+    /// The scene's [simulation], [smoke], [[source]] and [output] values on this basis. Whether a
+    /// backend runs them is BackendCapabilities' question, asked before any work.
+    /// @throw modeflow::Error for more emitters or obstacles than the runtime takes.
+    static SimulationSettings fromScene(const SceneSpec& scene, const BasisCache& cache);
 };
 
 }  // namespace modeflow

@@ -25,6 +25,7 @@
 #include "engine/reference/VelocityReconstruction.h"
 #include "engine/core/Error.h"
 #include "engine/reference/Simulation.h"
+#include "engine/simulation/BackendCapabilities.h"
 #include "precompute/Precompute.h"
 #include "precompute/geometry/FluidMask.h"
 #include "tests/engine/RandomCoefficients.h"
@@ -250,7 +251,7 @@ TEST(MhdSimulation, ReferenceRunKeepsEnergyAndCrossHelicity) {
     const MhdDisk& disk = mhdDisk();
     const int n = disk.coefficients->size();
     const SimulationSettings settings =
-        SimulationSettings::fromScene(disk.scene, disk.cache, Runtime::CpuReference);
+        SimulationSettings::fromScene(disk.scene, disk.cache);
     ASSERT_TRUE(settings.mhd);
     reference::Simulation simulation(disk.cache, *disk.coefficients, settings, disk.mask);
     const Eigen::VectorXd v = randomVector(n, 601), f = 0.7 * randomVector(n, 602);
@@ -274,13 +275,13 @@ TEST(MhdSimulation, ReferenceRunKeepsEnergyAndCrossHelicity) {
 TEST(MhdSimulation, TheDeviceAndPlainFluidRunsRefuseAField) {
     const MhdDisk& disk = mhdDisk();
     try {
-        SimulationSettings::fromScene(disk.scene, disk.cache);
+        requireSupport(disk.scene, BackendKind::Vulkan);
         ADD_FAILURE() << "the device runtime accepted an MHD scene";
     } catch (const Error& e) {
         EXPECT_NE(std::string(e.what()).find("[simulation].mhd"), std::string::npos) << e.what();
         EXPECT_NE(std::string(e.what()).find("--device cpu"), std::string::npos) << e.what();
     }
-    SimulationSettings fluid = SimulationSettings::fromScene(disk.scene, disk.cache, Runtime::CpuReference);
+    SimulationSettings fluid = SimulationSettings::fromScene(disk.scene, disk.cache);
     fluid.mhd = false;
     reference::Simulation simulation(disk.cache, *disk.coefficients, fluid, disk.mask);
     EXPECT_EQ(simulation.magneticField().size(), 0);

@@ -8,7 +8,7 @@
 #include "engine/format/BasisCache.h"
 #include "engine/core/SceneSpec.h"
 
-namespace modeflow::cli {
+namespace modeflow {
 
 /// The scene's [initial] velocity as a modal state on this basis. Mode numbers in the scene are
 /// 1-based positions in the basis; the engine takes 0-based ones.
@@ -20,4 +20,4 @@ Eigen::VectorXd initialVelocity(const SceneSpec& scene, const BasisCache& cache,
 /// @throw modeflow::Error naming [initial].magnetic when the field cannot be built.
 Eigen::VectorXd initialMagneticField(const SceneSpec& scene, const BasisCache& cache, int modes);
 
-}  // namespace modeflow::cli
+}  // namespace modeflow

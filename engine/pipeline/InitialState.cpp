@@ -1,4 +1,4 @@
-#include "tools/modeflow/InitialState.h"
+#include "engine/pipeline/InitialState.h"
 
 #include <string>
 #include <utility>
@@ -9,7 +9,7 @@
 #include "precompute/initial/UniformField.h"
 #include "precompute/initial/VortexProjection.h"
 
-namespace modeflow::cli {
+namespace modeflow {
 
 Eigen::VectorXd initialVelocity(const SceneSpec& scene, const BasisCache& cache, int modes) {
     const InitialSpec& init = scene.initial;
@@ -70,4 +70,4 @@ Eigen::VectorXd initialMagneticField(const SceneSpec& scene, const BasisCache& c
     }
 }
 
-}  // namespace modeflow::cli
+}  // namespace modeflow
