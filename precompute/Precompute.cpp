@@ -9,9 +9,9 @@
 #include <unistd.h>
 
 #include "engine/format/CacheFile.h"
-#include "engine/format/WritableDirectory.h"
-#include "engine/format/Error.h"
-#include "engine/dynamics/PackedLayout.h"
+#include "engine/core/WritableDirectory.h"
+#include "engine/core/Error.h"
+#include "engine/core/PackedLayout.h"
 #include "precompute/coefficients/CoefficientAssembly.h"
 #include "precompute/dec/CubicalComplex.h"
 #include "precompute/dec/CutCellDec.h"
@@ -231,10 +231,11 @@ CacheOutcome ensureCache(const SceneSpec& scene, const std::filesystem::path& ca
     ensureWritableDirectory(cacheDir, "cache directory", "; choose another with --cache-dir or MODEFLOW_CACHE_DIR");
 
     const std::string key = basisKey(scene);
-    CacheOutcome outcome{cachePath(key, cacheDir), false};
+    CacheOutcome outcome{cachePath(key, cacheDir), false, {}};
     if (!force && std::filesystem::exists(outcome.path)) {
         try {
-            if (readCache(outcome.path).key == key) {
+            outcome.cache = readCache(outcome.path);
+            if (outcome.cache.key == key) {
                 outcome.reused = true;
                 return outcome;
             }
@@ -243,9 +244,9 @@ CacheOutcome ensureCache(const SceneSpec& scene, const std::filesystem::path& ca
             progress.note(std::string(e.what()) + "; rebuilding");
         }
     }
-    BasisCache cache = computeBasis(scene, key, progress);
+    outcome.cache = computeBasis(scene, key, progress);
     progress.begin("write cache");
-    writeCache(outcome.path, cache);
+    writeCache(outcome.path, outcome.cache);
     progress.end();
     return outcome;
 }

@@ -8,7 +8,7 @@
 
 #include "engine/format/BasisCache.h"
 #include "precompute/Progress.h"
-#include "precompute/scene/SceneSpec.h"
+#include "engine/core/SceneSpec.h"
 
 namespace modeflow {
 
@@ -26,6 +26,7 @@ BasisCache computeBasis(const SceneSpec& scene, Progress& progress);
 struct CacheOutcome {
     std::filesystem::path path;
     bool reused = false;  ///< a valid cache with the same key was already there
+    BasisCache cache;     ///< its content (read to check it, or just computed)
 };
 
 /// Returns the scene's cache, computing and writing it on a miss, or always when `force`.

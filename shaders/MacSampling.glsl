@@ -1,5 +1,5 @@
 /* MacSampling.glsl: trilinear MAC (staggered) sampling of a face field, float32, the device twin
-   of engine/field/MacSampling.cpp (same clamps, same corner order, same weight products). Points
+   of engine/core/MacSampling.cpp (same clamps, same corner order, same weight products). Points
    are in grid units of the sampled grid: cell (i, j, k) spans [i, i+1) x [j, j+1) x [k, k+1).
 
    The includer defines MAC_DIM (2 or 3: the axes sampled; a 2D grid has one cell along z) and

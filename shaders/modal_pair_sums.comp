@@ -8,7 +8,7 @@
 // C[j][i][k] = -C[k][i][j]. Each coefficient is read exactly once per contraction: the kernel is a
 // GEMV over the (pairs x N) matrix of the chunk, and bandwidth-bound.
 //
-// Layout (engine/kernels/DeviceCoefficients): each row cut into rowOctets octets of 8 floats
+// Layout (engine/device/DeviceCoefficients): each row cut into rowOctets octets of 8 floats
 // (zero-padded), the rows in tiles of PAIR_TILE_ROWS (the chunk zero-padded to whole tiles). A tile
 // stores octet 0 of its rows, then octet 1 of them, and so on: octet q of row j of tile t is element
 // (t rowOctets + q) PAIR_TILE_ROWS + j. Each batch of PAIR_TILE_LANES invocations sums one tile,

@@ -5,8 +5,8 @@
 
 #include "shaders/display_picture.spv.h"
 #include "shaders/display_smoke_2d.spv.h"
-#include "engine/format/Error.h"
-#include "engine/kernels/SmokeState.h"
+#include "engine/core/Error.h"
+#include "engine/device/SmokeState.h"
 #include "engine/vulkan/VulkanContext.h"
 #include "shaders/DisplayParams.h"
 
@@ -59,7 +59,7 @@ DisplayKernels::DisplayKernels(const vulkan::VulkanContext& context)
       mSmoke2D(context, {"display_smoke_2d", display_smoke_2d_spv, 5, sizeof(shaders::DisplayParams)}),
       mPicture(context, {"display_picture", display_picture_spv, 3, sizeof(shaders::DisplayParams)}) {}
 
-void DisplayKernels::recordSmoke2D(vulkan::CommandSequence& sequence, const vulkan::SmokeState& smoke,
+void DisplayKernels::recordSmoke2D(vulkan::CommandSequence& sequence, const device::SmokeState& smoke,
                                    const vulkan::DeviceBuffer& faceVelocity, const Smoke2DLook& look,
                                    const vulkan::DeviceBuffer& overlay, const DisplayTarget& target,
                                    const vulkan::DeviceBuffer& pixels) const {

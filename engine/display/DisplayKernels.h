@@ -11,7 +11,7 @@
 #include "engine/vulkan/ComputeKernel.h"
 #include "engine/vulkan/DeviceBuffer.h"
 
-namespace modeflow::vulkan {
+namespace modeflow::device {
 class SmokeState;
 }
 
@@ -53,7 +53,7 @@ public:
     /// Records the picture of the 2D `smoke` into `pixels`; the arrows show `faceVelocity`, a
     /// face field of the smoke's basis grid (Simulation::faceVelocityBuffer()).
     /// @throw modeflow::Error when the smoke grid is not 2D or a buffer is too small.
-    void recordSmoke2D(vulkan::CommandSequence& sequence, const vulkan::SmokeState& smoke,
+    void recordSmoke2D(vulkan::CommandSequence& sequence, const device::SmokeState& smoke,
                        const vulkan::DeviceBuffer& faceVelocity, const Smoke2DLook& look,
                        const vulkan::DeviceBuffer& overlay, const DisplayTarget& target,
                        const vulkan::DeviceBuffer& pixels) const;

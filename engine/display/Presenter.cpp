@@ -1,6 +1,6 @@
 #include "engine/display/Presenter.h"
 
-#include "engine/format/Error.h"
+#include "engine/core/Error.h"
 #include "engine/vulkan/DeviceBuffer.h"
 #include "engine/vulkan/SyncObjects.h"
 #include "engine/vulkan/VulkanContext.h"

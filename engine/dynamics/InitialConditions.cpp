@@ -6,7 +6,7 @@
 #include <random>
 #include <string>
 
-#include "engine/format/Error.h"
+#include "engine/core/Error.h"
 
 namespace modeflow {
 namespace {

@@ -10,7 +10,7 @@
 
 #include <Eigen/Core>
 
-#include "precompute/scene/SceneSpec.h"
+#include "engine/core/SceneSpec.h"
 
 namespace modeflow {
 
@@ -51,7 +51,7 @@ struct BasisCache {
     struct Coefficients {
         enum class Storage { Dense, Sparse };
         Storage storage = Storage::Dense;
-        /// Dense: packed as in engine/dynamics/PackedLayout.h (pair (k,j) by pair, i fastest).
+        /// Dense: packed as in engine/core/PackedLayout.h (pair (k,j) by pair, i fastest).
         std::vector<double> packed;
         /// Sparse: the entries kept, as parallel arrays (k < j).
         std::vector<std::int32_t> k, i, j;

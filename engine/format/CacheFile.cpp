@@ -6,7 +6,7 @@
 
 #include <unistd.h>
 
-#include "engine/format/Error.h"
+#include "engine/core/Error.h"
 
 static_assert(__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__, "the cache format is little-endian");
 
@@ -218,15 +218,6 @@ Header parseHeader(std::string_view bytes, const std::filesystem::path& path) {
 }
 
 }  // namespace
-
-std::uint64_t fnv1a64(std::string_view bytes, std::uint64_t seed) {
-    std::uint64_t h = seed;
-    for (unsigned char c : bytes) {
-        h ^= c;
-        h *= 0x100000001b3ull;
-    }
-    return h;
-}
 
 void writeCache(const std::filesystem::path& path, const BasisCache& cache) {
     const std::string payload = serialize(cache);

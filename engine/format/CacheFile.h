@@ -10,14 +10,12 @@
 #include <filesystem>
 #include <string_view>
 
+#include "engine/core/BinaryCodec.h"
 #include "engine/format/BasisCache.h"
 
 namespace modeflow {
 
 inline constexpr std::uint32_t kCacheFormatVersion = 2;
-
-/// 64-bit FNV-1a; stable across platforms and runs (it names cache files).
-std::uint64_t fnv1a64(std::string_view bytes, std::uint64_t seed = 0xcbf29ce484222325ull);
 
 /// Writes to a temporary file beside `path`, flushes it, then renames it over `path`, so
 /// readers see the old file or the whole new one.

@@ -40,7 +40,7 @@
 #include <variant>
 #include <vector>
 
-#include "engine/field/MacGrid.h"
+#include "engine/core/MacGrid.h"
 
 namespace modeflow {
 

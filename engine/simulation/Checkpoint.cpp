@@ -8,7 +8,7 @@
 #include <unistd.h>
 
 #include "engine/format/CacheFile.h"
-#include "engine/format/Error.h"
+#include "engine/core/Error.h"
 
 namespace modeflow {
 namespace {

@@ -3,7 +3,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "engine/format/Error.h"
+#include "engine/core/Error.h"
 #include "engine/stir/StirKeys.h"
 
 namespace modeflow::stir {

@@ -12,7 +12,8 @@
 #include "engine/display/Presenter.h"
 #include "engine/display/TextOverlay.h"
 #include "engine/display/Window.h"
-#include "engine/format/Error.h"
+#include "engine/device/Simulation.h"
+#include "engine/core/Error.h"
 #include "engine/preview/PngWriter.h"
 #include "engine/preview/VolumeRenderer.h"
 #include "engine/stir/RealTimeClock.h"
@@ -38,12 +39,6 @@ constexpr float kOpticalDepth = 6.0f;
 
 double seconds(Clock::duration d) {
     return std::chrono::duration<double>(d).count();
-}
-
-bool simulatesHeat(const SceneSpec& scene) {
-    for (const SourceSpec& source : scene.sources)
-        if (source.temperature != 0.0) return true;
-    return false;
 }
 
 /// Device time per stage, summed over the timed steps between two refreshes of the statistics.
@@ -77,16 +72,14 @@ struct StageTimes {
 /// One run of the window: everything the frame loop keeps between frames.
 class StirWindow {
 public:
-    StirWindow(const StirOptions& options, const SceneSpec& scene, const BasisCache& cache,
-               std::unique_ptr<StructuralCoefficients> coefficients, std::vector<std::uint8_t> mask,
-               const Eigen::VectorXd& initialVelocity)
+    StirWindow(const StirOptions& options, const RunInputs& run)
         : mOptions(options),
-          mScene(scene),
+          mScene(run.scene),
           mWindow(options.width.value_or(kWindowWidth), options.height.value_or(kWindowHeight),
-                  "modeflow stir: " + scene.name),
-          mContext(contextOptions(options.device, mWindow)),
-          mSession(mContext, scene, cache, std::move(coefficients),
-                   mask, initialVelocity, options.stir),
+                  "modeflow stir: " + run.scene.name),
+          mContext(contextOptions(options.backend.vulkan, mWindow)),
+          mBackend(options.backend.kind, mContext),
+          mSession(mBackend, run, options.stir),
           mView(mSession.simulation().smokeGrid()),
           mPresenter(mContext, mWindow.framebufferSize()),
           mKernels(mContext),
@@ -99,7 +92,7 @@ public:
             mWindow.resize(kCpuWindowWidth, kCpuWindowHeight);  // the first frames follow it
         if (mView.grid().dim == 3)
             mRenderer = std::make_unique<preview::VolumeRenderer>(
-                mContext, mView.grid(), mask, StirView::kPictureWidth, StirView::kPictureHeight);
+                mContext, mView.grid(), run.smokeMask, StirView::kPictureWidth, StirView::kPictureHeight);
     }
 
     StirReport run(std::ostream& log);
@@ -127,6 +120,7 @@ private:
     const SceneSpec& mScene;
     display::Window mWindow;
     vulkan::VulkanContext mContext;
+    Backend mBackend;
     StirSession mSession;
     StirView mView;
     display::Presenter mPresenter;
@@ -274,7 +268,9 @@ bool StirWindow::draw() {
     const int scale = height >= 600 ? 2 : 1;
     mOverlay.update(width, height, overlayText(scale), scale);
     display::DisplayTarget target{width, height, mView.viewport(width, height), mPresenter.blueFirst()};
-    const vulkan::SmokeState& smoke = mSession.simulation().smokeState();
+    const auto* simulation = dynamic_cast<const device::Simulation*>(&mSession.simulation());
+    if (!simulation) throw Error("the stir window draws a simulation on its Vulkan device only");
+    const device::SmokeState& smoke = simulation->smokeState();
     if (mRenderer) {
         mRenderer->record(mSequence, smoke.fields(), kOpticalDepth, 2, mView.camera());
         mKernels.recordPicture(mSequence, mRenderer->pictureBuffer(), mRenderer->width(),
@@ -282,7 +278,7 @@ bool StirWindow::draw() {
                                *mPixels);
     } else {
         display::Smoke2DLook look;
-        look.hotScale = simulatesHeat(mScene) ? 1.0f : 0.0f;
+        look.hotScale = mSession.settings().simulatesTemperature() ? 1.0f : 0.0f;
         look.paddle = paddleOverlay();
         look.arrows = mArrows;
         if (mArrows) {
@@ -293,8 +289,7 @@ bool StirWindow::draw() {
             look.arrowSpacing = float(std::max(16, target.viewport.width / 24));
             look.arrowScale = float(0.5 * look.arrowSpacing / std::max(rms, 1e-6));
         }
-        const Simulation& simulation = mSession.simulation();
-        mKernels.recordSmoke2D(mSequence, smoke, simulation.faceVelocityBuffer(), look,
+        mKernels.recordSmoke2D(mSequence, smoke, simulation->faceVelocityBuffer(), look,
                                mOverlay.buffer(), target, *mPixels);
     }
     mSequence.submitAndWait();
@@ -414,12 +409,8 @@ StirReport StirWindow::run(std::ostream& log) {
 
 }  // namespace
 
-StirReport runStir(const StirOptions& options, const SceneSpec& scene, const BasisCache& cache,
-                   std::unique_ptr<StructuralCoefficients> coefficients,
-                   std::vector<std::uint8_t> mask, const Eigen::VectorXd& initialVelocity,
-                   std::ostream& log) {
-    StirWindow window(options, scene, cache, std::move(coefficients), std::move(mask),
-                      initialVelocity);
+StirReport runStir(const StirOptions& options, const RunInputs& run, std::ostream& log) {
+    StirWindow window(options, run);
     return window.run(log);
 }
 

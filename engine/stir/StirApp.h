@@ -17,13 +17,12 @@
 
 #include <Eigen/Core>
 
-#include "engine/dynamics/StructuralCoefficients.h"
-#include "engine/field/SmokeAdvection.h"
-#include "engine/format/BasisCache.h"
+#include "engine/pipeline/Backend.h"
+#include "engine/pipeline/RunInputs.h"
+#include "engine/simulation/SmokeFields.h"
 #include "engine/stir/InputScript.h"
 #include "engine/stir/StirSession.h"
 #include "engine/vulkan/VulkanContext.h"
-#include "precompute/scene/SceneSpec.h"
 
 namespace modeflow::stir {
 
@@ -36,7 +35,9 @@ struct StirOptions {
     std::filesystem::path screenshotFolder = ".";     ///< where the screenshot key writes
     std::vector<TimedEvent> script;                   ///< events to replay
     bool statistics = true;                           ///< the statistics over the picture
-    vulkan::VulkanContextOptions device;
+    /// The backend that simulates; the window presents on its Vulkan device (the first suitable
+    /// one for the CPU reference).
+    BackendChoice backend;
     StirSettings stir;
 };
 
@@ -59,9 +60,6 @@ struct StirReport {
 /// the device report and a summary line.
 /// @throw modeflow::Error without a display (with how to run headless), for a device that
 ///        cannot present, or when anything below fails.
-StirReport runStir(const StirOptions& options, const SceneSpec& scene, const BasisCache& cache,
-                   std::unique_ptr<StructuralCoefficients> coefficients,
-                   std::vector<std::uint8_t> mask, const Eigen::VectorXd& initialVelocity,
-                   std::ostream& log);
+StirReport runStir(const StirOptions& options, const RunInputs& run, std::ostream& log);
 
 }  // namespace modeflow::stir

@@ -13,7 +13,7 @@
 
 #include <Eigen/SparseCore>
 
-#include "precompute/scene/SceneSpec.h"
+#include "engine/core/SceneSpec.h"
 
 namespace modeflow {
 

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "precompute/geometry/ImplicitShape.h"
-#include "precompute/scene/SceneSpec.h"
+#include "engine/core/SceneSpec.h"
 
 namespace modeflow {
 

@@ -18,4 +18,8 @@ namespace modeflow {
 /// @throw modeflow::Error when a domain shape cannot be built (e.g. a missing mesh file).
 std::vector<std::uint8_t> fluidMask(const SceneSpec& scene, const BasisCache& cache, int scale);
 
+/// Whether fluidMask builds the domain (a finer smoke grid in a domain other than the whole
+/// box); otherwise it reads the cache's cell fractions alone.
+bool fluidMaskNeedsDomain(const SceneSpec& scene, int scale);
+
 }  // namespace modeflow

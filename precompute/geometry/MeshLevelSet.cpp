@@ -20,8 +20,8 @@
 #include <unordered_map>
 #include <vector>
 
-#include "engine/format/Error.h"
-#include "engine/format/FileKind.h"
+#include "engine/core/Error.h"
+#include "engine/core/FileKind.h"
 #include "precompute/geometry/ObjLineCheck.h"
 
 namespace modeflow {

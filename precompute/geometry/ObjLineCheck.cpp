@@ -12,8 +12,8 @@
 #include <string_view>
 #include <vector>
 
-#include "engine/format/Error.h"
-#include "engine/format/PrintableText.h"
+#include "engine/core/Error.h"
+#include "engine/core/PrintableText.h"
 
 namespace modeflow {
 namespace {

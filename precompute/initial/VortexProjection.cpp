@@ -5,7 +5,7 @@
 #include <numbers>
 #include <string>
 
-#include "engine/format/Error.h"
+#include "engine/core/Error.h"
 #include "precompute/dec/CubicalComplex.h"
 #include "precompute/dec/CutCellDec.h"
 

@@ -2,7 +2,7 @@
 /// `[basis]`: which velocity modes (a count or a mode list), scalar modes and how the boundary is
 /// treated.
 
-#include "engine/format/PrintableText.h"
+#include "engine/core/PrintableText.h"
 #include "precompute/scene/ModeList.h"
 #include "precompute/scene/SceneSections.h"
 

@@ -5,7 +5,7 @@
 #include <cctype>
 #include <charconv>
 
-#include "engine/format/PrintableText.h"
+#include "engine/core/PrintableText.h"
 #include "precompute/scene/SceneLoader.h"
 
 namespace modeflow {

@@ -10,9 +10,9 @@
 #include <fstream>
 #include <string>
 
-#include "engine/field/RuntimeLimits.h"
-#include "engine/format/FileKind.h"
-#include "engine/format/PrintableText.h"
+#include "engine/core/FileKind.h"
+#include "engine/core/PrintableText.h"
+#include "engine/core/RuntimeLimits.h"
 #include "precompute/scene/SceneSections.h"
 #include "precompute/scene/SceneValidation.h"
 #include "precompute/scene/TomlReader.h"

@@ -9,8 +9,8 @@
 #include <string_view>
 #include <vector>
 
-#include "engine/format/Error.h"
-#include "precompute/scene/SceneSpec.h"
+#include "engine/core/Error.h"
+#include "engine/core/SceneSpec.h"
 
 namespace modeflow {
 

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "engine/format/PrintableText.h"
+#include "engine/core/PrintableText.h"
 #include "precompute/scene/SceneLoader.h"
 #include "precompute/scene/SceneWording.h"
 

@@ -8,7 +8,7 @@
 #include <string_view>
 #include <utility>
 
-#include "precompute/scene/SceneSpec.h"
+#include "engine/core/SceneSpec.h"
 
 namespace modeflow::scene {
 

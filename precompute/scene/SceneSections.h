@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "precompute/scene/SceneSpec.h"
+#include "engine/core/SceneSpec.h"
 #include "precompute/scene/TomlReader.h"
 
 namespace modeflow::scene {

@@ -2,10 +2,10 @@
 /// @file SceneValidation.h
 /// Internal to precompute/scene: the checks that involve more than one table (a basis that fits
 /// the grid, initial modes inside the basis, 2D/3D consistency, ...) or the runtime's limits
-/// (engine/field/RuntimeLimits.h). Each is called as soon as the tables it needs are read, so a
+/// (engine/core/RuntimeLimits.h). Each is called as soon as the tables it needs are read, so a
 /// file's first mistake is the one reported.
 
-#include "precompute/scene/SceneSpec.h"
+#include "engine/core/SceneSpec.h"
 #include "precompute/scene/TomlReader.h"
 
 namespace modeflow::scene {

@@ -7,8 +7,8 @@
 #include <iterator>
 #include <system_error>
 
-#include "engine/format/FileKind.h"
-#include "engine/format/PrintableText.h"
+#include "engine/core/FileKind.h"
+#include "engine/core/PrintableText.h"
 #include "precompute/scene/SceneSections.h"
 #include "precompute/scene/SceneValidation.h"
 

@@ -6,8 +6,8 @@
 #include <cmath>
 #include <utility>
 
-#include "engine/format/Error.h"
-#include "engine/format/PrintableText.h"
+#include "engine/core/Error.h"
+#include "engine/core/PrintableText.h"
 #include "precompute/scene/SceneLoader.h"
 
 namespace modeflow::scene {

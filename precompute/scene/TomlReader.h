@@ -15,9 +15,9 @@
 
 #include <toml++/toml.h>
 
-#include "engine/format/PrintableText.h"
+#include "engine/core/PrintableText.h"
+#include "engine/core/SceneSpec.h"
 #include "precompute/scene/SceneSchema.h"
-#include "precompute/scene/SceneSpec.h"
 #include "precompute/scene/SceneWording.h"
 
 namespace modeflow::scene {

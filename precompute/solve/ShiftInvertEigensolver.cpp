@@ -6,7 +6,7 @@
 #include <Eigen/CholmodSupport>
 #include <Spectra/SymEigsShiftSolver.h>
 
-#include "engine/format/Error.h"
+#include "engine/core/Error.h"
 
 namespace modeflow {
 namespace {

@@ -7,7 +7,7 @@
 #include <Eigen/Eigenvalues>
 #include <Eigen/SparseCholesky>
 
-#include "engine/format/Error.h"
+#include "engine/core/Error.h"
 #include "precompute/solve/Laplacians.h"
 
 namespace modeflow {

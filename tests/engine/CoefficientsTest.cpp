@@ -10,9 +10,9 @@
 #include <Eigen/Core>
 
 #include "engine/dynamics/DenseCoefficients.h"
-#include "engine/dynamics/PackedLayout.h"
+#include "engine/core/PackedLayout.h"
 #include "engine/dynamics/SparseCoefficients.h"
-#include "engine/format/Error.h"
+#include "engine/core/Error.h"
 #include "tests/engine/RandomCoefficients.h"
 
 namespace modeflow {

@@ -14,7 +14,7 @@
 #include "engine/dynamics/FluidSystem.h"
 #include "engine/dynamics/ModalIntegrator.h"
 #include "precompute/scene/SceneLoader.h"
-#include "engine/format/Error.h"
+#include "engine/core/Error.h"
 #include "tests/engine/RandomCoefficients.h"
 
 namespace modeflow {

@@ -1,6 +1,6 @@
 /// @file ForceProjectionKernelTest.cpp
 /// shaders/force_field.comp (ForceFieldKernel) and project_force(_sum).comp
-/// (ForceProjectionKernel) against the CPU references engine/field/ForceField and
+/// (ForceProjectionKernel) against the CPU references engine/reference/ForceField and
 /// ForceProjection: buoyancy and splats, projections in float32 and float16, split mode
 /// buffers, the orthonormality round trip through the reconstruction kernel, and kernel times.
 
@@ -13,12 +13,12 @@
 
 #include <gtest/gtest.h>
 
-#include "engine/field/ForceField.h"
-#include "engine/field/ForceProjection.h"
-#include "engine/kernels/ForceField.h"
-#include "engine/kernels/ForceProjection.h"
-#include "engine/kernels/ModeBuffer.h"
-#include "engine/kernels/VelocityReconstruction.h"
+#include "engine/reference/ForceField.h"
+#include "engine/reference/ForceProjection.h"
+#include "engine/device/ForceField.h"
+#include "engine/device/ForceProjection.h"
+#include "engine/device/ModeBuffer.h"
+#include "engine/device/VelocityReconstruction.h"
 #include "engine/vulkan/CommandSequence.h"
 #include "engine/vulkan/DeviceBuffer.h"
 #include "tests/engine/KernelTestSupport.h"
@@ -30,12 +30,11 @@ namespace {
 
 using vulkan::CommandSequence;
 using vulkan::DeviceBuffer;
-using vulkan::ForceFieldKernel;
-using vulkan::ForceProjectionKernel;
-using vulkan::ForceProjectionOptions;
-using vulkan::ModeBuffer;
-using vulkan::ModePrecision;
-using vulkan::ReconstructionKernel;
+using device::ForceFieldKernel;
+using device::ForceProjectionKernel;
+using device::ForceProjectionOptions;
+using device::ModeBuffer;
+using device::ReconstructionKernel;
 
 const std::vector<ForceSplat>& splats() {
     static const std::vector<ForceSplat> all{{{0.2, -0.3, 0.1}, {1.5, -0.5, 2.0}, 0.3},
@@ -117,9 +116,9 @@ TEST_P(ForceProjectionKernelTest, ForceFieldEqualsTheCpuReference) {
                 const Smoke smoke = randomSmoke(*cache, scale, 3 + scale);
                 const Eigen::VectorXd device = forceFieldOnDevice(context(), *cache, scale, 1.7, smoke, useMask);
                 ASSERT_FALSE(device.hasNaN()) << "a DOF was never written";
-                const BuoyancyInput input{1.7, scale, smoke.temperature,
+                const reference::BuoyancyInput input{1.7, scale, smoke.temperature,
                                           useMask ? std::span<const std::uint8_t>(smoke.mask) : std::span<const std::uint8_t>()};
-                const Eigen::VectorXd reference = forceDensity(*cache, input, splats());
+                const Eigen::VectorXd reference = reference::forceDensity(*cache, input, splats());
                 EXPECT_LE(testing::relativeError(device, reference), 1e-5)
                     << cache->grid.dim << "D, scale " << scale << ", mask " << useMask;
             }
@@ -129,7 +128,7 @@ TEST_P(ForceProjectionKernelTest, ProjectionEqualsTheCpuReference) {
     const BasisCache synthetic = testing::syntheticBasis(testing::boxGrid(3, 7), 13, 4);
     for (const BasisCache* cache : {&testing::disk2d(), &testing::ball3d(), &synthetic}) {
         const Eigen::VectorXd g = testing::normalVector(Eigen::Index(cache->faces.size()), 5);
-        const Eigen::VectorXd exact = projectForce(*cache, g, FaceQuantity::Density);
+        const Eigen::VectorXd exact = reference::projectForce(*cache, g, FaceQuantity::Density);
         for (const ModePrecision precision : {ModePrecision::Float32, ModePrecision::Float16}) {
             const Eigen::VectorXd device = projectOnDevice(context(), *cache, g, FaceQuantity::Density, precision);
             ASSERT_FALSE(device.hasNaN());
@@ -292,7 +291,7 @@ TEST_P(ForceProjectionKernelTest, TimesTheChainAtNEquals100) {
             std::cout << "  " << names[k] << ": " << times[1] << " ms\n";
         }
         const Eigen::VectorXd reference = projectOnRounded(
-            cache, forceDensity(cache, {1.0, 2, smoke.temperature, {}}, splats()), precision);
+            cache, reference::forceDensity(cache, {1.0, 2, smoke.temperature, {}}, splats()), precision);
         EXPECT_LE(testing::relativeError(testing::downloadFloats(f, 100), reference), 1e-4);
     }
 }

@@ -7,7 +7,7 @@
 
 #include "engine/dynamics/Diagnostics.h"
 #include "engine/dynamics/InitialConditions.h"
-#include "engine/format/Error.h"
+#include "engine/core/Error.h"
 
 namespace modeflow {
 namespace {

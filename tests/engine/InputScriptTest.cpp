@@ -6,7 +6,7 @@
 
 #include <algorithm>
 
-#include "engine/format/Error.h"
+#include "engine/core/Error.h"
 #include "engine/stir/InputScript.h"
 #include "engine/stir/StirKeys.h"
 

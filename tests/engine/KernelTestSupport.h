@@ -15,7 +15,7 @@
 #include <gtest/gtest.h>
 
 #include "engine/format/BasisCache.h"
-#include "engine/kernels/ModeBuffer.h"
+#include "engine/device/ModeBuffer.h"
 #include "engine/vulkan/DeviceBuffer.h"
 #include "engine/vulkan/VulkanContext.h"
 
@@ -26,9 +26,9 @@ inline std::vector<float> toFloat(const Eigen::VectorXd& v) { return {v.begin(),
 inline Eigen::VectorXd roundedToFloat(const Eigen::VectorXd& v) { return v.cast<float>().cast<double>(); }
 
 /// The cache with its modes as a ModeBuffer of `precision` holds them (rounded, scaled back).
-inline BasisCache withDeviceModes(const BasisCache& cache, vulkan::ModePrecision precision) {
+inline BasisCache withDeviceModes(const BasisCache& cache, ModePrecision precision) {
     BasisCache rounded = cache;
-    rounded.velocity.modes = vulkan::ModeBuffer::rounded(cache.velocity.modes, precision);
+    rounded.velocity.modes = device::ModeBuffer::rounded(cache.velocity.modes, precision);
     return rounded;
 }
 

@@ -20,11 +20,12 @@
 #include "engine/dynamics/MhdSystem.h"
 #include "engine/dynamics/ModalIntegrator.h"
 #include "precompute/scene/SceneLoader.h"
-#include "engine/dynamics/PackedLayout.h"
+#include "engine/core/PackedLayout.h"
 #include "engine/dynamics/SparseCoefficients.h"
-#include "engine/field/VelocityReconstruction.h"
-#include "engine/format/Error.h"
-#include "engine/simulation/ReferenceSimulation.h"
+#include "engine/reference/VelocityReconstruction.h"
+#include "engine/core/Error.h"
+#include "engine/reference/Simulation.h"
+#include "engine/simulation/BackendCapabilities.h"
 #include "precompute/Precompute.h"
 #include "precompute/geometry/FluidMask.h"
 #include "tests/engine/RandomCoefficients.h"
@@ -250,9 +251,9 @@ TEST(MhdSimulation, ReferenceRunKeepsEnergyAndCrossHelicity) {
     const MhdDisk& disk = mhdDisk();
     const int n = disk.coefficients->size();
     const SimulationSettings settings =
-        SimulationSettings::fromScene(disk.scene, disk.cache, Runtime::CpuReference);
+        SimulationSettings::fromScene(disk.scene, disk.cache);
     ASSERT_TRUE(settings.mhd);
-    ReferenceSimulation simulation(disk.cache, *disk.coefficients, settings, disk.mask);
+    reference::Simulation simulation(disk.cache, *disk.coefficients, settings, disk.mask);
     const Eigen::VectorXd v = randomVector(n, 601), f = 0.7 * randomVector(n, 602);
     simulation.setVelocity(v);
     simulation.setMagneticField(f);
@@ -267,22 +268,22 @@ TEST(MhdSimulation, ReferenceRunKeepsEnergyAndCrossHelicity) {
     // The field moved with the flow and exchanged energy with it.
     EXPECT_GT((f1 - f).norm(), 0.1 * f.norm());
     EXPECT_GT(std::abs(f1.squaredNorm() - f.squaredNorm()), 1e-3 * f.squaredNorm());
-    EXPECT_EQ(simulation.faceMagneticField(), reconstructFaceField(disk.cache, f1));
-    EXPECT_EQ(simulation.faceVelocity(), reconstructFaceField(disk.cache, v1));
+    EXPECT_EQ(simulation.faceMagneticField(), reference::reconstructFaceField(disk.cache, f1));
+    EXPECT_EQ(simulation.faceVelocity(), reference::reconstructFaceField(disk.cache, v1));
 }
 
 TEST(MhdSimulation, TheDeviceAndPlainFluidRunsRefuseAField) {
     const MhdDisk& disk = mhdDisk();
     try {
-        SimulationSettings::fromScene(disk.scene, disk.cache);
+        requireSupport(disk.scene, BackendKind::Vulkan);
         ADD_FAILURE() << "the device runtime accepted an MHD scene";
     } catch (const Error& e) {
         EXPECT_NE(std::string(e.what()).find("[simulation].mhd"), std::string::npos) << e.what();
         EXPECT_NE(std::string(e.what()).find("--device cpu"), std::string::npos) << e.what();
     }
-    SimulationSettings fluid = SimulationSettings::fromScene(disk.scene, disk.cache, Runtime::CpuReference);
+    SimulationSettings fluid = SimulationSettings::fromScene(disk.scene, disk.cache);
     fluid.mhd = false;
-    ReferenceSimulation simulation(disk.cache, *disk.coefficients, fluid, disk.mask);
+    reference::Simulation simulation(disk.cache, *disk.coefficients, fluid, disk.mask);
     EXPECT_EQ(simulation.magneticField().size(), 0);
     EXPECT_TRUE(simulation.faceMagneticField().empty());
     EXPECT_THROW(simulation.setMagneticField(Eigen::VectorXd::Zero(12)), Error);

@@ -23,7 +23,7 @@
 #include <stb/stb_image.h>
 #pragma GCC diagnostic pop
 
-#include "engine/format/Error.h"
+#include "engine/core/Error.h"
 #include "engine/preview/ContactSheet.h"
 #include "engine/preview/Palette.h"
 #include "engine/preview/PngWriter.h"

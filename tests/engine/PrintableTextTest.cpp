@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "engine/format/PrintableText.h"
+#include "engine/core/PrintableText.h"
 
 namespace modeflow {
 namespace {

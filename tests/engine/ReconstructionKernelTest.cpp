@@ -1,6 +1,6 @@
 /// @file ReconstructionKernelTest.cpp
 /// shaders/reconstruct_velocity.comp (ReconstructionKernel, ModeBuffer) against the CPU
-/// reference engine/field/VelocityReconstruction: float32 and float16 modes, bases split over
+/// reference engine/reference/VelocityReconstruction: float32 and float16 modes, bases split over
 /// several buffers, workgroup sizes, real and synthetic bases in 2D and 3D.
 
 #include <cstdint>
@@ -10,10 +10,10 @@
 
 #include <gtest/gtest.h>
 
-#include "engine/field/VelocityReconstruction.h"
-#include "engine/kernels/HalfFloat.h"
-#include "engine/kernels/ModeBuffer.h"
-#include "engine/kernels/VelocityReconstruction.h"
+#include "engine/reference/VelocityReconstruction.h"
+#include "engine/device/HalfFloat.h"
+#include "engine/device/ModeBuffer.h"
+#include "engine/device/VelocityReconstruction.h"
 #include "engine/vulkan/CommandSequence.h"
 #include "engine/vulkan/DeviceBuffer.h"
 #include "tests/engine/KernelTestSupport.h"
@@ -25,9 +25,8 @@ namespace {
 
 using vulkan::CommandSequence;
 using vulkan::DeviceBuffer;
-using vulkan::ModeBuffer;
-using vulkan::ModePrecision;
-using vulkan::ReconstructionKernel;
+using device::ModeBuffer;
+using device::ReconstructionKernel;
 
 struct Case {
     const char* name;
@@ -67,12 +66,12 @@ Eigen::VectorXd reconstructOnDevice(const vulkan::VulkanContext& context, const 
 /// The CPU reference on the modes as the device holds them and v rounded to float32.
 Eigen::VectorXd referenceOnRounded(const BasisCache& cache, const Eigen::VectorXd& v, ModePrecision precision) {
     const std::vector<double> field =
-        reconstructFaceField(testing::withDeviceModes(cache, precision), testing::roundedToFloat(v));
+        reference::reconstructFaceField(testing::withDeviceModes(cache, precision), testing::roundedToFloat(v));
     return Eigen::Map<const Eigen::VectorXd>(field.data(), Eigen::Index(field.size()));
 }
 
 Eigen::VectorXd exactReference(const BasisCache& cache, const Eigen::VectorXd& v) {
-    const std::vector<double> field = reconstructFaceField(cache, v);
+    const std::vector<double> field = reference::reconstructFaceField(cache, v);
     return Eigen::Map<const Eigen::VectorXd>(field.data(), Eigen::Index(field.size()));
 }
 
@@ -201,8 +200,8 @@ TEST_P(ReconstructionKernelTest, MismatchedBuffersAreRefused) {
 INSTANTIATE_TEST_SUITE_P(Vulkan, ReconstructionKernelTest, ::testing::Bool(), testing::validationName);
 
 TEST(HalfFloat, RoundsToNearestEvenIncludingSubnormals) {
-    using vulkan::floatToHalf;
-    using vulkan::halfToFloat;
+    using device::floatToHalf;
+    using device::halfToFloat;
     EXPECT_EQ(floatToHalf(1.0f), 0x3c00);
     EXPECT_EQ(floatToHalf(-2.0f), 0xc000);
     EXPECT_EQ(floatToHalf(65504.0f), 0x7bff);

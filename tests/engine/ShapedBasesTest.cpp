@@ -2,7 +2,7 @@
 
 #include <gtest/gtest.h>
 
-#include "engine/format/Error.h"
+#include "engine/core/Error.h"
 #include "engine/stir/ShapedBases.h"
 #include "tests/engine/RandomCoefficients.h"
 

@@ -1,6 +1,6 @@
 /// @file SimulationTest.cpp
 /// The whole runtime chain on the device (Simulation) against the CPU reference chain
-/// (ReferenceSimulation) on a real basis: a disk with a hot smoke source, buoyancy and a swirl.
+/// (reference::Simulation) on a real basis: a disk with a hot smoke source, buoyancy and a swirl.
 
 #include <cmath>
 #include <memory>
@@ -9,8 +9,8 @@
 
 #include "engine/dynamics/CachedCoefficients.h"
 #include "engine/dynamics/InitialConditions.h"
-#include "engine/simulation/ReferenceSimulation.h"
-#include "engine/simulation/Simulation.h"
+#include "engine/reference/Simulation.h"
+#include "engine/device/Simulation.h"
 #include "precompute/Precompute.h"
 #include "precompute/geometry/FluidMask.h"
 #include "tests/engine/VulkanTestContext.h"
@@ -104,9 +104,9 @@ TEST_P(SimulationTest, DeviceRunFollowsTheCpuReference) {
         SimulationSettings settings = SimulationSettings::fromScene(disk->scene, disk->cache);
         settings.advection = scheme;
         {
-            Simulation device(context(), disk->cache, *disk->coefficients, settings, disk->mask,
+            device::Simulation device(context(), disk->cache, *disk->coefficients, settings, disk->mask,
                               true);
-            ReferenceSimulation cpu(disk->cache, *disk->coefficients, settings, disk->mask);
+            reference::Simulation cpu(disk->cache, *disk->coefficients, settings, disk->mask);
             RandomVelocitySpec swirl;
             swirl.energy = 0.05;
             const Eigen::VectorXd v0 = randomVelocity(disk->coefficients->size(), swirl);
@@ -151,7 +151,7 @@ TEST_P(SimulationTest, DeviceRunFollowsTheCpuReference) {
 TEST_P(SimulationTest, TimingSamplesOnlyTheStepsAskedFor) {
     const auto& disk = hotDisk();
     const SimulationSettings settings = SimulationSettings::fromScene(disk.scene, disk.cache);
-    Simulation device(context(), disk.cache, *disk.coefficients, settings, disk.mask, true);
+    device::Simulation device(context(), disk.cache, *disk.coefficients, settings, disk.mask, true);
     if (context().timestampValidBits() == 0) GTEST_SKIP() << "the queue writes no timestamps";
     const FrameStats timed = device.advanceSteps(2);
     EXPECT_EQ(timed.timedSteps, 2);
@@ -171,7 +171,7 @@ TEST_P(SimulationTest, HotSmokeRisesAndStaysInsideTheDomain) {
     const HotScene& disk = hotDisk();
     const SimulationSettings settings = SimulationSettings::fromScene(disk.scene, disk.cache);
     {
-        Simulation device(context(), disk.cache, *disk.coefficients, settings, disk.mask);
+        device::Simulation device(context(), disk.cache, *disk.coefficients, settings, disk.mask);
         device.advanceFrame();
         const double start = centroidHeight(device.smokeGrid(), device.smoke().density);
         for (int frame = 0; frame < 8; ++frame) device.advanceFrame();
@@ -196,7 +196,7 @@ TEST_P(SimulationTest, SplatsStirTheFluidOnlyWhileSet) {
     settings.buoyancy = 0.0;
     settings.emitters.clear();
     {
-        Simulation device(context(), disk.cache, *disk.coefficients, settings, disk.mask);
+        device::Simulation device(context(), disk.cache, *disk.coefficients, settings, disk.mask);
         device.advanceFrame();
         EXPECT_EQ(device.velocity().norm(), 0.0) << "no force, no motion";
         const ForceSplat push{{0.0, 0.0, 0.0}, {5.0, 0.0, 0.0}, 0.3};
@@ -224,8 +224,8 @@ TEST_P(SimulationTest, MovingObstaclesMatchTheCpuReference) {
     paddle.path = {{0.0, {-0.5, 0.0, 0.0}}, {1.0, {0.5, 0.0, 0.0}}};
     settings.obstacles = {MovingObstacle{paddle}};
     {
-        Simulation device(context(), disk.cache, *disk.coefficients, settings, disk.mask, true);
-        ReferenceSimulation cpu(disk.cache, *disk.coefficients, settings, disk.mask);
+        device::Simulation device(context(), disk.cache, *disk.coefficients, settings, disk.mask, true);
+        reference::Simulation cpu(disk.cache, *disk.coefficients, settings, disk.mask);
         FrameStats stats;
         for (int frame = 0; frame < 2; ++frame) {
             stats = device.advanceFrame();
@@ -250,8 +250,8 @@ TEST_P(SimulationTest, EmittersFollowTheirTimeWindows) {
     settings.emitters[0].start = 0.05;  // steps 3 and 4 of 0.02 (t = 0.06, 0.08) emit
     settings.emitters[0].end = 0.09;
     {
-        Simulation device(context(), disk.cache, *disk.coefficients, settings, disk.mask);
-        ReferenceSimulation cpu(disk.cache, *disk.coefficients, settings, disk.mask);
+        device::Simulation device(context(), disk.cache, *disk.coefficients, settings, disk.mask);
+        reference::Simulation cpu(disk.cache, *disk.coefficients, settings, disk.mask);
         std::vector<double> masses;
         for (int step = 0; step < 6; ++step) {
             device.advanceFrame();

@@ -16,9 +16,9 @@
 
 #include <gtest/gtest.h>
 
-#include "engine/field/SmokeAdvection.h"
-#include "engine/kernels/SmokeAdvection.h"
-#include "engine/kernels/SmokeState.h"
+#include "engine/reference/SmokeAdvection.h"
+#include "engine/device/SmokeAdvection.h"
+#include "engine/device/SmokeState.h"
 #include "engine/vulkan/CommandSequence.h"
 #include "engine/vulkan/DeviceBuffer.h"
 #include "tests/engine/SmokeTestFields.h"
@@ -31,8 +31,8 @@ using testing::kAdvectionSchemes;
 using testing::schemeName;
 using vulkan::CommandSequence;
 using vulkan::DeviceBuffer;
-using vulkan::SmokeAdvectionKernels;
-using vulkan::SmokeState;
+using device::SmokeAdvectionKernels;
+using device::SmokeState;
 
 std::vector<float> toFloat(const std::vector<double>& v) { return std::vector<float>(v.begin(), v.end()); }
 std::vector<double> toDouble(const std::vector<float>& v) { return std::vector<double>(v.begin(), v.end()); }
@@ -89,7 +89,7 @@ SmokeRun runSmoke(const vulkan::VulkanContext& context, const SmokeSetup& s, dou
     roundToFloat(fields.temperature);
     const std::vector<SmokeEmitter> emitters = testEmitters();
 
-    const SmokeAdvection reference(basis, s.scale, run.mask);
+    const reference::SmokeAdvection reference(basis, s.scale, run.mask);
     run.reference = fields;
     for (int step = 0; step < s.steps; ++step) {
         reference.step(velocity, dt, s.scheme, emitters, run.reference);
@@ -261,7 +261,7 @@ TEST_P(SmokeKernelTest, MassDriftPer100StepsMatchesTheCpu) {
             const std::vector<std::uint8_t> mask = testing::ballMask(basis.refined(2), 0.9);
             std::vector<double> velocity = testing::unitSwirlVelocity(basis, 0.85, 11);
             roundToFloat(velocity);
-            const SmokeAdvection reference(basis, 2, mask);
+            const reference::SmokeAdvection reference(basis, 2, mask);
             std::vector<double> blob = testing::gaussianBlob(reference.smokeGrid(), {0.2, -0.1, 0.0}, 0.1);
             for (std::size_t c = 0; c < mask.size(); ++c)
                 if (!mask[c]) blob[c] = 0.0;

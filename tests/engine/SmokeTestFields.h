@@ -13,8 +13,8 @@
 #include <random>
 #include <vector>
 
-#include "engine/field/MacGrid.h"
-#include "engine/field/SmokeAdvection.h"
+#include "engine/core/MacGrid.h"
+#include "engine/reference/SmokeAdvection.h"
 
 namespace modeflow::testing {
 

@@ -15,6 +15,7 @@
 #pragma GCC diagnostic pop
 
 #include "engine/dynamics/CachedCoefficients.h"
+#include "engine/pipeline/RunInputs.h"
 #include "engine/stir/StirApp.h"
 #include "engine/stir/StirView.h"
 #include "precompute/Precompute.h"
@@ -51,17 +52,16 @@ SceneSpec stirScene(int dim) {
     return scene;
 }
 
-struct Prepared {
-    SceneSpec scene;
-    BasisCache cache;
-    explicit Prepared(int dim) : scene(stirScene(dim)) {
+/// The scene's run, its initial velocity zero (the basis computed once per executable).
+const RunInputs& prepared(int dim) {
+    auto prepare = [](int d) {
+        const SceneSpec scene = stirScene(d);
         Progress quiet = Progress::silent();
-        cache = computeBasis(scene, quiet);
-    }
-};
-
-const Prepared& prepared(int dim) {
-    static const Prepared two(2), three(3);
+        RunInputs run = prepareRun(scene, computeBasis(scene, quiet));
+        run.initialVelocity.setZero();
+        return run;
+    };
+    static const RunInputs two = prepare(2), three = prepare(3);
     return dim == 2 ? two : three;
 }
 
@@ -74,7 +74,6 @@ fs::path scratch(const std::string& name) {
 /// A scripted run in a 640 × 480 window (`sized` false: the default size).
 stir::StirReport run(int dim, const std::string& script, int frames = 40,
                      const fs::path& screenshot = {}, bool sized = true) {
-    const Prepared& p = prepared(dim);
     stir::StirOptions options;
     if (sized) {
         options.width = 640;
@@ -84,13 +83,10 @@ stir::StirReport run(int dim, const std::string& script, int frames = 40,
     options.screenshot = screenshot;
     options.screenshotFolder = scratch("");
     options.statistics = false;
-    options.device.validation = true;
+    options.backend.vulkan.validation = true;
     options.script = stir::parseInputScript(script, "test script");
-    auto coefficients = coefficientsFromCache(p.cache);
-    const auto modes = coefficients->size();
     std::ostringstream log;
-    return stir::runStir(options, p.scene, p.cache, std::move(coefficients),
-                         fluidMask(p.scene, p.cache, 1), Eigen::VectorXd::Zero(modes), log);
+    return stir::runStir(options, prepared(dim), log);
 }
 
 /// The density's centre of mass, in scene coordinates.

@@ -8,11 +8,11 @@
 
 #include <Eigen/QR>
 
-#include "engine/field/FaceLocation.h"
-#include "engine/field/MacGrid.h"
+#include "engine/core/FaceLocation.h"
+#include "engine/core/MacGrid.h"
 #include "engine/format/BasisCache.h"
 #include "precompute/Precompute.h"
-#include "precompute/scene/SceneSpec.h"
+#include "engine/core/SceneSpec.h"
 
 namespace modeflow::testing {
 

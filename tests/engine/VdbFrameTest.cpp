@@ -20,8 +20,8 @@
 
 #include <gtest/gtest.h>
 
-#include "engine/field/MacSampling.h"
-#include "engine/format/Error.h"
+#include "engine/core/MacSampling.h"
+#include "engine/core/Error.h"
 #include "engine/output/VdbFrame.h"
 
 namespace modeflow {

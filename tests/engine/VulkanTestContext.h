@@ -8,7 +8,7 @@
 
 #include <gtest/gtest.h>
 
-#include "engine/format/Error.h"
+#include "engine/core/Error.h"
 #include "engine/vulkan/VulkanContext.h"
 
 namespace modeflow::testing {

@@ -7,7 +7,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "engine/dynamics/PackedLayout.h"
+#include "engine/core/PackedLayout.h"
 #include "precompute/coefficients/CoefficientAssembly.h"
 #include "tests/precompute/TestScenes.h"
 

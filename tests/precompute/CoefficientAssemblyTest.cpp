@@ -6,7 +6,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "engine/dynamics/PackedLayout.h"
+#include "engine/core/PackedLayout.h"
 #include "precompute/Precompute.h"
 #include "precompute/coefficients/CoefficientAssembly.h"
 #include "tests/precompute/TestScenes.h"

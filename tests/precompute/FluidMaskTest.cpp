@@ -7,7 +7,7 @@
 
 #include <gtest/gtest.h>
 
-#include "engine/field/MacGrid.h"
+#include "engine/core/MacGrid.h"
 #include "precompute/geometry/FluidMask.h"
 #include "tests/precompute/TestScenes.h"
 

@@ -14,7 +14,7 @@
 #include <thread>
 #include <vector>
 
-#include "engine/format/Error.h"
+#include "engine/core/Error.h"
 #include "precompute/geometry/ImplicitShape.h"
 #include "precompute/geometry/MeshGenerator.h"
 #include "precompute/geometry/MeshLevelSet.h"

@@ -14,7 +14,7 @@
 #include <utility>
 #include <vector>
 
-#include "engine/format/Error.h"
+#include "engine/core/Error.h"
 #include "precompute/geometry/Domain.h"
 #include "precompute/geometry/ImplicitShape.h"
 

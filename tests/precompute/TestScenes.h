@@ -4,7 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "precompute/BasisChecks.h"
-#include "precompute/scene/SceneSpec.h"
+#include "engine/core/SceneSpec.h"
 
 namespace modeflow::test {
 

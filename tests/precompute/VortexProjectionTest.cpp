@@ -15,7 +15,7 @@
 
 #include <Eigen/QR>
 
-#include "engine/format/Error.h"
+#include "engine/core/Error.h"
 #include "precompute/Precompute.h"
 #include "precompute/dec/CubicalComplex.h"
 #include "precompute/dec/CutCellDec.h"

@@ -8,7 +8,7 @@
 
 #include <gtest/gtest.h>
 
-#include "engine/field/MacGrid.h"
+#include "engine/core/MacGrid.h"
 #include "engine/output/VdbFrame.h"
 #include "tests/tools/CliFixture.h"
 

@@ -19,7 +19,7 @@
 #include "engine/dynamics/DenseCoefficients.h"
 #include "engine/dynamics/FluidSystem.h"
 #include "engine/dynamics/ModalIntegrator.h"
-#include "engine/dynamics/PackedLayout.h"
+#include "engine/core/PackedLayout.h"
 #include "engine/dynamics/SparseCoefficients.h"
 #include "engine/dynamics/ThreadCount.h"
 

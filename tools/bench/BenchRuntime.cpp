@@ -31,21 +31,22 @@
 #include <Eigen/SparseCore>
 
 #include "engine/dynamics/DenseCoefficients.h"
-#include "engine/dynamics/PackedLayout.h"
+#include "engine/core/PackedLayout.h"
 #include "engine/dynamics/SparseCoefficients.h"
-#include "engine/kernels/DeviceCoefficients.h"
-#include "engine/kernels/ForceProjection.h"
-#include "engine/kernels/ModalKernels.h"
-#include "engine/kernels/ModalStepper.h"
-#include "engine/kernels/ModeBuffer.h"
-#include "engine/kernels/VelocityReconstruction.h"
-#include "engine/simulation/Simulation.h"
+#include "engine/device/DeviceCoefficients.h"
+#include "engine/device/ForceProjection.h"
+#include "engine/device/ModalKernels.h"
+#include "engine/device/ModalStepper.h"
+#include "engine/device/ModeBuffer.h"
+#include "engine/device/VelocityReconstruction.h"
+#include "engine/device/Simulation.h"
 #include "engine/vulkan/CommandSequence.h"
 #include "engine/vulkan/VulkanContext.h"
 
 namespace {
 
 using namespace modeflow;
+using namespace modeflow::device;
 using namespace modeflow::vulkan;
 
 double median(std::vector<double> values) {
@@ -298,7 +299,7 @@ struct Grid {
 constexpr std::array<Grid, 3> kGrids{Grid{"256^2", 2, 256}, Grid{"48^3", 3, 48}, Grid{"64^3", 3, 64}};
 
 void runtimeTable(const VulkanContext& context, int repeat) {
-    std::printf("\nWhole runtime step (Simulation, midpoint, MacCormack, smoke scale 1, buoyancy + one emitter):\n"
+    std::printf("\nWhole runtime step (device::Simulation, midpoint, MacCormack, smoke scale 1, buoyancy + one emitter):\n"
                 "GPU ms per step by stage; reconstruction GB/s over the float32 basis vs Eigen GEMV\n");
     std::printf("%-6s %4s %9s %8s %8s %6s %8s %8s %8s %9s %11s\n", "grid", "N", "DOFs", "forces",
                 "modal", "iters", "recon", "advect", "step", "dev GB/s", "share p/w");
@@ -314,7 +315,7 @@ void runtimeTable(const VulkanContext& context, int repeat) {
             settings.emitters = {emitter};
             const MacGrid smokeGrid = MacGrid::fromSpec(scene.cache.grid);
             const std::vector<std::uint8_t> mask(std::size_t(smokeGrid.cellCount()), 1);
-            Simulation simulation(context, scene.cache, *scene.coefficients, settings, mask, true);
+            device::Simulation simulation(context, scene.cache, *scene.coefficients, settings, mask, true);
             Eigen::VectorXd v = Eigen::VectorXd::Random(n);
             Eigen::VectorXd r;
             scene.coefficients->apply(v, v, r);

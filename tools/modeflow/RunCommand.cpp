@@ -7,22 +7,17 @@
 #include <sstream>
 #include <string>
 
-#include "engine/dynamics/CachedCoefficients.h"
 #include "engine/format/CacheFile.h"
-#include "engine/format/Error.h"
-#include "engine/format/WritableDirectory.h"
+#include "engine/core/Error.h"
+#include "engine/core/WritableDirectory.h"
 #include "engine/output/VdbFrame.h"
 #include "engine/simulation/Checkpoint.h"
-#include "engine/simulation/ReferenceSimulation.h"
-#include "engine/simulation/Simulation.h"
-#include "precompute/Precompute.h"
-#include "precompute/geometry/FluidMask.h"
 #include "precompute/scene/SceneLoader.h"
 #include "tools/modeflow/Commands.h"
-#include "tools/modeflow/DeviceOption.h"
 #include "tools/modeflow/FramePreview.h"
 #include "tools/modeflow/FrameProgress.h"
-#include "tools/modeflow/InitialState.h"
+#include "engine/pipeline/Backend.h"
+#include "engine/pipeline/RunInputs.h"
 
 namespace modeflow::cli {
 namespace {
@@ -36,14 +31,6 @@ std::string hex(std::uint64_t value) {
     std::ostringstream s;
     s << std::hex << std::setw(16) << std::setfill('0') << value;
     return s.str();
-}
-
-/// Whether the scene simulates temperature (a source heats, or buoyancy reads it).
-bool simulatesTemperature(const SceneSpec& scene) {
-    if (scene.smoke.buoyancy != 0.0) return true;
-    for (const SourceSpec& source : scene.sources)
-        if (source.temperature != 0.0) return true;
-    return false;
 }
 
 }  // namespace
@@ -65,7 +52,7 @@ Command addRun(CLI::App& app) {
     sub->add_option("SCENE", opts->scene, "scene file (TOML)")->required();
     sub->add_option("--frames", opts->frames, "frames to write (default: [output].frames)")->check(CLI::PositiveNumber);
     sub->add_option("--out", opts->out, "output folder (default: NAME_frames beside the current folder)");
-    sub->add_option("--device", opts->device, kDeviceHelp);
+    sub->add_option("--device", opts->device, kDeviceOptionHelp);
     sub->add_flag("--resume", opts->resume, "continue an interrupted run from its last complete frame");
     sub->add_flag("--half", opts->half, "store VDB values as 16-bit floats");
     sub->add_flag("--preview", opts->preview,
@@ -77,34 +64,23 @@ Command addRun(CLI::App& app) {
     return [sub, opts]() {
         if (!*sub) return -1;
         // Everything that can be refused is checked before any precompute or simulation work.
-        const auto deviceOptions = parseDevice(opts->device);
+        const BackendChoice choice = parseDeviceOption(opts->device);
         const SceneSpec scene = loadScene(opts->scene);
-        const Runtime runtime = deviceOptions ? Runtime::Device : Runtime::CpuReference;
-        requireRuntimeSupport(scene, runtime);
+        requireSupport(scene, choice.kind);
         const int frames = opts->frames.value_or(scene.output.frames);
         const std::filesystem::path out = opts->out.value_or(scene.name + "_frames");
         ensureWritableDirectory(out, "output folder", "; choose another with --out");
         const std::filesystem::path checkpointPath = out / (scene.name + ".resume");
         // The checkpoint belongs to this scene text and device kind; frames do not change results.
         const std::string sceneHash = hex(fnv1a64(fileBytes(scene.sourceFile)));
-        const std::uint64_t runHash = fnv1a64(sceneHash + "|" + (deviceOptions ? "vulkan" : "cpu"));
+        const std::uint64_t runHash = fnv1a64(sceneHash + "|" + std::string(capabilitiesOf(choice.kind).option));
+        const Backend backend(choice);
+        std::cerr << backend.describe();
 
         Progress progress = Progress::toStderr();
-        const auto cachePath = ensureCache(scene, resolveCacheDir(opts->cacheDir), false, progress).path;
-        const BasisCache cache = readCache(cachePath);
-        const auto coefficients = coefficientsFromCache(cache);
-        const SimulationSettings settings = SimulationSettings::fromScene(scene, cache, runtime);
-        const std::vector<std::uint8_t> mask = fluidMask(scene, cache, settings.smokeScale);
-
-        std::unique_ptr<vulkan::VulkanContext> context;
-        std::unique_ptr<Simulator> simulator;
-        if (deviceOptions) {
-            context = std::make_unique<vulkan::VulkanContext>(*deviceOptions);
-            std::cerr << context->describe();
-            simulator = std::make_unique<Simulation>(*context, cache, *coefficients, settings, mask);
-        } else {
-            simulator = std::make_unique<ReferenceSimulation>(cache, *coefficients, settings, mask);
-        }
+        const RunInputs run = prepareRun(scene, resolveCacheDir(opts->cacheDir), progress);
+        const SimulationSettings& settings = run.settings;
+        const std::unique_ptr<Simulator> simulator = backend.makeSimulator(run);
 
         int first = 0;
         if (opts->resume && std::filesystem::exists(checkpointPath)) {
@@ -116,17 +92,15 @@ Command addRun(CLI::App& app) {
             if (settings.mhd) simulator->setMagneticField(checkpoint.magnetic);
             first = checkpoint.frame;
             std::cerr << "resuming after frame " << first << " (t = " << checkpoint.time << ")\n";
-        } else {
-            simulator->setVelocity(initialVelocity(scene, cache, coefficients->size()));
-            if (settings.mhd) simulator->setMagneticField(initialMagneticField(scene, cache, coefficients->size()));
         }
 
-        const MacGrid basisGrid = MacGrid::fromSpec(cache.grid);
-        const bool temperature = simulatesTemperature(scene);
+        const MacGrid basisGrid = MacGrid::fromSpec(run.cache.grid);
+        const bool temperature = settings.simulatesTemperature();
         const bool previews = opts->preview || opts->previewEvery.has_value();
         const int previewEvery = opts->previewEvery.value_or(std::max(1, frames / 24));
         std::unique_ptr<FramePreview> preview;
-        if (previews) preview = std::make_unique<FramePreview>(simulator->smokeGrid(), mask, context.get());
+        if (previews)
+            preview = std::make_unique<FramePreview>(simulator->smokeGrid(), run.smokeMask, backend.vulkanContext());
         FrameProgress bar(first, frames, settings.stepsPerFrame);
         for (int frame = first + 1; frame <= frames; ++frame) {
             const FrameStats stats = simulator->advanceFrame();
@@ -140,7 +114,7 @@ Command addRun(CLI::App& app) {
             if (temperature) vdb.temperature = std::span<const double>(smoke.temperature);
             vdb.faceVelocity = faceVelocity;
             vdb.faceMagnetic = faceMagnetic;
-            vdb.fluidMask = mask;
+            vdb.fluidMask = run.smokeMask;
             vdb.frame = frame;
             vdb.time = simulator->time();
             vdb.sceneHash = sceneHash;
@@ -160,9 +134,7 @@ Command addRun(CLI::App& app) {
         }
         bar.finish();
         if (preview) preview->writeContactSheet(out / (scene.name + "_contact.png"));
-        if (context && context->validationMessageCount() > 0)
-            throw Error("the Vulkan validation layer reported " + std::to_string(context->validationMessageCount()) +
-                        " problems; the first: " + context->validationMessages().front());
+        backend.requireCleanValidation();
         std::printf("%s\n", out.string().c_str());
         return 0;
     };

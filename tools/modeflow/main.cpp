@@ -3,7 +3,7 @@
 
 #include <iostream>
 
-#include "engine/format/Error.h"
+#include "engine/core/Error.h"
 #include "tools/modeflow/Commands.h"
 
 int main(int argc, char** argv) {
