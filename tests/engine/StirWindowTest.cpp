@@ -14,56 +14,17 @@
 #include <stb/stb_image.h>
 #pragma GCC diagnostic pop
 
-#include "engine/dynamics/CachedCoefficients.h"
-#include "engine/pipeline/RunInputs.h"
 #include "engine/stir/StirApp.h"
 #include "engine/stir/StirView.h"
-#include "precompute/Precompute.h"
-#include "precompute/geometry/FluidMask.h"
+#include "tests/engine/StirTestRuns.h"
 
 namespace modeflow {
 namespace {
 
 namespace fs = std::filesystem;
 
-/// A box with a source at the bottom; `dim` 2: 40² cells and the shaped basis "1-10,21-30";
-/// 3: 16³ cells and 12 modes.
-SceneSpec stirScene(int dim) {
-    SceneSpec scene;
-    scene.name = dim == 2 ? "stir_test_2d" : "stir_test_3d";
-    scene.grid.dim = dim;
-    const int n = dim == 2 ? 40 : 16;
-    scene.grid.resolution = {n, n, dim == 2 ? 1 : n};
-    scene.grid.boundsMin = {-1.0, -1.0, dim == 2 ? 0.0 : -1.0};
-    scene.grid.boundsMax = {1.0, 1.0, dim == 2 ? 0.0 : 1.0};
-    scene.basis.velocityModes = dim == 2 ? std::vector<ModeRange>{{1, 10}, {21, 30}}
-                                         : std::vector<ModeRange>{{1, 12}};
-    scene.basis.scalarModes = 0;
-    scene.simulation.dt = 0.025;
-    scene.output.stepsPerFrame = 1;
-    scene.smoke.buoyancy = 0.5;
-    SourceSpec source;
-    source.shape.kind = ShapeKind::Ball;
-    source.shape.center = dim == 2 ? Vec3{0.0, -0.6, 0.0} : Vec3{0.0, 0.0, -0.6};
-    source.shape.radius = 0.2;
-    source.density = 2.0;
-    source.temperature = 1.0;
-    scene.sources = {source};
-    return scene;
-}
-
-/// The scene's run, its initial velocity zero (the basis computed once per executable).
-const RunInputs& prepared(int dim) {
-    auto prepare = [](int d) {
-        const SceneSpec scene = stirScene(d);
-        Progress quiet = Progress::silent();
-        RunInputs run = prepareRun(scene, computeBasis(scene, quiet));
-        run.initialVelocity.setZero();
-        return run;
-    };
-    static const RunInputs two = prepare(2), three = prepare(3);
-    return dim == 2 ? two : three;
-}
+using testing::drag;
+using testing::preparedStirRun;
 
 fs::path scratch(const std::string& name) {
     const fs::path dir = fs::temp_directory_path() / "modeflow-stir-window-test";
@@ -71,10 +32,13 @@ fs::path scratch(const std::string& name) {
     return dir / name;
 }
 
-/// A scripted run in a 640 × 480 window (`sized` false: the default size).
+/// A scripted run in a 640 × 480 window (`sized` false: the default size), simulated on the
+/// window's device or on the CPU reference beside it.
 stir::StirReport run(int dim, const std::string& script, int frames = 40,
-                     const fs::path& screenshot = {}, bool sized = true) {
+                     const fs::path& screenshot = {}, bool sized = true,
+                     BackendKind backend = BackendKind::Vulkan) {
     stir::StirOptions options;
+    options.backend.kind = backend;
     if (sized) {
         options.width = 640;
         options.height = 480;
@@ -86,56 +50,22 @@ stir::StirReport run(int dim, const std::string& script, int frames = 40,
     options.backend.vulkan.validation = true;
     options.script = stir::parseInputScript(script, "test script");
     std::ostringstream log;
-    return stir::runStir(options, prepared(dim), log);
-}
-
-/// The density's centre of mass, in scene coordinates.
-Vec3 centroid(const MacGrid& grid, const std::vector<double>& density) {
-    Vec3 c{};
-    double mass = 0.0;
-    for (int z = 0; z < grid.cells[2]; ++z)
-        for (int y = 0; y < grid.cells[1]; ++y)
-            for (int x = 0; x < grid.cells[0]; ++x) {
-                const double d = density[std::size_t(grid.cellIndex(x, y, z))];
-                mass += d;
-                const std::array<int, 3> at{x, y, z};
-                for (int a = 0; a < grid.dim; ++a) c[a] += d * grid.cellCentre(a, at[a]);
-            }
-    for (double& v : c) v /= mass;
-    return c;
+    return stir::runStir(options, preparedStirRun(dim), log);
 }
 
 Vec3 smokeCentroid(int dim, const stir::StirReport& report) {
-    return centroid(MacGrid::fromSpec(prepared(dim).cache.grid), report.smoke.density);
+    return testing::smokeCentroid(dim, report.smoke.density);
 }
 
-/// The horizontal centre of the bright pixels of a PNG (the smoke: the background, walls and
-/// margins are dark).
+/// The horizontal centre of the bright pixels of a PNG (testing::brightCentreX), and its size.
 double brightCentreX(const fs::path& png, int& width, int& height) {
     int channels = 0;
-    unsigned char* pixels = stbi_load(png.string().c_str(), &width, &height, &channels, 3);
+    unsigned char* pixels = stbi_load(png.string().c_str(), &width, &height, &channels, 4);
     if (!pixels) return -1.0;
-    double sum = 0.0, weight = 0.0;
-    for (int y = 0; y < height; ++y)
-        for (int x = 0; x < width; ++x) {
-            const unsigned char* p = pixels + 3 * (std::size_t(y) * width + x);
-            const double brightness = (p[0] + p[1] + p[2]) / 765.0;
-            if (brightness > 0.3) {
-                sum += brightness * x;
-                weight += brightness;
-            }
-        }
+    preview::Image picture(width, height);
+    picture.rgba.assign(pixels, pixels + picture.rgba.size());
     stbi_image_free(pixels);
-    return weight > 0.0 ? sum / weight : -1.0;
-}
-
-/// A left drag along y = 0.75 of the window (through the source) from x0 to x1.
-std::string drag(double x0, double x1, const std::string& before = "") {
-    std::ostringstream s;
-    s << before << "0.20 down " << x0 << " 0.75\n";
-    for (int i = 1; i <= 6; ++i) s << 0.20 + 0.05 * i << " move " << x0 + (x1 - x0) * i / 6.0 << " 0.75\n";
-    s << "0.55 up " << x1 << " 0.75\n";
-    return s.str();
+    return testing::brightCentreX(picture);
 }
 
 TEST(StirWindowTest, DragCarriesTheSmokeAlongAndThePictureShowsIt) {
@@ -156,6 +86,23 @@ TEST(StirWindowTest, DragCarriesTheSmokeAlongAndThePictureShowsIt) {
     ASSERT_GT(still0, 0.0) << "no smoke in the still screenshot";
     EXPECT_NEAR(still0, 320.0, 10.0);
     EXPECT_GT(moved, still0 + 20.0);
+}
+
+TEST(StirWindowTest, CpuReferenceDragMovesTheSmokeLikeTheDevice) {
+    // The CPU reference simulates, the window's device draws its uploaded fields.
+    const fs::path shot = scratch("cpu_right.png");
+    const stir::StirReport device = run(2, drag(0.3, 0.7), 40);
+    const stir::StirReport cpu = run(2, drag(0.3, 0.7), 40, shot, true, BackendKind::CpuReference);
+    const stir::StirReport still = run(2, "", 40, {}, true, BackendKind::CpuReference);
+    EXPECT_EQ(cpu.validationMessages, 0u);
+    EXPECT_EQ(cpu.frames, 40);
+    const double x0 = smokeCentroid(2, still)[0], moved = smokeCentroid(2, cpu)[0];
+    EXPECT_GT(moved, x0 + 0.1);
+    EXPECT_NEAR(moved, smokeCentroid(2, device)[0], 0.01)
+        << "the CPU reference's smoke went elsewhere";
+    int w = 0, h = 0;
+    EXPECT_GT(brightCentreX(shot, w, h), 320.0 + 20.0) << "the picture shows the smoke moved right";
+    EXPECT_EQ(w, 640);
 }
 
 TEST(StirWindowTest, PaddleFollowsTheDragAndPushesTheSmoke) {
@@ -212,7 +159,7 @@ TEST(StirWindowTest, ThreeDimensionalSceneOrbitsZoomsAndStirsAcrossTheView) {
     EXPECT_EQ(stirred.validationMessages, 0u);
     // The smoke moves along the drag's direction in the scene: the stroke's two ends on the
     // plane through the box's centre, seen by the orbited and zoomed camera.
-    stir::StirView view(MacGrid::fromSpec(prepared(3).cache.grid));
+    stir::StirView view(MacGrid::fromSpec(preparedStirRun(3).cache.grid));
     view.orbit(0.1, -0.05);
     view.zoom(2);
     const auto from = view.scenePoint(0.3, 0.7, 640, 480), to = view.scenePoint(0.7, 0.7, 640, 480);

@@ -1,5 +1,5 @@
 /// `modeflow stir` from the command line: what it refuses before any work. (The window itself
-/// is tested under Xvfb by tests/engine/StirWindowTest.)
+/// is tested under Xvfb by tests/engine/StirWindowTest and tests/tools/StirCommandWindowTest.)
 
 #include <cstdlib>
 
@@ -20,7 +20,7 @@ TEST_F(StirCommand, WithoutADisplaySaysSoAndHowToRunHeadless) {
     EXPECT_NE(r.err.find("xvfb-run"), std::string::npos) << r.err;
 }
 
-TEST_F(StirCommand, BadScriptsAndTheCpuDeviceAreRefusedBeforeAnyWork) {
+TEST_F(StirCommand, BadScriptsAreRefusedBeforeAnyWork) {
     const fs::path s = scene("disk.toml", kSmallDisk);
     const fs::path script = mDir / "drag.txt";
     std::ofstream(script) << "0.1 down 0.2 0.2\n0.2 wiggle 0.3 0.3\n";
@@ -29,8 +29,8 @@ TEST_F(StirCommand, BadScriptsAndTheCpuDeviceAreRefusedBeforeAnyWork) {
     expectRejected("stir " + s.string() + " --script " + (mDir / "missing.txt").string() +
                        " --cache-dir " + mCache.string(),
                    "cannot read the input script");
-    expectRejected("stir " + s.string() + " --device cpu --cache-dir " + mCache.string(),
-                   "--device cpu");
+    expectRejected("stir " + s.string() + " --device gpu --cache-dir " + mCache.string(),
+                   "--device gpu");
     const fs::path mhd = scene("mhd.toml", std::string(kSmallDisk) + "[simulation]\nmhd = true\n");
     expectRejected("stir " + mhd.string() + " --cache-dir " + mCache.string(), "[simulation].mhd");
 }

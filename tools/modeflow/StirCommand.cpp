@@ -2,7 +2,6 @@
 #include <memory>
 
 #include "engine/display/Window.h"
-#include "engine/core/Error.h"
 #include "engine/pipeline/RunInputs.h"
 #include "engine/stir/StirApp.h"
 #include "precompute/scene/SceneLoader.h"
@@ -38,14 +37,15 @@ Command addStir(CLI::App& app) {
         ->check(CLI::PositiveNumber);
     sub->add_option("--force", opts->force, "stirring acceleration per unit pointer speed (1/s)")
         ->check(CLI::NonNegativeNumber);
-    sub->add_option("--device", opts->device, "a Vulkan device: vulkan (first suitable) or an index");
+    sub->add_option("--device", opts->device,
+                    std::string(kDeviceOptionHelp) +
+                        "; the window shows on the chosen Vulkan device, or with cpu on the first "
+                        "suitable one");
     sub->add_option("--cache-dir", opts->cacheDir, "cache folder");
     return [sub, opts]() {
         if (!*sub) return -1;
         // Everything that can be refused is checked before the precompute or the window.
         const BackendChoice choice = parseDeviceOption(opts->device);
-        if (choice.kind == BackendKind::CpuReference)
-            throw Error("--device cpu: the stir window simulates on a Vulkan device (vulkan or an index)");
         const SceneSpec scene = loadScene(opts->scene);
         requireSupport(scene, choice.kind);
         stir::StirOptions options;
