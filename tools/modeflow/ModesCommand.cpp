@@ -14,6 +14,7 @@
 #include "engine/dynamics/ModalIntegrator.h"
 #include "engine/format/CacheFile.h"
 #include "engine/format/Error.h"
+#include "engine/format/KappaSquared.h"
 #include "engine/kernels/ModalStepper.h"
 #include "engine/simulation/SimulationSettings.h"
 #include "engine/vulkan/CommandSequence.h"
@@ -67,7 +68,7 @@ Command addModes(CLI::App& app) {
         const int n = coefficients->size();
 
         const SimulationSpec& sim = scene.simulation;
-        const auto& k2 = cache.velocity.eigenvalues;
+        const Eigen::VectorXd k2 = checkedKappaSquared(cache.velocity.eigenvalues, "modes");
         std::unique_ptr<ModalSystem> system;
         Eigen::VectorXd x = initialVelocity(scene, cache, n);
         if (sim.mhd) {
