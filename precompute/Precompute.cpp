@@ -24,7 +24,7 @@ namespace modeflow {
 namespace {
 
 /// Bumped whenever the numerics change what a cache holds for the same inputs.
-constexpr const char* kAlgorithmVersion = "cut-cell-dec/2";
+constexpr const char* kAlgorithmVersion = "cut-cell-dec/3";
 
 std::string fileDigest(const std::filesystem::path& file, const std::string& key) {
     std::ifstream in(file, std::ios::binary);
