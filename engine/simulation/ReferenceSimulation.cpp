@@ -1,9 +1,11 @@
 #include "engine/simulation/ReferenceSimulation.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "engine/dynamics/FluidSystem.h"
 #include "engine/dynamics/MhdSystem.h"
+#include "engine/dynamics/ModalDivergence.h"
 #include "engine/field/ForceProjection.h"
 #include "engine/field/VelocityReconstruction.h"
 #include "engine/format/Error.h"
@@ -74,6 +76,7 @@ void ReferenceSimulation::restore(double time, const Eigen::VectorXd& v, const S
                     std::to_string(mFields.density.size()));
     mFields = smoke;
     mTime = time;
+    mStep = std::lround(time / mSettings.dt);
 }
 
 FrameStats ReferenceSimulation::advanceFrame() {
@@ -89,6 +92,7 @@ FrameStats ReferenceSimulation::advanceFrame() {
                                               FaceQuantity::Density);
         }
         const StepReport report = mIntegrator.step(mState, dt, force);
+        requireFiniteModalState(mState, ++mStep, mTime + dt);
         stats.maxIterations = std::max(stats.maxIterations, report.iterations);
         stats.unconvergedSteps += report.converged ? 0 : 1;
         mFaceVelocity = reconstructFaceField(mCache, velocity());

@@ -41,6 +41,8 @@ public:
 
     /// settings().stepsPerFrame steps: forces from the current smoke, the modal step, the grid
     /// velocity, smoke advection and emitters.
+    /// @throw ModalStateDiverged (engine/dynamics/ModalDivergence.h) when a step leaves the modal
+    /// state non-finite.
     virtual FrameStats advanceFrame() = 0;
 
     /// The smoke now (one value per cell of smokeGrid()).

@@ -11,6 +11,7 @@
 #include "engine/dynamics/Diagnostics.h"
 #include "engine/dynamics/FluidSystem.h"
 #include "engine/dynamics/MhdSystem.h"
+#include "engine/dynamics/ModalDivergence.h"
 #include "engine/dynamics/ModalIntegrator.h"
 #include "engine/format/CacheFile.h"
 #include "engine/format/Error.h"
@@ -140,11 +141,11 @@ Command addModes(CLI::App& app) {
             const StepReport r = advance();
             unconverged += !r.converged;
             row(s, r);
-            if (!x.allFinite())
-                throw Error("the modal state diverged at step " + std::to_string(s) + " (t = " +
-                            std::to_string(s * h) + "); " +
-                            std::string(sceneKeyword(settings.scheme)) +
-                            " is unstable at this step size: lower --dt or use midpoint");
+            try {
+                requireFiniteModalState(x, s, s * h);
+            } catch (const ModalStateDiverged& e) {
+                throw Error(divergenceAdvice(e, sceneKeyword(settings.scheme), "--dt"));
+            }
         }
         std::fflush(stdout);
         if (context && context->validationMessageCount() > 0)

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "engine/dynamics/CachedCoefficients.h"
+#include "engine/dynamics/ModalDivergence.h"
 #include "engine/format/CacheFile.h"
 #include "engine/format/Error.h"
 #include "engine/format/WritableDirectory.h"
@@ -129,7 +130,13 @@ Command addRun(CLI::App& app) {
         if (previews) preview = std::make_unique<FramePreview>(simulator->smokeGrid(), mask, context.get());
         FrameProgress bar(first, frames, settings.stepsPerFrame);
         for (int frame = first + 1; frame <= frames; ++frame) {
-            const FrameStats stats = simulator->advanceFrame();
+            FrameStats stats;
+            try {
+                stats = simulator->advanceFrame();
+            } catch (const ModalStateDiverged& e) {
+                throw Error(
+                    divergenceAdvice(e, sceneKeyword(settings.integrator), "[simulation].dt"));
+            }
             const SmokeFields smoke = simulator->smoke();
             const std::vector<double> faceVelocity = simulator->faceVelocity();
             const std::vector<double> faceMagnetic = simulator->faceMagneticField();
