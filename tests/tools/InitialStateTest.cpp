@@ -22,7 +22,7 @@ protected:
                        const std::string& simulation = "") const {
         const std::string s =
             scene("initial.toml", std::string(testing::kSmallDisk) + simulation + initial).string();
-        for (const std::string command :
+        for (const std::string& command :
              {"modes " + s,
               "run " + s + " --device cpu --frames 1 --out " + (mDir / "frames").string()}) {
             const RunResult r = run(command + " --cache-dir " + mCache.string());
