@@ -4,19 +4,23 @@
 #include <iostream>
 #include <iterator>
 #include <memory>
+#include <new>
 #include <sstream>
 #include <string>
 
 #include "engine/dynamics/CachedCoefficients.h"
 #include "engine/dynamics/ModalDivergence.h"
+#include "engine/format/AvailableMemory.h"
 #include "engine/format/CacheFile.h"
 #include "engine/format/Error.h"
 #include "engine/format/WritableDirectory.h"
 #include "engine/output/VdbFrame.h"
 #include "engine/simulation/Checkpoint.h"
 #include "engine/simulation/ReferenceSimulation.h"
+#include "engine/simulation/RuntimeMemory.h"
 #include "engine/simulation/Simulation.h"
 #include "precompute/Precompute.h"
+#include "precompute/PrecomputeMemory.h"
 #include "precompute/geometry/FluidMask.h"
 #include "precompute/scene/SceneLoader.h"
 #include "tools/modeflow/Commands.h"
@@ -45,6 +49,41 @@ bool simulatesTemperature(const SceneSpec& scene) {
     for (const SourceSpec& source : scene.sources)
         if (source.temperature != 0.0) return true;
     return false;
+}
+
+constexpr const char* kRunMemoryAdvice =
+    "lower [smoke].resolution_scale, [grid].resolution or the velocity modes in [basis]";
+
+/// The run's estimated peak memory (engine/simulation/RuntimeMemory.h), with the velocity DOFs
+/// the precompute's estimate expects, refused when it does not fit.
+RunMemory requireRunMemory(const SceneSpec& scene, bool device) {
+    const GridSpec& grid = scene.grid;
+    std::int64_t smokeCells = 1;
+    for (int a = 0; a < grid.dim; ++a)
+        smokeCells *= std::int64_t{grid.resolution[a]} * scene.smoke.resolutionScale;
+    const RunMemory memory =
+        estimateRunMemory(smokeCells, estimatePrecomputeMemory(scene).velocityDofs,
+                          scene.basis.velocityCount(), device);
+    const bool smoke = memory.smokeBytes > memory.basisBytes;
+    requireMemory(
+        memory.peakBytes,
+        gridResolutionText(grid) + " with [smoke].resolution_scale = " +
+            std::to_string(scene.smoke.resolutionScale) + " (" + std::to_string(smokeCells) +
+            " smoke cells) and " + std::to_string(scene.basis.velocityCount()) + " velocity modes",
+        std::string("the run") + (device ? " on a Vulkan device" : " on the CPU reference"),
+        smoke ? "lower [smoke].resolution_scale or [grid].resolution"
+              : "lower the velocity modes in [basis] or [grid].resolution");
+    return memory;
+}
+
+/// One stage of the run; an allocation failing inside it despite the estimate is named.
+template <typename Work>
+decltype(auto) inStage(const std::string& stage, const RunMemory& estimate, Work&& work) {
+    try {
+        return work();
+    } catch (const std::bad_alloc&) {
+        throw outOfMemoryIn(stage, estimate.peakBytes, kRunMemoryAdvice);
+    }
 }
 
 }  // namespace
@@ -82,6 +121,7 @@ Command addRun(CLI::App& app) {
         const SceneSpec scene = loadScene(opts->scene);
         const Runtime runtime = deviceOptions ? Runtime::Device : Runtime::CpuReference;
         requireRuntimeSupport(scene, runtime);
+        const RunMemory memory = requireRunMemory(scene, deviceOptions.has_value());
         const int frames = opts->frames.value_or(scene.output.frames);
         const std::filesystem::path out = opts->out.value_or(scene.name + "_frames");
         ensureWritableDirectory(out, "output folder", "; choose another with --out");
@@ -92,20 +132,27 @@ Command addRun(CLI::App& app) {
 
         Progress progress = Progress::toStderr();
         const auto cachePath = ensureCache(scene, resolveCacheDir(opts->cacheDir), false, progress).path;
-        const BasisCache cache = readCache(cachePath);
-        const auto coefficients = coefficientsFromCache(cache);
+        const BasisCache cache =
+            inStage("reading the cache", memory, [&] { return readCache(cachePath); });
+        const auto coefficients =
+            inStage("reading the cache", memory, [&] { return coefficientsFromCache(cache); });
         const SimulationSettings settings = SimulationSettings::fromScene(scene, cache, runtime);
-        const std::vector<std::uint8_t> mask = fluidMask(scene, cache, settings.smokeScale);
+        const std::vector<std::uint8_t> mask = inStage(
+            "the fluid mask", memory, [&] { return fluidMask(scene, cache, settings.smokeScale); });
 
         std::unique_ptr<vulkan::VulkanContext> context;
         std::unique_ptr<Simulator> simulator;
-        if (deviceOptions) {
-            context = std::make_unique<vulkan::VulkanContext>(*deviceOptions);
-            std::cerr << context->describe();
-            simulator = std::make_unique<Simulation>(*context, cache, *coefficients, settings, mask);
-        } else {
-            simulator = std::make_unique<ReferenceSimulation>(cache, *coefficients, settings, mask);
-        }
+        inStage("setting up the simulation", memory, [&] {
+            if (deviceOptions) {
+                context = std::make_unique<vulkan::VulkanContext>(*deviceOptions);
+                std::cerr << context->describe();
+                simulator =
+                    std::make_unique<Simulation>(*context, cache, *coefficients, settings, mask);
+            } else {
+                simulator =
+                    std::make_unique<ReferenceSimulation>(cache, *coefficients, settings, mask);
+            }
+        });
 
         int first = 0;
         if (opts->resume && std::filesystem::exists(checkpointPath)) {
@@ -130,14 +177,15 @@ Command addRun(CLI::App& app) {
         if (previews) preview = std::make_unique<FramePreview>(simulator->smokeGrid(), mask, context.get());
         FrameProgress bar(first, frames, settings.stepsPerFrame);
         for (int frame = first + 1; frame <= frames; ++frame) {
+            const std::string stage = "frame " + std::to_string(frame);
             FrameStats stats;
             try {
-                stats = simulator->advanceFrame();
+                stats = inStage(stage, memory, [&] { return simulator->advanceFrame(); });
             } catch (const ModalStateDiverged& e) {
                 throw Error(
                     divergenceAdvice(e, sceneKeyword(settings.integrator), "[simulation].dt"));
             }
-            const SmokeFields smoke = simulator->smoke();
+            const SmokeFields smoke = inStage(stage, memory, [&] { return simulator->smoke(); });
             const std::vector<double> faceVelocity = simulator->faceVelocity();
             const std::vector<double> faceMagnetic = simulator->faceMagneticField();
             VdbFrame vdb;
@@ -153,7 +201,8 @@ Command addRun(CLI::App& app) {
             vdb.sceneHash = sceneHash;
             vdb.modeflowVersion = MODEFLOW_VERSION;
             vdb.options.halfFloat = opts->half;
-            writeVdbFrame(out / frameFileName(scene.name, frame), vdb);
+            inStage(stage, memory,
+                    [&] { writeVdbFrame(out / frameFileName(scene.name, frame), vdb); });
             if (preview && (frame % previewEvery == 0 || frame == frames)) {
                 std::filesystem::path png = out / frameFileName(scene.name, frame);
                 preview->write(png.replace_extension(".png"), frame, smoke, temperature);
