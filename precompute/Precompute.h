@@ -20,7 +20,9 @@ std::string basisKey(const SceneSpec& scene);
 /// `DIR/<16 hex digits of the key's hash>.mfbasis`, for a key from basisKey().
 std::filesystem::path cachePath(const std::string& key, const std::filesystem::path& cacheDir);
 
-/// Runs the whole pipeline in memory. @throw Error naming the scene key or stage that failed.
+/// Runs the whole pipeline in memory, after checking its estimated peak memory against the
+/// machine's (precompute/PrecomputeMemory.h).
+/// @throw Error naming the scene key or stage that failed, "out of memory in <stage>" included.
 BasisCache computeBasis(const SceneSpec& scene, Progress& progress);
 
 struct CacheOutcome {

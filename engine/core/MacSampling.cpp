@@ -37,9 +37,12 @@ struct Corners {
 /// The stencil at `gridPoint` on a lattice of extent[a] points along axis a, at grid coordinates
 /// offset[a] + 0, 1, … (cell centres: offset ½; face positions along their normal: offset 0).
 Corners trilinearCorners(const std::array<int, 3>& extent, const Vec3& offset, const Vec3& gridPoint) {
+    Corners corners;
+    // A diverged state moves points to NaN or infinity: no stencil (floor of NaN is no index).
+    for (int a = 0; a < 3; ++a)
+        if (!std::isfinite(gridPoint[a])) return corners;
     std::array<AxisStencil, 3> s;
     for (int a = 0; a < 3; ++a) s[a] = axisStencil(gridPoint[a], offset[a], extent[a]);
-    Corners corners;
     for (int cz = 0; cz <= (s[2].hi != s[2].lo); ++cz)
         for (int cy = 0; cy <= (s[1].hi != s[1].lo); ++cy)
             for (int cx = 0; cx <= (s[0].hi != s[0].lo); ++cx) {

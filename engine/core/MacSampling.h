@@ -15,6 +15,7 @@
 /// value (constant extrapolation, the free-slip picture), while the normal component falls
 /// linearly to zero at the wall, because the walls of the box carry zero normal velocity: the
 /// wall faces (positions 0 and n along their normal) read as 0 whatever the field stores there.
+/// A point with a non-finite coordinate (a diverged run) has an empty stencil and samples as 0.
 
 #include <array>
 #include <cstdint>

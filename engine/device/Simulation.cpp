@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 
 #include "engine/core/Error.h"
+#include "engine/dynamics/ModalDivergence.h"
 #include "engine/simulation/BackendCapabilities.h"
 
 namespace modeflow::device {
@@ -56,6 +58,7 @@ void Simulation::restore(double time, const Eigen::VectorXd& v, const SmokeField
         temperature(smoke.temperature.begin(), smoke.temperature.end());
     mSmoke.upload(density, temperature);
     mTime = time;
+    mStep = std::lround(time / mSettings.dt);
 }
 
 void Simulation::setSplats(std::span<const ForceSplat> splats) {
@@ -122,6 +125,8 @@ FrameStats Simulation::advanceSteps(int steps) {
         mSequence.submitAndWait();
         mTime += mSettings.dt;
         ++stats.steps;
+        // N floats: as cheap as the status read below (measured in the README).
+        requireFiniteModalState(mStepper.state(), ++mStep, mTime);
 
         const DeviceStepStatus status = mStepper.status();
         stats.maxIterations = std::max(stats.maxIterations, status.iterations);

@@ -86,6 +86,7 @@ private:
     int mEasySteps = 0;
     int mUnconverged = 0;  ///< the stepper's count of failed substeps so far
     double mTime = 0.0;
+    long mStep = 0;  ///< steps since t = 0, for the divergence message
 };
 
 }  // namespace modeflow::device

@@ -1,5 +1,6 @@
 #include "engine/pipeline/InitialState.h"
 
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -10,6 +11,23 @@
 #include "precompute/initial/VortexProjection.h"
 
 namespace modeflow {
+namespace {
+
+/// `build()`'s state, checked (requireRepresentableState); any refusal names `key`, the scene
+/// key that sets the state's size.
+Eigen::VectorXd keyed(const std::string& key, const std::function<Eigen::VectorXd()>& build) {
+    Eigen::VectorXd state;
+    try {
+        state = build();
+    } catch (const Error& e) {
+        throw Error(key + ": " + e.what());
+    }
+    requireRepresentableState(state, key);
+    return state;
+}
+
+}  // namespace
+
 
 Eigen::VectorXd initialVelocity(const SceneSpec& scene, const BasisCache& cache, int modes) {
     const InitialSpec& init = scene.initial;
@@ -30,7 +48,7 @@ Eigen::VectorXd initialVelocity(const SceneSpec& scene, const BasisCache& cache,
                 spec.firstMode = init.band->first - 1;
                 spec.lastMode = init.band->last - 1;
             }
-            return randomVelocity(modes, spec);
+            return keyed(where + "energy", [&] { return randomVelocity(modes, spec); });
         }
         case InitialVelocity::Modes: {
             std::vector<std::pair<int, double>> amplitudes;
@@ -41,14 +59,19 @@ Eigen::VectorXd initialVelocity(const SceneSpec& scene, const BasisCache& cache,
                                 ")");
                 amplitudes.emplace_back(mode - 1, amplitude);
             }
-            return modalAmplitudes(modes, amplitudes);
+            return keyed(where + "amplitudes", [&] { return modalAmplitudes(modes, amplitudes); });
         }
-        case InitialVelocity::Vortices:
+        case InitialVelocity::Vortices: {
+            Eigen::VectorXd v;
             try {
-                return projectVortices(cache, init.vortices, init.energy);
+                v = projectVortices(cache, init.vortices, init.energy);
             } catch (const Error& e) {
                 throw Error(scene.sourceFile.string() + ": " + e.what());
             }
+            const char* size = init.energy > 0.0 ? "[[initial.vortex]].strength or [initial].energy"
+                                                 : "[[initial.vortex]].strength";
+            return keyed(scene.sourceFile.string() + ": " + size, [&] { return v; });
+        }
     }
     throw Error(where + "velocity: unknown choice");
 }
@@ -59,15 +82,18 @@ Eigen::VectorXd initialMagneticField(const SceneSpec& scene, const BasisCache& c
         RandomVelocitySpec field;
         field.energy = init.magneticEnergy;
         field.seed = init.magneticSeed;
-        return randomVelocity(modes, field);
+        const std::string where = scene.sourceFile.string() + ": [initial].magnetic_energy";
+        return keyed(where, [&] { return randomVelocity(modes, field); });
     }
+    Eigen::VectorXd f;
     try {
         const double layer = init.magneticWallLayer > 0.0 ? init.magneticWallLayer : uniformFieldLayer(cache);
         const UniformField field(cache, scene.domain, init.magneticDirection, init.magneticStrength, layer);
-        return projectUniformField(cache, field);
+        f = projectUniformField(cache, field);
     } catch (const Error& e) {
         throw Error(scene.sourceFile.string() + ": [initial].magnetic: " + e.what());
     }
+    return keyed(scene.sourceFile.string() + ": [initial].magnetic_strength", [&] { return f; });
 }
 
 }  // namespace modeflow

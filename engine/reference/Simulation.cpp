@@ -1,9 +1,11 @@
 #include "engine/reference/Simulation.h"
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 #include "engine/core/Error.h"
+#include "engine/dynamics/ModalDivergence.h"
 #include "engine/reference/ForceField.h"
 #include "engine/reference/ForceProjection.h"
 #include "engine/reference/ObstacleCorrection.h"
@@ -38,6 +40,7 @@ void Simulation::restore(double time, const Eigen::VectorXd& v, const SmokeField
                     std::to_string(mFields.density.size()));
     mFields = smoke;
     mTime = time;
+    mStep = std::lround(time / mSettings.dt);
 }
 
 void Simulation::setObstacles(std::vector<MovingObstacle> obstacles) {
@@ -70,6 +73,7 @@ FrameStats Simulation::advanceSteps(int steps) {
         }
         mStepper.setForce(force);
         const StepReport report = mStepper.step(dt);
+        requireFiniteModalState(mStepper.state(), ++mStep, mTime + dt);
         stats.maxIterations = std::max(stats.maxIterations, report.iterations);
         stats.unconvergedSteps += report.converged ? 0 : 1;
         mFaceVelocity = reconstructFaceField(mCache, velocity());

@@ -50,6 +50,7 @@ private:
     std::vector<double> mFaceVelocity;
     SmokeFields mFields;
     double mTime = 0.0;
+    long mStep = 0;  ///< steps since t = 0, for the divergence message
 };
 
 }  // namespace modeflow::reference

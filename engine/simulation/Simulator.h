@@ -51,6 +51,8 @@ public:
 
     /// `steps` steps, each: forces from the current smoke, the modal step, the grid velocity,
     /// moving obstacles, smoke advection and emitters.
+    /// @throw ModalStateDiverged (engine/dynamics/ModalDivergence.h) when a step leaves the modal
+    /// state non-finite.
     virtual FrameStats advanceSteps(int steps) = 0;
     /// settings().stepsPerFrame steps.
     FrameStats advanceFrame() { return advanceSteps(settings().stepsPerFrame); }

@@ -100,6 +100,42 @@ TEST(MacSampling, StaggeredSamplingIsExactForLinearVelocityAndWallsCarryNoFlux) 
     }
 }
 
+TEST(MacSampling, NonFinitePointsSampleAsZero) {
+    // A diverged run hands NaN and infinite positions to the samplers: never an index from them.
+    for (const int dim : {2, 3}) {
+        const MacGrid grid = smokeTestGrid(dim, 6);
+        const std::vector<double> cells(std::size_t(grid.cellCount()), 1.0);
+        const std::vector<double> faces = testing::constantVelocity(grid, {1.0, 2.0, 3.0});
+        for (const double bad : {NAN, INFINITY, -INFINITY}) {
+            for (int a = 0; a < dim; ++a) {
+                Vec3 p{0.1, 0.2, 0.0};
+                p[a] = bad;
+                EXPECT_EQ(cellStencil(grid, p).count, 0) << dim << "D, axis " << a << " = " << bad;
+                EXPECT_EQ(sampleCells(grid, cells, p), 0.0)
+                    << dim << "D, axis " << a << " = " << bad;
+                const Vec3 u = sampleVelocity(grid, std::span<const double>(faces), p);
+                EXPECT_EQ(u[0] * u[0] + u[1] * u[1] + u[2] * u[2], 0.0) << dim << "D, axis " << a;
+            }
+        }
+    }
+}
+
+TEST(SmokeAdvection, ANonFiniteVelocityLeavesTheSmokeWhereItIs) {
+    for (const int dim : {2, 3}) {
+        const MacGrid grid = smokeTestGrid(dim, 8);
+        const reference::SmokeAdvection advection(grid, 2, wholeMask(grid.refined(2)));
+        const std::vector<double> blob = gaussianBlob(grid.refined(2), {0.1, 0.0, 0.0}, 0.3);
+        for (const double bad : {NAN, INFINITY}) {
+            const std::vector<double> velocity(std::size_t(grid.faceTotal()), bad);
+            for (const AdvectionScheme scheme : kAdvectionSchemes) {
+                const std::vector<double> moved = advection.advect(velocity, blob, 0.1, scheme);
+                EXPECT_EQ(moved, blob)
+                    << dim << "D, " << schemeName(scheme) << ", velocity " << bad;
+            }
+        }
+    }
+}
+
 TEST(SmokeAdvection, WrongSizesAreRefusedWithTheirNames) {
     const MacGrid basis = smokeTestGrid(2, 8);
     EXPECT_THROW(reference::SmokeAdvection(basis, 2, std::vector<std::uint8_t>(64, 1)), Error);  // needs 16² = 256

@@ -9,6 +9,8 @@
 
 #include "engine/dynamics/Diagnostics.h"
 #include "engine/core/Error.h"
+#include "engine/core/KappaSquared.h"
+#include "engine/dynamics/ModalDivergence.h"
 #include "engine/pipeline/Backend.h"
 #include "engine/pipeline/RunInputs.h"
 #include "precompute/scene/SceneLoader.h"
@@ -54,7 +56,7 @@ Command addModes(CLI::App& app) {
         const RunInputs run = prepareRun(scene, resolveCacheDir(opts->cacheDir), progress, RunParts::Dynamics);
         const int n = run.modeCount();
         const SimulationSpec& sim = scene.simulation;
-        const auto& k2 = run.cache.velocity.eigenvalues;
+        const Eigen::VectorXd k2 = checkedKappaSquared(run.cache.velocity.eigenvalues, "modes");
         const double h = opts->dt.value_or(sim.dt);
         const int steps = opts->steps.value_or(scene.output.frames * scene.output.stepsPerFrame);
         const std::unique_ptr<ModalStepping> stepper = backend.makeModalStepper(run, scheme);
@@ -94,11 +96,11 @@ Command addModes(CLI::App& app) {
             x = stepper->state();
             unconverged += !r.converged;
             row(s, r);
-            if (!x.allFinite())
-                throw Error("the modal state diverged at step " + std::to_string(s) + " (t = " +
-                            std::to_string(s * h) + "); " +
-                            std::string(sceneKeyword(scheme)) +
-                            " is unstable at this step size: lower --dt or use midpoint");
+            try {
+                requireFiniteModalState(x, s, s * h);
+            } catch (const ModalStateDiverged& e) {
+                throw Error(divergenceAdvice(e, sceneKeyword(scheme), "--dt"));
+            }
         }
         std::fflush(stdout);
         backend.requireCleanValidation();

@@ -4,6 +4,7 @@
 #include <iostream>
 #include <iterator>
 #include <memory>
+#include <new>
 #include <sstream>
 #include <string>
 
@@ -18,6 +19,8 @@
 #include "tools/modeflow/FrameProgress.h"
 #include "engine/pipeline/Backend.h"
 #include "engine/pipeline/RunInputs.h"
+#include "engine/pipeline/RunMemory.h"
+#include "engine/dynamics/ModalDivergence.h"
 
 namespace modeflow::cli {
 namespace {
@@ -67,6 +70,7 @@ Command addRun(CLI::App& app) {
         const BackendChoice choice = parseDeviceOption(opts->device);
         const SceneSpec scene = loadScene(opts->scene);
         requireSupport(scene, choice.kind);
+        const RunMemory memory = requireRunMemory(scene, choice.kind);
         const int frames = opts->frames.value_or(scene.output.frames);
         const std::filesystem::path out = opts->out.value_or(scene.name + "_frames");
         ensureWritableDirectory(out, "output folder", "; choose another with --out");
@@ -78,9 +82,11 @@ Command addRun(CLI::App& app) {
         std::cerr << backend.describe();
 
         Progress progress = Progress::toStderr();
-        const RunInputs run = prepareRun(scene, resolveCacheDir(opts->cacheDir), progress);
+        const RunInputs run = inRunStage("preparing the run (cache, smoke mask, initial state)", memory,
+                                         [&] { return prepareRun(scene, resolveCacheDir(opts->cacheDir), progress); });
         const SimulationSettings& settings = run.settings;
-        const std::unique_ptr<Simulator> simulator = backend.makeSimulator(run);
+        const std::unique_ptr<Simulator> simulator =
+            inRunStage("setting up the simulation", memory, [&] { return backend.makeSimulator(run); });
 
         int first = 0;
         if (opts->resume && std::filesystem::exists(checkpointPath)) {
@@ -103,8 +109,15 @@ Command addRun(CLI::App& app) {
             preview = std::make_unique<FramePreview>(simulator->smokeGrid(), run.smokeMask, backend.vulkanContext());
         FrameProgress bar(first, frames, settings.stepsPerFrame);
         for (int frame = first + 1; frame <= frames; ++frame) {
-            const FrameStats stats = simulator->advanceFrame();
-            const SmokeFields smoke = simulator->smoke();
+            const std::string stage = "frame " + std::to_string(frame);
+            FrameStats stats;
+            try {
+                stats = inRunStage(stage, memory, [&] { return simulator->advanceFrame(); });
+            } catch (const ModalStateDiverged& e) {
+                throw Error(
+                    divergenceAdvice(e, sceneKeyword(settings.integrator), "[simulation].dt"));
+            }
+            const SmokeFields smoke = inRunStage(stage, memory, [&] { return simulator->smoke(); });
             const std::vector<double> faceVelocity = simulator->faceVelocity();
             const std::vector<double> faceMagnetic = simulator->faceMagneticField();
             VdbFrame vdb;
@@ -120,7 +133,8 @@ Command addRun(CLI::App& app) {
             vdb.sceneHash = sceneHash;
             vdb.modeflowVersion = MODEFLOW_VERSION;
             vdb.options.halfFloat = opts->half;
-            writeVdbFrame(out / frameFileName(scene.name, frame), vdb);
+            inRunStage(stage, memory,
+                    [&] { writeVdbFrame(out / frameFileName(scene.name, frame), vdb); });
             if (preview && (frame % previewEvery == 0 || frame == frames)) {
                 std::filesystem::path png = out / frameFileName(scene.name, frame);
                 preview->write(png.replace_extension(".png"), frame, smoke, temperature);
