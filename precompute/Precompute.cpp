@@ -106,7 +106,9 @@ std::string basisKey(const SceneSpec& scene) {
     writeVec(s, g.boundsMin, g.dim);
     s << " max=";
     writeVec(s, g.boundsMax, g.dim);
-    s << "\n";
+    s << " periodic=[";
+    for (int a = 0; a < g.dim; ++a) s << (a ? "," : "") << int(g.periodic[a]);
+    s << "]\n";
     int index = 0;
     for (const ShapeSpec& d : scene.domain) {
         ++index;

@@ -113,6 +113,7 @@ std::string serialize(const BasisCache& c) {
     for (int r : c.grid.resolution) w.pod<std::int32_t>(r);
     for (double x : c.grid.boundsMin) w.pod(x);
     for (double x : c.grid.boundsMax) w.pod(x);
+    for (bool periodic : c.grid.periodic) w.pod<std::uint8_t>(periodic);
     w.pod<std::int32_t>(int(c.wall));
     w.pod<std::int32_t>(int(c.boundary));
     w.vector(c.cellFraction);
@@ -154,6 +155,7 @@ BasisCache deserialize(std::string_view payload, const std::filesystem::path& pa
     for (int& x : c.grid.resolution) x = r.pod<std::int32_t>();
     for (double& x : c.grid.boundsMin) x = r.pod<double>();
     for (double& x : c.grid.boundsMax) x = r.pod<double>();
+    for (bool& periodic : c.grid.periodic) periodic = r.pod<std::uint8_t>() != 0;
     c.wall = WallKind(r.pod<std::int32_t>());
     c.boundary = BoundaryTreatment(r.pod<std::int32_t>());
     c.cellFraction = r.vector<double>();

@@ -15,7 +15,7 @@
 
 namespace modeflow {
 
-inline constexpr std::uint32_t kCacheFormatVersion = 2;
+inline constexpr std::uint32_t kCacheFormatVersion = 3;  ///< 3: periodic axes
 
 /// Writes to a temporary file beside `path`, flushes it, then renames it over `path`, so
 /// readers see the old file or the whole new one.

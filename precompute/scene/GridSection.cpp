@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <string>
 
 #include "precompute/scene/SceneLoader.h"
@@ -72,6 +73,29 @@ void checkCellSizes(const TomlReader& reader, const Section& s, const GridSpec& 
     }
 }
 
+/// `periodic = [true, false]`: one flag per axis, default all false.
+void readPeriodicAxes(const TomlReader& reader, const Section& s, GridSpec& grid) {
+    const toml::node* node = s.table.get("periodic");
+    if (node == nullptr) return;
+    const toml::array* array = node->as_array();
+    if (array == nullptr || int(array->size()) != grid.dim)
+        reader.fail(s, "periodic",
+                    "expected " + std::to_string(grid.dim) + " booleans (one per axis, like resolution), got " +
+                        (array ? std::to_string(array->size()) + " entries" : describeType(*node)),
+                    node);
+    for (int a = 0; a < grid.dim; ++a) {
+        const toml::node& flag = (*array)[std::size_t(a)];
+        const std::optional<bool> value = flag.value<bool>();
+        if (!flag.is_boolean() || !value)
+            reader.fail(s.name + ".periodic[" + std::to_string(a) + "]",
+                        "expected true or false, got " + describeType(flag), &flag);
+        grid.periodic[std::size_t(a)] = *value;
+    }
+    if (grid.anyPeriodic())
+        reader.fail(s, "periodic",
+                    "periodic axes are not simulated by this build yet; set every axis to false", node);
+}
+
 }  // namespace
 
 GridSpec readGrid(TomlReader& reader, const Section& s) {
@@ -130,6 +154,7 @@ GridSpec readGrid(TomlReader& reader, const Section& s) {
         grid.boundsMax[a] = hi[a];
     }
     checkCellSizes(reader, s, grid);
+    readPeriodicAxes(reader, s, grid);
     return grid;
 }
 

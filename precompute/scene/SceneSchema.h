@@ -60,7 +60,7 @@ std::string_view keywordOf(Choices<T> choices, T value) {
 
 inline constexpr std::string_view kTopLevelTables[] = {
     "grid", "domain", "basis", "simulation", "initial", "source", "obstacle", "smoke", "output"};
-inline constexpr std::string_view kGridKeys[] = {"resolution", "bounds_min", "bounds_max"};
+inline constexpr std::string_view kGridKeys[] = {"resolution", "bounds_min", "bounds_max", "periodic"};
 inline constexpr std::string_view kBasisKeys[] = {
     "velocity_modes", "modes", "scalar_modes", "scalar_boundary", "wall", "boundary", "subsamples"};
 inline constexpr std::string_view kSimulationKeys[] = {

@@ -1131,3 +1131,30 @@ TEST(ExampleScenes, EveryRepositorySceneLoads) {
 
 }  // namespace
 }  // namespace modeflow
+
+namespace modeflow {
+namespace {
+
+TEST(SceneLoaderPeriodic, PeriodicFlagsAreOnePerAxisAndDefaultToWalls) {
+    const std::string grid = "[grid]\nresolution = [8, 8]\nbounds_min = [0, 0]\nbounds_max = [1, 1]\n";
+    const SceneSpec walls = parseScene(grid + "[basis]\nvelocity_modes = 4\n", "walls.toml");
+    EXPECT_FALSE(walls.grid.anyPeriodic());
+    const SceneSpec explicitWalls =
+        parseScene(grid + "periodic = [false, false]\n[basis]\nvelocity_modes = 4\n", "walls.toml");
+    EXPECT_EQ(explicitWalls.grid, walls.grid);
+    const auto refused = [&](const std::string& flags, const std::string& needle) {
+        try {
+            parseScene(grid + "periodic = " + flags + "\n[basis]\nvelocity_modes = 4\n", "p.toml");
+            ADD_FAILURE() << "accepted periodic = " << flags;
+        } catch (const Error& e) {
+            EXPECT_NE(std::string(e.what()).find(needle), std::string::npos) << e.what();
+        }
+    };
+    refused("[true]", "[grid].periodic: expected 2 booleans");
+    refused("[true, false, true]", "expected 2 booleans");
+    refused("true", "expected 2 booleans");
+    refused("[1, 0]", "[grid].periodic[0]: expected true or false");
+}
+
+}  // namespace
+}  // namespace modeflow
