@@ -227,6 +227,38 @@ shape = "cone"
 }
 
 
+TEST_F(RunCommand, WhatTheBackendCannotDoIsRefusedBeforeThePrecompute) {
+    const fs::path s = scene("hot.toml", kHotDisk);
+    // A device index that is not there: the device is opened before any precompute.
+    expectRejected("run " + s.string() + " --out " + (mDir / "f").string() + " --device 7 --cache-dir " +
+                       mCache.string(),
+                   "device");
+    // The trapezoidal rule runs on the CPU reference only (the capability table).
+    std::string text = kHotDisk;
+    text.replace(text.find("dt = 0.02"), 9, "dt = 0.02\nintegrator = \"trapezoidal\"");
+    const fs::path trapezoidal = scene("trap.toml", text);
+    expectRejected("run " + trapezoidal.string() + " --out " + (mDir / "t").string() + " --cache-dir " +
+                       mCache.string(),
+                   "[simulation].integrator = \"trapezoidal\" runs on the CPU reference only");
+}
+
+TEST_F(RunCommand, ASourceOutsideTheDomainIsRefusedNamingIt) {
+    const fs::path s = scene("outside.toml", std::string(testing::kSmallDisk) + R"(
+[[source]]
+shape = "ball"
+center = [0.0, -0.5]
+radius = 0.2
+[[source]]
+shape = "ball"
+center = [1.05, 1.05]
+radius = 0.05
+)");
+    const RunResult r = simulate(s, mDir / "f", "--frames 1");
+    EXPECT_EQ(r.status, 1);
+    EXPECT_NE(r.err.find("[[source]] #2 covers no fluid cell"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(mDir / "f" / "outside_0001.vdb"));
+}
+
 /// A closed octahedron, scaled by `scale`: a mesh domain small enough for quick tests.
 std::string octahedron(double scale) {
     std::string obj;
