@@ -3,6 +3,7 @@
 /// input refused before any work.
 
 #include <cmath>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -10,7 +11,7 @@
 
 #include "engine/core/MacGrid.h"
 #include "engine/output/VdbFrame.h"
-#include "tests/tools/CliFixture.h"
+#include "tests/support/CliFixture.h"
 
 namespace modeflow {
 namespace {

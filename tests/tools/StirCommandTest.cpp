@@ -2,8 +2,9 @@
 /// is tested under Xvfb by tests/engine/StirWindowTest and tests/tools/StirCommandWindowTest.)
 
 #include <cstdlib>
+#include <fstream>
 
-#include "tests/tools/CliFixture.h"
+#include "tests/support/CliFixture.h"
 
 namespace modeflow::testing {
 namespace {
