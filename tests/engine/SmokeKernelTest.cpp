@@ -52,11 +52,6 @@ struct SmokeSetup {
 };
 
 /// Emitters with binary-fraction parameters (exact in float32), one crossing the wall of Ω.
-std::vector<SmokeEmitter> testEmitters() {
-    return {{EmitterShape::Ball, {0.25, -0.5, 0.125}, 0.3, {}, {}, 1.5, 0.75},
-            {EmitterShape::Box, {}, 0.0, {-0.875, -0.3, -0.3}, {-0.5, 0.2, 0.2}, 0.5, 2.0}};
-}
-
 struct SmokeRun {
     SmokeFields device;     ///< the kernels' result
     SmokeFields reference;  ///< SmokeAdvection on the float-rounded inputs, rounded after each step
@@ -86,7 +81,7 @@ SmokeRun runSmoke(const vulkan::VulkanContext& context, const SmokeSetup& s, dou
         if (!run.mask[c]) fields.density[c] = fields.temperature[c] = nan;
     roundToFloat(fields.density);
     roundToFloat(fields.temperature);
-    const std::vector<SmokeEmitter> emitters = testEmitters();
+    const std::vector<SmokeEmitter> emitters = testing::smokeTestEmitters();
 
     const reference::SmokeAdvection reference(basis, s.scale, run.mask);
     run.reference = fields;
@@ -181,7 +176,7 @@ TEST_P(SmokeKernelTest, NoFluidCellsGiveZeros) {
             SmokeState state(context(), basis, 1, mask);
             EXPECT_EQ(state.fluidCellCount(), 0u);
             state.upload(std::vector<float>(mask.size(), 1.0f), std::vector<float>(mask.size(), 2.0f));
-            state.setEmitters(testEmitters());
+            state.setEmitters(testing::smokeTestEmitters());
             const SmokeAdvectionKernels kernels(context());
             const DeviceBuffer velocity = DeviceBuffer::fromValues<float>(
                 context(), std::vector<float>(std::size_t(basis.faceTotal()), 0.5f), "velocity");

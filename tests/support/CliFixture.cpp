@@ -15,9 +15,9 @@ std::string slurp(const fs::path& p) {
 
 std::string cliPath() { return MODEFLOW_CLI; }
 
-RunResult Cli::run(const std::string& args) const {
+RunResult Cli::runProgram(const std::string& program, const std::string& args) const {
     const fs::path out = mDir / "stdout.txt", err = mDir / "stderr.txt";
-    const std::string cmd = "env -u MODEFLOW_CACHE_DIR " + cliPath() + " " + args + " >" + out.string() + " 2>" +
+    const std::string cmd = "env -u MODEFLOW_CACHE_DIR " + program + " " + args + " >" + out.string() + " 2>" +
                             err.string() + " </dev/null";
     const int raw = std::system(cmd.c_str());
     return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(out), slurp(err)};

@@ -1,6 +1,7 @@
 #pragma once
 /// @file CliFixture.h
-/// Runs the real `modeflow` binary as users run it, in a fresh folder per test.
+/// Runs the real `modeflow` binary (or another of the project's programs) as users run it, in a
+/// fresh folder per test.
 
 #include <filesystem>
 #include <string>
@@ -42,7 +43,9 @@ std::string cliPath();
 class Cli : public ::testing::Test {
 protected:
     /// `modeflow ARGS` (a shell command line) with MODEFLOW_CACHE_DIR unset and no input.
-    RunResult run(const std::string& args) const;
+    RunResult run(const std::string& args) const { return runProgram(cliPath(), args); }
+    /// The same for another program.
+    RunResult runProgram(const std::string& program, const std::string& args) const;
 
     /// Writes a scene file `name` into the test's folder.
     fs::path scene(const std::string& name, const std::string& text) const;

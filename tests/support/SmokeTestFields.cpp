@@ -103,6 +103,11 @@ std::vector<double> unitSwirlVelocity(const MacGrid& grid, double radius, std::u
     return faces;
 }
 
+std::vector<SmokeEmitter> smokeTestEmitters() {
+    return {{EmitterShape::Ball, {0.25, -0.5, 0.125}, 0.3, {}, {}, 1.5, 0.75},
+            {EmitterShape::Box, {}, 0.0, {-0.875, -0.3, -0.3}, {-0.5, 0.2, 0.2}, 0.5, 2.0}};
+}
+
 std::vector<float> mushroomCloud(const MacGrid& grid) {
     return cellValues<float>(grid, [](const Vec3& p) {
         const double x = p[0], y = p[1], z = p[2];

@@ -12,6 +12,7 @@
 
 #include "engine/core/MacGrid.h"
 #include "engine/core/SceneSpec.h"
+#include "engine/simulation/SmokeEmitter.h"
 
 namespace modeflow::testing {
 
@@ -56,6 +57,9 @@ std::vector<double> randomSwirlVelocity(const MacGrid& grid, double radius, std:
 
 /// randomSwirlVelocity scaled to max |face value| = 1.
 std::vector<double> unitSwirlVelocity(const MacGrid& grid, double radius, std::uint64_t seed);
+
+/// Two emitters in [−1, 1]^dim: a ball and a box, each with its own density and temperature rates.
+std::vector<SmokeEmitter> smokeTestEmitters();
 
 /// A mushroom cloud about the origin of [−1, 1]³: a wavy stem under a ring and a cap.
 std::vector<float> mushroomCloud(const MacGrid& grid);
