@@ -1,5 +1,5 @@
 /// `modeflow stir`'s loop on a NullScreen: the clock, scripts, session, statistics, drawing and
-/// screenshots without a window or a display (the real window: StirWindowTest), on lavapipe
+/// screenshots without a window or a display (the real window: StirWindowSlowTest), on lavapipe
 /// with the validation layer on, on the frame clock so every run is reproducible.
 
 #include <gtest/gtest.h>

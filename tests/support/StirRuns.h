@@ -1,6 +1,6 @@
 #pragma once
 /// @file StirRuns.h
-/// The scenes `modeflow stir`'s loop tests run (in a window under Xvfb: StirWindowTest; on a
+/// The scenes `modeflow stir`'s loop tests run (in a window under Xvfb: StirWindowSlowTest; on a
 /// NullScreen: StirLoopTest) and what they measure in the results.
 
 #include <string>

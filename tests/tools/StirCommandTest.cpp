@@ -1,5 +1,5 @@
 /// `modeflow stir` from the command line: what it refuses before any work. (The window itself
-/// is tested under Xvfb by tests/engine/StirWindowTest and tests/tools/StirCommandWindowTest.)
+/// is tested under Xvfb by tests/engine/StirWindowSlowTest and tests/tools/StirCommandWindowTest.)
 
 #include <cstdlib>
 #include <fstream>

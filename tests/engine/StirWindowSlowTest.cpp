@@ -1,6 +1,6 @@
 /// `modeflow stir`'s window, run for real: under Xvfb on lavapipe (tests/CMakeLists.txt wraps
-/// files named *WindowTest in xvfb-run) with the validation layer on, driven by input scripts
-/// on the frame clock, so every run is reproducible.
+/// files named *WindowTest and *WindowSlowTest in xvfb-run) with the validation layer on, driven
+/// by input scripts on the frame clock, so every run is reproducible. Label `slow`: about 20 s.
 
 #include <gtest/gtest.h>
 
