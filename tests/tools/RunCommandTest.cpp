@@ -17,7 +17,7 @@
 #include "engine/core/MacGrid.h"
 #include "engine/output/RunFolder.h"
 #include "engine/output/VdbFrame.h"
-#include "tests/tools/CliFixture.h"
+#include "tests/support/CliFixture.h"
 
 namespace modeflow {
 namespace {
