@@ -4,11 +4,13 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string>
 #include <sys/wait.h>
+#include <unistd.h>
 
 namespace modeflow::testing {
 
@@ -42,8 +44,11 @@ inline std::string slurp(const fs::path& p) {
 class Cli : public ::testing::Test {
 protected:
     void SetUp() override {
-        mDir = fs::temp_directory_path() /
-               ("modeflow-cli-" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+        // One folder per test and process: parameterized names ("Case/param") become one level,
+        // and the same test run from two build trees at once does not share it.
+        std::string name = ::testing::UnitTest::GetInstance()->current_test_info()->name();
+        std::replace(name.begin(), name.end(), '/', '_');
+        mDir = fs::temp_directory_path() / ("modeflow-cli-" + name + "-" + std::to_string(getpid()));
         fs::remove_all(mDir);
         fs::create_directories(mDir);
         mCache = mDir / "cache";
