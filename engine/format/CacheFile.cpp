@@ -41,6 +41,11 @@ public:
         pod<std::uint64_t>(std::uint64_t(m.cols()));
         mBytes.append(reinterpret_cast<const char*>(m.data()), size_t(m.size()) * sizeof(double));
     }
+    void rows(const SparseRows& m) {
+        vector(m.start);
+        vector(m.column);
+        vector(m.value);
+    }
     const std::string& bytes() const { return mBytes; }
 
 private:
@@ -80,6 +85,22 @@ public:
         if (cols != 0 && rows > (mBytes.size() - mAt) / sizeof(double) / cols) corrupt();
         Eigen::MatrixXd m(static_cast<Eigen::Index>(rows), static_cast<Eigen::Index>(cols));
         std::memcpy(m.data(), take(rows * cols * sizeof(double)), rows * cols * sizeof(double));
+        return m;
+    }
+    /// A sparse matrix with `columns` columns; its structure is checked, so a reader never
+    /// indexes past an array.
+    SparseRows rows(std::size_t columns) {
+        SparseRows m;
+        m.start = vector<std::int64_t>();
+        m.column = vector<std::int32_t>();
+        m.value = vector<double>();
+        if (m.start.empty() || m.start.front() != 0 ||
+            m.start.back() != std::int64_t(m.column.size()) || m.column.size() != m.value.size())
+            corrupt();
+        for (std::size_t r = 1; r < m.start.size(); ++r)
+            if (m.start[r] < m.start[r - 1]) corrupt();
+        for (std::int32_t c : m.column)
+            if (c < 0 || std::size_t(c) >= columns) corrupt();
         return m;
     }
     bool atEnd() const { return mAt == mBytes.size(); }
@@ -132,6 +153,9 @@ std::string serialize(const BasisCache& c) {
     w.vector(c.scalar.eigenvalues);
     w.matrix(c.scalar.modes);
     w.pod<std::int32_t>(c.scalar.omittedConstants);
+    w.rows(c.quadrature.curl);
+    w.rows(c.quadrature.velocityB);
+    w.rows(c.quadrature.velocityC);
     w.pod<std::int32_t>(int(c.coefficients.storage));
     w.vector(c.coefficients.packed);
     w.vector(c.coefficients.k);
@@ -174,7 +198,15 @@ BasisCache deserialize(std::string_view payload, const std::filesystem::path& pa
     c.scalar.eigenvalues = r.eigenVector();
     c.scalar.modes = r.matrix();
     c.scalar.omittedConstants = r.pod<std::int32_t>();
-    c.coefficients.storage = BasisCache::Coefficients::Storage(r.pod<std::int32_t>());
+    c.quadrature.curl = r.rows(c.faces.size());
+    c.quadrature.velocityB = r.rows(c.faces.size());
+    c.quadrature.velocityC = r.rows(c.faces.size());
+    if (c.quadrature.velocityB.rows() != c.quadrature.curl.rows() ||
+        c.quadrature.velocityC.rows() != c.quadrature.curl.rows())
+        r.corrupt();
+    const auto storage = r.pod<std::int32_t>();
+    if (storage < 0 || storage > int(BasisCache::Coefficients::Storage::None)) r.corrupt();
+    c.coefficients.storage = BasisCache::Coefficients::Storage(storage);
     c.coefficients.packed = r.vector<double>();
     c.coefficients.k = r.vector<std::int32_t>();
     c.coefficients.i = r.vector<std::int32_t>();

@@ -11,8 +11,9 @@ RunMemory requireRunMemory(const SceneSpec& scene, BackendKind backend) {
     const bool device = backend == BackendKind::Vulkan;
     std::int64_t smokeCells = 1;
     for (int a = 0; a < grid.dim; ++a) smokeCells *= std::int64_t{grid.resolution[a]} * scene.smoke.resolutionScale;
-    const RunMemory memory = estimateRunMemory(smokeCells, estimatePrecomputeMemory(scene).velocityDofs,
-                                               scene.basis.velocityCount(), device);
+    const PrecomputeMemory precompute = estimatePrecomputeMemory(scene);
+    const RunMemory memory = estimateRunMemory(smokeCells, precompute.velocityDofs,
+                                               scene.basis.velocityCount(), device, precompute.tensor);
     const bool smoke = memory.smokeBytes > memory.basisBytes;
     requireMemory(memory.peakBytes,
                   gridResolutionText(grid) + " with [smoke].resolution_scale = " +

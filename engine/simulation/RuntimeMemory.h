@@ -5,8 +5,9 @@
 /// resolution_scale^dim):
 ///   program       48 MiB (CPU reference) or 150 MiB (a Vulkan device: lavapipe's driver; its
 ///                 device memory is host memory)
-///   basis         3 × (V·K·8 + K²(K−1)/2·8): the cache, the dynamics' coefficients, the device's
-///                 copies
+///   basis         3 × (V·K·8 + K²(K−1)/2·8 + 120·V): the cache, the dynamics' coefficients, the
+///                 device's copies (the tensor term 0 when the advection is tensor-free; 120·V
+///                 the vorticity quadrature)
 ///   smoke         150 (CPU reference: double fields, back-traces, MacCormack temporaries, frames)
 ///                 or 200 (device: float fields, their staging, frames) bytes per smoke cell
 /// times 1.15. Measured peaks of `modeflow run` (2D disk 128² with 40 and 200 modes, smoke scales
@@ -22,8 +23,9 @@ struct RunMemory {
     double peakBytes = 0.0;  ///< everything, with the margin
 };
 
-/// `device`: a Vulkan device runs it (else the CPU reference).
+/// `device`: a Vulkan device runs it (else the CPU reference). `tensor`: the structural
+/// coefficients are stored (else the advection is tensor-free).
 RunMemory estimateRunMemory(std::int64_t smokeCells, std::int64_t velocityDofs, int modes,
-                            bool device);
+                            bool device, bool tensor = true);
 
 }  // namespace modeflow

@@ -21,7 +21,8 @@ inline constexpr std::string_view kTopLevelTables[] = {
     "grid", "domain", "basis", "simulation", "initial", "source", "obstacle", "smoke", "output"};
 inline constexpr std::string_view kGridKeys[] = {"resolution", "bounds_min", "bounds_max", "periodic"};
 inline constexpr std::string_view kBasisKeys[] = {
-    "velocity_modes", "modes", "scalar_modes", "scalar_boundary", "wall", "boundary", "subsamples"};
+    "velocity_modes", "modes", "scalar_modes", "scalar_boundary", "wall", "boundary", "subsamples",
+    "coefficients"};
 inline constexpr std::string_view kSimulationKeys[] = {
     "dt", "integrator", "viscosity", "alpha", "mhd", "magnetic_diffusivity", "basis_precision"};
 inline constexpr std::string_view kInitialKeys[] = {"velocity",

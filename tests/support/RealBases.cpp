@@ -27,6 +27,15 @@ const BasisCache& ball3d() {
     return cache;
 }
 
+const BasisCache& disk2dHundredModes() {
+    static const BasisCache cache = [] {
+        SceneSpec scene = unitBallScene(2, 40, 100, 0);
+        scene.basis.coefficients = CoefficientStorage::Dense;  // auto would not assemble them
+        return sharedBasis(scene);
+    }();
+    return cache;
+}
+
 void expectValidVelocityBasis(const BasisCache& cache) {
     const BasisChecks checks = checkBasis(cache);
     EXPECT_LE(checks.maxDivergence, 1e-10);

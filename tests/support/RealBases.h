@@ -19,6 +19,9 @@ BasisCache sharedBasis(const SceneSpec& scene);
 /// modes), once per process.
 const BasisCache& disk2d();
 const BasisCache& ball3d();
+/// The unit disk at 40² with 100 velocity modes (no scalar modes) and their dense coefficients,
+/// once per process.
+const BasisCache& disk2dHundredModes();
 
 /// The contract every velocity basis meets: max |dΨ|/|Ψ| and |ΨᵀMΨ − I| ≤ 1e-10, recomputed
 /// from the stored data (precompute/BasisChecks).

@@ -111,6 +111,37 @@ TEST_F(Cli, InspectJsonReportsTheContractKeys) {
     EXPECT_EQ(nlohmann::json::parse(direct.out)["velocity"]["eigenvalues"], ev);
 }
 
+TEST_F(Cli, TensorFreeScenesStoreNoTensorAndRunLikeDenseOnes) {
+    const std::string initial = "[initial]\nvelocity = \"random\"\nenergy = 2.0\n";
+    const fs::path free = scene("free.toml", replaced(kSmallDisk, "scalar_modes = 4",
+                                                      "scalar_modes = 4\ncoefficients = \"tensor-free\"") +
+                                                 initial);
+    const fs::path dense = scene("dense.toml", replaced(kSmallDisk, "scalar_modes = 4",
+                                                        "scalar_modes = 4\ncoefficients = \"dense\"") +
+                                                   initial);
+    const std::string freeCache = " --cache-dir " + (mDir / "free").string();
+    const RunResult inspect = run("inspect " + free.string() + freeCache + " --json");
+    ASSERT_EQ(inspect.status, 0) << inspect.err;
+    const auto j = nlohmann::json::parse(inspect.out);
+    EXPECT_EQ(j["coefficients"]["storage"], "none");
+    EXPECT_EQ(j["coefficients"]["stored"], 0);
+    EXPECT_GT(j["coefficients"]["quadrature_elements"].get<int>(), 0);
+
+    const std::string steps = " --steps 50 --dt 0.05 --integrator midpoint --csv";
+    const RunResult a = run("modes " + free.string() + freeCache + steps);
+    const RunResult b = run("modes " + dense.string() + " --cache-dir " + mCache.string() + steps);
+    ASSERT_EQ(a.status, 0) << a.err;
+    ASSERT_EQ(b.status, 0) << b.err;
+    const Csv got = parseCsv(a.out), want = parseCsv(b.out);
+    ASSERT_EQ(got.rows.size(), want.rows.size());
+    double worst = 0.0;
+    for (std::size_t r = 0; r < got.rows.size(); ++r)
+        for (std::size_t c = 0; c < got.rows[r].size(); ++c)
+            worst = std::max(worst, std::abs(got.rows[r][c] - want.rows[r][c]) /
+                                        std::max(1.0, std::abs(want.rows[r][c])));
+    EXPECT_LT(worst, 1e-10) << "largest difference in the modes table";
+}
+
 TEST_F(Cli, HelpDescribesEverySubcommand) {
     for (const char* sub : {"precompute", "inspect"}) {
         const RunResult r = run(std::string(sub) + " --help");

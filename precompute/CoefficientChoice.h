@@ -1,0 +1,42 @@
+#pragma once
+/// @file CoefficientChoice.h
+/// Which structural coefficients a cache keeps (`[basis] coefficients`): a dense or sparse tensor
+/// assembled from the vorticity quadrature, or none (tensor-free: the runtime evaluates the
+/// advection from the quadrature and the modes, engine/dynamics/TensorFreeCoefficients.h).
+///
+/// "auto" assembles no tensor when it would not fit (more than a quarter of the available memory:
+/// a run holds it up to three times, engine/simulation/RuntimeMemory.h) or when the tensor-free
+/// advection is predicted cheaper per evaluation. Per evaluation a tensor streams N²(N−1)/2
+/// coefficients; the tensor-free advection streams the modes twice (reconstruction, projection),
+/// 2·V·N values for V velocity DOFs, plus the quadrature. Measured per value streamed
+/// (tools/bench/bench_tensor_free, README "Speed") the two cost the same to within
+/// kTensorFreeValueCost, so the tensor-free advection wins once N(N−1) > 4·kTensorFreeValueCost·V.
+/// A tensor that "auto" assembles is stored sparse below a density of 0.25 (boxes, appendix C.2).
+
+#include <cstdint>
+#include <vector>
+
+#include "engine/core/SceneSpec.h"
+#include "engine/format/BasisCache.h"
+#include "precompute/Progress.h"
+
+namespace modeflow {
+
+/// Cost of a value the tensor-free advection streams, relative to a stored coefficient.
+inline constexpr double kTensorFreeValueCost = 1.0;
+
+/// Whether a precompute with `requested` storage assembles a tensor for `modes` velocity modes on
+/// `velocityDofs` faces (auto: see the file comment; availableMemory() is read).
+bool assemblesTensor(CoefficientStorage requested, int modes, std::int64_t velocityDofs);
+
+/// The coefficients a cache stores for `requested` from the packed k < j tensor: dense or
+/// sparse as requested, or by density for auto (entries below 1e-12 · max |C| count as zero).
+BasisCache::Coefficients storedCoefficients(CoefficientStorage requested, std::vector<double> packed,
+                                            int modes);
+
+/// A cache assembled without a tensor that is now wanted dense or sparse gets one, assembled from
+/// its quadrature and modes (a "structural coefficients" stage on `progress`); true when it did.
+/// Auto and tensor-free take the cache as it is.
+bool completeCoefficients(BasisCache& cache, CoefficientStorage requested, Progress& progress);
+
+}  // namespace modeflow
