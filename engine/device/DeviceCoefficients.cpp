@@ -9,6 +9,7 @@
 #include "engine/dynamics/DenseCoefficients.h"
 #include "engine/core/PackedLayout.h"
 #include "engine/dynamics/SparseCoefficients.h"
+#include "engine/dynamics/TensorFreeCoefficients.h"
 #include "engine/core/Error.h"
 #include "engine/device/ModalKernels.h"
 #include "engine/vulkan/CommandSequence.h"
@@ -36,12 +37,20 @@ std::uint32_t groupsFor(std::size_t items, std::size_t perGroup, std::uint32_t m
 }  // namespace
 
 DeviceCoefficients::DeviceCoefficients(const vulkan::VulkanContext& context,
-                                       const StructuralCoefficients& coefficients)
+                                       const StructuralCoefficients& coefficients, const BasisCache* cache,
+                                       const ModeBuffer* modes)
     : mN(coefficients.size()),
       mSubgroupsPerGroup(std::max(1u, 64u / context.subgroupSize())),
       mMaxGroups(context.properties().limits.maxComputeWorkGroupCount[0]) {
     if (mN < 2) throw Error("modal contraction: needs at least 2 modes, got " + std::to_string(mN));
     const std::size_t n = std::size_t(mN);
+    if (dynamic_cast<const TensorFreeCoefficients*>(&coefficients)) {
+        if (!cache || cache->velocity.modes.cols() != mN)
+            throw Error("modal contraction: tensor-free coefficients on the device need their basis cache");
+        mTensorFree.emplace(context, *cache, modes);
+        mStreamedBytes = mTensorFree->streamedBytes();
+        return;
+    }
     // Zero first: sparse storage leaves the sums of pairs without entries untouched.
     mPairSums.emplace(vulkan::DeviceBuffer::fromValues<float>(
         context, std::vector<float>(pairCount(n), 0.0f), "pair sums"));
@@ -81,7 +90,7 @@ DeviceCoefficients::DeviceCoefficients(const vulkan::VulkanContext& context,
         mSparse.emplace(slicedRows(context, *sparse));
         mStreamedBytes = (sparse->nonZeros() + sparse->pairK().size()) * 8;
     } else {
-        throw Error("modal contraction: the device takes dense or sparse coefficients only");
+        throw Error("modal contraction: the device takes dense, sparse or tensor-free coefficients only");
     }
 }
 
@@ -125,6 +134,7 @@ DeviceCoefficients::SparseRows DeviceCoefficients::slicedRows(const vulkan::Vulk
 }
 
 std::vector<std::uint32_t> DeviceCoefficients::dispatchGroups() const {
+    if (mTensorFree) return mTensorFree->dispatchGroups();
     std::vector<std::uint32_t> groups;
     if (mSparse) groups.push_back(groupsFor(mSparse->rowCount, 64, mMaxGroups));
     for (const Chunk& chunk : mChunks)
@@ -140,16 +150,15 @@ void DeviceCoefficients::recordApply(vulkan::CommandSequence& sequence, const Mo
     requireFloats(a, int(paddedSize(mN)));
     requireFloats(b, mN);
     requireFloats(out, mN);
+    if (mTensorFree) {
+        mTensorFree->recordApply(sequence, a, b, out, indirect);
+        return;
+    }
     const std::vector<std::uint32_t> groups = dispatchGroups();
-    std::size_t d = 0;
+    std::uint32_t d = 0;
     const auto dispatch = [&](const vulkan::ComputeKernel& kernel,
                               std::span<const vulkan::DeviceBuffer* const> buffers, const auto& params) {
-        if (indirect.buffer)
-            sequence.dispatchIndirect(
-                kernel, buffers, params, *indirect.buffer,
-                VkDeviceSize(indirect.first + d) * sizeof(VkDispatchIndirectCommand));
-        else
-            sequence.dispatch(kernel, buffers, params, groups[d]);
+        indirect.after(d).dispatch(sequence, kernel, buffers, params, groups[d]);
         ++d;
     };
     const auto n = std::uint32_t(mN);

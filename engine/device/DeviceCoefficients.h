@@ -9,11 +9,16 @@
 /// has the layout and why) and split into chunks of whole tiles when they exceed the device's
 /// buffer limit (VulkanContext::texelBufferLimit; lavapipe: 128 MiB, i.e. N ≳ 400); sparse ones
 /// are uploaded in slices of PAIR_TILE_LANES rows (shaders/modal_pair_sums_sparse.comp).
+/// Tensor-free coefficients store nothing: the contraction runs TensorFreeAdvection's kernels on
+/// the basis and the quadrature.
 
 #include <cstdint>
 #include <optional>
 #include <vector>
 
+#include "engine/device/IndirectArguments.h"
+#include "engine/device/TensorFreeAdvection.h"
+#include "engine/format/BasisCache.h"
 #include "engine/vulkan/DeviceBuffer.h"
 
 namespace modeflow {
@@ -30,13 +35,6 @@ namespace modeflow::device {
 
 struct ModalKernels;
 
-/// Where a contraction takes its group counts from: nullptr for fixed counts, or a buffer of
-/// VkDispatchIndirectCommand whose entry `first` (and the next ones) the device may have zeroed.
-struct IndirectArguments {
-    const vulkan::DeviceBuffer* buffer = nullptr;
-    std::uint32_t first = 0;
-};
-
 /// Floats of a modal vector buffer: N rounded up to a multiple of 8. The pair-sum kernel reads
 /// rows and the vector `a` eight floats per load (lavapipe turns each load into a per-lane
 /// access, so wider loads are what gets it near memory bandwidth); rows and vectors are
@@ -47,13 +45,18 @@ constexpr std::size_t paddedSize(int n) {
 
 class DeviceCoefficients {
 public:
-    /// Uploads `coefficients` (DenseCoefficients or SparseCoefficients) rounded to float32.
+    /// Uploads `coefficients` (DenseCoefficients or SparseCoefficients) rounded to float32; for
+    /// TensorFreeCoefficients, the tables of TensorFreeAdvection for `cache` (required then, and
+    /// `modes` as TensorFreeAdvection takes it).
     /// @throw modeflow::Error for another storage, fewer than 2 modes, a single pair row or the
-    /// sparse arrays above the storage buffer limit, or a failed allocation.
-    DeviceCoefficients(const vulkan::VulkanContext& context, const StructuralCoefficients& coefficients);
+    /// sparse arrays above the storage buffer limit, tensor-free coefficients without their
+    /// cache, or a failed allocation.
+    DeviceCoefficients(const vulkan::VulkanContext& context, const StructuralCoefficients& coefficients,
+                       const BasisCache* cache = nullptr, const ModeBuffer* modes = nullptr);
 
     int size() const { return mN; }
     bool isSparse() const { return mSparse.has_value(); }
+    bool isTensorFree() const { return mTensorFree.has_value(); }
     std::size_t chunkCount() const { return mChunks.size(); }
     /// Bytes of coefficient data (values and indices) one contraction reads; sparse: as CSR,
     /// 8 bytes per entry and per row (the slices' padding not counted).
@@ -89,6 +92,7 @@ private:
     std::uint32_t mMaxGroups = 1;
     std::vector<Chunk> mChunks;
     std::optional<SparseRows> mSparse;
+    std::optional<TensorFreeAdvection> mTensorFree;
     std::optional<vulkan::DeviceBuffer> mPairSums;
     std::size_t mStreamedBytes = 0;
 };

@@ -49,11 +49,12 @@ std::vector<std::uint32_t> iterationGroups(const DeviceCoefficients& coefficient
 }  // namespace
 
 ModalStepper::ModalStepper(const vulkan::VulkanContext& context, const StructuralCoefficients& coefficients,
-                           const FluidParameters& parameters, DeviceStepSettings settings)
+                           const FluidParameters& parameters, DeviceStepSettings settings,
+                           const BasisCache* cache, const ModeBuffer* modes)
     : mContext(context),
       mSettings(checked(settings)),
       mKernels(context),
-      mCoefficients(context, coefficients),
+      mCoefficients(context, coefficients, cache, modes),
       mApplyDispatches(std::uint32_t(mCoefficients.dispatchGroups().size())),
       mState(floats(context, coefficients.size(), "modal state")),
       mPoint(floats(context, coefficients.size(), "modal evaluation point")),

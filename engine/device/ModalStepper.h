@@ -50,11 +50,14 @@ struct DeviceStepStatus {
 class ModalStepper final : public ModalStepping {
 public:
     /// The decay rates νκ² and mass 1 + α²κ² come from `parameters` as in FluidSystem. The
-    /// coefficients are uploaded; `coefficients` need not outlive the stepper.
+    /// coefficients are uploaded; `coefficients` need not outlive the stepper. Tensor-free
+    /// coefficients need their `cache` (and take `modes`, the basis already on the device, as
+    /// DeviceCoefficients says; both must outlive the stepper).
     /// @throw modeflow::Error for the trapezoidal scheme, bad settings or parameters, or a
     /// device error.
     ModalStepper(const vulkan::VulkanContext& context, const StructuralCoefficients& coefficients,
-                 const FluidParameters& parameters, DeviceStepSettings settings = {});
+                 const FluidParameters& parameters, DeviceStepSettings settings = {},
+                 const BasisCache* cache = nullptr, const ModeBuffer* modes = nullptr);
 
     int size() const { return mCoefficients.size(); }
     const DeviceStepSettings& settings() const { return mSettings; }

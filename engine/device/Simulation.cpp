@@ -35,9 +35,9 @@ Simulation::Simulation(const vulkan::VulkanContext& context, const BasisCache& c
                        const StructuralCoefficients& coefficients, SimulationSettings settings,
                        std::span<const std::uint8_t> smokeMask, bool timestamps)
     : mSettings(supported(std::move(settings))),
-      mStepper(context, coefficients, mSettings.fluid,
-               DeviceStepSettings{mSettings.integrator}),
       mModes(context, cache.velocity.modes, mSettings.basisPrecision),
+      mStepper(context, coefficients, mSettings.fluid, DeviceStepSettings{mSettings.integrator}, &cache,
+               mSettings.basisPrecision == ModePrecision::Float32 ? &mModes : nullptr),
       mReconstruction(context, cache),
       mFaceVelocity(mReconstruction.makeFaceField("grid velocity")),
       mForceField(context, cache, mSettings.smokeScale),

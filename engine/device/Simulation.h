@@ -68,8 +68,8 @@ private:
     bool forcesActive() const { return mSettings.buoyancy != 0.0 || mForceField.splatCount() > 0; }
 
     SimulationSettings mSettings;
-    ModalStepper mStepper;
     ModeBuffer mModes;
+    ModalStepper mStepper;
     ReconstructionKernel mReconstruction;
     vulkan::DeviceBuffer mFaceVelocity;
     ForceFieldKernel mForceField;

@@ -60,7 +60,7 @@ std::unique_ptr<ModalStepping> Backend::makeModalStepper(const RunInputs& run, I
     std::unique_ptr<ModalStepping> stepper;
     if (mKind == BackendKind::Vulkan) {
         stepper = std::make_unique<device::ModalStepper>(*mContext, *run.coefficients, run.settings.fluid,
-                                                         device::DeviceStepSettings{scheme});
+                                                         device::DeviceStepSettings{scheme}, &run.cache);
         stepper->setState(run.initialVelocity);
     } else {
         SimulationSettings settings = run.settings;

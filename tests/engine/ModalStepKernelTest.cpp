@@ -1,7 +1,8 @@
 /// @file ModalStepKernelTest.cpp
 /// ModalStepper (the modal step on the device, float32) against the double-precision CPU
 /// reference ModalIntegrator: single steps of every scheme with forces, viscosity and LANS-α;
-/// trajectories; midpoint energy conservation; convergence reporting; split coefficients.
+/// tensor-free coefficients; trajectories; midpoint energy conservation; convergence reporting;
+/// split coefficients.
 
 #include <cmath>
 #include <memory>
@@ -12,11 +13,14 @@
 #include "engine/dynamics/Diagnostics.h"
 #include "engine/dynamics/ModalIntegrator.h"
 #include "engine/dynamics/SparseCoefficients.h"
+#include "engine/dynamics/TensorFreeCoefficients.h"
 #include "engine/core/Error.h"
 #include "engine/device/ModalStepper.h"
 #include "engine/vulkan/CommandSequence.h"
 #include "precompute/scene/SceneLoader.h"
+#include "tests/support/KernelTestSupport.h"
 #include "tests/support/RandomCoefficients.h"
+#include "tests/support/RealBases.h"
 #include "tests/support/VulkanTestContext.h"
 
 namespace modeflow {
@@ -103,6 +107,39 @@ TEST_P(ModalStepKernelTest, SparseCoefficientsStepLikeDenseOnes) {
             runDevice(context(), *stepper, h, 5);
         }
         EXPECT_LE(relativeDifference(fromSparse.state(), fromDense.state()), 1e-6);
+    }
+}
+
+TEST_P(ModalStepKernelTest, TensorFreeCoefficientsStepLikeTheCpuReference) {
+    // A real basis (the quadrature lives in it), its modes as the device holds them.
+    const BasisCache cache = testing::withDeviceModes(testing::disk2d(), ModePrecision::Float32);
+    const TensorFreeCoefficients c(cache.velocity.modes, cache.quadrature);
+    const int n = c.size();
+    FluidParameters lans;
+    lans.kappaSquared = cache.velocity.eigenvalues;
+    lans.viscosity = 1e-3;
+    lans.alpha = 0.05;
+    const Eigen::VectorXd v0 = roundedToFloat(testing::randomVector(n, 14));
+    const double h = stepFor(c, v0, 0.05);
+    for (const FluidParameters& parameters : {FluidParameters{}, lans}) {
+        const FluidSystem system(c, parameters);
+        for (const Integrator scheme : {Integrator::Explicit, Integrator::Rk4, Integrator::Midpoint}) {
+            ModalIntegrator cpu(system, {scheme});
+            Eigen::VectorXd expected = v0;
+            for (int s = 0; s < 20; ++s) cpu.step(expected, h);
+            {
+                ModalStepper stepper(context(), c, parameters, {scheme}, &cache);
+                ASSERT_TRUE(stepper.coefficients().isTensorFree());
+                stepper.setState(v0);
+                stepper.setForce(Eigen::VectorXd::Zero(n));
+                runDevice(context(), stepper, h, 20);
+                const double error = relativeDifference(stepper.state(), expected);
+                std::cout << sceneKeyword(scheme) << (parameters.alpha > 0 ? " viscous LANS" : " Euler")
+                          << ", tensor-free, 20 steps: relative error " << error << "\n";
+                EXPECT_LE(error, 1e-5) << sceneKeyword(scheme);
+            }
+            expectNoValidationMessages();
+        }
     }
 }
 

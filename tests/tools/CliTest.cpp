@@ -140,6 +140,13 @@ TEST_F(Cli, TensorFreeScenesStoreNoTensorAndRunLikeDenseOnes) {
             worst = std::max(worst, std::abs(got.rows[r][c] - want.rows[r][c]) /
                                         std::max(1.0, std::abs(want.rows[r][c])));
     EXPECT_LT(worst, 1e-10) << "largest difference in the modes table";
+
+    const RunResult device = run("modes " + free.string() + freeCache + steps + " --device vulkan");
+    ASSERT_EQ(device.status, 0) << device.err;
+    const std::vector<double> expected = csvEnergies(a.out), energies = csvEnergies(device.out);
+    ASSERT_EQ(energies.size(), expected.size());
+    for (std::size_t step = 0; step < energies.size(); ++step)
+        EXPECT_NEAR(energies[step] / expected[step], 1.0, 1e-5) << "step " << step << " on the device";
 }
 
 TEST_F(Cli, HelpDescribesEverySubcommand) {
