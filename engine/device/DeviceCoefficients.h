@@ -47,12 +47,14 @@ class DeviceCoefficients {
 public:
     /// Uploads `coefficients` (DenseCoefficients or SparseCoefficients) rounded to float32; for
     /// TensorFreeCoefficients, the tables of TensorFreeAdvection for `cache` (required then, and
-    /// `modes` as TensorFreeAdvection takes it).
+    /// `modes` as TensorFreeAdvection takes it). `advection`: also what recordAdvect needs (the
+    /// dense pair weights and partial sums, the sparse entries by column).
     /// @throw modeflow::Error for another storage, fewer than 2 modes, a single pair row or the
     /// sparse arrays above the storage buffer limit, tensor-free coefficients without their
     /// cache, or a failed allocation.
     DeviceCoefficients(const vulkan::VulkanContext& context, const StructuralCoefficients& coefficients,
-                       const BasisCache* cache = nullptr, const ModeBuffer* modes = nullptr);
+                       const BasisCache* cache = nullptr, const ModeBuffer* modes = nullptr,
+                       bool advection = false);
 
     int size() const { return mN; }
     bool isSparse() const { return mSparse.has_value(); }
@@ -65,6 +67,14 @@ public:
     /// Group counts of the dispatches recordApply makes, in order (pair-sum dispatches, then
     /// combine): what an IndirectArguments buffer must hold.
     std::vector<std::uint32_t> dispatchGroups() const;
+
+    /// Group counts of the dispatches recordAdvect makes, in order.
+    std::vector<std::uint32_t> advectGroups() const;
+    /// Records out_k = Σ_ij C[j][k][i] x_i u_j (StructuralCoefficients::advect; MHD's induction).
+    /// @throw modeflow::Error unless constructed with `advection`, or for buffers too small.
+    void recordAdvect(vulkan::CommandSequence& sequence, const ModalKernels& kernels, const vulkan::DeviceBuffer& u,
+                      const vulkan::DeviceBuffer& x, const vulkan::DeviceBuffer& out,
+                      IndirectArguments indirect = {}) const;
 
     /// Records out = C(a, b) (dispatchGroups().size() dispatches).
     /// @throw modeflow::Error if `a` holds fewer than paddedSize(N) floats (zeros past N) or b, out
@@ -91,7 +101,28 @@ private:
     std::uint32_t mSubgroupsPerGroup = 1;
     std::uint32_t mMaxGroups = 1;
     std::vector<Chunk> mChunks;
+    /// The dense advection's partial sums: rows of 8·rowOctets floats, per chunk `groups` rows
+    /// of `tilesPerGroup` tiles each, from row `firstGroup`.
+    struct AdvectionGroups {
+        std::uint32_t firstGroup = 0, groups = 0, tilesPerGroup = 0;
+    };
+    struct DenseAdvection {
+        vulkan::DeviceBuffer weights;  ///< one per pair
+        vulkan::DeviceBuffer partial;
+        std::vector<AdvectionGroups> chunks;
+        std::uint32_t rows = 0;
+    };
+    /// The sparse entries by column i: (k, j, value bits, 0) from columnStart[i].
+    struct SparseColumns {
+        vulkan::DeviceBuffer start;
+        vulkan::DeviceBuffer entries;
+    };
+    static SparseColumns sparseColumns(const vulkan::VulkanContext& context, const SparseCoefficients& sparse);
+    DenseAdvection denseAdvection(const vulkan::VulkanContext& context) const;
+
     std::optional<SparseRows> mSparse;
+    std::optional<DenseAdvection> mDenseAdvection;
+    std::optional<SparseColumns> mSparseColumns;
     std::optional<TensorFreeAdvection> mTensorFree;
     std::optional<vulkan::DeviceBuffer> mPairSums;
     std::size_t mStreamedBytes = 0;

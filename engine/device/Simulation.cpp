@@ -6,17 +6,16 @@
 
 #include "engine/core/Error.h"
 #include "engine/dynamics/ModalDivergence.h"
-#include "engine/simulation/BackendCapabilities.h"
 
 namespace modeflow::device {
 namespace {
 
 constexpr int kMaxSubsteps = 16;
 
-/// The device's row of the capability table, checked before any upload.
+/// What the device cannot run, checked before any upload.
 SimulationSettings supported(SimulationSettings settings) {
-    if (settings.mhd && !capabilitiesOf(BackendKind::Vulkan).mhd)
-        throw Error("[simulation].mhd runs on the CPU reference only; use --device cpu");
+    if (settings.mhd && settings.fluid.alpha > 0.0)
+        throw Error("simulation: LANS-alpha and MHD cannot be combined");
     return settings;
 }
 
@@ -36,7 +35,7 @@ Simulation::Simulation(const vulkan::VulkanContext& context, const BasisCache& c
                        std::span<const std::uint8_t> smokeMask, bool timestamps)
     : mSettings(supported(std::move(settings))),
       mModes(context, cache.velocity.modes, mSettings.basisPrecision),
-      mStepper(context, coefficients, mSettings.fluid, DeviceStepSettings{mSettings.integrator}, &cache,
+      mStepper(context, coefficients, modelOf(mSettings), DeviceStepSettings{mSettings.integrator}, &cache,
                mSettings.basisPrecision == ModePrecision::Float32 ? &mModes : nullptr),
       mReconstruction(context, cache),
       mFaceVelocity(mReconstruction.makeFaceField("grid velocity")),
@@ -53,7 +52,7 @@ Simulation::Simulation(const vulkan::VulkanContext& context, const BasisCache& c
 }
 
 void Simulation::restore(double time, const Eigen::VectorXd& v, const SmokeFields& smoke) {
-    mStepper.setState(v);
+    mStepper.setVelocity(v);
     const std::vector<float> density(smoke.density.begin(), smoke.density.end()),
         temperature(smoke.temperature.begin(), smoke.temperature.end());
     mSmoke.upload(density, temperature);
@@ -77,7 +76,9 @@ void Simulation::setObstacles(std::vector<MovingObstacle> obstacles) {
 void Simulation::setViscosity(double viscosity) {
     FluidParameters fluid = mSettings.fluid;
     fluid.viscosity = viscosity;
-    mStepper.setParameters(fluid);
+    SimulationSettings settings = mSettings;
+    settings.fluid = fluid;
+    mStepper.setParameters(modelOf(settings));
     mSettings.fluid = std::move(fluid);
 }
 
@@ -153,6 +154,20 @@ FrameStats Simulation::advanceSteps(int steps) {
                 *stages[stage] += times[d];
     }
     return stats;
+}
+
+Eigen::VectorXd Simulation::magneticField() const {
+    return mSettings.mhd ? mStepper.magneticField() : Eigen::VectorXd();
+}
+
+std::vector<double> Simulation::faceMagneticField() const {
+    if (!mSettings.mhd) return {};
+    const vulkan::DeviceBuffer field = mReconstruction.makeFaceField("magnetic face field");
+    mReconstruction.record(mSequence, mModes, mStepper.magneticFieldBuffer(), field);
+    mSequence.submitAndWait();
+    std::vector<float> faces(std::size_t(mReconstruction.grid().faceTotal()));
+    field.download<float>(faces);
+    return widened(faces);
 }
 
 SmokeFields Simulation::smoke() const {

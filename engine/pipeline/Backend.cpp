@@ -43,7 +43,6 @@ std::string Backend::describe() const {
 }
 
 std::unique_ptr<Simulator> Backend::makeSimulator(const RunInputs& run, bool stageTimes) const {
-    requireSupport(run.scene, mKind);
     std::unique_ptr<Simulator> simulator;
     if (mKind == BackendKind::Vulkan)
         simulator = std::make_unique<device::Simulation>(*mContext, run.cache, *run.coefficients, run.settings,
@@ -56,12 +55,13 @@ std::unique_ptr<Simulator> Backend::makeSimulator(const RunInputs& run, bool sta
 }
 
 std::unique_ptr<ModalStepping> Backend::makeModalStepper(const RunInputs& run, Integrator scheme) const {
-    requireSupport(run.scene, mKind, scheme);
     std::unique_ptr<ModalStepping> stepper;
     if (mKind == BackendKind::Vulkan) {
-        stepper = std::make_unique<device::ModalStepper>(*mContext, *run.coefficients, run.settings.fluid,
-                                                         device::DeviceStepSettings{scheme}, &run.cache);
-        stepper->setState(run.initialVelocity);
+        auto device = std::make_unique<device::ModalStepper>(*mContext, *run.coefficients, device::modelOf(run.settings),
+                                                             device::DeviceStepSettings{scheme}, &run.cache);
+        device->setVelocity(run.initialVelocity);
+        if (run.settings.mhd) device->setMagneticField(run.initialMagneticField);
+        stepper = std::move(device);
     } else {
         SimulationSettings settings = run.settings;
         settings.integrator = scheme;

@@ -134,6 +134,44 @@ TEST_P(SimulationTest, TensorFreeRunFollowsTheCpuReference) {
     expectNoValidationMessages();
 }
 
+TEST_P(SimulationTest, MhdRunFollowsTheCpuReference) {
+    SceneSpec scene = hotScene(2);
+    scene.simulation.mhd = true;
+    scene.simulation.magneticDiffusivity = 1e-3;
+    const RunInputs disk = testing::sharedRun(scene);
+    {
+        device::Simulation device(context(), disk.cache, *disk.coefficients, disk.settings, disk.smokeMask);
+        reference::Simulation cpu(disk.cache, *disk.coefficients, disk.settings, disk.smokeMask);
+        RandomVelocitySpec swirl;
+        swirl.energy = 0.05;
+        const Eigen::VectorXd v0 = randomVelocity(disk.coefficients->size(), swirl);
+        swirl.seed += 1;
+        const Eigen::VectorXd f0 = randomVelocity(disk.coefficients->size(), swirl);
+        for (Simulator* s : std::initializer_list<Simulator*>{&device, &cpu}) {
+            s->setVelocity(v0);
+            s->setMagneticField(f0);
+        }
+        for (int frame = 0; frame < 4; ++frame) {
+            device.advanceFrame();
+            cpu.advanceFrame();
+        }
+        const auto relative = [](const Eigen::VectorXd& got, const Eigen::VectorXd& want) {
+            return (got - want).lpNorm<Eigen::Infinity>() / want.lpNorm<Eigen::Infinity>();
+        };
+        const double velocityError = relative(device.velocity(), cpu.velocity());
+        const double fieldError = relative(device.magneticField(), cpu.magneticField());
+        const double faceError = maxDifference(device.faceMagneticField(), cpu.faceMagneticField()) /
+                                 maxAbs(cpu.faceMagneticField());
+        std::cout << "2D MHD, 20 steps: relative max differences: velocity " << velocityError << ", field "
+                  << fieldError << ", field on the faces " << faceError << "\n";
+        EXPECT_GT(relative(cpu.magneticField(), f0), 1e-3) << "the field hardly moved: a weak test";
+        EXPECT_LE(velocityError, 1e-4);
+        EXPECT_LE(fieldError, 1e-4);
+        EXPECT_LE(faceError, 1e-4);
+    }
+    expectNoValidationMessages();
+}
+
 TEST_P(SimulationTest, TimingSamplesOnlyTheStepsAskedFor) {
     const auto& disk = hotDisk();
     const SimulationSettings settings = disk.settings;

@@ -190,25 +190,11 @@ inline SceneUnderTest sceneUnderTest(const fs::path& relative, const fs::path& f
     return chosen;
 }
 
-/// The backends that run `scene`, and for each the refusal of the others (empty when it runs).
-struct BackendVerdict {
-    BackendKind kind;
-    std::string option;                 ///< "cpu", "vulkan"
-    std::optional<std::string> refusal;  ///< requireSupport's message
-};
-
-inline std::vector<BackendVerdict> backendVerdicts(const SceneSpec& scene) {
-    std::vector<BackendVerdict> verdicts;
-    for (BackendKind kind : {BackendKind::CpuReference, BackendKind::Vulkan}) {
-        BackendVerdict v{kind, std::string(capabilitiesOf(kind).option), std::nullopt};
-        try {
-            requireSupport(scene, kind);
-        } catch (const Error& e) {
-            v.refusal = e.what();
-        }
-        verdicts.push_back(v);
-    }
-    return verdicts;
+/// The --device values of the backends, every one of which runs every scene.
+inline std::vector<std::string> backendOptions() {
+    std::vector<std::string> options;
+    for (BackendKind kind : kBackends) options.emplace_back(capabilitiesOf(kind).option);
+    return options;
 }
 
 }  // namespace modeflow::testing

@@ -297,10 +297,15 @@ TEST_F(Cli, ModesRunsOnTheVulkanDeviceLikeTheCpuReference) {
     for (std::size_t step = 0; step < got.size(); ++step)
         EXPECT_NEAR(got[step] / expected[step], 1.0, 1e-5) << "step " << step;
 
-    const RunResult trapezoidal = run("modes " + s.string() + " --cache-dir " + mCache.string() +
-                                      " --steps 2 --integrator trapezoidal --device vulkan");
-    EXPECT_NE(trapezoidal.status, 0);
-    EXPECT_NE(trapezoidal.err.find("CPU reference only"), std::string::npos) << trapezoidal.err;
+    const std::string trapezoidal = " --cache-dir " + mCache.string() + " --steps 50 --dt 0.02 --integrator trapezoidal --csv";
+    const RunResult cpuTrapezoidal = run("modes " + s.string() + trapezoidal);
+    const RunResult gpuTrapezoidal = run("modes " + s.string() + trapezoidal + " --device vulkan");
+    ASSERT_EQ(cpuTrapezoidal.status, 0) << cpuTrapezoidal.err;
+    ASSERT_EQ(gpuTrapezoidal.status, 0) << gpuTrapezoidal.err;
+    const std::vector<double> wanted = csvEnergies(cpuTrapezoidal.out), energies = csvEnergies(gpuTrapezoidal.out);
+    ASSERT_EQ(energies.size(), wanted.size());
+    for (std::size_t step = 0; step < energies.size(); ++step)
+        EXPECT_NEAR(energies[step] / wanted[step], 1.0, 1e-5) << "trapezoidal, step " << step;
 }
 
 TEST_F(Cli, ModesStartsFromVorticesAndFromModalAmplitudes) {
@@ -372,6 +377,15 @@ TEST_F(Cli, ModesRunsMhdConservingEnergyAndCrossHelicity) {
     for (const auto& row : rows) {
         EXPECT_NEAR(row[2], rows[0][2], 1e-12);
         EXPECT_NEAR(row[4], rows[0][4], 1e-12) << "cross helicity";
+    }
+    const RunResult device = run("modes " + s.string() + " --cache-dir " + mCache.string() +
+                                 " --steps 100 --dt 0.05 --integrator midpoint --csv --device vulkan");
+    ASSERT_EQ(device.status, 0) << device.err;
+    const Csv onDevice = parseCsv(device.out);
+    ASSERT_EQ(onDevice.rows.size(), rows.size());
+    for (std::size_t step = 0; step < rows.size(); ++step) {
+        EXPECT_NEAR(onDevice.rows[step][2], rows[step][2], 1e-5) << "energy on the device, step " << step;
+        EXPECT_NEAR(onDevice.rows[step][4], rows[step][4], 1e-5) << "cross helicity on the device, step " << step;
     }
 }
 

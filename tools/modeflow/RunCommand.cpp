@@ -72,7 +72,6 @@ Command addRun(CLI::App& app) {
         // Everything that can be refused is checked before any precompute or simulation work.
         const BackendChoice choice = parseDeviceOption(opts->device);
         const SceneSpec scene = loadScene(opts->scene);
-        requireSupport(scene, choice.kind);
         const RunMemory memory = requireRunMemory(scene, choice.kind);
         const int frames = opts->frames.value_or(scene.output.frames);
         const std::filesystem::path out = opts->out.value_or(scene.name + "_frames");

@@ -47,7 +47,6 @@ Command addStir(CLI::App& app) {
         // Everything that can be refused is checked before the precompute or the window.
         const BackendChoice choice = parseDeviceOption(opts->device);
         const SceneSpec scene = loadScene(opts->scene);
-        requireSupport(scene, choice.kind);
         stir::StirOptions options;
         options.backend = choice;
         options.frames = opts->frames;
