@@ -224,8 +224,8 @@ void DeviceCoefficients::recordAdvect(vulkan::CommandSequence& sequence, const M
                                shaders::AdvectSumParams{n, mDenseAdvection->rows, 8 * octets, 0}, groups[d]);
 }
 
-std::vector<std::uint32_t> DeviceCoefficients::dispatchGroups() const {
-    if (mTensorFree) return mTensorFree->dispatchGroups();
+std::vector<std::uint32_t> DeviceCoefficients::dispatchGroups(bool sameVectors) const {
+    if (mTensorFree) return mTensorFree->dispatchGroups(sameVectors);
     std::vector<std::uint32_t> groups;
     if (mSparse) groups.push_back(groupsFor(mSparse->rowCount, 64, mMaxGroups));
     for (const Chunk& chunk : mChunks)
@@ -245,7 +245,7 @@ void DeviceCoefficients::recordApply(vulkan::CommandSequence& sequence, const Mo
         mTensorFree->recordApply(sequence, a, b, out, indirect);
         return;
     }
-    const std::vector<std::uint32_t> groups = dispatchGroups();
+    const std::vector<std::uint32_t> groups = dispatchGroups(&a == &b);
     std::uint32_t d = 0;
     const auto dispatch = [&](const vulkan::ComputeKernel& kernel,
                               std::span<const vulkan::DeviceBuffer* const> buffers, const auto& params) {

@@ -66,7 +66,8 @@ public:
 
     /// Group counts of the dispatches recordApply makes, in order (pair-sum dispatches, then
     /// combine): what an IndirectArguments buffer must hold.
-    std::vector<std::uint32_t> dispatchGroups() const;
+    /// `sameVectors`: recordApply's a and b are one buffer (tensor-free: one reconstruction).
+    std::vector<std::uint32_t> dispatchGroups(bool sameVectors = false) const;
 
     /// Group counts of the dispatches recordAdvect makes, in order.
     std::vector<std::uint32_t> advectGroups() const;

@@ -75,10 +75,14 @@ ModalStepper::ModalStepper(const vulkan::VulkanContext& context, const Structura
         mInduction.emplace(part(mRhs, 1, "induction"));
         mLorentzForce.emplace(part(mRhs, 2, "Lorentz force"));
     }
+    buildArguments();
+}
+
+void ModalStepper::buildArguments() {
     std::vector<std::uint32_t> groups = evaluationGroups();
     mEvaluationDispatches = std::uint32_t(groups.size());
     groups.push_back(1);  // modal_update
-    mArguments = vulkan::DeviceBuffer::fromValues<std::uint32_t>(context, indirectArguments(groups),
+    mArguments = vulkan::DeviceBuffer::fromValues<std::uint32_t>(mContext, indirectArguments(groups),
                                                                  "modal indirect arguments");
 }
 
@@ -93,7 +97,9 @@ void ModalStepper::uploadModel(const DeviceModel& model) {
                     " for a stepper of " + (mMhd ? "MHD" : "a fluid"));
     const int n = size();
     if (const auto* fluid = std::get_if<FluidParameters>(&model)) {
-        upload(mMass, FluidSystem::massOf(*fluid, n), 0, "mass");
+        const Eigen::VectorXd mass = FluidSystem::massOf(*fluid, n);
+        mFiltered = (mass.array() != 1.0).any();
+        upload(mMass, mass, 0, "mass");
         upload(mDecay, FluidSystem::decayRatesOf(*fluid, n), 0, "decay rates");
         return;
     }
@@ -131,7 +137,10 @@ void ModalStepper::setScheme(Integrator scheme) {
     mSettings = checked(settings);
 }
 
-void ModalStepper::setParameters(const DeviceModel& model) { uploadModel(model); }
+void ModalStepper::setParameters(const DeviceModel& model) {
+    uploadModel(model);
+    buildArguments();  // the contraction's dispatches follow the mass (C(Mv, v) or C(v, v))
+}
 
 void ModalStepper::setState(const Eigen::VectorXd& x) {
     if (x.size() != dimension())
@@ -178,7 +187,7 @@ DeviceStepStatus ModalStepper::status() const {
 }
 
 std::vector<std::uint32_t> ModalStepper::evaluationGroups() const {
-    std::vector<std::uint32_t> groups = mCoefficients.dispatchGroups();
+    std::vector<std::uint32_t> groups = mCoefficients.dispatchGroups(!mFiltered);
     if (!mMhd) return groups;
     const std::vector<std::uint32_t> apply = groups, advect = mCoefficients.advectGroups();
     if (mLorentz) groups.insert(groups.end(), apply.begin(), apply.end());
@@ -188,11 +197,12 @@ std::vector<std::uint32_t> ModalStepper::evaluationGroups() const {
 
 void ModalStepper::recordEvaluation(vulkan::CommandSequence& sequence, IndirectArguments indirect) const {
     if (!mMhd) {
-        mCoefficients.recordApply(sequence, mKernels, mWeighted, mPoint, mRhs, indirect);
+        // C(My, y); with a mass of 1 both are y, which the tensor-free contraction reconstructs once.
+        mCoefficients.recordApply(sequence, mKernels, mFiltered ? mWeighted : mPoint, mPoint, mRhs, indirect);
         return;
     }
     // r = [C(v, v); advect(v, F); C(F, F)] at y = [v; F] (the mass is 1).
-    const auto apply = std::uint32_t(mCoefficients.dispatchGroups().size());
+    const auto apply = std::uint32_t(mCoefficients.dispatchGroups(true).size());
     mCoefficients.recordApply(sequence, mKernels, mPoint, mPoint, mRhs, indirect);
     std::uint32_t d = apply;
     if (mLorentz) {

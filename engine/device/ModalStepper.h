@@ -129,6 +129,8 @@ private:
     Eigen::VectorXd download(const vulkan::DeviceBuffer& buffer, int part) const;
     /// Mass and decay rates of `model` as state-shaped float vectors.
     void uploadModel(const DeviceModel& model);
+    /// The indirect arguments of an implicit iteration (its dispatches' group counts, twice).
+    void buildArguments();
     /// A part of `whole`, as the contractions bind it.
     vulkan::DeviceBuffer part(const vulkan::DeviceBuffer& whole, int index, const char* name) const;
 
@@ -136,6 +138,7 @@ private:
     DeviceStepSettings mSettings;
     bool mMhd = false;
     bool mLorentz = false;
+    bool mFiltered = false;  ///< a fluid whose mass is not 1 (LANS-α): C(Mv, v), else C(v, v)
     std::uint32_t mStride = 0;  ///< floats per part of the state
     std::uint32_t mParts = 1;
     /// The submission of standalone steps, made by the first step().

@@ -142,9 +142,9 @@ std::size_t TensorFreeAdvection::streamedBytes() const {
            mApplyGather.rowStart.bytes() + mApplyGather.entries.bytes();
 }
 
-std::vector<std::uint32_t> TensorFreeAdvection::dispatchGroups() const {
+std::vector<std::uint32_t> TensorFreeAdvection::dispatchGroups(bool sameVectors) const {
     std::vector<std::uint32_t> groups = mReconstruction.dispatchGroups(*mModes);
-    groups.insert(groups.end(), groups.begin(), groups.end());  // a, then b
+    if (!sameVectors) groups.insert(groups.end(), groups.begin(), groups.end());  // a, then b
     groups.push_back(groupsFor(mContext, mElementCount, kWorkgroup));
     groups.push_back(groupsFor(mContext, mDofCount, kWorkgroup));
     const std::vector<std::uint32_t> projection = mProjection.dispatchGroups(*mModes);
@@ -167,12 +167,14 @@ void TensorFreeAdvection::recordAdvect(vulkan::CommandSequence& sequence, const 
 void TensorFreeAdvection::record(vulkan::CommandSequence& sequence, bool apply, const vulkan::DeviceBuffer& a,
                                  const vulkan::DeviceBuffer& b, const vulkan::DeviceBuffer& out,
                                  IndirectArguments indirect) const {
-    const std::vector<std::uint32_t> groups = dispatchGroups();
+    const bool same = &a == &b;
+    const std::vector<std::uint32_t> groups = dispatchGroups(same);
     const auto chunks = std::uint32_t(mModes->chunks().size());
     mReconstruction.record(sequence, *mModes, a, mFieldA, indirect);
-    mReconstruction.record(sequence, *mModes, b, mFieldB, indirect.after(chunks));
-    std::uint32_t d = 2 * chunks;
-    const std::array<const vulkan::DeviceBuffer*, 4> sampleBuffers{&mElements, &mFieldA, &mFieldB, &mSamples};
+    if (!same) mReconstruction.record(sequence, *mModes, b, mFieldB, indirect.after(chunks));
+    std::uint32_t d = same ? chunks : 2 * chunks;
+    const std::array<const vulkan::DeviceBuffer*, 4> sampleBuffers{&mElements, &mFieldA, same ? &mFieldA : &mFieldB,
+                                                                   &mSamples};
     indirect.after(d).dispatch(sequence, apply ? mApplySamples : mAdvectSamples, sampleBuffers,
                                shaders::AdvectionSampleParams{mElementCount, 0, 0, 0}, groups[d]);
     ++d;

@@ -46,10 +46,12 @@ public:
     /// Bytes one contraction reads: the basis three times and the tables.
     std::size_t streamedBytes() const;
 
-    /// Group counts of recordApply's and recordAdvect's dispatches, in order.
-    std::vector<std::uint32_t> dispatchGroups() const;
+    /// Group counts of recordApply's and recordAdvect's dispatches, in order. `sameVectors`:
+    /// recordApply's a and b are one buffer, reconstructed once.
+    std::vector<std::uint32_t> dispatchGroups(bool sameVectors = false) const;
 
-    /// out = C(a, b); a and b hold the modal vectors padded as ModeBuffer::paddedModeCount says.
+    /// out = C(a, b); a and b hold the modal vectors padded as ModeBuffer::paddedModeCount says
+    /// (one buffer for both: one reconstruction).
     void recordApply(vulkan::CommandSequence& sequence, const vulkan::DeviceBuffer& a,
                      const vulkan::DeviceBuffer& b, const vulkan::DeviceBuffer& out,
                      IndirectArguments indirect = {}) const;

@@ -143,6 +143,17 @@ TEST_P(ModalStepKernelTest, TensorFreeCoefficientsStepLikeTheCpuReference) {
             expectNoValidationMessages();
         }
     }
+    // Made for Euler, switched to LANS-α: C(v, v) becomes C(Mv, v), with other dispatches.
+    const FluidSystem system(c, lans);
+    ModalIntegrator cpu(system, {Integrator::Midpoint});
+    Eigen::VectorXd expected = v0;
+    for (int s = 0; s < 20; ++s) cpu.step(expected, h);
+    ModalStepper stepper(context(), c, FluidParameters{}, {Integrator::Midpoint}, &cache);
+    stepper.setParameters(lans);
+    stepper.setState(v0);
+    stepper.setForce(Eigen::VectorXd::Zero(n));
+    runDevice(context(), stepper, h, 20);
+    EXPECT_LE(relativeDifference(stepper.state(), expected), 1e-5) << "switched to LANS-α";
 }
 
 TEST_P(ModalStepKernelTest, TrajectoriesStayWithin1e4OfTheDoubleReference) {
