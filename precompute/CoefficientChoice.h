@@ -8,9 +8,10 @@
 /// a run holds it up to three times, engine/simulation/RuntimeMemory.h) or when the tensor-free
 /// advection is predicted cheaper per evaluation. Per evaluation a tensor streams N²(N−1)/2
 /// coefficients; the tensor-free advection streams the modes twice (reconstruction, projection),
-/// 2·V·N values for V velocity DOFs, plus the quadrature. Measured per value streamed
-/// (tools/bench/bench_tensor_free, README "Speed") the two cost the same to within
-/// kTensorFreeValueCost, so the tensor-free advection wins once N(N−1) > 4·kTensorFreeValueCost·V.
+/// 2·V·N values for V velocity DOFs, plus the quadrature. Per value streamed the tensor-free
+/// advection costs kTensorFreeValueCost times a stored coefficient (tools/bench/bench_tensor_free,
+/// 48³ box, N = 250–1000: 0.8–1.2 on the CPU reference, 0.9–1.6 on lavapipe), so it wins once
+/// N(N−1) > 4·kTensorFreeValueCost·V: N ≈ 1400 on a 48³ box.
 /// A tensor that "auto" assembles is stored sparse below a density of 0.25 (boxes, appendix C.2).
 
 #include <cstdint>
@@ -23,7 +24,7 @@
 namespace modeflow {
 
 /// Cost of a value the tensor-free advection streams, relative to a stored coefficient.
-inline constexpr double kTensorFreeValueCost = 1.0;
+inline constexpr double kTensorFreeValueCost = 1.5;
 
 /// Whether a precompute with `requested` storage assembles a tensor for `modes` velocity modes on
 /// `velocityDofs` faces (auto: see the file comment; availableMemory() is read).

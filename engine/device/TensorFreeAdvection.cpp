@@ -138,7 +138,7 @@ TensorFreeAdvection::TensorFreeAdvection(const vulkan::VulkanContext& context, c
 }
 
 std::size_t TensorFreeAdvection::streamedBytes() const {
-    return 3 * std::size_t(mModes->modeStride()) * mModes->modeCount() * sizeof(float) + mElements.bytes() +
+    return 2 * std::size_t(mModes->modeStride()) * mModes->modeCount() * sizeof(float) + mElements.bytes() +
            mApplyGather.rowStart.bytes() + mApplyGather.entries.bytes();
 }
 

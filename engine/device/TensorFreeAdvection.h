@@ -43,7 +43,8 @@ public:
                         const ModeBuffer* modes = nullptr);
 
     int size() const { return int(mModes->modeCount()); }
-    /// Bytes one contraction reads: the basis three times and the tables.
+    /// Bytes one contraction of a vector with itself reads (C(v, v): the basis twice, and the
+    /// tables); two vectors read the basis once more.
     std::size_t streamedBytes() const;
 
     /// Group counts of recordApply's and recordAdvect's dispatches, in order. `sameVectors`:
