@@ -123,7 +123,7 @@ ScalarBasisResult solveNeumannScalarBasis(const CutCellDec& dec, int count,
         throw Error("[basis].scalar_modes = " + std::to_string(count) + ": the domain holds only " +
                     plural(available, "non-constant Neumann scalar mode"));
     const EigenRequest request{count + constants, -1e-2 * referenceEigenvalue(dec.grid), 1e-12,
-                               "scalar (Neumann) eigensolve", progress};
+                               "scalar (Neumann) eigensolve", progress, dec.grid.anyPeriodic()};
     return fromPairs(lowestPairs(neumannScalarLaplacian(dec), dec.cellStar, request), constants);
 }
 
@@ -133,7 +133,7 @@ ScalarBasisResult solveDirichletScalarBasis(const DirichletScalarDec& dec, int c
         throw Error("[basis].scalar_modes = " + std::to_string(count) + ": the domain holds only " +
                     plural(dec.cells.size(), "Dirichlet scalar mode"));
     const EigenRequest request{count, -1e-2 * referenceEigenvalue(dec.grid), 1e-12,
-                               "scalar (Dirichlet) eigensolve", progress};
+                               "scalar (Dirichlet) eigensolve", progress, dec.grid.anyPeriodic()};
     return fromPairs(lowestPairs(dirichletScalarLaplacian(dec), dec.cellStar, request), 0);
 }
 
@@ -156,7 +156,7 @@ VelocityBasisResult solveVelocityBasis(const CutCellDec& dec, const std::vector<
     double penalty = std::max(1.0, 2.0 * weylEstimate(dec.grid.dim, highest, domainMeasure) / mu1) *
                      (noSlip ? 1e4 : 1.0);
     const EigenRequest request{highest, -1e-2 * referenceEigenvalue(dec.grid), 1e-12,
-                               "velocity eigensolve", progress};
+                               "velocity eigensolve", progress, dec.grid.anyPeriodic()};
     EigenPairs pairs;
     SolverStats stats;
     for (int attempt = 0;; ++attempt) {
