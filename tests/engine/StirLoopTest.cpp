@@ -1,5 +1,5 @@
 /// `modeflow stir`'s loop on a NullScreen: the clock, scripts, session, statistics, drawing and
-/// screenshots without a window or a display (the real window: StirWindowTest), on lavapipe
+/// screenshots without a window or a display (the real window: StirWindowSlowTest), on lavapipe
 /// with the validation layer on, on the frame clock so every run is reproducible.
 
 #include <gtest/gtest.h>
@@ -18,8 +18,9 @@
 #include "engine/display/NullScreen.h"
 #include "engine/stir/StirApp.h"
 #include "engine/stir/StirStatistics.h"
-#include "tests/engine/StirTestRuns.h"
-#include "tests/engine/VulkanTestContext.h"
+#include "tests/support/StirRuns.h"
+#include "tests/support/TestFolder.h"
+#include "tests/support/VulkanTestContext.h"
 
 namespace modeflow::testing {
 namespace {
@@ -31,13 +32,7 @@ protected:
     void SetUp() override {
         mContext = makeVulkanContext(true);
         ASSERT_NE(mContext, nullptr);
-        mDir = fs::temp_directory_path() /
-               ("modeflow-stir-loop-" +
-                std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-        fs::remove_all(mDir);
-        fs::create_directories(mDir);
     }
-    void TearDown() override { fs::remove_all(mDir); }
 
     /// A scripted run of `frames` frames on `screen`.
     stir::StirReport run(display::NullScreen& screen, int dim, const std::string& script,
@@ -55,7 +50,8 @@ protected:
     }
 
     std::unique_ptr<vulkan::VulkanContext> mContext;
-    fs::path mDir;
+    TestFolder mFolder;
+    const fs::path mDir = mFolder.path();
 };
 
 /// The fraction of pixels whose colour differs by more than `tolerance` in some channel.

@@ -1,18 +1,19 @@
 // Periodic axes in the precompute: the wrapped complex reproduces the discrete spectra of tori and
 // channels exactly, finds their harmonic fields (uniform flows along periodic axes, plus the
-// circulations around holes that the topology leaves free), converges at second order around a cylinder in a periodic channel, and refuses domains
-// that do not repeat across a seam.
+// circulations around holes that the topology leaves free), and refuses domains that do not
+// repeat across a seam. Convergence around a disk in a periodic channel:
+// PeriodicConvergenceSlowTest.
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 
 #include "engine/core/Error.h"
 #include "precompute/BasisChecks.h"
 #include "precompute/Precompute.h"
-#include "tests/precompute/TestScenes.h"
+#include "tests/support/RealBases.h"
+#include "tests/support/TestScenes.h"
 
 namespace modeflow {
 namespace {
@@ -77,7 +78,7 @@ void expectSpectrum(const Eigen::VectorXd& computed, const std::vector<double>& 
 }
 
 SceneSpec periodicScene(std::array<int, 3> res, Vec3 lo, Vec3 hi, int dim, std::array<bool, 3> periodic) {
-    SceneSpec scene = test::gridScene(res, lo, hi, dim);
+    SceneSpec scene = testing::gridScene(res, lo, hi, dim);
     scene.grid.periodic = periodic;
     return scene;
 }
@@ -126,16 +127,8 @@ int harmonicCount(SceneSpec scene) {
     scene.basis.scalarModes = 2;
     Progress quiet = Progress::silent();
     const BasisCache cache = computeBasis(scene, quiet);
-    test::expectValidVelocityBasis(cache);
+    testing::expectValidVelocityBasis(cache);
     return cache.velocity.harmonic;
-}
-
-/// A channel along x: a box reaching past the grid along x, walls at the grid's y bounds.
-SceneSpec channelScene(int nx, std::array<bool, 3> periodic = {true, false, false}) {
-    SceneSpec scene = periodicScene({nx, nx / 2, 1}, {0.0, 0.0, 0.0}, {2.0, 1.0, 0.0}, 2, periodic);
-    scene.domain = {test::box({-1.0, -1.0, 0.0}, {3.0, 2.0, 0.0}),
-                    test::ball({1.0, 0.5, 0.0}, 0.2, CsgOp::Subtract)};
-    return scene;
 }
 
 TEST(PeriodicHarmonics, OnePerPeriodicAxisAndOnePerHole) {
@@ -145,58 +138,21 @@ TEST(PeriodicHarmonics, OnePerPeriodicAxisAndOnePerHole) {
         << "3D torus";
     EXPECT_EQ(harmonicCount(periodicScene({16, 8, 1}, {0.0, 0.0, 0.0}, {2.0, 1.0, 0.0}, 2, {true, false, false})), 1)
         << "2D channel";
-    EXPECT_EQ(harmonicCount(channelScene(32)), 2) << "2D channel around a disk: the flow along it and the circulation";
+    EXPECT_EQ(harmonicCount(testing::periodicChannelScene(32)), 2) << "2D channel around a disk: the flow along it and the circulation";
     SceneSpec torusWithDisk = periodicScene({32, 32, 1}, {0.0, 0.0, 0.0}, {1.0, 1.0, 0.0}, 2, {true, true, false});
-    torusWithDisk.domain = {test::box({-1.0, -1.0, 0.0}, {2.0, 2.0, 0.0}),
-                            test::ball({0.5, 0.5, 0.0}, 0.2, CsgOp::Subtract)};
+    torusWithDisk.domain = {testing::box({-1.0, -1.0, 0.0}, {2.0, 2.0, 0.0}),
+                            testing::ball({0.5, 0.5, 0.0}, 0.2, CsgOp::Subtract)};
     // On a torus the circulation around a hole is not free: the fundamental domain's edges cancel,
     // so it equals minus the (zero) curl outside the hole. A torus with a hole is a wedge of two
     // circles: two harmonic fields, the uniform flows.
     EXPECT_EQ(harmonicCount(torusWithDisk), 2) << "2D torus around a disk";
-    EXPECT_EQ(harmonicCount(channelScene(32, {false, false, false})), 1) << "the same disk between walls: its circulation";
-}
-
-/// The first `count` non-zero κ² of the channel around a disk at nx cells along it.
-Eigen::VectorXd channelEigenvalues(int nx, int count, BoundaryTreatment treatment) {
-    SceneSpec scene = channelScene(nx);
-    scene.basis.boundary = treatment;
-    scene.basis.velocityModes = {{1, count + 2}};
-    scene.basis.scalarModes = 1;
-    Progress quiet = Progress::silent();
-    const BasisCache cache = computeBasis(scene, quiet);
-    SCOPED_TRACE(nx);
-    test::expectValidVelocityBasis(cache);
-    EXPECT_EQ(cache.velocity.harmonic, 2);
-    return cache.velocity.eigenvalues.tail(count);
-}
-
-TEST(PeriodicConvergence, ChannelAroundADiskConvergesQuadraticallyWithCutCells) {
-    // No closed form: the reference is the 512-cell grid (its own error, a sixteenth of the
-    // 128-cell one's at second order, biases the orders up by about 0.1). The self-convergence
-    // order log2(|κ²64 − κ²128| / |κ²128 − κ²256|) needs no reference at all.
-    const int count = 10;
-    const Eigen::VectorXd reference = channelEigenvalues(512, count, BoundaryTreatment::CutCell);
-    const Eigen::VectorXd at64 = channelEigenvalues(64, count, BoundaryTreatment::CutCell);
-    const Eigen::VectorXd at128 = channelEigenvalues(128, count, BoundaryTreatment::CutCell);
-    const Eigen::VectorXd at256 = channelEigenvalues(256, count, BoundaryTreatment::CutCell);
-    const auto error = [&](const Eigen::VectorXd& k2) {
-        return ((k2 - reference).cwiseQuotient(reference)).cwiseAbs().maxCoeff();
-    };
-    const double e64 = error(at64), e128 = error(at128), e256 = error(at256);
-    const double selfOrder = std::log2((at64 - at128).cwiseQuotient(reference).cwiseAbs().maxCoeff() /
-                                       (at128 - at256).cwiseQuotient(reference).cwiseAbs().maxCoeff());
-    std::printf("periodic channel around a disk, cut cells, max relative error of the first %d non-zero κ²\n"
-                "against 512 cells along it: 64 %.3e, 128 %.3e (order %.2f), 256 %.3e (order %.2f); "
-                "self-convergence 64/128/256: order %.2f\n",
-                count, e64, e128, std::log2(e64 / e128), e256, std::log2(e128 / e256), selfOrder);
-    EXPECT_GE(std::log2(e64 / e128), 1.8);
-    EXPECT_GE(selfOrder, 1.8);
+    EXPECT_EQ(harmonicCount(testing::periodicChannelScene(32, {false, false, false})), 1) << "the same disk between walls: its circulation";
 }
 
 TEST(PeriodicSeams, RefusesADomainThatDiffersAtTheTwoEnds) {
     // A disk cut by the seam at x = 0 only: it has no twin at x = 2.
-    SceneSpec scene = channelScene(32);
-    scene.domain[1] = test::ball({0.0, 0.5, 0.0}, 0.2, CsgOp::Subtract);
+    SceneSpec scene = testing::periodicChannelScene(32);
+    scene.domain[1] = testing::ball({0.0, 0.5, 0.0}, 0.2, CsgOp::Subtract);
     Progress quiet = Progress::silent();
     try {
         computeBasis(scene, quiet);
@@ -208,14 +164,14 @@ TEST(PeriodicSeams, RefusesADomainThatDiffersAtTheTwoEnds) {
         EXPECT_NE(message.find("x = 0 and x = 2"), std::string::npos) << message;
     }
     // With its twin at the other end the domain repeats.
-    scene.domain.push_back(test::ball({2.0, 0.5, 0.0}, 0.2, CsgOp::Subtract));
+    scene.domain.push_back(testing::ball({2.0, 0.5, 0.0}, 0.2, CsgOp::Subtract));
     EXPECT_EQ(harmonicCount(scene), 2) << "a channel around one disk that straddles the seam";
 }
 
 TEST(PeriodicSeams, RefusesAWallOnTheSeam) {
     // A box domain that ends where the grid does: its walls would close the periodic axis.
     SceneSpec scene = periodicScene({16, 8, 1}, {0.0, 0.0, 0.0}, {2.0, 1.0, 0.0}, 2, {true, false, false});
-    scene.domain = {test::box({0.0, 0.2, 0.0}, {2.0, 0.8, 0.0})};
+    scene.domain = {testing::box({0.0, 0.2, 0.0}, {2.0, 0.8, 0.0})};
     Progress quiet = Progress::silent();
     try {
         computeBasis(scene, quiet);

@@ -13,7 +13,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "tests/tools/CliFixture.h"
+#include "tests/support/CliFixture.h"
 
 namespace {
 

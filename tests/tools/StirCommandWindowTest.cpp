@@ -12,7 +12,7 @@
 #include <stb/stb_image.h>
 #pragma GCC diagnostic pop
 
-#include "tests/tools/CliFixture.h"
+#include "tests/support/CliFixture.h"
 
 namespace modeflow::testing {
 namespace {
