@@ -16,6 +16,10 @@
 /// linearly to zero at the wall, because the walls of the box carry zero normal velocity: the
 /// wall faces (positions 0 and n along their normal) read as 0 whatever the field stores there.
 /// A point with a non-finite coordinate (a diverged run) has an empty stencil and samples as 0.
+///
+/// Along a periodic axis nothing is clamped: stencils wrap across the seam (the last cell centre
+/// or face interpolates with the first), so a point anywhere samples the field's periodic
+/// continuation, continuous across the seam.
 
 #include <array>
 #include <cstdint>
