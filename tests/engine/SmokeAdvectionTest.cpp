@@ -155,33 +155,7 @@ TEST(MacSampling, PeriodicAxesWrapTheStencilsAcrossTheSeam) {
     }
 }
 
-/// The centroid of the field's images nearest `around` (along periodic axes; the field must be
-/// small beside the box for that to mean much).
-Vec3 centroidAround(const MacGrid& grid, const std::vector<double>& field, const Vec3& around) {
-    Vec3 moment{0.0, 0.0, 0.0};
-    double total = 0.0;
-    for (int z = 0; z < grid.cells[2]; ++z)
-        for (int y = 0; y < grid.cells[1]; ++y)
-            for (int x = 0; x < grid.cells[0]; ++x) {
-                const double v = field[grid.cellIndex(x, y, z)];
-                const Vec3 p = grid.nearestImage(testing::cellCentre(grid, x, y, z), around);
-                for (int a = 0; a < 3; ++a) moment[a] += v * p[a];
-                total += v;
-            }
-    for (double& m : moment) m /= total;
-    return moment;
-}
-
-/// A grid periodic along every axis, and the uniform (harmonic) flow that crosses it along each
-/// axis in time 1 at 0.4 cells a step of `periodicStep`.
-MacGrid periodicGrid(int dim, int n) {
-    MacGrid grid = smokeTestGrid(dim, n);
-    grid.periodic = {true, true, dim == 3};
-    return grid;
-}
-std::vector<double> diagonalFlow(const MacGrid& grid) {
-    return testing::constantVelocity(grid, {2.0, 2.0, grid.dim == 3 ? 2.0 : 0.0});
-}
+/// The time step in which diagonalFlow moves 0.4 cells.
 double periodicStep(const MacGrid& grid) { return 0.4 * grid.spacing[0] / 2.0; }
 
 TEST(SmokeAdvection, AUniformFlowCarriesABlobOnceAroundAPeriodicBoxBackToItsStart) {
@@ -190,18 +164,19 @@ TEST(SmokeAdvection, AUniformFlowCarriesABlobOnceAroundAPeriodicBoxBackToItsStar
     // at the seam.
     for (const int dim : {2, 3}) {
         const int n = dim == 2 ? 32 : 24;
-        const MacGrid grid = periodicGrid(dim, n);
+        const MacGrid grid = testing::periodicSmokeTestGrid(dim, n);
         const reference::SmokeAdvection advection(grid, 1, wholeMask(grid));
         const Vec3 start{0.96, -0.93, dim == 3 ? 0.97 : 0.0};
         const Vec3 across{start[0] - 1.0, start[1] + 1.0, dim == 3 ? start[2] - 1.0 : 0.0};
         const std::vector<double> blob = gaussianBlob(grid, start, 0.2);
-        const Vec3 before = centroidAround(grid, blob, start);
+        const Vec3 before = testing::centroidNear(grid, blob, start);
         const auto steps = [&](const std::vector<double>& field) {
-            return advectSteps(advection, diagonalFlow(grid), field, periodicStep(grid), n * 5 / 4,
+            return advectSteps(advection, testing::diagonalFlow(grid), field, periodicStep(grid), n * 5 / 4,
                                AdvectionScheme::SemiLagrangian);
         };
         const std::vector<double> halfway = steps(blob), after = steps(halfway);
-        const Vec3 middle = centroidAround(grid, halfway, across), back = centroidAround(grid, after, start);
+        const Vec3 middle = testing::centroidNear(grid, halfway, across);
+        const Vec3 back = testing::centroidNear(grid, after, start);
         double worst = 0.0;
         for (int a = 0; a < dim; ++a) {
             worst = std::max(worst, std::abs(middle[a] - (before[a] - start[a]) - across[a]));
@@ -220,15 +195,15 @@ TEST(SmokeAdvection, AUniformFlowCarriesABlobAcrossThePeriodicSeamAsAnywhereElse
     // special place, so the results are the same field shifted by half a box, to round-off.
     for (const int dim : {2, 3}) {
         const int n = dim == 2 ? 24 : 12, half = n / 2;
-        const MacGrid grid = periodicGrid(dim, n);
+        const MacGrid grid = testing::periodicSmokeTestGrid(dim, n);
         const reference::SmokeAdvection advection(grid, 1, wholeMask(grid));
         const Vec3 onSeam{grid.cellCentre(0, n - 1), grid.cellCentre(1, 0), dim == 3 ? grid.cellCentre(2, n - 1) : 0.0};
         Vec3 inside = onSeam;
         for (int a = 0; a < dim; ++a) inside[a] += a == 1 ? 1.0 : -1.0;
         for (const AdvectionScheme scheme : kAdvectionSchemes) {
             const auto steps = [&](const Vec3& centre) {
-                return advectSteps(advection, diagonalFlow(grid), gaussianBlob(grid, centre, 0.15), periodicStep(grid),
-                                   10, scheme);
+                return advectSteps(advection, testing::diagonalFlow(grid), gaussianBlob(grid, centre, 0.15),
+                                   periodicStep(grid), 10, scheme);
             };
             const std::vector<double> crossing = steps(onSeam), away = steps(inside);
             double worst = 0.0;

@@ -127,18 +127,32 @@ const char* schemeName(AdvectionScheme scheme) {
 }
 
 Vec3 centroid(const MacGrid& grid, const std::vector<double>& field) {
+    return centroidNear(grid, field, {0.0, 0.0, 0.0});
+}
+
+Vec3 centroidNear(const MacGrid& grid, const std::vector<double>& field, const Vec3& around) {
     Vec3 moment{0.0, 0.0, 0.0};
     double total = 0.0;
     for (int z = 0; z < grid.cells[2]; ++z)
         for (int y = 0; y < grid.cells[1]; ++y)
             for (int x = 0; x < grid.cells[0]; ++x) {
                 const double v = field[grid.cellIndex(x, y, z)];
-                const Vec3 p = cellCentre(grid, x, y, z);
+                const Vec3 p = grid.nearestImage(cellCentre(grid, x, y, z), around);
                 for (int a = 0; a < 3; ++a) moment[a] += v * p[a];
                 total += v;
             }
     for (double& m : moment) m /= total;
     return moment;
+}
+
+MacGrid periodicSmokeTestGrid(int dim, int n) {
+    MacGrid grid = smokeTestGrid(dim, n);
+    grid.periodic = {true, true, dim == 3};
+    return grid;
+}
+
+std::vector<double> diagonalFlow(const MacGrid& grid) {
+    return constantVelocity(grid, {2.0, 2.0, grid.dim == 3 ? 2.0 : 0.0});
 }
 
 }  // namespace modeflow::testing

@@ -74,4 +74,13 @@ const char* schemeName(AdvectionScheme scheme);
 /// Σ φ·x / Σ φ over the cells: a smoke field's centre of mass, in scene coordinates.
 Vec3 centroid(const MacGrid& grid, const std::vector<double>& field);
 
+/// The centroid of the field's images nearest `around` along periodic axes (the field must be
+/// small beside the box for that to mean much); `centroid` on other axes.
+Vec3 centroidNear(const MacGrid& grid, const std::vector<double>& field, const Vec3& around);
+
+/// smokeTestGrid periodic along every axis (a torus), and the uniform flow (2, 2[, 2]) that
+/// crosses it along each axis in time 1: a harmonic field of the torus.
+MacGrid periodicSmokeTestGrid(int dim, int n);
+std::vector<double> diagonalFlow(const MacGrid& grid);
+
 }  // namespace modeflow::testing
