@@ -22,6 +22,7 @@ nlohmann::ordered_json summarize(const BasisCache& c, const std::filesystem::pat
     j["resolution"] = std::vector<int>(c.grid.resolution.begin(), c.grid.resolution.begin() + n);
     j["bounds_min"] = std::vector<double>(c.grid.boundsMin.begin(), c.grid.boundsMin.begin() + n);
     j["bounds_max"] = std::vector<double>(c.grid.boundsMax.begin(), c.grid.boundsMax.begin() + n);
+    j["periodic"] = std::vector<bool>(c.grid.periodic.begin(), c.grid.periodic.begin() + n);
     j["wall"] = sceneKeyword(c.wall);
     j["boundary"] = sceneKeyword(c.boundary);
     j["dofs"] = {{"faces", c.faces.size()}, {"cells", c.cells.size()}};
@@ -55,8 +56,16 @@ nlohmann::ordered_json summarize(const BasisCache& c, const std::filesystem::pat
     return j;
 }
 
+/// ", periodic x, z" for the periodic axes; nothing when every axis has walls.
+std::string periodicAxes(const nlohmann::ordered_json& flags) {
+    std::string axes;
+    for (std::size_t a = 0; a < flags.size(); ++a)
+        if (flags[a].get<bool>()) axes += std::string(axes.empty() ? ", periodic " : ", ") + "xyz"[a];
+    return axes;
+}
+
 void printText(const nlohmann::ordered_json& j) {
-    std::cout << "grid       " << j["dim"] << "D " << j["resolution"].dump() << ", "
+    std::cout << "grid       " << j["dim"] << "D " << j["resolution"].dump() << periodicAxes(j["periodic"]) << ", "
               << j["boundary"].get<std::string>() << ", " << j["wall"].get<std::string>() << "\n"
               << "dofs       " << j["dofs"]["faces"] << " faces, " << j["dofs"]["cells"]
               << " cells\n";
