@@ -1,4 +1,4 @@
-// Whole-box domains must reproduce the plain MAC operators exactly (DESIGN §2, §6): every κ² and
+// Whole-box domains must reproduce the plain MAC operators exactly (precompute/README.md; tests/README.md): every κ² and
 // μ² equals a sum of 4/h² sin²(πl/2n) per axis, with the right multiplicity.
 
 #include <gtest/gtest.h>

@@ -1,5 +1,5 @@
 // Curved and unaligned walls: eigenvalues converge to the continuum at second order with cut
-// cells, first order with the staircase switch (DESIGN §6).
+// cells, first order with the staircase switch (tests/README.md).
 
 #include <gtest/gtest.h>
 
