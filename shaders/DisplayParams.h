@@ -74,8 +74,8 @@ struct DisplayParams {
     float arrowScale;   /* window pixels per unit of velocity, */
     uint basisX;        /* from the face velocity of the basis grid of basisX x basisY cells */
     uint basisY;
-    uint periodic;      /* display_smoke_2d: bit a, axis a is periodic (MacGrid::periodic): the
-                           smoke and velocity wrap, and no wall frame is drawn on its sides */
+    uint periodic; /* display_smoke_2d: bit a, axis a is periodic (MacGrid::periodic): the
+                      smoke and velocity wrap, and no wall frame is drawn on its sides */
     uint pad1;
 };
 

@@ -1,9 +1,10 @@
 #pragma once
 /// @file MacGrid.h
-/// The regular grid of a scene seen as a MAC grid (precompute/README.md; engine/README.md): cells, and faces numbered as
-/// the precompute's CubicalComplex numbers them, so the basis's face DOFs index straight into it:
-/// faces grouped by normal axis (axis 0 first), inside a group x fastest, with n_a + 1 positions
-/// along the normal axis a and n_b along the others. Cells are numbered x fastest.
+/// The regular grid of a scene seen as a MAC grid (precompute/README.md; engine/README.md): cells,
+/// and faces numbered as the precompute's CubicalComplex numbers them, so the basis's face DOFs
+/// index straight into it: faces grouped by normal axis (axis 0 first), inside a group x fastest,
+/// with n_a + 1 positions along the normal axis a and n_b along the others. Cells are numbered x
+/// fastest.
 ///
 /// Periodic axes (GridSpec::periodic) wrap: the box's two ends along them are one plane, so a
 /// periodic normal axis has n_a face positions (the face at n_a is the face at 0), no wall, and
@@ -25,7 +26,8 @@ struct MacGrid {
     std::array<int, 3> cells{1, 1, 1};
     std::array<double, 3> origin{0.0, 0.0, 0.0};   ///< lower corner of the box
     std::array<double, 3> spacing{1.0, 1.0, 1.0};  ///< cell size per axis
-    std::array<bool, 3> periodic{false, false, false};  ///< per axis: the box wraps (at least 2 cells)
+    /// Per axis: the box wraps (at least 2 cells along it).
+    std::array<bool, 3> periodic{false, false, false};
 
     static MacGrid fromSpec(const GridSpec& grid);
     /// The same box with `scale` cells per cell along each used axis (the smoke grid).
@@ -74,7 +76,8 @@ struct MacGrid {
     }
     /// Bit a set when axis a is periodic: the `periodic` word of the device kernels' parameters.
     std::uint32_t periodicBits() const {
-        return std::uint32_t(periodic[0]) | std::uint32_t(periodic[1]) << 1 | std::uint32_t(periodic[2]) << 2;
+        return std::uint32_t(periodic[0]) | std::uint32_t(periodic[1]) << 1 |
+               std::uint32_t(periodic[2]) << 2;
     }
     /// Length of the box along `axis`.
     double length(int axis) const { return cells[axis] * spacing[axis]; }

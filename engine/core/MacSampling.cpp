@@ -23,7 +23,7 @@ AxisStencil axisStencil(double coordinate, double offset, int n, bool periodic) 
     AxisStencil a;
     if (periodic) {
         double s = std::fmod(coordinate - offset, double(n));  // exact, (−n, n)
-        if (s < 0.0) s += n;                                     // [0, n], n only by round-off
+        if (s < 0.0) s += n;                                   // [0, n], n only by round-off
         const double below = std::floor(s);
         a.lo = int(below) % n;
         a.hi = (a.lo + 1) % n;
@@ -47,8 +47,8 @@ struct Corners {
 /// The stencil at `gridPoint` on a lattice of extent[a] points along axis a, at grid coordinates
 /// offset[a] + 0, 1, … (cell centres: offset ½; face positions along their normal: offset 0),
 /// wrapping along the grid's periodic axes.
-Corners trilinearCorners(const std::array<int, 3>& extent, const std::array<bool, 3>& periodic, const Vec3& offset,
-                         const Vec3& gridPoint) {
+Corners trilinearCorners(const std::array<int, 3>& extent, const std::array<bool, 3>& periodic,
+                         const Vec3& offset, const Vec3& gridPoint) {
     Corners corners;
     // A diverged state moves points to NaN or infinity: no stencil (floor of NaN is no index).
     for (int a = 0; a < 3; ++a)
@@ -103,7 +103,8 @@ double sampleFaceComponent(const MacGrid& grid, std::span<const T> faces, int ax
     // Face positions along the normal sit on integer coordinates, along the others at centres.
     Vec3 offset{0.5, 0.5, 0.5};
     offset[axis] = 0.0;
-    const Corners corners = trilinearCorners(grid.faceExtent(axis), grid.periodic, offset, gridPoint);
+    const Corners corners =
+        trilinearCorners(grid.faceExtent(axis), grid.periodic, offset, gridPoint);
     double value = 0.0;
     for (int c = 0; c < corners.count; ++c) {
         const std::array<int, 3>& p = corners.position[c];

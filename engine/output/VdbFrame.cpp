@@ -106,8 +106,9 @@ void addFrameMetadata(vdb::MetaMap& meta, const VdbFrame& frame) {
     meta.insertMeta(vdb::GridBase::META_GRID_CREATOR, vdb::StringMetadata("modeflow"));
     const MacGrid& grid = frame.smokeGrid;
     if (grid.periodicBits() != 0)
-        meta.insertMeta(kPeriodicMetadata, vdb::Vec3IMetadata(vdb::Vec3i(grid.periodic[0], grid.periodic[1],
-                                                                          grid.periodic[2])));
+        meta.insertMeta(
+            kPeriodicMetadata,
+            vdb::Vec3IMetadata(vdb::Vec3i(grid.periodic[0], grid.periodic[1], grid.periodic[2])));
 }
 
 /// The `modeflow_periodic` entry of `meta` as flags; empty when absent.

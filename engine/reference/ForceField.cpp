@@ -65,7 +65,8 @@ double splatForce(const MacGrid& grid, const FaceLocation& face, std::span<const
     const Vec3 x = faceCentre(grid, face);
     double g = 0.0;
     for (const ForceSplat& splat : splats) {
-        const Vec3 d = grid.minimumImage({x[0] - splat.centre[0], x[1] - splat.centre[1], x[2] - splat.centre[2]});
+        const Vec3 d = grid.minimumImage(
+            {x[0] - splat.centre[0], x[1] - splat.centre[1], x[2] - splat.centre[2]});
         double r2 = 0.0;
         for (int a = 0; a < grid.dim; ++a) r2 += d[a] * d[a];
         g += splat.force[face.axis] * std::exp(-r2 / (splat.radius * splat.radius));

@@ -1,9 +1,9 @@
 #pragma once
 /// @file ForceField.h
-/// Grid forces on the velocity DOFs (README.md, "Reduced dynamics"; engine/README.md), the double-precision CPU reference of
-/// engine/device/ForceField: a force density g (force per unit volume, along the face normal)
-/// on each DOF face, from buoyancy and stirring splats. ForceProjection.h turns g into modal
-/// forces.
+/// Grid forces on the velocity DOFs (README.md, "Reduced dynamics"; engine/README.md), the
+/// double-precision CPU reference of engine/device/ForceField: a force density g (force per unit
+/// volume, along the face normal) on each DOF face, from buoyancy and stirring splats.
+/// ForceProjection.h turns g into modal forces.
 ///
 /// Buoyancy acts on the faces whose normal is up (+y in 2D, +z in 3D): g = buoyancy × the mean
 /// temperature over the face's dual cell, the box reaching half a basis cell below and above

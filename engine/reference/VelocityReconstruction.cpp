@@ -37,7 +37,8 @@ std::vector<Vec3> cellCentreVelocity(const MacGrid& grid, std::span<const double
             for (int x = 0; x < grid.cells[0]; ++x) {
                 Vec3& u = velocity[std::size_t(grid.cellIndex(x, y, z))];
                 for (int a = 0; a < grid.dim; ++a)
-                    u[a] = 0.5 * (faceField[grid.faceIndex(a, x, y, z)] + faceField[grid.upperFaceIndex(a, x, y, z)]);
+                    u[a] = 0.5 * (faceField[grid.faceIndex(a, x, y, z)] +
+                                  faceField[grid.upperFaceIndex(a, x, y, z)]);
             }
     return velocity;
 }
@@ -50,7 +51,8 @@ std::vector<double> faceFieldDivergence(const MacGrid& grid, std::span<const dou
             for (int x = 0; x < grid.cells[0]; ++x) {
                 double outflow = 0.0;
                 for (int a = 0; a < grid.dim; ++a)
-                    outflow += (faceField[grid.upperFaceIndex(a, x, y, z)] - faceField[grid.faceIndex(a, x, y, z)]) *
+                    outflow += (faceField[grid.upperFaceIndex(a, x, y, z)] -
+                                faceField[grid.faceIndex(a, x, y, z)]) *
                                grid.faceArea(a);
                 divergence[std::size_t(grid.cellIndex(x, y, z))] = outflow;
             }

@@ -9,7 +9,8 @@ namespace modeflow {
 bool SmokeEmitter::contains(const Vec3& worldPoint, const MacGrid& grid) const {
     const int dim = grid.dim;
     if (shape == EmitterShape::Box) {
-        const Vec3 middle{0.5 * (min[0] + max[0]), 0.5 * (min[1] + max[1]), 0.5 * (min[2] + max[2])};
+        const Vec3 middle{0.5 * (min[0] + max[0]), 0.5 * (min[1] + max[1]),
+                          0.5 * (min[2] + max[2])};
         const Vec3 point = grid.nearestImage(worldPoint, middle);
         for (int a = 0; a < dim; ++a)
             if (point[a] < min[a] || point[a] > max[a]) return false;

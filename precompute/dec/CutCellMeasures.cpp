@@ -166,7 +166,8 @@ void measureStaircase(const CubicalComplex& cx, const Domain& domain, CutCellMea
             for (unsigned corner = 0; corner < (1u << free.size()) && inside; ++corner) {
                 Element cell{(1u << n) - 1, e.pos};
                 for (size_t i = 0; i < free.size(); ++i)
-                    if ((corner >> i) & 1u) cell.pos[free[i]] = cx.wrap(free[i], cell.pos[free[i]] - 1);
+                    if ((corner >> i) & 1u)
+                        cell.pos[free[i]] = cx.wrap(free[i], cell.pos[free[i]] - 1);
                 inside = cells[cx.index(cell)] > 0.0;
             }
             f[id] = inside ? 1.0 : 0.0;

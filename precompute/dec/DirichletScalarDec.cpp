@@ -22,7 +22,8 @@ double chiInBox(const GridSpec& grid, const Domain& domain, Vec3 p) {
     }
     double box = domain.chi(p);
     for (int a = 0; a < grid.dim; ++a)
-        if (!grid.isPeriodic(a)) box = std::min({box, p[a] - grid.boundsMin[a], grid.boundsMax[a] - p[a]});
+        if (!grid.isPeriodic(a))
+            box = std::min({box, p[a] - grid.boundsMin[a], grid.boundsMax[a] - p[a]});
     return box;
 }
 
@@ -71,7 +72,8 @@ DirichletScalarDec buildDirichletScalarDec(const CubicalComplex& cx, const Domai
         const int normal = __builtin_ctz(((1u << n) - 1) & ~face.axes);
         Index3 below = face.pos, above = face.pos;
         below[normal] = cx.wrap(normal, below[normal] - 1);
-        const bool hasBelow = below[normal] >= 0, hasAbove = face.pos[normal] < grid.resolution[normal];
+        const bool hasBelow = below[normal] >= 0,
+                   hasAbove = face.pos[normal] < grid.resolution[normal];
         const std::int64_t cb = hasBelow ? cx.index(Element{(1u << n) - 1, below}) : -1;
         const std::int64_t ca = hasAbove ? cx.index(Element{(1u << n) - 1, above}) : -1;
         const bool inB = cb >= 0 && inside[cb], inA = ca >= 0 && inside[ca];

@@ -16,11 +16,14 @@ std::string pointText(const Vec3& p, int dim) {
     return text + ")";
 }
 
-std::string inOrOut(bool inside) { return inside ? "inside" : "outside"; }
+std::string inOrOut(bool inside) {
+    return inside ? "inside" : "outside";
+}
 
 }  // namespace
 
-void requireDomainAgreesAcrossSeams(const CubicalComplex& complex, const Domain& domain, int subsamples) {
+void requireDomainAgreesAcrossSeams(const CubicalComplex& complex, const Domain& domain,
+                                    int subsamples) {
     const GridSpec& grid = complex.grid();
     if (!grid.anyPeriodic() || domain.isWholeBox()) return;
     const double tol = insideTolerance(grid);
@@ -38,16 +41,19 @@ void requireDomainAgreesAcrossSeams(const CubicalComplex& complex, const Domain&
                     atMax[a] = grid.resolution[a];
                     const Vec3 low = subLatticePoint(grid, atMin, sub, subsamples);
                     const Vec3 high = subLatticePoint(grid, atMax, sub, subsamples);
-                    const bool lowInside = domain.chi(low) > tol, highInside = domain.chi(high) > tol;
+                    const bool lowInside = domain.chi(low) > tol,
+                               highInside = domain.chi(high) > tol;
                     if (lowInside == highInside) continue;
                     const std::string axis = kAxisNames[a];
-                    throw Error("[[domain]]: the domain does not repeat across periodic axis " + axis +
-                                ": " + pointText(low, grid.dim) + " is " + inOrOut(lowInside) + " and " +
-                                pointText(high, grid.dim) + " " + inOrOut(highInside) +
-                                ", but they are the same point of the periodic box; make the shapes agree at " +
-                                axis + " = " + numberText(grid.boundsMin[a], 6) + " and " + axis + " = " +
-                                numberText(grid.boundsMax[a], 6) + " (or set [grid].periodic false on " + axis +
-                                ")");
+                    throw Error("[[domain]]: the domain does not repeat across periodic axis " +
+                                axis + ": " + pointText(low, grid.dim) + " is " +
+                                inOrOut(lowInside) + " and " + pointText(high, grid.dim) + " " +
+                                inOrOut(highInside) +
+                                ", but they are the same point of the periodic box; make the "
+                                "shapes agree at " +
+                                axis + " = " + numberText(grid.boundsMin[a], 6) + " and " + axis +
+                                " = " + numberText(grid.boundsMax[a], 6) +
+                                " (or set [grid].periodic false on " + axis + ")");
                 }
     }
 }
@@ -57,7 +63,9 @@ void requireNoWallOnSeams(const CubicalComplex& complex, const CutCellMeasures& 
     const int n = grid.dim;
     if (!grid.anyPeriodic()) return;
     const unsigned all = (1u << n) - 1;
-    const auto whole = [&](const Element& cell) { return measures.fraction[n][complex.index(cell)] > 1.0 - 1e-9; };
+    const auto whole = [&](const Element& cell) {
+        return measures.fraction[n][complex.index(cell)] > 1.0 - 1e-9;
+    };
     for (int a = 0; a < n; ++a) {
         if (!grid.isPeriodic(a)) continue;
         const unsigned faceAxes = all & ~(1u << a);
@@ -73,11 +81,13 @@ void requireNoWallOnSeams(const CubicalComplex& complex, const CutCellMeasures& 
                         !whole(Element{all, face.pos}))
                         continue;
                     const std::string axis = kAxisNames[a];
-                    throw Error("[[domain]]: a wall of the domain lies on the seam of periodic axis " + axis +
-                                " (the plane " + axis + " = " + numberText(grid.boundsMin[a], 6) + ", which is " +
-                                axis + " = " + numberText(grid.boundsMax[a], 6) +
-                                "), where a periodic box has none; let the shapes reach past the grid box along " +
-                                axis + " (or set [grid].periodic false on " + axis + ")");
+                    throw Error(
+                        "[[domain]]: a wall of the domain lies on the seam of periodic axis " +
+                        axis + " (the plane " + axis + " = " + numberText(grid.boundsMin[a], 6) +
+                        ", which is " + axis + " = " + numberText(grid.boundsMax[a], 6) +
+                        "), where a periodic box has none; let the shapes reach past the grid box "
+                        "along " +
+                        axis + " (or set [grid].periodic false on " + axis + ")");
                 }
     }
 }

@@ -12,7 +12,8 @@ namespace modeflow {
 /// χ sampled on every sub-lattice point of each seam (the points the measures use) at both ends
 /// of the periodic axis.
 /// @throw Error naming [[domain]] and a point where one end is inside Ω and the other outside.
-void requireDomainAgreesAcrossSeams(const CubicalComplex& complex, const Domain& domain, int subsamples);
+void requireDomainAgreesAcrossSeams(const CubicalComplex& complex, const Domain& domain,
+                                    int subsamples);
 
 /// A face on a seam with no measure between two whole cells is a wall lying in the seam plane
 /// (e.g. a box domain that ends at the grid box along a periodic axis): it would close the axis.

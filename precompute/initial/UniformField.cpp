@@ -72,7 +72,8 @@ double UniformField::wallDistance(const Vec3& x) const {
     // at the ends of a periodic axis, which meet.
     double d = mDomain.chi(x);
     for (int a = 0; a < mGrid.dim; ++a)
-        if (!mGrid.isPeriodic(a)) d = std::min({d, x[a] - mGrid.boundsMin[a], mGrid.boundsMax[a] - x[a]});
+        if (!mGrid.isPeriodic(a))
+            d = std::min({d, x[a] - mGrid.boundsMin[a], mGrid.boundsMax[a] - x[a]});
     return d;
 }
 

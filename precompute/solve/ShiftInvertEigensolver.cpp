@@ -129,7 +129,8 @@ EigenPairs lanczos(const ShiftedFactor& factor, const Eigen::MatrixXd& deflated,
     // 334 against 406 solves, 47 s against 58 s): the Krylov basis is re-orthogonalized at every
     // step, and its bandwidth grows with ncv.
     const Eigen::Index room = n - deflated.cols();
-    const Eigen::Index ncv = std::min<Eigen::Index>(room, std::max<Eigen::Index>(3 * nev / 2 + 1, nev + 30));
+    const Eigen::Index ncv =
+        std::min<Eigen::Index>(room, std::max<Eigen::Index>(3 * nev / 2 + 1, nev + 30));
     Spectra::SymEigsShiftSolver<ScaledShiftInvert> solver(op, nev, ncv, request.shift);
     try {
         if (deflated.cols() == 0) {
@@ -168,15 +169,19 @@ EigenPairs lowestOf(const EigenPairs& a, const EigenPairs& b, Eigen::Index keep)
     const Eigen::Index total = a.values.size() + b.values.size();
     std::vector<Eigen::Index> order(static_cast<std::size_t>(total));
     std::iota(order.begin(), order.end(), 0);
-    const auto value = [&](Eigen::Index i) { return i < a.values.size() ? a.values[i] : b.values[i - a.values.size()]; };
-    std::stable_sort(order.begin(), order.end(), [&](Eigen::Index i, Eigen::Index j) { return value(i) < value(j); });
+    const auto value = [&](Eigen::Index i) {
+        return i < a.values.size() ? a.values[i] : b.values[i - a.values.size()];
+    };
+    std::stable_sort(order.begin(), order.end(),
+                     [&](Eigen::Index i, Eigen::Index j) { return value(i) < value(j); });
     EigenPairs out;
     out.values.resize(keep);
     out.vectors.resize(a.vectors.rows(), keep);
     for (Eigen::Index c = 0; c < keep; ++c) {
         const Eigen::Index i = order[std::size_t(c)];
         out.values[c] = value(i);
-        out.vectors.col(c) = i < a.values.size() ? a.vectors.col(i) : b.vectors.col(i - a.values.size());
+        out.vectors.col(c) =
+            i < a.values.size() ? a.vectors.col(i) : b.vectors.col(i - a.values.size());
     }
     return out;
 }
@@ -188,7 +193,8 @@ void findMissedCopies(const ShiftedFactor& factor, EigenPairs& pairs, const Eige
     const Eigen::Index nev = pairs.values.size();
     constexpr int kMaxRuns = 32;
     for (int run = 0;; ++run) {
-        const Eigen::Index block = std::min<Eigen::Index>(std::max<Eigen::Index>(8, nev / 4), factor.size() - nev - 2);
+        const Eigen::Index block =
+            std::min<Eigen::Index>(std::max<Eigen::Index>(8, nev / 4), factor.size() - nev - 2);
         if (block < 1) return;
         const double top = pairs.values[nev - 1];
         const EigenPairs more = lanczos(factor, pairs.vectors, block, request, restarts);
@@ -196,7 +202,8 @@ void findMissedCopies(const ShiftedFactor& factor, EigenPairs& pairs, const Eige
         // any part of it.
         if (more.values[0] >= top - 1e-9 * std::abs(top)) return;
         if (run == kMaxRuns)
-            throw Error(request.what + ": still finding missed copies of degenerate eigenvalues after " +
+            throw Error(request.what +
+                        ": still finding missed copies of degenerate eigenvalues after " +
                         std::to_string(kMaxRuns) + " deflated Lanczos runs");
         pairs = lowestOf(pairs, more, nev);
     }

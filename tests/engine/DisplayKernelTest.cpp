@@ -31,18 +31,19 @@ MacGrid stripeGrid(bool periodicX) {
 
 /// The picture of stripeGrid in a window of `width` × 80 pixels, its viewport 160 × 80 in the
 /// middle (20 pixels a cell): packed RGBA8 words, red in the low byte.
-std::vector<std::uint32_t> drawStripe(const vulkan::VulkanContext& context, bool periodicX, int width) {
+std::vector<std::uint32_t> drawStripe(const vulkan::VulkanContext& context, bool periodicX,
+                                      int width) {
     const MacGrid grid = stripeGrid(periodicX);
     std::vector<float> smoke(2 * std::size_t(grid.cellCount()), 0.0f);
     for (int y = 0; y < grid.cells[1]; ++y) smoke[2 * std::size_t(grid.cellIndex(7, y, 0))] = 1.0f;
     const DeviceBuffer smokeBuffer = DeviceBuffer::fromValues<float>(context, smoke, "smoke");
-    const DeviceBuffer mask =
-        DeviceBuffer::fromValues<std::uint8_t>(context, std::vector<std::uint8_t>(std::size_t(grid.cellCount()), 1), "mask");
-    const DeviceBuffer velocity =
-        DeviceBuffer::fromValues<float>(context, std::vector<float>(std::size_t(grid.faceTotal()), 0.0f), "velocity");
+    const DeviceBuffer mask = DeviceBuffer::fromValues<std::uint8_t>(
+        context, std::vector<std::uint8_t>(std::size_t(grid.cellCount()), 1), "mask");
+    const DeviceBuffer velocity = DeviceBuffer::fromValues<float>(
+        context, std::vector<float>(std::size_t(grid.faceTotal()), 0.0f), "velocity");
     const std::size_t pixelCount = std::size_t(width) * 80;
-    const DeviceBuffer overlay =
-        DeviceBuffer::fromValues<std::uint8_t>(context, std::vector<std::uint8_t>(pixelCount, DISPLAY_OVERLAY_NONE), "overlay");
+    const DeviceBuffer overlay = DeviceBuffer::fromValues<std::uint8_t>(
+        context, std::vector<std::uint8_t>(pixelCount, DISPLAY_OVERLAY_NONE), "overlay");
     const DeviceBuffer pixels(context, pixelCount * 4, "pixels");
     DisplayTarget target;
     target.width = width;
@@ -50,15 +51,17 @@ std::vector<std::uint32_t> drawStripe(const vulkan::VulkanContext& context, bool
     target.viewport = Viewport::letterbox(width, 80, 2.0);
     const DisplayKernels kernels(context);
     vulkan::CommandSequence sequence(context);
-    kernels.recordSmoke2D(sequence, FieldBuffers{smokeBuffer, mask, velocity, grid, grid}, Smoke2DLook{}, overlay,
-                          target, pixels);
+    kernels.recordSmoke2D(sequence, FieldBuffers{smokeBuffer, mask, velocity, grid, grid},
+                          Smoke2DLook{}, overlay, target, pixels);
     sequence.submitAndWait();
     std::vector<std::uint32_t> words(pixelCount);
     pixels.download<std::uint32_t>(words);
     return words;
 }
 
-int red(std::uint32_t word) { return int(word & 0xffu); }
+int red(std::uint32_t word) {
+    return int(word & 0xffu);
+}
 
 class DisplayKernelTest : public testing::VulkanTest {};
 

@@ -182,11 +182,13 @@ TEST(ForceProjection, OnAPeriodicUpAxisTheSeamFacesDualCellReachesAcrossIt) {
     spec.periodic = {false, true, false};
     const MacGrid basis = MacGrid::fromSpec(spec), smoke = basis.refined(3);
     const FaceLocation seam{1, {1, 0, 0}};
-    for (const auto& [row, expected] : {std::pair{11, 1.0 / 3}, std::pair{10, 1.0 / 6}, std::pair{0, 1.0 / 3},
-                                        std::pair{1, 1.0 / 6}, std::pair{9, 0.0}, std::pair{2, 0.0}}) {
+    for (const auto& [row, expected] :
+         {std::pair{11, 1.0 / 3}, std::pair{10, 1.0 / 6}, std::pair{0, 1.0 / 3},
+          std::pair{1, 1.0 / 6}, std::pair{9, 0.0}, std::pair{2, 0.0}}) {
         std::vector<double> temperature(std::size_t(smoke.cellCount()), 0.0);
         for (int x = 3; x < 6; ++x) temperature[std::size_t(smoke.cellIndex(x, row, 0))] = 1.0;
-        EXPECT_DOUBLE_EQ(reference::dualCellTemperature(basis, 3, seam, temperature, {}), expected) << "row " << row;
+        EXPECT_DOUBLE_EQ(reference::dualCellTemperature(basis, 3, seam, temperature, {}), expected)
+            << "row " << row;
     }
 }
 
@@ -198,8 +200,10 @@ TEST(ForceProjection, OnAPeriodicAxisASplatPastOneEndPushesAtTheOther) {
     const ForceSplat nearStart{{0.05, 0.5, 0.0}, {1.0, 0.5, 0.0}, 0.2};
     ForceSplat pastEnd = nearStart;
     pastEnd.centre[0] += 2.0;
-    const Eigen::VectorXd g = reference::forceDensity(cache, {}, std::vector<ForceSplat>{nearStart});
-    const Eigen::VectorXd same = reference::forceDensity(cache, {}, std::vector<ForceSplat>{pastEnd});
+    const Eigen::VectorXd g =
+        reference::forceDensity(cache, {}, std::vector<ForceSplat>{nearStart});
+    const Eigen::VectorXd same =
+        reference::forceDensity(cache, {}, std::vector<ForceSplat>{pastEnd});
     EXPECT_LE((g - same).lpNorm<Eigen::Infinity>(), 1e-14 * g.lpNorm<Eigen::Infinity>());
     double farEnd = 0.0;
     for (std::size_t d = 0; d < cache.faces.size(); ++d) {

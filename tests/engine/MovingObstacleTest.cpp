@@ -66,9 +66,9 @@ TEST(MovingObstacle, ShapesCoverWhatTheySay) {
     capsule.axis = {0.5, 0.0, 0.0};
     capsule.path = box.path;
     const MovingObstacle c{capsule};
-    EXPECT_TRUE(c.covers({0.55, 0.05, 0.0}, {0.0, 0.0, 0.0}, walledGrid(2)));   // near the end cap
-    EXPECT_FALSE(c.covers({0.65, 0.0, 0.0}, {0.0, 0.0, 0.0}, walledGrid(2)));   // past it
-    EXPECT_FALSE(c.covers({0.0, 0.11, 0.0}, {0.0, 0.0, 0.0}, walledGrid(2)));   // beside the segment
+    EXPECT_TRUE(c.covers({0.55, 0.05, 0.0}, {0.0, 0.0, 0.0}, walledGrid(2)));  // near the end cap
+    EXPECT_FALSE(c.covers({0.65, 0.0, 0.0}, {0.0, 0.0, 0.0}, walledGrid(2)));  // past it
+    EXPECT_FALSE(c.covers({0.0, 0.11, 0.0}, {0.0, 0.0, 0.0}, walledGrid(2)));  // beside the segment
 }
 
 TEST(MovingObstacle, CoversAcrossAPeriodicSeamAtTheMinimumImage) {
@@ -83,8 +83,10 @@ TEST(MovingObstacle, CoversAcrossAPeriodicSeamAtTheMinimumImage) {
     const MovingObstacle o{ball};
     EXPECT_FALSE(o.covers({0.1, 0.5, 0.0}, {1.95, 0.5, 0.0}, grid)) << "walled";
     grid.periodic[0] = true;
-    EXPECT_TRUE(o.covers({0.1, 0.5, 0.0}, {1.95, 0.5, 0.0}, grid)) << "periodic: 0.15 away across the seam";
-    EXPECT_FALSE(o.covers({0.3, 0.5, 0.0}, {1.95, 0.5, 0.0}, grid)) << "periodic: 0.35 away across the seam";
+    EXPECT_TRUE(o.covers({0.1, 0.5, 0.0}, {1.95, 0.5, 0.0}, grid))
+        << "periodic: 0.15 away across the seam";
+    EXPECT_FALSE(o.covers({0.3, 0.5, 0.0}, {1.95, 0.5, 0.0}, grid))
+        << "periodic: 0.35 away across the seam";
     EXPECT_TRUE(o.covers({1.8, 0.5, 0.0}, {1.95, 0.5, 0.0}, grid)) << "periodic: on its own side";
 }
 
@@ -94,7 +96,8 @@ TEST(MovingObstacle, AnObstacleCrossingAPeriodicSeamDragsTheFluidAtBothEnds) {
     // and the fluid it drags moves along +x at both.
     const BasisCache& cache = testing::periodicChannel2d();
     const MacGrid grid = MacGrid::fromSpec(cache.grid);
-    const std::vector<MovingObstacle> obstacles{ball(0.15, {{0.0, {1.8, 0.5, 0.0}}, {1.0, {2.2, 0.5, 0.0}}})};
+    const std::vector<MovingObstacle> obstacles{
+        ball(0.15, {{0.0, {1.8, 0.5, 0.0}}, {1.0, {2.2, 0.5, 0.0}}})};
     const std::vector<double> still(std::size_t(grid.faceTotal()), 0.0);
     const std::vector<double> mismatch = reference::obstacleMismatch(cache, still, obstacles, 0.5);
     int left = 0, right = 0;
@@ -105,13 +108,13 @@ TEST(MovingObstacle, AnObstacleCrossingAPeriodicSeamDragsTheFluidAtBothEnds) {
         }
     EXPECT_GT(left, 3) << "covered x-faces near x = 0";
     EXPECT_GT(right, 3) << "covered x-faces near x = 2";
-    const std::vector<double> u =
-        reference::reconstructFaceField(cache, -reference::obstacleCorrection(cache, still, obstacles, 0.5));
+    const std::vector<double> u = reference::reconstructFaceField(
+        cache, -reference::obstacleCorrection(cache, still, obstacles, 0.5));
     const double atSeam = u[std::size_t(grid.faceIndex(0, 0, 8, 0))];
     const double before = u[std::size_t(grid.faceIndex(0, 31, 8, 0))];
     const double after = u[std::size_t(grid.faceIndex(0, 1, 8, 0))];
-    std::cout << "fluid x velocity at the seam under the ball " << atSeam << ", a cell before " << before
-              << ", a cell after " << after << " (ball: 0.4)\n";
+    std::cout << "fluid x velocity at the seam under the ball " << atSeam << ", a cell before "
+              << before << ", a cell after " << after << " (ball: 0.4)\n";
     EXPECT_GT(atSeam, 0.05);
     EXPECT_GT(before, 0.5 * atSeam);
     EXPECT_GT(after, 0.5 * atSeam);

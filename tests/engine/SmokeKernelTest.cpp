@@ -85,11 +85,13 @@ SmokeRun runSmoke(const vulkan::VulkanContext& context, const SmokeSetup& s, dou
     std::vector<double> velocity = testing::unitSwirlVelocity(basis, 0.8, 5);
     if (periodic) {
         const std::vector<double> uniform = testing::constantVelocity(basis, {0.75, -0.5, 0.625});
-        for (std::size_t f = 0; f < velocity.size(); ++f) velocity[f] = 0.5 * velocity[f] + uniform[f];
+        for (std::size_t f = 0; f < velocity.size(); ++f)
+            velocity[f] = 0.5 * velocity[f] + uniform[f];
     }
     roundToFloat(velocity);
-    SmokeFields fields{testing::gaussianBlob(smoke, periodic ? Vec3{0.9, -0.95, 0.9} : Vec3{0.2, -0.1, 0.05}, 0.2),
-                       testing::gaussianBlob(smoke, {-0.3, 0.25, 0.0}, 0.15)};
+    SmokeFields fields{
+        testing::gaussianBlob(smoke, periodic ? Vec3{0.9, -0.95, 0.9} : Vec3{0.2, -0.1, 0.05}, 0.2),
+        testing::gaussianBlob(smoke, {-0.3, 0.25, 0.0}, 0.15)};
     const double nan = std::numeric_limits<double>::quiet_NaN();
     for (std::size_t c = 0; c < run.mask.size(); ++c)
         if (!run.mask[c]) fields.density[c] = fields.temperature[c] = nan;
@@ -169,13 +171,16 @@ TEST_P(SmokeKernelTest, EqualsTheCpuReferenceInFloat32) {
 TEST_P(SmokeKernelTest, PeriodicAxesEqualTheCpuReferenceInFloat32) {
     // x alone and with y (the face pairs wrap along x), y and z without x (the stencils' offsets
     // wrap in uint arithmetic), and the whole 3D torus.
-    const std::vector<std::pair<int, std::array<bool, 3>>> cases{
-        {2, {true, false, false}}, {2, {true, true, false}}, {3, {false, true, true}}, {3, {true, true, true}}};
+    const std::vector<std::pair<int, std::array<bool, 3>>> cases{{2, {true, false, false}},
+                                                                 {2, {true, true, false}},
+                                                                 {3, {false, true, true}},
+                                                                 {3, {true, true, true}}};
     for (const auto& [dim, periodic] : cases)
         for (const int scale : {1, 2})
             for (const AdvectionScheme scheme : kAdvectionSchemes) {
-                const std::string what = std::to_string(dim) + "D periodic " + std::to_string(periodic[0]) +
-                                         std::to_string(periodic[1]) + std::to_string(periodic[2]) + " x" +
+                const std::string what = std::to_string(dim) + "D periodic " +
+                                         std::to_string(periodic[0]) + std::to_string(periodic[1]) +
+                                         std::to_string(periodic[2]) + " x" +
                                          std::to_string(scale) + " " + schemeName(scheme);
                 {
                     SmokeSetup setup{dim, dim == 2 ? 32 : 12, scale, scheme};
@@ -203,10 +208,11 @@ TEST_P(SmokeKernelTest, AUniformFlowCarriesABlobOnceAroundAPeriodicBoxBackToItsS
             const SmokeAdvectionKernels kernels(context());
             SmokeState state(context(), grid, 1, mask);
             state.upload(toFloat(blob), toFloat(blob));
-            const DeviceBuffer velocity =
-                DeviceBuffer::fromValues<float>(context(), toFloat(testing::diagonalFlow(grid)), "velocity");
+            const DeviceBuffer velocity = DeviceBuffer::fromValues<float>(
+                context(), toFloat(testing::diagonalFlow(grid)), "velocity");
             CommandSequence sequence(context());
-            for (int step = 0; step < 80; ++step) kernels.record(sequence, state, velocity, 0.0125, scheme);
+            for (int step = 0; step < 80; ++step)
+                kernels.record(sequence, state, velocity, 0.0125, scheme);
             sequence.submitAndWait();
             std::vector<float> density(mask.size()), temperature(mask.size());
             state.download(density, temperature);
@@ -214,13 +220,15 @@ TEST_P(SmokeKernelTest, AUniformFlowCarriesABlobOnceAroundAPeriodicBoxBackToItsS
             const std::vector<double> after = toDouble(density);
             const Vec3 before = testing::centroidNear(grid, blob, start);
             const Vec3 back = testing::centroidNear(grid, after, start);
-            const double distance = std::hypot(back[0] - before[0], back[1] - before[1]) / grid.spacing[0];
+            const double distance =
+                std::hypot(back[0] - before[0], back[1] - before[1]) / grid.spacing[0];
             const double massChange = reference.mass(after) / reference.mass(blob) - 1.0;
-            std::cout << schemeName(scheme) << " on the device, once around a 2D torus: centroid " << distance
-                      << " cells from its start, mass change " << massChange << "\n";
+            std::cout << schemeName(scheme) << " on the device, once around a 2D torus: centroid "
+                      << distance << " cells from its start, mass change " << massChange << "\n";
             // MacCormack's clamp moves the centroid of so narrow a blob by a fraction of a cell,
             // walls or not (the CPU reference's too); wrapping wrong would leave it cells away.
-            EXPECT_LE(distance, scheme == AdvectionScheme::SemiLagrangian ? 0.05 : 0.5) << schemeName(scheme);
+            EXPECT_LE(distance, scheme == AdvectionScheme::SemiLagrangian ? 0.05 : 0.5)
+                << schemeName(scheme);
             if (scheme == AdvectionScheme::SemiLagrangian) {
                 EXPECT_NEAR(massChange, 0.0, 1e-5);
             }

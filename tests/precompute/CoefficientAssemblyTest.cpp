@@ -51,13 +51,18 @@ struct TorusMode {
     double omega(double x, double y) const {
         return A * (kx() * kx() + ky() * ky()) * std::sin(kx() * x + p) * std::sin(ky() * y + q);
     }
-    double ux(double x, double y) const { return A * ky() * std::sin(kx() * x + p) * std::cos(ky() * y + q) + U; }
-    double uy(double x, double y) const { return -A * kx() * std::cos(kx() * x + p) * std::sin(ky() * y + q) + V; }
+    double ux(double x, double y) const {
+        return A * ky() * std::sin(kx() * x + p) * std::cos(ky() * y + q) + U;
+    }
+    double uy(double x, double y) const {
+        return -A * kx() * std::cos(kx() * x + p) * std::sin(ky() * y + q) + V;
+    }
 };
 
-const std::vector<TorusMode> kTorusModes = {{0.0, 0, 0, 0.0, 0.0, 1.0, 0.0}, {0.0, 0, 0, 0.0, 0.0, 0.0, 1.0},
-                                            {1.0, 1, 1, 0.0, 0.0, 0.0, 0.0}, {1.0, 1, 2, 0.5, 0.0, 0.0, 0.0},
-                                            {1.0, 2, 1, 0.0, 0.7, 0.0, 0.0}, {1.0, 1, 1, 1.1, 0.3, 0.0, 0.0}};
+const std::vector<TorusMode> kTorusModes = {
+    {0.0, 0, 0, 0.0, 0.0, 1.0, 0.0}, {0.0, 0, 0, 0.0, 0.0, 0.0, 1.0},
+    {1.0, 1, 1, 0.0, 0.0, 0.0, 0.0}, {1.0, 1, 2, 0.5, 0.0, 0.0, 0.0},
+    {1.0, 2, 1, 0.0, 0.7, 0.0, 0.0}, {1.0, 1, 1, 1.1, 0.3, 0.0, 0.0}};
 
 /// ∫ ω_i (u_k × u_j) over the box by tensor Gauss–Legendre quadrature (exact to round-off for
 /// these trigonometric products at this order).
@@ -89,7 +94,8 @@ double continuumCoefficient(const Mode& k, const Mode& i, const Mode& j) {
 /// Discrete coefficients of the modes sampled as exact face fluxes (ψ differences) on a grid of
 /// [0, 1.3] × [0, 1] with `resolution` cells along y.
 template <typename Mode>
-std::vector<double> discreteCoefficients(int resolution, const std::vector<Mode>& fields, bool periodic) {
+std::vector<double> discreteCoefficients(int resolution, const std::vector<Mode>& fields,
+                                         bool periodic) {
     SceneSpec scene = testing::gridScene({int(std::lround(1.3 * resolution)), resolution, 1},
                                          {0.0, 0.0, 0.0}, {1.3, 1.0, 0.0}, 2);
     scene.grid.periodic = {periodic, periodic, false};
@@ -116,7 +122,8 @@ std::vector<double> discreteCoefficients(int resolution, const std::vector<Mode>
 /// Max |C − C_exact| / max |C_exact| at 16, 32 and 64 cells across, each step at least 3.3 times
 /// smaller (second order), below `finest` at 64.
 template <typename Mode>
-void expectQuadraticConvergence(const std::vector<Mode>& fields, bool periodic, double finest, const char* label) {
+void expectQuadraticConvergence(const std::vector<Mode>& fields, bool periodic, double finest,
+                                const char* label) {
     const size_t n = fields.size();
     std::vector<double> exact(packedSize(n));
     double scale = 0.0;
@@ -134,7 +141,8 @@ void expectQuadraticConvergence(const std::vector<Mode>& fields, bool periodic, 
         double err = 0.0;
         for (size_t p = 0; p < c.size(); ++p) err = std::max(err, std::abs(c[p] - exact[p]));
         err /= scale;
-        std::printf("%s, %d cells across: max |C − C_exact| / max |C_exact| = %.3e", label, res, err);
+        std::printf("%s, %d cells across: max |C − C_exact| / max |C_exact| = %.3e", label, res,
+                    err);
         if (previous > 0.0) std::printf("  (order %.2f)", std::log2(previous / err));
         std::printf("\n");
         if (previous > 0.0) {
@@ -151,7 +159,8 @@ TEST(CoefficientAssembly, BoxCoefficientsConvergeQuadratically2D) {
 
 TEST(CoefficientAssembly, TorusCoefficientsConvergeQuadratically2D) {
     // Periodic fields, the two uniform flows among them: the quadrature wraps across the seams.
-    expectQuadraticConvergence(kTorusModes, true, 1e-2, "torus 2D");  // twice the box's wave numbers
+    expectQuadraticConvergence(kTorusModes, true, 1e-2,
+                               "torus 2D");  // twice the box's wave numbers
 }
 
 TEST(CoefficientAssembly, DiskEigenmodeSelfInteractionVanishesUnderRefinement) {

@@ -76,7 +76,8 @@ TEST(CubicalComplexPeriodic, PeriodicAxesHoldNPositionsOfEveryElementType) {
     EXPECT_EQ(c2.count(2), 20);
     // 3D torus: 3N faces and edges, N vertices.
     const CubicalComplex c3(periodicGrid(3, {true, true, true}));
-    for (int k = 0; k <= 3; ++k) EXPECT_EQ(c3.count(k), (k == 0 || k == 3 ? 1 : 3) * 60) << "k " << k;
+    for (int k = 0; k <= 3; ++k)
+        EXPECT_EQ(c3.count(k), (k == 0 || k == 3 ? 1 : 3) * 60) << "k " << k;
     for (int k = 0; k <= 3; ++k)
         for (std::int64_t i = 0; i < c3.count(k); ++i) ASSERT_EQ(c3.index(c3.element(k, i)), i);
 }
@@ -91,15 +92,18 @@ TEST(CubicalComplexPeriodic, IncidenceWrapsAcrossTheSeam) {
         const Element seam{xFace, {0, 1, 0}}, lower{xFace, last.pos};
         EXPECT_EQ(d.coeff(c.index(last), c.index(seam)), 1.0) << dim << "D";
         EXPECT_EQ(d.coeff(c.index(last), c.index(lower)), -1.0) << dim << "D";
-        EXPECT_EQ(d.coeff(c.index(Element{last.axes, {0, 1, 0}}), c.index(seam)), -1.0) << dim << "D";
+        EXPECT_EQ(d.coeff(c.index(Element{last.axes, {0, 1, 0}}), c.index(seam)), -1.0)
+            << dim << "D";
         // Every cell has 2·dim faces, every face two cells along a periodic normal.
         for (std::int64_t cell = 0; cell < c.count(dim); ++cell)
             ASSERT_EQ(SparseMatrix(d.row(cell)).nonZeros(), 2 * dim) << dim << "D cell " << cell;
         EXPECT_FALSE(c.onBoxBoundary(seam));
-        const unsigned wallFace = ((1u << dim) - 1) & ~(1u << (dim - 1));  // the last axis is walled
+        const unsigned wallFace =
+            ((1u << dim) - 1) & ~(1u << (dim - 1));  // the last axis is walled
         EXPECT_TRUE(c.onBoxBoundary(Element{wallFace, {0, 0, 0}}));
         for (int k = 0; k + 2 <= dim; ++k)
-            EXPECT_EQ((c.incidence(k + 1) * c.incidence(k)).norm(), 0.0) << dim << "D, d" << k + 1 << " d" << k;
+            EXPECT_EQ((c.incidence(k + 1) * c.incidence(k)).norm(), 0.0)
+                << dim << "D, d" << k + 1 << " d" << k;
     }
 }
 
@@ -125,7 +129,9 @@ int harmonicFluxes(const CubicalComplex& c) {
         for (std::size_t j = 0; j < vorticity.size(); ++j)
             curlOnFaces(Eigen::Index(i), Eigen::Index(j)) = curl(faces[i], vorticity[j]);
     }
-    const auto rank = [](const Eigen::MatrixXd& m) { return int(Eigen::FullPivLU<Eigen::MatrixXd>(m).rank()); };
+    const auto rank = [](const Eigen::MatrixXd& m) {
+        return int(Eigen::FullPivLU<Eigen::MatrixXd>(m).rank());
+    };
     return int(faces.size()) - rank(divOnFaces) - rank(curlOnFaces);
 }
 

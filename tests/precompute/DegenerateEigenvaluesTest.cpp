@@ -12,7 +12,8 @@ namespace {
 /// 1, 2, 3 once, then `copies` times 4, then 5, 6, … once each.
 Eigen::SparseMatrix<double> degenerate(int n, int copies) {
     Eigen::SparseMatrix<double> k(n, n);
-    for (int i = 0; i < n; ++i) k.insert(i, i) = i < 3 ? i + 1.0 : i < 3 + copies ? 4.0 : double(i - copies + 5);
+    for (int i = 0; i < n; ++i)
+        k.insert(i, i) = i < 3 ? i + 1.0 : i < 3 + copies ? 4.0 : double(i - copies + 5);
     return k;
 }
 
@@ -22,8 +23,10 @@ TEST(DegenerateEigenvalues, DeflatedRunsFindEveryCopy) {
     EigenRequest request{count, -0.01, 1e-12, "test eigensolve", {}, false};
     const EigenPairs once = smallestEigenpairs(degenerate(n, copies), mass, request);
     int found = 0;
-    for (Eigen::Index i = 0; i < once.values.size(); ++i) found += std::abs(2.0 * once.values[i] - 4.0) < 1e-9;
-    EXPECT_LT(found, copies) << "one Lanczos run found every copy: this test no longer shows the need";
+    for (Eigen::Index i = 0; i < once.values.size(); ++i)
+        found += std::abs(2.0 * once.values[i] - 4.0) < 1e-9;
+    EXPECT_LT(found, copies)
+        << "one Lanczos run found every copy: this test no longer shows the need";
 
     request.findMissedCopies = true;
     const EigenPairs all = smallestEigenpairs(degenerate(n, copies), mass, request);

@@ -40,12 +40,15 @@ TEST(PeriodicConvergence, ChannelAroundADiskConvergesQuadraticallyWithCutCells) 
         return ((k2 - reference).cwiseQuotient(reference)).cwiseAbs().maxCoeff();
     };
     const double e64 = error(at64), e128 = error(at128), e256 = error(at256);
-    const double selfOrder = std::log2((at64 - at128).cwiseQuotient(reference).cwiseAbs().maxCoeff() /
-                                       (at128 - at256).cwiseQuotient(reference).cwiseAbs().maxCoeff());
-    std::printf("periodic channel around a disk, cut cells, max relative error of the first %d non-zero κ²\n"
-                "against 512 cells along it: 64 %.3e, 128 %.3e (order %.2f), 256 %.3e (order %.2f); "
-                "self-convergence 64/128/256: order %.2f\n",
-                count, e64, e128, std::log2(e64 / e128), e256, std::log2(e128 / e256), selfOrder);
+    const double selfOrder =
+        std::log2((at64 - at128).cwiseQuotient(reference).cwiseAbs().maxCoeff() /
+                  (at128 - at256).cwiseQuotient(reference).cwiseAbs().maxCoeff());
+    std::printf(
+        "periodic channel around a disk, cut cells, max relative error of the first %d non-zero "
+        "κ²\n"
+        "against 512 cells along it: 64 %.3e, 128 %.3e (order %.2f), 256 %.3e (order %.2f); "
+        "self-convergence 64/128/256: order %.2f\n",
+        count, e64, e128, std::log2(e64 / e128), e256, std::log2(e128 / e256), selfOrder);
     EXPECT_GE(std::log2(e64 / e128), 1.8);
     EXPECT_GE(selfOrder, 1.8);
 }

@@ -63,7 +63,8 @@ std::vector<double> boxSpectrum(const GridSpec& g, Field field) {
 
 /// Relative error to 1e-9; a zero (a harmonic field, the Dirichlet constant on a torus) against
 /// the spectrum's largest value.
-void expectSpectrum(const Eigen::VectorXd& computed, const std::vector<double>& exact, const char* what) {
+void expectSpectrum(const Eigen::VectorXd& computed, const std::vector<double>& exact,
+                    const char* what) {
     ASSERT_LE(size_t(computed.size()), exact.size());
     const double scale = exact[size_t(computed.size()) - 1];
     double worst = 0.0;
@@ -73,26 +74,32 @@ void expectSpectrum(const Eigen::VectorXd& computed, const std::vector<double>& 
         const double e = std::abs(computed[i] - reference) / (reference == 0.0 ? scale : reference);
         if (e > worst) worst = e, at = i;
     }
-    EXPECT_LE(worst, 1e-9) << what << ": worst relative error " << worst << " at eigenvalue " << at + 1
-                           << " (computed " << computed[at] << ", exact " << exact[size_t(at)] << ")";
+    EXPECT_LE(worst, 1e-9) << what << ": worst relative error " << worst << " at eigenvalue "
+                           << at + 1 << " (computed " << computed[at] << ", exact "
+                           << exact[size_t(at)] << ")";
 }
 
-SceneSpec periodicScene(std::array<int, 3> res, Vec3 lo, Vec3 hi, int dim, std::array<bool, 3> periodic) {
+SceneSpec periodicScene(std::array<int, 3> res, Vec3 lo, Vec3 hi, int dim,
+                        std::array<bool, 3> periodic) {
     SceneSpec scene = testing::gridScene(res, lo, hi, dim);
     scene.grid.periodic = periodic;
     return scene;
 }
 
-int periodicAxes(const GridSpec& g) { return g.isPeriodic(0) + g.isPeriodic(1) + g.isPeriodic(2); }
+int periodicAxes(const GridSpec& g) {
+    return g.isPeriodic(0) + g.isPeriodic(1) + g.isPeriodic(2);
+}
 
 void checkPeriodicBox(SceneSpec scene, int velocityModes, int scalarModes) {
     scene.basis.velocityModes = {{1, velocityModes}};
     scene.basis.scalarModes = scalarModes;
     Progress quiet = Progress::silent();
     const BasisCache neumann = computeBasis(scene, quiet);
-    expectSpectrum(neumann.velocity.eigenvalues, boxSpectrum(scene.grid, Field::Velocity), "velocity");
+    expectSpectrum(neumann.velocity.eigenvalues, boxSpectrum(scene.grid, Field::Velocity),
+                   "velocity");
     expectSpectrum(neumann.scalar.eigenvalues, boxSpectrum(scene.grid, Field::Neumann), "Neumann");
-    EXPECT_EQ(neumann.velocity.harmonic, periodicAxes(scene.grid)) << "one uniform flow per periodic axis";
+    EXPECT_EQ(neumann.velocity.harmonic, periodicAxes(scene.grid))
+        << "one uniform flow per periodic axis";
     EXPECT_EQ(neumann.scalar.omittedConstants, 1);
     const BasisChecks checks = checkBasis(neumann);
     EXPECT_LE(checks.maxDivergence, 1e-10);
@@ -101,24 +108,33 @@ void checkPeriodicBox(SceneSpec scene, int velocityModes, int scalarModes) {
 
     scene.basis.scalarBoundary = ScalarBoundary::Dirichlet;
     const BasisCache dirichlet = computeBasis(scene, quiet);
-    expectSpectrum(dirichlet.scalar.eigenvalues, boxSpectrum(scene.grid, Field::Dirichlet), "Dirichlet");
+    expectSpectrum(dirichlet.scalar.eigenvalues, boxSpectrum(scene.grid, Field::Dirichlet),
+                   "Dirichlet");
 }
 
 TEST(PeriodicSpectrum, Torus2DMatchesDiscreteValuesExactly) {
     // Non-square cells and box.
-    checkPeriodicBox(periodicScene({24, 20, 1}, {-1.0, 0.0, 0.0}, {1.25, 1.5, 0.0}, 2, {true, true, false}), 60, 40);
+    checkPeriodicBox(
+        periodicScene({24, 20, 1}, {-1.0, 0.0, 0.0}, {1.25, 1.5, 0.0}, 2, {true, true, false}), 60,
+        40);
 }
 
 TEST(PeriodicSpectrum, Channel2DMatchesDiscreteValuesExactly) {
-    checkPeriodicBox(periodicScene({30, 16, 1}, {0.0, 0.0, 0.0}, {2.0, 1.0, 0.0}, 2, {true, false, false}), 60, 40);
+    checkPeriodicBox(
+        periodicScene({30, 16, 1}, {0.0, 0.0, 0.0}, {2.0, 1.0, 0.0}, 2, {true, false, false}), 60,
+        40);
 }
 
 TEST(PeriodicSpectrum, Torus3DMatchesDiscreteValuesExactly) {
-    checkPeriodicBox(periodicScene({10, 8, 12}, {0.0, 0.0, 0.0}, {1.2, 0.9, 1.0}, 3, {true, true, true}), 60, 30);
+    checkPeriodicBox(
+        periodicScene({10, 8, 12}, {0.0, 0.0, 0.0}, {1.2, 0.9, 1.0}, 3, {true, true, true}), 60,
+        30);
 }
 
 TEST(PeriodicSpectrum, Slab3DPeriodicInXAndZMatchesDiscreteValuesExactly) {
-    checkPeriodicBox(periodicScene({10, 8, 12}, {0.0, 0.0, 0.0}, {1.2, 0.9, 1.0}, 3, {true, false, true}), 60, 30);
+    checkPeriodicBox(
+        periodicScene({10, 8, 12}, {0.0, 0.0, 0.0}, {1.2, 0.9, 1.0}, 3, {true, false, true}), 60,
+        30);
 }
 
 /// Harmonic count of a domain (the leading velocity modes with κ = 0), with the basis checked.
@@ -132,21 +148,30 @@ int harmonicCount(SceneSpec scene) {
 }
 
 TEST(PeriodicHarmonics, OnePerPeriodicAxisAndOnePerHole) {
-    EXPECT_EQ(harmonicCount(periodicScene({16, 16, 1}, {0.0, 0.0, 0.0}, {1.0, 1.0, 0.0}, 2, {true, true, false})), 2)
+    EXPECT_EQ(harmonicCount(periodicScene({16, 16, 1}, {0.0, 0.0, 0.0}, {1.0, 1.0, 0.0}, 2,
+                                          {true, true, false})),
+              2)
         << "2D torus";
-    EXPECT_EQ(harmonicCount(periodicScene({8, 8, 8}, {0.0, 0.0, 0.0}, {1.0, 1.0, 1.0}, 3, {true, true, true})), 3)
+    EXPECT_EQ(harmonicCount(periodicScene({8, 8, 8}, {0.0, 0.0, 0.0}, {1.0, 1.0, 1.0}, 3,
+                                          {true, true, true})),
+              3)
         << "3D torus";
-    EXPECT_EQ(harmonicCount(periodicScene({16, 8, 1}, {0.0, 0.0, 0.0}, {2.0, 1.0, 0.0}, 2, {true, false, false})), 1)
+    EXPECT_EQ(harmonicCount(periodicScene({16, 8, 1}, {0.0, 0.0, 0.0}, {2.0, 1.0, 0.0}, 2,
+                                          {true, false, false})),
+              1)
         << "2D channel";
-    EXPECT_EQ(harmonicCount(testing::periodicChannelScene(32)), 2) << "2D channel around a disk: the flow along it and the circulation";
-    SceneSpec torusWithDisk = periodicScene({32, 32, 1}, {0.0, 0.0, 0.0}, {1.0, 1.0, 0.0}, 2, {true, true, false});
+    EXPECT_EQ(harmonicCount(testing::periodicChannelScene(32)), 2)
+        << "2D channel around a disk: the flow along it and the circulation";
+    SceneSpec torusWithDisk =
+        periodicScene({32, 32, 1}, {0.0, 0.0, 0.0}, {1.0, 1.0, 0.0}, 2, {true, true, false});
     torusWithDisk.domain = {testing::box({-1.0, -1.0, 0.0}, {2.0, 2.0, 0.0}),
                             testing::ball({0.5, 0.5, 0.0}, 0.2, CsgOp::Subtract)};
     // On a torus the circulation around a hole is not free: the fundamental domain's edges cancel,
     // so it equals minus the (zero) curl outside the hole. A torus with a hole is a wedge of two
     // circles: two harmonic fields, the uniform flows.
     EXPECT_EQ(harmonicCount(torusWithDisk), 2) << "2D torus around a disk";
-    EXPECT_EQ(harmonicCount(testing::periodicChannelScene(32, {false, false, false})), 1) << "the same disk between walls: its circulation";
+    EXPECT_EQ(harmonicCount(testing::periodicChannelScene(32, {false, false, false})), 1)
+        << "the same disk between walls: its circulation";
 }
 
 TEST(PeriodicSeams, RefusesADomainThatDiffersAtTheTwoEnds) {
@@ -159,7 +184,8 @@ TEST(PeriodicSeams, RefusesADomainThatDiffersAtTheTwoEnds) {
         FAIL() << "a domain that differs across the seam was accepted";
     } catch (const Error& e) {
         const std::string message = e.what();
-        EXPECT_NE(message.find("[[domain]]: the domain does not repeat across periodic axis x"), std::string::npos)
+        EXPECT_NE(message.find("[[domain]]: the domain does not repeat across periodic axis x"),
+                  std::string::npos)
             << message;
         EXPECT_NE(message.find("x = 0 and x = 2"), std::string::npos) << message;
     }
@@ -170,7 +196,8 @@ TEST(PeriodicSeams, RefusesADomainThatDiffersAtTheTwoEnds) {
 
 TEST(PeriodicSeams, RefusesAWallOnTheSeam) {
     // A box domain that ends where the grid does: its walls would close the periodic axis.
-    SceneSpec scene = periodicScene({16, 8, 1}, {0.0, 0.0, 0.0}, {2.0, 1.0, 0.0}, 2, {true, false, false});
+    SceneSpec scene =
+        periodicScene({16, 8, 1}, {0.0, 0.0, 0.0}, {2.0, 1.0, 0.0}, 2, {true, false, false});
     scene.domain = {testing::box({0.0, 0.2, 0.0}, {2.0, 0.8, 0.0})};
     Progress quiet = Progress::silent();
     try {
@@ -178,8 +205,9 @@ TEST(PeriodicSeams, RefusesAWallOnTheSeam) {
         FAIL() << "a wall on the seam was accepted";
     } catch (const Error& e) {
         const std::string message = e.what();
-        EXPECT_NE(message.find("[[domain]]: a wall of the domain lies on the seam of periodic axis x"),
-                  std::string::npos)
+        EXPECT_NE(
+            message.find("[[domain]]: a wall of the domain lies on the seam of periodic axis x"),
+            std::string::npos)
             << message;
     }
 }

@@ -1151,7 +1151,8 @@ TEST(SceneLoaderPeriodic, PeriodicFlagsAreOnePerAxisAndDefaultToWalls) {
 
 TEST(SceneLoaderPeriodic, PeriodicAxesAreAcceptedAndCountTheirFacesOnce) {
     const SceneSpec channel = parseScene(
-        "[grid]\nresolution = [8, 4]\nbounds_min = [0, 0]\nbounds_max = [2, 1]\nperiodic = [true, false]\n"
+        "[grid]\nresolution = [8, 4]\nbounds_min = [0, 0]\nbounds_max = [2, 1]\nperiodic = [true, "
+        "false]\n"
         "[basis]\nvelocity_modes = 4\n",
         "channel.toml");
     EXPECT_EQ(channel.grid.periodic, (std::array<bool, 3>{true, false, false}));
@@ -1161,13 +1162,18 @@ TEST(SceneLoaderPeriodic, PeriodicAxesAreAcceptedAndCountTheirFacesOnce) {
         "slab.toml");
     EXPECT_EQ(slab.grid.periodic, (std::array<bool, 3>{true, false, true}));
     // A 4 × 4 torus has 32 faces (a walled 4 × 4 box 40): mode 36 lies beyond it.
-    const std::string torus = "[grid]\nresolution = [4, 4]\nbounds_min = [0, 0]\nbounds_max = [1, 1]\n";
-    EXPECT_NO_THROW(parseScene(torus + "[basis]\nvelocity_modes = 36\nscalar_modes = 0\n", "box.toml"));
+    const std::string torus =
+        "[grid]\nresolution = [4, 4]\nbounds_min = [0, 0]\nbounds_max = [1, 1]\n";
+    EXPECT_NO_THROW(
+        parseScene(torus + "[basis]\nvelocity_modes = 36\nscalar_modes = 0\n", "box.toml"));
     try {
-        parseScene(torus + "periodic = [true, true]\n[basis]\nvelocity_modes = 36\nscalar_modes = 0\n", "torus.toml");
+        parseScene(
+            torus + "periodic = [true, true]\n[basis]\nvelocity_modes = 36\nscalar_modes = 0\n",
+            "torus.toml");
         ADD_FAILURE() << "mode 36 of a 4 x 4 torus accepted";
     } catch (const Error& e) {
-        EXPECT_NE(std::string(e.what()).find("the grid has only 32 faces"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("the grid has only 32 faces"), std::string::npos)
+            << e.what();
     }
 }
 

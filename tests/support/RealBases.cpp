@@ -43,7 +43,8 @@ const BasisCache& periodicChannel2d() {
 }
 
 const BasisCache& torusAroundDisk2d() {
-    static const BasisCache cache = sharedBasis(withModes(periodicChannelScene(32, {true, true, false}), 20));
+    static const BasisCache cache =
+        sharedBasis(withModes(periodicChannelScene(32, {true, true, false}), 20));
     return cache;
 }
 

@@ -49,7 +49,8 @@ std::vector<double> constantVelocity(const MacGrid& grid, const Vec3& u) {
             for (int y = 0; y < e[1]; ++y)
                 for (int x = 0; x < e[0]; ++x) {
                     const std::array<int, 3> p{x, y, z};
-                    if (!grid.isWallFace(axis, p[axis])) faces[grid.faceIndex(axis, x, y, z)] = u[axis];
+                    if (!grid.isWallFace(axis, p[axis]))
+                        faces[grid.faceIndex(axis, x, y, z)] = u[axis];
                 }
     }
     return faces;
@@ -64,7 +65,8 @@ std::vector<double> streamFunctionVelocity(const MacGrid& grid, const std::funct
     for (int k = 0; k < grid.cells[2]; ++k)
         for (int j = 0; j <= grid.cells[1]; ++j)
             for (int i = 0; i <= grid.cells[0]; ++i) {
-                // Along a periodic axis the faces at n are those at 0 (ψ repeats, so the same value).
+                // Along a periodic axis the faces at n are those at 0 (ψ repeats, so the same
+                // value).
                 if (j < grid.cells[1] && i < grid.faceExtent(0)[0])
                     faces[grid.faceIndex(0, i, j, k)] = (at(i, j + 1, k) - at(i, j, k)) / grid.spacing[1];
                 if (i < grid.cells[0] && j < grid.faceExtent(1)[1])

@@ -27,7 +27,8 @@ SceneSpec unitBallScene(int dim, int cells, int velocityModes, int scalarModes) 
 SceneSpec periodicChannelScene(int nx, std::array<bool, 3> periodic) {
     SceneSpec s = gridScene({nx, nx / 2, 1}, {0.0, 0.0, 0.0}, {2.0, 1.0, 0.0}, 2);
     s.grid.periodic = periodic;
-    s.domain = {box({-1.0, -1.0, 0.0}, {3.0, 2.0, 0.0}), ball({1.0, 0.5, 0.0}, 0.2, CsgOp::Subtract)};
+    s.domain = {box({-1.0, -1.0, 0.0}, {3.0, 2.0, 0.0}),
+                ball({1.0, 0.5, 0.0}, 0.2, CsgOp::Subtract)};
     return s;
 }
 

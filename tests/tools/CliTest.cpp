@@ -124,12 +124,14 @@ periodic = [true, false]
 velocity_modes = 6
 scalar_modes = 2
 )");
-    const RunResult json = run("inspect " + s.string() + " --cache-dir " + mCache.string() + " --json");
+    const RunResult json =
+        run("inspect " + s.string() + " --cache-dir " + mCache.string() + " --json");
     ASSERT_EQ(json.status, 0) << json.err;
     const auto j = nlohmann::json::parse(json.out);
     EXPECT_EQ(j["periodic"], nlohmann::json({true, false}));
     EXPECT_EQ(j["velocity"]["harmonic"], 1);
-    EXPECT_EQ(j["dofs"]["faces"], 16 * 8 + 16 * 7) << "every x-face (16 a row, the seam's once), y-faces off the walls";
+    EXPECT_EQ(j["dofs"]["faces"], 16 * 8 + 16 * 7)
+        << "every x-face (16 a row, the seam's once), y-faces off the walls";
     const RunResult text = run("inspect " + s.string() + " --cache-dir " + mCache.string());
     ASSERT_EQ(text.status, 0) << text.err;
     EXPECT_NE(text.out.find("grid       2D [16,8], periodic x, "), std::string::npos) << text.out;

@@ -25,9 +25,9 @@ using testing::RunResult;
 namespace fs = std::filesystem;
 
 struct PeriodicScene {
-    const char* file;  ///< under scenes/
-    int frames;        ///< enough for the smoke to cross the seam
-    int axis;          ///< the periodic axis the smoke crosses
+    const char* file;       ///< under scenes/
+    int frames;             ///< enough for the smoke to cross the seam
+    int axis;               ///< the periodic axis the smoke crosses
     double farFrom, farTo;  ///< where along it only smoke that wrapped can be
 };
 
@@ -49,31 +49,36 @@ TEST_P(PeriodicScenes, SmokeCrossesTheSeamAndTheFramesSayWhichAxesWrap) {
     for (int z = 0; z < smoke.cells[2]; ++z)
         for (int y = 0; y < smoke.cells[1]; ++y)
             for (int x = 0; x < smoke.cells[0]; ++x) {
-                const Vec3 c{smoke.cellCentre(0, x), smoke.cellCentre(1, y), smoke.dim == 3 ? smoke.cellCentre(2, z) : 0.0};
+                const Vec3 c{smoke.cellCentre(0, x), smoke.cellCentre(1, y),
+                             smoke.dim == 3 ? smoke.cellCentre(2, z) : 0.0};
                 if (c[p.axis] > p.farFrom && c[p.axis] < p.farTo) far.push_back(c);
             }
     for (const std::string backend : {"cpu", "vulkan"}) {
         SCOPED_TRACE(backend);
         const fs::path out = mDir / backend;
-        const RunResult r = run("run " + file.string() + " --frames " + std::to_string(p.frames) + " --device " +
-                                backend + " --out " + out.string() + " --cache-dir " + mCache.string());
+        const RunResult r =
+            run("run " + file.string() + " --frames " + std::to_string(p.frames) + " --device " +
+                backend + " --out " + out.string() + " --cache-dir " + mCache.string());
         ASSERT_EQ(r.status, 0) << r.err;
         const fs::path last = out / frameFileName(scene.name, p.frames);
         const VdbFrameInfo info = readVdbFrameInfo(last);
         ASSERT_TRUE(info.periodic.has_value()) << "no modeflow_periodic metadata in " << last;
         EXPECT_EQ(*info.periodic, scene.grid.periodic);
         for (const VdbGridInfo& g : info.grids) EXPECT_EQ(g.periodic, info.periodic) << g.name;
-        EXPECT_NEAR(info.grid("density")->voxelSize[0], smoke.spacing[0], 1e-12) << "the documented lattice";
+        EXPECT_NEAR(info.grid("density")->voxelSize[0], smoke.spacing[0], 1e-12)
+            << "the documented lattice";
         // The first frame has no smoke at the far end yet; the last has.
         const auto smokeAtFarEnd = [&](const fs::path& vdb) {
             double most = 0.0;
-            for (const VdbSample& s : sampleVdbGrid(vdb, "density", far)) most = std::max(most, s.value[0]);
+            for (const VdbSample& s : sampleVdbGrid(vdb, "density", far))
+                most = std::max(most, s.value[0]);
             return most;
         };
         const double before = smokeAtFarEnd(out / frameFileName(scene.name, 1));
         const double after = smokeAtFarEnd(last);
-        std::cout << p.file << " on " << backend << ": most smoke at the far end of the seam, frame 1 " << before
-                  << ", frame " << p.frames << " " << after << "\n";
+        std::cout << p.file << " on " << backend
+                  << ": most smoke at the far end of the seam, frame 1 " << before << ", frame "
+                  << p.frames << " " << after << "\n";
         EXPECT_EQ(before, 0.0);
         EXPECT_GT(after, 0.05);
     }

@@ -60,13 +60,15 @@ nlohmann::ordered_json summarize(const BasisCache& c, const std::filesystem::pat
 std::string periodicAxes(const nlohmann::ordered_json& flags) {
     std::string axes;
     for (std::size_t a = 0; a < flags.size(); ++a)
-        if (flags[a].get<bool>()) axes += std::string(axes.empty() ? ", periodic " : ", ") + "xyz"[a];
+        if (flags[a].get<bool>())
+            axes += std::string(axes.empty() ? ", periodic " : ", ") + "xyz"[a];
     return axes;
 }
 
 void printText(const nlohmann::ordered_json& j) {
-    std::cout << "grid       " << j["dim"] << "D " << j["resolution"].dump() << periodicAxes(j["periodic"]) << ", "
-              << j["boundary"].get<std::string>() << ", " << j["wall"].get<std::string>() << "\n"
+    std::cout << "grid       " << j["dim"] << "D " << j["resolution"].dump()
+              << periodicAxes(j["periodic"]) << ", " << j["boundary"].get<std::string>() << ", "
+              << j["wall"].get<std::string>() << "\n"
               << "dofs       " << j["dofs"]["faces"] << " faces, " << j["dofs"]["cells"]
               << " cells\n";
     auto list = [](const nlohmann::ordered_json& values) {
