@@ -6,7 +6,9 @@
 
 #include <unistd.h>
 
+#include "engine/format/CacheConsistency.h"
 #include "engine/format/Error.h"
+#include "engine/format/InputFile.h"
 
 static_assert(__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__, "the cache format is little-endian");
 
@@ -15,6 +17,9 @@ namespace {
 
 constexpr char kMagic[16] = {'M', 'O', 'D', 'E', 'F', 'L', 'O', 'W', '-', 'B', 'A', 'S', 'I', 'S', 0, 0};
 constexpr size_t kHeaderSize = 16 + 4 + 4 + 8 + 8;
+/// The largest cache file read (64 GiB): far above any basis a precompute finishes, low enough that
+/// a damaged or hostile file cannot make the reader ask for terabytes.
+constexpr std::uintmax_t kMaxCacheBytes = std::uintmax_t{1} << 36;
 
 class Writer {
 public:
@@ -185,14 +190,8 @@ BasisCache deserialize(std::string_view payload, const std::filesystem::path& pa
         c.timings.emplace_back(std::move(name), r.pod<double>());
     }
     if (!r.atEnd()) r.corrupt();
+    requireConsistentCache(c, "cache file " + path.string());
     return c;
-}
-
-std::string readAll(const std::filesystem::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw Error("cannot open cache file " + path.string() + ": " +
-                         std::error_code(errno, std::generic_category()).message());
-    return std::string(std::istreambuf_iterator<char>(in), {});
 }
 
 struct Header {
@@ -202,8 +201,7 @@ struct Header {
 
 Header parseHeader(std::string_view bytes, const std::filesystem::path& path) {
     const std::string where = "cache file " + path.string();
-    if (bytes.size() < sizeof(kMagic) || std::memcmp(bytes.data(), kMagic, sizeof(kMagic)) != 0)
-        throw Error(where + " is not a modeflow basis cache (bad magic)");
+    if (!hasCacheMagic(bytes)) throw Error(where + " is not a modeflow basis cache (bad magic)");
     if (bytes.size() < kHeaderSize) throw Error(where + " is truncated (incomplete header)");
     std::uint32_t version;
     std::memcpy(&version, bytes.data() + 16, 4);
@@ -215,6 +213,30 @@ Header parseHeader(std::string_view bytes, const std::filesystem::path& path) {
     std::memcpy(&h.keyHash, bytes.data() + 24, 8);
     std::memcpy(&h.payloadSize, bytes.data() + 32, 8);
     return h;
+}
+
+/// An open cache file and its size, after the checks of regularFileSize.
+struct OpenCache {
+    std::ifstream in;
+    std::uintmax_t size = 0;
+};
+
+OpenCache openCache(const std::filesystem::path& path) {
+    OpenCache file;
+    file.size = regularFileSize(path, "cache file", kMaxCacheBytes);
+    file.in.open(path, std::ios::binary);
+    if (!file.in)
+        throw Error("cannot open cache file " + path.string() + ": " +
+                    std::error_code(errno, std::generic_category()).message());
+    return file;
+}
+
+/// The header, read alone: a file that is no cache is refused before its bulk is read.
+Header readHeader(OpenCache& file, const std::filesystem::path& path) {
+    std::string header(kHeaderSize, '\0');
+    file.in.read(header.data(), std::streamsize(kHeaderSize));
+    header.resize(size_t(file.in.gcount()));
+    return parseHeader(header, path);
 }
 
 }  // namespace
@@ -263,30 +285,42 @@ void writeCache(const std::filesystem::path& path, const BasisCache& cache) {
 }
 
 BasisCache readCache(const std::filesystem::path& path) {
-    const std::string bytes = readAll(path);
-    const Header h = parseHeader(bytes, path);
-    if (bytes.size() != kHeaderSize + h.payloadSize + 8)
-        throw Error("cache file " + path.string() + " is truncated or has trailing bytes (" +
-                    std::to_string(bytes.size()) + " bytes, expected " +
-                    std::to_string(kHeaderSize + h.payloadSize + 8) + ")");
-    const std::string_view payload(bytes.data() + kHeaderSize, h.payloadSize);
-    std::uint64_t checksum;
-    std::memcpy(&checksum, bytes.data() + kHeaderSize + h.payloadSize, 8);
-    if (checksum != fnv1a64(payload))
-        throw Error("cache file " + path.string() + " is corrupt (checksum mismatch)");
+    OpenCache file = openCache(path);
+    const Header h = readHeader(file, path);
+    const std::string where = "cache file " + path.string();
+    if (h.payloadSize > file.size)
+        throw Error(where + " is truncated (" + std::to_string(file.size) +
+                    " bytes, its header declares a payload of " + std::to_string(h.payloadSize) +
+                    ")");
+    if (file.size != kHeaderSize + h.payloadSize + 8)
+        throw Error(where + " is truncated or has trailing bytes (" + std::to_string(file.size) +
+                    " bytes, expected " + std::to_string(kHeaderSize + h.payloadSize + 8) + ")");
+    std::string payload;
+    try {
+        payload.resize(size_t(h.payloadSize));
+    } catch (const std::bad_alloc&) {
+        throw Error("not enough memory to read " + where + " (" + std::to_string(file.size) +
+                    " bytes)");
+    }
+    std::uint64_t checksum = 0;
+    file.in.read(payload.data(), std::streamsize(payload.size()));
+    file.in.read(reinterpret_cast<char*>(&checksum), sizeof checksum);
+    if (!file.in)
+        throw Error(where + " could not be read to its end (it changed while it was read?)");
+    if (checksum != fnv1a64(payload)) throw Error(where + " is corrupt (checksum mismatch)");
     BasisCache c = deserialize(payload, path);
     if (fnv1a64(c.key) != h.keyHash)
-        throw Error("cache file " + path.string() + " is corrupt (key does not match its hash)");
+        throw Error(where + " is corrupt (key does not match its hash)");
     return c;
 }
 
+bool hasCacheMagic(std::string_view bytes) {
+    return bytes.size() >= sizeof(kMagic) && std::memcmp(bytes.data(), kMagic, sizeof(kMagic)) == 0;
+}
+
 std::uint64_t readCacheKeyHash(const std::filesystem::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw Error("cannot open cache file " + path.string());
-    std::string header(kHeaderSize, '\0');
-    in.read(header.data(), std::streamsize(kHeaderSize));
-    header.resize(size_t(in.gcount()));
-    return parseHeader(header, path).keyHash;
+    OpenCache file = openCache(path);
+    return readHeader(file, path).keyHash;
 }
 
 }  // namespace modeflow

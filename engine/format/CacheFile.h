@@ -27,6 +27,10 @@ void writeCache(const std::filesystem::path& path, const BasisCache& cache);
 /// @throw Error saying why the file cannot be used (missing, truncated, corrupt, other version).
 BasisCache readCache(const std::filesystem::path& path);
 
+/// Whether `bytes`, the first bytes of a file, begin with the cache's magic: the file is a cache
+/// (whole or damaged; readCache says which) and nothing else.
+bool hasCacheMagic(std::string_view bytes);
+
 /// Reads only the header's key hash; @throw Error like readCache for a damaged header.
 std::uint64_t readCacheKeyHash(const std::filesystem::path& path);
 
