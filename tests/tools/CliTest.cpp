@@ -275,6 +275,46 @@ TEST_F(Cli, InspectRefusesFoldersAndDevicesByName) {
         << again.err;
 }
 
+TEST_F(Cli, NumericOptionsRefuseNonsenseNamingTheOption) {
+    const fs::path s = scene("disk.toml", kSmallDisk);
+    const std::string cache = " --cache-dir " + mCache.string();
+    const struct {
+        std::string args, message;
+    } cases[] = {
+        {"stir " + s.string() + " --force nan",
+         "--force: must be a finite number of at least 0, got \"nan\""},
+        {"stir " + s.string() + " --force -1",
+         "--force: must be a finite number of at least 0, got \"-1\""},
+        {"stir " + s.string() + " --frames 0",
+         "--frames: must be a whole number from 1 to 1000000, got \"0\""},
+        {"stir " + s.string() + " --width 1e9",
+         "--width: must be a whole number from 1 to 16384, got \"1e9\""},
+        {"stir " + s.string() + " --height 0", "--height: must be a whole number from 1 to 16384"},
+        {"modes " + s.string() + " --dt nan",
+         "--dt: must be a finite number greater than 0, got \"nan\""},
+        {"modes " + s.string() + " --dt inf",
+         "--dt: must be a finite number greater than 0, got \"inf\""},
+        {"modes " + s.string() + " --dt 0",
+         "--dt: must be a finite number greater than 0, got \"0\""},
+        {"modes " + s.string() + " --steps 2.5",
+         "--steps: must be a whole number from 1 to 1000000000"},
+        {"run " + s.string() + " --frames 0",
+         "--frames: must be a whole number from 1 to 1000000, got \"0\""},
+        {"run " + s.string() + " --frames 99999999999",
+         "--frames: must be a whole number from 1 to 1000000"},
+        {"run " + s.string() + " --preview-every -3",
+         "--preview-every: must be a whole number from 1 to 1000000"},
+    };
+    for (const auto& c : cases) {
+        const RunResult r = run(c.args + cache);
+        EXPECT_NE(r.status, 0) << c.args;
+        EXPECT_NE(r.err.find(c.message), std::string::npos) << c.args << "\nstderr: " << r.err;
+        EXPECT_LT(r.err.size(), 300u) << c.args << "\nstderr: " << r.err;
+        EXPECT_FALSE(fs::exists(mCache))
+            << c.args << ": work started before the option was checked";
+    }
+}
+
 TEST_F(Cli, ModesRunsTheReducedDynamicsAsCsv) {
     const fs::path s = scene("modes.toml", std::string(kSmallDisk) +
                                                "[initial]\nvelocity = \"random\"\nenergy = 2.0\n");

@@ -22,6 +22,7 @@
 #include "tools/modeflow/Commands.h"
 #include "tools/modeflow/DeviceOption.h"
 #include "tools/modeflow/InitialState.h"
+#include "tools/modeflow/NumberOptions.h"
 
 namespace modeflow::cli {
 Command addModes(CLI::App& app) {
@@ -39,9 +40,9 @@ Command addModes(CLI::App& app) {
         "modes", "Run the reduced dynamics alone (no grid) and print energy per step");
     sub->add_option("SCENE", opts->scene, "scene file (TOML)")->required();
     sub->add_option("--steps", opts->steps, "number of steps (default: frames × steps_per_frame)")
-        ->check(CLI::PositiveNumber);
+        ->check(countUpTo(kMaxSteps));
     sub->add_option("--dt", opts->dt, "time step (default: [simulation].dt)")
-        ->check(CLI::PositiveNumber);
+        ->check(finitePositive());
     sub->add_option("--integrator", opts->integrator,
                     "explicit | rk4 | midpoint | trapezoidal (default: [simulation].integrator)");
     sub->add_option("--device", opts->device, kDeviceHelp);
