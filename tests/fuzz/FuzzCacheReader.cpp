@@ -1,0 +1,68 @@
+/// Fuzz target: the cache reader. Inputs with the cache magic are whole files (the header's
+/// checks); others are payloads, given a valid header and checksum so that the decoder and the
+/// consistency checks see them (no fuzzer finds a 64-bit checksum by chance).
+
+#include <cstdint>
+#include <cstring>
+#include <fstream>
+#include <iterator>
+#include <string>
+
+#include "engine/format/CacheFile.h"
+#include "tests/fuzz/FuzzSupport.h"
+#include "tests/fuzz/FuzzTargets.h"
+
+namespace modeflow::fuzz {
+namespace {
+
+template <typename T>
+void put(std::string& out, const T& value) {
+    out.append(reinterpret_cast<const char*>(&value), sizeof value);
+}
+
+/// The hash of the key a payload begins with (u64 length, bytes), as the header must hold it.
+std::uint64_t keyHash(std::string_view payload) {
+    std::uint64_t length = 0;
+    if (payload.size() < sizeof length) return 0;
+    std::memcpy(&length, payload.data(), sizeof length);
+    if (length > payload.size() - sizeof length) return 0;
+    return fnv1a64(payload.substr(sizeof length, std::size_t(length)));
+}
+
+/// A cache file around `payload` (layout in CacheFile.h).
+std::string cacheFileAround(std::string_view payload) {
+    std::string file("MODEFLOW-BASIS\0\0", 16);
+    put(file, kCacheFormatVersion);
+    put(file, std::uint32_t{0});
+    put(file, keyHash(payload));
+    put(file, std::uint64_t(payload.size()));
+    file.append(payload);
+    put(file, fnv1a64(payload));
+    return file;
+}
+
+std::string bytesOf(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+}  // namespace
+
+void cacheReader(std::string_view bytes) {
+    const auto input = scratchFile(
+        "input.mfbasis", hasCacheMagic(bytes) ? std::string(bytes) : cacheFileAround(bytes));
+    BasisCache cache;
+    if (!acceptedOrRefused([&] { cache = readCache(input); })) return;
+    require(readCacheKeyHash(input) == fnv1a64(cache.key),
+            "readCacheKeyHash disagrees with readCache");
+    // What was accepted is written and read back to the same bytes (values compared as bytes:
+    // a NaN in the file is not the reader's business).
+    const auto first = input.parent_path() / "first.mfbasis",
+               second = input.parent_path() / "second.mfbasis";
+    writeCache(first, cache);
+    writeCache(second, readCache(first));
+    require(bytesOf(first) == bytesOf(second),
+            "an accepted cache does not survive a write and a read");
+}
+
+}  // namespace modeflow::fuzz

@@ -1,0 +1,58 @@
+/// Every input a fuzz target once failed on (tests/fuzz/regressions/<Target>/) and every seed
+/// (tests/fuzz/corpus/<Target>/), replayed through the target in the plain build: each must be
+/// accepted, or refused with a printable modeflow::Error, and keep the target's promises.
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
+
+#include "tests/fuzz/FuzzTargets.h"
+
+namespace modeflow::fuzz {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Target {
+    const char* name;
+    void (*entry)(std::string_view);
+};
+
+const Target kTargets[] = {{"SceneLoader", sceneLoader},
+                           {"CacheReader", cacheReader},
+                           {"ObjReader", objReader},
+                           {"CheckpointReader", checkpointReader},
+                           {"InputScript", inputScript}};
+
+class FuzzRegression : public ::testing::TestWithParam<Target> {};
+
+TEST_P(FuzzRegression, EveryKeptInputIsAcceptedOrRefusedCleanly) {
+    int replayed = 0;
+    for (const char* folder : {"regressions", "corpus"}) {
+        const fs::path inputs = fs::path(MODEFLOW_FUZZ_DIR) / folder / GetParam().name;
+        if (!fs::is_directory(inputs)) continue;
+        for (const auto& file : fs::directory_iterator(inputs)) {
+            std::ifstream in(file.path(), std::ios::binary);
+            const std::string bytes((std::istreambuf_iterator<char>(in)),
+                                    std::istreambuf_iterator<char>());
+            try {
+                GetParam().entry(bytes);
+            } catch (const std::exception& e) {
+                ADD_FAILURE() << file.path() << ": " << e.what();
+            }
+            ++replayed;
+        }
+    }
+    EXPECT_GT(replayed, 0) << "no seeds in tests/fuzz/corpus/" << GetParam().name;
+}
+
+INSTANTIATE_TEST_SUITE_P(Fuzz, FuzzRegression, ::testing::ValuesIn(kTargets),
+                         [](const ::testing::TestParamInfo<Target>& info) {
+                             return std::string(info.param.name);
+                         });
+
+}  // namespace
+}  // namespace modeflow::fuzz
