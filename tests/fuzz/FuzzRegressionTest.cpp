@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <ostream>
 #include <string>
 
 #include "tests/fuzz/FuzzTargets.h"
@@ -26,6 +27,8 @@ const Target kTargets[] = {{"SceneLoader", sceneLoader},
                            {"ObjReader", objReader},
                            {"CheckpointReader", checkpointReader},
                            {"InputScript", inputScript}};
+
+void PrintTo(const Target& target, std::ostream* out) { *out << target.name; }
 
 class FuzzRegression : public ::testing::TestWithParam<Target> {};
 

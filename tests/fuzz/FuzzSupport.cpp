@@ -43,7 +43,7 @@ bool acceptedOrRefused(const std::function<void()>& read) {
         const std::string_view message = e.what();
         require(!message.empty() && message.size() <= 4096 && printableText(message) == message,
                 "a refusal's message is empty, longer than 4 KiB or not printable text: " +
-                    std::string(message.substr(0, 200)));
+                    printableText(message.substr(0, 200)));
         return false;
     }
 }
