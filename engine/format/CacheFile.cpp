@@ -59,7 +59,7 @@ public:
     template <typename T>
     T pod() {
         T v;
-        std::memcpy(&v, take(sizeof(T)), sizeof(T));
+        copy(&v, sizeof(T));
         return v;
     }
     std::string string() {
@@ -70,21 +70,26 @@ public:
     std::vector<T> vector() {
         const auto n = count(sizeof(T));
         std::vector<T> v(n);
-        std::memcpy(v.data(), take(n * sizeof(T)), n * sizeof(T));
+        copy(v.data(), n * sizeof(T));
         return v;
     }
     Eigen::VectorXd eigenVector() {
         const auto n = count(sizeof(double));
         Eigen::VectorXd v(static_cast<Eigen::Index>(n));
-        std::memcpy(v.data(), take(n * sizeof(double)), n * sizeof(double));
+        copy(v.data(), n * sizeof(double));
         return v;
     }
     Eigen::MatrixXd matrix() {
         const auto rows = pod<std::uint64_t>();
         const auto cols = pod<std::uint64_t>();
-        if (cols != 0 && rows > (mBytes.size() - mAt) / sizeof(double) / cols) corrupt();
+        // An empty matrix keeps its other dimension (no scalar modes: cells × 0), which only a
+        // bound far beyond any grid limits.
+        constexpr std::uint64_t kMaxDimension = std::uint64_t{1} << 40;
+        if (rows > kMaxDimension || cols > kMaxDimension ||
+            (cols != 0 && rows > (mBytes.size() - mAt) / sizeof(double) / cols))
+            corrupt();
         Eigen::MatrixXd m(static_cast<Eigen::Index>(rows), static_cast<Eigen::Index>(cols));
-        std::memcpy(m.data(), take(rows * cols * sizeof(double)), rows * cols * sizeof(double));
+        copy(m.data(), rows * cols * sizeof(double));
         return m;
     }
     bool atEnd() const { return mAt == mBytes.size(); }
@@ -105,6 +110,11 @@ private:
         const char* p = mBytes.data() + mAt;
         mAt += n;
         return p;
+    }
+    /// The next `n` bytes into `to`, which may be null when n is 0 (an empty vector's data()).
+    void copy(void* to, size_t n) {
+        const char* from = take(n);
+        if (n != 0) std::memcpy(to, from, n);
     }
     std::string_view mBytes;
     size_t mAt = 0;

@@ -68,9 +68,10 @@ public:
     bool atEnd() const { return mAt == mBytes.size(); }
 
 private:
+    /// `to` may be null when `bytes` is 0 (an empty vector's data()).
     void take(void* to, std::size_t bytes) {
         if (bytes > mBytes.size() - mAt) fail(mPath, "truncated");
-        std::memcpy(to, mBytes.data() + mAt, bytes);
+        if (bytes != 0) std::memcpy(to, mBytes.data() + mAt, bytes);
         mAt += bytes;
     }
     std::string_view mBytes;
