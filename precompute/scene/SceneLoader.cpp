@@ -21,6 +21,8 @@
 
 #include <toml++/toml.h>
 
+#include "engine/format/QuotedText.h"
+
 namespace modeflow {
 namespace {
 
@@ -1165,7 +1167,13 @@ std::vector<ModeRange> parseModeRanges(std::string_view text, std::string_view k
 }
 
 SceneSpec parseScene(std::string_view text, const std::filesystem::path& origin) {
-    return SceneParser(origin).parse(text);
+    try {
+        return SceneParser(origin).parse(text);
+    } catch (const Error& e) {
+        // Messages quote the file (keys, values, the byte the TOML parser stopped at): control
+        // characters and broken UTF-8 must not reach the terminal.
+        throw Error(printableText(e.what()));
+    }
 }
 
 SceneSpec loadScene(const std::filesystem::path& file) {
