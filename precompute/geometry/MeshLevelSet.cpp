@@ -11,6 +11,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <mutex>
 #include <string>
 #include <system_error>
@@ -184,11 +185,13 @@ std::unique_ptr<ImplicitShape> loadMeshShape(const fs::path& objFile, double vox
     requireClosed(mesh, objFile);
 
     const double bandVoxels = surfaceArea(mesh) / (voxelSize * voxelSize) * 2.0 * halfWidthVoxels;
-    if (bandVoxels > kMaxBandVoxels)
+    if (bandVoxels > kMaxBandVoxels) {
+        char voxels[32];  // "%.2g": the count can exceed every integer type
+        std::snprintf(voxels, sizeof voxels, "%.2g", bandVoxels);
         throw Error("mesh file " + name + ": a level set with voxel size " +
-                    std::to_string(voxelSize) + " would need about " +
-                    std::to_string(static_cast<long long>(bandVoxels)) +
+                    std::to_string(voxelSize) + " would need about " + voxels +
                     " voxels; use a coarser grid");
+    }
 
     initializeOpenVdb();
     openvdb::FloatGrid::Ptr grid;
