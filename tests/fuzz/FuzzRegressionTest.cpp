@@ -28,7 +28,9 @@ const Target kTargets[] = {{"SceneLoader", sceneLoader},
                            {"CheckpointReader", checkpointReader},
                            {"InputScript", inputScript}};
 
-void PrintTo(const Target& target, std::ostream* out) { *out << target.name; }
+void PrintTo(const Target& target, std::ostream* out) {
+    *out << target.name;
+}
 
 class FuzzRegression : public ::testing::TestWithParam<Target> {};
 

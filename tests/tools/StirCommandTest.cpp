@@ -28,7 +28,8 @@ TEST_F(StirCommand, BadScriptsAndTheCpuDeviceAreRefusedBeforeAnyWork) {
                    "drag.txt:2: unknown event \"wiggle\"");
     expectRejected("stir " + s.string() + " --script " + (mDir / "missing.txt").string() +
                        " --cache-dir " + mCache.string(),
-                   "cannot read input script " + (mDir / "missing.txt").string() + ": No such file or directory");
+                   "cannot read input script " + (mDir / "missing.txt").string() +
+                       ": No such file or directory");
     expectRejected("stir " + s.string() + " --device cpu --cache-dir " + mCache.string(),
                    "--device cpu");
     const fs::path mhd = scene("mhd.toml", std::string(kSmallDisk) + "[simulation]\nmhd = true\n");
