@@ -32,6 +32,7 @@ for target in "${targets[@]}"; do
     run="$build/tests/fuzz/run/$target"
     log="$run/last.log"
     rm -f "$run/findings/"*
+    rm -rf "${run:?}/tmp/"*  # scratch folders a crashed run left behind
     start=$(date +%s)
     (cd "$build" && ctest -R "^fuzz_${target}\$" -V >"$log" 2>&1) || failed=1
     elapsed=$(($(date +%s) - start))
