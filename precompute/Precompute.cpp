@@ -4,14 +4,17 @@
 #include <cmath>
 #include <fstream>
 #include <iomanip>
+#include <new>
 #include <sstream>
 
 #include <unistd.h>
 
+#include "engine/core/PackedLayout.h"
+#include "engine/core/AvailableMemory.h"
 #include "engine/format/CacheFile.h"
-#include "engine/format/WritableDirectory.h"
-#include "engine/format/Error.h"
-#include "engine/dynamics/PackedLayout.h"
+#include "engine/core/Error.h"
+#include "engine/core/WritableDirectory.h"
+#include "precompute/PrecomputeMemory.h"
 #include "precompute/coefficients/CoefficientAssembly.h"
 #include "precompute/dec/CubicalComplex.h"
 #include "precompute/dec/CutCellDec.h"
@@ -24,7 +27,7 @@ namespace modeflow {
 namespace {
 
 /// Bumped whenever the numerics change what a cache holds for the same inputs.
-constexpr const char* kAlgorithmVersion = "cut-cell-dec/2";
+constexpr const char* kAlgorithmVersion = "cut-cell-dec/3";
 
 std::string fileDigest(const std::filesystem::path& file, const std::string& key) {
     std::ifstream in(file, std::ios::binary);
@@ -103,7 +106,9 @@ std::string basisKey(const SceneSpec& scene) {
     writeVec(s, g.boundsMin, g.dim);
     s << " max=";
     writeVec(s, g.boundsMax, g.dim);
-    s << "\n";
+    s << " periodic=[";
+    for (int a = 0; a < g.dim; ++a) s << (a ? "," : "") << int(g.periodic[a]);
+    s << "]\n";
     int index = 0;
     for (const ShapeSpec& d : scene.domain) {
         ++index;
@@ -138,8 +143,14 @@ std::filesystem::path cachePath(const std::string& key, const std::filesystem::p
 
 namespace {
 
-/// The pipeline for a key already computed (hashing mesh files once per run).
-BasisCache computeBasis(const SceneSpec& scene, std::string key, Progress& progress) {
+/// An allocation that failed in `stage` despite the estimate made before the precompute.
+Error outOfMemory(const std::string& stage, const PrecomputeMemory& estimate) {
+    return outOfMemoryIn(stage, estimate.peakBytes,
+                         "lower [grid].resolution or the mode counts in [basis]");
+}
+
+/// The stages of the pipeline for a key already computed (hashing mesh files once per run).
+BasisCache computeStages(const SceneSpec& scene, std::string key, Progress& progress) {
     BasisCache cache;
     cache.key = std::move(key);
     cache.grid = scene.grid;
@@ -220,10 +231,21 @@ BasisCache computeBasis(const SceneSpec& scene, std::string key, Progress& progr
     return cache;
 }
 
+/// The pipeline, refused before any work when the estimate does not fit in memory.
+BasisCache computeBasis(const SceneSpec& scene, std::string key, Progress& progress,
+                        const PrecomputeMemory& estimate) {
+    try {
+        return computeStages(scene, std::move(key), progress);
+    } catch (const std::bad_alloc&) {
+        throw outOfMemory(progress.stage(), estimate);
+    }
+}
+
 }  // namespace
 
 BasisCache computeBasis(const SceneSpec& scene, Progress& progress) {
-    return computeBasis(scene, basisKey(scene), progress);
+    const PrecomputeMemory estimate = requirePrecomputeMemory(scene);
+    return computeBasis(scene, basisKey(scene), progress, estimate);
 }
 
 CacheOutcome ensureCache(const SceneSpec& scene, const std::filesystem::path& cacheDir, bool force,
@@ -231,10 +253,11 @@ CacheOutcome ensureCache(const SceneSpec& scene, const std::filesystem::path& ca
     ensureWritableDirectory(cacheDir, "cache directory", "; choose another with --cache-dir or MODEFLOW_CACHE_DIR");
 
     const std::string key = basisKey(scene);
-    CacheOutcome outcome{cachePath(key, cacheDir), false};
+    CacheOutcome outcome{cachePath(key, cacheDir), false, {}};
     if (!force && std::filesystem::exists(outcome.path)) {
         try {
-            if (readCache(outcome.path).key == key) {
+            outcome.cache = readCache(outcome.path);
+            if (outcome.cache.key == key) {
                 outcome.reused = true;
                 return outcome;
             }
@@ -243,9 +266,14 @@ CacheOutcome ensureCache(const SceneSpec& scene, const std::filesystem::path& ca
             progress.note(std::string(e.what()) + "; rebuilding");
         }
     }
-    BasisCache cache = computeBasis(scene, key, progress);
+    const PrecomputeMemory estimate = requirePrecomputeMemory(scene);
+    outcome.cache = computeBasis(scene, key, progress, estimate);
     progress.begin("write cache");
-    writeCache(outcome.path, cache);
+    try {
+        writeCache(outcome.path, outcome.cache);
+    } catch (const std::bad_alloc&) {
+        throw outOfMemory(progress.stage(), estimate);
+    }
     progress.end();
     return outcome;
 }

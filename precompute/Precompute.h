@@ -1,6 +1,6 @@
 #pragma once
 /// @file Precompute.h
-/// Scene → cut-cell DEC → eigenbases → cache file (DESIGN §1). The only entry point the
+/// Scene → cut-cell DEC → eigenbases → cache file (README.md, "How the precompute works"). The only entry point the
 /// command line needs; every stage below it is a separate module.
 
 #include <filesystem>
@@ -8,7 +8,7 @@
 
 #include "engine/format/BasisCache.h"
 #include "precompute/Progress.h"
-#include "precompute/scene/SceneSpec.h"
+#include "engine/core/SceneSpec.h"
 
 namespace modeflow {
 
@@ -20,12 +20,15 @@ std::string basisKey(const SceneSpec& scene);
 /// `DIR/<16 hex digits of the key's hash>.mfbasis`, for a key from basisKey().
 std::filesystem::path cachePath(const std::string& key, const std::filesystem::path& cacheDir);
 
-/// Runs the whole pipeline in memory. @throw Error naming the scene key or stage that failed.
+/// Runs the whole pipeline in memory, after checking its estimated peak memory against the
+/// machine's (precompute/PrecomputeMemory.h).
+/// @throw Error naming the scene key or stage that failed, "out of memory in <stage>" included.
 BasisCache computeBasis(const SceneSpec& scene, Progress& progress);
 
 struct CacheOutcome {
     std::filesystem::path path;
     bool reused = false;  ///< a valid cache with the same key was already there
+    BasisCache cache;     ///< its content (read to check it, or just computed)
 };
 
 /// Returns the scene's cache, computing and writing it on a miss, or always when `force`.

@@ -24,6 +24,8 @@ public:
     void note(const std::string& message);
     /// Ends the current stage and returns its duration in seconds.
     double end();
+    /// The stage begun last (named in errors, e.g. "out of memory in velocity eigensolve").
+    const std::string& stage() const { return mStage; }
 
 private:
     std::ostream* mOut;

@@ -1,5 +1,5 @@
 /* FaceLocation.glsl: a face number of MacGrid's numbering taken apart, the device twin of
-   engine/field/FaceLocation.h. Faces are grouped by normal axis (faceStart1, faceStart2: the
+   engine/core/FaceLocation.h. Faces are grouped by normal axis (faceStart1, faceStart2: the
    first normal-y and normal-z faces; in 2D faceStart2 is the total), x fastest inside a group,
    with cells + 1 positions along the normal axis. */
 #ifndef MODEFLOW_SHADERS_FACE_LOCATION_GLSL

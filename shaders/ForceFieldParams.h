@@ -10,7 +10,7 @@ namespace modeflow::shaders {
 using uint = std::uint32_t;
 #endif
 
-/* One stirring splat (engine/field/ForceField.h ForceSplat) as float32: 32 bytes. */
+/* One stirring splat (engine/reference/ForceField.h ForceSplat) as float32: 32 bytes. */
 struct ForceSplatRecord {
     float centre[3];
     float radius;

@@ -1,5 +1,5 @@
 /* MacSampling.glsl: trilinear MAC (staggered) sampling of a face field, float32, the device twin
-   of engine/field/MacSampling.cpp (same clamps, same corner order, same weight products). Points
+   of engine/core/MacSampling.cpp (same clamps, same corner order, same weight products). Points
    are in grid units of the sampled grid: cell (i, j, k) spans [i, i+1) x [j, j+1) x [k, k+1).
 
    The includer defines MAC_DIM (2 or 3: the axes sampled; a 2D grid has one cell along z) and
@@ -22,11 +22,13 @@ struct AxisStencil {
     float f;
 };
 
-/* Along an axis with n samples at grid coordinates offset + 0, 1, ..., n - 1, clamped to them. */
+/* Along an axis with n samples at grid coordinates offset + 0, 1, ..., n - 1, clamped to them.
+   The index is clamped as an integer too: a diverged run's NaN coordinate makes floor() some
+   undefined value, which must still address the buffer (the reference samples it as 0). */
 AxisStencil axisStencil(float coordinate, float offset, int n) {
     const float s = clamp(coordinate - offset, 0.0, float(n - 1));
     AxisStencil a;
-    a.lo = min(int(floor(s)), max(n - 2, 0));
+    a.lo = clamp(int(floor(s)), 0, max(n - 2, 0));
     a.hi = min(a.lo + 1, n - 1);
     a.f = s - float(a.lo);
     return a;

@@ -11,13 +11,13 @@ namespace modeflow::shaders {
 using uint = std::uint32_t;
 #endif
 
-/* The dense coefficients' tiles (modal_pair_sums.comp, engine/kernels/DeviceCoefficients): rows
+/* The dense coefficients' tiles (modal_pair_sums.comp, engine/device/DeviceCoefficients): rows
    per tile, and invocations that share one (lavapipe's SIMD width with AVX2). */
 #define PAIR_TILE_LANES 8
 #define PAIR_TILE_ROWS 64
 
 /* One chunk of the dense packed coefficients: rows (pairs k < j) firstPair ... firstPair +
-   pairCount - 1, each N floats (engine/dynamics/PackedLayout.h), in tiles of PAIR_TILE_ROWS rows. */
+   pairCount - 1, each N floats (engine/core/PackedLayout.h), in tiles of PAIR_TILE_ROWS rows. */
 struct PairSumsParams {
     uint rowOctets;  /* 8-float octets per row: N rounded up to a multiple of 8, over 8 (zero-padded) */
     uint firstPair;

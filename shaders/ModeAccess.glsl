@@ -1,9 +1,9 @@
-/* ModeAccess.glsl: the stored values of a chunk of modes uploaded by engine/kernels/ModeBuffer,
+/* ModeAccess.glsl: the stored values of a chunk of modes uploaded by engine/device/ModeBuffer,
    read as 32-byte words of 8 float32 DOFs or 16 float16 DOFs (DOFs 2w and 2w+1 in 32-bit half-word
    w, the even one in the low half, as unpackHalf2x16 returns it in .x), each word two of
    ModeBuffer's 16-byte vectors, fetched as two texels (TexelAccess.glsl). The stored values still
    need the mode's scale factor. The includer defines MODE_TILE_LANES and MODE_TILE_ROWS (its
-   params header; engine/kernels/ModeBuffer's kTileLanes and kTileRows = 2, the 16-byte vectors of
+   params header; engine/device/ModeBuffer's kTileLanes and kTileRows = 2, the 16-byte vectors of
    a word) and declares `uniform usamplerBuffer modeTexels` (the chunk) first.
 
    Layout: tile-major. Each mode is cut into tiles of MODE_TILE_LANES words; the chunk holds tile 0

@@ -10,7 +10,7 @@ namespace modeflow::shaders {
 using uint = std::uint32_t;
 #endif
 
-/* The tiles of engine/kernels/ModeBuffer (kTileLanes, kTileRows), see ModeAccess.glsl. */
+/* The tiles of engine/device/ModeBuffer (kTileLanes, kTileRows), see ModeAccess.glsl. */
 #define MODE_TILE_LANES 8
 #define MODE_TILE_ROWS 2
 

@@ -1,6 +1,6 @@
 /* ReconstructVelocityParams.h: push constants of reconstruct_velocity.comp, shared by C++ and
    GLSL (ASCII, no C++-only syntax outside the __cplusplus blocks). One dispatch per chunk of
-   modes (engine/kernels/ModeBuffer; the chunk's mode count is a specialization constant); padded
+   modes (engine/device/ModeBuffer; the chunk's mode count is a specialization constant); padded
    to 16 bytes. */
 #ifndef MODEFLOW_SHADERS_RECONSTRUCT_VELOCITY_PARAMS_H
 #define MODEFLOW_SHADERS_RECONSTRUCT_VELOCITY_PARAMS_H
@@ -11,7 +11,7 @@ namespace modeflow::shaders {
 using uint = std::uint32_t;
 #endif
 
-/* The tiles of engine/kernels/ModeBuffer (kTileLanes, kTileRows), see ModeAccess.glsl. */
+/* The tiles of engine/device/ModeBuffer (kTileLanes, kTileRows), see ModeAccess.glsl. */
 #define MODE_TILE_LANES 8
 #define MODE_TILE_ROWS 2
 

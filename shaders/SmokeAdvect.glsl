@@ -1,5 +1,5 @@
 /* SmokeAdvect.glsl: one smoke advection step of density and temperature together, float32
-   (DESIGN section 4; CPU reference engine/field/SmokeAdvection.cpp, whose comments give the
+   (engine/README.md; CPU reference engine/reference/SmokeAdvection.cpp, whose comments give the
    reasons for each rule), the body of the smoke_advect_<stage>_<dim>d.comp kernels, which define
    SMOKE_STAGE (SmokeAdvectParams.h) and SMOKE_DIM:
 
@@ -14,7 +14,7 @@
    first each step. Cells outside the fluid mask are never written: SmokeState keeps them 0.
 
    Layout and work, chosen by measurement on lavapipe (Mesa 22.3; SmokeKernelTest's TimingPerStep,
-   totals in engine/kernels/SmokeAdvection.h). There every lane's storage-buffer load or store of
+   totals in engine/device/SmokeAdvection.h). There every lane's storage-buffer load or store of
    every 32- or 64-bit component is a separate scalar access whatever the pattern, so the count of
    components is the cost (shaders/modal_pair_sums.comp), while a texel fetch is one vector gather
    for all lanes (shaders/TexelAccess.glsl); and an `if` only masks lanes: its body runs, loads

@@ -2,7 +2,7 @@
    the layout of the buffers SmokeState keeps for them, shared by C++ and GLSL (ASCII, no C++-only
    syntax outside the __cplusplus blocks, so glslang reads it too). Scalars only, padded to
    multiples of 16 bytes, so the std430 layouts and the C++ layouts agree.
-   CPU reference: engine/field/SmokeAdvection. */
+   CPU reference: engine/reference/reference::SmokeAdvection. */
 #ifndef MODEFLOW_SHADERS_SMOKE_ADVECT_PARAMS_H
 #define MODEFLOW_SHADERS_SMOKE_ADVECT_PARAMS_H
 

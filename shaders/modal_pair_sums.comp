@@ -1,5 +1,5 @@
 #version 450
-// First half of the dense structural-coefficient contraction (DESIGN section 3, seed eq. 6.6),
+// First half of the dense structural-coefficient contraction (README.md "Reduced dynamics", seed eq. 6.6),
 // float32. For every stored pair p = (k, j), k < j, of one chunk of the packed coefficients:
 //
 //     sums[p] = sum_i C[k][i][j] a_i
@@ -8,7 +8,7 @@
 // C[j][i][k] = -C[k][i][j]. Each coefficient is read exactly once per contraction: the kernel is a
 // GEMV over the (pairs x N) matrix of the chunk, and bandwidth-bound.
 //
-// Layout (engine/kernels/DeviceCoefficients): each row cut into rowOctets octets of 8 floats
+// Layout (engine/device/DeviceCoefficients): each row cut into rowOctets octets of 8 floats
 // (zero-padded), the rows in tiles of PAIR_TILE_ROWS (the chunk zero-padded to whole tiles). A tile
 // stores octet 0 of its rows, then octet 1 of them, and so on: octet q of row j of tile t is element
 // (t rowOctets + q) PAIR_TILE_ROWS + j. Each batch of PAIR_TILE_LANES invocations sums one tile,

@@ -5,7 +5,7 @@
 //     sums[pairIndex(k, j)] = sum over the row's entries of value * a_i.
 //
 // Pairs without a row keep the zero their sum was initialized with. One invocation per row,
-// grid-stride. Layout (engine/kernels/DeviceCoefficients::slicedRows), sliced ELLPACK: the rows,
+// grid-stride. Layout (engine/device/DeviceCoefficients::slicedRows), sliced ELLPACK: the rows,
 // longest first, in slices of PAIR_TILE_LANES; a slice pads its rows to its longest with (0, 0.0)
 // entries and stores texel t (entries 2t, 2t + 1) of each of its rows side by side, so the lanes
 // of an 8-wide batch (one slice) read one contiguous run per step and stop together. Every input

@@ -1,5 +1,5 @@
 #version 450
-// Moving obstacles (seed section 6.3.5; CPU reference engine/field/MovingObstacle.cpp): on every
+// Moving obstacles (seed section 6.3.5; CPU reference engine/simulation/MovingObstacle.cpp): on every
 // velocity DOF face whose centre an obstacle covers, the fluid's face velocity minus the
 // obstacle's velocity along the face normal, written into a face field of the whole grid (other
 // faces keep the 0 they were created with). project_force.comp then projects it on the basis

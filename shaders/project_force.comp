@@ -1,5 +1,5 @@
 #version 450
-// Force projection, pass 1 of 2 (DESIGN section 3; CPU reference engine/field/ForceProjection.h):
+// Force projection, pass 1 of 2 (README.md "Reduced dynamics"; CPU reference engine/reference/ForceProjection.h):
 //
 //     partial[k][b] = sum_{d in block b} Psi_k[d] w_d q_d
 //
@@ -30,7 +30,7 @@
 #include "ProjectForceParams.h"
 
 layout(local_size_x = 64, local_size_x_id = 0) in;
-// Fixed per pipeline (engine/kernels/ForceProjection): lavapipe runs both sides of a runtime
+// Fixed per pipeline (engine/device/ForceProjection): lavapipe runs both sides of a runtime
 // branch, and a fixed count of mode slots unrolls.
 layout(constant_id = 1) const uint HALF = 0u;    // 1: float16 modes, 0: float32
 layout(constant_id = 2) const uint GATHER = 0u;  // 1: q is a whole-grid face field read at the DOF faces
@@ -39,7 +39,7 @@ layout(constant_id = 3) const uint MODES = 64u;  // mode slots of a workgroup, a
 layout(set = 0, binding = 0) uniform usamplerBuffer modeTexels;
 // The input's whole texels, for the units whose DOFs all lie in them (density q only).
 layout(set = 0, binding = 1) uniform usamplerBuffer qTexels;
-// Zero-padded to whole tiles of float16 modes (engine/kernels/ForceProjection).
+// Zero-padded to whole tiles of float16 modes (engine/device/ForceProjection).
 layout(set = 0, binding = 2) uniform usamplerBuffer wTexels;
 layout(std430, set = 0, binding = 3) readonly buffer Faces { uint faces[]; };
 layout(std430, set = 0, binding = 4) writeonly buffer Partials { float partials[]; };

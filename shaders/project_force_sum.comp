@@ -1,7 +1,7 @@
 #version 450
 // Force projection, pass 2 of 2: f_k = s_k * sum_b partial[k][b], one invocation per mode k adding
 // the partial sums of project_force.comp in order (deterministic), s_k the mode's scale factor
-// (engine/kernels/ModeBuffer). A loop per mode, not a workgroup per mode with a shared-memory
+// (engine/device/ModeBuffer). A loop per mode, not a workgroup per mode with a shared-memory
 // tree: the blocks are few on a CPU device (about 16), where lavapipe ran each workgroup's tree
 // invocation by invocation, and a few hundred on a GPU.
 #extension GL_GOOGLE_include_directive : require

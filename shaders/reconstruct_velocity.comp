@@ -1,9 +1,9 @@
 #version 450
-// Velocity reconstruction (DESIGN section 4): the face field of sum_i v_i Psi_i,
+// Velocity reconstruction (engine/README.md): the face field of sum_i v_i Psi_i,
 //
 //     field[face(d)] = sum_i v_i s_i Psi_i[d] / area(axis of face(d))
 //
-// over one chunk of modes (s_i the mode's scale factor, engine/kernels/ModeBuffer). With several
+// over one chunk of modes (s_i the mode's scale factor, engine/device/ModeBuffer). With several
 // chunks, all but the last leave their sums in a scratch buffer in DOF order (one 32-byte word a
 // load and a store per unit), each adding to what the one before left (the sequence's barrier
 // orders them), and only the last writes the faces (8 loads and 8 scattered stores a unit each
@@ -30,7 +30,7 @@
 #include "ReconstructVelocityParams.h"
 
 layout(local_size_x = 64, local_size_x_id = 0) in;
-// Fixed per pipeline (engine/kernels/VelocityReconstruction): lavapipe runs both sides of a
+// Fixed per pipeline (engine/device/VelocityReconstruction): lavapipe runs both sides of a
 // runtime branch.
 layout(constant_id = 1) const uint HALF = 0u;          // 1: float16 modes, 0: float32
 layout(constant_id = 2) const uint FROM_SCRATCH = 0u;  // 1: add to the sums earlier chunks left
@@ -39,10 +39,10 @@ layout(constant_id = 4) const uint MODES = 4u;         // the chunk's modes
 layout(constant_id = 5) const uint SKIP = 0u;          // the chunk's first mode % 4: its place in v's quads
 
 layout(set = 0, binding = 0) uniform usamplerBuffer modeTexels;
-// Both hold a multiple of 4 floats (engine/kernels/ModeBuffer), read four at a time.
+// Both hold a multiple of 4 floats (engine/device/ModeBuffer), read four at a time.
 layout(std430, set = 0, binding = 1) readonly buffer Scales { u64vec2 scales[]; };
 layout(std430, set = 0, binding = 2) readonly buffer State { u64vec2 v[]; };
-// Zero-padded to whole tiles (engine/kernels/VelocityReconstruction), four a texel.
+// Zero-padded to whole tiles (engine/device/VelocityReconstruction), four a texel.
 layout(set = 0, binding = 3) uniform usamplerBuffer faceQuads;
 layout(std430, set = 0, binding = 4) writeonly buffer FaceField { float field[]; };
 // The sums over the chunks so far, DOF order, 8 floats a word (as long as the padded faces).

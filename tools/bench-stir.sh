@@ -3,7 +3,7 @@
 # for a fixed number of frames, one simulation step per frame, in the default window (and in any
 # other size given), under Xvfb when there is no display, and prints frames per second with the
 # wall time of a step and of a picture.
-# Usage: tools/bench-stir.sh [FRAMES [DEVICE [WIDTHxHEIGHT...]]]   (DEVICE: vulkan or an index)
+# Usage: tools/bench-stir.sh [FRAMES [DEVICE [WIDTHxHEIGHT...]]]   (DEVICE: cpu, vulkan or an index)
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 "$root/tools/build.sh" >/dev/null 2>&1 || { echo "bench-stir: build failed (run tools/build.sh)" >&2; exit 1; }

@@ -3,12 +3,11 @@
 #include <array>
 #include <string>
 
-#include "shaders/display_picture.spv.h"
-#include "shaders/display_smoke_2d.spv.h"
-#include "engine/format/Error.h"
-#include "engine/kernels/SmokeState.h"
+#include "engine/core/Error.h"
 #include "engine/vulkan/VulkanContext.h"
 #include "shaders/DisplayParams.h"
+#include "shaders/display_picture.spv.h"
+#include "shaders/display_smoke_2d.spv.h"
 
 namespace modeflow::display {
 namespace {
@@ -59,26 +58,28 @@ DisplayKernels::DisplayKernels(const vulkan::VulkanContext& context)
       mSmoke2D(context, {"display_smoke_2d", display_smoke_2d_spv, 5, sizeof(shaders::DisplayParams)}),
       mPicture(context, {"display_picture", display_picture_spv, 3, sizeof(shaders::DisplayParams)}) {}
 
-void DisplayKernels::recordSmoke2D(vulkan::CommandSequence& sequence, const vulkan::SmokeState& smoke,
-                                   const vulkan::DeviceBuffer& faceVelocity, const Smoke2DLook& look,
-                                   const vulkan::DeviceBuffer& overlay, const DisplayTarget& target,
+void DisplayKernels::recordSmoke2D(vulkan::CommandSequence& sequence, const FieldBuffers& fields,
+                                   const Smoke2DLook& look, const vulkan::DeviceBuffer& overlay,
+                                   const DisplayTarget& target,
                                    const vulkan::DeviceBuffer& pixels) const {
-    const MacGrid& grid = smoke.smokeGrid();
+    const MacGrid& grid = fields.smokeGrid;
     if (grid.dim != 2)
         throw Error("display: the 2D smoke picture needs a 2D smoke grid, not " +
                     std::to_string(grid.dim) + "D");
     shaders::DisplayParams p = paramsFor(target, grid.cells[0], grid.cells[1], look.paddle);
     p.densityScale = look.densityScale;
     p.hotScale = look.hotScale;
-    const MacGrid& basis = smoke.basisGrid();
-    requireBytes(faceVelocity, VkDeviceSize(basis.faceTotal()) * sizeof(float));
+    const MacGrid& basis = fields.basisGrid;
+    requireBytes(fields.smoke, VkDeviceSize(grid.cellCount()) * 2 * sizeof(float));
+    requireBytes(fields.mask, VkDeviceSize(grid.cellCount() + 3) / 4 * 4);
+    requireBytes(fields.faceVelocity, VkDeviceSize(basis.faceTotal()) * sizeof(float));
     p.arrows = look.arrows ? 1u : 0u;
     p.arrowSpacing = look.arrowSpacing;
     p.arrowScale = look.arrowScale;
     p.basisX = std::uint32_t(basis.cells[0]);
     p.basisY = std::uint32_t(basis.cells[1]);
-    const std::array<const vulkan::DeviceBuffer*, 5> buffers{&smoke.fields(), &smoke.mask(), &overlay,
-                                                             &pixels, &faceVelocity};
+    const std::array<const vulkan::DeviceBuffer*, 5> buffers{&fields.smoke, &fields.mask, &overlay,
+                                                             &pixels, &fields.faceVelocity};
     sequence.dispatch(mSmoke2D, buffers, p, pixelGroups(mSmoke2D, target, overlay, pixels));
 }
 

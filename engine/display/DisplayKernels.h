@@ -1,21 +1,28 @@
 #pragma once
 /// @file DisplayKernels.h
 /// The stir window's picture on the device: one packed pixel per window pixel, in the
-/// swapchain's byte order, for the Presenter to copy. 2D scenes: the smoke drawn straight from
-/// the simulation's buffers (shaders/display_smoke_2d.comp); 3D scenes: the ray-marched picture
+/// screen's byte order, for the Screen to present. 2D scenes: the smoke drawn straight from
+/// field buffers (shaders/display_smoke_2d.comp); 3D scenes: the ray-marched picture
 /// (engine/preview/VolumeRenderer) scaled into the viewport (shaders/display_picture.comp).
 /// Both blend the TextOverlay on top and letterbox the picture (Viewport.h).
 
+#include "engine/core/MacGrid.h"
 #include "engine/display/Viewport.h"
 #include "engine/vulkan/CommandSequence.h"
 #include "engine/vulkan/ComputeKernel.h"
 #include "engine/vulkan/DeviceBuffer.h"
 
-namespace modeflow::vulkan {
-class SmokeState;
-}
-
 namespace modeflow::display {
+
+/// The fields a picture shows, in buffers on the display's device, in the layouts the device
+/// simulation keeps them (device::SmokeState, device::Simulation::faceVelocityBuffer()).
+struct FieldBuffers {
+    const vulkan::DeviceBuffer& smoke;         ///< (density, temperature) float32 per smoke cell
+    const vulkan::DeviceBuffer& mask;          ///< a byte per smoke cell, non-zero inside Ω
+    const vulkan::DeviceBuffer& faceVelocity;  ///< float32 per face of the basis grid
+    const MacGrid& smokeGrid;
+    const MacGrid& basisGrid;
+};
 
 /// What a picture is drawn into: the window size, the viewport and the byte order.
 struct DisplayTarget {
@@ -50,13 +57,12 @@ public:
     /// @throw modeflow::Error if a pipeline cannot be made.
     explicit DisplayKernels(const vulkan::VulkanContext& context);
 
-    /// Records the picture of the 2D `smoke` into `pixels`; the arrows show `faceVelocity`, a
-    /// face field of the smoke's basis grid (Simulation::faceVelocityBuffer()).
+    /// Records the picture of the 2D smoke of `fields` into `pixels`; the arrows show its face
+    /// velocity.
     /// @throw modeflow::Error when the smoke grid is not 2D or a buffer is too small.
-    void recordSmoke2D(vulkan::CommandSequence& sequence, const vulkan::SmokeState& smoke,
-                       const vulkan::DeviceBuffer& faceVelocity, const Smoke2DLook& look,
-                       const vulkan::DeviceBuffer& overlay, const DisplayTarget& target,
-                       const vulkan::DeviceBuffer& pixels) const;
+    void recordSmoke2D(vulkan::CommandSequence& sequence, const FieldBuffers& fields,
+                       const Smoke2DLook& look, const vulkan::DeviceBuffer& overlay,
+                       const DisplayTarget& target, const vulkan::DeviceBuffer& pixels) const;
     /// Records `picture` (pictureWidth × pictureHeight packed RGBA8 words) scaled into the
     /// viewport, with `paddle` (in picture pixels, y down) over it, into `pixels`.
     /// @throw modeflow::Error when a buffer is too small.

@@ -1,6 +1,6 @@
 #include "engine/display/Presenter.h"
 
-#include "engine/format/Error.h"
+#include "engine/display/Screen.h"
 #include "engine/vulkan/DeviceBuffer.h"
 #include "engine/vulkan/SyncObjects.h"
 #include "engine/vulkan/VulkanContext.h"
@@ -56,11 +56,7 @@ void Presenter::resize(VkExtent2D wanted) {
 
 bool Presenter::present(const vulkan::DeviceBuffer& pixels, VkExtent2D wanted) {
     const VkExtent2D size = mSwapchain.extent();
-    const VkDeviceSize needed = VkDeviceSize(size.width) * size.height * 4;
-    if (pixels.bytes() < needed)
-        throw Error("display: picture buffer \"" + pixels.name() + "\" holds " +
-                    std::to_string(pixels.bytes()) + " bytes, the " + std::to_string(size.width) +
-                    " × " + std::to_string(size.height) + " window needs " + std::to_string(needed));
+    requirePictureBytes(pixels, size);
     const VkDevice device = mContext.device();
     const VkFence fence = mInFlight.get();
     vulkan::check(vkWaitForFences(device, 1, &fence, VK_TRUE, UINT64_MAX), "vkWaitForFences");

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "engine/format/Error.h"
+#include "engine/core/Error.h"
 #include "engine/vulkan/VulkanContext.h"
 #include "engine/vulkan/VulkanError.h"
 

@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <utility>
 
-#include "engine/format/Error.h"
+#include "engine/core/Error.h"
 #include "engine/vulkan/VulkanError.h"
 
 namespace modeflow::display {

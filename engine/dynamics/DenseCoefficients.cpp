@@ -5,9 +5,9 @@
 #include <sstream>
 #include <string>
 
-#include "engine/dynamics/PackedLayout.h"
+#include "engine/core/PackedLayout.h"
 #include "engine/dynamics/ParallelRows.h"
-#include "engine/format/Error.h"
+#include "engine/core/Error.h"
 
 namespace modeflow {
 namespace {

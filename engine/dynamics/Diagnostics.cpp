@@ -2,7 +2,7 @@
 
 #include <string>
 
-#include "engine/format/Error.h"
+#include "engine/core/Error.h"
 
 namespace modeflow {
 namespace {

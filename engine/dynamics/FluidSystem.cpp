@@ -1,15 +1,18 @@
 #include "engine/dynamics/FluidSystem.h"
 
+#include <optional>
 #include <string>
 
-#include "engine/format/Error.h"
+#include "engine/core/Error.h"
+#include "engine/core/KappaSquared.h"
 
 namespace modeflow {
 
 namespace {
 
-/// Whether the parameters use κ² (viscosity or α), after checking them for n modes.
-bool needsKappa(const FluidParameters& parameters, int n) {
+/// The κ² the parameters use (viscosity or α), checked for n modes (harmonic round-off made 0);
+/// none when they use no κ².
+std::optional<Eigen::VectorXd> kappaSquaredUsed(const FluidParameters& parameters, int n) {
     if (!(parameters.viscosity >= 0.0) || !(parameters.alpha >= 0.0)) {
         throw Error("fluid dynamics: viscosity and alpha must be non-negative");
     }
@@ -20,23 +23,22 @@ bool needsKappa(const FluidParameters& parameters, int n) {
                     " entries for " + std::to_string(n) + " modes" +
                     (needed ? " (viscosity and alpha need one per mode)" : ""));
     }
-    if (given != 0 && (parameters.kappaSquared.array() < 0.0).any()) {
-        throw Error("fluid dynamics: kappa^2 values must be non-negative");
-    }
-    return needed;
+    if (given == 0) return std::nullopt;
+    const Eigen::VectorXd k2 = checkedKappaSquared(parameters.kappaSquared, "fluid dynamics");
+    return needed ? std::optional(k2) : std::nullopt;
 }
 
 }  // namespace
 
 Eigen::VectorXd FluidSystem::massOf(const FluidParameters& parameters, int n) {
     const double alpha2 = parameters.alpha * parameters.alpha;
-    return needsKappa(parameters, n) ? Eigen::VectorXd(1.0 + alpha2 * parameters.kappaSquared.array())
-                                     : Eigen::VectorXd::Ones(n);
+    const auto k2 = kappaSquaredUsed(parameters, n);
+    return k2 ? Eigen::VectorXd(1.0 + alpha2 * k2->array()) : Eigen::VectorXd::Ones(n);
 }
 
 Eigen::VectorXd FluidSystem::decayRatesOf(const FluidParameters& parameters, int n) {
-    return needsKappa(parameters, n) ? Eigen::VectorXd(parameters.viscosity * parameters.kappaSquared)
-                                     : Eigen::VectorXd::Zero(n);
+    const auto k2 = kappaSquaredUsed(parameters, n);
+    return k2 ? Eigen::VectorXd(parameters.viscosity * *k2) : Eigen::VectorXd::Zero(n);
 }
 
 FluidSystem::FluidSystem(const StructuralCoefficients& coefficients, FluidParameters parameters)

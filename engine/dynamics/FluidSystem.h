@@ -1,6 +1,6 @@
 #pragma once
 /// @file FluidSystem.h
-/// The reduced Euler / Navier–Stokes / LANS-α model over the modal velocity v (DESIGN §3):
+/// The reduced Euler / Navier–Stokes / LANS-α model over the modal velocity v (README.md, "Reduced dynamics"):
 ///
 ///     (1 + α²κ_k²) v̇_k = Σ_ij (1 + α²κ_i²) C[k][i][j] v_i v_j + f_k,  then  v_k ← e^{−νκ_k²h} v_k.
 ///
@@ -17,7 +17,8 @@
 namespace modeflow {
 
 struct FluidParameters {
-    /// κ_i² of each basis mode; needed when viscosity or alpha is non-zero.
+    /// κ_i² of each basis mode; needed when viscosity or alpha is non-zero. Checked by
+    /// checkedKappaSquared (engine/core/KappaSquared.h): harmonic round-off counts as 0.
     Eigen::VectorXd kappaSquared;
     double viscosity = 0.0;  ///< ν
     double alpha = 0.0;      ///< LANS-α filter length
@@ -26,7 +27,8 @@ struct FluidParameters {
 class FluidSystem final : public ModalSystem {
 public:
     /// The mass 1 + α²κ_i² and decay rates νκ_i² of n modes (LANS-α, viscosity; seed §6.3.5).
-    /// @throw modeflow::Error for negative ν or α, or a κ² list that is needed but not n long.
+    /// @throw modeflow::Error for negative ν or α, a κ² list that is needed but not n long, or a
+    /// κ² that checkedKappaSquared refuses.
     static Eigen::VectorXd massOf(const FluidParameters& parameters, int n);
     static Eigen::VectorXd decayRatesOf(const FluidParameters& parameters, int n);
 

@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <random>
 #include <string>
 
-#include "engine/format/Error.h"
+#include "engine/core/Error.h"
+#include "engine/core/NumberText.h"
 
 namespace modeflow {
 namespace {
@@ -34,7 +36,9 @@ Eigen::VectorXd randomVelocity(int modeCount, const RandomVelocitySpec& spec) {
     std::mt19937_64 rng(spec.seed);
     Eigen::VectorXd v = Eigen::VectorXd::Zero(modeCount);
     for (int i = spec.firstMode; i <= last; ++i) v[i] = standardNormal(rng);
-    return v * std::sqrt(2.0 * spec.energy) / v.norm();
+    v *= std::sqrt(2.0 * spec.energy) / v.norm();
+    requireRepresentableState(v, "random velocity");
+    return v;
 }
 
 Eigen::VectorXd modalAmplitudes(int modeCount,
@@ -52,7 +56,22 @@ Eigen::VectorXd modalAmplitudes(int modeCount,
         given[std::size_t(index)] = true;
         v[index] = amplitude;
     }
+    requireRepresentableState(v, "modal amplitudes");
     return v;
+}
+
+void requireRepresentableState(const Eigen::VectorXd& state, const std::string& what) {
+    for (Eigen::Index i = 0; i < state.size(); ++i)
+        if (!std::isfinite(state[i]))
+            throw Error(what + ": the modal state is not finite (mode " + std::to_string(i + 1) +
+                        " is " + numberText(state[i]) + ")");
+    // The largest |v| with |v|⁴ finite; stableNorm() itself does not overflow before |v| does.
+    static const double largest = std::pow(std::numeric_limits<double>::max(), 0.25);
+    const double norm = state.stableNorm();
+    if (norm > largest)
+        throw Error(what + ": the modal state is too large for double precision: |v| = " +
+                    numberText(norm) + ", and a step takes |v|^4 (keep |v| below " +
+                    numberText(largest, 2) + ")");
 }
 
 }  // namespace modeflow

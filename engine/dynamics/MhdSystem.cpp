@@ -2,7 +2,8 @@
 
 #include <string>
 
-#include "engine/format/Error.h"
+#include "engine/core/Error.h"
+#include "engine/core/KappaSquared.h"
 
 namespace modeflow {
 
@@ -18,15 +19,12 @@ MhdSystem::MhdSystem(const StructuralCoefficients& coefficients, MhdParameters p
         throw Error("MHD dynamics: the kappa^2 list has " + std::to_string(given) +
                     " entries for " + std::to_string(n) + " modes");
     }
-    if (given != 0 && (parameters.kappaSquared.array() < 0.0).any()) {
-        throw Error("MHD dynamics: kappa^2 values must be non-negative");
-    }
+    const Eigen::VectorXd k2 = given != 0
+                                   ? checkedKappaSquared(parameters.kappaSquared, "MHD dynamics")
+                                   : Eigen::VectorXd();
     mMass = Eigen::VectorXd::Ones(2 * n);
     mDecay = Eigen::VectorXd::Zero(2 * n);
-    if (needsKappa) {
-        mDecay << parameters.viscosity * parameters.kappaSquared,
-            parameters.magneticDiffusivity * parameters.kappaSquared;
-    }
+    if (needsKappa) mDecay << parameters.viscosity * k2, parameters.magneticDiffusivity * k2;
 }
 
 Eigen::VectorXd MhdSystem::state(const Eigen::VectorXd& v, const Eigen::VectorXd& f) const {

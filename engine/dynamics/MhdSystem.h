@@ -18,7 +18,8 @@
 namespace modeflow {
 
 struct MhdParameters {
-    /// κ_i² of each basis mode; needed when a diffusivity is non-zero.
+    /// κ_i² of each basis mode; needed when a diffusivity is non-zero. Checked by
+    /// checkedKappaSquared (engine/core/KappaSquared.h): harmonic round-off counts as 0.
     Eigen::VectorXd kappaSquared;
     double viscosity = 0.0;            ///< ν, damping v
     double magneticDiffusivity = 0.0;  ///< η, damping F

@@ -5,7 +5,7 @@
 #include <string>
 
 #include "engine/dynamics/ThreadCount.h"
-#include "engine/format/Error.h"
+#include "engine/core/Error.h"
 
 namespace modeflow {
 

@@ -24,7 +24,7 @@
 #include "engine/dynamics/ModalForce.h"
 #include "engine/dynamics/ModalSystem.h"
 #include "engine/dynamics/StepReport.h"
-#include "precompute/scene/SceneSpec.h"
+#include "engine/core/SceneSpec.h"
 
 namespace modeflow {
 

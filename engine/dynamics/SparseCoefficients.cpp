@@ -6,9 +6,9 @@
 #include <tuple>
 
 #include "engine/dynamics/DenseCoefficients.h"
-#include "engine/dynamics/PackedLayout.h"
+#include "engine/core/PackedLayout.h"
 #include "engine/dynamics/ParallelRows.h"
-#include "engine/format/Error.h"
+#include "engine/core/Error.h"
 
 namespace modeflow {
 namespace {

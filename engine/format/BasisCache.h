@@ -1,6 +1,6 @@
 #pragma once
 /// @file BasisCache.h
-/// What a precompute produces and the runtime reads (DESIGN §5 "Cache file"): the grid, the
+/// What a precompute produces and the runtime reads (README.md, "How the precompute works", step 6): the grid, the
 /// degrees of freedom with their Hodge stars, and the eigenbases. Plain values, no solver types.
 
 #include <cstdint>
@@ -10,7 +10,7 @@
 
 #include <Eigen/Core>
 
-#include "precompute/scene/SceneSpec.h"
+#include "engine/core/SceneSpec.h"
 
 namespace modeflow {
 
@@ -51,7 +51,7 @@ struct BasisCache {
     struct Coefficients {
         enum class Storage { Dense, Sparse };
         Storage storage = Storage::Dense;
-        /// Dense: packed as in engine/dynamics/PackedLayout.h (pair (k,j) by pair, i fastest).
+        /// Dense: packed as in engine/core/PackedLayout.h (pair (k,j) by pair, i fastest).
         std::vector<double> packed;
         /// Sparse: the entries kept, as parallel arrays (k < j).
         std::vector<std::int32_t> k, i, j;

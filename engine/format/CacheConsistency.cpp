@@ -3,8 +3,9 @@
 #include <cmath>
 #include <cstdint>
 
-#include "engine/dynamics/PackedLayout.h"
-#include "engine/format/Error.h"
+#include "engine/core/Error.h"
+#include "engine/core/MacGrid.h"
+#include "engine/core/PackedLayout.h"
 
 namespace modeflow {
 namespace {
@@ -62,17 +63,6 @@ std::int64_t cellCount(const GridSpec& grid, std::size_t cellLimit) {
     return cells;
 }
 
-/// Faces of the grid's used axes, numbered as MacGrid (engine/field/MacGrid.h) numbers them.
-std::int64_t faceCount(const GridSpec& grid) {
-    std::int64_t faces = 0;
-    for (int axis = 0; axis < grid.dim; ++axis) {
-        std::int64_t count = 1;
-        for (int b = 0; b < 3; ++b) count *= grid.resolution[b] + (b == axis);
-        faces += count;
-    }
-    return faces;
-}
-
 }  // namespace
 
 void requireConsistentCache(const BasisCache& c, const std::string& where) {
@@ -93,7 +83,7 @@ void requireConsistentCache(const BasisCache& c, const std::string& where) {
     const auto& v = c.velocity;
     const Eigen::Index n = v.modes.cols();
     require(Eigen::Index(c.faces.size()) == v.modes.rows() && c.faceStar.size() == v.modes.rows() &&
-                allBelow(c.faces, faceCount(c.grid)),
+                allBelow(c.faces, MacGrid::fromSpec(c.grid).faceTotal()),
             "its face degrees of freedom disagree with the grid or the velocity modes");
     require(Eigen::Index(c.cells.size()) == c.cellStar.size() && allBelow(c.cells, cells),
             "its cell degrees of freedom disagree with the grid");

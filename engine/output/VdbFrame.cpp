@@ -8,7 +8,6 @@
 #include <openvdb/tools/Dense.h>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cerrno>
@@ -20,8 +19,9 @@
 #include <mutex>
 #include <system_error>
 
-#include "engine/field/MacSampling.h"
-#include "engine/format/Error.h"
+#include "engine/core/AtomicFile.h"
+#include "engine/core/MacSampling.h"
+#include "engine/core/Error.h"
 
 namespace modeflow {
 namespace {
@@ -189,7 +189,7 @@ std::string systemCause() { return errno != 0 ? std::strerror(errno) : "input/ou
 void writeArchive(const fs::path& temporary, const vdb::GridCPtrVec& grids, const vdb::MetaMap& meta) {
     errno = 0;
     std::ofstream os(temporary, std::ios::out | std::ios::binary | std::ios::trunc);
-    if (!os) throw Error("cannot create " + quoted(temporary) + ": " + systemCause());
+    if (!os) throw Error("cannot write VDB frame: cannot create " + quoted(temporary) + ": " + systemCause());
     CheckedArchive archive;
     // Blosc is fast and what both applications ship with; ZIP is far slower (and OpenVDB skips it
     // for fog volumes anyway).
@@ -200,39 +200,38 @@ void writeArchive(const fs::path& temporary, const vdb::GridCPtrVec& grids, cons
     const bool written = bool(os);
     os.close();
     if (!written || os.fail())
-        throw Error("writing " + quoted(temporary) + " failed: " + systemCause());
+        throw Error("cannot write VDB frame: writing " + quoted(temporary) + " failed: " + systemCause());
 }
 
 }  // namespace
 
 void writeVdbFrame(const fs::path& file, const VdbFrame& frame) {
-    const auto fail = [&](const std::string& cause) {
-        return Error("cannot write VDB frame " + quoted(file) + ": " + cause);
-    };
     const fs::path folder = file.parent_path().empty() ? fs::path(".") : file.parent_path();
     std::error_code ec;
-    if (!fs::is_directory(folder, ec)) throw fail("folder " + quoted(folder) + " does not exist");
-
-    fs::path temporary = file;
-    temporary += ".tmp-" + std::to_string(::getpid());
+    if (!fs::is_directory(folder, ec))
+        throw Error("cannot write VDB frame " + quoted(file) + ": folder " + quoted(folder) + " does not exist");
+    vdb::GridCPtrVec grids;
+    vdb::MetaMap meta;
     try {
         validate(frame);
         initializeOpenVdb();
-        vdb::GridCPtrVec grids;
         grids.push_back(scalarGrid(frame, frame.density, "density"));
         if (size(frame.temperature) != 0) grids.push_back(scalarGrid(frame, frame.temperature, "temperature"));
         grids.push_back(vectorGrid(frame, frame.faceVelocity, "vel"));
         if (!frame.faceMagnetic.empty()) grids.push_back(vectorGrid(frame, frame.faceMagnetic, "magnetic"));
-        vdb::MetaMap meta;
         addFrameMetadata(meta, frame);
-        writeArchive(temporary, grids, meta);
-        fs::rename(temporary, file);
     } catch (const std::exception& e) {
-        fs::remove(temporary, ec);  // never leave a partial frame behind, whatever failed
-        const auto* fsError = dynamic_cast<const fs::filesystem_error*>(&e);
-        throw fail(fsError ? "cannot rename " + quoted(temporary) + " over it: " + fsError->code().message()
-                           : std::string(e.what()));
+        throw Error("cannot write VDB frame " + quoted(file) + ": " + e.what());
     }
+    writeFileAtomically(file, "VDB frame", [&](const fs::path& temporary) {
+        try {
+            writeArchive(temporary, grids, meta);
+        } catch (const Error&) {
+            throw;
+        } catch (const std::exception& e) {  // OpenVDB's own exceptions
+            throw Error("cannot write VDB frame " + quoted(file) + ": " + e.what());
+        }
+    });
 }
 
 std::string frameFileName(std::string_view sceneName, int frame) {

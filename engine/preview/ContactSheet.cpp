@@ -4,7 +4,7 @@
 #include <cmath>
 #include <string>
 
-#include "engine/format/Error.h"
+#include "engine/core/Error.h"
 #include "engine/preview/DigitFont.h"
 #include "engine/preview/Palette.h"
 

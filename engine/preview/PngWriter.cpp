@@ -1,15 +1,10 @@
 #include "engine/preview/PngWriter.h"
 
-#include <unistd.h>
-
-#include <cerrno>
-#include <cstring>
-#include <fstream>
 #include <string>
-#include <system_error>
 #include <vector>
 
-#include "engine/format/Error.h"
+#include "engine/core/AtomicFile.h"
+#include "engine/core/Error.h"
 
 // The one translation unit with stb_image_write's definitions; static, so they cannot clash with
 // another copy of stb linked into the same program.
@@ -61,25 +56,8 @@ void writePng(const fs::path& file, const Image& image) {
     const std::vector<unsigned char> png = encodePng(image);
     if (png.empty()) throw fail("the PNG encoder failed (out of memory?)");
 
-    fs::path temporary = file;
-    temporary += ".tmp-" + std::to_string(::getpid());
-    try {
-        {
-            std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-            if (!out)
-                throw fail("cannot create " + quoted(temporary) + ": " + std::strerror(errno));
-            out.write(reinterpret_cast<const char*>(png.data()), std::streamsize(png.size()));
-            out.close();
-            if (!out) throw fail("writing " + quoted(temporary) + " failed (disk full?)");
-        }
-        std::error_code ec;
-        fs::rename(temporary, file, ec);
-        if (ec) throw fail("cannot rename " + quoted(temporary) + " over it: " + ec.message());
-    } catch (...) {
-        std::error_code ignored;
-        fs::remove(temporary, ignored);  // never leave a partial picture behind, whatever failed
-        throw;
-    }
+    writeFileAtomically(file,
+                        std::string_view(reinterpret_cast<const char*>(png.data()), png.size()), "PNG");
 }
 
 }  // namespace modeflow::preview

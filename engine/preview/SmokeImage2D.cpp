@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "engine/format/Error.h"
+#include "engine/core/Error.h"
 #include "engine/preview/Palette.h"
 
 namespace modeflow::preview {

@@ -14,7 +14,7 @@
 #include <optional>
 #include <span>
 
-#include "engine/field/MacGrid.h"
+#include "engine/core/MacGrid.h"
 #include "engine/preview/Image.h"
 
 namespace modeflow::preview {

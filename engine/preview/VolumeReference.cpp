@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "engine/format/Error.h"
+#include "engine/core/Error.h"
 #include "engine/preview/VolumeView.h"
 
 namespace modeflow::preview {

@@ -8,7 +8,7 @@
 #include <cstdint>
 #include <span>
 
-#include "engine/field/MacGrid.h"
+#include "engine/core/MacGrid.h"
 #include "engine/preview/Image.h"
 
 namespace modeflow::preview {

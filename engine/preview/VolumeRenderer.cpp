@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "engine/format/Error.h"
+#include "engine/core/Error.h"
 #include "engine/preview/VolumeView.h"
 #include "engine/vulkan/VulkanContext.h"
 #include "shaders/RenderVolumeParams.h"

@@ -9,7 +9,7 @@
 #include <cstdint>
 #include <span>
 
-#include "engine/field/MacGrid.h"
+#include "engine/core/MacGrid.h"
 #include "engine/preview/Image.h"
 #include "engine/preview/VolumeView.h"
 #include "engine/vulkan/CommandSequence.h"

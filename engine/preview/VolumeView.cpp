@@ -6,7 +6,7 @@
 #include <numbers>
 #include <string>
 
-#include "engine/format/Error.h"
+#include "engine/core/Error.h"
 
 namespace modeflow::preview {
 namespace {

@@ -6,7 +6,7 @@
 /// 40° of field of view across the picture's shorter side, far enough that the box's
 /// circumscribed sphere fits (divided by the zoom). Units: RenderVolumeParams.h.
 
-#include "engine/field/MacGrid.h"
+#include "engine/core/MacGrid.h"
 #include "shaders/RenderVolumeParams.h"
 
 namespace modeflow::preview {

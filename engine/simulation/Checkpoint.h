@@ -15,7 +15,7 @@
 
 #include <Eigen/Core>
 
-#include "engine/field/SmokeAdvection.h"
+#include "engine/simulation/SmokeFields.h"
 
 namespace modeflow {
 

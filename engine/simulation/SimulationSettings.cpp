@@ -2,19 +2,11 @@
 
 #include <string>
 
-#include "engine/format/Error.h"
+#include "engine/core/Error.h"
 
 namespace modeflow {
 
-void requireRuntimeSupport(const SceneSpec& scene, Runtime runtime) {
-    if (runtime == Runtime::Device && scene.simulation.mhd)
-        throw Error(scene.sourceFile.string() +
-                    ": [simulation].mhd runs on the CPU reference only; use --device cpu");
-}
-
-SimulationSettings SimulationSettings::fromScene(const SceneSpec& scene, const BasisCache& cache,
-                                                 Runtime runtime) {
-    requireRuntimeSupport(scene, runtime);
+SimulationSettings SimulationSettings::fromScene(const SceneSpec& scene, const BasisCache& cache) {
     const SimulationSpec& sim = scene.simulation;
     if (scene.sources.size() > std::size_t(maxSmokeEmitters))
         throw Error(scene.sourceFile.string() + ": " + std::to_string(scene.sources.size()) +
@@ -31,7 +23,7 @@ SimulationSettings SimulationSettings::fromScene(const SceneSpec& scene, const B
     settings.smokeScale = scene.smoke.resolutionScale;
     settings.advection = scene.smoke.advection;
     settings.basisPrecision =
-        sim.halfPrecisionBasis ? vulkan::ModePrecision::Float16 : vulkan::ModePrecision::Float32;
+        sim.halfPrecisionBasis ? ModePrecision::Float16 : ModePrecision::Float32;
     for (const SourceSpec& source : scene.sources)
         settings.emitters.push_back(emitterFromSource(source));
     if (scene.obstacles.size() > std::size_t(maxObstacles))
@@ -39,6 +31,13 @@ SimulationSettings SimulationSettings::fromScene(const SceneSpec& scene, const B
                     " [[obstacle]] entries; the runtime takes at most " + std::to_string(maxObstacles));
     for (const ObstacleSpec& obstacle : scene.obstacles) settings.obstacles.push_back({obstacle});
     return settings;
+}
+
+bool SimulationSettings::simulatesTemperature() const {
+    if (buoyancy != 0.0) return true;
+    for (const SmokeEmitter& emitter : emitters)
+        if (emitter.temperatureRate != 0.0) return true;
+    return false;
 }
 
 }  // namespace modeflow

@@ -1,28 +1,20 @@
 #pragma once
 /// @file SimulationSettings.h
-/// Everything a simulation of one scene needs besides its basis (DESIGN §1): the step, the
+/// Everything a simulation of one scene needs besides its basis (engine/README.md): the step, the
 /// fluid's parameters, forces and smoke. Built from a scene and its basis, so the device
-/// Simulation and the CPU ReferenceSimulation of one scene run the same model.
+/// device::Simulation and the CPU reference::Simulation of one scene run the same model.
 
 #include <vector>
 
 #include "engine/dynamics/FluidSystem.h"
-#include "engine/field/SmokeAdvection.h"
-#include "engine/field/MovingObstacle.h"
-#include "engine/field/SmokeEmitter.h"
+#include "engine/simulation/MovingObstacle.h"
+#include "engine/simulation/SmokeEmitter.h"
 #include "engine/format/BasisCache.h"
-#include "engine/kernels/ModeBuffer.h"
-#include "precompute/scene/SceneSpec.h"
+#include "engine/core/ModePrecision.h"
+#include "engine/core/SceneSpec.h"
+#include "engine/simulation/FrameStats.h"
 
 namespace modeflow {
-
-/// Which implementation runs a scene: the Vulkan Simulation or the CPU ReferenceSimulation.
-enum class Runtime { Device, CpuReference };
-
-/// Refuses, before any work, scenes `runtime` does not simulate: MHD runs on the CPU reference
-/// only (the device kernels advance the velocity alone).
-/// @throw modeflow::Error naming [simulation].mhd and `--device cpu`.
-void requireRuntimeSupport(const SceneSpec& scene, Runtime runtime);
 
 struct SimulationSettings {
     double dt = 0.02;
@@ -36,29 +28,18 @@ struct SimulationSettings {
     double buoyancy = 0.0;  ///< upward acceleration per unit temperature
     int smokeScale = 1;     ///< smoke cells per basis cell and axis
     AdvectionScheme advection = AdvectionScheme::MacCormack;
-    vulkan::ModePrecision basisPrecision = vulkan::ModePrecision::Float32;  ///< device only
+    ModePrecision basisPrecision = ModePrecision::Float32;  ///< device only
     std::vector<SmokeEmitter> emitters;
     std::vector<MovingObstacle> obstacles;
 
-    /// The scene's [simulation], [smoke], [[source]] and [output] values on this basis, for
-    /// `runtime`.
-    /// @throw modeflow::Error for scenes `runtime` does not simulate (requireRuntimeSupport), or
-    /// more emitters or obstacles than the runtime takes.
-    static SimulationSettings fromScene(const SceneSpec& scene, const BasisCache& cache,
-                                        Runtime runtime = Runtime::Device);
-};
+    /// Whether the run simulates temperature: a source heats, or buoyancy reads it. Frames then
+    /// carry a temperature grid and pictures tint hot smoke.
+    bool simulatesTemperature() const;
 
-/// What advancing one frame did.
-struct FrameStats {
-    int steps = 0;
-    int maxIterations = 0;     ///< implicit schemes: most iterations a step took
-    int unconvergedSteps = 0;  ///< steps whose implicit solve missed its tolerance
-    int substeps = 1;          ///< most modal substeps a step took (the device adapts them)
-    int timedSteps = 0;        ///< steps whose device times were measured (Simulation::setTiming)
-    /// Device time per stage summed over the timed steps, milliseconds (0 on the CPU reference or
-    /// without timestamps): forces (force field + projection), modal step, reconstruction, moving
-    /// obstacles (their correction and the reconstruction after it), advection.
-    double forcesMs = 0.0, modalMs = 0.0, reconstructionMs = 0.0, obstaclesMs = 0.0, advectionMs = 0.0;
+    /// The scene's [simulation], [smoke], [[source]] and [output] values on this basis. Whether a
+    /// backend runs them is BackendCapabilities' question, asked before any work.
+    /// @throw modeflow::Error for more emitters or obstacles than the runtime takes.
+    static SimulationSettings fromScene(const SceneSpec& scene, const BasisCache& cache);
 };
 
 }  // namespace modeflow

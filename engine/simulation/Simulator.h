@@ -1,19 +1,21 @@
 #pragma once
 /// @file Simulator.h
-/// One scene advancing frame by frame (DESIGN §1): modal velocity (and, with MHD, magnetic
-/// field), forces from the smoke, and the smoke it carries. Two implementations run the same model: Simulation on a Vulkan device
-/// (float32) and ReferenceSimulation on the CPU (double), so any run can be made on both and
-/// compared (`--device cpu`).
+/// One scene advancing frame by frame: modal velocity (and, with MHD, magnetic field), forces
+/// from the smoke, and the smoke it carries. Two implementations run the same model:
+/// device::Simulation on a Vulkan device (float32) and reference::Simulation on the CPU
+/// (double), so any run can be made on both and compared (`--device cpu`); `run`, `stir` and the
+/// tests drive them through this interface alone.
 
 #include <span>
 #include <vector>
 
 #include <Eigen/Core>
 
-#include "engine/field/ForceField.h"
-#include "engine/field/MacGrid.h"
-#include "engine/field/SmokeAdvection.h"
-#include "engine/format/Error.h"
+#include "engine/simulation/ForceSplat.h"
+#include "engine/simulation/MovingObstacle.h"
+#include "engine/core/MacGrid.h"
+#include "engine/simulation/SmokeFields.h"
+#include "engine/core/Error.h"
 #include "engine/simulation/SimulationSettings.h"
 
 namespace modeflow {
@@ -39,9 +41,24 @@ public:
     /// Stirring splats acting from the next step on (replacing earlier ones).
     virtual void setSplats(std::span<const ForceSplat> splats) = 0;
 
-    /// settings().stepsPerFrame steps: forces from the current smoke, the modal step, the grid
-    /// velocity, smoke advection and emitters.
-    virtual FrameStats advanceFrame() = 0;
+    /// Interactive changes (`modeflow stir`), between steps: the moving obstacles of the
+    /// following steps, the viscosity ν, and the integrator.
+    /// @throw modeflow::Error for more than maxObstacles, a negative ν, or an integrator the
+    /// backend does not run (BackendCapabilities).
+    virtual void setObstacles(std::vector<MovingObstacle> obstacles) = 0;
+    virtual void setViscosity(double viscosity) = 0;
+    virtual void setIntegrator(Integrator integrator) = 0;
+
+    /// `steps` steps, each: forces from the current smoke, the modal step, the grid velocity,
+    /// moving obstacles, smoke advection and emitters.
+    /// @throw ModalStateDiverged (engine/dynamics/ModalDivergence.h) when a step leaves the modal
+    /// state non-finite.
+    virtual FrameStats advanceSteps(int steps) = 0;
+    /// settings().stepsPerFrame steps.
+    FrameStats advanceFrame() { return advanceSteps(settings().stepsPerFrame); }
+    /// Whether the following steps time their stages (FrameStats), where the backend can
+    /// (BackendCapabilities::stageTimes); timing may cost as much as the step on some devices.
+    virtual void setTiming(bool) {}
 
     /// The smoke now (one value per cell of smokeGrid()).
     virtual SmokeFields smoke() const = 0;

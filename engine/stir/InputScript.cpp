@@ -3,9 +3,9 @@
 #include <cmath>
 #include <sstream>
 
-#include "engine/format/Error.h"
-#include "engine/format/InputFile.h"
-#include "engine/format/QuotedText.h"
+#include "engine/core/Error.h"
+#include "engine/core/InputFile.h"
+#include "engine/core/PrintableText.h"
 #include "engine/stir/StirKeys.h"
 
 namespace modeflow::stir {
@@ -34,14 +34,14 @@ Number number(std::istringstream& line, const std::string& where, const char* wh
         if (used == word.size() && std::isfinite(value)) return {value, word};
     } catch (const std::exception&) {
     }
-    throw Error(where + ": " + what + " " + quotedText(word) + " is not a finite number");
+    throw Error(where + ": " + what + " \"" + printableText(word) + "\" is not a finite number");
 }
 
 double fraction(std::istringstream& line, const std::string& where, const char* what) {
     const Number n = number(line, where, what);
     if (!(n.value >= 0.0 && n.value <= 1.0))
-        throw Error(where + ": " + what + " " + quotedText(n.word) +
-                    " is not a fraction of the window in [0, 1]");
+        throw Error(where + ": " + what + " \"" + printableText(n.word) +
+                    "\" is not a fraction of the window in [0, 1]");
     return n.value;
 }
 
@@ -70,10 +70,10 @@ std::vector<TimedEvent> parseInputScript(const std::string& text, const std::str
         const Number time = number(line, where, "time");
         timed.time = time.value;
         if (timed.time < 0.0)
-            throw Error(where + ": time " + quotedText(time.word) + " is negative");
+            throw Error(where + ": time \"" + printableText(time.word) + "\" is negative");
         if (!events.empty() && timed.time < events.back().time)
-            throw Error(where + ": time " + quotedText(time.word) +
-                        " is before the previous event's");
+            throw Error(where + ": time \"" + printableText(time.word) +
+                        "\" is before the previous event's");
         std::string name;
         if (!(line >> name)) throw Error(where + ": missing the event after the time");
         if (name == "down" || name == "up" || name == "rdown" || name == "rup" || name == "move") {
@@ -86,7 +86,7 @@ std::vector<TimedEvent> parseInputScript(const std::string& text, const std::str
             std::string key;
             if (!(line >> key)) throw Error(where + ": missing the key's name");
             const auto code = keyFromName(key);
-            if (!code) throw Error(where + ": unknown key " + quotedText(key));
+            if (!code) throw Error(where + ": unknown key \"" + printableText(key) + "\"");
             timed.event = {InputKind::Key};
             timed.event.key = *code;
         } else if (name == "scroll") {
@@ -105,19 +105,19 @@ std::vector<TimedEvent> parseInputScript(const std::string& text, const std::str
             timed.event.width = int(w);
             timed.event.height = int(h);
         } else {
-            throw Error(where + ": unknown event " + quotedText(name) +
-                        " (down, up, move, rdown, rup, key, scroll, resize)");
+            throw Error(where + ": unknown event \"" + printableText(name) +
+                        "\" (down, up, move, rdown, rup, key, scroll, resize)");
         }
         std::string extra;
         if (line >> extra)
-            throw Error(where + ": unexpected " + quotedText(extra) + " after the event");
+            throw Error(where + ": unexpected \"" + printableText(extra) + "\" after the event");
         events.push_back(timed);
     }
     return events;
 }
 
 std::vector<TimedEvent> readInputScript(const std::filesystem::path& path) {
-    return parseInputScript(readRegularFile(path, "input script", kMaxScriptBytes), path.string());
+    return parseInputScript(readInputFile(path, "input script", kMaxScriptBytes), path.string());
 }
 
 }  // namespace modeflow::stir

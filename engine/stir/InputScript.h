@@ -29,7 +29,7 @@ struct TimedEvent {
 };
 
 /// The events of a script's text; `source` names it in error messages, which quote the script's
-/// words escaped and shortened (QuotedText.h).
+/// words escaped and shortened (engine/core/PrintableText.h).
 /// @throw modeflow::Error "SOURCE:LINE: why" for an unknown event or key, missing, extra or
 ///        non-numeric arguments, numbers that are not finite, fractions outside [0, 1], sizes
 ///        outside 1..kMaxWindowSide or decreasing times.

@@ -1,8 +1,8 @@
 #include "engine/stir/ShapedBases.h"
 
 #include "engine/dynamics/DenseCoefficients.h"
-#include "engine/dynamics/PackedLayout.h"
-#include "engine/format/Error.h"
+#include "engine/core/PackedLayout.h"
+#include "engine/core/Error.h"
 
 namespace modeflow::stir {
 

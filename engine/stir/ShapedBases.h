@@ -11,7 +11,7 @@
 
 #include "engine/dynamics/StructuralCoefficients.h"
 #include "engine/format/BasisCache.h"
-#include "precompute/scene/SceneSpec.h"
+#include "engine/core/SceneSpec.h"
 
 namespace modeflow::stir {
 

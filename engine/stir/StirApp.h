@@ -1,11 +1,12 @@
 #pragma once
 /// @file StirApp.h
-/// `modeflow stir`: the interactive window. Each frame reads the input (the window's, and a
+/// `modeflow stir`: the interactive loop. Each frame reads the input (the screen's, and a
 /// script's events when their time comes), takes the simulation steps the clock calls for
 /// (RealTimeClock: real time, or slow motion that says so), draws the smoke on the device
-/// (DisplayKernels, with statistics and the key help over it) and presents it. With a frame
-/// count the clock is the scene's frame clock instead (steps_per_frame steps a frame), so a
-/// scripted run is the same on any machine, and the window closes after the last frame.
+/// (StirRenderer, with the StirStatistics and the key help over it) and presents it on a
+/// display::Screen: a window, or in tests a NullScreen. With a frame count the clock is the
+/// scene's frame clock instead (steps_per_frame steps a frame), so a scripted run is the same on
+/// any machine, and the loop ends after the last frame.
 
 #include <cstdint>
 #include <filesystem>
@@ -17,26 +18,29 @@
 
 #include <Eigen/Core>
 
-#include "engine/dynamics/StructuralCoefficients.h"
-#include "engine/field/SmokeAdvection.h"
-#include "engine/format/BasisCache.h"
+#include "engine/display/Screen.h"
+#include "engine/pipeline/Backend.h"
+#include "engine/pipeline/RunInputs.h"
+#include "engine/simulation/SmokeFields.h"
 #include "engine/stir/InputScript.h"
 #include "engine/stir/StirSession.h"
-#include "engine/vulkan/VulkanContext.h"
-#include "precompute/scene/SceneSpec.h"
 
 namespace modeflow::stir {
 
 struct StirOptions {
-    /// The window's first size, screen units. Unset: 1280 × 720, or 960 × 540 on a CPU device
-    /// (lavapipe), where drawing costs per pixel and the smaller window keeps 30 fps.
+    /// The window's first size, screen units (runStir with a window). Unset: 1280 × 720, or
+    /// 960 × 540 on a CPU device (lavapipe), where drawing costs per pixel and the smaller window
+    /// keeps 30 fps.
     std::optional<int> width, height;
     std::optional<int> frames;       ///< close after this many frames (frame clock)
     std::filesystem::path screenshot;                 ///< the last frame as PNG, if not empty
     std::filesystem::path screenshotFolder = ".";     ///< where the screenshot key writes
     std::vector<TimedEvent> script;                   ///< events to replay
     bool statistics = true;                           ///< the statistics over the picture
-    vulkan::VulkanContextOptions device;
+    /// The backend that simulates: the screen's Vulkan device, or the CPU reference beside it.
+    /// The window's device is `backend.vulkan`'s choice (the first suitable one that presents
+    /// to the window for the CPU reference too).
+    BackendChoice backend;
     StirSettings stir;
 };
 
@@ -46,7 +50,7 @@ struct StirReport {
     double seconds = 0.0;        ///< wall time of the frame loop
     double stepMs = 0.0;         ///< mean wall time per simulation step
     double drawMs = 0.0;         ///< mean wall time per frame to draw and present
-    int width = 0, height = 0;   ///< the window's last size, pixels
+    int width = 0, height = 0;   ///< the last picture's size, pixels
     SmokeFields smoke;           ///< at the end
     double simulatedTime = 0.0;  ///< at the end
     int modes = 0;               ///< of the basis shown at the end
@@ -55,13 +59,17 @@ struct StirReport {
     double framesPerSecond() const { return seconds > 0.0 ? frames / seconds : 0.0; }
 };
 
-/// Opens the window and runs until the user quits or the frame count is reached; `log` gets
-/// the device report and a summary line.
-/// @throw modeflow::Error without a display (with how to run headless), for a device that
-///        cannot present, or when anything below fails.
-StirReport runStir(const StirOptions& options, const SceneSpec& scene, const BasisCache& cache,
-                   std::unique_ptr<StructuralCoefficients> coefficients,
-                   std::vector<std::uint8_t> mask, const Eigen::VectorXd& initialVelocity,
+/// Runs on `screen` until the user quits, the screen is closed or the frame count is reached;
+/// `log` gets the device report and a summary line. The screen's context is the display's
+/// device (options.backend.vulkan is not used).
+/// @throw modeflow::Error when the validation layer reported problems on the screen's context,
+///        or when anything below fails.
+StirReport runStir(const StirOptions& options, const RunInputs& run, display::Screen& screen,
                    std::ostream& log);
+
+/// The same in a window (display::WindowScreen) opened for it.
+/// @throw modeflow::Error without a display (with how to run headless), for a device that
+///        cannot present, or as above.
+StirReport runStir(const StirOptions& options, const RunInputs& run, std::ostream& log);
 
 }  // namespace modeflow::stir

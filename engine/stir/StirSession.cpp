@@ -5,7 +5,8 @@
 #include <cstdio>
 
 #include "engine/dynamics/Diagnostics.h"
-#include "engine/format/Error.h"
+#include "engine/core/Error.h"
+#include "engine/core/SceneKeywords.h"
 
 namespace modeflow::stir {
 namespace {
@@ -17,42 +18,42 @@ double distance(const Vec3& a, const Vec3& b) {
 
 }  // namespace
 
-StirSession::StirSession(const vulkan::VulkanContext& context, const SceneSpec& scene,
-                         const BasisCache& cache, std::unique_ptr<StructuralCoefficients> coefficients,
-                         std::vector<std::uint8_t> mask, Eigen::VectorXd initialVelocity,
-                         StirSettings settings)
-    : mContext(context),
-      mCache(cache),
-      mCoefficients(std::move(coefficients)),
-      mSceneSettings(SimulationSettings::fromScene(scene, cache)),
-      mMask(std::move(mask)),
-      mInitial(std::move(initialVelocity)),
+StirSession::StirSession(const Backend& backend, const RunInputs& run, StirSettings settings)
+    : mBackend(backend),
+      mRun(run),
+      mSceneSettings(run.settings),
       mStir(settings),
-      mBases(shapedBases(scene.basis)) {
-    const MacGrid grid = MacGrid::fromSpec(cache.grid);
+      mBases(shapedBases(run.scene.basis)) {
+    const MacGrid grid = MacGrid::fromSpec(run.cache.grid);
     mDim = grid.dim;
     mBoxSize = 0.0;
     for (int a = 0; a < mDim; ++a) {
         mBoxSize = std::max(mBoxSize, grid.spacing[a] * grid.cells[a]);
         mPaddleAt[a] = grid.origin[a] + 0.5 * grid.spacing[a] * grid.cells[a];
     }
+    mShapedRuns.resize(mBases.size() - 1);
     mSimulations.resize(mBases.size());
     mBasis = mBases.size() - 1;  // the scene's own basis, all of it
-    simulationOf(mBasis).setVelocity(mInitial);
+    simulationOf(mBasis);
 }
 
-Simulation& StirSession::simulationOf(std::size_t b) {
+Simulator& StirSession::simulationOf(std::size_t b) {
     if (!mSimulations[b]) {
-        const int modes = mBases[b].modes;
-        SimulationSettings settings = mSceneSettings;
-        settings.fluid.kappaSquared = mCache.velocity.eigenvalues.head(modes);
         if (b + 1 == mBases.size()) {
-            mSimulations[b] =
-                std::make_unique<Simulation>(mContext, mCache, *mCoefficients, settings, mMask, true);
+            mSimulations[b] = mBackend.makeSimulator(mRun, true);
         } else {
-            const BasisCache cache = leadingModes(mCache, modes);
-            mSimulations[b] = std::make_unique<Simulation>(
-                mContext, cache, *leadingCoefficients(*mCoefficients, modes), settings, mMask, true);
+            const int modes = mBases[b].modes;
+            auto shaped = std::make_unique<RunInputs>();
+            shaped->scene = mRun.scene;
+            shaped->cachePath = mRun.cachePath;
+            shaped->cache = leadingModes(mRun.cache, modes);
+            shaped->coefficients = leadingCoefficients(*mRun.coefficients, modes);
+            shaped->settings = mRun.settings;
+            shaped->settings.fluid.kappaSquared = mRun.cache.velocity.eigenvalues.head(modes);
+            shaped->smokeMask = mRun.smokeMask;
+            shaped->initialVelocity = mRun.initialVelocity.head(modes);
+            mSimulations[b] = mBackend.makeSimulator(*shaped, true);
+            mShapedRuns[b] = std::move(shaped);
         }
     }
     return *mSimulations[b];
@@ -78,8 +79,8 @@ void StirSession::reset() {
     const std::size_t cells = std::size_t(simulation().smokeGrid().cellCount());
     const SmokeFields empty{std::vector<double>(cells, 0.0), std::vector<double>(cells, 0.0)};
     Eigen::VectorXd v = Eigen::VectorXd::Zero(modeCount());
-    const Eigen::Index shared = std::min<Eigen::Index>(v.size(), mInitial.size());
-    v.head(shared) = mInitial.head(shared);
+    const Eigen::Index shared = std::min<Eigen::Index>(v.size(), mRun.initialVelocity.size());
+    v.head(shared) = mRun.initialVelocity.head(shared);
     current().restore(0.0, v, empty);
 }
 
@@ -93,7 +94,7 @@ void StirSession::toggleIntegrator() {
 
 void StirSession::scaleViscosity(bool up) {
     // The first step: ν that damps the highest mode by 1/e in about 100 steps.
-    const double highest = mCache.velocity.eigenvalues.maxCoeff();
+    const double highest = mRun.cache.velocity.eigenvalues.maxCoeff();
     const double first = highest > 0.0 ? 0.01 / (settings().dt * highest) : 1e-4;
     double nu = settings().fluid.viscosity;
     nu = up ? (nu > 0.0 ? 2.0 * nu : first) : (nu > first ? 0.5 * nu : 0.0);
@@ -105,8 +106,8 @@ void StirSession::scaleViscosity(bool up) {
 void StirSession::nextBasis() {
     if (mBases.size() < 2) return;
     const std::size_t next = (mBasis + 1) % mBases.size();
-    Simulation& from = current();
-    Simulation& to = simulationOf(next);
+    Simulator& from = current();
+    Simulator& to = simulationOf(next);
     to.setIntegrator(mSceneSettings.integrator);
     to.setViscosity(mSceneSettings.fluid.viscosity);
     // The leading modes are the same functions in both bases: they carry over, the rest start
@@ -173,7 +174,7 @@ MovingObstacle StirSession::paddleObstacle(int steps) const {
 FrameStats StirSession::advance(int steps, double elapsed) {
     mStrokeTime += elapsed;
     if (steps < 1) return {};
-    Simulation& simulation = current();
+    Simulator& simulation = current();
     const std::vector<ForceSplat> splats = strokeSplats(mStrokeTime);
     simulation.setSplats(splats);
     if (mPaddleMode) {
@@ -196,7 +197,7 @@ double StirSession::energy() const {
 std::string StirSession::status() const {
     char line[200];
     std::snprintf(line, sizeof line, "%s | viscosity %.3g | %d modes (%s) | mouse: %s",
-                  settings().integrator == Integrator::Midpoint ? "midpoint" : "explicit",
+                  std::string(sceneKeyword(settings().integrator)).c_str(),
                   settings().fluid.viscosity, modeCount(), mBases[mBasis].label.c_str(),
                   mPaddleMode ? "paddle" : "stir");
     return line;

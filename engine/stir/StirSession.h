@@ -2,7 +2,7 @@
 /// @file StirSession.h
 /// What `modeflow stir` does to the fluid, apart from any window: a Simulation of the scene on
 /// the device, and the user's hand in it. A left drag either stirs, with force splats along the
-/// pointer's path proportional to its speed (projected on the basis like buoyancy, DESIGN §3),
+/// pointer's path proportional to its speed (projected on the basis like buoyancy, README.md, "Reduced dynamics"),
 /// or moves a solid paddle, a moving obstacle that follows the pointer (seed §6.3.5). Keys
 /// switch the integrator, scale the viscosity, reset, and switch between the shaped bases the
 /// cache holds (ShapedBases.h), carrying the velocity's shared modes and the smoke across.
@@ -15,7 +15,8 @@
 
 #include <Eigen/Core>
 
-#include "engine/simulation/Simulation.h"
+#include "engine/pipeline/Backend.h"
+#include "engine/pipeline/RunInputs.h"
 #include "engine/stir/ShapedBases.h"
 
 namespace modeflow::stir {
@@ -36,12 +37,10 @@ struct PaddlePose {
 
 class StirSession {
 public:
-    /// Starts the scene at `initialVelocity` with no smoke; the basis and coefficients are the
-    /// cache's whole basis. `mask`: precompute's fluidMask at the smoke scale.
-    /// @throw modeflow::Error as Simulation does.
-    StirSession(const vulkan::VulkanContext& context, const SceneSpec& scene, const BasisCache& cache,
-                std::unique_ptr<StructuralCoefficients> coefficients, std::vector<std::uint8_t> mask,
-                Eigen::VectorXd initialVelocity, StirSettings settings = {});
+    /// Starts the prepared run at its initial state with no smoke, on `backend`; both must
+    /// outlive the session.
+    /// @throw modeflow::Error as Backend::makeSimulator does.
+    StirSession(const Backend& backend, const RunInputs& run, StirSettings settings = {});
 
     /// The pointer, in scene coordinates (StirView::scenePoint).
     void press(const Vec3& point);
@@ -65,7 +64,7 @@ public:
     /// Whether the following advance() calls time their steps (Simulation::setTiming).
     void setTiming(bool on) { mTiming = on; }
 
-    const Simulation& simulation() const { return *mSimulations[mBasis]; }
+    const Simulator& simulation() const { return *mSimulations[mBasis]; }
     const SimulationSettings& settings() const { return simulation().settings(); }
     int modeCount() const { return mBases[mBasis].modes; }
     /// ½|v|², read from the device.
@@ -74,23 +73,22 @@ public:
     std::string status() const;
 
 private:
-    Simulation& current() { return *mSimulations[mBasis]; }
+    Simulator& current() { return *mSimulations[mBasis]; }
     /// The simulation of basis b, built the first time it is asked for.
-    Simulation& simulationOf(std::size_t b);
+    Simulator& simulationOf(std::size_t b);
     std::vector<ForceSplat> strokeSplats(double elapsed) const;
     MovingObstacle paddleObstacle(int steps) const;
 
-    const vulkan::VulkanContext& mContext;
-    BasisCache mCache;
-    std::unique_ptr<StructuralCoefficients> mCoefficients;
-    SimulationSettings mSceneSettings;
-    std::vector<std::uint8_t> mMask;
-    Eigen::VectorXd mInitial;
+    const Backend& mBackend;
+    const RunInputs& mRun;
+    SimulationSettings mSceneSettings;  ///< the run's, with the user's integrator and viscosity
     StirSettings mStir;
     double mBoxSize = 1.0;
     int mDim = 2;
     std::vector<ShapedBasis> mBases;
-    std::vector<std::unique_ptr<Simulation>> mSimulations;  ///< per basis, null until used
+    /// Per shaped basis but the last (the run's own): its leading modes as a run of their own.
+    std::vector<std::unique_ptr<RunInputs>> mShapedRuns;
+    std::vector<std::unique_ptr<Simulator>> mSimulations;  ///< per basis, null until used
     std::size_t mBasis = 0;
 
     bool mPaddleMode = false;

@@ -8,9 +8,9 @@
 #include <optional>
 
 #include "engine/display/Viewport.h"
-#include "engine/field/MacGrid.h"
+#include "engine/core/MacGrid.h"
 #include "engine/preview/VolumeView.h"
-#include "precompute/scene/SceneSpec.h"
+#include "engine/core/SceneSpec.h"
 
 namespace modeflow::stir {
 

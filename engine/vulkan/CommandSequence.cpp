@@ -3,7 +3,7 @@
 #include <cstdint>
 #include <functional>
 
-#include "engine/format/Error.h"
+#include "engine/core/Error.h"
 #include "engine/vulkan/ComputeKernel.h"
 #include "engine/vulkan/SyncObjects.h"
 #include "engine/vulkan/VulkanContext.h"

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <vector>
 
-#include "engine/format/Error.h"
+#include "engine/core/Error.h"
 #include "engine/vulkan/DeviceBuffer.h"
 #include "engine/vulkan/VulkanContext.h"
 #include "engine/vulkan/VulkanError.h"

@@ -19,7 +19,7 @@
 
 #include <vulkan/vulkan.h>
 
-#include "engine/format/Error.h"
+#include "engine/core/Error.h"
 #include "engine/vulkan/DeviceHandle.h"
 
 namespace modeflow::vulkan {

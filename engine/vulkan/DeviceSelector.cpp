@@ -5,7 +5,7 @@
 #include <set>
 #include <sstream>
 
-#include "engine/format/Error.h"
+#include "engine/core/Error.h"
 #include "engine/vulkan/VulkanError.h"
 
 namespace modeflow::vulkan {

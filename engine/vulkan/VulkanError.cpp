@@ -1,6 +1,6 @@
 #include "engine/vulkan/VulkanError.h"
 
-#include "engine/format/Error.h"
+#include "engine/core/Error.h"
 
 namespace modeflow::vulkan {
 

@@ -4,7 +4,7 @@
 
 #include <Eigen/SparseCore>
 
-#include "engine/dynamics/PackedLayout.h"
+#include "engine/core/PackedLayout.h"
 
 namespace modeflow {
 namespace {

@@ -1,6 +1,6 @@
 #pragma once
 /// @file CoefficientAssembly.h
-/// The structural coefficients C[k][i][j] = ∫(∇×Ψi)·(Ψk×Ψj) (seed eq. 6.7, DESIGN §3) of a
+/// The structural coefficients C[k][i][j] = ∫(∇×Ψi)·(Ψk×Ψj) (seed eq. 6.7, README.md, "Reduced dynamics") of a
 /// velocity basis on a cut-cell grid, by quadrature over the vorticity elements (3D edges,
 /// 2D vertices).
 ///
@@ -9,7 +9,7 @@
 ///   u_b, u_c: the mean velocity of the two b-normal and the two c-normal faces touching e,
 ///   C[k][i][j] += w_e ω_i(e) (u_kb u_jc − u_kc u_jb),   w_e = |e ∩ Ω| · |dual of e|.
 /// The cross product makes C exactly antisymmetric in k ↔ j; only k < j is computed and stored,
-/// in the packed layout of engine/dynamics/PackedLayout.h.
+/// in the packed layout of engine/core/PackedLayout.h.
 
 #include <vector>
 

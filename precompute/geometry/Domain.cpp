@@ -5,7 +5,7 @@
 #include <limits>
 #include <string>
 
-#include "engine/format/Error.h"
+#include "engine/core/Error.h"
 #include "precompute/scene/SceneLoader.h"
 
 namespace modeflow {

@@ -1,12 +1,12 @@
 #pragma once
 /// @file Domain.h
-/// The fluid domain Ω = {x : χ(x) > 0} (DESIGN §2): the scene's shapes combined in order.
+/// The fluid domain Ω = {x : χ(x) > 0} (precompute/README.md): the scene's shapes combined in order.
 
 #include <memory>
 #include <vector>
 
 #include "precompute/geometry/ImplicitShape.h"
-#include "precompute/scene/SceneSpec.h"
+#include "engine/core/SceneSpec.h"
 
 namespace modeflow {
 

@@ -1,9 +1,10 @@
 #include "precompute/geometry/FluidMask.h"
 
 #include <algorithm>
+#include <optional>
 
-#include "engine/field/MacGrid.h"
-#include "engine/format/Error.h"
+#include "engine/core/MacGrid.h"
+#include "engine/core/Error.h"
 #include "precompute/geometry/Domain.h"
 
 namespace modeflow {
@@ -16,10 +17,11 @@ std::vector<std::uint8_t> fluidMask(const SceneSpec& scene, const BasisCache& ca
                     " cell fractions for " + std::to_string(basis.cellCount()) + " cells");
     std::vector<std::uint8_t> mask(std::size_t(grid.cellCount()), 0);
     // Mesh level sets at half the finest smoke spacing, as the precompute builds them.
-    const double voxel =
-        0.5 * *std::min_element(grid.spacing.begin(), grid.spacing.begin() + grid.dim);
-    const Domain domain(scene.domain, grid.dim, voxel);
-    const bool checkCentres = scale > 1 && !domain.isWholeBox();
+    const bool checkCentres = fluidMaskNeedsDomain(scene, scale);
+    std::optional<Domain> domain;
+    if (checkCentres)
+        domain.emplace(scene.domain, grid.dim,
+                       0.5 * *std::min_element(grid.spacing.begin(), grid.spacing.begin() + grid.dim));
     for (int z = 0; z < grid.cells[2]; ++z)
         for (int y = 0; y < grid.cells[1]; ++y)
             for (int x = 0; x < grid.cells[0]; ++x) {
@@ -28,10 +30,14 @@ std::vector<std::uint8_t> fluidMask(const SceneSpec& scene, const BasisCache& ca
                     continue;
                 Vec3 centre{grid.cellCentre(0, x), grid.cellCentre(1, y), 0.0};
                 if (grid.dim == 3) centre[2] = grid.cellCentre(2, z);
-                if (!checkCentres || domain.chi(centre) > 0.0)
+                if (!checkCentres || domain->chi(centre) > 0.0)
                     mask[std::size_t(grid.cellIndex(x, y, z))] = 1;
             }
     return mask;
+}
+
+bool fluidMaskNeedsDomain(const SceneSpec& scene, int scale) {
+    return scale > 1 && !scene.domain.empty();
 }
 
 }  // namespace modeflow

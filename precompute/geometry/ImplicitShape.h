@@ -7,7 +7,7 @@
 #include <memory>
 #include <string_view>
 
-#include "precompute/scene/SceneSpec.h"
+#include "engine/core/SceneSpec.h"
 
 namespace modeflow {
 

@@ -11,7 +11,7 @@
 #include <random>
 #include <utility>
 
-#include "engine/format/Error.h"
+#include "engine/core/Error.h"
 
 namespace modeflow {
 namespace {

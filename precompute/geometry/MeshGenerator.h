@@ -7,7 +7,7 @@
 #include <filesystem>
 #include <vector>
 
-#include "precompute/scene/SceneSpec.h"
+#include "engine/core/SceneSpec.h"
 
 namespace modeflow {
 

@@ -9,16 +9,20 @@
 #include <tiny_obj_loader.h>
 
 #include <array>
+#include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <limits>
 #include <mutex>
 #include <string>
 #include <system_error>
 #include <unordered_map>
 #include <vector>
 
-#include "engine/format/Error.h"
+#include "engine/core/Error.h"
+#include "engine/core/FileKind.h"
+#include "precompute/geometry/ObjLineCheck.h"
 
 namespace modeflow {
 namespace {
@@ -28,6 +32,25 @@ namespace fs = std::filesystem;
 /// Beyond this many band voxels the conversion would take gigabytes: the voxel size is a typo
 /// or far too fine for the mesh.
 constexpr double kMaxBandVoxels = 4.0e8;
+/// Beyond this many voxels across, the conversion's time and memory grow with the extent even
+/// when the band is small (a sliver 1e5 voxels long took 12 s and 0.8 GB, one 1.6e10 voxels long
+/// did not finish in 2 minutes and 23 GB). The widest grid is 4096 cells of two voxels.
+constexpr double kMaxExtentVoxels = 131072;
+
+/// A count for messages: two significant digits, never an overflowed integer cast.
+std::string roughCount(double x) {
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%.2g", x);
+    return buffer;
+}
+
+/// The shortest text that reads back as `x`.
+template <typename T>
+std::string shortest(T x) {
+    char buffer[64];
+    const auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, x);
+    return ec == std::errc{} ? std::string(buffer, end) : std::to_string(x);
+}
 
 void initializeOpenVdb() {
     static std::once_flag once;
@@ -47,12 +70,16 @@ struct RawMesh {
 };
 
 /// Parses the OBJ and triangulates every face (fans for anything tinyobjloader left as a
-/// polygon); drops triangles with a repeated vertex, which have no area.
+/// polygon); drops triangles with a repeated vertex, which have no area. checkObjLines names bad
+/// vertices and faces with their line first; the checks here guard what tinyobjloader returns.
 RawMesh readObj(const fs::path& file) {
     const std::string name = file.string();
-    std::error_code ec;
-    if (!fs::exists(file, ec)) throw Error("mesh file " + name + " does not exist");
-    if (!fs::is_regular_file(file, ec)) throw Error("mesh file " + name + " is not a regular file");
+    if (auto why = whyNotARegularFile(file)) {
+        std::error_code ec;
+        throw Error("mesh file " + name + " " + *why +
+                    (fs::exists(file, ec) ? ", not a regular file" : ""));
+    }
+    checkObjLines(file);
 
     tinyobj::ObjReaderConfig config;
     config.triangulate = true;
@@ -143,6 +170,25 @@ void requireClosed(const RawMesh& mesh, const fs::path& file) {
     throw Error(what);
 }
 
+/// Refuses a mesh more than kMaxExtentVoxels across on some axis (vertices of its triangles).
+void requireSaneExtent(const RawMesh& mesh, double voxelSize, const std::string& name) {
+    openvdb::Vec3s lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
+    for (const auto& t : mesh.triangles) {
+        for (int k = 0; k < 3; ++k) {
+            lo = openvdb::math::minComponent(lo, mesh.points[t[k]]);
+            hi = openvdb::math::maxComponent(hi, mesh.points[t[k]]);
+        }
+    }
+    for (int a = 0; a < 3; ++a) {
+        const double voxels = (double(hi[a]) - double(lo[a])) / voxelSize;
+        if (voxels > kMaxExtentVoxels)
+            throw Error("mesh file " + name + " spans " + roughCount(voxels) + " voxels (of " +
+                        shortest(voxelSize) + ") along " + "xyz"[a] + ", from " + shortest(lo[a]) +
+                        " to " + shortest(hi[a]) + "; at most " + shortest(kMaxExtentVoxels) +
+                        ": the mesh is far larger than the grid (are its units right?)");
+    }
+}
+
 double surfaceArea(const RawMesh& mesh) {
     double area = 0.0;
     for (const auto& t : mesh.triangles) {
@@ -184,14 +230,12 @@ std::unique_ptr<ImplicitShape> loadMeshShape(const fs::path& objFile, double vox
     const RawMesh mesh = readObj(objFile);
     requireClosed(mesh, objFile);
 
+    requireSaneExtent(mesh, voxelSize, name);
     const double bandVoxels = surfaceArea(mesh) / (voxelSize * voxelSize) * 2.0 * halfWidthVoxels;
-    if (bandVoxels > kMaxBandVoxels) {
-        char voxels[32];  // "%.2g": the count can exceed every integer type
-        std::snprintf(voxels, sizeof voxels, "%.2g", bandVoxels);
+    if (bandVoxels > kMaxBandVoxels)
         throw Error("mesh file " + name + ": a level set with voxel size " +
-                    std::to_string(voxelSize) + " would need about " + voxels +
-                    " voxels; use a coarser grid");
-    }
+                    std::to_string(voxelSize) + " would need about " + roughCount(bandVoxels) +
+                    " voxels (at most " + roughCount(kMaxBandVoxels) + "); use a coarser grid");
 
     initializeOpenVdb();
     openvdb::FloatGrid::Ptr grid;

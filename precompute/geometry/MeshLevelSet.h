@@ -18,10 +18,12 @@ namespace modeflow {
 /// ±halfWidthVoxels·voxelSize, still a lower bound of the distance. Unlike the analytic shapes,
 /// the zero set and the 1-Lipschitz bound hold only up to the interpolation error (well under a
 /// voxel near the surface). value() is safe to call from many threads at once.
-/// @throw Error naming the file when it is missing or not a readable OBJ, has no faces, refers to
-///        vertices it lacks, is open or non-manifold (every edge must join exactly two
-///        triangles), encloses no voxel (flat, doubled, or thinner than a voxel), or the voxel
-///        size is not a positive number.
+/// @throw Error naming the file when it is missing or not a readable OBJ, has a vertex
+///        coordinate that is not a finite number or a face that refers to vertices it lacks (both
+///        with the line, ObjLineCheck.h), has no faces, is open or non-manifold (every edge must
+///        join exactly two triangles), spans more than 131072 voxels on an axis or would need more
+///        than 4e8 band voxels, encloses no voxel (flat, doubled, or thinner than a voxel), or the
+///        voxel size is not a positive number.
 std::unique_ptr<ImplicitShape> loadMeshShape(const std::filesystem::path& objFile, double voxelSize,
                                              double halfWidthVoxels = 3.0);
 

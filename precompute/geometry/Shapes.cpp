@@ -11,7 +11,7 @@
 #include <string>
 #include <utility>
 
-#include "engine/format/Error.h"
+#include "engine/core/Error.h"
 #include "precompute/geometry/ImplicitShape.h"
 #include "precompute/geometry/MeshLevelSet.h"
 

@@ -6,8 +6,8 @@
 #include <numbers>
 #include <string>
 
-#include "engine/field/MacGrid.h"
-#include "engine/format/Error.h"
+#include "engine/core/MacGrid.h"
+#include "engine/core/Error.h"
 #include "precompute/initial/VortexProjection.h"
 
 namespace modeflow {

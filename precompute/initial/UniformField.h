@@ -22,7 +22,7 @@
 
 #include "engine/format/BasisCache.h"
 #include "precompute/geometry/Domain.h"
-#include "precompute/scene/SceneSpec.h"
+#include "engine/core/SceneSpec.h"
 
 namespace modeflow {
 

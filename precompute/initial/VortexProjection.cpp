@@ -5,7 +5,7 @@
 #include <numbers>
 #include <string>
 
-#include "engine/format/Error.h"
+#include "engine/core/Error.h"
 #include "precompute/dec/CubicalComplex.h"
 #include "precompute/dec/CutCellDec.h"
 
@@ -126,13 +126,14 @@ Eigen::VectorXd projectVortices(const BasisCache& cache, std::span<const VortexS
         faceFluxes(cache, [&](const Vec3& x) { return vortexVelocity(vortices, dim, x); });
     Eigen::VectorXd v = projectFluxes(cache, flux);
     if (energy > 0.0) {
-        const double current = 0.5 * v.squaredNorm();
-        if (!(current > 0.0)) {
+        // |v| by stableNorm: huge strengths would overflow ½|v|² and rescale to 0.
+        const double norm = v.stableNorm();
+        if (norm == 0.0) {
             throw Error("[initial].energy: the vortices project to a zero state on this basis "
                         "(outside the domain, or all strengths 0), so it cannot be rescaled to " +
                         std::to_string(energy));
         }
-        v *= std::sqrt(energy / current);
+        v *= std::sqrt(2.0 * energy) / norm;
     }
     return v;
 }

@@ -10,7 +10,7 @@
 #include <Eigen/Core>
 
 #include "engine/format/BasisCache.h"
-#include "precompute/scene/SceneSpec.h"
+#include "engine/core/SceneSpec.h"
 
 namespace modeflow {
 

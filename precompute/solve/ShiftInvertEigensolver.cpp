@@ -2,17 +2,46 @@
 
 #include <algorithm>
 #include <chrono>
+#include <exception>
+#include <new>
 
 #include <Eigen/CholmodSupport>
 #include <Spectra/SymEigsShiftSolver.h>
 
-#include "engine/format/Error.h"
+#include "engine/core/Error.h"
 
 namespace modeflow {
 namespace {
 
 double secondsSince(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+/// CHOLMOD's status after a call, as our error naming the stage; nothing on success.
+void requireCholmodSuccess(const cholmod_common& common, const std::string& what,
+                           Eigen::Index unknowns) {
+    const std::string factor =
+        "the sparse Cholesky factorization of " + std::to_string(unknowns) + " unknowns";
+    switch (common.status) {
+        case CHOLMOD_OK:
+            return;
+        case CHOLMOD_NOT_POSDEF:
+            throw Error(what +
+                        ": the sparse Cholesky factorization failed (the operator is not positive "
+                        "definite after the shift)");
+        case CHOLMOD_DSMALL:
+            throw Error(what +
+                        ": the sparse Cholesky factorization failed (the operator is too "
+                        "ill-conditioned: a pivot is nearly zero)");
+        case CHOLMOD_OUT_OF_MEMORY:
+            throw Error("out of memory in " + what + " (" + factor + "); lower [grid].resolution");
+        case CHOLMOD_TOO_LARGE:
+            throw Error(what + ": " + factor +
+                        " is too large for CHOLMOD's integers; lower [grid].resolution");
+        default:
+            throw Error(what + ": " + factor + " failed (CHOLMOD status " +
+                        std::to_string(common.status) + ")");
+    }
 }
 
 /// (A − σI)⁻¹ for the symmetrically scaled A = M^{-1/2} K M^{-1/2}: a diagonal M turns the
@@ -23,7 +52,10 @@ public:
 
     ScaledShiftInvert(const Eigen::SparseMatrix<double>& k, const Eigen::VectorXd& m,
                       const EigenRequest& request)
-        : mK(k), mM(m), mRequest(request) {}
+        : mK(k), mM(m), mRequest(request) {
+        // CHOLMOD prints its warnings on stdout; its status becomes our message instead.
+        mSolver.cholmod().print = 0;
+    }
 
     Eigen::Index rows() const { return mK.rows(); }
     Eigen::Index cols() const { return mK.cols(); }
@@ -33,11 +65,11 @@ public:
         for (Eigen::Index i = 0; i < mM.size(); ++i) shifted.coeffRef(i, i) -= sigma * mM[i];
         const auto start = std::chrono::steady_clock::now();
         mSolver.analyzePattern(shifted);
+        // A failed analysis leaves no factor, which Eigen's factorize() would dereference.
+        requireCholmodSuccess(mSolver.cholmod(), mRequest.what, rows());
         mSolver.factorize(shifted);
         mStats.factorSeconds += secondsSince(start);
-        if (mSolver.info() != Eigen::Success)
-            throw Error(mRequest.what + ": the sparse Cholesky factorization failed (the operator "
-                                        "is not positive definite after the shift)");
+        requireCholmodSuccess(mSolver.cholmod(), mRequest.what, rows());
         mScale = mM.cwiseSqrt();
     }
 
@@ -78,9 +110,18 @@ EigenPairs smallestEigenpairs(const Eigen::SparseMatrix<double>& stiffness,
     // step, and its bandwidth grows with ncv.
     const Eigen::Index ncv = std::min<Eigen::Index>(n, std::max<Eigen::Index>(3 * nev / 2 + 1, nev + 30));
     Spectra::SymEigsShiftSolver<ScaledShiftInvert> solver(op, nev, ncv, request.shift);
-    solver.init();
-    solver.compute(Spectra::SortRule::LargestMagn, 1000, request.tolerance,
-                   Spectra::SortRule::SmallestAlge);
+    try {
+        solver.init();
+        solver.compute(Spectra::SortRule::LargestMagn, 1000, request.tolerance,
+                       Spectra::SortRule::SmallestAlge);
+    } catch (const Error&) {
+        throw;
+    } catch (const std::bad_alloc&) {
+        throw;
+    } catch (const std::exception& e) {
+        // Spectra's own failures (a NaN in the Krylov basis: the operator overflowed).
+        throw Error(request.what + ": Lanczos failed (" + e.what() + ")");
+    }
     if (solver.info() != Spectra::CompInfo::Successful)
         throw Error(request.what + ": Lanczos did not converge for " + std::to_string(nev) +
                     " eigenpairs (" + std::to_string(solver.num_iterations()) + " restarts)");

@@ -7,7 +7,8 @@
 #include <Eigen/Eigenvalues>
 #include <Eigen/SparseCholesky>
 
-#include "engine/format/Error.h"
+#include "engine/core/Error.h"
+#include "engine/core/KappaSquared.h"
 #include "precompute/solve/Laplacians.h"
 
 namespace modeflow {
@@ -44,8 +45,6 @@ double referenceEigenvalue(const GridSpec& grid) {
     for (int a = 0; a < grid.dim; ++a) l = std::max(l, grid.boundsMax[a] - grid.boundsMin[a]);
     return (M_PI / l) * (M_PI / l);
 }
-
-double harmonicThreshold(const GridSpec& grid) { return 1e-8 * referenceEigenvalue(grid); }
 
 int connectedComponents(const CutCellDec& dec) {
     std::vector<int> parent(size_t(dec.cells.size()));
@@ -174,6 +173,12 @@ VelocityBasisResult solveVelocityBasis(const CutCellDec& dec, const std::vector<
     }
 
     if (noSlip) projectAndRefine(dec, pairs);
+    // A harmonic field's κ² is exactly 0; the solve returns it as round-off of either sign. The
+    // first non-zero κ² is the smallest above round-off of (π/L)², or (π/L)² itself when every
+    // computed mode is harmonic.
+    pairs.values = checkedKappaSquared(
+        pairs.values, firstNonZeroKappaSquared(pairs.values, referenceEigenvalue(dec.grid)),
+        request.what);
 
     VelocityBasisResult r;
     r.penalty = penalty;
@@ -187,7 +192,7 @@ VelocityBasisResult solveVelocityBasis(const CutCellDec& dec, const std::vector<
         r.eigenvalues[Eigen::Index(i)] = pairs.values[keep[i]];
         r.modes.col(Eigen::Index(i)) = pairs.vectors.col(keep[i]);
         r.modeNumbers.push_back(int(keep[i]) + 1);
-        if (pairs.values[keep[i]] < harmonicThreshold(dec.grid)) ++r.harmonicCount;
+        if (pairs.values[keep[i]] == 0.0) ++r.harmonicCount;
     }
     return r;
 }

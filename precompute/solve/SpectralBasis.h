@@ -1,6 +1,6 @@
 #pragma once
 /// @file SpectralBasis.h
-/// The velocity and scalar eigenbases of a domain (seed §6.3.1, appendix C.1; DESIGN §2).
+/// The velocity and scalar eigenbases of a domain (seed §6.3.1, appendix C.1; precompute/README.md).
 
 #include <vector>
 
@@ -13,7 +13,7 @@
 namespace modeflow {
 
 struct VelocityBasisResult {
-    Eigen::VectorXd eigenvalues;   ///< κ², ascending, one per selected mode
+    Eigen::VectorXd eigenvalues;   ///< κ², ascending, one per selected mode (harmonic: 0)
     Eigen::MatrixXd modes;         ///< face fluxes (DOFs × modes), ⋆(n-1)-orthonormal
     std::vector<int> modeNumbers;  ///< 1-based position of each mode in the div-free spectrum
     int harmonicCount = 0;         ///< selected modes with κ = 0
@@ -50,11 +50,8 @@ VelocityBasisResult solveVelocityBasis(const CutCellDec& dec, const std::vector<
                                        double firstNeumannEigenvalue, double domainMeasure,
                                        const SolveProgress& progress);
 
-/// Reference eigenvalue scale (π/L)², L the largest extent of the grid box; shifts and the
-/// harmonic threshold are relative to it.
+/// Reference eigenvalue scale (π/L)², L the largest extent of the grid box: shifts are relative to
+/// it, and it anchors the search for the first non-zero κ² that decides which modes are harmonic.
 double referenceEigenvalue(const GridSpec& grid);
-
-/// κ² below this counts as harmonic (κ = 0).
-double harmonicThreshold(const GridSpec& grid);
 
 }  // namespace modeflow

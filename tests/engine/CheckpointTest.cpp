@@ -12,10 +12,11 @@
 #include <limits>
 #include <string>
 
-#include "engine/format/CacheFile.h"
-#include "engine/format/Error.h"
+#include "engine/core/AtomicFile.h"
+#include "engine/core/BinaryCodec.h"
+#include "engine/core/Error.h"
 #include "engine/simulation/Checkpoint.h"
-#include "tests/TestFolder.h"
+#include "tests/support/TestFolder.h"
 
 namespace modeflow {
 namespace {
@@ -99,9 +100,10 @@ TEST(CheckpointTest, AHugeFileIsRefusedByItsHeaderWithoutReadingIt) {
 TEST(CheckpointTest, FoldersAndDevicesAreRefusedByName) {
     const TestFolder folder;
     EXPECT_EQ(readError(folder.path()),
-              "checkpoint " + folder.path().string() + " is a folder, not a file");
-    EXPECT_NE(readError("/dev/zero").find("is not a regular file"), std::string::npos)
-        << readError("/dev/zero");
+              folder.path().string() + ": is a directory, not a checkpoint");
+    EXPECT_EQ(readError("/dev/zero"), "/dev/zero: is a character device, not a checkpoint");
+    EXPECT_EQ(readError(folder / "missing.resume"),
+              (folder / "missing.resume").string() + ": no such checkpoint");
 }
 
 TEST(CheckpointTest, WellFormedNonsenseIsRefused) {
@@ -135,7 +137,8 @@ TEST(CheckpointTest, AFailedWriteSaysWhyAndLeavesNoPartialFile) {
     fs::create_directories(folder / "taken.resume" / "inside");
     const std::string renaming = writeError(folder / "taken.resume", sample());
     EXPECT_NE(renaming.find("cannot write checkpoint " + (folder / "taken.resume").string() +
-                            ": cannot rename"),
+                            ": cannot rename " +
+                            temporaryPathFor(folder / "taken.resume").string() + " over it"),
               std::string::npos)
         << renaming;
     EXPECT_EQ(renaming.find("Success"), std::string::npos) << renaming;

@@ -10,10 +10,10 @@
 #include <Eigen/Core>
 
 #include "engine/dynamics/DenseCoefficients.h"
-#include "engine/dynamics/PackedLayout.h"
+#include "engine/core/PackedLayout.h"
 #include "engine/dynamics/SparseCoefficients.h"
-#include "engine/format/Error.h"
-#include "tests/engine/RandomCoefficients.h"
+#include "engine/core/Error.h"
+#include "tests/support/RandomCoefficients.h"
 
 namespace modeflow {
 namespace {

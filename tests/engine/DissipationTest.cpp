@@ -14,8 +14,8 @@
 #include "engine/dynamics/FluidSystem.h"
 #include "engine/dynamics/ModalIntegrator.h"
 #include "precompute/scene/SceneLoader.h"
-#include "engine/format/Error.h"
-#include "tests/engine/RandomCoefficients.h"
+#include "engine/core/Error.h"
+#include "tests/support/RandomCoefficients.h"
 
 namespace modeflow {
 namespace {

@@ -1,5 +1,5 @@
 /// @file ForceProjectionTest.cpp
-/// The CPU reference of the force field and its projection (engine/field/ForceField.h,
+/// The CPU reference of the force field and its projection (engine/reference/ForceField.h,
 /// ForceProjection.h): the weights against the cache's Hodge stars, the orthonormality round
 /// trip, buoyancy of a uniform temperature (a gradient: no div-free part), splat signs, and the
 /// dual-cell mean on finer smoke grids.
@@ -10,14 +10,16 @@
 
 #include <gtest/gtest.h>
 
-#include "engine/field/FaceLocation.h"
-#include "engine/field/ForceField.h"
-#include "engine/field/ForceProjection.h"
-#include "engine/field/VelocityReconstruction.h"
-#include "engine/format/Error.h"
+#include "engine/core/FaceLocation.h"
+#include "engine/reference/ForceField.h"
+#include "engine/reference/ForceProjection.h"
+#include "engine/reference/VelocityReconstruction.h"
+#include "engine/core/Error.h"
 #include "precompute/dec/CubicalComplex.h"
 #include "precompute/dec/CutCellDec.h"
-#include "tests/engine/TestBases.h"
+#include "tests/support/RandomCoefficients.h"
+#include "tests/support/RealBases.h"
+#include "tests/support/SyntheticBases.h"
 
 namespace modeflow {
 namespace {
@@ -53,7 +55,7 @@ TEST(ForceProjection, DensityWeightIsTheDualEdgeLengthThatTheStarsImply) {
         const MacGrid grid = MacGrid::fromSpec(cache->grid);
         const Eigen::VectorXd w = projectionWeights(*cache, FaceQuantity::Density);
         // F = g |f ∩ Ω| with |f ∩ Ω| = |dual edge| / ⋆ (what the precompute's stars encode).
-        const Eigen::VectorXd g = testing::normalVector(Eigen::Index(cache->faces.size()), 5);
+        const Eigen::VectorXd g = testing::randomVector(Eigen::Index(cache->faces.size()), 5);
         Eigen::VectorXd starFlux(g.size());
         int whole = 0;
         for (std::size_t d = 0; d < cache->faces.size(); ++d) {
@@ -71,7 +73,7 @@ TEST(ForceProjection, DensityWeightIsTheDualEdgeLengthThatTheStarsImply) {
         }
         EXPECT_GT(whole, 0);
         const Eigen::VectorXd reference = cache->velocity.modes.transpose() * starFlux;
-        const Eigen::VectorXd f = projectForce(*cache, g, FaceQuantity::Density);
+        const Eigen::VectorXd f = reference::projectForce(*cache, g, FaceQuantity::Density);
         EXPECT_LE((f - reference).lpNorm<Eigen::Infinity>(), 1e-13 * reference.lpNorm<Eigen::Infinity>());
     }
 }
@@ -79,9 +81,9 @@ TEST(ForceProjection, DensityWeightIsTheDualEdgeLengthThatTheStarsImply) {
 TEST(ForceProjection, ProjectingAReconstructedFieldGivesTheStateBack) {
     const BasisCache synthetic = testing::syntheticBasis(testing::boxGrid(3, 5), 12, 2);
     for (const BasisCache* cache : {&testing::disk2d(), &testing::ball3d(), &synthetic}) {
-        const Eigen::VectorXd v = testing::normalVector(cache->velocity.modes.cols(), 9);
-        const std::vector<double> field = reconstructFaceField(*cache, v);
-        const Eigen::VectorXd back = projectFaceField(*cache, field);
+        const Eigen::VectorXd v = testing::randomVector(cache->velocity.modes.cols(), 9);
+        const std::vector<double> field = reference::reconstructFaceField(*cache, v);
+        const Eigen::VectorXd back = reference::projectFaceField(*cache, field);
         EXPECT_LE((back - v).lpNorm<Eigen::Infinity>(), 1e-12 * v.lpNorm<Eigen::Infinity>());
         // The same as a density: g = u A ⋆ / h (the flux spread over the cut face).
         const MacGrid grid = MacGrid::fromSpec(cache->grid);
@@ -91,7 +93,7 @@ TEST(ForceProjection, ProjectingAReconstructedFieldGivesTheStateBack) {
             g[Eigen::Index(d)] = field[std::size_t(cache->faces[d])] * grid.faceArea(axis) *
                                  cache->faceStar[Eigen::Index(d)] / grid.spacing[axis];
         }
-        const Eigen::VectorXd viaDensity = projectForce(*cache, g, FaceQuantity::Density);
+        const Eigen::VectorXd viaDensity = reference::projectForce(*cache, g, FaceQuantity::Density);
         EXPECT_LE((viaDensity - v).lpNorm<Eigen::Infinity>(), 1e-12 * v.lpNorm<Eigen::Infinity>());
     }
 }
@@ -99,7 +101,7 @@ TEST(ForceProjection, ProjectingAReconstructedFieldGivesTheStateBack) {
 /// |f|∞ over the largest Σ_d |Ψ_k[d] w_d g_d|: how much of the force survives the projection.
 double survivingFraction(const BasisCache& cache, const Eigen::VectorXd& g) {
     const Eigen::VectorXd w = projectionWeights(cache, FaceQuantity::Density);
-    const Eigen::VectorXd f = projectForce(cache, g, FaceQuantity::Density);
+    const Eigen::VectorXd f = reference::projectForce(cache, g, FaceQuantity::Density);
     const Eigen::VectorXd scale = cache.velocity.modes.cwiseAbs().transpose() * w.cwiseProduct(g).cwiseAbs();
     return f.lpNorm<Eigen::Infinity>() / scale.maxCoeff();
 }
@@ -115,7 +117,7 @@ TEST(ForceProjection, UniformBuoyancyIsAGradientAndProjectsToZero) {
             const std::vector<std::uint8_t> centreMask = smokeMask(*cache, scale, true);
             const std::vector<double> inCells = onesInside(cellMask), inCentres = onesInside(centreMask);
             auto surviving = [&](std::span<const double> t, std::span<const std::uint8_t> mask) {
-                return survivingFraction(*cache, forceDensity(*cache, {2.0, scale, t, mask}, {}));
+                return survivingFraction(*cache, reference::forceDensity(*cache, {2.0, scale, t, mask}, {}));
             };
             const double uniform = surviving(everywhere, {});
             const double byCells = surviving(inCells, cellMask);
@@ -147,7 +149,7 @@ TEST(ForceProjection, DualCellMeanCoversHalfACellEachSideWithHalfEndCellsForOddS
                                          std::tuple{1, 0, 0.0}, std::tuple{1, 5, 0.0}, std::tuple{3, 2, 0.0}}) {
         std::vector<double> temperature(std::size_t(smoke.cellCount()), 0.0);
         temperature[std::size_t(smoke.cellIndex(x, y, 0))] = 1.0;
-        EXPECT_DOUBLE_EQ(dualCellTemperature(basis, scale, face, temperature, {}), expected) << x << ", " << y;
+        EXPECT_DOUBLE_EQ(reference::dualCellTemperature(basis, scale, face, temperature, {}), expected) << x << ", " << y;
     }
     // A linear temperature averages to its value at the face centre, for any scale, 2D and 3D.
     for (const int dim : {2, 3})
@@ -164,7 +166,7 @@ TEST(ForceProjection, DualCellMeanCoversHalfACellEachSideWithHalfEndCellsForOddS
             for (std::int64_t f = b.faceOffset(up); f < b.faceOffset(up) + b.faceCount(up); ++f) {
                 const FaceLocation location = locateFace(b, f);
                 if (location.pos[up] == 0 || location.pos[up] == b.cells[up]) continue;
-                EXPECT_NEAR(dualCellTemperature(b, s, location, temperature, {}), linear(faceCentre(b, location)), 1e-13)
+                EXPECT_NEAR(reference::dualCellTemperature(b, s, location, temperature, {}), linear(faceCentre(b, location)), 1e-13)
                     << dim << "D, scale " << s << ", face " << f;
             }
         }
@@ -181,7 +183,7 @@ TEST(ForceProjection, SplatsPushAlongTheirForce) {
                 splat.force[axis] = 3.0 * sign;
                 splat.radius = 0.35;
                 const std::vector<ForceSplat> splats{splat};
-                const Eigen::VectorXd g = forceDensity(*cache, {}, splats);
+                const Eigen::VectorXd g = reference::forceDensity(*cache, {}, splats);
                 // The density itself: force · n times the Gaussian at the face centre.
                 for (std::size_t d = 0; d < cache->faces.size(); ++d) {
                     const FaceLocation face = locateFace(grid, cache->faces[d]);
@@ -192,7 +194,7 @@ TEST(ForceProjection, SplatsPushAlongTheirForce) {
                                 1e-14);
                 }
                 // The velocity the modal force makes (v = f): net flow along the force near the centre.
-                const std::vector<double> u = reconstructFaceField(*cache, projectForce(*cache, g, FaceQuantity::Density));
+                const std::vector<double> u = reference::reconstructFaceField(*cache, reference::projectForce(*cache, g, FaceQuantity::Density));
                 double momentum = 0.0;
                 for (std::int64_t f = grid.faceOffset(axis); f < grid.faceOffset(axis) + grid.faceCount(axis); ++f) {
                     const Vec3 x = faceCentre(grid, locateFace(grid, f));
@@ -208,15 +210,15 @@ TEST(ForceProjection, SplatsPushAlongTheirForce) {
 TEST(ForceProjection, BadInputsAreRefused) {
     const BasisCache& cache = testing::disk2d();
     const std::vector<double> wrong(7, 1.0);
-    EXPECT_THROW(forceDensity(cache, {1.0, 1, wrong, {}}, {}), Error);
+    EXPECT_THROW(reference::forceDensity(cache, {1.0, 1, wrong, {}}, {}), Error);
     const MacGrid smoke = MacGrid::fromSpec(cache.grid).refined(2);
     const std::vector<double> right(std::size_t(smoke.cellCount()), 1.0);
-    EXPECT_THROW(forceDensity(cache, {1.0, 2, right, std::vector<std::uint8_t>(3, 1)}, {}), Error);
-    EXPECT_THROW(forceDensity(cache, {1.0, 0, right, {}}, {}), Error);
+    EXPECT_THROW(reference::forceDensity(cache, {1.0, 2, right, std::vector<std::uint8_t>(3, 1)}, {}), Error);
+    EXPECT_THROW(reference::forceDensity(cache, {1.0, 0, right, {}}, {}), Error);
     const std::vector<ForceSplat> flat{ForceSplat{{0.0, 0.0, 0.0}, {1.0, 0.0, 0.0}, 0.0}};
-    EXPECT_THROW(forceDensity(cache, {}, flat), Error);
-    EXPECT_THROW(projectForce(cache, Eigen::VectorXd::Zero(3), FaceQuantity::Density), Error);
-    EXPECT_THROW(projectFaceField(cache, wrong), Error);
+    EXPECT_THROW(reference::forceDensity(cache, {}, flat), Error);
+    EXPECT_THROW(reference::projectForce(cache, Eigen::VectorXd::Zero(3), FaceQuantity::Density), Error);
+    EXPECT_THROW(reference::projectFaceField(cache, wrong), Error);
 }
 
 }  // namespace

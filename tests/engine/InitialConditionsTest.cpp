@@ -3,11 +3,14 @@
 
 #include <gtest/gtest.h>
 
+#include <string>
+#include <utility>
+
 #include <Eigen/Core>
 
 #include "engine/dynamics/Diagnostics.h"
 #include "engine/dynamics/InitialConditions.h"
-#include "engine/format/Error.h"
+#include "engine/core/Error.h"
 
 namespace modeflow {
 namespace {
@@ -50,6 +53,43 @@ TEST(ModalAmplitudes, SetsTheGivenModes) {
     EXPECT_EQ(v, expected);
     EXPECT_THROW(modalAmplitudes(6, {{6, 1.0}}), Error);
     EXPECT_THROW(modalAmplitudes(6, {{2, 1.0}, {2, 3.0}}), Error);
+}
+
+/// The message of the Error `build` throws, or "" when it throws none.
+template <typename Build>
+std::string refusal(Build build) {
+    try {
+        build();
+    } catch (const Error& e) {
+        return e.what();
+    }
+    return "";
+}
+
+TEST(InitialStates, StatesTooLargeForAStepAreRefused) {
+    // ½|v|² = 1e300 is finite, its square (every step takes norms of C·v·v) is not; 1e308
+    // makes the state itself infinite.
+    for (const auto& [huge, why] :
+         {std::pair{1e300, "too large"}, std::pair{1e308, "not finite"}}) {
+        const std::string message = refusal([&] { randomVelocity(8, {0, -1, huge, 1}); });
+        EXPECT_EQ(message.rfind("random velocity: ", 0), 0u) << huge << ": " << message;
+        EXPECT_NE(message.find(why), std::string::npos) << huge << ": " << message;
+    }
+    const std::string amplitudes = refusal([] { modalAmplitudes(4, {{1, 1e200}}); });
+    EXPECT_EQ(amplitudes.rfind("modal amplitudes: ", 0), 0u) << amplitudes;
+    EXPECT_NE(amplitudes.find("|v| = 1e+200"), std::string::npos) << amplitudes;
+    // Large but squarable states stay.
+    EXPECT_NEAR(energy(randomVelocity(8, {0, -1, 1e100, 1})) / 1e100, 1.0, 1e-12);
+    EXPECT_EQ(modalAmplitudes(4, {{1, 1e70}})[1], 1e70);
+}
+
+TEST(InitialStates, NonFiniteStatesAreRefusedNamingTheMode) {
+    Eigen::VectorXd v = Eigen::VectorXd::Ones(5);
+    v[3] = NAN;
+    const std::string message = refusal([&] { requireRepresentableState(v, "test"); });
+    EXPECT_NE(message.find("test: the modal state is not finite (mode 4 is nan)"),
+              std::string::npos)
+        << message;
 }
 
 }  // namespace

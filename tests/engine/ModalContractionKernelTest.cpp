@@ -12,13 +12,13 @@
 #include <gtest/gtest.h>
 
 #include "engine/dynamics/SparseCoefficients.h"
-#include "engine/kernels/DeviceCoefficients.h"
-#include "engine/kernels/ModalKernels.h"
+#include "engine/device/DeviceCoefficients.h"
+#include "engine/device/ModalKernels.h"
 #include "engine/vulkan/CommandSequence.h"
 #include "engine/vulkan/DeviceBuffer.h"
 #include "shaders/ModalStepParams.h"
-#include "tests/engine/RandomCoefficients.h"
-#include "tests/engine/VulkanTestContext.h"
+#include "tests/support/RandomCoefficients.h"
+#include "tests/support/VulkanTestContext.h"
 
 namespace modeflow {
 namespace {
@@ -28,12 +28,12 @@ using testing::roundedToFloat;
 
 using vulkan::CommandSequence;
 using vulkan::DeviceBuffer;
-using vulkan::DeviceCoefficients;
-using vulkan::ModalKernels;
+using device::DeviceCoefficients;
+using device::ModalKernels;
 
 /// The vector in float32, zero-padded as the kernels read it.
 std::vector<float> toFloat(const Eigen::VectorXd& v) {
-    std::vector<float> values(vulkan::paddedSize(int(v.size())), 0.0f);
+    std::vector<float> values(device::paddedSize(int(v.size())), 0.0f);
     std::copy(v.begin(), v.end(), values.begin());
     return values;
 }

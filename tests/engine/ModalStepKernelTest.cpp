@@ -12,12 +12,12 @@
 #include "engine/dynamics/Diagnostics.h"
 #include "engine/dynamics/ModalIntegrator.h"
 #include "engine/dynamics/SparseCoefficients.h"
-#include "engine/format/Error.h"
-#include "engine/kernels/ModalStepper.h"
+#include "engine/core/Error.h"
+#include "engine/device/ModalStepper.h"
 #include "engine/vulkan/CommandSequence.h"
 #include "precompute/scene/SceneLoader.h"
-#include "tests/engine/RandomCoefficients.h"
-#include "tests/engine/VulkanTestContext.h"
+#include "tests/support/RandomCoefficients.h"
+#include "tests/support/VulkanTestContext.h"
 
 namespace modeflow {
 namespace {
@@ -26,8 +26,8 @@ using testing::roundedDense;
 using testing::roundedToFloat;
 
 using vulkan::CommandSequence;
-using vulkan::DeviceStepSettings;
-using vulkan::ModalStepper;
+using device::DeviceStepSettings;
+using device::ModalStepper;
 
 constexpr int kModes = 40;
 
@@ -155,7 +155,7 @@ TEST_P(ModalStepKernelTest, StepsThatMissTheToleranceAreCounted) {
         ModalStepper stepper(context(), mC, {}, settings);
         stepper.setState(mV0);
         runDevice(context(), stepper, mH, 3);
-        const vulkan::DeviceStepStatus status = stepper.status();
+        const device::DeviceStepStatus status = stepper.status();
         EXPECT_FALSE(status.converged);
         EXPECT_EQ(status.iterations, 1);
         EXPECT_EQ(status.unconvergedSteps, 3);

@@ -1,5 +1,5 @@
 /// @file MovingObstacleTest.cpp
-/// Moving obstacles' CPU reference (engine/field/MovingObstacle): key-framed paths, shapes, and
+/// Moving obstacles' CPU reference (engine/reference/MovingObstacle): key-framed paths, shapes, and
 /// the seed's §6.3.5 correction, which must shrink the normal-velocity mismatch on covered faces.
 
 #include <cmath>
@@ -7,10 +7,10 @@
 #include <gtest/gtest.h>
 
 #include "engine/dynamics/InitialConditions.h"
-#include "engine/field/FaceLocation.h"
-#include "engine/field/MovingObstacle.h"
-#include "engine/field/VelocityReconstruction.h"
-#include "tests/engine/TestBases.h"
+#include "engine/core/FaceLocation.h"
+#include "engine/reference/ObstacleCorrection.h"
+#include "engine/reference/VelocityReconstruction.h"
+#include "tests/support/RealBases.h"
 
 namespace modeflow {
 namespace {
@@ -69,11 +69,11 @@ TEST(MovingObstacle, CorrectionShrinksTheMismatchOfAStillObstacle) {
     RandomVelocitySpec random;
     const Eigen::VectorXd v = randomVelocity(int(cache.velocity.modes.cols()), random);
     const std::vector<MovingObstacle> obstacles{ball(0.35, {{0.0, {0.2, 0.1, 0.0}}})};
-    const std::vector<double> before = reconstructFaceField(cache, v);
-    const Eigen::VectorXd corrected = v - obstacleCorrection(cache, before, obstacles, 0.0);
-    const std::vector<double> after = reconstructFaceField(cache, corrected);
-    const double m0 = starNorm2(cache, obstacleMismatch(cache, before, obstacles, 0.0));
-    const double m1 = starNorm2(cache, obstacleMismatch(cache, after, obstacles, 0.0));
+    const std::vector<double> before = reference::reconstructFaceField(cache, v);
+    const Eigen::VectorXd corrected = v - reference::obstacleCorrection(cache, before, obstacles, 0.0);
+    const std::vector<double> after = reference::reconstructFaceField(cache, corrected);
+    const double m0 = starNorm2(cache, reference::obstacleMismatch(cache, before, obstacles, 0.0));
+    const double m1 = starNorm2(cache, reference::obstacleMismatch(cache, after, obstacles, 0.0));
     std::cout << "still ball: covered-face mismatch (⋆-norm²) " << m0 << " -> " << m1 << "\n";
     EXPECT_GT(m0, 0.0);
     EXPECT_LT(m1, 0.8 * m0);  // a least-squares step in a 20-mode basis: ‖m'‖² ≤ ‖m‖² − ‖Pm‖²
@@ -83,9 +83,9 @@ TEST(MovingObstacle, AMovingObstacleDragsStillFluidAlong) {
     const BasisCache& cache = testing::disk2d();
     const std::vector<MovingObstacle> obstacles{ball(0.3, {{0.0, {-0.3, 0.0, 0.0}}, {1.0, {0.3, 0.0, 0.0}}})};
     const std::vector<double> still(std::size_t(MacGrid::fromSpec(cache.grid).faceTotal()), 0.0);
-    const Eigen::VectorXd v = -obstacleCorrection(cache, still, obstacles, 0.5);
+    const Eigen::VectorXd v = -reference::obstacleCorrection(cache, still, obstacles, 0.5);
     ASSERT_GT(v.norm(), 0.0);
-    const std::vector<double> u = reconstructFaceField(cache, v);
+    const std::vector<double> u = reference::reconstructFaceField(cache, v);
     // The fluid at the obstacle's centre moves along +x, as the obstacle does (speed 0.6).
     const MacGrid grid = MacGrid::fromSpec(cache.grid);
     const double centreX = u[std::size_t(grid.faceIndex(0, 16, 16, 0))];

@@ -5,14 +5,15 @@
 #include <gtest/gtest.h>
 
 #include "engine/dynamics/InitialConditions.h"
-#include "engine/field/VelocityReconstruction.h"
-#include "engine/kernels/DeviceCoefficients.h"
-#include "engine/kernels/ModeBuffer.h"
-#include "engine/kernels/ObstacleCorrection.h"
-#include "engine/kernels/VelocityReconstruction.h"
+#include "engine/reference/ObstacleCorrection.h"
+#include "engine/reference/VelocityReconstruction.h"
+#include "engine/device/DeviceCoefficients.h"
+#include "engine/device/ModeBuffer.h"
+#include "engine/device/ObstacleCorrection.h"
+#include "engine/device/VelocityReconstruction.h"
 #include "engine/vulkan/CommandSequence.h"
-#include "tests/engine/TestBases.h"
-#include "tests/engine/VulkanTestContext.h"
+#include "tests/support/RealBases.h"
+#include "tests/support/VulkanTestContext.h"
 
 namespace modeflow {
 namespace {
@@ -32,12 +33,12 @@ TEST_P(ObstacleKernelTest, CorrectionEqualsTheCpuReference) {
         spec.axis = {0.1, 0.2, 0.0};
         spec.path = {{0.0, {-0.3, 0.1, 0.0}}, {1.0, {0.4, -0.2, 0.0}}};
         const std::vector<MovingObstacle> obstacles{MovingObstacle{spec}};
-        const Eigen::VectorXd expected = v - obstacleCorrection(cache, reconstructFaceField(cache, v), obstacles, 0.5);
+        const Eigen::VectorXd expected = v - reference::obstacleCorrection(cache, reference::reconstructFaceField(cache, v), obstacles, 0.5);
         {
-            const vulkan::ModeBuffer modes(context(), cache.velocity.modes);
-            const vulkan::ReconstructionKernel reconstruction(context(), cache);
-            vulkan::ObstacleCorrection correction(context(), cache);
-            std::vector<float> state(vulkan::paddedSize(n), 0.0f);
+            const device::ModeBuffer modes(context(), cache.velocity.modes);
+            const device::ReconstructionKernel reconstruction(context(), cache);
+            device::ObstacleCorrection correction(context(), cache);
+            std::vector<float> state(device::paddedSize(n), 0.0f);
             for (int k = 0; k < n; ++k) state[std::size_t(k)] = float(v[k]);
             vulkan::DeviceBuffer vBuffer = vulkan::DeviceBuffer::fromValues<float>(context(), state, "v");
             const vulkan::DeviceBuffer faces = reconstruction.makeFaceField();

@@ -1,6 +1,6 @@
 /// @file ReconstructionKernelTest.cpp
 /// shaders/reconstruct_velocity.comp (ReconstructionKernel, ModeBuffer) against the CPU
-/// reference engine/field/VelocityReconstruction: float32 and float16 modes, bases split over
+/// reference engine/reference/VelocityReconstruction: float32 and float16 modes, bases split over
 /// several buffers, workgroup sizes, real and synthetic bases in 2D and 3D.
 
 #include <cstdint>
@@ -10,24 +10,25 @@
 
 #include <gtest/gtest.h>
 
-#include "engine/field/VelocityReconstruction.h"
-#include "engine/kernels/HalfFloat.h"
-#include "engine/kernels/ModeBuffer.h"
-#include "engine/kernels/VelocityReconstruction.h"
+#include "engine/reference/VelocityReconstruction.h"
+#include "engine/device/HalfFloat.h"
+#include "engine/device/ModeBuffer.h"
+#include "engine/device/VelocityReconstruction.h"
 #include "engine/vulkan/CommandSequence.h"
 #include "engine/vulkan/DeviceBuffer.h"
-#include "tests/engine/KernelTestSupport.h"
-#include "tests/engine/TestBases.h"
-#include "tests/engine/VulkanTestContext.h"
+#include "tests/support/KernelTestSupport.h"
+#include "tests/support/RandomCoefficients.h"
+#include "tests/support/RealBases.h"
+#include "tests/support/SyntheticBases.h"
+#include "tests/support/VulkanTestContext.h"
 
 namespace modeflow {
 namespace {
 
 using vulkan::CommandSequence;
 using vulkan::DeviceBuffer;
-using vulkan::ModeBuffer;
-using vulkan::ModePrecision;
-using vulkan::ReconstructionKernel;
+using device::ModeBuffer;
+using device::ReconstructionKernel;
 
 struct Case {
     const char* name;
@@ -67,12 +68,12 @@ Eigen::VectorXd reconstructOnDevice(const vulkan::VulkanContext& context, const 
 /// The CPU reference on the modes as the device holds them and v rounded to float32.
 Eigen::VectorXd referenceOnRounded(const BasisCache& cache, const Eigen::VectorXd& v, ModePrecision precision) {
     const std::vector<double> field =
-        reconstructFaceField(testing::withDeviceModes(cache, precision), testing::roundedToFloat(v));
+        reference::reconstructFaceField(testing::withDeviceModes(cache, precision), testing::roundedToFloat(v));
     return Eigen::Map<const Eigen::VectorXd>(field.data(), Eigen::Index(field.size()));
 }
 
 Eigen::VectorXd exactReference(const BasisCache& cache, const Eigen::VectorXd& v) {
-    const std::vector<double> field = reconstructFaceField(cache, v);
+    const std::vector<double> field = reference::reconstructFaceField(cache, v);
     return Eigen::Map<const Eigen::VectorXd>(field.data(), Eigen::Index(field.size()));
 }
 
@@ -80,7 +81,7 @@ class ReconstructionKernelTest : public testing::VulkanTest {};
 
 TEST_P(ReconstructionKernelTest, Float32EqualsTheCpuReference) {
     for (const Case& c : cases()) {
-        const Eigen::VectorXd v = testing::normalVector(c.cache.velocity.modes.cols(), 7);
+        const Eigen::VectorXd v = testing::randomVector(c.cache.velocity.modes.cols(), 7);
         const Eigen::VectorXd device = reconstructOnDevice(context(), c.cache, v, ModePrecision::Float32);
         ASSERT_FALSE(device.hasNaN()) << c.name << ": a DOF face was never written";
         const Eigen::VectorXd reference = referenceOnRounded(c.cache, v, ModePrecision::Float32);
@@ -99,7 +100,7 @@ TEST_P(ReconstructionKernelTest, Float32EqualsTheCpuReference) {
 
 TEST_P(ReconstructionKernelTest, Float16StaysWithinItsMeasuredBound) {
     for (const Case& c : cases()) {
-        const Eigen::VectorXd v = testing::normalVector(c.cache.velocity.modes.cols(), 8);
+        const Eigen::VectorXd v = testing::randomVector(c.cache.velocity.modes.cols(), 8);
         const Eigen::VectorXd device = reconstructOnDevice(context(), c.cache, v, ModePrecision::Float16);
         ASSERT_FALSE(device.hasNaN()) << c.name;
         // The decoding and accumulation are float32-exact; the modes' rounding is the error.
@@ -115,7 +116,7 @@ TEST_P(ReconstructionKernelTest, Float16StaysWithinItsMeasuredBound) {
 TEST_P(ReconstructionKernelTest, SplitModeBuffersGiveTheSameField) {
     for (const Case& c : cases()) {
         for (const ModePrecision precision : {ModePrecision::Float32, ModePrecision::Float16}) {
-            const Eigen::VectorXd v = testing::normalVector(c.cache.velocity.modes.cols(), 9);
+            const Eigen::VectorXd v = testing::randomVector(c.cache.velocity.modes.cols(), 9);
             const Eigen::VectorXd whole = reconstructOnDevice(context(), c.cache, v, precision);
             // Room for a quarter of the modes per buffer (and for the face field).
             const ModeBuffer probe(context(), c.cache.velocity.modes, precision);
@@ -139,7 +140,7 @@ TEST_P(ReconstructionKernelTest, ChunksNotAlignedToFourModesGiveTheSameField) {
     // kernel reads (ModeBuffer rounds chunks down to multiples of 4 modes only where 4 fit).
     const Case& c = cases()[0];
     for (const ModePrecision precision : {ModePrecision::Float32, ModePrecision::Float16}) {
-        const Eigen::VectorXd v = testing::normalVector(c.cache.velocity.modes.cols(), 11);
+        const Eigen::VectorXd v = testing::randomVector(c.cache.velocity.modes.cols(), 11);
         const Eigen::VectorXd whole = reconstructOnDevice(context(), c.cache, v, precision);
         const ModeBuffer probe(context(), c.cache.velocity.modes, precision);
         const VkDeviceSize limit = VkDeviceSize(probe.modeStride()) * 4 * 3;
@@ -155,7 +156,7 @@ TEST_P(ReconstructionKernelTest, ChunksNotAlignedToFourModesGiveTheSameField) {
 
 TEST_P(ReconstructionKernelTest, AnyWorkgroupSizeGivesTheSameField) {
     const Case& c = cases()[1];
-    const Eigen::VectorXd v = testing::normalVector(c.cache.velocity.modes.cols(), 10);
+    const Eigen::VectorXd v = testing::randomVector(c.cache.velocity.modes.cols(), 10);
     const Eigen::VectorXd reference = referenceOnRounded(c.cache, v, ModePrecision::Float32);
     for (const std::uint32_t size : {1u, 48u, 100u, 256u}) {
         const Eigen::VectorXd device = reconstructOnDevice(context(), c.cache, v, ModePrecision::Float32, size);
@@ -201,8 +202,8 @@ TEST_P(ReconstructionKernelTest, MismatchedBuffersAreRefused) {
 INSTANTIATE_TEST_SUITE_P(Vulkan, ReconstructionKernelTest, ::testing::Bool(), testing::validationName);
 
 TEST(HalfFloat, RoundsToNearestEvenIncludingSubnormals) {
-    using vulkan::floatToHalf;
-    using vulkan::halfToFloat;
+    using device::floatToHalf;
+    using device::halfToFloat;
     EXPECT_EQ(floatToHalf(1.0f), 0x3c00);
     EXPECT_EQ(floatToHalf(-2.0f), 0xc000);
     EXPECT_EQ(floatToHalf(65504.0f), 0x7bff);

@@ -1,5 +1,5 @@
 /// @file ReconstructionTest.cpp
-/// The CPU reference of the velocity reconstruction (engine/field/VelocityReconstruction.h):
+/// The CPU reference of the velocity reconstruction (engine/reference/VelocityReconstruction.h):
 /// face fields of real and synthetic bases, their divergence, cell-centre velocities.
 
 #include <cmath>
@@ -8,10 +8,12 @@
 
 #include <gtest/gtest.h>
 
-#include "engine/field/FaceLocation.h"
-#include "engine/field/VelocityReconstruction.h"
-#include "engine/format/Error.h"
-#include "tests/engine/TestBases.h"
+#include "engine/core/FaceLocation.h"
+#include "engine/reference/VelocityReconstruction.h"
+#include "engine/core/Error.h"
+#include "tests/support/RandomCoefficients.h"
+#include "tests/support/RealBases.h"
+#include "tests/support/SyntheticBases.h"
 
 namespace modeflow {
 namespace {
@@ -28,19 +30,19 @@ double relativeDivergence(const BasisCache& cache, const std::vector<double>& fi
     double largestFlux = 0.0;
     for (std::int64_t f = 0; f < grid.faceTotal(); ++f)
         largestFlux = std::max(largestFlux, std::abs(field[std::size_t(f)]) * grid.faceArea(locateFace(grid, f).axis));
-    return maxAbs(faceFieldDivergence(grid, field)) / largestFlux;
+    return maxAbs(reference::faceFieldDivergence(grid, field)) / largestFlux;
 }
 
 TEST(Reconstruction, RealBasesGiveDivergenceFreeFaceFieldsOnTheWholeGrid) {
     for (const BasisCache* cache : {&testing::disk2d(), &testing::ball3d()}) {
-        const Eigen::VectorXd v = testing::normalVector(cache->velocity.modes.cols(), 3);
-        const std::vector<double> field = reconstructFaceField(*cache, v);
+        const Eigen::VectorXd v = testing::randomVector(cache->velocity.modes.cols(), 3);
+        const std::vector<double> field = reference::reconstructFaceField(*cache, v);
         const double divergence = relativeDivergence(*cache, field);
         std::cout << cache->grid.dim << "D real basis: max |div| / max |flux| = " << divergence << "\n";
         EXPECT_LE(divergence, 1e-12);
         // Each mode alone, too.
         for (Eigen::Index i = 0; i < cache->velocity.modes.cols(); ++i)
-            EXPECT_LE(relativeDivergence(*cache, reconstructFaceField(*cache, Eigen::VectorXd::Unit(v.size(), i))),
+            EXPECT_LE(relativeDivergence(*cache, reference::reconstructFaceField(*cache, Eigen::VectorXd::Unit(v.size(), i))),
                       1e-11)
                 << "mode " << i;
     }
@@ -50,9 +52,9 @@ TEST(Reconstruction, ScattersFluxOverWholeFaceAreaAndLeavesOtherFacesZero) {
     for (const int dim : {2, 3}) {
         const BasisCache cache = testing::syntheticBasis(testing::boxGrid(dim, dim == 2 ? 9 : 5), 6, 11);
         const MacGrid grid = MacGrid::fromSpec(cache.grid);
-        const Eigen::VectorXd v = testing::normalVector(6, 4);
+        const Eigen::VectorXd v = testing::randomVector(6, 4);
         const Eigen::VectorXd fluxes = cache.velocity.modes * v;
-        const std::vector<double> field = reconstructFaceField(cache, v);
+        const std::vector<double> field = reference::reconstructFaceField(cache, v);
         ASSERT_EQ(field.size(), std::size_t(grid.faceTotal()));
         std::vector<bool> isDof(field.size(), false);
         for (std::size_t d = 0; d < cache.faces.size(); ++d) {
@@ -88,7 +90,7 @@ TEST(Reconstruction, CellCentreVelocityAveragesTheTwoFacesPerAxis) {
         const FaceLocation face = locateFace(grid, f);
         field[std::size_t(f)] = linear(face.axis, faceCentre(grid, face));
     }
-    const std::vector<Vec3> cells = cellCentreVelocity(grid, field);
+    const std::vector<Vec3> cells = reference::cellCentreVelocity(grid, field);
     for (int z = 0; z < grid.cells[2]; ++z)
         for (int y = 0; y < grid.cells[1]; ++y)
             for (int x = 0; x < grid.cells[0]; ++x) {
@@ -98,17 +100,17 @@ TEST(Reconstruction, CellCentreVelocityAveragesTheTwoFacesPerAxis) {
             }
     // 2D: the third component is 0.
     const MacGrid flat = MacGrid::fromSpec(testing::boxGrid(2, 5));
-    const std::vector<Vec3> flatCells = cellCentreVelocity(flat, std::vector<double>(std::size_t(flat.faceTotal()), 2.0));
+    const std::vector<Vec3> flatCells = reference::cellCentreVelocity(flat, std::vector<double>(std::size_t(flat.faceTotal()), 2.0));
     for (const Vec3& u : flatCells) EXPECT_EQ(u, (Vec3{2.0, 2.0, 0.0}));
 }
 
 TEST(Reconstruction, WrongSizesAreRefused) {
     const BasisCache cache = testing::syntheticBasis(testing::boxGrid(2, 6), 4, 1);
-    EXPECT_THROW(reconstructFaceField(cache, Eigen::VectorXd::Zero(5)), Error);
-    EXPECT_THROW(fluxesToFaceField(cache, Eigen::VectorXd::Zero(3)), Error);
+    EXPECT_THROW(reference::reconstructFaceField(cache, Eigen::VectorXd::Zero(5)), Error);
+    EXPECT_THROW(reference::fluxesToFaceField(cache, Eigen::VectorXd::Zero(3)), Error);
     const MacGrid grid = MacGrid::fromSpec(cache.grid);
-    EXPECT_THROW(cellCentreVelocity(grid, std::vector<double>(7)), Error);
-    EXPECT_THROW(faceFieldDivergence(grid, std::vector<double>(7)), Error);
+    EXPECT_THROW(reference::cellCentreVelocity(grid, std::vector<double>(7)), Error);
+    EXPECT_THROW(reference::faceFieldDivergence(grid, std::vector<double>(7)), Error);
 }
 
 }  // namespace

@@ -2,9 +2,9 @@
 
 #include <gtest/gtest.h>
 
-#include "engine/format/Error.h"
+#include "engine/core/Error.h"
 #include "engine/stir/ShapedBases.h"
-#include "tests/engine/RandomCoefficients.h"
+#include "tests/support/RandomCoefficients.h"
 
 namespace modeflow::stir {
 namespace {

@@ -1,5 +1,5 @@
 /// @file SmokeAdvectionTest.cpp
-/// The CPU reference of smoke advection (engine/field/SmokeAdvection, MacSampling,
+/// The CPU reference of smoke advection (engine/reference/SmokeAdvection, MacSampling,
 /// SmokeEmitter): exact sampling of linear fields, translation and rotation of blobs, smoke kept
 /// inside Ω, MacCormack's sharper and bounded result, exact emitter mass, and the mass drift of
 /// each scheme in a closed domain (printed).
@@ -14,10 +14,10 @@
 
 #include <gtest/gtest.h>
 
-#include "engine/field/MacSampling.h"
-#include "engine/field/SmokeAdvection.h"
-#include "engine/format/Error.h"
-#include "tests/engine/SmokeTestFields.h"
+#include "engine/core/MacSampling.h"
+#include "engine/reference/SmokeAdvection.h"
+#include "engine/core/Error.h"
+#include "tests/support/SmokeTestFields.h"
 
 namespace modeflow {
 namespace {
@@ -31,7 +31,7 @@ using testing::smokeTestGrid;
 using testing::wholeMask;
 
 /// Runs `steps` steps of one field with no emitters.
-std::vector<double> advectSteps(const SmokeAdvection& advection, const std::vector<double>& velocity,
+std::vector<double> advectSteps(const reference::SmokeAdvection& advection, const std::vector<double>& velocity,
                                 std::vector<double> field, double dt, int steps, AdvectionScheme scheme) {
     for (int s = 0; s < steps; ++s) field = advection.advect(velocity, field, dt, scheme);
     return field;
@@ -100,10 +100,46 @@ TEST(MacSampling, StaggeredSamplingIsExactForLinearVelocityAndWallsCarryNoFlux) 
     }
 }
 
+TEST(MacSampling, NonFinitePointsSampleAsZero) {
+    // A diverged run hands NaN and infinite positions to the samplers: never an index from them.
+    for (const int dim : {2, 3}) {
+        const MacGrid grid = smokeTestGrid(dim, 6);
+        const std::vector<double> cells(std::size_t(grid.cellCount()), 1.0);
+        const std::vector<double> faces = testing::constantVelocity(grid, {1.0, 2.0, 3.0});
+        for (const double bad : {NAN, INFINITY, -INFINITY}) {
+            for (int a = 0; a < dim; ++a) {
+                Vec3 p{0.1, 0.2, 0.0};
+                p[a] = bad;
+                EXPECT_EQ(cellStencil(grid, p).count, 0) << dim << "D, axis " << a << " = " << bad;
+                EXPECT_EQ(sampleCells(grid, cells, p), 0.0)
+                    << dim << "D, axis " << a << " = " << bad;
+                const Vec3 u = sampleVelocity(grid, std::span<const double>(faces), p);
+                EXPECT_EQ(u[0] * u[0] + u[1] * u[1] + u[2] * u[2], 0.0) << dim << "D, axis " << a;
+            }
+        }
+    }
+}
+
+TEST(SmokeAdvection, ANonFiniteVelocityLeavesTheSmokeWhereItIs) {
+    for (const int dim : {2, 3}) {
+        const MacGrid grid = smokeTestGrid(dim, 8);
+        const reference::SmokeAdvection advection(grid, 2, wholeMask(grid.refined(2)));
+        const std::vector<double> blob = gaussianBlob(grid.refined(2), {0.1, 0.0, 0.0}, 0.3);
+        for (const double bad : {NAN, INFINITY}) {
+            const std::vector<double> velocity(std::size_t(grid.faceTotal()), bad);
+            for (const AdvectionScheme scheme : kAdvectionSchemes) {
+                const std::vector<double> moved = advection.advect(velocity, blob, 0.1, scheme);
+                EXPECT_EQ(moved, blob)
+                    << dim << "D, " << schemeName(scheme) << ", velocity " << bad;
+            }
+        }
+    }
+}
+
 TEST(SmokeAdvection, WrongSizesAreRefusedWithTheirNames) {
     const MacGrid basis = smokeTestGrid(2, 8);
-    EXPECT_THROW(SmokeAdvection(basis, 2, std::vector<std::uint8_t>(64, 1)), Error);  // needs 16² = 256
-    const SmokeAdvection advection(basis, 2, wholeMask(basis.refined(2)));
+    EXPECT_THROW(reference::SmokeAdvection(basis, 2, std::vector<std::uint8_t>(64, 1)), Error);  // needs 16² = 256
+    const reference::SmokeAdvection advection(basis, 2, wholeMask(basis.refined(2)));
     std::vector<double> field(256, 0.0);
     try {
         advection.advect(std::vector<double>(10, 0.0), field, 0.1, AdvectionScheme::SemiLagrangian);
@@ -123,7 +159,7 @@ TEST(SmokeAdvection, ConstantVelocityTranslatesABlobByUTimesT) {
     };
     for (const Case c : {Case{2, 32, 2, 0.15}, Case{3, 16, 2, 0.15}}) {
         const MacGrid basis = smokeTestGrid(c.dim, c.cells);
-        const SmokeAdvection advection(basis, c.scale, wholeMask(basis.refined(c.scale)));
+        const reference::SmokeAdvection advection(basis, c.scale, wholeMask(basis.refined(c.scale)));
         const MacGrid& smoke = advection.smokeGrid();
         const Vec3 u{0.5, 0.25, c.dim == 3 ? -0.3 : 0.0}, start{-0.25, -0.15, c.dim == 3 ? 0.15 : 0.0};
         const std::vector<double> velocity = testing::constantVelocity(basis, u);
@@ -146,7 +182,7 @@ TEST(SmokeAdvection, ConstantVelocityTranslatesABlobByUTimesT) {
 /// axis; smoke pushed against the wall of Ω never crosses it.
 TEST(SmokeAdvection, RotationKeepsTheCentroidRadius) {
     const MacGrid basis = smokeTestGrid(2, 32);
-    const SmokeAdvection advection(basis, 2, ballMask(basis.refined(2), 0.9));
+    const reference::SmokeAdvection advection(basis, 2, ballMask(basis.refined(2), 0.9));
     const double omega = std::numbers::pi / 2;
     const std::vector<double> velocity = testing::rotationVelocity(basis, omega, 1.0);
     const std::vector<double> blob = gaussianBlob(advection.smokeGrid(), {0.4, 0.0, 0.0}, 0.1);
@@ -164,7 +200,7 @@ TEST(SmokeAdvection, NothingLeaksOutOfTheFluidMask) {
     for (const int dim : {2, 3}) {
         const MacGrid basis = smokeTestGrid(dim, dim == 2 ? 32 : 12);
         const std::vector<std::uint8_t> mask = ballMask(basis.refined(2), 0.7);
-        const SmokeAdvection advection(basis, 2, mask);
+        const reference::SmokeAdvection advection(basis, 2, mask);
         // The rotation runs past the wall of Ω, and the blob touches it.
         const std::vector<double> velocity = testing::rotationVelocity(basis, 3.0, 1.0);
         SmokeFields fields{gaussianBlob(advection.smokeGrid(), {0.55, 0.0, 0.0}, 0.12), {}};
@@ -187,7 +223,7 @@ TEST(SmokeAdvection, NothingLeaksOutOfTheFluidMask) {
 
 TEST(SmokeAdvection, MacCormackKeepsThePeakBetterAndMakesNoNewExtrema) {
     const MacGrid basis = smokeTestGrid(2, 32);
-    const SmokeAdvection advection(basis, 2, ballMask(basis.refined(2), 0.9));
+    const reference::SmokeAdvection advection(basis, 2, ballMask(basis.refined(2), 0.9));
     const std::vector<double> velocity = testing::rotationVelocity(basis, std::numbers::pi / 2, 1.0);
     const MacGrid& smoke = advection.smokeGrid();
     // A smooth blob for the peak, a sharp-edged disk (values 0 and 1) for the bounds.
@@ -215,7 +251,7 @@ TEST(SmokeAdvection, EmittersAddExactlyRateTimesDtPerCellInside) {
     for (const int dim : {2, 3}) {
         const MacGrid basis = smokeTestGrid(dim, dim == 2 ? 16 : 8);
         const std::vector<std::uint8_t> mask = ballMask(basis.refined(2), 0.8);
-        const SmokeAdvection advection(basis, 2, mask);
+        const reference::SmokeAdvection advection(basis, 2, mask);
         const MacGrid& smoke = advection.smokeGrid();
         // The ball crosses the wall of Ω: its cells outside get nothing.
         const std::vector<SmokeEmitter> emitters{
@@ -276,7 +312,7 @@ TEST(SmokeAdvection, MassDriftPer100StepsInAClosedDomain) {
     };
     for (const Case c : {Case{2, 32, 2, 0.08, 0.01, 1.1}, Case{3, 16, 2, 0.25, 0.01, 0.9}}) {
         const MacGrid basis = smokeTestGrid(c.dim, c.cells);
-        const SmokeAdvection advection(basis, c.scale, ballMask(basis.refined(c.scale), 0.9));
+        const reference::SmokeAdvection advection(basis, c.scale, ballMask(basis.refined(c.scale), 0.9));
         const MacGrid& smoke = advection.smokeGrid();
         // max |u| = 1: 0.64 smoke cells a step.
         const std::vector<double> velocity = testing::unitSwirlVelocity(basis, 0.85, 11);

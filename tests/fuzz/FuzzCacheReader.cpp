@@ -3,11 +3,12 @@
 /// consistency checks see them (no fuzzer finds a 64-bit checksum by chance).
 
 #include <cstdint>
-#include <cstring>
 #include <fstream>
 #include <iterator>
 #include <string>
 
+#include "engine/core/BinaryCodec.h"
+#include "engine/core/Error.h"
 #include "engine/format/CacheFile.h"
 #include "tests/fuzz/FuzzSupport.h"
 #include "tests/fuzz/FuzzTargets.h"
@@ -15,30 +16,27 @@
 namespace modeflow::fuzz {
 namespace {
 
-template <typename T>
-void put(std::string& out, const T& value) {
-    out.append(reinterpret_cast<const char*>(&value), sizeof value);
-}
-
 /// The hash of the key a payload begins with (u64 length, bytes), as the header must hold it.
 std::uint64_t keyHash(std::string_view payload) {
-    std::uint64_t length = 0;
-    if (payload.size() < sizeof length) return 0;
-    std::memcpy(&length, payload.data(), sizeof length);
-    if (length > payload.size() - sizeof length) return 0;
-    return fnv1a64(payload.substr(sizeof length, std::size_t(length)));
+    try {
+        return fnv1a64(
+            ByteReader(payload, [](std::string_view why) { return std::string(why); }).string());
+    } catch (const Error&) {
+        return 0;  // no whole key: the reader refuses the payload before it compares hashes
+    }
 }
 
 /// A cache file around `payload` (layout in CacheFile.h).
 std::string cacheFileAround(std::string_view payload) {
-    std::string file("MODEFLOW-BASIS\0\0", 16);
-    put(file, kCacheFormatVersion);
-    put(file, std::uint32_t{0});
-    put(file, keyHash(payload));
-    put(file, std::uint64_t(payload.size()));
-    file.append(payload);
-    put(file, fnv1a64(payload));
-    return file;
+    ByteWriter file;
+    file.values("MODEFLOW-BASIS\0\0", 16);
+    file.pod(kCacheFormatVersion);
+    file.pod(std::uint32_t{0});
+    file.pod(keyHash(payload));
+    file.pod(std::uint64_t(payload.size()));
+    file.values(payload.data(), payload.size());
+    file.pod(fnv1a64(payload));
+    return file.bytes();
 }
 
 std::string bytesOf(const std::filesystem::path& path) {

@@ -6,7 +6,7 @@
 #include <cstring>
 #include <string>
 
-#include "engine/format/CacheFile.h"
+#include "engine/core/BinaryCodec.h"
 #include "engine/simulation/Checkpoint.h"
 #include "tests/fuzz/FuzzSupport.h"
 #include "tests/fuzz/FuzzTargets.h"
@@ -18,13 +18,12 @@ constexpr std::string_view kMagic("MODEFLOW-RESUME\0", 16);
 
 /// A checkpoint file around `body` (layout in Checkpoint.h).
 std::string checkpointAround(std::string_view body) {
-    std::string file(kMagic);
-    const std::uint32_t version = 2;
-    file.append(reinterpret_cast<const char*>(&version), sizeof version);
-    file.append(body);
-    const std::uint64_t checksum = fnv1a64(file);
-    file.append(reinterpret_cast<const char*>(&checksum), sizeof checksum);
-    return file;
+    ByteWriter file;
+    file.values(kMagic.data(), kMagic.size());
+    file.pod(std::uint32_t{2});  // the version
+    file.values(body.data(), body.size());
+    file.pod(fnv1a64(file.bytes()));
+    return file.bytes();
 }
 
 template <typename Values>

@@ -37,7 +37,8 @@ class FuzzRegression : public ::testing::TestWithParam<Target> {};
 TEST_P(FuzzRegression, EveryKeptInputIsAcceptedOrRefusedCleanly) {
     int replayed = 0;
     for (const char* folder : {"regressions", "corpus"}) {
-        const fs::path inputs = fs::path(MODEFLOW_FUZZ_DIR) / folder / GetParam().name;
+        const fs::path inputs =
+            fs::path(MODEFLOW_SOURCE_DIR) / "tests/fuzz" / folder / GetParam().name;
         if (!fs::is_directory(inputs)) continue;
         for (const auto& file : fs::directory_iterator(inputs)) {
             std::ifstream in(file.path(), std::ios::binary);

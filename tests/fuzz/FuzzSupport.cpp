@@ -5,8 +5,8 @@
 #include <cstdlib>
 #include <fstream>
 
-#include "engine/format/Error.h"
-#include "engine/format/QuotedText.h"
+#include "engine/core/Error.h"
+#include "engine/core/PrintableText.h"
 
 namespace modeflow::fuzz {
 namespace {
@@ -41,9 +41,10 @@ bool acceptedOrRefused(const std::function<void()>& read) {
         return true;
     } catch (const Error& e) {
         const std::string_view message = e.what();
-        require(!message.empty() && message.size() <= 4096 && printableText(message) == message,
+        require(!message.empty() && message.size() <= 4096 &&
+                    printableText(message, std::string_view::npos) == message,
                 "a refusal's message is empty, longer than 4 KiB or not printable text: " +
-                    printableText(message.substr(0, 200)));
+                    printableText(message, 200));
         return false;
     }
 }

@@ -14,10 +14,11 @@
 #include <thread>
 #include <vector>
 
-#include "engine/format/Error.h"
+#include "engine/core/Error.h"
 #include "precompute/geometry/ImplicitShape.h"
 #include "precompute/geometry/MeshGenerator.h"
 #include "precompute/geometry/MeshLevelSet.h"
+#include "tests/support/TestFolder.h"
 
 namespace modeflow {
 namespace {
@@ -26,24 +27,14 @@ namespace fs = std::filesystem;
 
 class MeshLevelSetTest : public ::testing::Test {
 protected:
-    void SetUp() override {
-        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-        mDir = fs::temp_directory_path() / ("modeflow_mesh_" + std::string(info->name()) + "_" +
-                                            std::to_string(std::random_device{}()));
-        fs::create_directories(mDir);
-    }
-    void TearDown() override {
-        std::error_code ec;
-        fs::remove_all(mDir, ec);
-    }
-
     fs::path write(const std::string& name, const std::string& text) const {
         const fs::path file = mDir / name;
         std::ofstream(file, std::ios::binary) << text;
         return file;
     }
 
-    fs::path mDir;
+    testing::TestFolder mFolder;
+    const fs::path mDir = mFolder.path();
 };
 
 /// The cube [-h, h]³ as six quads (outward normals); `skipTop` leaves the +z face out.
@@ -267,7 +258,7 @@ TEST_F(MeshLevelSetTest, MissingFileIsReported) {
 
 TEST_F(MeshLevelSetTest, DirectoryIsReported) {
     const std::string what = expectMeshError(mDir);
-    EXPECT_NE(what.find("not a regular file"), std::string::npos) << what;
+    EXPECT_NE(what.find("is a directory, not a regular file"), std::string::npos) << what;
 }
 
 TEST_F(MeshLevelSetTest, GarbageFileIsReported) {
@@ -288,6 +279,51 @@ TEST_F(MeshLevelSetTest, EmptyAndFacelessFilesAreReported) {
 
 TEST_F(MeshLevelSetTest, BadFaceIndexIsReported) {
     expectMeshError(write("badindex.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n"));
+}
+
+/// cubeObj(0.5) with its line `line` (1-based) replaced.
+std::string cubeWithLine(int line, const std::string& text) {
+    std::istringstream in(cubeObj(0.5));
+    std::string out, current;
+    for (int n = 1; std::getline(in, current); ++n) out += (n == line ? text : current) + "\n";
+    return out;
+}
+
+TEST_F(MeshLevelSetTest, UnreadableVertexCoordinatesAreRefusedWithTheirLine) {
+    // tinyobjloader reads each of these as 0: the mesh loses a corner without a word.
+    const std::pair<std::string, std::string> cases[] = {
+        {"v nan 0.5 0.5", "coordinate nan is not finite"},
+        {"v 0.5 abc 0.5", "coordinate \"abc\" is not a number"},
+        {"v 0.5 0.5 -inf", "coordinate -inf is not finite"},
+        {"v 1e39 0.5 0.5", "coordinate 1e39 is beyond the float range"},
+        {"v 0.5 0.5 0.5x", "coordinate \"0.5x\" is not a number"},
+        {"v 0.5 0.5", "has 2 coordinates, expected 3"},
+        {"v 0.5 \x01\x1b[2J 0.5", "coordinate \"\\x01\\x1b[2J\" is not a number"},
+    };
+    for (const auto& [line, problem] : cases) {
+        const std::string what = expectMeshError(write("bad.obj", cubeWithLine(7, line)));
+        EXPECT_NE(what.find(", line 7: vertex 7 " + problem), std::string::npos) << what;
+    }
+    // Vertex colours and a fourth (w) coordinate are not coordinates of the position.
+    EXPECT_NO_THROW(
+        loadMeshShape(write("colours.obj", cubeWithLine(7, "v 0.5 0.5 0.5 1 0 0")), 0.05));
+}
+
+TEST_F(MeshLevelSetTest, FacesReferringToMissingVerticesNameTheirLine) {
+    const std::pair<std::string, std::string> cases[] = {
+        {"f 5 6 8 9", "line 14: a face refers to vertex 9, but the file has 8 vertices"},
+        {"f 5 6 0 7", "line 14: a face refers to vertex 0 (vertices are numbered from 1)"},
+        {"f -9 6 8 7",
+         "line 14: a face refers to vertex -9 (relative), but only 8 vertices precede it"},
+        {"f 5 6 x/1 7", "line 14: a face refers to vertex \"x/1\", which is not a vertex number"},
+    };
+    for (const auto& [line, problem] : cases) {
+        const std::string what = expectMeshError(write("bad.obj", cubeWithLine(14, line)));
+        EXPECT_NE(what.find(problem), std::string::npos) << what;
+    }
+    // Texture and normal indices after the vertex's own are allowed; relative indices count back.
+    EXPECT_NO_THROW(
+        loadMeshShape(write("relative.obj", cubeWithLine(14, "f -4/1/1 -3//2 -1 -2")), 0.05));
 }
 
 TEST_F(MeshLevelSetTest, OpenMeshIsRejected) {
@@ -312,6 +348,30 @@ TEST_F(MeshLevelSetTest, SurfaceEnclosingNothingIsRejected) {
     const std::string text = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 1 3 2\n";
     const std::string what = expectMeshError(write("sheet.obj", text));
     EXPECT_NE(what.find("encloses no volume"), std::string::npos) << what;
+}
+
+TEST_F(MeshLevelSetTest, HugeMeshIsRefusedWithASaneVoxelCount) {
+    // 4e21 voxels across: the count was cast to an integer and read -9223372036854775808.
+    std::string what = expectMeshError(write("huge.obj", cubeObj(1e20)));
+    EXPECT_NE(what.find("spans 4e+21 voxels (of 0.05) along x, from -1e+20 to 1e+20"),
+              std::string::npos)
+        << what;
+    EXPECT_EQ(what.find("-9223372036854775808"), std::string::npos) << what;
+    // 10000 voxels across, within the extent limit, but its band would hold 3.6e9 voxels.
+    what = expectMeshError(write("big.obj", cubeObj(250)));
+    EXPECT_NE(what.find("would need about 3.6e+09 voxels (at most 4e+08)"), std::string::npos)
+        << what;
+}
+
+TEST_F(MeshLevelSetTest, FarReachingSliverIsRefusedBeforeConversion) {
+    // A closed sliver 1e9 long and thinner than a voxel: little area, so the band count passes,
+    // but the conversion ran for minutes and took 23 GB before it was refused.
+    const std::string text =
+        "v 0.5 0.5 0.5\nv 1e9 0.5 0.5\nv 0.5 0.500000001 0.5\nv 0.5 0.5 0.500000001\n"
+        "f 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n";
+    const std::string what = expectMeshError(write("sliver.obj", text), 0.0625);
+    EXPECT_NE(what.find("spans 1.6e+10 voxels (of 0.0625) along x"), std::string::npos) << what;
+    EXPECT_NE(what.find("at most 131072"), std::string::npos) << what;
 }
 
 TEST_F(MeshLevelSetTest, BadVoxelSizeIsReported) {

@@ -3,7 +3,9 @@
 /// mistake is refused with a message naming the file and the key.
 
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
+#include <charconv>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
@@ -12,6 +14,7 @@
 #include <vector>
 
 #include "precompute/scene/SceneLoader.h"
+#include "tests/support/TestFolder.h"
 
 namespace modeflow {
 namespace {
@@ -21,15 +24,6 @@ namespace fs = std::filesystem;
 /// A private temporary folder, removed with the fixture.
 class SceneLoaderTest : public ::testing::Test {
 protected:
-    void SetUp() override {
-        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-        mDir = fs::temp_directory_path() / (std::string("modeflow_scene_") + info->name() + "_" +
-                                            std::to_string(reinterpret_cast<std::uintptr_t>(this)));
-        fs::remove_all(mDir);
-        fs::create_directories(mDir);
-    }
-    void TearDown() override { fs::remove_all(mDir); }
-
     fs::path write(const std::string& name, const std::string& text) const {
         const fs::path path = mDir / name;
         fs::create_directories(path.parent_path());
@@ -37,7 +31,8 @@ protected:
         return path;
     }
 
-    fs::path mDir;
+    testing::TestFolder mFolder;
+    const fs::path mDir = mFolder.path();
 };
 
 constexpr const char* kGrid2d = R"(
@@ -63,6 +58,23 @@ velocity_modes = 10
 std::string errorOf(const std::string& text, const fs::path& origin = "scenes/bad.toml") {
     try {
         parseScene(text, origin);
+    } catch (const Error& e) {
+        return e.what();
+    }
+    return "";
+}
+
+/// The shortest text that reads back as `x`, for numbers put in scene text.
+std::string formatNumberForTest(double x) {
+    char buffer[64];
+    const auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, x);
+    return std::string(buffer, end);
+}
+
+/// The message of parseModeRanges' Error for `text`, or "".
+std::string parseModeRangesError(const std::string& text) {
+    try {
+        parseModeRanges(text, "--modes");
     } catch (const Error& e) {
         return e.what();
     }
@@ -468,6 +480,45 @@ TEST_F(SceneLoaderTest, InvertedBoundsAreRejected) {
     EXPECT_CONTAINS(message, "axis y");
 }
 
+/// A 2D [grid] of 8 x 8 cells with the given bounds, and a basis.
+std::string grid2d(const std::string& lo, const std::string& hi) {
+    return "[grid]\nresolution = [8, 8]\nbounds_min = [" + lo + "]\nbounds_max = [" + hi + "]\n" +
+           kBasis;
+}
+
+TEST_F(SceneLoaderTest, ExtremeBoundsAreRefusedAtLoad) {
+    // These passed the loader and failed deep inside the eigensolver ("penalty to nan").
+    std::string message = errorOf(grid2d("-1e300, 0", "1e300, 1"));
+    EXPECT_CONTAINS(message,
+                    "[grid].bounds_min/bounds_max: cells of 2.5e+299 along x are larger "
+                    "than 1e+06");
+    EXPECT_CONTAINS(message, "(line 4)");
+    message = errorOf(grid2d("0, 0", "1e-200, 1e-200"));
+    EXPECT_CONTAINS(message,
+                    "[grid].bounds_min/bounds_max: cells of 1.25e-201 along x are smaller "
+                    "than 1e-06");
+    message = errorOf(grid2d("-1e308, 0", "1e308, 1"));
+    EXPECT_CONTAINS(message,
+                    "[grid].bounds_min/bounds_max: bounds_max - bounds_min along x is "
+                    "not a finite number");
+    message = errorOf(grid2d("0, 0", "8000, 4"));
+    EXPECT_CONTAINS(message,
+                    "[grid].bounds_min/bounds_max: cells are 2000 times longer along x "
+                    "(1000) than along y (0.5); at most 1000");
+    message = errorOf(grid2d("1e15, 0", "1.000000000000064e15, 64"));
+    EXPECT_CONTAINS(message,
+                    "[grid].bounds_max: the grid lies 1.3e+14 cells (of 8) from the "
+                    "origin along x; at most 1e+12");
+
+    // The limits themselves are accepted, in 3D too.
+    EXPECT_EQ(errorOf(grid2d("0, 0", "8e-6, 8e-3")), "");
+    EXPECT_EQ(errorOf(grid2d("-4e6, 0", "4e6, 8e3")), "");
+    EXPECT_EQ(errorOf("[grid]\nresolution = [8, 8, 8]\nbounds_min = [0, 0, 0]\n"
+                      "bounds_max = [8e-6, 8e-3, 8e-4]\n" +
+                      std::string(kBasis)),
+              "");
+}
+
 TEST_F(SceneLoaderTest, BoundsMustMatchDimension) {
     const std::string message =
         errorOf("[grid]\nresolution = [8, 8]\nbounds_min = [0, 0, 0]\nbounds_max = [1, 1]\n" +
@@ -523,6 +574,22 @@ TEST_F(SceneLoaderTest, ShapeValuesAreValidated) {
     EXPECT_CONTAINS(message, "[[domain]] #1 (ball).op");
 }
 
+TEST_F(SceneLoaderTest, MeshPathThatIsNotAFileSaysWhatItIs) {
+    fs::create_directories(mDir / "folder.obj");
+    ASSERT_EQ(::mkfifo((mDir / "pipe.obj").c_str(), 0600), 0);
+    const auto meshScene = [](const std::string& file) {
+        return std::string(kGrid3d) + kBasis + "[[domain]]\nshape = \"mesh\"\nfile = \"" + file +
+               "\"\n";
+    };
+    std::string message = errorOf(meshScene("folder.obj"), mDir / "s.toml");
+    EXPECT_CONTAINS(message, "[[domain]] #1 (mesh).file: " + (mDir / "folder.obj").string() +
+                                 " is a directory, not an OBJ file");
+    message = errorOf(meshScene("pipe.obj"), mDir / "s.toml");
+    EXPECT_CONTAINS(message, "pipe.obj is a FIFO, not an OBJ file");
+    message = errorOf(meshScene("missing.obj"), mDir / "s.toml");
+    EXPECT_CONTAINS(message, "[[domain]] #1 (mesh).file: no such file: ");
+}
+
 TEST_F(SceneLoaderTest, BothVelocityModesAndModesIsAnError) {
     const std::string message =
         errorOf(std::string(kGrid2d) + "[basis]\nvelocity_modes = 10\nmodes = \"1-10\"\n");
@@ -570,6 +637,25 @@ TEST_F(SceneLoaderTest, RangeChecksOnScalars) {
                     "[output].steps_per_frame: is too large");
 }
 
+TEST_F(SceneLoaderTest, MoreSourcesOrObstaclesThanTheRuntimeTakesAreRefusedAtLoad) {
+    // They were refused only after the whole precompute, when the simulation was set up.
+    const std::string source = "[[source]]\nshape = \"ball\"\ncenter = [0, 0]\nradius = 0.1\n";
+    const std::string obstacle =
+        "[[obstacle]]\nshape = \"ball\"\nradius = 0.1\npath = [[0, 0, 0]]\n";
+    std::string eight = std::string(kGrid2d) + kBasis;
+    for (int i = 0; i < 8; ++i) eight += source + obstacle;
+    const SceneSpec scene = parseScene(eight, "s.toml");
+    EXPECT_EQ(scene.sources.size(), 8u);
+    EXPECT_EQ(scene.obstacles.size(), 8u);
+
+    std::string message = errorOf(eight + source);
+    EXPECT_CONTAINS(message, "[[source]]: 9 entries; at most 8 sources take part in a simulation");
+    EXPECT_CONTAINS(message, "(line 73)");  // the ninth entry
+    message = errorOf(eight + obstacle);
+    EXPECT_CONTAINS(message,
+                    "[[obstacle]]: 9 entries; at most 8 obstacles take part in a simulation");
+}
+
 TEST_F(SceneLoaderTest, RandomInitialVelocityTakesEnergySeedAndBand) {
     const std::string base = std::string(kGrid2d) + kBasis + "[initial]\nvelocity = \"random\"\n";
     const SceneSpec all = parseScene(base + "energy = 0.5\nseed = 9\n", "s.toml");
@@ -592,6 +678,127 @@ TEST_F(SceneLoaderTest, RandomInitialVelocityTakesEnergySeedAndBand) {
     EXPECT_CONTAINS(errorOf(base + "amplitudes = [[1, 1.0]]\n"),
                     "[initial].amplitudes: not used with velocity = \"random\" (it takes energy, "
                     "seed and band)");
+}
+
+TEST_F(SceneLoaderTest, NonFiniteNumbersAreRefusedForEveryFloatKey) {
+    // TOML spells them nan, inf and -inf; each float key names itself when given one.
+    const std::string mhd = std::string(kGrid2d) + kBasis + "[simulation]\nmhd = true\n[initial]\n";
+    const std::string vortex2 =
+        std::string(kGrid2d) + kBasis + "[initial]\nvelocity = \"vortices\"\n[[initial.vortex]]\n";
+    const std::string vortex3 =
+        std::string(kGrid3d) + kBasis + "[initial]\nvelocity = \"vortices\"\n[[initial.vortex]]\n";
+    const std::string source = std::string(kGrid2d) + kBasis + "[[source]]\nshape = \"ball\"\n";
+    const std::string obstacle = std::string(kGrid2d) + kBasis + "[[obstacle]]\n";
+    const std::string domain3 = std::string(kGrid3d) + kBasis + "[[domain]]\n";
+    const std::pair<std::string, std::string> cases[] = {
+        {"[grid]\nresolution = [8, 8]\nbounds_min = [0, X]\nbounds_max = [1, 1]\n" +
+             std::string(kBasis),
+         "[grid].bounds_min[1]"},
+        {"[grid]\nresolution = [8, 8]\nbounds_min = [0, 0]\nbounds_max = [X, 1]\n" +
+             std::string(kBasis),
+         "[grid].bounds_max[0]"},
+        {domain3 + "shape = \"ball\"\ncenter = [0, X, 0]\nradius = 1\n", "center[1]"},
+        {domain3 + "shape = \"ball\"\ncenter = [0, 0, 0]\nradius = X\n", "(ball).radius"},
+        {domain3 + "shape = \"box\"\nmin = [0, 0, X]\nmax = [1, 1, 1]\n", "(box).min[2]"},
+        {domain3 + "shape = \"box\"\nmin = [0, 0, 0]\nmax = [1, X, 1]\n", "(box).max[1]"},
+        {domain3 + "shape = \"ellipsoid\"\ncenter = [0, 0, 0]\nradii = [X, 1, 1]\n",
+         "(ellipsoid).radii[0]"},
+        {domain3 + "shape = \"cylinder\"\ncenter = [0, 0, 0]\nradius = 1\nhalf_height = X\n",
+         "(cylinder).half_height"},
+        {domain3 + "shape = \"torus\"\ncenter = [0, 0, 0]\nmajor_radius = X\nminor_radius = 0.1\n",
+         "(torus).major_radius"},
+        {domain3 + "shape = \"torus\"\ncenter = [0, 0, 0]\nmajor_radius = 1\nminor_radius = X\n",
+         "(torus).minor_radius"},
+        {std::string(kGrid2d) + kBasis + "[simulation]\ndt = X\n", "[simulation].dt"},
+        {std::string(kGrid2d) + kBasis + "[simulation]\nviscosity = X\n", "[simulation].viscosity"},
+        {std::string(kGrid2d) + kBasis + "[simulation]\nalpha = X\n", "[simulation].alpha"},
+        {std::string(kGrid2d) + kBasis + "[simulation]\nmhd = true\nmagnetic_diffusivity = X\n",
+         "[simulation].magnetic_diffusivity"},
+        {std::string(kGrid2d) + kBasis + "[initial]\nvelocity = \"random\"\nenergy = X\n",
+         "[initial].energy"},
+        {std::string(kGrid2d) + kBasis + "[initial]\nvelocity = \"modes\"\namplitudes = [[1, X]]\n",
+         "[initial].amplitudes[0][1]"},
+        {mhd + "magnetic_energy = X\n", "[initial].magnetic_energy"},
+        {mhd + "magnetic = \"uniform\"\nmagnetic_direction = [X, 1]\n",
+         "[initial].magnetic_direction[0]"},
+        {mhd + "magnetic = \"uniform\"\nmagnetic_direction = [1, 0]\nmagnetic_strength = X\n",
+         "[initial].magnetic_strength"},
+        {mhd + "magnetic = \"uniform\"\nmagnetic_direction = [1, 0]\nmagnetic_wall_layer = X\n",
+         "[initial].magnetic_wall_layer"},
+        {vortex2 + "center = [X, 0]\nstrength = 1\nradius = 0.1\n",
+         "[[initial.vortex]] #1.center[0]"},
+        {vortex2 + "center = [0, 0]\nstrength = X\nradius = 0.1\n",
+         "[[initial.vortex]] #1.strength"},
+        {vortex2 + "center = [0, 0]\nstrength = 1\nradius = X\n", "[[initial.vortex]] #1.radius"},
+        {vortex3 + "center = [0, 0, 0]\nnormal = [0, X, 1]\nring_radius = 0.5\nradius = 0.1\n"
+                   "strength = 1\n",
+         "[[initial.vortex]] #1.normal[1]"},
+        {vortex3 + "center = [0, 0, 0]\nnormal = [0, 0, 1]\nring_radius = X\nradius = 0.1\n"
+                   "strength = 1\n",
+         "[[initial.vortex]] #1.ring_radius"},
+        {source + "center = [0, 0]\nradius = 0.1\ndensity = X\n", "(ball).density"},
+        {source + "center = [0, 0]\nradius = 0.1\ntemperature = X\n", "(ball).temperature"},
+        {source + "center = [0, 0]\nradius = 0.1\nstart = X\n", "(ball).start"},
+        {source + "center = [0, 0]\nradius = 0.1\nend = X\n", "(ball).end"},
+        {obstacle + "shape = \"ball\"\nradius = X\npath = [[0, 0, 0]]\n", "[[obstacle]] #1.radius"},
+        {obstacle + "shape = \"box\"\nhalf_size = [0.1, X]\npath = [[0, 0, 0]]\n",
+         "[[obstacle]] #1.half_size[1]"},
+        {obstacle + "shape = \"capsule\"\nradius = 0.1\naxis = [X, 0]\npath = [[0, 0, 0]]\n",
+         "[[obstacle]] #1.axis[0]"},
+        {obstacle + "shape = \"ball\"\nradius = 0.1\npath = [[X, 0, 0]]\n",
+         "[[obstacle]] #1.path time"},
+        {obstacle + "shape = \"ball\"\nradius = 0.1\npath = [[0, 0, X]]\n", "[[obstacle]] #1.path"},
+        {std::string(kGrid2d) + kBasis + "[smoke]\nbuoyancy = X\n", "[smoke].buoyancy"},
+    };
+    for (const auto& [text, key] : cases) {
+        const std::size_t x = text.find('X');
+        ASSERT_NE(x, std::string::npos) << key;
+        for (const std::string value : {"nan", "inf", "-inf"}) {
+            const std::string message = errorOf(text.substr(0, x) + value + text.substr(x + 1));
+            EXPECT_CONTAINS(message, key + ": must be finite, got " + value);
+        }
+    }
+    // Beyond a double's range TOML itself refuses the number, with its line.
+    EXPECT_CONTAINS(errorOf(std::string(kGrid2d) + kBasis + "[simulation]\ndt = 1e400\n"),
+                    "line 10, column");
+}
+
+TEST_F(SceneLoaderTest, AbsurdInitialSpeedsAreRefused) {
+    // energy = 1e300 was accepted and later blamed on dt ("energy = inf"). Energies are ½∫|u|²
+    // over the grid's box (2.2 x 2.2 x 1 here), so the cap is a mean speed, scale-free in space.
+    const std::string base = std::string(kGrid2d) + kBasis;
+    const double volume = 2.2 * 2.2;
+    const auto energyAt = [&](double speed) {
+        return formatNumberForTest(0.5 * speed * speed * volume);
+    };
+    EXPECT_EQ(
+        errorOf(base + "[initial]\nvelocity = \"random\"\nenergy = " + energyAt(0.99e6) + "\n"),
+        "");
+    std::string message = errorOf(base + "[initial]\nvelocity = \"random\"\nenergy = 1e300\n");
+    EXPECT_CONTAINS(message,
+                    "[initial].energy: 1e+300 is a mean speed of 6.4e+149 (sqrt(2 energy / "
+                    "grid volume 4.8)); at most 1e+06 scene units per unit time (line 11)");
+    message =
+        errorOf(base + "[initial]\nvelocity = \"random\"\nenergy = " + energyAt(1.01e6) + "\n");
+    EXPECT_CONTAINS(message, "[initial].energy: ");
+    EXPECT_CONTAINS(message, "is a mean speed of 1e+06");
+
+    message =
+        errorOf(base + "[initial]\nvelocity = \"modes\"\namplitudes = [[1, 1], [2, 1e200]]\n");
+    EXPECT_CONTAINS(message, "[initial].amplitudes: ½Σa² = inf is a mean speed of inf");
+    const std::string mhd = base + "[simulation]\nmhd = true\n[initial]\n";
+    message = errorOf(mhd + "magnetic_energy = 1e300\n");
+    EXPECT_CONTAINS(message, "[initial].magnetic_energy: 1e+300 is a mean field of 6.4e+149");
+    message = errorOf(
+        mhd + "magnetic = \"uniform\"\nmagnetic_direction = [1, 0]\nmagnetic_strength = 2e6\n");
+    EXPECT_CONTAINS(message, "[initial].magnetic_strength: 2e+06 is beyond 1e+06");
+    message = errorOf(base +
+                      "[initial]\nvelocity = \"vortices\"\n[[initial.vortex]]\ncenter = [0, 0]\n"
+                      "strength = 1e300\nradius = 0.1\n");
+    EXPECT_CONTAINS(
+        message,
+        "[[initial.vortex]] #1.strength: magnitude 1e+300 is beyond 2.2e+06 (1e+06 scene "
+        "units per unit time times the grid's longest side, 2.2)");
 }
 
 TEST_F(SceneLoaderTest, MagneticFieldIsRandomOrUniformAndChecked) {
@@ -742,11 +949,140 @@ TEST_F(SceneLoaderTest, MissingFileGivesClearMessage) {
     }
 }
 
+TEST_F(SceneLoaderTest, NonRegularFilesAreRefusedBeforeReading) {
+    // /dev/zero never ends: read whole, it grew until the kernel killed the process.
+    const auto expectRefused = [](const fs::path& file, const std::string& kind) {
+        try {
+            loadScene(file);
+            ADD_FAILURE() << "loaded " << file;
+        } catch (const Error& e) {
+            EXPECT_EQ(std::string(e.what()).rfind(file.string() + ": ", 0), 0u) << e.what();
+            EXPECT_CONTAINS(e.what(), kind);
+        }
+    };
+    expectRefused("/dev/zero", "is a character device, not a scene file");
+    expectRefused(mDir, "is a directory, not a scene file");
+    const fs::path fifo = mDir / "pipe.toml";
+    ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+    expectRefused(fifo, "is a FIFO, not a scene file");  // opening it would wait for a writer
+    fs::create_symlink("/dev/zero", mDir / "zero.toml");
+    expectRefused(mDir / "zero.toml", "is a character device");
+}
+
+TEST_F(SceneLoaderTest, OversizedSceneFileIsRefusedBeforeReading) {
+    const fs::path file = write("huge.toml", std::string(kGrid2d) + kBasis);
+    fs::resize_file(file, kMaxSceneFileBytes + 1);  // sparse: no disk space used
+    try {
+        loadScene(file);
+        FAIL() << "loaded a file of " << fs::file_size(file) << " bytes";
+    } catch (const Error& e) {
+        EXPECT_EQ(std::string(e.what()).rfind(file.string() + ": ", 0), 0u) << e.what();
+        EXPECT_CONTAINS(e.what(), std::to_string(kMaxSceneFileBytes + 1) + " bytes");
+        EXPECT_CONTAINS(e.what(), "at most " + std::to_string(kMaxSceneFileBytes >> 20) + " MiB");
+    }
+    // The same limit holds for text already in memory.
+    EXPECT_CONTAINS(errorOf(std::string(kMaxSceneFileBytes + 1, '#')),
+                    "too large for a scene file");
+}
+
 TEST_F(SceneLoaderTest, ErrorsCarryTheLine) {
     const std::string message =
         errorOf(std::string(kGrid2d) + kBasis + "[simulation]\n\ndt = -1\n");
     // kGrid2d starts with a blank line: [grid] is line 2, so dt sits on line 11.
     EXPECT_CONTAINS(message, "(line 11)");
+}
+
+TEST_F(SceneLoaderTest, DeeplyNestedTablesAreRefusedNotACrash) {
+    // toml++ walks nested tables recursively: [a.a.a...] 100000 deep overflowed the stack.
+    std::string deep = "[a";
+    for (int i = 0; i < 100000; ++i) deep += ".a";
+    EXPECT_CONTAINS(errorOf(std::string(kGrid2d) + kBasis + deep + "]\n"),
+                    "scenes/bad.toml: line 9: 100000 dots on one line");
+    // At the limit, on the three lines a nesting can span, parsing ends in a plain message.
+    std::string header = "[a", key = "b", inner = "{c";
+    for (int i = 0; i < kMaxDotsPerLine; ++i) header += ".a", key += ".b", inner += ".c";
+    const std::string limit = header + "]\n" + key + " = [\n" + inner + " = 1}]\n";
+    EXPECT_CONTAINS(errorOf(limit), "a: unknown table");
+    // Long arrays of numbers fit, over several lines if need be.
+    std::string path = "[[obstacle]]\nshape = \"ball\"\nradius = 0.1\npath = [\n";
+    for (int i = 0; i < 3000; ++i)
+        path.append("[").append(std::to_string(i)).append(".5, 0.25, 0.5],\n");
+    EXPECT_EQ(errorOf(std::string(kGrid2d) + kBasis + path + "]\n"), "");
+}
+
+TEST_F(SceneLoaderTest, FileTextInMessagesIsPrintableAndShort) {
+    // TOML escapes let a key or a value hold terminal commands; they were printed as they were.
+    const std::string base = std::string(kGrid2d) + kBasis;
+    std::string message = errorOf(base + "[output]\n\"\\u001b[2J\" = 1\n");
+    EXPECT_CONTAINS(message, "[output].\\x1b[2J: unknown key");
+    EXPECT_EQ(message.find('\x1b'), std::string::npos) << message;
+    message = errorOf(base + "\"\\u001b]0;owned\\u0007\" = 1\n");
+    EXPECT_CONTAINS(message, "\\x1b]0;owned\\x07: unknown key");
+    message = errorOf(std::string(kGrid2d) + "[basis]\nmodes = \"1-3\\u001b[2J\"\n");
+    EXPECT_CONTAINS(message, "bad mode list \"1-3\\x1b[2J\": unexpected character '\\x1b'");
+    EXPECT_EQ(message.find('\x1b'), std::string::npos) << message;
+    message = errorOf(base + "[simulation]\nintegrator = \"\\u009b31m\"\n");
+    EXPECT_CONTAINS(message, "unknown value \"\\xc2\\x9b31m\"");
+
+    // A megabyte-long value or key is cut, and a suggestion is not searched for in it.
+    const std::string huge(1 << 20, '7');
+    message = errorOf(std::string(kGrid2d) + "[basis]\nmodes = \"1-" + huge + "\"\n");
+    EXPECT_LT(message.size(), 400u) << message.size() << " characters";
+    EXPECT_CONTAINS(message, "...");
+    message = errorOf(base + "[output]\n" + std::string(1 << 20, 'f') + " = 1\n");
+    EXPECT_LT(message.size(), 400u) << message.size() << " characters";
+    message = errorOf(base + "[simulation]\nintegrator = \"" + huge + "\"\n");
+    EXPECT_LT(message.size(), 400u) << message.size() << " characters";
+    EXPECT_CONTAINS(parseModeRangesError("1-3\x1b"), "\\x1b");
+}
+
+TEST_F(SceneLoaderTest, HostileValuesGetMessagesNamingTheKey) {
+    const std::string base = std::string(kGrid2d) + kBasis;
+    // Integers beyond their range.
+    EXPECT_CONTAINS(errorOf("[grid]\nresolution = [9223372036854775807, 8]\nbounds_min = [0, 0]\n"
+                            "bounds_max = [1, 1]\n" +
+                            std::string(kBasis)),
+                    "[grid].resolution[0]: must be between 2 and 4096, got 9223372036854775807");
+    EXPECT_CONTAINS(errorOf("[grid]\nresolution = [9223372036854775808, 8]\n"),
+                    "line 2, column");  // TOML refuses it: not representable in 64 bits
+    EXPECT_CONTAINS(errorOf(std::string(kGrid2d) + "[basis]\nmodes = \"1-2147483647\"\n"),
+                    "[basis].modes: mode 2147483647 is beyond the discrete space");
+    EXPECT_CONTAINS(errorOf(std::string(kGrid2d) + "[basis]\nmodes = \"1-2147483648\"\n"),
+                    "[basis].modes: bad mode list \"1-2147483648\": mode number at position 3 "
+                    "is too large");
+    EXPECT_CONTAINS(errorOf(base + "[initial]\nvelocity = \"random\"\nband = [1, 4294967297]\n"),
+                    "[initial].band: mode 4294967297 is beyond the basis");
+    EXPECT_CONTAINS(errorOf(base + "[simulation]\nmhd = true\n[initial]\nmagnetic_seed = -3\n"),
+                    "[initial].magnetic_seed: must be at least 0, got -3");
+    // frames x steps_per_frame is the step count, an int.
+    EXPECT_CONTAINS(errorOf(base + "[output]\nframes = 100000\nsteps_per_frame = 100000\n"),
+                    "[output].steps_per_frame: frames x steps_per_frame = 10000000000 steps, "
+                    "more than 2147483647");
+    // Negative zero is not a size.
+    EXPECT_CONTAINS(
+        errorOf(base + "[[domain]]\nshape = \"ball\"\ncenter = [0, 0]\nradius = -0.0\n"),
+        "[[domain]] #1 (ball).radius: must be > 0, got -0");
+    EXPECT_CONTAINS(
+        errorOf("[grid]\nresolution = [8, 8]\nbounds_min = [-0.0, 0]\nbounds_max = [0.0, 1]\n" +
+                std::string(kBasis)),
+        "[grid].bounds_max: must exceed bounds_min on every axis");
+    // Huge arrays are counted, not echoed.
+    std::string many = "[grid]\nresolution = [";
+    for (int i = 0; i < 100000; ++i) many += "8, ";
+    EXPECT_CONTAINS(errorOf(many + "8]\n"),
+                    "[grid].resolution: expected 2 or 3 integers, got "
+                    "100001 entries");
+    // An empty file, and arrays of tables where tables belong.
+    EXPECT_CONTAINS(errorOf(""), "scenes/bad.toml: [grid]: missing required table");
+    EXPECT_CONTAINS(errorOf("[[grid]]\nresolution = [8, 8]\n"),
+                    "[grid]: expected a table, got an array (line 1)");
+    EXPECT_CONTAINS(errorOf(std::string(kGrid2d) + "[[basis]]\nvelocity_modes = 4\n"),
+                    "[basis]: expected a table, got an array");
+    EXPECT_CONTAINS(errorOf(base + "[[initial]]\nvelocity = \"zero\"\n"),
+                    "[initial]: expected a table, got an array");
+    EXPECT_CONTAINS(errorOf(base + "[initial]\nvelocity = \"vortices\"\n[initial.vortex]\n"
+                                   "center = [0, 0]\n"),
+                    "[[initial.vortex]]: expected an array of tables");
 }
 
 TEST(SceneKeywords, MatchTheFileSpelling) {
@@ -784,6 +1120,33 @@ TEST(ExampleScenes, EveryRepositorySceneLoads) {
     EXPECT_EQ(def.basis.scalarModes, 20);
     EXPECT_FALSE(def.sources.empty());
     EXPECT_GT(def.smoke.buoyancy, 0.0);
+}
+
+}  // namespace
+}  // namespace modeflow
+
+namespace modeflow {
+namespace {
+
+TEST(SceneLoaderPeriodic, PeriodicFlagsAreOnePerAxisAndDefaultToWalls) {
+    const std::string grid = "[grid]\nresolution = [8, 8]\nbounds_min = [0, 0]\nbounds_max = [1, 1]\n";
+    const SceneSpec walls = parseScene(grid + "[basis]\nvelocity_modes = 4\n", "walls.toml");
+    EXPECT_FALSE(walls.grid.anyPeriodic());
+    const SceneSpec explicitWalls =
+        parseScene(grid + "periodic = [false, false]\n[basis]\nvelocity_modes = 4\n", "walls.toml");
+    EXPECT_EQ(explicitWalls.grid, walls.grid);
+    const auto refused = [&](const std::string& flags, const std::string& needle) {
+        try {
+            parseScene(grid + "periodic = " + flags + "\n[basis]\nvelocity_modes = 4\n", "p.toml");
+            ADD_FAILURE() << "accepted periodic = " << flags;
+        } catch (const Error& e) {
+            EXPECT_NE(std::string(e.what()).find(needle), std::string::npos) << e.what();
+        }
+    };
+    refused("[true]", "[grid].periodic: expected 2 booleans");
+    refused("[true, false, true]", "expected 2 booleans");
+    refused("true", "expected 2 booleans");
+    refused("[1, 0]", "[grid].periodic[0]: expected true or false");
 }
 
 }  // namespace

@@ -1,6 +1,6 @@
 #include <cstdlib>
 
-#include "engine/format/Error.h"
+#include "engine/core/Error.h"
 #include "tools/modeflow/Commands.h"
 
 namespace modeflow::cli {

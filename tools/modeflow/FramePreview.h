@@ -10,8 +10,8 @@
 #include <span>
 #include <vector>
 
-#include "engine/field/MacGrid.h"
-#include "engine/field/SmokeAdvection.h"
+#include "engine/core/MacGrid.h"
+#include "engine/reference/SmokeAdvection.h"
 #include "engine/preview/Image.h"
 #include "engine/vulkan/VulkanContext.h"
 

@@ -5,8 +5,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "engine/core/InputFile.h"
 #include "engine/format/CacheFile.h"
-#include "engine/format/InputFile.h"
 #include "precompute/BasisChecks.h"
 #include "precompute/Precompute.h"
 #include "precompute/scene/SceneLoader.h"
@@ -70,7 +70,7 @@ bool isText(std::string_view bytes) {
 /// "scene.TOML", "scene.txt" and a cache renamed "x.toml" all work.
 /// @throw Error for a folder, a device or a file that is neither.
 bool isCache(const std::filesystem::path& path) {
-    regularFileSize(path, "cache or scene", std::numeric_limits<std::uintmax_t>::max());
+    inputFileSize(path, "cache or scene file", std::numeric_limits<std::uintmax_t>::max());
     std::ifstream in(path, std::ios::binary);
     std::string start(4096, '\0');
     in.read(start.data(), std::streamsize(start.size()));
@@ -135,7 +135,7 @@ Command addInspect(CLI::App& app) {
                     "a cache file or a scene file (told apart by their contents)")
         ->required();
     sub->add_option("--cache-dir", opts->cacheDir, "cache folder used for a scene");
-    sub->add_flag("--json", opts->json, "print one JSON object (DESIGN §5 keys)");
+    sub->add_flag("--json", opts->json, "print one JSON object (keys in the README)");
     return [sub, opts]() {
         if (!*sub) return -1;
         std::filesystem::path path = opts->target;

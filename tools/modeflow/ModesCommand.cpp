@@ -7,21 +7,14 @@
 #include <utility>
 #include <vector>
 
-#include "engine/dynamics/CachedCoefficients.h"
 #include "engine/dynamics/Diagnostics.h"
-#include "engine/dynamics/FluidSystem.h"
-#include "engine/dynamics/MhdSystem.h"
-#include "engine/dynamics/ModalIntegrator.h"
-#include "engine/format/CacheFile.h"
-#include "engine/format/Error.h"
-#include "engine/kernels/ModalStepper.h"
-#include "engine/simulation/SimulationSettings.h"
-#include "engine/vulkan/CommandSequence.h"
-#include "precompute/Precompute.h"
+#include "engine/core/Error.h"
+#include "engine/core/KappaSquared.h"
+#include "engine/dynamics/ModalDivergence.h"
+#include "engine/pipeline/Backend.h"
+#include "engine/pipeline/RunInputs.h"
 #include "precompute/scene/SceneLoader.h"
 #include "tools/modeflow/Commands.h"
-#include "tools/modeflow/DeviceOption.h"
-#include "tools/modeflow/InitialState.h"
 #include "tools/modeflow/NumberOptions.h"
 
 namespace modeflow::cli {
@@ -45,69 +38,32 @@ Command addModes(CLI::App& app) {
         ->check(finitePositive());
     sub->add_option("--integrator", opts->integrator,
                     "explicit | rk4 | midpoint | trapezoidal (default: [simulation].integrator)");
-    sub->add_option("--device", opts->device, kDeviceHelp);
+    sub->add_option("--device", opts->device, kDeviceOptionHelp);
     sub->add_flag("--csv", opts->csv,
                   "CSV on stdout: step,time,energy,enstrophy,cross_helicity,iterations,residual");
     sub->add_option("--cache-dir", opts->cacheDir, "cache folder");
     return [sub, opts]() {
         if (!*sub) return -1;
-        const auto deviceOptions = parseDevice(opts->device);
-        const SceneSpec scene = loadScene(opts->scene);
-        IntegratorSettings settings;
         // Checked before any precompute work.
-        settings.scheme = opts->integrator ? parseIntegrator(*opts->integrator, "--integrator")
-                                           : scene.simulation.integrator;
+        const BackendChoice choice = parseDeviceOption(opts->device);
+        const SceneSpec scene = loadScene(opts->scene);
+        std::optional<Integrator> integratorOption;
+        if (opts->integrator) integratorOption = parseIntegrator(*opts->integrator, "--integrator");
+        const Integrator scheme = integratorOption.value_or(scene.simulation.integrator);
+        requireSupport(scene, choice.kind, integratorOption);
+        const Backend backend(choice);
+        std::cerr << backend.describe();
         Progress progress = Progress::toStderr();
-        requireRuntimeSupport(scene, deviceOptions ? Runtime::Device : Runtime::CpuReference);
-        if (deviceOptions && settings.scheme == Integrator::Trapezoidal)
-            throw Error("--integrator trapezoidal runs on the CPU reference only; on a Vulkan device use explicit, "
-                        "rk4 or midpoint");
-        const auto cachePath = ensureCache(scene, resolveCacheDir(opts->cacheDir), false, progress).path;
-        const BasisCache cache = readCache(cachePath);
-        const auto coefficients = coefficientsFromCache(cache);
-        const int n = coefficients->size();
-
+        const RunInputs run = prepareRun(scene, resolveCacheDir(opts->cacheDir), progress, RunParts::Dynamics);
+        const int n = run.modeCount();
         const SimulationSpec& sim = scene.simulation;
-        const auto& k2 = cache.velocity.eigenvalues;
-        std::unique_ptr<ModalSystem> system;
-        Eigen::VectorXd x = initialVelocity(scene, cache, n);
-        if (sim.mhd) {
-            MhdParameters parameters{k2, sim.viscosity, sim.magneticDiffusivity};
-            auto mhd = std::make_unique<MhdSystem>(*coefficients, parameters);
-            x = mhd->state(x, initialMagneticField(scene, cache, n));
-            system = std::move(mhd);
-        } else {
-            system = std::make_unique<FluidSystem>(
-                *coefficients, FluidParameters{k2, sim.viscosity, sim.alpha});
-        }
+        const Eigen::VectorXd k2 = checkedKappaSquared(run.cache.velocity.eigenvalues, "modes");
         const double h = opts->dt.value_or(sim.dt);
         const int steps = opts->steps.value_or(scene.output.frames * scene.output.stepsPerFrame);
+        const std::unique_ptr<ModalStepping> stepper = backend.makeModalStepper(run, scheme);
+        Eigen::VectorXd x = stepper->state();
 
-        // One step of the chosen device; it updates x and says how the step went.
-        std::function<StepReport()> advance;
-        std::unique_ptr<vulkan::VulkanContext> context;
-        std::unique_ptr<vulkan::ModalStepper> stepper;
-        std::unique_ptr<vulkan::CommandSequence> sequence;
-        ModalIntegrator integrator(*system, settings);
-        if (deviceOptions) {
-            context = std::make_unique<vulkan::VulkanContext>(*deviceOptions);
-            std::cerr << context->describe();
-            stepper = std::make_unique<vulkan::ModalStepper>(
-                *context, *coefficients, FluidParameters{k2, sim.viscosity, sim.alpha},
-                vulkan::DeviceStepSettings{settings.scheme});
-            stepper->setState(x);
-            sequence = std::make_unique<vulkan::CommandSequence>(*context);
-            advance = [&]() {
-                stepper->recordStep(*sequence, h);
-                sequence->submitAndWait();
-                x = stepper->state();
-                const vulkan::DeviceStepStatus status = stepper->status();
-                return StepReport{status.iterations, 0, status.residual, status.converged};
-            };
-        } else {
-            advance = [&]() { return integrator.step(x, h); };
-        }
-        const bool twoD = cache.grid.dim == 2;
+        const bool twoD = run.cache.grid.dim == 2;
         // Conserved by the midpoint rule: ½Σ(1+α²κ²)v² (Euler, LANS-α) or ½(|v|²+|F|²) (MHD).
         auto totalEnergy = [&]() {
             return sim.mhd ? energy(x) : lansEnergy(x, k2, sim.alpha);
@@ -133,25 +89,24 @@ Command addModes(CLI::App& app) {
             std::printf("step,time,energy,enstrophy,cross_helicity,iterations,residual\n");
         else
             std::printf("%d modes%s, %s, dt %g, %d steps\n", n, sim.mhd ? " (MHD)" : "",
-                        std::string(sceneKeyword(settings.scheme)).c_str(), h, steps);
+                        std::string(sceneKeyword(scheme)).c_str(), h, steps);
         row(0, StepReport{});
         int unconverged = 0;
         for (int s = 1; s <= steps; ++s) {
-            const StepReport r = advance();
+            const StepReport r = stepper->step(h);
+            x = stepper->state();
             unconverged += !r.converged;
             row(s, r);
-            if (!x.allFinite())
-                throw Error("the modal state diverged at step " + std::to_string(s) + " (t = " +
-                            std::to_string(s * h) + "); " +
-                            std::string(sceneKeyword(settings.scheme)) +
-                            " is unstable at this step size: lower --dt or use midpoint");
+            try {
+                requireFiniteModalState(x, s, s * h);
+            } catch (const ModalStateDiverged& e) {
+                throw Error(divergenceAdvice(e, sceneKeyword(scheme), "--dt"));
+            }
         }
         std::fflush(stdout);
-        if (context && context->validationMessageCount() > 0)
-            throw Error("the Vulkan validation layer reported " + std::to_string(context->validationMessageCount()) +
-                        " problems; the first: " + context->validationMessages().front());
+        backend.requireCleanValidation();
         if (unconverged)
-            std::cerr << "warning: the " << (deviceOptions ? "fixed-point" : "Newton")
+            std::cerr << "warning: the " << (backend.kind() == BackendKind::Vulkan ? "fixed-point" : "Newton")
                       << " iteration did not converge in " << unconverged << " steps; try a smaller --dt\n";
         return 0;
     };

@@ -6,7 +6,7 @@
 #include <optional>
 #include <string>
 
-#include "engine/format/QuotedText.h"
+#include "engine/core/PrintableText.h"
 
 namespace modeflow::cli {
 namespace {
@@ -25,7 +25,7 @@ CLI::Validator finiteAtLeast(double minimum, bool inclusive, const std::string& 
         [minimum, inclusive, what](std::string& text) -> std::string {
             const std::optional<double> value = finiteNumber(text);
             if (value && (*value > minimum || (inclusive && *value == minimum))) return "";
-            return "must be " + what + ", got " + quotedText(text);
+            return "must be " + what + ", got \"" + printableText(text) + "\"";
         },
         inclusive ? "NUMBER >= 0" : "NUMBER > 0");
 }
@@ -49,8 +49,8 @@ CLI::Validator countUpTo(long long maximum) {
             if (error == std::errc() && end == text.data() + text.size() && value >= 1 &&
                 value <= maximum)
                 return "";
-            return "must be a whole number from 1 to " + std::to_string(maximum) + ", got " +
-                   quotedText(text);
+            return "must be a whole number from 1 to " + std::to_string(maximum) + ", got \"" +
+                   printableText(text) + "\"";
         },
         "1.." + std::to_string(maximum));
 }

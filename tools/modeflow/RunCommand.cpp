@@ -4,26 +4,27 @@
 #include <iostream>
 #include <iterator>
 #include <memory>
+#include <new>
+#include <optional>
 #include <sstream>
 #include <string>
 
-#include "engine/dynamics/CachedCoefficients.h"
 #include "engine/format/CacheFile.h"
-#include "engine/format/Error.h"
-#include "engine/format/WritableDirectory.h"
+#include "engine/core/Error.h"
+#include "engine/core/WritableDirectory.h"
+#include "engine/output/RunFolder.h"
 #include "engine/output/VdbFrame.h"
 #include "engine/simulation/Checkpoint.h"
-#include "engine/simulation/ReferenceSimulation.h"
-#include "engine/simulation/Simulation.h"
 #include "precompute/Precompute.h"
-#include "precompute/geometry/FluidMask.h"
 #include "precompute/scene/SceneLoader.h"
 #include "tools/modeflow/Commands.h"
-#include "tools/modeflow/DeviceOption.h"
 #include "tools/modeflow/FramePreview.h"
 #include "tools/modeflow/FrameProgress.h"
-#include "tools/modeflow/InitialState.h"
 #include "tools/modeflow/NumberOptions.h"
+#include "engine/pipeline/Backend.h"
+#include "engine/pipeline/RunInputs.h"
+#include "engine/pipeline/RunMemory.h"
+#include "engine/dynamics/ModalDivergence.h"
 
 namespace modeflow::cli {
 namespace {
@@ -37,14 +38,6 @@ std::string hex(std::uint64_t value) {
     std::ostringstream s;
     s << std::hex << std::setw(16) << std::setfill('0') << value;
     return s.str();
-}
-
-/// Whether the scene simulates temperature (a source heats, or buoyancy reads it).
-bool simulatesTemperature(const SceneSpec& scene) {
-    if (scene.smoke.buoyancy != 0.0) return true;
-    for (const SourceSpec& source : scene.sources)
-        if (source.temperature != 0.0) return true;
-    return false;
 }
 
 }  // namespace
@@ -67,7 +60,7 @@ Command addRun(CLI::App& app) {
     sub->add_option("--frames", opts->frames, "frames to write (default: [output].frames)")
         ->check(countUpTo(kMaxFrames));
     sub->add_option("--out", opts->out, "output folder (default: NAME_frames beside the current folder)");
-    sub->add_option("--device", opts->device, kDeviceHelp);
+    sub->add_option("--device", opts->device, kDeviceOptionHelp);
     sub->add_flag("--resume", opts->resume, "continue an interrupted run from its last complete frame");
     sub->add_flag("--half", opts->half, "store VDB values as 16-bit floats");
     sub->add_flag("--preview", opts->preview,
@@ -79,60 +72,70 @@ Command addRun(CLI::App& app) {
     return [sub, opts]() {
         if (!*sub) return -1;
         // Everything that can be refused is checked before any precompute or simulation work.
-        const auto deviceOptions = parseDevice(opts->device);
+        const BackendChoice choice = parseDeviceOption(opts->device);
         const SceneSpec scene = loadScene(opts->scene);
-        const Runtime runtime = deviceOptions ? Runtime::Device : Runtime::CpuReference;
-        requireRuntimeSupport(scene, runtime);
+        requireSupport(scene, choice.kind);
+        const RunMemory memory = requireRunMemory(scene, choice.kind);
         const int frames = opts->frames.value_or(scene.output.frames);
         const std::filesystem::path out = opts->out.value_or(scene.name + "_frames");
         ensureWritableDirectory(out, "output folder", "; choose another with --out");
-        const std::filesystem::path checkpointPath = out / (scene.name + ".resume");
-        // The checkpoint belongs to this scene text and device kind; frames do not change results.
+        // One run at a time per scene in a folder; taken before any work.
+        const RunFolder folder(out, scene.name);
+        if (folder.staleTemporariesRemoved() > 0)
+            std::cerr << "removed " << folder.staleTemporariesRemoved() << " partial files of killed runs from "
+                      << out.string() << "\n";
+        // The checkpoint belongs to this scene text, the basis it makes (mesh files included) and the
+        // device kind; the frame count does not change results.
         const std::string sceneHash = hex(fnv1a64(fileBytes(scene.sourceFile)));
-        const std::uint64_t runHash = fnv1a64(sceneHash + "|" + (deviceOptions ? "vulkan" : "cpu"));
+        const std::uint64_t runHash = fnv1a64(sceneHash + "|" + basisKey(scene) + "|" +
+                                              std::string(capabilitiesOf(choice.kind).option));
+        std::optional<Checkpoint> resumeFrom;
+        if (opts->resume && std::filesystem::exists(folder.checkpointPath())) {
+            resumeFrom = readCheckpoint(folder.checkpointPath());
+            if (resumeFrom->runHash != runHash)
+                throw Error("checkpoint " + folder.checkpointPath().string() +
+                            " was written for another scene text, basis (mesh file) or device; run without "
+                            "--resume to start afresh");
+        }
+        const Backend backend(choice);
+        std::cerr << backend.describe();
 
         Progress progress = Progress::toStderr();
-        const auto cachePath = ensureCache(scene, resolveCacheDir(opts->cacheDir), false, progress).path;
-        const BasisCache cache = readCache(cachePath);
-        const auto coefficients = coefficientsFromCache(cache);
-        const SimulationSettings settings = SimulationSettings::fromScene(scene, cache, runtime);
-        const std::vector<std::uint8_t> mask = fluidMask(scene, cache, settings.smokeScale);
-
-        std::unique_ptr<vulkan::VulkanContext> context;
-        std::unique_ptr<Simulator> simulator;
-        if (deviceOptions) {
-            context = std::make_unique<vulkan::VulkanContext>(*deviceOptions);
-            std::cerr << context->describe();
-            simulator = std::make_unique<Simulation>(*context, cache, *coefficients, settings, mask);
-        } else {
-            simulator = std::make_unique<ReferenceSimulation>(cache, *coefficients, settings, mask);
-        }
+        const RunInputs run = inRunStage("preparing the run (cache, smoke mask, initial state)", memory,
+                                         [&] { return prepareRun(scene, resolveCacheDir(opts->cacheDir), progress); });
+        const SimulationSettings& settings = run.settings;
+        const std::unique_ptr<Simulator> simulator =
+            inRunStage("setting up the simulation", memory, [&] { return backend.makeSimulator(run); });
 
         int first = 0;
-        if (opts->resume && std::filesystem::exists(checkpointPath)) {
-            const Checkpoint checkpoint = readCheckpoint(checkpointPath);
-            if (checkpoint.runHash != runHash)
-                throw Error("checkpoint " + checkpointPath.string() +
-                            " was written for another scene text or device; run without --resume to start afresh");
-            simulator->restore(checkpoint.time, checkpoint.velocity, checkpoint.smoke);
-            if (settings.mhd) simulator->setMagneticField(checkpoint.magnetic);
-            first = checkpoint.frame;
-            std::cerr << "resuming after frame " << first << " (t = " << checkpoint.time << ")\n";
-        } else {
-            simulator->setVelocity(initialVelocity(scene, cache, coefficients->size()));
-            if (settings.mhd) simulator->setMagneticField(initialMagneticField(scene, cache, coefficients->size()));
+        if (resumeFrom) {
+            simulator->restore(resumeFrom->time, resumeFrom->velocity, resumeFrom->smoke);
+            if (settings.mhd) simulator->setMagneticField(resumeFrom->magnetic);
+            first = resumeFrom->frame;
+            std::cerr << "resuming after frame " << first << " (t = " << resumeFrom->time << ")\n";
+        } else if (const int removed = folder.removeEarlierRun(); removed > 0) {
+            std::cerr << "removed " << removed << " files of an earlier " << scene.name << " run from " << out.string()
+                      << "\n";
         }
 
-        const MacGrid basisGrid = MacGrid::fromSpec(cache.grid);
-        const bool temperature = simulatesTemperature(scene);
+        const MacGrid basisGrid = MacGrid::fromSpec(run.cache.grid);
+        const bool temperature = settings.simulatesTemperature();
         const bool previews = opts->preview || opts->previewEvery.has_value();
         const int previewEvery = opts->previewEvery.value_or(std::max(1, frames / 24));
         std::unique_ptr<FramePreview> preview;
-        if (previews) preview = std::make_unique<FramePreview>(simulator->smokeGrid(), mask, context.get());
+        if (previews)
+            preview = std::make_unique<FramePreview>(simulator->smokeGrid(), run.smokeMask, backend.vulkanContext());
         FrameProgress bar(first, frames, settings.stepsPerFrame);
         for (int frame = first + 1; frame <= frames; ++frame) {
-            const FrameStats stats = simulator->advanceFrame();
-            const SmokeFields smoke = simulator->smoke();
+            const std::string stage = "frame " + std::to_string(frame);
+            FrameStats stats;
+            try {
+                stats = inRunStage(stage, memory, [&] { return simulator->advanceFrame(); });
+            } catch (const ModalStateDiverged& e) {
+                throw Error(
+                    divergenceAdvice(e, sceneKeyword(settings.integrator), "[simulation].dt"));
+            }
+            const SmokeFields smoke = inRunStage(stage, memory, [&] { return simulator->smoke(); });
             const std::vector<double> faceVelocity = simulator->faceVelocity();
             const std::vector<double> faceMagnetic = simulator->faceMagneticField();
             VdbFrame vdb;
@@ -142,18 +145,19 @@ Command addRun(CLI::App& app) {
             if (temperature) vdb.temperature = std::span<const double>(smoke.temperature);
             vdb.faceVelocity = faceVelocity;
             vdb.faceMagnetic = faceMagnetic;
-            vdb.fluidMask = mask;
+            vdb.fluidMask = run.smokeMask;
             vdb.frame = frame;
             vdb.time = simulator->time();
             vdb.sceneHash = sceneHash;
             vdb.modeflowVersion = MODEFLOW_VERSION;
             vdb.options.halfFloat = opts->half;
-            writeVdbFrame(out / frameFileName(scene.name, frame), vdb);
+            inRunStage(stage, memory,
+                    [&] { writeVdbFrame(out / frameFileName(scene.name, frame), vdb); });
             if (preview && (frame % previewEvery == 0 || frame == frames)) {
                 std::filesystem::path png = out / frameFileName(scene.name, frame);
                 preview->write(png.replace_extension(".png"), frame, smoke, temperature);
             }
-            writeCheckpoint(checkpointPath, {frame, simulator->time(), runHash, simulator->velocity(),
+            writeCheckpoint(folder.checkpointPath(), {frame, simulator->time(), runHash, simulator->velocity(),
                                              simulator->magneticField(), smoke});
             std::string detail;
             if (stats.unconvergedSteps) detail += std::to_string(stats.unconvergedSteps) + " unconverged steps ";
@@ -162,9 +166,7 @@ Command addRun(CLI::App& app) {
         }
         bar.finish();
         if (preview) preview->writeContactSheet(out / (scene.name + "_contact.png"));
-        if (context && context->validationMessageCount() > 0)
-            throw Error("the Vulkan validation layer reported " + std::to_string(context->validationMessageCount()) +
-                        " problems; the first: " + context->validationMessages().front());
+        backend.requireCleanValidation();
         std::printf("%s\n", out.string().c_str());
         return 0;
     };

@@ -2,16 +2,10 @@
 #include <memory>
 
 #include "engine/display/Window.h"
-#include "engine/dynamics/CachedCoefficients.h"
-#include "engine/format/CacheFile.h"
-#include "engine/format/Error.h"
+#include "engine/pipeline/RunInputs.h"
 #include "engine/stir/StirApp.h"
-#include "precompute/Precompute.h"
-#include "precompute/geometry/FluidMask.h"
 #include "precompute/scene/SceneLoader.h"
 #include "tools/modeflow/Commands.h"
-#include "tools/modeflow/DeviceOption.h"
-#include "tools/modeflow/InitialState.h"
 #include "tools/modeflow/NumberOptions.h"
 
 namespace modeflow::cli {
@@ -45,21 +39,19 @@ Command addStir(CLI::App& app) {
         ->check(countUpTo(display::kMaxWindowSide));
     sub->add_option("--force", opts->force, "stirring acceleration per unit pointer speed (1/s)")
         ->check(finiteNonNegative());
-    sub->add_option("--device", opts->device, "a Vulkan device: vulkan (first suitable) or an index");
+    sub->add_option("--device", opts->device,
+                    std::string(kDeviceOptionHelp) +
+                        "; the window shows on the chosen Vulkan device, or with cpu on the first "
+                        "suitable one");
     sub->add_option("--cache-dir", opts->cacheDir, "cache folder");
     return [sub, opts]() {
         if (!*sub) return -1;
         // Everything that can be refused is checked before the precompute or the window.
-        const auto deviceOptions = parseDevice(opts->device);
-        if (!deviceOptions)
-            throw Error("--device cpu: the stir window simulates on a Vulkan device (vulkan or an index)");
+        const BackendChoice choice = parseDeviceOption(opts->device);
         const SceneSpec scene = loadScene(opts->scene);
-        if (scene.simulation.mhd)
-            throw Error(scene.sourceFile.string() +
-                        ": [simulation].mhd: MHD runs on the CPU reference only (modeflow run --device "
-                        "cpu); the stir window simulates on a Vulkan device");
+        requireSupport(scene, choice.kind);
         stir::StirOptions options;
-        options.device = *deviceOptions;
+        options.backend = choice;
         options.frames = opts->frames;
         options.width = opts->width;
         options.height = opts->height;
@@ -69,14 +61,8 @@ Command addStir(CLI::App& app) {
         display::Window::requireDisplay();
 
         Progress progress = Progress::toStderr();
-        const auto cachePath = ensureCache(scene, resolveCacheDir(opts->cacheDir), false, progress).path;
-        const BasisCache cache = readCache(cachePath);
-        auto coefficients = coefficientsFromCache(cache);
-        const int modes = coefficients->size();
-        const SimulationSettings settings = SimulationSettings::fromScene(scene, cache);
-        stir::runStir(options, scene, cache, std::move(coefficients),
-                      fluidMask(scene, cache, settings.smokeScale),
-                      initialVelocity(scene, cache, modes), std::cerr);
+        const RunInputs run = prepareRun(scene, resolveCacheDir(opts->cacheDir), progress);
+        stir::runStir(options, run, std::cerr);
         return 0;
     };
 }

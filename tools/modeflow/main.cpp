@@ -2,8 +2,9 @@
 /// as one line on stderr with exit status 1; usage errors exit with CLI11's status.
 
 #include <iostream>
+#include <new>
 
-#include "engine/format/Error.h"
+#include "engine/core/Error.h"
 #include "tools/modeflow/Commands.h"
 
 int main(int argc, char** argv) {
@@ -26,6 +27,12 @@ int main(int argc, char** argv) {
             if (const int status = command(); status >= 0) return status;
     } catch (const modeflow::Error& e) {
         std::cerr << "modeflow: error: " << e.what() << "\n";
+        return 1;
+    } catch (const std::bad_alloc&) {
+        // The precompute and run name their stage; an allocation failing elsewhere names the
+        // command.
+        std::cerr << "modeflow: error: out of memory in modeflow "
+                  << app.get_subcommands().front()->get_name() << "\n";
         return 1;
     } catch (const std::exception& e) {
         std::cerr << "modeflow: internal error: " << e.what() << "\n";

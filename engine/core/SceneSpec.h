@@ -1,0 +1,180 @@
+#pragma once
+/// @file SceneSpec.h
+/// The validated content of a scene file (README.md, "Scene files"). Plain values only: parsing and validation
+/// live in SceneLoader, so every other module can use a scene without pulling in TOML.
+
+#include <array>
+#include <cstdint>
+#include <filesystem>
+#include <limits>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "engine/core/GridSpec.h"
+
+namespace modeflow {
+
+enum class ShapeKind { Ball, Box, Ellipsoid, Cylinder, Torus, Mesh };
+enum class CsgOp { Union, Subtract, Intersect };
+
+/// One `[[domain]]` entry (or emitter shape). Unused fields keep their defaults.
+struct ShapeSpec {
+    ShapeKind kind = ShapeKind::Ball;
+    Vec3 center{0.0, 0.0, 0.0};
+    double radius = 0.0;              ///< ball, cylinder
+    Vec3 radii{0.0, 0.0, 0.0};        ///< ellipsoid
+    Vec3 min{0.0, 0.0, 0.0};          ///< box
+    Vec3 max{0.0, 0.0, 0.0};          ///< box
+    double halfHeight = 0.0;          ///< cylinder (axis z)
+    double majorRadius = 0.0;         ///< torus (axis z)
+    double minorRadius = 0.0;         ///< torus
+    std::filesystem::path meshFile;   ///< mesh (OBJ, 3D), resolved against the scene's folder
+    CsgOp op = CsgOp::Union;
+    bool operator==(const ShapeSpec&) const = default;
+};
+
+enum class ScalarBoundary { Neumann, Dirichlet };
+enum class WallKind { FreeSlip, NoSlip };
+/// How primal measures see the domain: exact-for-piecewise-linear cut cells, or voxelized.
+enum class BoundaryTreatment { CutCell, Staircase };
+
+/// A 1-based, inclusive range of the divergence-free spectrum ("516-630").
+struct ModeRange {
+    int first = 1;
+    int last = 1;
+    bool operator==(const ModeRange&) const = default;
+};
+
+struct BasisSpec {
+    std::vector<ModeRange> velocityModes;  ///< `velocity_modes = N` becomes {1-N}
+    int scalarModes = 0;
+    ScalarBoundary scalarBoundary = ScalarBoundary::Neumann;
+    WallKind wall = WallKind::FreeSlip;
+    BoundaryTreatment boundary = BoundaryTreatment::CutCell;
+    int subsamples = 4;  ///< sub-cells per element edge when measuring cut fractions
+
+    int velocityCount() const {
+        int n = 0;
+        for (const auto& r : velocityModes) n += r.last - r.first + 1;
+        return n;
+    }
+    int highestVelocityMode() const {
+        int n = 0;
+        for (const auto& r : velocityModes) n = r.last > n ? r.last : n;
+        return n;
+    }
+    bool operator==(const BasisSpec&) const = default;
+};
+
+enum class Integrator { Explicit, Rk4, Midpoint, Trapezoidal };
+
+struct SimulationSpec {
+    double dt = 0.02;
+    Integrator integrator = Integrator::Midpoint;
+    double viscosity = 0.0;
+    double alpha = 0.0;
+    /// Ideal MHD (seed §6.3.5): a magnetic field in the velocity basis, advected by the flow and
+    /// acting back on it through the Lorentz term.
+    bool mhd = false;
+    double magneticDiffusivity = 0.0;  ///< η: F_i decays as exp(−ηκ_i²t)
+    /// Store the velocity basis in float16 on the device (half the memory and bandwidth of the
+    /// reconstruction and force projection, ~1e-3 relative error in the grid velocity).
+    bool halfPrecisionBasis = false;
+};
+
+enum class InitialVelocity { Zero, Random, Modes, Vortices };
+/// The initial magnetic field of an MHD scene: random modal amplitudes, or a uniform field.
+enum class InitialMagnetic { Random, Uniform };
+
+/// One `[[initial.vortex]]`: a Gaussian-cored point vortex in 2D, a vortex ring in 3D.
+struct VortexSpec {
+    Vec3 center{0.0, 0.0, 0.0};
+    double strength = 0.0;    ///< circulation Γ (counter-clockwise / right-handed about normal)
+    double radius = 0.0;      ///< Gaussian core σ > 0
+    Vec3 normal{0.0, 0.0, 1.0};  ///< 3D: the ring's axis (not normalized by the loader)
+    double ringRadius = 0.0;  ///< 3D: radius of the ring's centre line
+    bool operator==(const VortexSpec&) const = default;
+};
+
+struct InitialSpec {
+    InitialVelocity velocity = InitialVelocity::Zero;
+    /// random: ½|v|² of the result. vortices: rescale the projected state to it when > 0 (the
+    /// loader leaves 0, "keep the projection's own energy", when the key is absent).
+    double energy = 1.0;
+    std::uint64_t seed = 1;
+    /// random: the excited modes, 1-based inclusive positions in the basis; none means all.
+    std::optional<ModeRange> band;
+    /// modes: (1-based position in the basis, amplitude) pairs.
+    std::vector<std::pair<int, double>> amplitudes;
+    /// vortices: summed, then projected on the basis.
+    std::vector<VortexSpec> vortices;
+    /// MHD only: the initial magnetic field F in the velocity basis.
+    InitialMagnetic magnetic = InitialMagnetic::Random;
+    /// random: over all modes with this energy ½|F|², drawn with this seed.
+    double magneticEnergy = 0.0;
+    std::uint64_t magneticSeed = 2;
+    /// uniform: |F| = magneticStrength along magneticDirection (not normalized by the loader,
+    /// non-zero) away from the wall (precompute/initial/UniformField.h).
+    Vec3 magneticDirection{1.0, 0.0, 0.0};
+    double magneticStrength = 1.0;
+    /// uniform: the width of the layer along the wall the field turns in; 0: one wavelength of
+    /// the basis's highest mode (uniformFieldLayer).
+    double magneticWallLayer = 0.0;
+};
+
+/// A smoke/heat emitter (`[[source]]`).
+struct SourceSpec {
+    ShapeSpec shape;
+    double density = 1.0;      ///< injected per unit time
+    double temperature = 0.0;  ///< injected per unit time
+    double start = 0.0;        ///< emits while start ≤ t < end (simulated seconds)
+    double end = std::numeric_limits<double>::infinity();
+};
+
+/// How smoke is carried (engine/README.md): RK2 semi-Lagrangian, or MacCormack with clamping (less
+/// diffusive; engine/reference/SmokeAdvection.h).
+enum class AdvectionScheme { SemiLagrangian, MacCormack };
+
+/// A solid moving through the fluid on a key-framed path (`[[obstacle]]`); the fluid's normal
+/// velocity on the faces it covers is made to match its own (seed §6.3.5).
+enum class ObstacleShape { Ball, Box, Capsule };
+
+struct ObstacleSpec {
+    ObstacleShape shape = ObstacleShape::Ball;
+    double radius = 0.0;         ///< ball, capsule
+    Vec3 halfSize{0.0, 0.0, 0.0};  ///< box: half its extent per axis
+    Vec3 axis{0.0, 0.0, 0.0};      ///< capsule: from its centre to one end of its segment
+    /// Key frames (time, centre), times increasing; the centre moves linearly between them and
+    /// holds still before the first and after the last.
+    std::vector<std::pair<double, Vec3>> path;
+};
+
+struct SmokeSpec {
+    double buoyancy = 0.0;
+    int resolutionScale = 1;
+    AdvectionScheme advection = AdvectionScheme::MacCormack;
+};
+
+struct OutputSpec {
+    int frames = 48;
+    int stepsPerFrame = 1;
+};
+
+/// A whole scene, validated: every field holds a meaningful value.
+struct SceneSpec {
+    std::filesystem::path sourceFile;  ///< the TOML file it came from (empty if built in code)
+    std::string name;                  ///< file stem, used to name outputs
+    GridSpec grid;
+    std::vector<ShapeSpec> domain;  ///< empty: the whole grid box is fluid
+    BasisSpec basis;
+    SimulationSpec simulation;
+    InitialSpec initial;
+    std::vector<SourceSpec> sources;
+    std::vector<ObstacleSpec> obstacles;
+    SmokeSpec smoke;
+    OutputSpec output;
+};
+
+}  // namespace modeflow

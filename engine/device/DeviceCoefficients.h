@@ -1,0 +1,96 @@
+#pragma once
+/// @file DeviceCoefficients.h
+/// Structural coefficients on the device, float32, and the contraction out = C(a, b), i.e.
+/// out_k = Σ_ij C[k][i][j] a_i b_j (CPU reference: StructuralCoefficients::apply), in two passes
+/// that read every stored coefficient once:
+///   1. pair sums  s(k,j) = Σ_i C[k][i][j] a_i for every pair k < j (a GEMV over the packed rows),
+///   2. combine    out_k = Σ_{j>k} s(k,j) b_j − Σ_{j<k} s(j,k) b_j   (antisymmetry).
+/// Dense coefficients are stored in tiles of PAIR_TILE_ROWS pair rows (shaders/modal_pair_sums.comp
+/// has the layout and why) and split into chunks of whole tiles when they exceed the device's
+/// buffer limit (VulkanContext::texelBufferLimit; lavapipe: 128 MiB, i.e. N ≳ 400); sparse ones
+/// are uploaded in slices of PAIR_TILE_LANES rows (shaders/modal_pair_sums_sparse.comp).
+
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "engine/vulkan/DeviceBuffer.h"
+
+namespace modeflow {
+class SparseCoefficients;
+class StructuralCoefficients;
+}
+
+namespace modeflow::vulkan {
+class CommandSequence;
+class VulkanContext;
+}  // namespace modeflow::vulkan
+
+namespace modeflow::device {
+
+struct ModalKernels;
+
+/// Where a contraction takes its group counts from: nullptr for fixed counts, or a buffer of
+/// VkDispatchIndirectCommand whose entry `first` (and the next ones) the device may have zeroed.
+struct IndirectArguments {
+    const vulkan::DeviceBuffer* buffer = nullptr;
+    std::uint32_t first = 0;
+};
+
+/// Floats of a modal vector buffer: N rounded up to a multiple of 8. The pair-sum kernel reads
+/// rows and the vector `a` eight floats per load (lavapipe turns each load into a per-lane
+/// access, so wider loads are what gets it near memory bandwidth); rows and vectors are
+/// zero-padded to that length.
+constexpr std::size_t paddedSize(int n) {
+    return (std::size_t(n) + 7) / 8 * 8;
+}
+
+class DeviceCoefficients {
+public:
+    /// Uploads `coefficients` (DenseCoefficients or SparseCoefficients) rounded to float32.
+    /// @throw modeflow::Error for another storage, fewer than 2 modes, a single pair row or the
+    /// sparse arrays above the storage buffer limit, or a failed allocation.
+    DeviceCoefficients(const vulkan::VulkanContext& context, const StructuralCoefficients& coefficients);
+
+    int size() const { return mN; }
+    bool isSparse() const { return mSparse.has_value(); }
+    std::size_t chunkCount() const { return mChunks.size(); }
+    /// Bytes of coefficient data (values and indices) one contraction reads; sparse: as CSR,
+    /// 8 bytes per entry and per row (the slices' padding not counted).
+    std::size_t streamedBytes() const { return mStreamedBytes; }
+
+    /// Group counts of the dispatches recordApply makes, in order (pair-sum dispatches, then
+    /// combine): what an IndirectArguments buffer must hold.
+    std::vector<std::uint32_t> dispatchGroups() const;
+
+    /// Records out = C(a, b) (dispatchGroups().size() dispatches).
+    /// @throw modeflow::Error if `a` holds fewer than paddedSize(N) floats (zeros past N) or b, out
+    /// fewer than N.
+    void recordApply(vulkan::CommandSequence& sequence, const ModalKernels& kernels, const vulkan::DeviceBuffer& a,
+                     const vulkan::DeviceBuffer& b, const vulkan::DeviceBuffer& out,
+                     IndirectArguments indirect = {}) const;
+
+private:
+    struct Chunk {
+        vulkan::DeviceBuffer values;
+        std::uint32_t firstPair = 0;
+        std::uint32_t pairs = 0;
+    };
+    struct SparseRows {
+        vulkan::DeviceBuffer rows;     ///< per row: pair index, first texel of its slice, texels per row, 0
+        vulkan::DeviceBuffer entries;  ///< texels of two (column, value bits) entries, slice-interleaved
+        std::uint32_t rowCount = 0;
+    };
+    /// `sparse` in slices of PAIR_TILE_LANES rows (DeviceCoefficients.cpp).
+    static SparseRows slicedRows(const vulkan::VulkanContext& context, const SparseCoefficients& sparse);
+
+    int mN = 0;
+    std::uint32_t mSubgroupsPerGroup = 1;
+    std::uint32_t mMaxGroups = 1;
+    std::vector<Chunk> mChunks;
+    std::optional<SparseRows> mSparse;
+    std::optional<vulkan::DeviceBuffer> mPairSums;
+    std::size_t mStreamedBytes = 0;
+};
+
+}  // namespace modeflow::device

@@ -1,0 +1,113 @@
+#include "engine/device/ForceField.h"
+
+#include <array>
+#include <cstdint>  // the generated header uses uint32_t without including it
+#include <vector>
+
+#include "engine/core/FaceLocation.h"
+#include "engine/core/Error.h"
+#include "engine/device/DofFaces.h"
+#include "engine/vulkan/CommandSequence.h"
+#include "engine/vulkan/VulkanContext.h"
+#include "shaders/ForceFieldParams.h"
+#include "shaders/force_field.spv.h"
+
+namespace modeflow::device {
+namespace {
+
+std::uint32_t checkedSplatCapacity(std::uint32_t maxSplats) {
+    if (maxSplats < 1) throw Error("force_field: room for at least one splat is needed, got " + std::to_string(maxSplats));
+    return maxSplats;
+}
+
+}  // namespace
+
+ForceFieldKernel::UpDofs ForceFieldKernel::uploadUpDofs(const vulkan::VulkanContext& context,
+                                                        const MacGrid& grid,
+                                                        const BasisCache& cache) {
+    std::vector<std::uint32_t> entries;
+    for (std::size_t d = 0; d < cache.faces.size(); ++d) {
+        const FaceLocation face = locateFace(grid, cache.faces[d]);
+        if (face.axis != upAxis(grid)) continue;
+        entries.insert(entries.end(), {std::uint32_t(d), std::uint32_t(face.pos[0]),
+                                       std::uint32_t(face.pos[1]), std::uint32_t(face.pos[2])});
+    }
+    const auto count = std::uint32_t(entries.size() / 4);
+    if (entries.empty()) entries.resize(4, 0u);  // a buffer is never empty; count stays 0
+    return {vulkan::DeviceBuffer::fromValues<std::uint32_t>(context, entries, "up DOFs"), count};
+}
+
+ForceFieldKernel::ForceFieldKernel(const vulkan::VulkanContext& context, const BasisCache& cache, int scale,
+                                   std::uint32_t maxSplats, std::uint32_t workgroupSize)
+    : mGrid(MacGrid::fromSpec(cache.grid)),
+      mSmoke(mGrid.refined(scale)),
+      mScale(scale),
+      mDofCount(std::uint32_t(cache.faces.size())),
+      mMaxSplats(checkedSplatCapacity(maxSplats)),
+      mGroups(groupsFor(context, cache.faces.size(), workgroupSize)),
+      mFaces(uploadDofFaces(context, cache)),
+      mUp(uploadUpDofs(context, mGrid, cache)),
+      mSplats(context, VkDeviceSize(mMaxSplats) * sizeof(shaders::ForceSplatRecord),
+              "force splats"),
+      mZero(makeKernel(context, FORCE_STAGE_ZERO, false, workgroupSize)),
+      mSplatForce(makeKernel(context, FORCE_STAGE_SPLATS, false, workgroupSize)),
+      mBuoyancy(makeKernel(context, FORCE_STAGE_BUOYANCY, false, workgroupSize)),
+      mMaskedBuoyancy(makeKernel(context, FORCE_STAGE_BUOYANCY, true, workgroupSize)) {}
+
+vulkan::ComputeKernel ForceFieldKernel::makeKernel(const vulkan::VulkanContext& context, std::uint32_t stage,
+                                           bool useMask, std::uint32_t workgroupSize) const {
+    return vulkan::ComputeKernel(context, vulkan::ComputeKernelSpec{"force_field",
+                                                    force_field_spv,
+                                                    6,
+                                                    sizeof(shaders::ForceFieldParams),
+                                                    workgroupSize,
+                                                    {stage, std::uint32_t(mGrid.dim),
+                                                     std::uint32_t(mScale), useMask},
+                                                    {1}});
+}
+
+void ForceFieldKernel::setSplats(std::span<const ForceSplat> splats) {
+    if (splats.size() > mMaxSplats)
+        throw Error("force_field: " + std::to_string(splats.size()) + " splats, room for " + std::to_string(mMaxSplats));
+    std::vector<shaders::ForceSplatRecord> records(splats.size());
+    for (std::size_t k = 0; k < splats.size(); ++k) {
+        if (!(splats[k].radius > 0.0))
+            throw Error("force_field: a splat radius must be positive, got " + std::to_string(splats[k].radius));
+        for (int a = 0; a < 3; ++a) {
+            records[k].centre[a] = float(splats[k].centre[a]);
+            records[k].force[a] = float(splats[k].force[a]);
+        }
+        records[k].radius = float(splats[k].radius);
+    }
+    mSplats.upload<shaders::ForceSplatRecord>(records);
+    mSplatCount = std::uint32_t(splats.size());
+}
+
+void ForceFieldKernel::record(vulkan::CommandSequence& sequence, double buoyancy, const vulkan::DeviceBuffer& temperature,
+                              const vulkan::DeviceBuffer* fluidMask, const vulkan::DeviceBuffer& g) const {
+    const auto smokeCells = std::uint64_t(mSmoke.cellCount());
+    requireWords("force_field", temperature, smokeCells);
+    if (fluidMask) requireWords("force_field", *fluidMask, (smokeCells + 3) / 4);
+    requireWords("force_field", g, mDofCount);
+
+    shaders::ForceFieldParams params{};
+    params.dofCount = mDofCount;
+    params.upCount = mUp.count;
+    params.splatCount = mSplatCount;
+    params.faceStart1 = std::uint32_t(mGrid.faceOffset(1));
+    params.faceStart2 = std::uint32_t(mGrid.faceOffset(2));
+    params.buoyancy = float(buoyancy);
+    for (int a = 0; a < 3; ++a) {
+        params.cells[a] = std::uint32_t(mGrid.cells[a]);
+        params.origin[a] = float(mGrid.origin[a]);
+        params.spacing[a] = float(mGrid.spacing[a]);
+    }
+    // Without a mask the temperature buffer fills the mask's binding; the shader never reads it.
+    const std::array<const vulkan::DeviceBuffer*, 6> buffers{
+        &mFaces, &mUp.buffer, &temperature, fluidMask ? fluidMask : &temperature, &mSplats, &g};
+    sequence.dispatch(mSplatCount > 0 ? mSplatForce : mZero, buffers, params, mGroups);
+    if (buoyancy != 0.0 && mUp.count > 0)
+        sequence.dispatch(fluidMask ? mMaskedBuoyancy : mBuoyancy, buffers, params, mGroups);
+}
+
+}  // namespace modeflow::device

@@ -1,0 +1,46 @@
+#include "engine/device/ModalKernels.h"
+
+// The generated headers use uint32_t without including <cstdint>.
+#include <cstdint>
+
+#include "engine/core/Error.h"
+#include "engine/vulkan/VulkanContext.h"
+#include "shaders/ModalStepParams.h"
+#include "shaders/modal_combine.spv.h"
+#include "shaders/modal_pair_sums.spv.h"
+#include "shaders/modal_pair_sums_sparse.spv.h"
+#include "shaders/modal_update.spv.h"
+
+namespace modeflow::device {
+namespace {
+
+const vulkan::VulkanContext& requireFeatures(const vulkan::VulkanContext& context) {
+    if (!context.hasSubgroupArithmetic())
+        throw Error("Vulkan device " + context.deviceName() +
+                    " lacks subgroup arithmetic in compute shaders, which the modal step needs; "
+                    "run with --device cpu");
+    return context;
+}
+
+}  // namespace
+
+ModalKernels::ModalKernels(const vulkan::VulkanContext& context)
+    : pairSums(requireFeatures(context), {"modal_pair_sums",
+                                          modal_pair_sums_spv,
+                                          3,
+                                          sizeof(shaders::PairSumsParams),
+                                          64,
+                                          {},
+                                          {0, 1}}),
+      sparsePairSums(context, {"modal_pair_sums_sparse",
+                               modal_pair_sums_sparse_spv,
+                               4,
+                               sizeof(shaders::SparsePairSumsParams),
+                               64,
+                               {},
+                               {0, 1, 2}}),
+      combine(context, {"modal_combine", modal_combine_spv, 3, sizeof(shaders::CombineParams), 64}),
+      update(context,
+             {"modal_update", modal_update_spv, 10, sizeof(shaders::ModalUpdateParams), 256}) {}
+
+}  // namespace modeflow::device

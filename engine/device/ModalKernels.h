@@ -1,0 +1,27 @@
+#pragma once
+/// @file ModalKernels.h
+/// The pipelines of the modal step (shaders/modal_*.comp), built once per context and shared by
+/// DeviceCoefficients and ModalStepper. They use subgroup arithmetic, which every desktop GPU and
+/// lavapipe offer; a device without it is refused with a clear message.
+
+#include "engine/vulkan/ComputeKernel.h"
+
+namespace modeflow::vulkan {
+class VulkanContext;
+}  // namespace modeflow::vulkan
+
+namespace modeflow::device {
+
+
+struct ModalKernels {
+    /// @throw modeflow::Error if the device lacks subgroup arithmetic in compute shaders or a
+    /// pipeline cannot be created.
+    explicit ModalKernels(const vulkan::VulkanContext& context);
+
+    vulkan::ComputeKernel pairSums;        ///< dense: sums[p] = Σ_i C_p[i] a_i, a tile of pairs per 8 invocations
+    vulkan::ComputeKernel sparsePairSums;  ///< sparse rows: one invocation per stored pair
+    vulkan::ComputeKernel combine;         ///< out_k from the pair sums and b, one subgroup per k
+    vulkan::ComputeKernel update;          ///< the integrators' state updates, one workgroup
+};
+
+}  // namespace modeflow::device

@@ -1,0 +1,89 @@
+#include "engine/device/ObstacleCorrection.h"
+
+#include <array>
+// The generated headers use uint32_t without including <cstdint>.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "engine/core/Error.h"
+#include "engine/device/DeviceCoefficients.h"
+#include "engine/device/DofFaces.h"
+#include "engine/vulkan/CommandSequence.h"
+#include "shaders/ObstacleParams.h"
+#include "shaders/modal_correct.spv.h"
+#include "shaders/obstacle_mismatch.spv.h"
+
+namespace modeflow::device {
+namespace {
+
+vulkan::DeviceBuffer zeros(const vulkan::VulkanContext& context, std::size_t count, const char* name) {
+    return vulkan::DeviceBuffer::fromValues<float>(context, std::vector<float>(count, 0.0f), name);
+}
+
+void copy3(float to[3], const Vec3& from) {
+    for (int a = 0; a < 3; ++a) to[a] = float(from[a]);
+}
+
+}  // namespace
+
+ObstacleCorrection::ObstacleCorrection(const vulkan::VulkanContext& context, const BasisCache& cache)
+    : mContext(context),
+      mGrid(MacGrid::fromSpec(cache.grid)),
+      mDofCount(std::uint32_t(cache.faces.size())),
+      mModeCount(std::uint32_t(cache.velocity.modes.cols())),
+      mFaces(uploadDofFaces(context, cache)),
+      mObstacles(context, maxObstacles * sizeof(shaders::ObstacleRecord), "obstacles"),
+      mMismatch(zeros(context, std::size_t(mGrid.faceTotal()), "obstacle mismatch")),
+      mCorrection(zeros(context, paddedSize(int(mModeCount)), "obstacle correction")),
+      mProjection(context, cache, FaceQuantity::FaceField),
+      mMismatchKernel(context, {"obstacle_mismatch", obstacle_mismatch_spv, 4,
+                                sizeof(shaders::ObstacleMismatchParams), 64}),
+      mCorrectKernel(context, {"modal_correct", modal_correct_spv, 2, sizeof(shaders::ModalCorrectParams), 64}) {}
+
+void ObstacleCorrection::setObstacles(std::span<const MovingObstacle> obstacles, double t) {
+    if (obstacles.size() > std::size_t(maxObstacles))
+        throw Error(std::to_string(obstacles.size()) + " obstacles; the runtime takes at most " +
+                    std::to_string(maxObstacles));
+    std::vector<shaders::ObstacleRecord> records(obstacles.size());
+    for (std::size_t o = 0; o < obstacles.size(); ++o) {
+        const ObstacleSpec& spec = obstacles[o].spec;
+        shaders::ObstacleRecord& r = records[o];
+        copy3(r.centre, obstacles[o].centreAt(t));
+        copy3(r.velocity, obstacles[o].velocityAt(t));
+        copy3(r.halfSize, spec.halfSize);
+        copy3(r.axis, spec.axis);
+        r.radius = float(spec.radius);
+        r.shape = spec.shape == ObstacleShape::Box       ? OBSTACLE_BOX
+                  : spec.shape == ObstacleShape::Capsule ? OBSTACLE_CAPSULE
+                                                         : OBSTACLE_BALL;
+    }
+    if (!records.empty()) mObstacles.upload<shaders::ObstacleRecord>(records);
+    mObstacleCount = std::uint32_t(records.size());
+}
+
+void ObstacleCorrection::record(vulkan::CommandSequence& sequence, const ModeBuffer& modes, const vulkan::DeviceBuffer& faceField,
+                                const vulkan::DeviceBuffer& v) const {
+    if (mObstacleCount == 0) return;
+    requireWords("obstacle_mismatch", faceField, std::uint64_t(mGrid.faceTotal()));
+    requireWords("modal_correct", v, mModeCount);
+    shaders::ObstacleMismatchParams params{};
+    params.dofCount = mDofCount;
+    params.obstacleCount = mObstacleCount;
+    params.faceStart1 = std::uint32_t(mGrid.faceOffset(1));
+    params.faceStart2 = std::uint32_t(mGrid.faceOffset(2));
+    params.dim = std::uint32_t(mGrid.dim);
+    for (int a = 0; a < 3; ++a) {
+        params.cells[a] = std::uint32_t(mGrid.cells[a]);
+        params.origin[a] = float(mGrid.origin[a]);
+        params.spacing[a] = float(mGrid.spacing[a]);
+    }
+    const std::array<const vulkan::DeviceBuffer*, 4> mismatchBuffers{&mFaces, &faceField, &mObstacles, &mMismatch};
+    sequence.dispatch(mMismatchKernel, mismatchBuffers, params, groupsFor(mContext, mDofCount, 64));
+    mProjection.record(sequence, modes, mMismatch, mCorrection);
+    const std::array<const vulkan::DeviceBuffer*, 2> correctBuffers{&v, &mCorrection};
+    sequence.dispatch(mCorrectKernel, correctBuffers, shaders::ModalCorrectParams{mModeCount, 0, 0, 0},
+                      (mModeCount + 63) / 64);
+}
+
+}  // namespace modeflow::device

@@ -1,0 +1,51 @@
+#pragma once
+/// @file ObstacleCorrection.h
+/// Moving obstacles on the device (seed §6.3.5; CPU reference engine/simulation/MovingObstacle.h):
+/// records mismatch → projection → v −= Δv, where the mismatch is the fluid's face velocity
+/// minus the obstacle's normal velocity on the DOF faces an obstacle covers.
+
+#include <cstdint>
+#include <span>
+
+#include "engine/core/MacGrid.h"
+#include "engine/simulation/MovingObstacle.h"
+#include "engine/format/BasisCache.h"
+#include "engine/device/ForceProjection.h"
+#include "engine/vulkan/ComputeKernel.h"
+#include "engine/vulkan/DeviceBuffer.h"
+
+namespace modeflow::vulkan {
+class CommandSequence;
+class VulkanContext;
+}  // namespace modeflow::vulkan
+
+namespace modeflow::device {
+
+class ModeBuffer;
+
+class ObstacleCorrection {
+public:
+    /// For the DOFs, grid and modes of `cache`.
+    /// @throw modeflow::Error if a creation call fails.
+    ObstacleCorrection(const vulkan::VulkanContext& context, const BasisCache& cache);
+
+    /// The obstacles where they are at time t. Between submissions only.
+    /// @throw modeflow::Error for more than maxObstacles.
+    void setObstacles(std::span<const MovingObstacle> obstacles, double t);
+
+    /// Records v −= Ψᵀ⋆(mismatch of `faceField`) with the basis in `modes`; nothing without obstacles.
+    void record(vulkan::CommandSequence& sequence, const ModeBuffer& modes, const vulkan::DeviceBuffer& faceField,
+                const vulkan::DeviceBuffer& v) const;
+
+private:
+    const vulkan::VulkanContext& mContext;
+    MacGrid mGrid;
+    std::uint32_t mDofCount = 0;
+    std::uint32_t mModeCount = 0;
+    std::uint32_t mObstacleCount = 0;
+    vulkan::DeviceBuffer mFaces, mObstacles, mMismatch, mCorrection;
+    ForceProjectionKernel mProjection;
+    vulkan::ComputeKernel mMismatchKernel, mCorrectKernel;
+};
+
+}  // namespace modeflow::device

@@ -1,0 +1,170 @@
+#include "engine/device/Simulation.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include "engine/core/Error.h"
+#include "engine/dynamics/ModalDivergence.h"
+#include "engine/simulation/BackendCapabilities.h"
+
+namespace modeflow::device {
+namespace {
+
+constexpr int kMaxSubsteps = 16;
+
+/// The device's row of the capability table, checked before any upload.
+SimulationSettings supported(SimulationSettings settings) {
+    if (settings.mhd && !capabilitiesOf(BackendKind::Vulkan).mhd)
+        throw Error("[simulation].mhd runs on the CPU reference only; use --device cpu");
+    return settings;
+}
+
+/// Dispatches one step may record, for the timestamp pool: the midpoint iterations dominate.
+std::uint32_t maxDispatchesPerStep(const ModalStepper& stepper) {
+    return std::uint32_t(kMaxSubsteps * stepper.dispatchesPerStep() + 64);
+}
+
+std::vector<double> widened(const std::vector<float>& values) {
+    return {values.begin(), values.end()};
+}
+
+}  // namespace
+
+Simulation::Simulation(const vulkan::VulkanContext& context, const BasisCache& cache,
+                       const StructuralCoefficients& coefficients, SimulationSettings settings,
+                       std::span<const std::uint8_t> smokeMask, bool timestamps)
+    : mSettings(supported(std::move(settings))),
+      mStepper(context, coefficients, mSettings.fluid,
+               DeviceStepSettings{mSettings.integrator}),
+      mModes(context, cache.velocity.modes, mSettings.basisPrecision),
+      mReconstruction(context, cache),
+      mFaceVelocity(mReconstruction.makeFaceField("grid velocity")),
+      mForceField(context, cache, mSettings.smokeScale),
+      mProjection(context, cache, FaceQuantity::Density),
+      mForceDensity(context, std::max<std::size_t>(cache.faces.size(), 1) * sizeof(float),
+                    "force density"),
+      mObstacles(context, cache),
+      mSmoke(context, MacGrid::fromSpec(cache.grid), mSettings.smokeScale, smokeMask),
+      mAdvection(context),
+      mSequence(context, timestamps, maxDispatchesPerStep(mStepper)) {
+    if (!(mSettings.dt > 0.0)) throw Error("simulation: dt must be positive");
+    if (mSettings.stepsPerFrame < 1) throw Error("simulation: steps per frame must be at least 1");
+}
+
+void Simulation::restore(double time, const Eigen::VectorXd& v, const SmokeFields& smoke) {
+    mStepper.setState(v);
+    const std::vector<float> density(smoke.density.begin(), smoke.density.end()),
+        temperature(smoke.temperature.begin(), smoke.temperature.end());
+    mSmoke.upload(density, temperature);
+    mTime = time;
+    mStep = std::lround(time / mSettings.dt);
+}
+
+void Simulation::setSplats(std::span<const ForceSplat> splats) {
+    mForceField.setSplats(splats);
+    // Without forces the step reads the force buffer as it is: make it zero.
+    if (!forcesActive()) mStepper.setForce(Eigen::VectorXd::Zero(mStepper.size()));
+}
+
+void Simulation::setObstacles(std::vector<MovingObstacle> obstacles) {
+    if (obstacles.size() > std::size_t(maxObstacles))
+        throw Error("simulation: " + std::to_string(obstacles.size()) + " obstacles, at most " +
+                    std::to_string(maxObstacles) + " move at once");
+    mSettings.obstacles = std::move(obstacles);
+}
+
+void Simulation::setViscosity(double viscosity) {
+    FluidParameters fluid = mSettings.fluid;
+    fluid.viscosity = viscosity;
+    mStepper.setParameters(fluid);
+    mSettings.fluid = std::move(fluid);
+}
+
+void Simulation::setIntegrator(Integrator integrator) {
+    mStepper.setScheme(integrator);
+    mSettings.integrator = integrator;
+}
+
+void Simulation::recordStep(std::vector<std::size_t>& boundaries) {
+    const double dt = mSettings.dt;
+    // Emitters switch on and off at step boundaries; the device list changes only when they do.
+    std::vector<bool> active(mSettings.emitters.size());
+    for (std::size_t e = 0; e < active.size(); ++e) active[e] = mSettings.emitters[e].activeAt(mTime);
+    if (active != mActiveEmitters) {
+        mSmoke.setEmitters(activeEmitters(mSettings.emitters, mTime));
+        mActiveEmitters = std::move(active);
+    }
+    boundaries.push_back(mSequence.dispatchCount());
+    if (forcesActive()) {
+        mForceField.record(mSequence, mSettings.buoyancy, mSmoke.temperature(), &mSmoke.mask(),
+                           mForceDensity);
+        mProjection.record(mSequence, mModes, mForceDensity, mStepper.forceBuffer());
+    }
+    boundaries.push_back(mSequence.dispatchCount());
+    mStepper.recordStep(mSequence, dt, mSubsteps);
+    boundaries.push_back(mSequence.dispatchCount());
+    mReconstruction.record(mSequence, mModes, mStepper.stateBuffer(), mFaceVelocity);
+    boundaries.push_back(mSequence.dispatchCount());
+    if (!mSettings.obstacles.empty()) {
+        // Where the obstacles are at the end of the step, which the advection then sees.
+        mObstacles.setObstacles(mSettings.obstacles, mTime + dt);
+        mObstacles.record(mSequence, mModes, mFaceVelocity, mStepper.stateBuffer());
+        mReconstruction.record(mSequence, mModes, mStepper.stateBuffer(), mFaceVelocity);
+    }
+    boundaries.push_back(mSequence.dispatchCount());
+    mAdvection.record(mSequence, mSmoke, mFaceVelocity, dt, mSettings.advection);
+    boundaries.push_back(mSequence.dispatchCount());
+}
+
+FrameStats Simulation::advanceSteps(int steps) {
+    FrameStats stats;
+    for (int s = 0; s < steps; ++s) {
+        std::vector<std::size_t> boundaries;
+        recordStep(boundaries);
+        mSequence.submitAndWait();
+        mTime += mSettings.dt;
+        ++stats.steps;
+        // N floats: as cheap as the status read below (measured in the README).
+        requireFiniteModalState(mStepper.state(), ++mStep, mTime);
+
+        const DeviceStepStatus status = mStepper.status();
+        stats.maxIterations = std::max(stats.maxIterations, status.iterations);
+        const int failed = status.unconvergedSteps - mUnconverged;
+        mUnconverged = status.unconvergedSteps;
+        stats.unconvergedSteps += failed;
+        // A failed substep kept its state (no blow-up); take smaller ones from now on, and go
+        // back to larger ones once the flow has calmed down for a while.
+        if (failed > 0) {
+            mSubsteps = std::min(2 * mSubsteps, kMaxSubsteps);
+            mEasySteps = 0;
+        } else if (mSubsteps > 1 && status.iterations <= 8 && ++mEasySteps >= 50) {
+            mSubsteps /= 2;
+            mEasySteps = 0;
+        }
+        stats.substeps = std::max(stats.substeps, mSubsteps);
+        const std::vector<double>& times = mSequence.dispatchTimesMs();
+        if (times.empty()) continue;
+        ++stats.timedSteps;
+        const std::array<double*, 5> stages{&stats.forcesMs, &stats.modalMs, &stats.reconstructionMs,
+                                            &stats.obstaclesMs, &stats.advectionMs};
+        for (std::size_t stage = 0; stage < stages.size(); ++stage)
+            for (std::size_t d = boundaries[stage]; d < boundaries[stage + 1]; ++d)
+                *stages[stage] += times[d];
+    }
+    return stats;
+}
+
+SmokeFields Simulation::smoke() const {
+    std::vector<float> density(std::size_t(mSmoke.cellCount())), temperature(density.size());
+    mSmoke.download(density, temperature);
+    return {widened(density), widened(temperature)};
+}
+
+std::vector<double> Simulation::faceVelocity() const {
+    std::vector<float> faces(std::size_t(mReconstruction.grid().faceTotal()));
+    mFaceVelocity.download<float>(faces);
+    return widened(faces);
+}
+
+}  // namespace modeflow::device

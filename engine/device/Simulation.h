@@ -1,0 +1,92 @@
+#pragma once
+/// @file Simulation.h
+/// One scene on a Vulkan device (issue 4's runtime): the modal state, the velocity basis, the
+/// grid velocity and the smoke all live in device buffers, and each step is one queue submission
+///
+///     force field (buoyancy from the smoke temperature + stirring splats) → projection f = Ψᵀ⋆F
+///     → modal step (viscosity, LANS-α) → reconstruction u = Σ v_i Ψ_i
+///     → moving obstacles (v −= projected mismatch, reconstruct again) → smoke advection + emitters
+///
+/// with nothing read back; the host reads the velocity, smoke or grid velocity only when it asks
+/// (display, export). CPU reference of the whole chain: reference::Simulation.
+
+#include <cstdint>
+#include <vector>
+
+#include "engine/device/ForceField.h"
+#include "engine/device/ForceProjection.h"
+#include "engine/device/ModalStepper.h"
+#include "engine/device/ModeBuffer.h"
+#include "engine/device/ObstacleCorrection.h"
+#include "engine/device/SmokeAdvection.h"
+#include "engine/device/SmokeState.h"
+#include "engine/device/VelocityReconstruction.h"
+#include "engine/simulation/Simulator.h"
+#include "engine/vulkan/CommandSequence.h"
+#include "engine/vulkan/DeviceBuffer.h"
+
+namespace modeflow::device {
+
+class Simulation final : public Simulator {
+public:
+    /// Uploads the basis and coefficients. `smokeMask`: one byte per cell of the smoke grid
+    /// (basis grid refined by settings.smokeScale), non-zero inside Ω (precompute's fluidMask).
+    /// `timestamps`: time each stage on the device (FrameStats), where the queue can.
+    /// @throw modeflow::Error for settings the device does not run (BackendCapabilities: MHD,
+    /// trapezoidal), a mask of the wrong size, or a device error.
+    Simulation(const vulkan::VulkanContext& context, const BasisCache& cache,
+               const StructuralCoefficients& coefficients, SimulationSettings settings,
+               std::span<const std::uint8_t> smokeMask, bool timestamps = false);
+
+    void setVelocity(const Eigen::VectorXd& v) override { mStepper.setState(v); }
+    Eigen::VectorXd velocity() const override { return mStepper.state(); }
+    void restore(double time, const Eigen::VectorXd& v, const SmokeFields& smoke) override;
+    void setSplats(std::span<const ForceSplat> splats) override;
+    /// Each step is its own submission.
+    FrameStats advanceSteps(int steps) override;
+    SmokeFields smoke() const override;
+    std::vector<double> faceVelocity() const override;
+    const SimulationSettings& settings() const override { return mSettings; }
+    const MacGrid& smokeGrid() const override { return mSmoke.smokeGrid(); }
+    double time() const override { return mTime; }
+
+    void setObstacles(std::vector<MovingObstacle> obstacles) override;
+    void setViscosity(double viscosity) override;
+    void setIntegrator(Integrator integrator) override;
+    /// Timestamps (constructed with `timestamps`; on by default then) cost lavapipe about as much
+    /// as the step itself, so a window showing times a few times a second times a sample
+    /// (FrameStats::timedSteps).
+    void setTiming(bool on) override { mSequence.setTiming(on); }
+    /// The smoke and the grid velocity on the device, for kernels that draw them (valid between
+    /// frames; the velocity is a face field of the basis grid).
+    const SmokeState& smokeState() const { return mSmoke; }
+    const vulkan::DeviceBuffer& faceVelocityBuffer() const { return mFaceVelocity; }
+
+private:
+    /// Records one whole step; adds each stage's dispatch range to `ranges`.
+    void recordStep(std::vector<std::size_t>& boundaries);
+    bool forcesActive() const { return mSettings.buoyancy != 0.0 || mForceField.splatCount() > 0; }
+
+    SimulationSettings mSettings;
+    ModalStepper mStepper;
+    ModeBuffer mModes;
+    ReconstructionKernel mReconstruction;
+    vulkan::DeviceBuffer mFaceVelocity;
+    ForceFieldKernel mForceField;
+    ForceProjectionKernel mProjection;
+    vulkan::DeviceBuffer mForceDensity;
+    ObstacleCorrection mObstacles;
+    SmokeState mSmoke;
+    SmokeAdvectionKernels mAdvection;
+    vulkan::CommandSequence mSequence;
+    std::vector<bool> mActiveEmitters;  ///< what the device's emitter list holds now
+    /// Modal substeps per step: doubled when an implicit solve fails to converge, halved again
+    /// after a long run of easy steps (see advanceFrame()).
+    int mSubsteps = 1;
+    int mEasySteps = 0;
+    int mUnconverged = 0;  ///< the stepper's count of failed substeps so far
+    double mTime = 0.0;
+    long mStep = 0;  ///< steps since t = 0, for the divergence message
+};
+
+}  // namespace modeflow::device

@@ -1,0 +1,153 @@
+#include "engine/device/SmokeAdvection.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+// The generated header uses uint32_t without including <cstdint>.
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "engine/core/Error.h"
+#include "engine/device/SmokeState.h"
+#include "engine/vulkan/CommandSequence.h"
+#include "engine/vulkan/DeviceBuffer.h"
+#include "engine/vulkan/VulkanContext.h"
+#include "shaders/SmokeAdvectParams.h"
+#include "shaders/smoke_advect_correct_2d.spv.h"
+#include "shaders/smoke_advect_correct_3d.spv.h"
+#include "shaders/smoke_advect_forward_2d.spv.h"
+#include "shaders/smoke_advect_forward_3d.spv.h"
+#include "shaders/smoke_advect_sl_2d.spv.h"
+#include "shaders/smoke_advect_sl_3d.spv.h"
+#include "shaders/smoke_face_pairs.spv.h"
+
+namespace modeflow::device {
+namespace {
+
+shaders::SmokeAdvectParams stepParams(const SmokeState& state, double dt) {
+    const MacGrid& basis = state.basisGrid();
+    const MacGrid& smoke = state.smokeGrid();
+    shaders::SmokeAdvectParams p{};
+    p.cellsX = std::uint32_t(smoke.cells[0]);
+    p.cellsY = std::uint32_t(smoke.cells[1]);
+    p.cellsZ = std::uint32_t(smoke.cells[2]);
+    p.fluidCount = state.fluidCellCount();
+    p.basisX = std::uint32_t(basis.cells[0]);
+    p.basisY = std::uint32_t(basis.cells[1]);
+    p.basisZ = std::uint32_t(basis.cells[2]);
+    p.scale = std::uint32_t(state.scale());
+    p.faceOffsetY = std::uint32_t(basis.faceOffset(1));
+    p.faceOffsetZ = std::uint32_t(basis.faceOffset(2));
+    // Velocity times dt / spacing: smoke cells per step, as in the CPU reference.
+    p.stepX = float(dt / smoke.spacing[0]);
+    p.stepY = float(dt / smoke.spacing[1]);
+    p.stepZ = smoke.dim == 3 ? float(dt / smoke.spacing[2]) : 0.0f;
+    p.dt = float(dt);
+    return p;
+}
+
+shaders::SmokeFacePairsParams pairParams(const MacGrid& basis) {
+    shaders::SmokeFacePairsParams p{};
+    p.faceCount = std::uint32_t(basis.faceTotal());
+    return p;
+}
+
+/// One of the smoke_advect_<stage>_<dim>d kernels (bindings 0-7 of shaders/SmokeAdvect.glsl):
+/// the read-only inputs as texels, and MacCormack's hat and record too in the correction, which
+/// reads what the forward stage wrote.
+vulkan::ComputeKernel advectKernel(const vulkan::VulkanContext& context, const char* name,
+                           std::span<const std::uint32_t> spirv, std::uint32_t stage,
+                           std::uint32_t workgroupSize) {
+    std::vector<std::uint32_t> texels{0, 1, 2, 3};
+    if (stage == SMOKE_STAGE_MACCORMACK_CORRECT) texels.insert(texels.end(), {4, 5});
+    return vulkan::ComputeKernel(context, vulkan::ComputeKernelSpec{name,
+                                                    spirv,
+                                                    8,
+                                                    sizeof(shaders::SmokeAdvectParams),
+                                                    workgroupSize,
+                                                    {},
+                                                    std::move(texels)});
+}
+
+}  // namespace
+
+SmokeAdvectionKernels::SmokeAdvectionKernels(const vulkan::VulkanContext& context,
+                                             std::uint32_t workgroupSize)
+    : mContext(context.requireShaderInt64("the smoke advection")),
+      mFacePairs(context, vulkan::ComputeKernelSpec{"smoke_face_pairs",
+                                            smoke_face_pairs_spv,
+                                            3,
+                                            sizeof(shaders::SmokeFacePairsParams),
+                                            workgroupSize,
+                                            {},
+                                            {0}}),
+      mStages{advectKernel(context, "smoke_advect_sl_2d", smoke_advect_sl_2d_spv,
+                           SMOKE_STAGE_SEMI_LAGRANGIAN, workgroupSize),
+              advectKernel(context, "smoke_advect_forward_2d", smoke_advect_forward_2d_spv,
+                           SMOKE_STAGE_MACCORMACK_FORWARD, workgroupSize),
+              advectKernel(context, "smoke_advect_correct_2d", smoke_advect_correct_2d_spv,
+                           SMOKE_STAGE_MACCORMACK_CORRECT, workgroupSize),
+              advectKernel(context, "smoke_advect_sl_3d", smoke_advect_sl_3d_spv,
+                           SMOKE_STAGE_SEMI_LAGRANGIAN, workgroupSize),
+              advectKernel(context, "smoke_advect_forward_3d", smoke_advect_forward_3d_spv,
+                           SMOKE_STAGE_MACCORMACK_FORWARD, workgroupSize),
+              advectKernel(context, "smoke_advect_correct_3d", smoke_advect_correct_3d_spv,
+                           SMOKE_STAGE_MACCORMACK_CORRECT, workgroupSize)} {}
+
+const vulkan::ComputeKernel& SmokeAdvectionKernels::stageKernel(std::uint32_t stage, int dim) const {
+    return mStages[std::size_t(stage) + (dim == 3 ? 3 : 0)];
+}
+
+template <typename Params>
+void SmokeAdvectionKernels::dispatchAll(vulkan::CommandSequence& sequence, const vulkan::ComputeKernel& kernel,
+                                        std::span<const vulkan::DeviceBuffer* const> buffers, Params& params,
+                                        std::uint32_t Params::*first, std::int64_t count,
+                                        std::uint32_t firstScale) const {
+    const std::int64_t groupSize = kernel.workgroupSize();
+    const std::int64_t perDispatch = std::int64_t(mContext.properties().limits.maxComputeWorkGroupCount[0]) * groupSize;
+    for (std::int64_t start = 0; start < count; start += perDispatch) {
+        params.*first = std::uint32_t(start) * firstScale;
+        const std::int64_t chunk = std::min(perDispatch, count - start);
+        sequence.dispatch(kernel, buffers, params, std::uint32_t((chunk + groupSize - 1) / groupSize));
+    }
+}
+
+void SmokeAdvectionKernels::record(vulkan::CommandSequence& sequence, SmokeState& state, const vulkan::DeviceBuffer& velocity,
+                                   double dt, AdvectionScheme scheme) const {
+    const std::int64_t faces = state.basisGrid().faceTotal();
+    if (velocity.bytes() < VkDeviceSize(faces) * sizeof(float))
+        throw Error("smoke_advect: velocity buffer \"" + velocity.name() + "\" holds " +
+                    std::to_string(velocity.bytes()) + " bytes, the basis grid's " + std::to_string(faces) +
+                    " faces need " + std::to_string(faces * sizeof(float)));
+    if (!std::isfinite(dt)) throw Error("smoke_advect: time step " + std::to_string(dt) + " is not finite");
+    const std::int64_t cells = state.cellCount();
+    if (cells >= (std::int64_t(1) << 32))
+        throw Error("smoke_advect: " + std::to_string(cells) + " smoke cells, at most 2^32 - 1 supported");
+
+    shaders::SmokeFacePairsParams pairs = pairParams(state.basisGrid());
+    // Bindings 0-2 of shaders/smoke_face_pairs.comp: the velocity as texels and as floats.
+    const std::array<const vulkan::DeviceBuffer*, 3> pairBuffers{&velocity, &velocity, &state.facePairs()};
+    dispatchAll(sequence, mFacePairs, pairBuffers, pairs, &shaders::SmokeFacePairsParams::firstFace,
+                (faces + 3) / 4, 4);
+
+    shaders::SmokeAdvectParams params = stepParams(state, dt);
+    // Bindings 0-7 of shaders/SmokeAdvect.glsl.
+    const std::array<const vulkan::DeviceBuffer*, 8> buffers{
+        &state.facePairs(), &state.fluidCells(), &state.stencilMask(), &state.fields(),
+        &state.hat(),       &state.record(),     &state.nextFields(),  &state.temperature()};
+    const auto stage = [&](std::uint32_t s) {
+        dispatchAll(sequence, stageKernel(s, state.smokeGrid().dim), buffers, params,
+                    &shaders::SmokeAdvectParams::firstCell, state.fluidCellCount());
+    };
+    if (scheme == AdvectionScheme::SemiLagrangian) {
+        stage(SMOKE_STAGE_SEMI_LAGRANGIAN);
+    } else {
+        stage(SMOKE_STAGE_MACCORMACK_FORWARD);
+        stage(SMOKE_STAGE_MACCORMACK_CORRECT);
+    }
+    state.flip();
+}
+
+}  // namespace modeflow::device

@@ -1,0 +1,83 @@
+#pragma once
+/// @file SmokeAdvection.h
+/// One smoke advection step of density and temperature on the device, float32
+/// (shaders/SmokeAdvect.glsl; CPU reference and the rules: engine/reference/SmokeAdvection.h).
+/// Each step first pairs the velocity faces (shaders/smoke_face_pairs.comp); then
+/// semi-Lagrangian is one dispatch, MacCormack two (forward and backward traces with the forward
+/// sample, then the backward sample and the clamped correction), over the fluid cells only, both
+/// fields in each. Emitters are added in the step's last dispatch.
+///
+/// GPU ms per step on lavapipe (Mesa 22.3, one worker thread: LP_NUM_THREADS=1; 2-core machine;
+/// whole box fluid, smoke scale 1; SmokeKernelTest's TimingPerStep with MODEFLOW_SMOKE_TIMING=full,
+/// best of 4 runs, same session), the single-kernel layout before it -> this one
+/// (shaders/SmokeAdvect.glsl says what changed and why):
+///
+///                semi-Lagrangian      MacCormack
+///     2D 128²     3.15 ->  0.66      6.90 ->  1.16
+///     2D 256²    14.8  ->  2.58     28.3  ->  4.66
+///     3D 32³      9.7  ->  2.3      23.9  ->  4.1
+///     3D 48³     37.4  -> 12.0     102.7  -> 18.1
+///     3D 64³    103.7  -> 23.3     286.8  -> 32.7
+///
+/// Then every read-only input fetched as texels instead of 64-bit storage loads; same settings,
+/// three runs alternating old and new in one session, range of each ms:
+///
+///                semi-Lagrangian              MacCormack
+///     2D 128²   0.67-1.00 -> 0.56-0.69     1.23-1.90 -> 0.90-1.22
+///     2D 256²   2.76-4.40 -> 1.95-2.68     4.72-6.87 -> 3.51-3.67
+///     3D 32³    2.45-4.06 -> 1.60-2.10     4.17-4.73 -> 2.95-4.07
+///     3D 48³   10.8-13.6  -> 5.6-7.6      14.8-23.3  -> 9.4-13.2
+///     3D 64³   22.9-30.4  -> 12.9-19.2    33.3-36.4  -> 22.8-31.4
+
+#include <array>
+#include <cstdint>
+#include <span>
+
+#include "engine/core/SceneSpec.h"
+#include "engine/vulkan/ComputeKernel.h"
+
+namespace modeflow::vulkan {
+class CommandSequence;
+class DeviceBuffer;
+class VulkanContext;
+}  // namespace modeflow::vulkan
+
+namespace modeflow::device {
+
+class SmokeState;
+
+class SmokeAdvectionKernels {
+public:
+    /// `workgroupSize`: any; 128 ran 2-4% faster than 64 on lavapipe, and suits GPUs.
+    /// @throw modeflow::Error if the device lacks 64-bit integers in shaders (shaderInt64) or a
+    /// pipeline cannot be created.
+    explicit SmokeAdvectionKernels(const vulkan::VulkanContext& context, std::uint32_t workgroupSize = 128);
+
+    /// Records one step of `state` by `velocity` (a float32 face field of state.basisGrid(),
+    /// MacGrid::faceIndex order) over `dt`, then the state's emitters, and flips the state so
+    /// that its current fields are the step's result once the sequence is submitted. Grids
+    /// larger than one dispatch can cover are split over several dispatches.
+    /// @throw modeflow::Error when the velocity buffer is smaller than the basis grid's face
+    /// count or has no texel view (it is read as texels), dt is not finite, or the smoke grid has
+    /// 2^32 cells or more.
+    void record(vulkan::CommandSequence& sequence, SmokeState& state, const vulkan::DeviceBuffer& velocity, double dt,
+                AdvectionScheme scheme) const;
+
+private:
+    /// Dispatches `kernel` over `count` invocations in chunks of at most the group count limit,
+    /// each with its first invocation times `firstScale` in params.*first.
+    template <typename Params>
+    void dispatchAll(vulkan::CommandSequence& sequence, const vulkan::ComputeKernel& kernel,
+                     std::span<const vulkan::DeviceBuffer* const> buffers, Params& params, std::uint32_t Params::*first,
+                     std::int64_t count, std::uint32_t firstScale = 1) const;
+
+    /// The kernel of `stage` (SMOKE_STAGE_*) for a `dim`-dimensional smoke grid.
+    const vulkan::ComputeKernel& stageKernel(std::uint32_t stage, int dim) const;
+
+    const vulkan::VulkanContext& mContext;
+    vulkan::ComputeKernel mFacePairs;
+    /// By stage (semi-Lagrangian, MacCormack forward, MacCormack correction), 2D then 3D.
+    std::array<vulkan::ComputeKernel, 6> mStages;
+};
+
+}  // namespace modeflow::device

@@ -1,0 +1,160 @@
+#include "engine/device/SmokeState.h"
+
+#include <algorithm>
+#include <bit>
+#include <string>
+
+#include "engine/core/Error.h"
+#include "engine/vulkan/VulkanContext.h"
+#include "shaders/SmokeAdvectParams.h"
+
+namespace modeflow::device {
+namespace {
+
+/// The mask as 0 and 1, after checking its size and the grid's extent.
+std::vector<std::uint8_t> fluidFlags(const MacGrid& smoke, std::span<const std::uint8_t> mask) {
+    if (mask.size() != std::size_t(smoke.cellCount()))
+        throw Error("smoke state: the fluid mask has " + std::to_string(mask.size()) + " entries, the smoke grid " +
+                    std::to_string(smoke.cellCount()) + " cells");
+    if (smoke.cells[0] > int(SMOKE_CELL_AXIS_LIMIT) || smoke.cells[1] > int(SMOKE_CELL_AXIS_LIMIT))
+        throw Error("smoke state: the smoke grid has " + std::to_string(smoke.cells[0]) + " x " +
+                    std::to_string(smoke.cells[1]) + " cells along x and y, the device kernels take at most " +
+                    std::to_string(SMOKE_CELL_AXIS_LIMIT) + " along each");
+    std::vector<std::uint8_t> flags(mask.size());
+    for (std::size_t c = 0; c < mask.size(); ++c) flags[c] = mask[c] != 0;
+    return flags;
+}
+
+std::vector<std::int64_t> fluidIndices(const std::vector<std::uint8_t>& fluid) {
+    std::vector<std::int64_t> indices;
+    for (std::size_t c = 0; c < fluid.size(); ++c)
+        if (fluid[c]) indices.push_back(std::int64_t(c));
+    return indices;
+}
+
+/// `values` padded with zeros to whole texels, at least one: the kernels read these buffers as
+/// texels (DeviceBuffer::texelView), which cover whole texels only.
+template <typename T>
+vulkan::DeviceBuffer texelBuffer(const vulkan::VulkanContext& context, std::vector<T> values,
+                         const std::string& name) {
+    static_assert(vulkan::DeviceBuffer::kTexelBytes % sizeof(T) == 0);
+    constexpr std::size_t perTexel = vulkan::DeviceBuffer::kTexelBytes / sizeof(T);
+    values.resize(std::max<std::size_t>((values.size() + perTexel - 1) / perTexel, 1) * perTexel,
+                  T{});
+    const std::size_t bytes = values.size() * sizeof(T);
+    if (bytes > context.texelBufferLimit())
+        throw Error("smoke state: " + name + " would take " + std::to_string(bytes) +
+                    " bytes, more than the " + std::to_string(context.texelBufferLimit()) +
+                    "-byte texel buffer limit of " + context.deviceName());
+    return vulkan::DeviceBuffer::fromValues<T>(context, values, name);
+}
+
+/// A buffer of `bytes` (a multiple of 4) holding zeros, padded to whole texels.
+vulkan::DeviceBuffer zeroBuffer(const vulkan::VulkanContext& context, std::size_t bytes, const std::string& name) {
+    return texelBuffer(context, std::vector<std::uint32_t>(bytes / 4, 0), name);
+}
+
+/// Per cell: bit cx + 2 cy + 4 cz set when cell (x + cx, y + cy, z + cz) exists and is fluid.
+std::vector<std::uint8_t> stencilFlags(const MacGrid& smoke, const std::vector<std::uint8_t>& fluid) {
+    std::vector<std::uint8_t> bits(fluid.size(), 0);
+    const auto fluidAt = [&](int x, int y, int z) {
+        return x < smoke.cells[0] && y < smoke.cells[1] && z < smoke.cells[2] && fluid[smoke.cellIndex(x, y, z)];
+    };
+    for (int z = 0; z < smoke.cells[2]; ++z)
+        for (int y = 0; y < smoke.cells[1]; ++y)
+            for (int x = 0; x < smoke.cells[0]; ++x) {
+                std::uint8_t b = 0;
+                for (int corner = 0; corner < 8; ++corner)
+                    if (fluidAt(x + (corner & 1), y + (corner >> 1 & 1), z + (corner >> 2)))
+                        b = std::uint8_t(b | (1u << corner));
+                bits[smoke.cellIndex(x, y, z)] = b;
+            }
+    return bits;
+}
+
+/// The fluid cell list, one texel per entry: x | y << 16, z, and the emitters' density and
+/// temperature rates (`rates`, two per entry, empty: none).
+std::vector<std::uint32_t> cellList(const MacGrid& smoke, const std::vector<std::int64_t>& indices,
+                                    std::span<const float> rates) {
+    std::vector<std::uint32_t> words(std::max<std::size_t>(indices.size(), 1) * 4,
+                                     0);  // never empty
+    for (std::size_t e = 0; e < indices.size(); ++e) {
+        const std::int64_t c = indices[e];
+        const std::int64_t row = c / smoke.cells[0];
+        const auto x = std::uint32_t(c % smoke.cells[0]), y = std::uint32_t(row % smoke.cells[1]),
+                   z = std::uint32_t(row / smoke.cells[1]);
+        words[4 * e] = x | y << 16;
+        words[4 * e + 1] = z;
+        if (!rates.empty()) {
+            words[4 * e + 2] = std::bit_cast<std::uint32_t>(rates[2 * e]);
+            words[4 * e + 3] = std::bit_cast<std::uint32_t>(rates[2 * e + 1]);
+        }
+    }
+    return words;
+}
+
+}  // namespace
+
+SmokeState::SmokeState(const vulkan::VulkanContext& context, const MacGrid& basisGrid, int scale,
+                       std::span<const std::uint8_t> fluidMask)
+    : mBasis(basisGrid),
+      mScale(scale),
+      mSmoke(basisGrid.refined(scale)),
+      mFluid(fluidFlags(mSmoke, fluidMask)),
+      mFluidIndex(fluidIndices(mFluid)),
+      mFluidCount(std::uint32_t(mFluidIndex.size())),
+      mFields{zeroBuffer(context, std::size_t(mSmoke.cellCount()) * 8, "smoke fields 0"),
+              zeroBuffer(context, std::size_t(mSmoke.cellCount()) * 8, "smoke fields 1")},
+      mTemperature(zeroBuffer(context, std::size_t(mSmoke.cellCount()) * 4, "smoke temperature")),
+      mMask(texelBuffer(context, mFluid, "smoke fluid mask")),
+      mFluidCells(texelBuffer(context, cellList(mSmoke, mFluidIndex, {}), "smoke fluid cells")),
+      mStencilMask(texelBuffer(context, stencilFlags(mSmoke, mFluid), "smoke stencil mask")),
+      mHat(zeroBuffer(context, std::size_t(mSmoke.cellCount()) * 8, "MacCormack fields")),
+      mRecord(zeroBuffer(context, std::size_t(mFluidCount) * SMOKE_RECORD_WORDS * 8,
+                         "MacCormack record")),
+      mFacePairs(
+          zeroBuffer(context, std::size_t(mBasis.faceTotal() + 3) / 4 * 32, "smoke face pairs")) {}
+
+void SmokeState::upload(std::span<const float> density, std::span<const float> temperature) {
+    if (density.size() != std::size_t(cellCount()) || temperature.size() != std::size_t(cellCount()))
+        throw Error("smoke state upload: density and temperature need " + std::to_string(cellCount()) +
+                    " values each, got " + std::to_string(density.size()) + " and " +
+                    std::to_string(temperature.size()));
+    std::vector<float> pairs(2 * density.size(), 0.0f), alone(temperature.size(), 0.0f);
+    for (const std::int64_t c : mFluidIndex) {
+        pairs[2 * c] = density[c];
+        pairs[2 * c + 1] = alone[c] = temperature[c];
+    }
+    mFields[mCurrent].upload<float>(pairs);
+    mTemperature.upload<float>(alone);
+}
+
+void SmokeState::download(std::span<float> densityOut, std::span<float> temperatureOut) const {
+    if (densityOut.size() != std::size_t(cellCount()) || temperatureOut.size() != std::size_t(cellCount()))
+        throw Error("smoke state download: density and temperature need room for " + std::to_string(cellCount()) +
+                    " values each");
+    std::vector<float> pairs(2 * densityOut.size());
+    fields().download<float>(pairs);
+    for (std::size_t c = 0; c < densityOut.size(); ++c) {
+        densityOut[c] = pairs[2 * c];
+        temperatureOut[c] = pairs[2 * c + 1];
+    }
+}
+
+void SmokeState::setEmitters(std::span<const SmokeEmitter> emitters) {
+    if (emitters.size() > std::size_t(maxSmokeEmitters))
+        throw Error("smoke: " + std::to_string(emitters.size()) + " emitters, the device step takes at most " +
+                    std::to_string(maxSmokeEmitters));
+    // The rates per unit time: the reference's emitters over a step of 1.
+    std::vector<double> density(mFluid.size(), 0.0), temperature(mFluid.size(), 0.0);
+    applyEmitters(mSmoke, mFluid, emitters, 1.0, density, temperature);
+    std::vector<float> rates(2 * mFluidIndex.size());
+    for (std::size_t e = 0; e < mFluidIndex.size(); ++e) {
+        rates[2 * e] = float(density[mFluidIndex[e]]);
+        rates[2 * e + 1] = float(temperature[mFluidIndex[e]]);
+    }
+    mFluidCells.upload<std::uint32_t>(cellList(mSmoke, mFluidIndex, rates));
+    mEmitterCount = std::uint32_t(emitters.size());
+}
+
+}  // namespace modeflow::device

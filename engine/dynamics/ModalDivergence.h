@@ -1,0 +1,39 @@
+#pragma once
+/// @file ModalDivergence.h
+/// A modal state that stopped being finite: an integrator unstable at its step size (the explicit
+/// rule and RK4 blow up once h·|∂R/∂v| is too large). Every simulator checks the state after each
+/// step, before it reaches the grid, so that a diverged run stops with this message rather than
+/// with NaN positions in the smoke sampling.
+
+#include <string>
+#include <string_view>
+
+#include <Eigen/Core>
+
+#include "engine/core/Error.h"
+
+namespace modeflow {
+
+class ModalStateDiverged : public Error {
+public:
+    /// "the modal state diverged at step S (t = T)".
+    ModalStateDiverged(long step, double time);
+    long step() const { return mStep; }
+    double time() const { return mTime; }
+
+private:
+    long mStep;
+    double mTime;
+};
+
+/// @throw ModalStateDiverged when `state` (v, or [v; F] with MHD) has a NaN or infinite entry
+/// after step `step` (counted from t = 0), at time `time`.
+void requireFiniteModalState(const Eigen::VectorXd& state, long step, double time);
+
+/// The message for a user: the error's own, then "; <integrator> is unstable at this step size:
+/// lower <dtSetting> or use midpoint" (`integrator`: the scene keyword; `dtSetting`: where the
+/// user sets the step, "[simulation].dt" or "--dt").
+std::string divergenceAdvice(const ModalStateDiverged& diverged, std::string_view integrator,
+                             std::string_view dtSetting);
+
+}  // namespace modeflow

@@ -1,0 +1,27 @@
+#include "engine/pipeline/RunMemory.h"
+
+#include <cstdint>
+
+#include "precompute/PrecomputeMemory.h"
+
+namespace modeflow {
+
+RunMemory requireRunMemory(const SceneSpec& scene, BackendKind backend) {
+    const GridSpec& grid = scene.grid;
+    const bool device = backend == BackendKind::Vulkan;
+    std::int64_t smokeCells = 1;
+    for (int a = 0; a < grid.dim; ++a) smokeCells *= std::int64_t{grid.resolution[a]} * scene.smoke.resolutionScale;
+    const RunMemory memory = estimateRunMemory(smokeCells, estimatePrecomputeMemory(scene).velocityDofs,
+                                               scene.basis.velocityCount(), device);
+    const bool smoke = memory.smokeBytes > memory.basisBytes;
+    requireMemory(memory.peakBytes,
+                  gridResolutionText(grid) + " with [smoke].resolution_scale = " +
+                      std::to_string(scene.smoke.resolutionScale) + " (" + std::to_string(smokeCells) +
+                      " smoke cells) and " + std::to_string(scene.basis.velocityCount()) + " velocity modes",
+                  std::string("the run") + (device ? " on a Vulkan device" : " on the CPU reference"),
+                  smoke ? "lower [smoke].resolution_scale or [grid].resolution"
+                        : "lower the velocity modes in [basis] or [grid].resolution");
+    return memory;
+}
+
+}  // namespace modeflow

@@ -1,0 +1,82 @@
+#include "engine/reference/ModalStepper.h"
+
+#include <string>
+
+#include "engine/core/Error.h"
+#include "engine/dynamics/FluidSystem.h"
+#include "engine/dynamics/MhdSystem.h"
+
+namespace modeflow::reference {
+namespace {
+
+std::string sizeMismatch(const char* what, Eigen::Index given, Eigen::Index expected) {
+    return std::string("simulation: ") + what + " of " + std::to_string(given) + " values, expected " +
+           std::to_string(expected);
+}
+
+}  // namespace
+
+ModalStepper::ModalStepper(const StructuralCoefficients& coefficients, const SimulationSettings& settings)
+    : mCoefficients(coefficients), mModes(coefficients.size()) {
+    if (settings.mhd && settings.fluid.alpha > 0.0)
+        throw Error("simulation: LANS-alpha and MHD cannot be combined");
+    rebuild(settings);
+    mState = Eigen::VectorXd::Zero(mSystem->dimension());
+    mForce = Eigen::VectorXd::Zero(mSystem->dimension());
+}
+
+void ModalStepper::rebuild(const SimulationSettings& settings) {
+    std::unique_ptr<ModalSystem> system;
+    if (settings.mhd)
+        system = std::make_unique<MhdSystem>(
+            mCoefficients, MhdParameters{settings.fluid.kappaSquared, settings.fluid.viscosity,
+                                         settings.magneticDiffusivity});
+    else
+        system = std::make_unique<FluidSystem>(mCoefficients, settings.fluid);
+    auto integrator = std::make_unique<ModalIntegrator>(*system, IntegratorSettings{settings.integrator});
+    // Nothing changes until both are built; the integrator refers to the system it was made with.
+    mIntegrator = std::move(integrator);
+    mSystem = std::move(system);
+    mSettings = settings;
+}
+
+void ModalStepper::setState(const Eigen::VectorXd& x) {
+    if (x.size() != mState.size()) throw Error(sizeMismatch("modal state", x.size(), mState.size()));
+    mState = x;
+}
+
+void ModalStepper::setForce(const Eigen::VectorXd& f) {
+    if (f.size() != mModes) throw Error(sizeMismatch("modal force", f.size(), mModes));
+    mForce.head(mModes) = f;
+}
+
+StepReport ModalStepper::step(double h) { return mIntegrator->step(mState, h, mForce); }
+
+void ModalStepper::setScheme(Integrator scheme) {
+    SimulationSettings settings = mSettings;
+    settings.integrator = scheme;
+    rebuild(settings);
+}
+
+void ModalStepper::setViscosity(double viscosity) {
+    SimulationSettings settings = mSettings;
+    settings.fluid.viscosity = viscosity;
+    rebuild(settings);
+}
+
+void ModalStepper::setVelocity(const Eigen::VectorXd& v) {
+    if (v.size() != mModes) throw Error(sizeMismatch("velocity", v.size(), mModes));
+    mState.head(mModes) = v;
+}
+
+Eigen::VectorXd ModalStepper::magneticField() const {
+    return mSettings.mhd ? Eigen::VectorXd(mState.tail(mModes)) : Eigen::VectorXd();
+}
+
+void ModalStepper::setMagneticField(const Eigen::VectorXd& f) {
+    if (!mSettings.mhd) throw Error("simulation: this run simulates no magnetic field ([simulation].mhd)");
+    if (f.size() != mModes) throw Error(sizeMismatch("magnetic field", f.size(), mModes));
+    mState.tail(mModes) = f;
+}
+
+}  // namespace modeflow::reference

@@ -1,0 +1,37 @@
+#include "engine/reference/ObstacleCorrection.h"
+
+#include "engine/core/FaceLocation.h"
+#include "engine/core/MacSampling.h"
+#include "engine/reference/ForceProjection.h"
+
+namespace modeflow::reference {
+
+std::vector<double> obstacleMismatch(const BasisCache& cache, std::span<const double> faceField,
+                                     std::span<const MovingObstacle> obstacles, double t) {
+    const MacGrid grid = MacGrid::fromSpec(cache.grid);
+    requireFaceField(grid, faceField.size(), "obstacle mismatch");
+    std::vector<Vec3> centres, velocities;
+    for (const MovingObstacle& o : obstacles) {
+        centres.push_back(o.centreAt(t));
+        velocities.push_back(o.velocityAt(t));
+    }
+    std::vector<double> mismatch(faceField.size(), 0.0);
+    for (const std::int64_t face : cache.faces) {
+        const FaceLocation location = locateFace(grid, face);
+        const Vec3 centre = faceCentre(grid, location);
+        for (std::size_t o = 0; o < obstacles.size(); ++o)
+            if (obstacles[o].covers(centre, centres[o], grid.dim)) {
+                mismatch[std::size_t(face)] = faceField[std::size_t(face)] - velocities[o][location.axis];
+                break;  // the first obstacle covering a face sets its velocity
+            }
+    }
+    return mismatch;
+}
+
+Eigen::VectorXd obstacleCorrection(const BasisCache& cache, std::span<const double> faceField,
+                                   std::span<const MovingObstacle> obstacles, double t) {
+    const std::vector<double> mismatch = obstacleMismatch(cache, faceField, obstacles, t);
+    return projectFaceField(cache, mismatch);
+}
+
+}  // namespace modeflow::reference

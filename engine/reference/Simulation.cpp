@@ -1,0 +1,92 @@
+#include "engine/reference/Simulation.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "engine/core/Error.h"
+#include "engine/dynamics/ModalDivergence.h"
+#include "engine/reference/ForceField.h"
+#include "engine/reference/ForceProjection.h"
+#include "engine/reference/ObstacleCorrection.h"
+#include "engine/reference/VelocityReconstruction.h"
+
+namespace modeflow::reference {
+
+Simulation::Simulation(const BasisCache& cache, const StructuralCoefficients& coefficients,
+                       SimulationSettings settings, std::vector<std::uint8_t> smokeMask)
+    : mCache(cache),
+      mSettings(std::move(settings)),
+      mStepper(coefficients, mSettings),
+      mAdvection(MacGrid::fromSpec(cache.grid), mSettings.smokeScale, std::move(smokeMask)),
+      mFaceVelocity(std::size_t(MacGrid::fromSpec(cache.grid).faceTotal()), 0.0) {
+    if (!(mSettings.dt > 0.0)) throw Error("simulation: dt must be positive");
+    if (mSettings.stepsPerFrame < 1) throw Error("simulation: steps per frame must be at least 1");
+    setObstacles(mSettings.obstacles);
+    const auto cells = std::size_t(mAdvection.smokeGrid().cellCount());
+    mFields.density.assign(cells, 0.0);
+    mFields.temperature.assign(cells, 0.0);
+}
+
+std::vector<double> Simulation::faceMagneticField() const {
+    if (!mSettings.mhd) return {};
+    return reconstructFaceField(mCache, mStepper.magneticField());
+}
+
+void Simulation::restore(double time, const Eigen::VectorXd& v, const SmokeFields& smoke) {
+    setVelocity(v);
+    if (smoke.density.size() != mFields.density.size() || smoke.temperature.size() != mFields.temperature.size())
+        throw Error("simulation: saved smoke of " + std::to_string(smoke.density.size()) + " cells, the smoke grid has " +
+                    std::to_string(mFields.density.size()));
+    mFields = smoke;
+    mTime = time;
+    mStep = std::lround(time / mSettings.dt);
+}
+
+void Simulation::setObstacles(std::vector<MovingObstacle> obstacles) {
+    if (obstacles.size() > std::size_t(maxObstacles))
+        throw Error("simulation: " + std::to_string(obstacles.size()) + " obstacles, at most " +
+                    std::to_string(maxObstacles) + " move at once");
+    mSettings.obstacles = std::move(obstacles);
+}
+
+void Simulation::setViscosity(double viscosity) {
+    mStepper.setViscosity(viscosity);
+    mSettings.fluid.viscosity = viscosity;
+}
+
+void Simulation::setIntegrator(Integrator integrator) {
+    mStepper.setScheme(integrator);
+    mSettings.integrator = integrator;
+}
+
+FrameStats Simulation::advanceSteps(int steps) {
+    FrameStats stats;
+    const double dt = mSettings.dt;
+    for (int s = 0; s < steps; ++s) {
+        // Buoyancy and splats push the fluid.
+        Eigen::VectorXd force = Eigen::VectorXd::Zero(mStepper.modeCount());
+        if (mSettings.buoyancy != 0.0 || !mSplats.empty()) {
+            const BuoyancyInput buoyancy{mSettings.buoyancy, mSettings.smokeScale,
+                                         mFields.temperature, mAdvection.fluidMask()};
+            force = projectForce(mCache, forceDensity(mCache, buoyancy, mSplats), FaceQuantity::Density);
+        }
+        mStepper.setForce(force);
+        const StepReport report = mStepper.step(dt);
+        requireFiniteModalState(mStepper.state(), ++mStep, mTime + dt);
+        stats.maxIterations = std::max(stats.maxIterations, report.iterations);
+        stats.unconvergedSteps += report.converged ? 0 : 1;
+        mFaceVelocity = reconstructFaceField(mCache, velocity());
+        if (!mSettings.obstacles.empty()) {
+            setVelocity(velocity() - obstacleCorrection(mCache, mFaceVelocity, mSettings.obstacles, mTime + dt));
+            mFaceVelocity = reconstructFaceField(mCache, velocity());
+        }
+        mAdvection.step(std::span<const double>(mFaceVelocity), dt, mSettings.advection,
+                        activeEmitters(mSettings.emitters, mTime), mFields);
+        mTime += dt;
+        ++stats.steps;
+    }
+    return stats;
+}
+
+}  // namespace modeflow::reference

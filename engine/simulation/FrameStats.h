@@ -1,0 +1,20 @@
+#pragma once
+/// @file FrameStats.h
+/// What advancing a simulation by one frame (or a few steps) did, whichever backend ran it.
+
+namespace modeflow {
+
+/// What advancing one frame did.
+struct FrameStats {
+    int steps = 0;
+    int maxIterations = 0;     ///< implicit schemes: most iterations a step took
+    int unconvergedSteps = 0;  ///< steps whose implicit solve missed its tolerance
+    int substeps = 1;          ///< most modal substeps a step took (the device adapts them)
+    int timedSteps = 0;        ///< steps whose device times were measured (Simulation::setTiming)
+    /// Device time per stage summed over the timed steps, milliseconds (0 on the CPU reference or
+    /// without timestamps): forces (force field + projection), modal step, reconstruction, moving
+    /// obstacles (their correction and the reconstruction after it), advection.
+    double forcesMs = 0.0, modalMs = 0.0, reconstructionMs = 0.0, obstaclesMs = 0.0, advectionMs = 0.0;
+};
+
+}  // namespace modeflow

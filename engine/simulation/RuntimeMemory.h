@@ -1,0 +1,29 @@
+#pragma once
+/// @file RuntimeMemory.h
+/// The peak memory of a simulation run, estimated before any work from the smoke grid and the
+/// basis. The model (bytes; V velocity DOFs, K modes, cells of the smoke grid = grid cells ×
+/// resolution_scale^dim):
+///   program       48 MiB (CPU reference) or 150 MiB (a Vulkan device: lavapipe's driver; its
+///                 device memory is host memory)
+///   basis         3 × (V·K·8 + K²(K−1)/2·8): the cache, the dynamics' coefficients, the device's
+///                 copies
+///   smoke         150 (CPU reference: double fields, back-traces, MacCormack temporaries, frames)
+///                 or 200 (device: float fields, their staging, frames) bytes per smoke cell
+/// times 1.15. Measured peaks of `modeflow run` (2D disk 128² with 40 and 200 modes, smoke scales
+/// 1–8; 3D ball 32³ with 40 and 150 modes, scales 1–3; both devices) are 0.60–0.83 of it.
+
+#include <cstdint>
+
+namespace modeflow {
+
+struct RunMemory {
+    double basisBytes = 0.0;
+    double smokeBytes = 0.0;
+    double peakBytes = 0.0;  ///< everything, with the margin
+};
+
+/// `device`: a Vulkan device runs it (else the CPU reference).
+RunMemory estimateRunMemory(std::int64_t smokeCells, std::int64_t velocityDofs, int modes,
+                            bool device);
+
+}  // namespace modeflow

@@ -1,0 +1,71 @@
+#include "engine/simulation/SmokeEmitter.h"
+
+#include <string>
+
+#include "engine/core/Error.h"
+
+namespace modeflow {
+
+bool SmokeEmitter::contains(const Vec3& point, int dim) const {
+    if (shape == EmitterShape::Box) {
+        for (int a = 0; a < dim; ++a)
+            if (point[a] < min[a] || point[a] > max[a]) return false;
+        return true;
+    }
+    double distance2 = 0.0;
+    for (int a = 0; a < dim; ++a) distance2 += (point[a] - centre[a]) * (point[a] - centre[a]);
+    return distance2 <= radius * radius;
+}
+
+SmokeEmitter emitterFromSource(const SourceSpec& source) {
+    SmokeEmitter emitter;
+    switch (source.shape.kind) {
+        case ShapeKind::Ball:
+            emitter.shape = EmitterShape::Ball;
+            emitter.centre = source.shape.center;
+            emitter.radius = source.shape.radius;
+            break;
+        case ShapeKind::Box:
+            emitter.shape = EmitterShape::Box;
+            emitter.min = source.shape.min;
+            emitter.max = source.shape.max;
+            break;
+        default:
+            throw Error("[[source]] shape: smoke emitters are balls or boxes, got another shape");
+    }
+    emitter.densityRate = source.density;
+    emitter.temperatureRate = source.temperature;
+    emitter.start = source.start;
+    emitter.end = source.end;
+    return emitter;
+}
+
+std::vector<SmokeEmitter> activeEmitters(std::span<const SmokeEmitter> all, double t) {
+    std::vector<SmokeEmitter> active;
+    for (const SmokeEmitter& e : all)
+        if (e.activeAt(t)) active.push_back(e);
+    return active;
+}
+
+void applyEmitters(const MacGrid& smokeGrid, std::span<const std::uint8_t> fluidMask,
+                   std::span<const SmokeEmitter> emitters, double dt, std::span<double> density,
+                   std::span<double> temperature) {
+    const std::size_t cells = std::size_t(smokeGrid.cellCount());
+    if (fluidMask.size() != cells || density.size() != cells || temperature.size() != cells)
+        throw Error("applyEmitters: mask, density and temperature need " + std::to_string(cells) +
+                    " values (one per smoke cell)");
+    for (int z = 0; z < smokeGrid.cells[2]; ++z)
+        for (int y = 0; y < smokeGrid.cells[1]; ++y)
+            for (int x = 0; x < smokeGrid.cells[0]; ++x) {
+                const std::int64_t c = smokeGrid.cellIndex(x, y, z);
+                if (!fluidMask[c]) continue;
+                const Vec3 centre{smokeGrid.cellCentre(0, x), smokeGrid.cellCentre(1, y), smokeGrid.cellCentre(2, z)};
+                for (const SmokeEmitter& emitter : emitters)
+                    if (emitter.contains(centre, smokeGrid.dim)) {
+                        density[c] += emitter.densityRate * dt;
+                        temperature[c] += emitter.temperatureRate * dt;
+                    }
+            }
+}
+
+}  // namespace modeflow

@@ -1,0 +1,50 @@
+#pragma once
+/// @file SmokeEmitter.h
+/// A smoke and heat source (engine/README.md, a scene's `[[source]]`): a ball or a box (a disk or a
+/// rectangle in 2D) that adds `densityRate · dt` and `temperatureRate · dt` to every fluid smoke
+/// cell whose centre lies inside it. A plain value type, so the device kernels can copy it as is.
+
+#include <cstdint>
+#include <limits>
+#include <span>
+#include <vector>
+
+#include "engine/core/MacGrid.h"
+#include "engine/core/RuntimeLimits.h"
+#include "engine/core/SceneSpec.h"
+
+namespace modeflow {
+
+enum class EmitterShape { Ball, Box };
+
+struct SmokeEmitter {
+    EmitterShape shape = EmitterShape::Ball;
+    Vec3 centre{0.0, 0.0, 0.0};  ///< ball
+    double radius = 0.0;         ///< ball
+    Vec3 min{0.0, 0.0, 0.0};     ///< box
+    Vec3 max{0.0, 0.0, 0.0};     ///< box
+    double densityRate = 0.0;      ///< concentration added per unit time
+    double temperatureRate = 0.0;  ///< temperature added per unit time
+    double start = 0.0;            ///< emits while start ≤ t < end (simulated time)
+    double end = std::numeric_limits<double>::infinity();
+
+    /// Whether the emitter emits during the step that starts at time t.
+    bool activeAt(double t) const { return start <= t && t < end; }
+    /// Whether the world point is inside (boundary included); only the first `dim` axes count.
+    bool contains(const Vec3& point, int dim) const;
+};
+
+/// The emitters of `all` active at time t (SmokeEmitter::activeAt).
+std::vector<SmokeEmitter> activeEmitters(std::span<const SmokeEmitter> all, double t);
+
+/// The emitter of a scene's `[[source]]`.
+/// @throw modeflow::Error when its shape is not a ball or a box.
+SmokeEmitter emitterFromSource(const SourceSpec& source);
+
+/// Adds each emitter's rates · dt to the fluid cells (fluidMask ≠ 0) of `smokeGrid` whose centre
+/// it contains; `density` and `temperature` hold one value per smoke cell.
+void applyEmitters(const MacGrid& smokeGrid, std::span<const std::uint8_t> fluidMask,
+                   std::span<const SmokeEmitter> emitters, double dt, std::span<double> density,
+                   std::span<double> temperature);
+
+}  // namespace modeflow

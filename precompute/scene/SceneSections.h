@@ -1,0 +1,37 @@
+#pragma once
+/// @file SceneSections.h
+/// Internal to precompute/scene: one reader per table of a scene file. Each checks its table's
+/// keys before reading them and its values one by one; checks that involve several tables live
+/// in SceneValidation.h.
+
+#include <string>
+#include <vector>
+
+#include "engine/core/SceneSpec.h"
+#include "precompute/scene/TomlReader.h"
+
+namespace modeflow::scene {
+
+/// `[grid]`; sets the reader's dimension, which every later vector has.
+GridSpec readGrid(TomlReader& reader, const Section& s);
+
+/// One `[[domain]]` entry (`isDomain`) or the shape of a `[[source]]`; `section` is "[[domain]]"
+/// or "[[source]]", `index` 1-based.
+ShapeSpec readShape(const TomlReader& reader, const toml::table& table, const std::string& section,
+                    int index, bool isDomain);
+
+BasisSpec readBasis(const TomlReader& reader, const Section& s);
+SimulationSpec readSimulation(const TomlReader& reader, const Section& s);
+
+/// `[initial]`, including its magnetic field keys (the caller checks they belong to an MHD
+/// scene).
+InitialSpec readInitial(const TomlReader& reader, const Section& s);
+/// `[[initial.vortex]]` entries of `[initial]` (`s`), at least one.
+std::vector<VortexSpec> readVortices(const TomlReader& reader, const Section& s);
+
+SourceSpec readSource(const TomlReader& reader, const toml::table& table, int index);
+ObstacleSpec readObstacle(const TomlReader& reader, const Section& s);
+SmokeSpec readSmoke(const TomlReader& reader, const Section& s);
+OutputSpec readOutput(const TomlReader& reader, const Section& s);
+
+}  // namespace modeflow::scene

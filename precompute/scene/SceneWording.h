@@ -1,0 +1,32 @@
+#pragma once
+/// @file SceneWording.h
+/// Internal to precompute/scene: the words scene messages are made of (typo suggestions, lists,
+/// numbers, axis names).
+
+#include <cstddef>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+
+namespace modeflow::scene {
+
+bool contains(std::span<const std::string_view> list, std::string_view item);
+
+/// The closest candidate, if it is close enough to be a plausible typo.
+std::optional<std::string_view> closest(std::string_view word,
+                                        std::span<const std::string_view> candidates);
+
+/// "a, b or c"
+std::string joinWords(std::span<const std::string_view> words, std::string_view last = "or");
+
+/// The shortest text that reads back as `x`.
+std::string formatNumber(double x);
+
+/// "2.5e+299": two significant digits, for numbers that only need to be recognised.
+std::string roughNumber(double x);
+
+/// "x", "y" or "z".
+const char* axisName(int axis);
+
+}  // namespace modeflow::scene

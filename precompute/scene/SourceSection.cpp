@@ -1,0 +1,25 @@
+/// @file SourceSection.cpp
+/// `[[source]]`: a ball or box that emits smoke and heat between two times.
+
+#include "precompute/scene/SceneSections.h"
+
+namespace modeflow::scene {
+
+SourceSpec readSource(const TomlReader& reader, const toml::table& table, int index) {
+    SourceSpec source;
+    source.shape = readShape(reader, table, "[[source]]", index, false);
+    const Section s{table,
+                    "[[source]] #" + std::to_string(index) + " (" +
+                        std::string(keywordOf(Choices<ShapeKind>(kShapeKinds), source.shape.kind)) +
+                        ")"};
+    source.density = reader.readNumber(s, "density", source.density, Sign::NonNegative);
+    source.temperature = reader.readNumber(s, "temperature", source.temperature);
+    source.start = reader.readNumber(s, "start", source.start, Sign::NonNegative);
+    source.end = reader.readNumber(s, "end", source.end, Sign::Positive);
+    if (source.end <= source.start)
+        reader.fail(s, "end", "must be later than start (" + std::to_string(source.start) + ")",
+                    table.get("end"));
+    return source;
+}
+
+}  // namespace modeflow::scene

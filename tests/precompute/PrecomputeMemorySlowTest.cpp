@@ -1,0 +1,89 @@
+/// @file PrecomputeMemorySlowTest.cpp
+/// The precompute's memory estimate against the peak resident memory of `modeflow precompute`
+/// itself (as the operating system counts it): conservative, but less than twice the peak.
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <string>
+
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+
+#include "precompute/PrecomputeMemory.h"
+#include "precompute/scene/SceneLoader.h"
+#include "tests/support/CliFixture.h"
+#include "tests/support/TestFolder.h"
+
+extern char** environ;
+
+namespace modeflow {
+namespace {
+
+namespace fs = std::filesystem;
+
+/// Peak resident bytes of `modeflow precompute SCENE` into a fresh cache folder.
+double measuredPeak(const fs::path& scene, const fs::path& cache) {
+    const std::string cli = testing::cliPath(), command = "precompute", dir = "--cache-dir";
+    const std::string scenePath = scene.string(), cachePath = cache.string();
+    char* argv[] = {const_cast<char*>(cli.c_str()),       const_cast<char*>(command.c_str()),
+                    const_cast<char*>(scenePath.c_str()), const_cast<char*>(dir.c_str()),
+                    const_cast<char*>(cachePath.c_str()), nullptr};
+    posix_spawn_file_actions_t quiet;
+    posix_spawn_file_actions_init(&quiet);
+    posix_spawn_file_actions_addopen(&quiet, 1, "/dev/null", O_WRONLY, 0);
+    posix_spawn_file_actions_addopen(&quiet, 2, "/dev/null", O_WRONLY, 0);
+    pid_t child = 0;
+    if (posix_spawn(&child, cli.c_str(), &quiet, nullptr, argv, environ) != 0) return 0.0;
+    posix_spawn_file_actions_destroy(&quiet);
+    int status = 0;
+    rusage usage{};
+    wait4(child, &status, 0, &usage);
+    EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << scene;
+    return double(usage.ru_maxrss) * 1024.0;  // kilobytes on Linux
+}
+
+TEST(PrecomputeMemorySlow, TheEstimateIsConservativeButLessThanTwiceThePeak) {
+    const testing::TestFolder dir;
+    const std::string disk = R"([grid]
+resolution = [128, 128]
+bounds_min = [-1.1, -1.1]
+bounds_max = [1.1, 1.1]
+[[domain]]
+shape = "ball"
+center = [0.0, 0.0]
+radius = 1.0
+[basis]
+velocity_modes = 100
+scalar_modes = 0
+)";
+    const std::string ball = R"([grid]
+resolution = [24, 24, 24]
+bounds_min = [-1.1, -1.1, -1.1]
+bounds_max = [1.1, 1.1, 1.1]
+[[domain]]
+shape = "ball"
+center = [0.0, 0.0, 0.0]
+radius = 1.0
+[basis]
+velocity_modes = 60
+scalar_modes = 0
+)";
+    for (const auto& [name, text] : {std::pair{"disk.toml", disk}, std::pair{"ball.toml", ball}}) {
+        const fs::path scene = dir / name;
+        std::ofstream(scene) << text;
+        const double estimate = estimatePrecomputeMemory(loadScene(scene)).peakBytes;
+        const double peak = measuredPeak(scene, dir / "cache");
+        std::cout << name << ": estimate " << estimate / 1048576.0 << " MiB, peak "
+                  << peak / 1048576.0 << " MiB\n";
+        EXPECT_GE(estimate / peak, 1.0) << name << ": estimate " << estimate << ", peak " << peak;
+        EXPECT_LE(estimate / peak, 2.0) << name << ": estimate " << estimate << ", peak " << peak;
+    }
+}
+
+}  // namespace
+}  // namespace modeflow

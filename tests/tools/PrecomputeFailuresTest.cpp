@@ -1,0 +1,37 @@
+/// @file PrecomputeFailuresTest.cpp
+/// The precompute fails with one message of ours naming the stage: nothing printed by the
+/// libraries below it (CHOLMOD), and no "internal error".
+
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "tests/support/CliFixture.h"
+
+namespace modeflow {
+namespace {
+
+using testing::Cli;
+using testing::RunResult;
+
+TEST_F(Cli, ExtremelyScaledScenesFailWithOurMessageOnly) {
+    // Spacings of 6e148 make the shifted Laplacian numerically indefinite, and CHOLMOD used to
+    // print "CHOLMOD warning: matrix not positive definite" on stdout before our message; at
+    // 6e-152 the scaled operator overflows and Spectra's exception ended as "internal error".
+    for (const std::string scale : {"1e150", "1e-150"}) {
+        const std::string text =
+            "[grid]\nresolution = [48, 48]\nbounds_min = [-" + scale + ", -" + scale +
+            "]\nbounds_max = [" + scale + ", " + scale +
+            "]\n[[domain]]\nshape = \"ball\"\ncenter = [0.0, 0.0]\nradius = " + scale +
+            "\n[basis]\nvelocity_modes = 8\nscalar_modes = 4\n";
+        const RunResult r = run(precompute(scene("scaled.toml", text)));
+        EXPECT_EQ(r.status, 1) << scale << ": " << r.err;
+        EXPECT_EQ((r.out + r.err).find("CHOLMOD"), std::string::npos)
+            << scale << ": " << r.out << r.err;
+        EXPECT_NE(r.err.find("modeflow: error: "), std::string::npos) << scale << ": " << r.err;
+        EXPECT_EQ(r.err.find("internal error"), std::string::npos) << scale << ": " << r.err;
+    }
+}
+
+}  // namespace
+}  // namespace modeflow

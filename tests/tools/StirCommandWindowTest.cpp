@@ -1,0 +1,91 @@
+/// `modeflow stir` run as users run it, in a window under Xvfb (tests/CMakeLists.txt wraps files
+/// named *WindowTest in xvfb-run), with the validation layer on: on a Vulkan device, and on the
+/// CPU reference with the window on the first suitable device.
+
+#include <cstdlib>
+#include <string>
+
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmissing-field-initializers"
+#pragma GCC diagnostic ignored "-Wunused-function"
+#define STB_IMAGE_IMPLEMENTATION
+#include <stb/stb_image.h>
+#pragma GCC diagnostic pop
+
+#include "tests/support/CliFixture.h"
+
+namespace modeflow::testing {
+namespace {
+
+/// A 12³ ball with 6 velocity modes and a warm source.
+const char* kSmallBall = R"(
+[grid]
+resolution = [12, 12, 12]
+bounds_min = [-1.1, -1.1, -1.1]
+bounds_max = [1.1, 1.1, 1.1]
+[[domain]]
+shape = "ball"
+center = [0.0, 0.0, 0.0]
+radius = 1.0
+[basis]
+velocity_modes = 6
+scalar_modes = 0
+[[source]]
+shape = "ball"
+center = [0.0, 0.0, -0.5]
+radius = 0.3
+density = 1.5
+temperature = 1.0
+)";
+
+/// The 2D disk with a source.
+std::string smallDisk() {
+    return std::string(kSmallDisk) +
+           "[[source]]\nshape = \"ball\"\ncenter = [0.0, -0.5]\nradius = 0.3\ndensity = "
+           "1.5\ntemperature = 1.0\n";
+}
+
+class StirCommandWindow : public Cli {
+protected:
+    void SetUp() override {
+        Cli::SetUp();
+        // The commands inherit it; stir fails on any validation message.
+        setenv("MODEFLOW_VULKAN_VALIDATION", "1", 1);
+    }
+
+    /// Runs 30 frames of `sceneText` on `device` in a 320 × 240 window and checks the summary
+    /// and the screenshot.
+    void stirs(const std::string& sceneText, const std::string& device) {
+        const fs::path s = scene("scene.toml", sceneText), shot = mDir / "shot.png";
+        const RunResult r = run("stir " + s.string() + " --device " + device +
+                                " --frames 30 --width 320 --height 240 --screenshot " +
+                                shot.string() + " --cache-dir " + mCache.string());
+        ASSERT_EQ(r.status, 0) << r.err;
+        EXPECT_NE(r.err.find("30 frames (320x240)"), std::string::npos) << r.err;
+        int width = 0, height = 0, channels = 0;
+        unsigned char* pixels = stbi_load(shot.string().c_str(), &width, &height, &channels, 3);
+        ASSERT_NE(pixels, nullptr) << "no screenshot at " << shot;
+        int bright = 0;
+        for (int p = 0; p < width * height; ++p)
+            bright += pixels[3 * p] + pixels[3 * p + 1] + pixels[3 * p + 2] > 3 * 128;
+        stbi_image_free(pixels);
+        EXPECT_EQ(width, 320);
+        EXPECT_EQ(height, 240);
+        EXPECT_GT(bright, 50) << "bright (smoke) pixels in the screenshot";
+    }
+};
+
+TEST_F(StirCommandWindow, CpuReferenceStirsA2DScene) {
+    stirs(smallDisk(), "cpu");
+}
+
+TEST_F(StirCommandWindow, CpuReferenceStirsA3DScene) {
+    stirs(kSmallBall, "cpu");
+}
+
+TEST_F(StirCommandWindow, VulkanDeviceStirsA2DScene) {
+    stirs(smallDisk(), "vulkan");
+}
+
+}  // namespace
+}  // namespace modeflow::testing
