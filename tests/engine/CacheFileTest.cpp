@@ -3,14 +3,13 @@
 
 #include <gtest/gtest.h>
 
-#include <sys/resource.h>
-
 #include <filesystem>
 #include <fstream>
 #include <string>
 
 #include "engine/core/Error.h"
 #include "engine/format/CacheFile.h"
+#include "tests/support/PeakMemory.h"
 #include "tests/support/RealBases.h"
 #include "tests/support/TestFolder.h"
 #include "tests/support/TestScenes.h"
@@ -19,6 +18,7 @@ namespace modeflow {
 namespace {
 
 namespace fs = std::filesystem;
+using testing::peakMemoryMiB;
 using testing::TestFolder;
 
 /// The message readCache fails with ("accepted" when it does not).
@@ -29,13 +29,6 @@ std::string readError(const fs::path& file) {
         return e.what();
     }
     return "accepted";
-}
-
-/// The process's peak resident memory, in MiB.
-long peakMemoryMiB() {
-    rusage usage{};
-    getrusage(RUSAGE_SELF, &usage);
-    return usage.ru_maxrss / 1024;
 }
 
 const BasisCache& smallBasis() {

@@ -16,12 +16,14 @@
 #include "engine/core/BinaryCodec.h"
 #include "engine/core/Error.h"
 #include "engine/simulation/Checkpoint.h"
+#include "tests/support/PeakMemory.h"
 #include "tests/support/TestFolder.h"
 
 namespace modeflow {
 namespace {
 
 namespace fs = std::filesystem;
+using testing::peakMemoryMiB;
 using testing::TestFolder;
 
 Checkpoint sample(std::size_t cells = 6) {
@@ -52,12 +54,6 @@ std::string writeError(const fs::path& file, const Checkpoint& checkpoint) {
         return e.what();
     }
     return "written";
-}
-
-long peakMemoryMiB() {
-    rusage usage{};
-    getrusage(RUSAGE_SELF, &usage);
-    return usage.ru_maxrss / 1024;
 }
 
 /// The bytes of a checkpoint with a fresh checksum after `edit` changed them (the checksum is the
