@@ -46,11 +46,11 @@ std::string bytesOf(const std::filesystem::path& path) {
 
 }  // namespace
 
-void cacheReader(std::string_view bytes) {
+bool cacheReader(std::string_view bytes) {
     const auto input = scratchFile(
         "input.mfbasis", hasCacheMagic(bytes) ? std::string(bytes) : cacheFileAround(bytes));
     BasisCache cache;
-    if (!acceptedOrRefused([&] { cache = readCache(input); })) return;
+    if (!acceptedOrRefused([&] { cache = readCache(input); })) return false;
     require(readCacheKeyHash(input) == fnv1a64(cache.key),
             "readCacheKeyHash disagrees with readCache");
     // What was accepted is written and read back to the same bytes (values compared as bytes:
@@ -61,6 +61,7 @@ void cacheReader(std::string_view bytes) {
     writeCache(second, readCache(first));
     require(bytesOf(first) == bytesOf(second),
             "an accepted cache does not survive a write and a read");
+    return true;
 }
 
 }  // namespace modeflow::fuzz

@@ -34,12 +34,12 @@ bool sameBytes(const Values& a, const Values& b) {
 
 }  // namespace
 
-void checkpointReader(std::string_view bytes) {
+bool checkpointReader(std::string_view bytes) {
     const auto input = scratchFile("input.resume", bytes.substr(0, kMagic.size()) == kMagic
                                                        ? std::string(bytes)
                                                        : checkpointAround(bytes));
     Checkpoint checkpoint;
-    if (!acceptedOrRefused([&] { checkpoint = readCheckpoint(input); })) return;
+    if (!acceptedOrRefused([&] { checkpoint = readCheckpoint(input); })) return false;
     const auto copy = input.parent_path() / "copy.resume";
     writeCheckpoint(copy, checkpoint);
     const Checkpoint again = readCheckpoint(copy);
@@ -50,6 +50,7 @@ void checkpointReader(std::string_view bytes) {
                 sameBytes(again.smoke.density, checkpoint.smoke.density) &&
                 sameBytes(again.smoke.temperature, checkpoint.smoke.temperature),
             "an accepted checkpoint does not survive a write and a read");
+    return true;
 }
 
 }  // namespace modeflow::fuzz

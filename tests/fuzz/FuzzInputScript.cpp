@@ -9,11 +9,11 @@
 
 namespace modeflow::fuzz {
 
-void inputScript(std::string_view bytes) {
+bool inputScript(std::string_view bytes) {
     std::vector<stir::TimedEvent> events;
     if (!acceptedOrRefused(
             [&] { events = stir::parseInputScript(std::string(bytes), "fuzz.txt"); }))
-        return;
+        return false;
     double previous = 0.0;
     for (const stir::TimedEvent& timed : events) {
         require(std::isfinite(timed.time) && timed.time >= previous,
@@ -40,6 +40,7 @@ void inputScript(std::string_view bytes) {
                 break;
         }
     }
+    return true;
 }
 
 }  // namespace modeflow::fuzz

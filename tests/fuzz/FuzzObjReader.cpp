@@ -8,9 +8,9 @@
 
 namespace modeflow::fuzz {
 
-void objReader(std::string_view bytes) {
+bool objReader(std::string_view bytes) {
     const auto input = scratchFile("input.obj", bytes);
-    acceptedOrRefused([&] {
+    return acceptedOrRefused([&] {
         // Coarse voxels: the conversion's cost grows with the surface area over the voxel area,
         // and the reader's checks, not OpenVDB's speed, are what is fuzzed.
         const auto shape = loadMeshShape(input, 0.25);

@@ -29,6 +29,11 @@ private:
     std::filesystem::path mPath;
 };
 
+std::string& lastMessage() {
+    static std::string message;
+    return message;
+}
+
 }  // namespace
 
 void require(bool condition, const std::string& what) {
@@ -45,8 +50,13 @@ bool acceptedOrRefused(const std::function<void()>& read) {
                     printableText(message, std::string_view::npos) == message,
                 "a refusal's message is empty, longer than 4 KiB or not printable text: " +
                     printableText(message, 200));
+        lastMessage() = message;
         return false;
     }
+}
+
+const std::string& lastRefusal() {
+    return lastMessage();
 }
 
 std::filesystem::path scratchFile(const std::string& name, std::string_view bytes) {

@@ -28,6 +28,9 @@ void require(bool condition, const std::string& what);
 /// Returns whether `read` finished without refusing.
 bool acceptedOrRefused(const std::function<void()>& read);
 
+/// The message of the last refusal acceptedOrRefused saw in this process.
+const std::string& lastRefusal();
+
 /// `bytes` written to a file named `name` in this process's scratch folder (created once under
 /// the temporary folder, removed at exit), whose path is returned.
 std::filesystem::path scratchFile(const std::string& name, std::string_view bytes);
