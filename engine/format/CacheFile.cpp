@@ -41,6 +41,15 @@ public:
         pod<std::uint64_t>(std::uint64_t(m.cols()));
         mBytes.append(reinterpret_cast<const char*>(m.data()), size_t(m.size()) * sizeof(double));
     }
+    /// Field by field (no padding bytes in the file): waves, shifts, amplitudes.
+    void separable(const std::vector<SeparableMode>& modes) {
+        pod<std::uint64_t>(modes.size());
+        for (const SeparableMode& m : modes) {
+            for (std::int32_t l : m.wave) pod(l);
+            for (std::uint8_t s : m.shift) pod(s);
+            for (double a : m.amplitude) pod(a);
+        }
+    }
     const std::string& bytes() const { return mBytes; }
 
 private:
@@ -82,6 +91,21 @@ public:
         std::memcpy(m.data(), take(rows * cols * sizeof(double)), rows * cols * sizeof(double));
         return m;
     }
+    std::vector<SeparableMode> separable() {
+        constexpr size_t kBytes = 3 * (sizeof(std::int32_t) + sizeof(std::uint8_t) + sizeof(double));
+        std::vector<SeparableMode> modes(count(kBytes));
+        for (SeparableMode& m : modes) {
+            for (std::int32_t& l : m.wave) l = pod<std::int32_t>();
+            for (std::uint8_t& s : m.shift) s = pod<std::uint8_t>();
+            for (double& a : m.amplitude) a = pod<double>();
+        }
+        return modes;
+    }
+    BasisSource source() {
+        const auto value = pod<std::int32_t>();
+        if (value != int(BasisSource::Eigensolve) && value != int(BasisSource::ClosedForm)) corrupt();
+        return BasisSource(value);
+    }
     bool atEnd() const { return mAt == mBytes.size(); }
     [[noreturn]] void corrupt() const {
         throw Error("cache file " + mPath.string() +
@@ -121,16 +145,20 @@ std::string serialize(const BasisCache& c) {
     w.vector(c.faceStar);
     w.vector(c.cells);
     w.vector(c.cellStar);
+    w.pod<std::int32_t>(int(c.velocity.source));
     w.vector(c.velocity.eigenvalues);
     w.matrix(c.velocity.modes);
+    w.separable(c.velocity.separable);
     w.vector(c.velocity.modeNumbers);
     w.pod<std::int32_t>(c.velocity.harmonic);
     w.pod(c.velocity.penalty);
     w.pod<std::int32_t>(int(c.scalar.boundary));
     w.vector(c.scalar.cells);
     w.vector(c.scalar.cellStar);
+    w.pod<std::int32_t>(int(c.scalar.source));
     w.vector(c.scalar.eigenvalues);
     w.matrix(c.scalar.modes);
+    w.separable(c.scalar.separable);
     w.pod<std::int32_t>(c.scalar.omittedConstants);
     w.pod<std::int32_t>(int(c.coefficients.storage));
     w.vector(c.coefficients.packed);
@@ -163,16 +191,20 @@ BasisCache deserialize(std::string_view payload, const std::filesystem::path& pa
     c.faceStar = r.eigenVector();
     c.cells = r.vector<std::int64_t>();
     c.cellStar = r.eigenVector();
+    c.velocity.source = r.source();
     c.velocity.eigenvalues = r.eigenVector();
     c.velocity.modes = r.matrix();
+    c.velocity.separable = r.separable();
     c.velocity.modeNumbers = r.vector<int>();
     c.velocity.harmonic = r.pod<std::int32_t>();
     c.velocity.penalty = r.pod<double>();
     c.scalar.boundary = ScalarBoundary(r.pod<std::int32_t>());
     c.scalar.cells = r.vector<std::int64_t>();
     c.scalar.cellStar = r.eigenVector();
+    c.scalar.source = r.source();
     c.scalar.eigenvalues = r.eigenVector();
     c.scalar.modes = r.matrix();
+    c.scalar.separable = r.separable();
     c.scalar.omittedConstants = r.pod<std::int32_t>();
     c.coefficients.storage = BasisCache::Coefficients::Storage(r.pod<std::int32_t>());
     c.coefficients.packed = r.vector<double>();
