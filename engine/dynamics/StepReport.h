@@ -4,6 +4,9 @@
 
 namespace modeflow {
 
+/// How Newton solved its linear systems (engine/dynamics/ModalIntegrator.h).
+enum class NewtonSolver { None, DenseLu, Krylov };
+
 struct StepReport {
     /// Newton iterations (updates of the state) the implicit scheme took.
     int iterations = 0;
@@ -14,6 +17,10 @@ struct StepReport {
     /// false if Newton stopped at the iteration limit or stalled above the tolerance (the state is
     /// still the best iterate, so the caller may go on, warn, or reduce the step).
     bool converged = true;
+    /// Krylov: products with the Jacobian (two contractions each) over all iterations.
+    int jacobianProducts = 0;
+    /// None for the explicit schemes.
+    NewtonSolver solver = NewtonSolver::None;
 };
 
 }  // namespace modeflow
