@@ -105,7 +105,7 @@ StepReport ModalIntegrator::newton(const Eigen::VectorXd& x, Eigen::VectorXd& w,
     Eigen::VectorXd y, r, residual;
     Eigen::MatrixXd jac;
     StepReport report;
-    report.solver = dense ? NewtonSolver::DenseLu : NewtonSolver::Krylov;
+    report.solver = dense ? NewtonSolver::DenseLu : NewtonSolver::FixedPoint;
     double previous = INFINITY;  // relative residual of the last evaluation
     bool freshJacobian = dense;
     for (;;) {
@@ -131,11 +131,26 @@ StepReport ModalIntegrator::newton(const Eigen::VectorXd& x, Eigen::VectorXd& w,
             return report;
         }
         if (!dense) {
-            // Solve just far enough that this update lands below the tolerance (the quadratic
-            // term is then far smaller), but never more loosely than 1e-2.
-            const double inner = std::clamp(0.1 * mSettings.relativeTolerance * scale / norm, 1e-12, 1e-2);
+            // Fixed-point updates that do not halve the residual, or would not reach the
+            // tolerance within the iteration limit (leaving Newton a few): the step is too stiff
+            // for them, Newton–Krylov from here on.
+            if (report.solver == NewtonSolver::FixedPoint && report.iterations > 0) {
+                const double rate = report.residual / previous;
+                const double needed =
+                    std::log(mSettings.relativeTolerance / report.residual) / std::log(rate);
+                if (rate > 0.5 || report.iterations + needed > mSettings.maxIterations - 5)
+                    report.solver = NewtonSolver::Krylov;
+            }
+            if (report.solver == NewtonSolver::FixedPoint) {
+                w -= residual.cwiseQuotient(mass);  // w = x + M⁻¹(c·R(y) + constant part)
+            } else {
+                // Solve just far enough that this update lands below the tolerance (the
+                // quadratic term is then far smaller), but never more loosely than 1e-2.
+                const double inner =
+                    std::clamp(0.1 * mSettings.relativeTolerance * scale / norm, 1e-12, 1e-2);
+                w -= krylovUpdate(y, h, residual, inner, report);
+            }
             previous = report.residual;
-            w -= krylovUpdate(y, h, residual, inner, report);
             ++report.iterations;
             continue;
         }

@@ -10,9 +10,11 @@
 /// The implicit equations are solved by Newton until |residual| ≤ relativeTolerance ·
 /// max(|Mx|, |Mx'|), whichever linear solver takes the Newton updates, so that both conserve the
 /// energy alike. Up to denseNewtonLimit unknowns the system's analytic Jacobian is formed and
-/// factorized (LU, N³/3 flops and N² doubles); above, each update is solved matrix-free by GMRES
-/// on Jacobian–vector products (two contractions each, O(stored coefficients)), preconditioned by
-/// the diagonal mass (Newton–Krylov). With the dense Jacobian: once the residual is below
+/// factorized (LU, N³/3 flops and N² doubles). Above, nothing N² is formed: fixed-point
+/// iterations w ← x + M⁻¹(c·R(y) + f) (one contraction each) while each cuts the residual at
+/// least in half, which at the usual steps (h|∂R| ≲ 0.3) takes a handful; if one does not,
+/// Newton–Krylov from there: each update solved matrix-free by GMRES on Jacobian–vector products
+/// (two contractions each), preconditioned by the diagonal mass. With the dense Jacobian: once the residual is below
 /// jacobianReuseBelow, the iterates move so little that the last factorized Jacobian is as good as
 /// a fresh one (the error it adds is that residual times a factor of order h|C||v|), so the next
 /// evaluation computes the residual alone: a lighter pass over the coefficients and no new LU.
@@ -45,9 +47,9 @@ struct IntegratorSettings {
     /// N ≥ 200 on two idle cores), but on a machine busy with other processes every fork/join
     /// waits for a descheduled thread and steps get several times slower, hence the default 1.
     int threads = 1;
-    /// The linear solver of the Newton updates: a dense LU of the Jacobian up to this many
-    /// unknowns, matrix-free GMRES above (an LU at N = 2000 costs ~3 GFLOP per Jacobian, a
-    /// product with the sparse box coefficients a few milliseconds).
+    /// Newton with a dense LU of the Jacobian up to this many unknowns; fixed-point iterations,
+    /// then Newton–Krylov if they stall, above (an LU at N = 2000 costs ~3 GFLOP per Jacobian, a
+    /// contraction of the sparse box coefficients tens of milliseconds).
     int denseNewtonLimit = 400;
     int krylovRestart = 50;  ///< GMRES restart length (Krylov vectors kept)
 };

@@ -4,8 +4,10 @@
 
 namespace modeflow {
 
-/// How Newton solved its linear systems (engine/dynamics/ModalIntegrator.h).
-enum class NewtonSolver { None, DenseLu, Krylov };
+/// How an implicit step was solved (engine/dynamics/ModalIntegrator.h): Newton with a dense LU
+/// of the Jacobian; fixed-point iterations alone; or fixed-point iterations that stopped
+/// contracting, finished by Newton–Krylov.
+enum class NewtonSolver { None, DenseLu, FixedPoint, Krylov };
 
 struct StepReport {
     /// Newton iterations (updates of the state) the implicit scheme took.
