@@ -5,8 +5,10 @@
 /// resolution_scale^dim):
 ///   program       48 MiB (CPU reference) or 150 MiB (a Vulkan device: lavapipe's driver; its
 ///                 device memory is host memory)
-///   basis         3 × (V·K·8 + K²(K−1)/2·8): the cache, the dynamics' coefficients, the device's
-///                 copies
+///   basis         3 × (V·K·8 + coefficient bytes): the cache, the dynamics' coefficients, the
+///                 device's copies; the coefficients are K²(K−1)/2·8 dense, 20 per non-zero
+///                 sparse; a closed-form basis's V·K·8 is its materialization
+///                 (engine/format/ModeMaterialization.h)
 ///   smoke         150 (CPU reference: double fields, back-traces, MacCormack temporaries, frames)
 ///                 or 200 (device: float fields, their staging, frames) bytes per smoke cell
 /// times 1.15. Measured peaks of `modeflow run` (2D disk 128² with 40 and 200 modes, smoke scales
@@ -24,6 +26,9 @@ struct RunMemory {
 
 /// `device`: a Vulkan device runs it (else the CPU reference).
 RunMemory estimateRunMemory(std::int64_t smokeCells, std::int64_t velocityDofs, int modes,
-                            bool device);
+                            double coefficientBytes, bool device);
+
+/// The bytes of dense packed coefficients of `modes` modes, K²(K−1)/2·8.
+double denseCoefficientBytes(int modes);
 
 }  // namespace modeflow

@@ -209,6 +209,10 @@ private:
 
 }  // namespace
 
+double estimatedClosedFormNonZeros(int dim, int modes) {
+    return (dim == 3 ? 2.6 : 1.2) * double(modes) * double(modes);
+}
+
 BasisCache::Coefficients assembleClosedFormCoefficients(const GridSpec& grid,
                                                         const std::vector<SeparableMode>& modes) {
     Entries entries = Assembler(grid, modes).run();

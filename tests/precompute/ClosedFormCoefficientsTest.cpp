@@ -128,5 +128,20 @@ TEST(ClosedFormCoefficients, EqualTheWrappedQuadratureOnPeriodicAxes3D) {
     expectEqualToWrappedQuadrature(grid, {false, true, false}, 40);
 }
 
+TEST(ClosedFormCoefficients, TheNonZeroEstimateBoundsTheCountFromAbove) {
+    // The memory estimates use it: never below the count, and not far above.
+    for (const int dim : {2, 3}) {
+        const int n = dim == 3 ? 20 : 64, modes = 600;
+        const GridSpec grid =
+            test::gridScene({n, n, dim == 3 ? n : 1}, {0.0, 0.0, 0.0}, {1.0, 1.0, dim == 3 ? 1.0 : 0.0}, dim).grid;
+        const ClosedFormVelocity basis = closedFormVelocityBasis(grid, {{1, modes}});
+        const double count = double(assembleClosedFormCoefficients(grid, basis.modes).value.size());
+        const double ratio = count / estimatedClosedFormNonZeros(dim, modes);
+        EXPECT_LE(ratio, 1.0) << dim << "D: " << count << " non-zeros";
+        EXPECT_GE(ratio, 0.7) << dim << "D: " << count << " non-zeros";
+        std::printf("[ measured ] %dD, %d modes: %.0f non-zeros, %.2f of the estimate\n", dim, modes, count, ratio);
+    }
+}
+
 }  // namespace
 }  // namespace modeflow
