@@ -1,6 +1,6 @@
 #pragma once
 /// @file Precompute.h
-/// Scene → cut-cell DEC → eigenbases → cache file (DESIGN §1). The only entry point the
+/// Scene → cut-cell DEC → eigenbases → cache file (README.md, "How the precompute works"). The only entry point the
 /// command line needs; every stage below it is a separate module.
 
 #include <filesystem>

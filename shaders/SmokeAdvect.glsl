@@ -1,5 +1,5 @@
 /* SmokeAdvect.glsl: one smoke advection step of density and temperature together, float32
-   (DESIGN section 4; CPU reference engine/reference/SmokeAdvection.cpp, whose comments give the
+   (engine/README.md; CPU reference engine/reference/SmokeAdvection.cpp, whose comments give the
    reasons for each rule), the body of the smoke_advect_<stage>_<dim>d.comp kernels, which define
    SMOKE_STAGE (SmokeAdvectParams.h) and SMOKE_DIM:
 

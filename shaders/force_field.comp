@@ -1,5 +1,5 @@
 #version 450
-// Force density g on the velocity DOFs (DESIGN sections 3-4; CPU reference and definitions:
+// Force density g on the velocity DOFs (README.md "Reduced dynamics", engine/README.md; CPU reference and definitions:
 // engine/reference/ForceField.h): Gaussian stirring splats (force . n) exp(-|x - centre|^2 / radius^2)
 // at the face centres, plus buoyancy times the mean temperature over the dual cell of each
 // up-facing face. Three stages, one pipeline each (engine/device/ForceField):

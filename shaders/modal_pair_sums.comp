@@ -1,5 +1,5 @@
 #version 450
-// First half of the dense structural-coefficient contraction (DESIGN section 3, seed eq. 6.6),
+// First half of the dense structural-coefficient contraction (README.md "Reduced dynamics", seed eq. 6.6),
 // float32. For every stored pair p = (k, j), k < j, of one chunk of the packed coefficients:
 //
 //     sums[p] = sum_i C[k][i][j] a_i

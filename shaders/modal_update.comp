@@ -1,5 +1,5 @@
 #version 450
-// The state updates of the modal integrators (DESIGN section 3), float32, one workgroup over the
+// The state updates of the modal integrators (README.md "Reduced dynamics"), float32, one workgroup over the
 // N modes. x is the state, y the point where r = R(y) was evaluated (modal_combine.comp), a = M y
 // the weighted point modal_pair_sums.comp contracts next, f the modal force (constant over the
 // step), M the diagonal mass (1 + alpha^2 kappa^2 for LANS-alpha), d the decay rates (nu kappa^2).

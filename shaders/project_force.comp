@@ -1,5 +1,5 @@
 #version 450
-// Force projection, pass 1 of 2 (DESIGN section 3; CPU reference engine/reference/ForceProjection.h):
+// Force projection, pass 1 of 2 (README.md "Reduced dynamics"; CPU reference engine/reference/ForceProjection.h):
 //
 //     partial[k][b] = sum_{d in block b} Psi_k[d] w_d q_d
 //

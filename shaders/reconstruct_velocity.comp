@@ -1,5 +1,5 @@
 #version 450
-// Velocity reconstruction (DESIGN section 4): the face field of sum_i v_i Psi_i,
+// Velocity reconstruction (engine/README.md): the face field of sum_i v_i Psi_i,
 //
 //     field[face(d)] = sum_i v_i s_i Psi_i[d] / area(axis of face(d))
 //

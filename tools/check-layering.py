@@ -9,7 +9,9 @@ The rules:
   2. the declared module graph is acyclic;
   3. precompute modules depend on no engine module but engine/core and engine/format, and of the
      engine modules only engine/pipeline depends on precompute;
-  4. engine/core depends on no other module.
+  4. engine/core depends on no other module;
+  5. every test file under tests/ has its modeflow_test() line in tests/CMakeLists.txt, and its
+     includes belong to the libraries that line links (rule 1, one test file at a time).
 Run from anywhere: `tools/check-layering.py` (CI runs it from .ci/run).
 """
 import os
@@ -109,30 +111,55 @@ def main():
         return folder or None
 
     include = re.compile(r'^\s*#\s*include\s+"([^"]+)"', re.M)
+
+    def check_includes(rel, allowed, declarer):
+        for header in include.findall(read(os.path.join(ROOT, rel))):
+            if header.endswith(".spv.h"):
+                target = "shaders"
+            elif os.path.exists(os.path.join(ROOT, header)):
+                target = module_of(header)
+            else:
+                continue  # beside the file, or generated
+            if target is None:
+                problems.append(f"{rel} includes {header}, which belongs to no module")
+            elif target not in allowed:
+                problems.append(f"{rel} includes {header} from {target}, which {declarer} does not declare")
+
     for folder in sorted(mods):
         allowed = closure(folder) | {folder}
         for name in sorted(os.listdir(os.path.join(ROOT, folder))):
-            if not name.endswith(SOURCE_EXTS):
+            if name.endswith(SOURCE_EXTS):
+                check_includes(os.path.join(folder, name), allowed, folder)
+
+    # Rule 5: each test executable, from its line in tests/CMakeLists.txt.
+    tests_cmake = strip_cmake_comments(read(os.path.join(ROOT, "tests", "CMakeLists.txt")))
+    declared = {}
+    for path, body in re.findall(r"modeflow_test\(\s*([\w/]+)([^)]*)\)", tests_cmake):
+        declared[os.path.join("tests", path + ".cpp")] = set(re.findall(r"\b(modeflow_\w+)", body))
+    for top, _, files in os.walk(os.path.join(ROOT, "tests")):
+        for name in files:
+            rel = os.path.relpath(os.path.join(top, name), ROOT)
+            if name.endswith("Test.cpp") and rel not in declared:
+                problems.append(f"{rel} has no modeflow_test() line in tests/CMakeLists.txt")
+    for rel, links in sorted(declared.items()):
+        if not os.path.exists(os.path.join(ROOT, rel)):
+            problems.append(f"tests/CMakeLists.txt names {rel}, which does not exist")
+            continue
+        allowed = set()
+        for name in links:
+            if name not in owner:
+                problems.append(f"tests/CMakeLists.txt links {name} to {rel}, which no module defines")
                 continue
-            rel = os.path.join(folder, name)
-            for header in include.findall(read(os.path.join(ROOT, rel))):
-                if header.endswith(".spv.h"):
-                    target = "shaders"
-                elif os.path.exists(os.path.join(ROOT, header)):
-                    target = module_of(header)
-                else:
-                    continue  # beside the file, or generated
-                if target is None:
-                    problems.append(f"{rel} includes {header}, which belongs to no module")
-                elif target not in allowed:
-                    problems.append(f"{rel} includes {header} from {target}, which {folder} does not declare")
+            allowed |= closure(owner[name]) | {owner[name]}
+        check_includes(rel, allowed, "its modeflow_test() line")
 
     if problems:
         print("layering check failed:")
         for p in problems:
             print("  " + p)
         return 1
-    print(f"layering check: {len(mods)} modules, includes agree with their declared dependencies")
+    print(f"layering check: {len(mods)} modules and {len(declared)} tests, includes agree with their declared "
+          "dependencies")
     return 0
 
 

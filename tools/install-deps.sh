@@ -10,7 +10,7 @@ packages=(
     libtomlplusplus-dev libcli11-dev nlohmann-json3-dev libtinyobjloader-dev
     libvulkan-dev mesa-vulkan-drivers vulkan-tools glslang-tools spirv-tools vulkan-validationlayers
     libglfw3-dev xvfb xauth
-    libstb-dev libgtest-dev libbenchmark-dev time bc
+    libstb-dev libgtest-dev libbenchmark-dev time bc python3 clang-format
 )
 
 missing=()

@@ -1,6 +1,6 @@
 #pragma once
 /// @file MacGrid.h
-/// The regular grid of a scene seen as a MAC grid (DESIGN §2, §4): cells, and faces numbered as
+/// The regular grid of a scene seen as a MAC grid (precompute/README.md; engine/README.md): cells, and faces numbered as
 /// the precompute's CubicalComplex numbers them, so the basis's face DOFs index straight into it:
 /// faces grouped by normal axis (axis 0 first), inside a group x fastest, with n_a + 1 positions
 /// along the normal axis a and n_b along the others. Cells are numbered x fastest.

@@ -1,6 +1,6 @@
 #pragma once
 /// @file MacSampling.h
-/// Trilinear sampling on a MacGrid (DESIGN §4): the staggered (MAC) rule for a face field, each
+/// Trilinear sampling on a MacGrid (engine/README.md): the staggered (MAC) rule for a face field, each
 /// velocity component interpolated from its own grid of face centres, and the cell-centred rule
 /// for a cell field. 2D grids (cells[2] = 1) go through the same code: a one-cell axis has a
 /// one-point stencil.

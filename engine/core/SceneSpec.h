@@ -1,6 +1,6 @@
 #pragma once
 /// @file SceneSpec.h
-/// The validated content of a scene file (DESIGN §5). Plain values only: parsing and validation
+/// The validated content of a scene file (README.md, "Scene files"). Plain values only: parsing and validation
 /// live in SceneLoader, so every other module can use a scene without pulling in TOML.
 
 #include <array>
@@ -133,7 +133,7 @@ struct SourceSpec {
     double end = std::numeric_limits<double>::infinity();
 };
 
-/// How smoke is carried (DESIGN §4): RK2 semi-Lagrangian, or MacCormack with clamping (less
+/// How smoke is carried (engine/README.md): RK2 semi-Lagrangian, or MacCormack with clamping (less
 /// diffusive; engine/reference/SmokeAdvection.h).
 enum class AdvectionScheme { SemiLagrangian, MacCormack };
 

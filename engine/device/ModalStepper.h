@@ -1,6 +1,6 @@
 #pragma once
 /// @file ModalStepper.h
-/// The reduced fluid (Euler, Navier–Stokes, LANS-α; DESIGN §3) advanced on the device in float32:
+/// The reduced fluid (Euler, Navier–Stokes, LANS-α; README.md, "Reduced dynamics") advanced on the device in float32:
 /// the state, the modal force and the integrator's scratch vectors live in device buffers, and a
 /// step is recorded into a CommandSequence, so any number of steps (and the kernels that consume
 /// the velocity) go in one submission. CPU reference: ModalIntegrator over a FluidSystem with the

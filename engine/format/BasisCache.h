@@ -1,6 +1,6 @@
 #pragma once
 /// @file BasisCache.h
-/// What a precompute produces and the runtime reads (DESIGN §5 "Cache file"): the grid, the
+/// What a precompute produces and the runtime reads (README.md, "How the precompute works", step 6): the grid, the
 /// degrees of freedom with their Hodge stars, and the eigenbases. Plain values, no solver types.
 
 #include <cstdint>

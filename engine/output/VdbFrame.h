@@ -1,6 +1,6 @@
 #pragma once
 /// @file VdbFrame.h
-/// Simulation frames as OpenVDB files (DESIGN §5 "VDB frames") that Blender and Houdini open as
+/// Simulation frames as OpenVDB files (README.md, "VDB frames") that Blender and Houdini open as
 /// they are, and a reader of those files for tests and `--resume` checks.
 ///
 /// One file per frame holds the grids

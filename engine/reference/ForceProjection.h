@@ -1,6 +1,6 @@
 #pragma once
 /// @file ForceProjection.h
-/// Grid forces → modal forces f_k = Ψ_kᵀ ⋆ F (DESIGN §3), the double-precision CPU reference of
+/// Grid forces → modal forces f_k = Ψ_kᵀ ⋆ F (README.md, "Reduced dynamics"), the double-precision CPU reference of
 /// engine/device/ForceProjection. Both inputs reduce to f_k = Σ_d Ψ_k[d] w_d q_d with a weight
 /// per DOF that depends on what q is:
 ///

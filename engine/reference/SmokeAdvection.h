@@ -1,7 +1,7 @@
 #pragma once
 /// @file SmokeAdvection.h
 /// Smoke (density and temperature) advection on the smoke grid, the double-precision CPU
-/// reference of the device kernels (DESIGN §4; engine/device/SmokeAdvection).
+/// reference of the device kernels (engine/README.md; engine/device/SmokeAdvection).
 ///
 /// The smoke grid is `basisGrid.refined(scale)`; smoke values are concentrations per smoke cell
 /// (cellIndex order). The velocity is a face field of the basis grid, sampled with the MAC rule

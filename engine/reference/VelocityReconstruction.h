@@ -1,6 +1,6 @@
 #pragma once
 /// @file VelocityReconstruction.h
-/// Modal velocity → grid velocity (DESIGN §4), the double-precision CPU reference of
+/// Modal velocity → grid velocity (engine/README.md), the double-precision CPU reference of
 /// engine/device/VelocityReconstruction: the fluxes Ψ v on the basis's face DOFs turned into a
 /// face field of the whole grid (MacGrid.h: flux / full face area, 0 on faces that are not
 /// DOFs), and cell-centred velocities for output.

@@ -1,6 +1,6 @@
 #pragma once
 /// @file SimulationSettings.h
-/// Everything a simulation of one scene needs besides its basis (DESIGN §1): the step, the
+/// Everything a simulation of one scene needs besides its basis (engine/README.md): the step, the
 /// fluid's parameters, forces and smoke. Built from a scene and its basis, so the device
 /// device::Simulation and the CPU reference::Simulation of one scene run the same model.
 

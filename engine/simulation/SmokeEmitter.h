@@ -1,6 +1,6 @@
 #pragma once
 /// @file SmokeEmitter.h
-/// A smoke and heat source (DESIGN §4, a scene's `[[source]]`): a ball or a box (a disk or a
+/// A smoke and heat source (engine/README.md, a scene's `[[source]]`): a ball or a box (a disk or a
 /// rectangle in 2D) that adds `densityRate · dt` and `temperatureRate · dt` to every fluid smoke
 /// cell whose centre lies inside it. A plain value type, so the device kernels can copy it as is.
 

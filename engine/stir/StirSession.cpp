@@ -6,6 +6,7 @@
 
 #include "engine/dynamics/Diagnostics.h"
 #include "engine/core/Error.h"
+#include "engine/core/SceneKeywords.h"
 
 namespace modeflow::stir {
 namespace {
@@ -196,7 +197,7 @@ double StirSession::energy() const {
 std::string StirSession::status() const {
     char line[200];
     std::snprintf(line, sizeof line, "%s | viscosity %.3g | %d modes (%s) | mouse: %s",
-                  settings().integrator == Integrator::Midpoint ? "midpoint" : "explicit",
+                  std::string(sceneKeyword(settings().integrator)).c_str(),
                   settings().fluid.viscosity, modeCount(), mBases[mBasis].label.c_str(),
                   mPaddleMode ? "paddle" : "stir");
     return line;

@@ -1,6 +1,6 @@
 #pragma once
 /// @file CoefficientAssembly.h
-/// The structural coefficients C[k][i][j] = ∫(∇×Ψi)·(Ψk×Ψj) (seed eq. 6.7, DESIGN §3) of a
+/// The structural coefficients C[k][i][j] = ∫(∇×Ψi)·(Ψk×Ψj) (seed eq. 6.7, README.md, "Reduced dynamics") of a
 /// velocity basis on a cut-cell grid, by quadrature over the vorticity elements (3D edges,
 /// 2D vertices).
 ///

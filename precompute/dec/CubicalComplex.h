@@ -1,6 +1,6 @@
 #pragma once
 /// @file CubicalComplex.h
-/// The cubical cell complex of a regular grid in 2 or 3 dimensions (DESIGN §2).
+/// The cubical cell complex of a regular grid in 2 or 3 dimensions (precompute/README.md).
 ///
 /// A k-cell is identified by the set of axes it extends along (a bit mask with k bits) and the
 /// integer position of its lower corner. Along an axis in the mask there are n_a positions, along

@@ -1,7 +1,7 @@
 #pragma once
 /// @file CutCellDec.h
 /// Exterior derivatives and diagonal Hodge stars restricted to the degrees of freedom of a cut-cell
-/// domain (DESIGN §2, seed §6.3.4, appendix C.1). In 3D: cells = 3-forms, faces = 2-forms,
+/// domain (precompute/README.md, seed §6.3.4, appendix C.1). In 3D: cells = 3-forms, faces = 2-forms,
 /// edges = 1-forms (vorticity); in 2D: cells, faces (edges), vertices (vorticity).
 
 #include <cstdint>

@@ -1,6 +1,6 @@
 #pragma once
 /// @file CutCellMeasures.h
-/// The part of every primal element (vertex, edge, face, cell) that lies inside Ω (DESIGN §2,
+/// The part of every primal element (vertex, edge, face, cell) that lies inside Ω (precompute/README.md,
 /// seed §6.3.4): the only geometric input of the cut-cell Hodge stars.
 
 #include <array>

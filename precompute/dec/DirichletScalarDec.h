@@ -1,6 +1,6 @@
 #pragma once
 /// @file DirichletScalarDec.h
-/// Ghost-fluid operators for Dirichlet scalars (DESIGN §2). Cut primal stars alone give the
+/// Ghost-fluid operators for Dirichlet scalars (precompute/README.md). Cut primal stars alone give the
 /// Neumann spectrum; a zero value on a curved wall needs the wall's position along each dual edge
 /// (Gibou et al. 2002), which converges at second order.
 

@@ -1,6 +1,6 @@
 #pragma once
 /// @file Domain.h
-/// The fluid domain Ω = {x : χ(x) > 0} (DESIGN §2): the scene's shapes combined in order.
+/// The fluid domain Ω = {x : χ(x) > 0} (precompute/README.md): the scene's shapes combined in order.
 
 #include <memory>
 #include <vector>

@@ -14,7 +14,7 @@ namespace modeflow {
 /// smoke may be. A smoke cell is fluid when its basis cell has a positive fraction inside Ω (the
 /// basis's own notion of fluid: at scale 1 a uniform temperature's buoyancy, a gradient, then
 /// projects to round-off, where a cell-centre test leaves 1–2% spurious flow along cut walls)
-/// and, on a finer smoke grid, when its centre is inside Ω as well (χ > 0, DESIGN §2).
+/// and, on a finer smoke grid, when its centre is inside Ω as well (χ > 0, precompute/README.md).
 /// @throw modeflow::Error when a domain shape cannot be built (e.g. a missing mesh file).
 std::vector<std::uint8_t> fluidMask(const SceneSpec& scene, const BasisCache& cache, int scale);
 

@@ -1,6 +1,6 @@
 #pragma once
 /// @file SceneLoader.h
-/// Reads a scene file (DESIGN §5) into a validated SceneSpec. Everything a user can get wrong in a
+/// Reads a scene file (README.md, "Scene files") into a validated SceneSpec. Everything a user can get wrong in a
 /// scene is caught here, with a message that names the file and the key, so later stages can trust
 /// the values they are given. The TOML library stays inside precompute/scene.
 
@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "engine/core/Error.h"
+#include "engine/core/SceneKeywords.h"
 #include "engine/core/SceneSpec.h"
 
 namespace modeflow {
@@ -65,19 +66,9 @@ SceneSpec parseScene(std::string_view text, const std::filesystem::path& origin)
 /// @throw Error on bad syntax, overlapping/unsorted ranges, first > last or first < 1.
 std::vector<ModeRange> parseModeRanges(std::string_view text, std::string_view key);
 
-/// The scene-file spelling of each choice ("ball", "subtract", "free-slip", "rk4", ...), for
-/// summaries and messages that should read like the file.
-std::string_view sceneKeyword(ShapeKind kind);
-std::string_view sceneKeyword(CsgOp op);
-std::string_view sceneKeyword(ScalarBoundary boundary);
-std::string_view sceneKeyword(WallKind wall);
-std::string_view sceneKeyword(BoundaryTreatment treatment);
-std::string_view sceneKeyword(Integrator integrator);
-
 /// The integrator a scene keyword names ("explicit", "rk4", "midpoint", "trapezoidal"), for
 /// command-line options that override [simulation].integrator. `key` prefixes the message.
 /// @throw Error naming the value, the closest keyword and the choices.
 Integrator parseIntegrator(std::string_view text, std::string_view key);
-std::string_view sceneKeyword(InitialVelocity velocity);
 
 }  // namespace modeflow

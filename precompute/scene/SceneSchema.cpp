@@ -64,27 +64,6 @@ std::span<const std::string_view> shapeKeys(ShapeKind kind) {
 
 }  // namespace scene
 
-using scene::Choices;
-using scene::keywordOf;
-
-std::string_view sceneKeyword(ShapeKind kind) {
-    return keywordOf(Choices<ShapeKind>(scene::kShapeKinds), kind);
-}
-std::string_view sceneKeyword(CsgOp op) {
-    return keywordOf(Choices<CsgOp>(scene::kCsgOps), op);
-}
-std::string_view sceneKeyword(ScalarBoundary boundary) {
-    return keywordOf(Choices<ScalarBoundary>(scene::kScalarBoundaries), boundary);
-}
-std::string_view sceneKeyword(WallKind wall) {
-    return keywordOf(Choices<WallKind>(scene::kWalls), wall);
-}
-std::string_view sceneKeyword(BoundaryTreatment treatment) {
-    return keywordOf(Choices<BoundaryTreatment>(scene::kBoundaries), treatment);
-}
-std::string_view sceneKeyword(Integrator integrator) {
-    return keywordOf(Choices<Integrator>(scene::kIntegrators), integrator);
-}
 Integrator parseIntegrator(std::string_view text, std::string_view key) {
     std::vector<std::string_view> names;
     for (const auto& [name, value] : scene::kIntegrators) {
@@ -95,10 +74,6 @@ Integrator parseIntegrator(std::string_view text, std::string_view key) {
     if (auto guess = scene::closest(text, names))
         what += " (did you mean " + std::string(*guess) + "?)";
     throw Error(what + "; expected " + scene::joinWords(names));
-}
-
-std::string_view sceneKeyword(InitialVelocity velocity) {
-    return keywordOf(Choices<InitialVelocity>(scene::kInitialVelocities), velocity);
 }
 
 }  // namespace modeflow

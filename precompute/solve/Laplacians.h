@@ -1,6 +1,6 @@
 #pragma once
 /// @file Laplacians.h
-/// The symmetric positive semi-definite operators of DESIGN §2 / seed appendix C.1, assembled from
+/// The symmetric positive semi-definite operators of precompute/README.md / seed appendix C.1, assembled from
 /// restricted incidence matrices and diagonal stars, so symmetry holds by construction.
 
 #include <Eigen/SparseCore>

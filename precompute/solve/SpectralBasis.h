@@ -1,6 +1,6 @@
 #pragma once
 /// @file SpectralBasis.h
-/// The velocity and scalar eigenbases of a domain (seed §6.3.1, appendix C.1; DESIGN §2).
+/// The velocity and scalar eigenbases of a domain (seed §6.3.1, appendix C.1; precompute/README.md).
 
 #include <vector>
 

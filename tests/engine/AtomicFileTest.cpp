@@ -14,6 +14,7 @@
 
 #include "engine/core/AtomicFile.h"
 #include "engine/core/Error.h"
+#include "tests/support/TestFolder.h"
 
 namespace modeflow {
 namespace {
@@ -27,16 +28,8 @@ std::string contents(const fs::path& file) {
 
 class AtomicFileTest : public ::testing::Test {
 protected:
-    void SetUp() override {
-        mFolder = fs::temp_directory_path() /
-                  ("modeflow-atomic-" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) +
-                   "-" + std::to_string(::getpid()));
-        fs::remove_all(mFolder);
-        fs::create_directories(mFolder);
-    }
-    void TearDown() override { fs::remove_all(mFolder); }
     int entries() const { return int(std::distance(fs::directory_iterator(mFolder), fs::directory_iterator())); }
-    fs::path mFolder;
+    testing::TestFolder mFolder;
 };
 
 TEST_F(AtomicFileTest, WritesAndReplacesWholeFiles) {

@@ -15,7 +15,7 @@
 #include "engine/dynamics/ModalIntegrator.h"
 #include "precompute/closedform/ClosedFormBasis.h"
 #include "precompute/closedform/ClosedFormCoefficients.h"
-#include "tests/engine/RandomCoefficients.h"
+#include "tests/support/RandomCoefficients.h"
 
 namespace modeflow {
 namespace {

@@ -13,7 +13,7 @@
 #include "engine/core/PackedLayout.h"
 #include "engine/dynamics/SparseCoefficients.h"
 #include "engine/core/Error.h"
-#include "tests/engine/RandomCoefficients.h"
+#include "tests/support/RandomCoefficients.h"
 
 namespace modeflow {
 namespace {

@@ -15,7 +15,7 @@
 #include "engine/dynamics/ModalIntegrator.h"
 #include "precompute/scene/SceneLoader.h"
 #include "engine/core/Error.h"
-#include "tests/engine/RandomCoefficients.h"
+#include "tests/support/RandomCoefficients.h"
 
 namespace modeflow {
 namespace {

@@ -17,7 +17,9 @@
 #include "engine/core/Error.h"
 #include "precompute/dec/CubicalComplex.h"
 #include "precompute/dec/CutCellDec.h"
-#include "tests/engine/TestBases.h"
+#include "tests/support/RandomCoefficients.h"
+#include "tests/support/RealBases.h"
+#include "tests/support/SyntheticBases.h"
 
 namespace modeflow {
 namespace {
@@ -53,7 +55,7 @@ TEST(ForceProjection, DensityWeightIsTheDualEdgeLengthThatTheStarsImply) {
         const MacGrid grid = MacGrid::fromSpec(cache->grid);
         const Eigen::VectorXd w = projectionWeights(*cache, FaceQuantity::Density);
         // F = g |f ∩ Ω| with |f ∩ Ω| = |dual edge| / ⋆ (what the precompute's stars encode).
-        const Eigen::VectorXd g = testing::normalVector(Eigen::Index(cache->faces.size()), 5);
+        const Eigen::VectorXd g = testing::randomVector(Eigen::Index(cache->faces.size()), 5);
         Eigen::VectorXd starFlux(g.size());
         int whole = 0;
         for (std::size_t d = 0; d < cache->faces.size(); ++d) {
@@ -79,7 +81,7 @@ TEST(ForceProjection, DensityWeightIsTheDualEdgeLengthThatTheStarsImply) {
 TEST(ForceProjection, ProjectingAReconstructedFieldGivesTheStateBack) {
     const BasisCache synthetic = testing::syntheticBasis(testing::boxGrid(3, 5), 12, 2);
     for (const BasisCache* cache : {&testing::disk2d(), &testing::ball3d(), &synthetic}) {
-        const Eigen::VectorXd v = testing::normalVector(cache->velocity.modes.cols(), 9);
+        const Eigen::VectorXd v = testing::randomVector(cache->velocity.modes.cols(), 9);
         const std::vector<double> field = reference::reconstructFaceField(*cache, v);
         const Eigen::VectorXd back = reference::projectFaceField(*cache, field);
         EXPECT_LE((back - v).lpNorm<Eigen::Infinity>(), 1e-12 * v.lpNorm<Eigen::Infinity>());

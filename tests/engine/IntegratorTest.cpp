@@ -21,7 +21,7 @@
 #include "precompute/scene/SceneLoader.h"
 #include "engine/core/PackedLayout.h"
 #include "engine/core/Error.h"
-#include "tests/engine/RandomCoefficients.h"
+#include "tests/support/RandomCoefficients.h"
 
 namespace modeflow {
 namespace {

@@ -14,7 +14,7 @@
 #include "engine/dynamics/MhdSystem.h"
 #include "engine/core/Error.h"
 #include "engine/core/KappaSquared.h"
-#include "tests/engine/RandomCoefficients.h"
+#include "tests/support/RandomCoefficients.h"
 
 namespace modeflow {
 namespace {

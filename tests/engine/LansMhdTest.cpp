@@ -13,7 +13,6 @@
 
 #include <Eigen/Core>
 
-#include "engine/dynamics/CachedCoefficients.h"
 #include "engine/dynamics/DenseCoefficients.h"
 #include "engine/dynamics/Diagnostics.h"
 #include "engine/dynamics/FluidSystem.h"
@@ -26,9 +25,9 @@
 #include "engine/core/Error.h"
 #include "engine/reference/Simulation.h"
 #include "engine/simulation/BackendCapabilities.h"
-#include "precompute/Precompute.h"
-#include "precompute/geometry/FluidMask.h"
-#include "tests/engine/RandomCoefficients.h"
+#include "tests/support/RandomCoefficients.h"
+#include "tests/support/SharedRuns.h"
+#include "tests/support/TestScenes.h"
 
 namespace modeflow {
 namespace {
@@ -215,45 +214,26 @@ TEST(Mhd, BadInputThrows) {
 
 /// A unit disk at 24² with 12 modes and a smoke source, for the MHD runs of the reference
 /// simulation (the chain `modeflow run --device cpu` runs).
-struct MhdDisk {
-    SceneSpec scene;
-    BasisCache cache;
-    std::unique_ptr<StructuralCoefficients> coefficients;
-    std::vector<std::uint8_t> mask;
-    MhdDisk() {
+const RunInputs& mhdDisk() {
+    static const RunInputs disk = [] {
+        SceneSpec scene = testing::unitBallScene(2, 24, 12, 0);
         scene.name = "mhd";
-        scene.grid.resolution = {24, 24, 1};
-        scene.grid.boundsMin = {-1.1, -1.1, 0.0};
-        scene.grid.boundsMax = {1.1, 1.1, 0.0};
-        ShapeSpec disk;
-        disk.radius = 1.0;
-        scene.domain = {disk};
-        scene.basis.velocityModes = {{1, 12}};
-        scene.basis.scalarModes = 0;
         scene.simulation.mhd = true;
         scene.output.stepsPerFrame = 20;
         SourceSpec source;
-        source.shape.radius = 0.3;
+        source.shape = testing::ball({0.0, 0.0, 0.0}, 0.3);
         scene.sources = {source};
-        Progress quiet = Progress::silent();
-        cache = computeBasis(scene, quiet);
-        coefficients = coefficientsFromCache(cache);
-        mask = fluidMask(scene, cache, 1);
-    }
-};
-
-const MhdDisk& mhdDisk() {
-    static const MhdDisk disk;
+        return testing::sharedRun(scene);
+    }();
     return disk;
 }
 
 TEST(MhdSimulation, ReferenceRunKeepsEnergyAndCrossHelicity) {
-    const MhdDisk& disk = mhdDisk();
+    const RunInputs& disk = mhdDisk();
     const int n = disk.coefficients->size();
-    const SimulationSettings settings =
-        SimulationSettings::fromScene(disk.scene, disk.cache);
+    const SimulationSettings& settings = disk.settings;
     ASSERT_TRUE(settings.mhd);
-    reference::Simulation simulation(disk.cache, *disk.coefficients, settings, disk.mask);
+    reference::Simulation simulation(disk.cache, *disk.coefficients, settings, disk.smokeMask);
     const Eigen::VectorXd v = randomVector(n, 601), f = 0.7 * randomVector(n, 602);
     simulation.setVelocity(v);
     simulation.setMagneticField(f);
@@ -273,7 +253,7 @@ TEST(MhdSimulation, ReferenceRunKeepsEnergyAndCrossHelicity) {
 }
 
 TEST(MhdSimulation, TheDeviceAndPlainFluidRunsRefuseAField) {
-    const MhdDisk& disk = mhdDisk();
+    const RunInputs& disk = mhdDisk();
     try {
         requireSupport(disk.scene, BackendKind::Vulkan);
         ADD_FAILURE() << "the device runtime accepted an MHD scene";
@@ -281,9 +261,9 @@ TEST(MhdSimulation, TheDeviceAndPlainFluidRunsRefuseAField) {
         EXPECT_NE(std::string(e.what()).find("[simulation].mhd"), std::string::npos) << e.what();
         EXPECT_NE(std::string(e.what()).find("--device cpu"), std::string::npos) << e.what();
     }
-    SimulationSettings fluid = SimulationSettings::fromScene(disk.scene, disk.cache);
+    SimulationSettings fluid = disk.settings;
     fluid.mhd = false;
-    reference::Simulation simulation(disk.cache, *disk.coefficients, fluid, disk.mask);
+    reference::Simulation simulation(disk.cache, *disk.coefficients, fluid, disk.smokeMask);
     EXPECT_EQ(simulation.magneticField().size(), 0);
     EXPECT_TRUE(simulation.faceMagneticField().empty());
     EXPECT_THROW(simulation.setMagneticField(Eigen::VectorXd::Zero(12)), Error);

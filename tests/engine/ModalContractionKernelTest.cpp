@@ -17,8 +17,8 @@
 #include "engine/vulkan/CommandSequence.h"
 #include "engine/vulkan/DeviceBuffer.h"
 #include "shaders/ModalStepParams.h"
-#include "tests/engine/RandomCoefficients.h"
-#include "tests/engine/VulkanTestContext.h"
+#include "tests/support/RandomCoefficients.h"
+#include "tests/support/VulkanTestContext.h"
 
 namespace modeflow {
 namespace {

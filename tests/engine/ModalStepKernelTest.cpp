@@ -16,8 +16,8 @@
 #include "engine/device/ModalStepper.h"
 #include "engine/vulkan/CommandSequence.h"
 #include "precompute/scene/SceneLoader.h"
-#include "tests/engine/RandomCoefficients.h"
-#include "tests/engine/VulkanTestContext.h"
+#include "tests/support/RandomCoefficients.h"
+#include "tests/support/VulkanTestContext.h"
 
 namespace modeflow {
 namespace {

@@ -11,7 +11,8 @@
 #include "engine/format/CacheFile.h"
 #include "engine/format/ModeMaterialization.h"
 #include "precompute/Precompute.h"
-#include "tests/precompute/TestScenes.h"
+#include "tests/support/TestFolder.h"
+#include "tests/support/TestScenes.h"
 
 namespace modeflow {
 namespace {
@@ -19,7 +20,7 @@ namespace {
 namespace fs = std::filesystem;
 
 BasisCache wholeBox(int modes) {
-    SceneSpec scene = test::gridScene({12, 10, 8}, {0.0, 0.0, 0.0}, {1.0, 1.0, 1.0}, 3);
+    SceneSpec scene = testing::gridScene({12, 10, 8}, {0.0, 0.0, 0.0}, {1.0, 1.0, 1.0}, 3);
     scene.basis.velocityModes = {{1, modes}};
     scene.basis.scalarModes = 6;
     Progress quiet = Progress::silent();
@@ -32,8 +33,7 @@ TEST(ModeMaterialization, TheCacheStoresDescriptorsAndARunGetsTheColumns) {
     EXPECT_EQ(cache.velocity.modes.cols(), 0);
     EXPECT_EQ(cache.velocity.separable.size(), 200u);
 
-    const fs::path dir = fs::path(::testing::TempDir()) / "materialization";
-    fs::create_directories(dir);
+    const testing::TestFolder dir;
     writeCache(dir / "box.mfbasis", cache);
     // 200 dense columns on 2 556 faces would be 4 MB; the descriptors are 8 kB.
     EXPECT_LT(fs::file_size(dir / "box.mfbasis"), 2'000'000u);
@@ -49,7 +49,6 @@ TEST(ModeMaterialization, TheCacheStoresDescriptorsAndARunGetsTheColumns) {
     EXPECT_EQ(read.velocity.modes, velocityModeFluxes(read.grid, read.faces, read.velocity.separable));
     const Eigen::MatrixXd gram = read.velocity.modes.transpose() * read.faceStar.asDiagonal() * read.velocity.modes;
     EXPECT_LE((gram - Eigen::MatrixXd::Identity(200, 200)).cwiseAbs().maxCoeff(), 1e-12);
-    fs::remove_all(dir);
 }
 
 TEST(ModeMaterialization, AColumnsMatrixThatDoesNotFitIsRefused) {

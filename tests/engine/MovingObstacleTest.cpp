@@ -10,7 +10,7 @@
 #include "engine/core/FaceLocation.h"
 #include "engine/reference/ObstacleCorrection.h"
 #include "engine/reference/VelocityReconstruction.h"
-#include "tests/engine/TestBases.h"
+#include "tests/support/RealBases.h"
 
 namespace modeflow {
 namespace {

@@ -12,8 +12,8 @@
 #include "engine/device/ObstacleCorrection.h"
 #include "engine/device/VelocityReconstruction.h"
 #include "engine/vulkan/CommandSequence.h"
-#include "tests/engine/TestBases.h"
-#include "tests/engine/VulkanTestContext.h"
+#include "tests/support/RealBases.h"
+#include "tests/support/VulkanTestContext.h"
 
 namespace modeflow {
 namespace {

@@ -2,10 +2,10 @@
 /// engine/preview: PNG files read back by stb_image; 2D pictures (bright where the smoke is,
 /// walls outside Ω, y up, warm tint); the 3D device renderer against its CPU reference pixel by
 /// pixel, and what a viewer expects of it (height, empty volume, light from above); contact
-/// sheets. Writes /tmp/preview_2d.png and /tmp/preview_3d.png as samples to look at.
+/// sheets. Writes preview_2d.png and preview_3d.png into the test artifact folder
+/// (tests/support/TestFolder.h) as samples to look at.
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -14,14 +14,6 @@
 #include <vector>
 
 #include <gtest/gtest.h>
-
-#define STB_IMAGE_IMPLEMENTATION
-#define STB_IMAGE_STATIC
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wunused-function"
-#pragma GCC diagnostic ignored "-Wmissing-field-initializers"
-#include <stb/stb_image.h>
-#pragma GCC diagnostic pop
 
 #include "engine/core/Error.h"
 #include "engine/preview/ContactSheet.h"
@@ -32,7 +24,10 @@
 #include "engine/preview/VolumeRenderer.h"
 #include "engine/vulkan/CommandSequence.h"
 #include "engine/vulkan/DeviceBuffer.h"
-#include "tests/engine/VulkanTestContext.h"
+#include "tests/support/PngFile.h"
+#include "tests/support/SmokeTestFields.h"
+#include "tests/support/TestFolder.h"
+#include "tests/support/VulkanTestContext.h"
 
 namespace modeflow {
 namespace {
@@ -40,6 +35,7 @@ namespace {
 namespace fs = std::filesystem;
 using preview::Image;
 using preview::Rgba;
+using testing::ballMask;
 namespace palette = preview::palette;
 
 /// [−1, 1]^dim, `n` cells per axis (a 3D grid may be stretched along z by `zScale`).
@@ -83,13 +79,6 @@ std::vector<float> blob(const MacGrid& g, double cx, double cy, double cz, doubl
     });
 }
 
-std::vector<std::uint8_t> ballMask(const MacGrid& g, double radius) {
-    const std::vector<float> inside = cellField(g, [&](double x, double y, double z) {
-        return x * x + y * y + z * z < radius * radius ? 1.0 : 0.0;
-    });
-    return std::vector<std::uint8_t>(inside.begin(), inside.end());
-}
-
 int brightness(Rgba c) {
     return (c[0] + c[1] + c[2]) / 3;
 }
@@ -126,13 +115,6 @@ PixelDifference compare(const Image& a, const Image& b) {
     return d;
 }
 
-fs::path scratchFolder() {
-    const fs::path folder =
-        fs::temp_directory_path() / ("modeflow-preview-test-" + std::to_string(::getpid()));
-    fs::create_directories(folder);
-    return folder;
-}
-
 // ---------------------------------------------------------------------------------------- PNG
 
 TEST(PngWriterTest, RoundTripKeepsSizeAndEveryPixel) {
@@ -142,25 +124,22 @@ TEST(PngWriterTest, RoundTripKeepsSizeAndEveryPixel) {
             image.setPixel(x, y,
                            {std::uint8_t(7 * x), std::uint8_t(11 * y), std::uint8_t(x * y),
                             std::uint8_t(255 - x)});
-    const fs::path folder = scratchFolder();
+    const testing::TestFolder folder;
     const fs::path file = folder / "round trip.png";
     preview::writePng(file, image);
 
-    int w = 0, h = 0, channels = 0;
-    stbi_uc* data = stbi_load(file.c_str(), &w, &h, &channels, 4);
-    ASSERT_NE(data, nullptr) << stbi_failure_reason();
-    EXPECT_EQ(w, 37);
-    EXPECT_EQ(h, 23);
-    EXPECT_EQ(channels, 4);
-    EXPECT_TRUE(std::equal(image.rgba.begin(), image.rgba.end(), data));
-    stbi_image_free(data);
+    const std::optional<testing::PngPixels> png = testing::readPng(file);
+    ASSERT_TRUE(png) << file;
+    EXPECT_EQ(png->width, 37);
+    EXPECT_EQ(png->height, 23);
+    EXPECT_EQ(png->channelsInFile, 4);
+    EXPECT_TRUE(std::equal(image.rgba.begin(), image.rgba.end(), png->rgba.begin()));
     EXPECT_EQ(std::distance(fs::directory_iterator(folder), fs::directory_iterator()), 1)
         << "temporary file left";
-    fs::remove_all(folder);
 }
 
 TEST(PngWriterTest, FailuresNameTheFileAndLeaveNothingBehind) {
-    const fs::path folder = scratchFolder();
+    const testing::TestFolder folder;
     const fs::path missing = folder / "no such folder" / "frame.png";
     try {
         preview::writePng(missing, Image(4, 4));
@@ -173,7 +152,6 @@ TEST(PngWriterTest, FailuresNameTheFileAndLeaveNothingBehind) {
     EXPECT_THROW(preview::writePng(folder / "broken.png", broken), Error);
     EXPECT_THROW(preview::writePng(folder / "empty.png", Image()), Error);
     EXPECT_TRUE(fs::is_empty(folder));
-    fs::remove_all(folder);
 }
 
 // ----------------------------------------------------------------------------------------- 2D
@@ -206,7 +184,7 @@ TEST(SmokeImage2DTest, BrightBlobDarkFluidWallsOutsideAndYUp) {
         image, preview::renderSmoke2D(s.g, std::vector<float>(s.density.size(), 0.0f), {}, s.mask));
     EXPECT_NEAR(row / image.height, (1.0 - 0.45) / 2.0, 0.02);
     preview::writePng(
-        "/tmp/preview_2d.png",
+        testing::artifactFolder() / "preview_2d.png",
         preview::renderSmoke2D(s.g, s.density, blob(s.g, 0.2, 0.5, 0.0, 0.12, 2.0), s.mask));
 }
 
@@ -393,39 +371,22 @@ TEST_P(VolumePreviewTest, RejectsWrongGridsAndBuffers) {
     EXPECT_THROW(renderer.render(enough, -1.0f), Error);
 }
 
-/// A 64³ grid at 512 × 512: the sample picture and the time a preview of a run costs.
-TEST_P(VolumePreviewTest, Renders64CubedAt512Squared) {
-    if (GetParam()) GTEST_SKIP() << "timing only without the validation layer";
+/// A 64³ grid at 512 × 512, the sample picture (preview_3d.png in the artifact folder): the same
+/// pixels from every render and from a timed command sequence. Its time: tools/bench/bench_preview.
+TEST_P(VolumePreviewTest, Renders64CubedAt512SquaredTheSameEachTime) {
     const MacGrid g = grid(3, 64);
-    const std::vector<std::uint8_t> mask = ballMask(g, 0.95);
-    // A mushroom cloud: a wavy stem under a ring and a cap.
-    const std::vector<float> density = cellField(g, [](double x, double y, double z) {
-        const double sx = x - 0.06 * std::sin(7.0 * z), stem = sx * sx + y * y;
-        const double ring = std::pow(std::hypot(x, y) - 0.3, 2) + (z - 0.3) * (z - 0.3);
-        const double cap = x * x + y * y + (z - 0.4) * (z - 0.4);
-        return 0.5 * std::exp(-stem / 0.01) * std::clamp((0.3 - z) / 0.2, 0.0, 1.0) *
-                   (0.8 + 0.2 * std::sin(23.0 * z)) +
-               std::exp(-ring / 0.012) + 0.6 * std::exp(-cap / 0.03);
-    });
-    preview::VolumeRenderer renderer(context(), g, mask, 512, 512);
+    preview::VolumeRenderer renderer(context(), g, ballMask(g, 0.95), 512, 512);
     const vulkan::DeviceBuffer buffer =
-        vulkan::DeviceBuffer::fromValues<float>(context(), density, "density");
-    Image image = renderer.render(buffer, 15.0f);  // the first submission pays one-time costs
-    const auto start = std::chrono::steady_clock::now();
-    image = renderer.render(buffer, 15.0f);
-    const double ms =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    std::cout << "64^3 at 512x512 on " << context().deviceName() << ": " << ms << " ms\n";
-    // The two passes apart, from GPU timestamps.
+        vulkan::DeviceBuffer::fromValues<float>(context(), testing::mushroomCloud(g), "density");
+    const Image image = renderer.render(buffer, 15.0f);
+    const Image empty = render(g, std::vector<float>(std::size_t(g.cellCount()), 0.0f), ballMask(g, 0.95), 512, 512, 15.0f);
+    EXPECT_GT(brightRowCentre(image, empty), 0.0) << "the cloud does not show";
+    EXPECT_EQ(renderer.render(buffer, 15.0f).rgba, image.rgba);
     vulkan::CommandSequence timed(context(), true);
-    if (timed.isTiming()) {
-        renderer.record(timed, buffer, 15.0f);
-        timed.submitAndWait();
-        std::cout << "light pass " << timed.dispatchTimesMs()[0] << " ms, ray march "
-                  << timed.dispatchTimesMs()[1] << " ms\n";
-        EXPECT_EQ(renderer.picture().rgba, image.rgba);
-    }
-    preview::writePng("/tmp/preview_3d.png", image);
+    renderer.record(timed, buffer, 15.0f);
+    timed.submitAndWait();
+    EXPECT_EQ(renderer.picture().rgba, image.rgba);
+    preview::writePng(testing::artifactFolder() / "preview_3d.png", image);
 }
 
 TEST_P(VolumePreviewTest, StagedBuffersGiveTheSamePicture) {

@@ -16,9 +16,11 @@
 #include "engine/device/VelocityReconstruction.h"
 #include "engine/vulkan/CommandSequence.h"
 #include "engine/vulkan/DeviceBuffer.h"
-#include "tests/engine/KernelTestSupport.h"
-#include "tests/engine/TestBases.h"
-#include "tests/engine/VulkanTestContext.h"
+#include "tests/support/KernelTestSupport.h"
+#include "tests/support/RandomCoefficients.h"
+#include "tests/support/RealBases.h"
+#include "tests/support/SyntheticBases.h"
+#include "tests/support/VulkanTestContext.h"
 
 namespace modeflow {
 namespace {
@@ -79,7 +81,7 @@ class ReconstructionKernelTest : public testing::VulkanTest {};
 
 TEST_P(ReconstructionKernelTest, Float32EqualsTheCpuReference) {
     for (const Case& c : cases()) {
-        const Eigen::VectorXd v = testing::normalVector(c.cache.velocity.modes.cols(), 7);
+        const Eigen::VectorXd v = testing::randomVector(c.cache.velocity.modes.cols(), 7);
         const Eigen::VectorXd device = reconstructOnDevice(context(), c.cache, v, ModePrecision::Float32);
         ASSERT_FALSE(device.hasNaN()) << c.name << ": a DOF face was never written";
         const Eigen::VectorXd reference = referenceOnRounded(c.cache, v, ModePrecision::Float32);
@@ -98,7 +100,7 @@ TEST_P(ReconstructionKernelTest, Float32EqualsTheCpuReference) {
 
 TEST_P(ReconstructionKernelTest, Float16StaysWithinItsMeasuredBound) {
     for (const Case& c : cases()) {
-        const Eigen::VectorXd v = testing::normalVector(c.cache.velocity.modes.cols(), 8);
+        const Eigen::VectorXd v = testing::randomVector(c.cache.velocity.modes.cols(), 8);
         const Eigen::VectorXd device = reconstructOnDevice(context(), c.cache, v, ModePrecision::Float16);
         ASSERT_FALSE(device.hasNaN()) << c.name;
         // The decoding and accumulation are float32-exact; the modes' rounding is the error.
@@ -114,7 +116,7 @@ TEST_P(ReconstructionKernelTest, Float16StaysWithinItsMeasuredBound) {
 TEST_P(ReconstructionKernelTest, SplitModeBuffersGiveTheSameField) {
     for (const Case& c : cases()) {
         for (const ModePrecision precision : {ModePrecision::Float32, ModePrecision::Float16}) {
-            const Eigen::VectorXd v = testing::normalVector(c.cache.velocity.modes.cols(), 9);
+            const Eigen::VectorXd v = testing::randomVector(c.cache.velocity.modes.cols(), 9);
             const Eigen::VectorXd whole = reconstructOnDevice(context(), c.cache, v, precision);
             // Room for a quarter of the modes per buffer (and for the face field).
             const ModeBuffer probe(context(), c.cache.velocity.modes, precision);
@@ -138,7 +140,7 @@ TEST_P(ReconstructionKernelTest, ChunksNotAlignedToFourModesGiveTheSameField) {
     // kernel reads (ModeBuffer rounds chunks down to multiples of 4 modes only where 4 fit).
     const Case& c = cases()[0];
     for (const ModePrecision precision : {ModePrecision::Float32, ModePrecision::Float16}) {
-        const Eigen::VectorXd v = testing::normalVector(c.cache.velocity.modes.cols(), 11);
+        const Eigen::VectorXd v = testing::randomVector(c.cache.velocity.modes.cols(), 11);
         const Eigen::VectorXd whole = reconstructOnDevice(context(), c.cache, v, precision);
         const ModeBuffer probe(context(), c.cache.velocity.modes, precision);
         const VkDeviceSize limit = VkDeviceSize(probe.modeStride()) * 4 * 3;
@@ -154,7 +156,7 @@ TEST_P(ReconstructionKernelTest, ChunksNotAlignedToFourModesGiveTheSameField) {
 
 TEST_P(ReconstructionKernelTest, AnyWorkgroupSizeGivesTheSameField) {
     const Case& c = cases()[1];
-    const Eigen::VectorXd v = testing::normalVector(c.cache.velocity.modes.cols(), 10);
+    const Eigen::VectorXd v = testing::randomVector(c.cache.velocity.modes.cols(), 10);
     const Eigen::VectorXd reference = referenceOnRounded(c.cache, v, ModePrecision::Float32);
     for (const std::uint32_t size : {1u, 48u, 100u, 256u}) {
         const Eigen::VectorXd device = reconstructOnDevice(context(), c.cache, v, ModePrecision::Float32, size);

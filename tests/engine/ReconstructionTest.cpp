@@ -11,7 +11,9 @@
 #include "engine/core/FaceLocation.h"
 #include "engine/reference/VelocityReconstruction.h"
 #include "engine/core/Error.h"
-#include "tests/engine/TestBases.h"
+#include "tests/support/RandomCoefficients.h"
+#include "tests/support/RealBases.h"
+#include "tests/support/SyntheticBases.h"
 
 namespace modeflow {
 namespace {
@@ -33,7 +35,7 @@ double relativeDivergence(const BasisCache& cache, const std::vector<double>& fi
 
 TEST(Reconstruction, RealBasesGiveDivergenceFreeFaceFieldsOnTheWholeGrid) {
     for (const BasisCache* cache : {&testing::disk2d(), &testing::ball3d()}) {
-        const Eigen::VectorXd v = testing::normalVector(cache->velocity.modes.cols(), 3);
+        const Eigen::VectorXd v = testing::randomVector(cache->velocity.modes.cols(), 3);
         const std::vector<double> field = reference::reconstructFaceField(*cache, v);
         const double divergence = relativeDivergence(*cache, field);
         std::cout << cache->grid.dim << "D real basis: max |div| / max |flux| = " << divergence << "\n";
@@ -50,7 +52,7 @@ TEST(Reconstruction, ScattersFluxOverWholeFaceAreaAndLeavesOtherFacesZero) {
     for (const int dim : {2, 3}) {
         const BasisCache cache = testing::syntheticBasis(testing::boxGrid(dim, dim == 2 ? 9 : 5), 6, 11);
         const MacGrid grid = MacGrid::fromSpec(cache.grid);
-        const Eigen::VectorXd v = testing::normalVector(6, 4);
+        const Eigen::VectorXd v = testing::randomVector(6, 4);
         const Eigen::VectorXd fluxes = cache.velocity.modes * v;
         const std::vector<double> field = reference::reconstructFaceField(cache, v);
         ASSERT_EQ(field.size(), std::size_t(grid.faceTotal()));

@@ -4,7 +4,7 @@
 
 #include "engine/core/Error.h"
 #include "engine/stir/ShapedBases.h"
-#include "tests/engine/RandomCoefficients.h"
+#include "tests/support/RandomCoefficients.h"
 
 namespace modeflow::stir {
 namespace {

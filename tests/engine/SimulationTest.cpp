@@ -7,13 +7,13 @@
 
 #include <gtest/gtest.h>
 
-#include "engine/dynamics/CachedCoefficients.h"
+#include "engine/device/Simulation.h"
 #include "engine/dynamics/InitialConditions.h"
 #include "engine/reference/Simulation.h"
-#include "engine/device/Simulation.h"
-#include "precompute/Precompute.h"
-#include "precompute/geometry/FluidMask.h"
-#include "tests/engine/VulkanTestContext.h"
+#include "tests/support/SharedRuns.h"
+#include "tests/support/SmokeTestFields.h"
+#include "tests/support/TestScenes.h"
+#include "tests/support/VulkanTestContext.h"
 
 namespace modeflow {
 namespace {
@@ -21,53 +21,27 @@ namespace {
 /// A unit disk at 32² with 20 modes (or a unit ball at 12³ with 10), a hot source low in it,
 /// buoyancy, smoke at 2× the basis resolution.
 SceneSpec hotScene(int dim) {
-    SceneSpec scene;
+    SceneSpec scene = testing::unitBallScene(dim, dim == 2 ? 32 : 12, dim == 2 ? 20 : 10, 0);
     scene.name = "hot";
-    scene.grid.dim = dim;
-    scene.grid.resolution =
-        dim == 2 ? std::array<int, 3>{32, 32, 1} : std::array<int, 3>{12, 12, 12};
-    scene.grid.boundsMin = {-1.1, -1.1, dim == 2 ? 0.0 : -1.1};
-    scene.grid.boundsMax = {1.1, 1.1, dim == 2 ? 0.0 : 1.1};
-    ShapeSpec disk;
-    disk.kind = ShapeKind::Ball;
-    disk.radius = 1.0;
-    scene.domain = {disk};
-    scene.basis.velocityModes = {{1, dim == 2 ? 20 : 10}};
-    scene.basis.scalarModes = 0;
     scene.simulation.dt = 0.02;
     scene.output.stepsPerFrame = 5;
     scene.smoke.buoyancy = 2.0;
     scene.smoke.resolutionScale = 2;
     SourceSpec source;
-    source.shape.kind = ShapeKind::Ball;
-    source.shape.center = dim == 2 ? Vec3{0.0, -0.55, 0.0} : Vec3{0.0, 0.0, -0.55};
-    source.shape.radius = dim == 2 ? 0.2 : 0.3;
+    source.shape = testing::ball(dim == 2 ? Vec3{0.0, -0.55, 0.0} : Vec3{0.0, 0.0, -0.55}, dim == 2 ? 0.2 : 0.3);
     source.density = 2.0;
     source.temperature = 1.0;
     scene.sources = {source};
     return scene;
 }
 
-struct HotScene {
-    SceneSpec scene;
-    BasisCache cache;
-    std::unique_ptr<StructuralCoefficients> coefficients;
-    std::vector<std::uint8_t> mask;
-    explicit HotScene(int dim) : scene(hotScene(dim)) {
-        Progress quiet = Progress::silent();
-        cache = computeBasis(scene, quiet);
-        coefficients = coefficientsFromCache(cache);
-        mask = fluidMask(scene, cache, scene.smoke.resolutionScale);
-    }
-};
-
-const HotScene& hotDisk() {
-    static const HotScene disk(2);
+const RunInputs& hotDisk() {
+    static const RunInputs disk = testing::sharedRun(hotScene(2));
     return disk;
 }
 
-const HotScene& hotBall() {
-    static const HotScene ball(3);
+const RunInputs& hotBall() {
+    static const RunInputs ball = testing::sharedRun(hotScene(3));
     return ball;
 }
 
@@ -83,30 +57,18 @@ double maxDifference(const std::vector<double>& a, const std::vector<double>& b)
     return m;
 }
 
-/// Height of the density's centre of mass.
-double centroidHeight(const MacGrid& grid, const std::vector<double>& density) {
-    double mass = 0.0, moment = 0.0;
-    for (int y = 0; y < grid.cells[1]; ++y)
-        for (int x = 0; x < grid.cells[0]; ++x) {
-            const double d = density[std::size_t(grid.cellIndex(x, y, 0))];
-            mass += d;
-            moment += d * grid.cellCentre(1, y);
-        }
-    return moment / mass;
-}
-
 class SimulationTest : public testing::VulkanTest {};
 
 TEST_P(SimulationTest, DeviceRunFollowsTheCpuReference) {
     for (const auto& [disk, scheme] : {std::pair{&hotDisk(), AdvectionScheme::SemiLagrangian},
                                        std::pair{&hotDisk(), AdvectionScheme::MacCormack},
                                        std::pair{&hotBall(), AdvectionScheme::MacCormack}}) {
-        SimulationSettings settings = SimulationSettings::fromScene(disk->scene, disk->cache);
+        SimulationSettings settings = disk->settings;
         settings.advection = scheme;
         {
-            device::Simulation device(context(), disk->cache, *disk->coefficients, settings, disk->mask,
+            device::Simulation device(context(), disk->cache, *disk->coefficients, settings, disk->smokeMask,
                               true);
-            reference::Simulation cpu(disk->cache, *disk->coefficients, settings, disk->mask);
+            reference::Simulation cpu(disk->cache, *disk->coefficients, settings, disk->smokeMask);
             RandomVelocitySpec swirl;
             swirl.energy = 0.05;
             const Eigen::VectorXd v0 = randomVelocity(disk->coefficients->size(), swirl);
@@ -150,8 +112,8 @@ TEST_P(SimulationTest, DeviceRunFollowsTheCpuReference) {
 
 TEST_P(SimulationTest, TimingSamplesOnlyTheStepsAskedFor) {
     const auto& disk = hotDisk();
-    const SimulationSettings settings = SimulationSettings::fromScene(disk.scene, disk.cache);
-    device::Simulation device(context(), disk.cache, *disk.coefficients, settings, disk.mask, true);
+    const SimulationSettings settings = disk.settings;
+    device::Simulation device(context(), disk.cache, *disk.coefficients, settings, disk.smokeMask, true);
     if (context().timestampValidBits() == 0) GTEST_SKIP() << "the queue writes no timestamps";
     const FrameStats timed = device.advanceSteps(2);
     EXPECT_EQ(timed.timedSteps, 2);
@@ -168,20 +130,20 @@ TEST_P(SimulationTest, TimingSamplesOnlyTheStepsAskedFor) {
 }
 
 TEST_P(SimulationTest, HotSmokeRisesAndStaysInsideTheDomain) {
-    const HotScene& disk = hotDisk();
-    const SimulationSettings settings = SimulationSettings::fromScene(disk.scene, disk.cache);
+    const RunInputs& disk = hotDisk();
+    const SimulationSettings settings = disk.settings;
     {
-        device::Simulation device(context(), disk.cache, *disk.coefficients, settings, disk.mask);
+        device::Simulation device(context(), disk.cache, *disk.coefficients, settings, disk.smokeMask);
         device.advanceFrame();
-        const double start = centroidHeight(device.smokeGrid(), device.smoke().density);
+        const double start = testing::centroid(device.smokeGrid(), device.smoke().density)[1];
         for (int frame = 0; frame < 8; ++frame) device.advanceFrame();
         const SmokeFields smoke = device.smoke();
-        const double end = centroidHeight(device.smokeGrid(), smoke.density);
+        const double end = testing::centroid(device.smokeGrid(), smoke.density)[1];
         std::cout << "smoke centroid height " << start << " -> " << end << " over 40 steps\n";
         EXPECT_GT(end, start + 0.02) << "buoyancy must lift the hot smoke";
         EXPECT_GT(device.velocity().norm(), 0.0);
-        for (std::size_t c = 0; c < disk.mask.size(); ++c)
-            if (!disk.mask[c]) {
+        for (std::size_t c = 0; c < disk.smokeMask.size(); ++c)
+            if (!disk.smokeMask[c]) {
                 ASSERT_EQ(smoke.density[c], 0.0) << "density outside the domain at cell " << c;
                 ASSERT_EQ(smoke.temperature[c], 0.0)
                     << "temperature outside the domain at cell " << c;
@@ -191,12 +153,12 @@ TEST_P(SimulationTest, HotSmokeRisesAndStaysInsideTheDomain) {
 }
 
 TEST_P(SimulationTest, SplatsStirTheFluidOnlyWhileSet) {
-    const HotScene& disk = hotDisk();
-    SimulationSettings settings = SimulationSettings::fromScene(disk.scene, disk.cache);
+    const RunInputs& disk = hotDisk();
+    SimulationSettings settings = disk.settings;
     settings.buoyancy = 0.0;
     settings.emitters.clear();
     {
-        device::Simulation device(context(), disk.cache, *disk.coefficients, settings, disk.mask);
+        device::Simulation device(context(), disk.cache, *disk.coefficients, settings, disk.smokeMask);
         device.advanceFrame();
         EXPECT_EQ(device.velocity().norm(), 0.0) << "no force, no motion";
         const ForceSplat push{{0.0, 0.0, 0.0}, {5.0, 0.0, 0.0}, 0.3};
@@ -215,8 +177,8 @@ TEST_P(SimulationTest, SplatsStirTheFluidOnlyWhileSet) {
 }
 
 TEST_P(SimulationTest, MovingObstaclesMatchTheCpuReference) {
-    const HotScene& disk = hotDisk();
-    SimulationSettings settings = SimulationSettings::fromScene(disk.scene, disk.cache);
+    const RunInputs& disk = hotDisk();
+    SimulationSettings settings = disk.settings;
     ObstacleSpec paddle;
     paddle.shape = ObstacleShape::Capsule;
     paddle.radius = 0.1;
@@ -224,8 +186,8 @@ TEST_P(SimulationTest, MovingObstaclesMatchTheCpuReference) {
     paddle.path = {{0.0, {-0.5, 0.0, 0.0}}, {1.0, {0.5, 0.0, 0.0}}};
     settings.obstacles = {MovingObstacle{paddle}};
     {
-        device::Simulation device(context(), disk.cache, *disk.coefficients, settings, disk.mask, true);
-        reference::Simulation cpu(disk.cache, *disk.coefficients, settings, disk.mask);
+        device::Simulation device(context(), disk.cache, *disk.coefficients, settings, disk.smokeMask, true);
+        reference::Simulation cpu(disk.cache, *disk.coefficients, settings, disk.smokeMask);
         FrameStats stats;
         for (int frame = 0; frame < 2; ++frame) {
             stats = device.advanceFrame();
@@ -243,15 +205,15 @@ TEST_P(SimulationTest, MovingObstaclesMatchTheCpuReference) {
 }
 
 TEST_P(SimulationTest, EmittersFollowTheirTimeWindows) {
-    const HotScene& disk = hotDisk();
-    SimulationSettings settings = SimulationSettings::fromScene(disk.scene, disk.cache);
+    const RunInputs& disk = hotDisk();
+    SimulationSettings settings = disk.settings;
     settings.buoyancy = 0.0;  // still fluid: the smoke only accumulates
     settings.stepsPerFrame = 1;
     settings.emitters[0].start = 0.05;  // steps 3 and 4 of 0.02 (t = 0.06, 0.08) emit
     settings.emitters[0].end = 0.09;
     {
-        device::Simulation device(context(), disk.cache, *disk.coefficients, settings, disk.mask);
-        reference::Simulation cpu(disk.cache, *disk.coefficients, settings, disk.mask);
+        device::Simulation device(context(), disk.cache, *disk.coefficients, settings, disk.smokeMask);
+        reference::Simulation cpu(disk.cache, *disk.coefficients, settings, disk.smokeMask);
         std::vector<double> masses;
         for (int step = 0; step < 6; ++step) {
             device.advanceFrame();

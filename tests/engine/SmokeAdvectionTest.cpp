@@ -17,7 +17,7 @@
 #include "engine/core/MacSampling.h"
 #include "engine/reference/SmokeAdvection.h"
 #include "engine/core/Error.h"
-#include "tests/engine/SmokeTestFields.h"
+#include "tests/support/SmokeTestFields.h"
 
 namespace modeflow {
 namespace {

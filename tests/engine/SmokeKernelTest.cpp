@@ -7,7 +7,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
-#include <ctime>
 #include <iostream>
 #include <limits>
 #include <string>
@@ -21,8 +20,8 @@
 #include "engine/device/SmokeState.h"
 #include "engine/vulkan/CommandSequence.h"
 #include "engine/vulkan/DeviceBuffer.h"
-#include "tests/engine/SmokeTestFields.h"
-#include "tests/engine/VulkanTestContext.h"
+#include "tests/support/SmokeTestFields.h"
+#include "tests/support/VulkanTestContext.h"
 
 namespace modeflow {
 namespace {
@@ -53,11 +52,6 @@ struct SmokeSetup {
 };
 
 /// Emitters with binary-fraction parameters (exact in float32), one crossing the wall of Ω.
-std::vector<SmokeEmitter> testEmitters() {
-    return {{EmitterShape::Ball, {0.25, -0.5, 0.125}, 0.3, {}, {}, 1.5, 0.75},
-            {EmitterShape::Box, {}, 0.0, {-0.875, -0.3, -0.3}, {-0.5, 0.2, 0.2}, 0.5, 2.0}};
-}
-
 struct SmokeRun {
     SmokeFields device;     ///< the kernels' result
     SmokeFields reference;  ///< SmokeAdvection on the float-rounded inputs, rounded after each step
@@ -87,7 +81,7 @@ SmokeRun runSmoke(const vulkan::VulkanContext& context, const SmokeSetup& s, dou
         if (!run.mask[c]) fields.density[c] = fields.temperature[c] = nan;
     roundToFloat(fields.density);
     roundToFloat(fields.temperature);
-    const std::vector<SmokeEmitter> emitters = testEmitters();
+    const std::vector<SmokeEmitter> emitters = testing::smokeTestEmitters();
 
     const reference::SmokeAdvection reference(basis, s.scale, run.mask);
     run.reference = fields;
@@ -182,7 +176,7 @@ TEST_P(SmokeKernelTest, NoFluidCellsGiveZeros) {
             SmokeState state(context(), basis, 1, mask);
             EXPECT_EQ(state.fluidCellCount(), 0u);
             state.upload(std::vector<float>(mask.size(), 1.0f), std::vector<float>(mask.size(), 2.0f));
-            state.setEmitters(testEmitters());
+            state.setEmitters(testing::smokeTestEmitters());
             const SmokeAdvectionKernels kernels(context());
             const DeviceBuffer velocity = DeviceBuffer::fromValues<float>(
                 context(), std::vector<float>(std::size_t(basis.faceTotal()), 0.5f), "velocity");
@@ -323,53 +317,6 @@ TEST_P(SmokeKernelTest, TimestampsGiveTheDurationOfEachStage) {
             }
             expectNoValidationMessages();
         }
-}
-
-/// GPU ms per step (each dispatch's fastest of the steps recorded into one submission, summed)
-/// and the process's CPU ms per step over that submission (on lavapipe the device is this
-/// process's threads; CPU time is steadier than wall time on a busy machine): 2D 128² and 3D 32³
-/// at smoke scale 1 with the whole box fluid (as tools/bench/bench_runtime), both schemes.
-/// MODEFLOW_SMOKE_TIMING=full adds 2D 256² and 3D 48³, 64³.
-TEST_P(SmokeKernelTest, TimingPerStep) {
-    if (context().timestampValidBits() == 0) GTEST_SKIP() << "the queue writes no timestamps";
-    const char* env = std::getenv("MODEFLOW_SMOKE_TIMING");
-    const bool full = env != nullptr && std::string(env) == "full";
-    std::vector<std::pair<int, int>> sizes{{2, 128}, {3, 32}};
-    if (full) sizes = {{2, 128}, {2, 256}, {3, 32}, {3, 48}, {3, 64}};
-    const int steps = full ? 8 : 4;
-    for (const auto& [dim, cells] : sizes) {
-        std::string line = "smoke_advect timing " + std::to_string(dim) + "D " + std::to_string(cells) +
-                           (dim == 2 ? "^2" : "^3") + ", whole box fluid, ms a step (GPU, CPU):";
-        for (const AdvectionScheme scheme : kAdvectionSchemes) {
-            const MacGrid basis = testing::smokeTestGrid(dim, cells);
-            const std::vector<std::uint8_t> mask = testing::wholeMask(basis);
-            const std::vector<double> velocity = testing::unitSwirlVelocity(basis, 0.8, 5);
-            const std::vector<double> blob = testing::gaussianBlob(basis, {0.2, -0.1, 0.05}, 0.2);
-            const SmokeAdvectionKernels kernels(context());
-            SmokeState state(context(), basis, 1, mask);
-            state.upload(toFloat(blob), toFloat(blob));
-            state.setEmitters(testEmitters());
-            const DeviceBuffer velocityBuffer =
-                DeviceBuffer::fromValues<float>(context(), toFloat(velocity), "velocity");
-            CommandSequence sequence(context(), true, 256);
-            for (int step = 0; step < steps; ++step) kernels.record(sequence, state, velocityBuffer, 0.02, scheme);
-            const std::size_t perStep = sequence.dispatchCount() / steps;
-            const std::clock_t cpuStart = std::clock();
-            sequence.submitAndWait();
-            const double cpuMs = 1000.0 * double(std::clock() - cpuStart) / CLOCKS_PER_SEC / steps;
-            const std::vector<double>& times = sequence.dispatchTimesMs();
-            ASSERT_EQ(times.size(), perStep * steps);
-            // Each dispatch's fastest of the steps, summed: the least disturbed by other work.
-            double best = 0.0;
-            for (std::size_t d = 0; d < perStep; ++d) {
-                double fastest = std::numeric_limits<double>::infinity();
-                for (int step = 0; step < steps; ++step) fastest = std::min(fastest, times[step * perStep + d]);
-                best += fastest;
-            }
-            line += std::string(" ") + schemeName(scheme) + " " + std::to_string(best) + " " + std::to_string(cpuMs);
-        }
-        std::cout << line << " on " << context().deviceName() << "\n";
-    }
 }
 
 TEST_P(SmokeKernelTest, BadInputsAreRefusedWithTheirNames) {

@@ -9,13 +9,13 @@
 #include <string>
 #include <vector>
 
-#include <unistd.h>
-
 #include "engine/core/BinaryCodec.h"
 #include "engine/core/Error.h"
 #include "engine/format/SmokeMaskFile.h"
 #include "engine/pipeline/RunInputs.h"
 #include "precompute/geometry/FluidMask.h"
+#include "tests/support/TestFolder.h"
+#include "tests/support/TestScenes.h"
 
 namespace modeflow {
 namespace {
@@ -24,15 +24,7 @@ namespace fs = std::filesystem;
 
 class SmokeMaskTest : public ::testing::Test {
 protected:
-    void SetUp() override {
-        mFolder = fs::temp_directory_path() /
-                  ("modeflow-mask-" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) +
-                   "-" + std::to_string(::getpid()));
-        fs::remove_all(mFolder);
-        fs::create_directories(mFolder);
-    }
-    void TearDown() override { fs::remove_all(mFolder); }
-    fs::path mFolder;
+    testing::TestFolder mFolder;
 };
 
 std::vector<std::uint8_t> randomMask(std::size_t cells, unsigned seed) {
@@ -72,17 +64,8 @@ TEST_F(SmokeMaskTest, FileRoundTripsAndRefusesStaleOrDamagedMasks) {
 }
 
 SceneSpec diskScene() {
-    SceneSpec scene;
+    SceneSpec scene = testing::unitBallScene(2, 20, 4, 0);
     scene.name = "mask_test";
-    scene.grid.dim = 2;
-    scene.grid.resolution = {20, 20, 1};
-    scene.grid.boundsMin = {-1.1, -1.1, 0.0};
-    scene.grid.boundsMax = {1.1, 1.1, 1.0};
-    ShapeSpec disk;
-    disk.radius = 1.0;
-    scene.domain = {disk};
-    scene.basis.velocityModes = {{1, 4}};
-    scene.basis.scalarModes = 0;
     scene.smoke.resolutionScale = 2;
     return scene;
 }

@@ -1,5 +1,5 @@
 /// `modeflow stir`'s loop on a NullScreen: the clock, scripts, session, statistics, drawing and
-/// screenshots without a window or a display (the real window: StirWindowTest), on lavapipe
+/// screenshots without a window or a display (the real window: StirWindowSlowTest), on lavapipe
 /// with the validation layer on, on the frame clock so every run is reproducible.
 
 #include <gtest/gtest.h>
@@ -8,18 +8,13 @@
 #include <filesystem>
 #include <sstream>
 
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wmissing-field-initializers"
-#pragma GCC diagnostic ignored "-Wunused-function"
-#define STB_IMAGE_IMPLEMENTATION
-#include <stb/stb_image.h>
-#pragma GCC diagnostic pop
-
 #include "engine/display/NullScreen.h"
 #include "engine/stir/StirApp.h"
 #include "engine/stir/StirStatistics.h"
-#include "tests/engine/StirTestRuns.h"
-#include "tests/engine/VulkanTestContext.h"
+#include "tests/support/PngFile.h"
+#include "tests/support/StirRuns.h"
+#include "tests/support/TestFolder.h"
+#include "tests/support/VulkanTestContext.h"
 
 namespace modeflow::testing {
 namespace {
@@ -31,13 +26,7 @@ protected:
     void SetUp() override {
         mContext = makeVulkanContext(true);
         ASSERT_NE(mContext, nullptr);
-        mDir = fs::temp_directory_path() /
-               ("modeflow-stir-loop-" +
-                std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-        fs::remove_all(mDir);
-        fs::create_directories(mDir);
     }
-    void TearDown() override { fs::remove_all(mDir); }
 
     /// A scripted run of `frames` frames on `screen`.
     stir::StirReport run(display::NullScreen& screen, int dim, const std::string& script,
@@ -55,7 +44,8 @@ protected:
     }
 
     std::unique_ptr<vulkan::VulkanContext> mContext;
-    fs::path mDir;
+    TestFolder mFolder;
+    const fs::path mDir = mFolder.path();
 };
 
 /// The fraction of pixels whose colour differs by more than `tolerance` in some channel.
@@ -122,12 +112,10 @@ TEST_F(StirLoopTest, ScreenshotIsThePresentedPictureInEitherByteOrder) {
     run(bgra, 2, "", 20);
     EXPECT_EQ(differingFraction(rgba.lastPicture(), bgra.lastPicture(), 0), 0.0)
         << "the blue-first screen shows other colours";
-    int width = 0, height = 0, channels = 0;
-    unsigned char* pixels = stbi_load(shot.string().c_str(), &width, &height, &channels, 4);
-    ASSERT_NE(pixels, nullptr) << shot;
-    preview::Image saved(width, height);
-    saved.rgba.assign(pixels, pixels + saved.rgba.size());
-    stbi_image_free(pixels);
+    const std::optional<testing::PngPixels> png = testing::readPng(shot);
+    ASSERT_TRUE(png) << shot;
+    preview::Image saved(png->width, png->height);
+    saved.rgba = png->rgba;
     EXPECT_EQ(differingFraction(saved, rgba.lastPicture(), 0), 0.0);
 }
 

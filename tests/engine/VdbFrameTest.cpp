@@ -23,6 +23,7 @@
 #include "engine/core/MacSampling.h"
 #include "engine/core/Error.h"
 #include "engine/output/VdbFrame.h"
+#include "tests/support/TestFolder.h"
 
 namespace modeflow {
 namespace {
@@ -95,24 +96,14 @@ FrameData makeFrame(int dim) {
 
 class VdbFrameTest : public ::testing::Test {
 protected:
-    void SetUp() override {
-        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-        mDir = fs::temp_directory_path() /
-               ("modeflow_vdb_" + std::string(info->name()) + "_" + std::to_string(std::random_device{}()));
-        fs::create_directories(mDir);
-    }
-    void TearDown() override {
-        std::error_code ec;
-        fs::permissions(mDir, fs::perms::owner_all, ec);
-        fs::remove_all(mDir, ec);
-    }
     /// Names of everything in `folder` (to spot leftover temporary files).
     static std::vector<std::string> entries(const fs::path& folder) {
         std::vector<std::string> names;
         for (const auto& e : fs::directory_iterator(folder)) names.push_back(e.path().filename().string());
         return names;
     }
-    fs::path mDir;
+    testing::TestFolder mFolder;
+    const fs::path mDir = mFolder.path();
 };
 
 /// Everything a reader sees of one written frame, checked cell by cell.

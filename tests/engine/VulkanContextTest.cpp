@@ -11,7 +11,7 @@
 #include "engine/vulkan/DeviceBuffer.h"
 #include "engine/vulkan/DeviceSelector.h"
 #include "engine/vulkan/VulkanError.h"
-#include "tests/engine/VulkanTestContext.h"
+#include "tests/support/VulkanTestContext.h"
 
 namespace modeflow {
 namespace {

@@ -1,4 +1,4 @@
-// Whole-box domains must reproduce the plain MAC operators exactly (DESIGN §2, §6): every κ² and
+// Whole-box domains must reproduce the plain MAC operators exactly (precompute/README.md; tests/README.md): every κ² and
 // μ² equals a sum of 4/h² sin²(πl/2n) per axis, with the right multiplicity.
 
 #include <gtest/gtest.h>
@@ -8,7 +8,7 @@
 
 #include "precompute/BasisChecks.h"
 #include "precompute/Precompute.h"
-#include "tests/precompute/TestScenes.h"
+#include "tests/support/TestScenes.h"
 
 namespace modeflow {
 namespace {
@@ -80,23 +80,23 @@ void checkBox(SceneSpec scene, int velocityModes, int scalarModes) {
 
 TEST(BoxSpectrum, WholeGrid2DMatchesMacValuesExactly) {
     // Non-square cells (h_x != h_y) and a non-square box.
-    checkBox(test::gridScene({30, 24, 1}, {-1.0, 0.0, 0.0}, {1.25, 1.5, 0.0}, 2), 60, 40);
+    checkBox(testing::gridScene({30, 24, 1}, {-1.0, 0.0, 0.0}, {1.25, 1.5, 0.0}, 2), 60, 40);
 }
 
 TEST(BoxSpectrum, WholeGrid3DMatchesMacValuesExactly) {
-    checkBox(test::gridScene({12, 10, 8}, {0.0, 0.0, 0.0}, {1.2, 0.9, 1.0}, 3), 60, 30);
+    checkBox(testing::gridScene({12, 10, 8}, {0.0, 0.0, 0.0}, {1.2, 0.9, 1.0}, 3), 60, 30);
 }
 
 TEST(BoxSpectrum, AlignedBoxDomainEqualsTheSmallerGrid) {
     // A box domain whose walls lie on grid planes must give the MAC values of the grid it spans:
     // no phantom elements from round-off on the wall.
-    SceneSpec scene = test::gridScene({32, 32, 1}, {-1.0, -1.0, 0.0}, {1.0, 1.0, 0.0}, 2);
-    scene.domain = {test::box({-0.5, -0.75, 0.0}, {0.75, 0.5, 0.0})};
+    SceneSpec scene = testing::gridScene({32, 32, 1}, {-1.0, -1.0, 0.0}, {1.0, 1.0, 0.0}, 2);
+    scene.domain = {testing::box({-0.5, -0.75, 0.0}, {0.75, 0.5, 0.0})};
     scene.basis.velocityModes = {{1, 30}};
     scene.basis.scalarModes = 20;
     Progress quiet = Progress::silent();
     const BasisCache cache = computeBasis(scene, quiet);
-    const GridSpec spanned = test::gridScene({20, 20, 1}, {-0.5, -0.75, 0.0}, {0.75, 0.5, 0.0}, 2).grid;
+    const GridSpec spanned = testing::gridScene({20, 20, 1}, {-0.5, -0.75, 0.0}, {0.75, 0.5, 0.0}, 2).grid;
     expectSpectrum(cache.velocity.eigenvalues, boxSpectrum(spanned, Field::Velocity), "velocity");
     expectSpectrum(cache.scalar.eigenvalues, boxSpectrum(spanned, Field::Neumann), "Neumann");
     EXPECT_EQ(cache.cells.size(), 400u);

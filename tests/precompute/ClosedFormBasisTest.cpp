@@ -15,8 +15,9 @@
 #include "precompute/Precompute.h"
 #include "precompute/closedform/ClosedFormBasis.h"
 #include "precompute/closedform/WholeBoxDofs.h"
-#include "tests/precompute/TestScenes.h"
-#include "tests/precompute/WholeBoxReference.h"
+#include "tests/support/RealBases.h"
+#include "tests/support/TestScenes.h"
+#include "tests/support/WholeBoxReference.h"
 
 namespace modeflow {
 namespace {
@@ -69,7 +70,7 @@ void expectEqualToEigensolver(SceneSpec scene, int velocityModes, int scalarMode
         materializeVelocityModes(closed);
         EXPECT_LE(spanDistance(closed.velocity.modes.leftCols(nv), solved.velocity.modes.leftCols(nv),
                                solved.faceStar), 1e-8);
-        test::expectValidVelocityBasis(closed);
+        testing::expectValidVelocityBasis(closed);
 
         const bool dirichlet = boundary == ScalarBoundary::Dirichlet;
         const Eigen::Index ns = clusterEnd(closed.scalar.eigenvalues, scalarModes);
@@ -84,16 +85,16 @@ void expectEqualToEigensolver(SceneSpec scene, int velocityModes, int scalarMode
 
 TEST(ClosedFormBasis, EqualsTheEigensolverOnA2DBox) {
     // Non-square cells and box.
-    expectEqualToEigensolver(test::gridScene({14, 11, 1}, {-1.0, 0.0, 0.0}, {1.25, 1.5, 0.0}, 2), 60, 40);
+    expectEqualToEigensolver(testing::gridScene({14, 11, 1}, {-1.0, 0.0, 0.0}, {1.25, 1.5, 0.0}, 2), 60, 40);
 }
 
 TEST(ClosedFormBasis, EqualsTheEigensolverOnA3DBox) {
     // Every 3D wave vector with three non-zero wave numbers carries two fields: kept both.
-    expectEqualToEigensolver(test::gridScene({7, 6, 5}, {0.0, 0.0, 0.0}, {1.2, 0.9, 1.0}, 3), 80, 40);
+    expectEqualToEigensolver(testing::gridScene({7, 6, 5}, {0.0, 0.0, 0.0}, {1.2, 0.9, 1.0}, 3), 80, 40);
 }
 
 TEST(ClosedFormBasis, BoundaryTreatmentsAgreeOnAWholeBoxAndNoSlipIsSolved) {
-    SceneSpec scene = test::gridScene({6, 5, 4}, {0.0, 0.0, 0.0}, {1.0, 1.0, 1.0}, 3);
+    SceneSpec scene = testing::gridScene({6, 5, 4}, {0.0, 0.0, 0.0}, {1.0, 1.0, 1.0}, 3);
     Progress quiet = Progress::silent();
     const BasisCache cut = computeBasis(scene, quiet);
     scene.basis.boundary = BoundaryTreatment::Staircase;
@@ -103,12 +104,12 @@ TEST(ClosedFormBasis, BoundaryTreatmentsAgreeOnAWholeBoxAndNoSlipIsSolved) {
     scene.basis.wall = WallKind::NoSlip;
     EXPECT_EQ(computeBasis(scene, quiet).velocity.source, BasisSource::Eigensolve);
     scene.basis.wall = WallKind::FreeSlip;
-    scene.domain = {test::box({0.0, 0.0, 0.0}, {0.5, 1.0, 1.0})};
+    scene.domain = {testing::box({0.0, 0.0, 0.0}, {0.5, 1.0, 1.0})};
     EXPECT_EQ(computeBasis(scene, quiet).velocity.source, BasisSource::Eigensolve);
 }
 
 TEST(ClosedFormBasis, ModeRangesPickPositionsOfTheWholeSpectrum) {
-    const GridSpec grid = test::gridScene({6, 5, 4}, {0.0, 0.0, 0.0}, {1.0, 1.0, 1.0}, 3).grid;
+    const GridSpec grid = testing::gridScene({6, 5, 4}, {0.0, 0.0, 0.0}, {1.0, 1.0, 1.0}, 3).grid;
     const ClosedFormVelocity all = closedFormVelocityBasis(grid, {{1, 30}});
     const ClosedFormVelocity shaped = closedFormVelocityBasis(grid, {{3, 7}, {21, 30}});
     ASSERT_EQ(shaped.modes.size(), 15u);
@@ -136,7 +137,7 @@ void expectPeriodicEigenbasis(GridSpec grid, int expectedHarmonic) {
     BasisCache cache;
     cache.grid = grid;
     fillWholeBoxDofs(cache);
-    const test::WholeBoxReference reference(cache);
+    const testing::WholeBoxReference reference(cache);
     const Eigen::MatrixXd& d = reference.divergence();
     const Eigen::MatrixXd& l2 = reference.velocityLaplacian();
     const Eigen::FullPivLU<Eigen::MatrixXd> lu(d);
@@ -192,7 +193,7 @@ void expectPeriodicEigenbasis(GridSpec grid, int expectedHarmonic) {
 }
 
 TEST(ClosedFormBasis, TorusAndChannelModesAreThePeriodicEigenbasis2D) {
-    GridSpec grid = test::gridScene({6, 5, 1}, {0.0, 0.0, 0.0}, {1.0, 0.8, 0.0}, 2).grid;
+    GridSpec grid = testing::gridScene({6, 5, 1}, {0.0, 0.0, 0.0}, {1.0, 0.8, 0.0}, 2).grid;
     grid.periodic = {true, true, false};
     expectPeriodicEigenbasis(grid, 2);  // a uniform flow along each periodic axis
     grid.periodic = {true, false, false};
@@ -203,7 +204,7 @@ TEST(ClosedFormBasis, TorusAndChannelModesAreThePeriodicEigenbasis2D) {
 }
 
 TEST(ClosedFormBasis, TorusAndMixedAxesModesAreThePeriodicEigenbasis3D) {
-    GridSpec grid = test::gridScene({4, 3, 4}, {0.0, 0.0, 0.0}, {1.0, 0.8, 0.7}, 3).grid;
+    GridSpec grid = testing::gridScene({4, 3, 4}, {0.0, 0.0, 0.0}, {1.0, 0.8, 0.7}, 3).grid;
     grid.periodic = {true, true, true};
     expectPeriodicEigenbasis(grid, 3);
     grid.periodic = {true, false, true};

@@ -1,6 +1,6 @@
 // The sparse structural coefficients of closed-form bases (selection rules) against the
 // quadrature on their materialized modes: the production assembly on wall boxes, the same
-// quadrature with wrapped face look-ups on periodic axes (tests/precompute/WholeBoxReference.h).
+// quadrature with wrapped face look-ups on periodic axes (tests/support/WholeBoxReference.h).
 
 #include <gtest/gtest.h>
 
@@ -15,8 +15,8 @@
 #include "precompute/closedform/WholeBoxDofs.h"
 #include "precompute/coefficients/CoefficientAssembly.h"
 #include "precompute/geometry/Domain.h"
-#include "tests/precompute/TestScenes.h"
-#include "tests/precompute/WholeBoxReference.h"
+#include "tests/support/TestScenes.h"
+#include "tests/support/WholeBoxReference.h"
 
 namespace modeflow {
 namespace {
@@ -60,7 +60,7 @@ void expectEqualToQuadrature(const GridSpec& grid, int modes) {
     const std::vector<double> quadrature = assembleStructuralCoefficients(complex, measures, dec, columns);
     const BasisCache::Coefficients sparse = assembleClosedFormCoefficients(grid, basis.modes);
     // The test's wrapped quadrature (used on periodic axes below) is the production one here.
-    const std::vector<double> full = test::WholeBoxReference(cache).coefficients(columns);
+    const std::vector<double> full = testing::WholeBoxReference(cache).coefficients(columns);
     double mismatch = 0.0;
     for (int k = 0; k < modes; ++k)
         for (int i = 0; i < modes; ++i)
@@ -81,11 +81,11 @@ void expectEqualToQuadrature(const GridSpec& grid, int modes) {
 }
 
 TEST(ClosedFormCoefficients, EqualTheQuadratureOnA2DBox) {
-    expectEqualToQuadrature(test::gridScene({12, 9, 1}, {-1.0, 0.0, 0.0}, {1.25, 1.5, 0.0}, 2).grid, 60);
+    expectEqualToQuadrature(testing::gridScene({12, 9, 1}, {-1.0, 0.0, 0.0}, {1.25, 1.5, 0.0}, 2).grid, 60);
 }
 
 TEST(ClosedFormCoefficients, EqualTheQuadratureOnA3DBox) {
-    expectEqualToQuadrature(test::gridScene({7, 6, 5}, {0.0, 0.0, 0.0}, {1.2, 0.9, 1.0}, 3).grid, 70);
+    expectEqualToQuadrature(testing::gridScene({7, 6, 5}, {0.0, 0.0, 0.0}, {1.2, 0.9, 1.0}, 3).grid, 70);
 }
 
 /// Periodic axes: equal to the wrapped quadrature on the materialized modes.
@@ -96,7 +96,7 @@ void expectEqualToWrappedQuadrature(GridSpec grid, std::array<bool, 3> periodic,
     fillWholeBoxDofs(cache);
     const ClosedFormVelocity basis = closedFormVelocityBasis(grid, {{1, modes}});
     const Eigen::MatrixXd columns = velocityModeFluxes(grid, cache.faces, basis.modes);
-    const std::vector<double> full = test::WholeBoxReference(cache).coefficients(columns);
+    const std::vector<double> full = testing::WholeBoxReference(cache).coefficients(columns);
     std::vector<double> reference(packedSize(std::size_t(modes)));
     double antisymmetry = 0.0, largest = 0.0;
     for (int k = 0; k < modes; ++k)
@@ -115,14 +115,14 @@ void expectEqualToWrappedQuadrature(GridSpec grid, std::array<bool, 3> periodic,
 }
 
 TEST(ClosedFormCoefficients, EqualTheWrappedQuadratureOnPeriodicAxes2D) {
-    const GridSpec grid = test::gridScene({6, 5, 1}, {0.0, 0.0, 0.0}, {1.0, 0.8, 0.0}, 2).grid;
+    const GridSpec grid = testing::gridScene({6, 5, 1}, {0.0, 0.0, 0.0}, {1.0, 0.8, 0.0}, 2).grid;
     expectEqualToWrappedQuadrature(grid, {true, true, false}, 31);  // all of them
     expectEqualToWrappedQuadrature(grid, {true, false, false}, 25);
     expectEqualToWrappedQuadrature(grid, {false, true, false}, 24);
 }
 
 TEST(ClosedFormCoefficients, EqualTheWrappedQuadratureOnPeriodicAxes3D) {
-    const GridSpec grid = test::gridScene({4, 3, 4}, {0.0, 0.0, 0.0}, {1.0, 0.8, 0.7}, 3).grid;
+    const GridSpec grid = testing::gridScene({4, 3, 4}, {0.0, 0.0, 0.0}, {1.0, 0.8, 0.7}, 3).grid;
     expectEqualToWrappedQuadrature(grid, {true, true, true}, 45);
     expectEqualToWrappedQuadrature(grid, {true, false, true}, 45);
     expectEqualToWrappedQuadrature(grid, {false, true, false}, 40);
@@ -133,7 +133,7 @@ TEST(ClosedFormCoefficients, TheNonZeroEstimateBoundsTheCountFromAbove) {
     for (const int dim : {2, 3}) {
         const int n = dim == 3 ? 20 : 64, modes = 600;
         const GridSpec grid =
-            test::gridScene({n, n, dim == 3 ? n : 1}, {0.0, 0.0, 0.0}, {1.0, 1.0, dim == 3 ? 1.0 : 0.0}, dim).grid;
+            testing::gridScene({n, n, dim == 3 ? n : 1}, {0.0, 0.0, 0.0}, {1.0, 1.0, dim == 3 ? 1.0 : 0.0}, dim).grid;
         const ClosedFormVelocity basis = closedFormVelocityBasis(grid, {{1, modes}});
         const double count = double(assembleClosedFormCoefficients(grid, basis.modes).value.size());
         const double ratio = count / estimatedClosedFormNonZeros(dim, modes);

@@ -9,7 +9,7 @@
 
 #include "engine/core/PackedLayout.h"
 #include "precompute/coefficients/CoefficientAssembly.h"
-#include "tests/precompute/TestScenes.h"
+#include "tests/support/TestScenes.h"
 
 namespace modeflow {
 namespace {
@@ -97,7 +97,7 @@ std::vector<double> discreteCoefficients(int resolution) {
     const std::array<int, 3> res = {int(std::lround(kSides[0] * resolution)), resolution,
                                     int(std::lround(kSides[2] * resolution))};
     const SceneSpec scene =
-        test::gridScene(res, {0.0, 0.0, 0.0}, {kSides[0], kSides[1], kSides[2]}, 3);
+        testing::gridScene(res, {0.0, 0.0, 0.0}, {kSides[0], kSides[1], kSides[2]}, 3);
     const CubicalComplex cx(scene.grid);
     const Domain domain({}, 3, 1.0);
     const CutCellMeasures measures = measureCutCells(cx, domain, BoundaryTreatment::CutCell, 1);

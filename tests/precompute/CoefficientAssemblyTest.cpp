@@ -9,7 +9,7 @@
 #include "engine/core/PackedLayout.h"
 #include "precompute/Precompute.h"
 #include "precompute/coefficients/CoefficientAssembly.h"
-#include "tests/precompute/TestScenes.h"
+#include "tests/support/TestScenes.h"
 
 namespace modeflow {
 namespace {
@@ -62,7 +62,7 @@ double continuumCoefficient(const BoxMode& k, const BoxMode& i, const BoxMode& j
 
 /// Discrete coefficients of the modes sampled as exact face fluxes (ψ differences).
 std::vector<double> discreteCoefficients(int resolution) {
-    const SceneSpec scene = test::gridScene({int(std::lround(1.3 * resolution)), resolution, 1},
+    const SceneSpec scene = testing::gridScene({int(std::lround(1.3 * resolution)), resolution, 1},
                                             {0.0, 0.0, 0.0}, {1.3, 1.0, 0.0}, 2);
     const CubicalComplex cx(scene.grid);
     const Domain domain({}, 2, 1.0);
@@ -118,10 +118,7 @@ TEST(CoefficientAssembly, DiskEigenmodeSelfInteractionVanishesUnderRefinement) {
     // projection C[m][k][k] on every mode m tends to zero.
     double previous = 0.0;
     for (int res : {64, 128}) {
-        SceneSpec scene = test::gridScene({res, res, 1}, {-1.1, -1.1, 0.0}, {1.1, 1.1, 0.0}, 2);
-        scene.domain = {test::ball({0.0, 0.0, 0.0}, 1.0)};
-        scene.basis.velocityModes = {{1, 30}};
-        scene.basis.scalarModes = 0;
+        SceneSpec scene = testing::unitBallScene(2, res, 30, 0);
         Progress quiet = Progress::silent();
         const BasisCache basis = computeBasis(scene, quiet);
         const size_t n = 30;

@@ -8,7 +8,9 @@
 
 #include "precompute/Precompute.h"
 #include "precompute/geometry/MeshGenerator.h"
-#include "tests/precompute/TestScenes.h"
+#include "tests/support/TestFolder.h"
+#include "tests/support/RealBases.h"
+#include "tests/support/TestScenes.h"
 
 namespace modeflow {
 namespace {
@@ -21,12 +23,11 @@ BasisCache solve(const SceneSpec& scene) {
 TEST(DomainVariants, MeshedSphereMatchesTheAnalyticBall) {
     // A finely tessellated sphere (radius 0.8) must give nearly the analytic ball's spectrum:
     // the mesh → level set → cut cell path loses only the tessellation error.
-    const auto dir = std::filesystem::temp_directory_path() / "modeflow-mesh-domain";
-    std::filesystem::create_directories(dir);
+    const testing::TestFolder dir;
     writeObj(dir / "sphere.obj", makeIcosphere(4, 0.8));
 
-    SceneSpec analytic = test::gridScene({16, 16, 16}, {-1.0, -1.0, -1.0}, {1.0, 1.0, 1.0}, 3);
-    analytic.domain = {test::ball({0.0, 0.0, 0.0}, 0.8)};
+    SceneSpec analytic = testing::gridScene({16, 16, 16}, {-1.0, -1.0, -1.0}, {1.0, 1.0, 1.0}, 3);
+    analytic.domain = {testing::ball({0.0, 0.0, 0.0}, 0.8)};
     analytic.basis.velocityModes = {{1, 8}};
     analytic.basis.scalarModes = 0;
     SceneSpec meshed = analytic;
@@ -35,20 +36,16 @@ TEST(DomainVariants, MeshedSphereMatchesTheAnalyticBall) {
 
     const BasisCache a = solve(analytic);
     const BasisCache m = solve(meshed);
-    std::filesystem::remove_all(dir);
     double worst = 0.0;
     for (int i = 0; i < 8; ++i)
         worst = std::max(worst, std::abs(m.velocity.eigenvalues[i] / a.velocity.eigenvalues[i] - 1.0));
     std::printf("meshed vs analytic ball, first 8 κ²: max relative difference %.2e\n", worst);
     EXPECT_LT(worst, 1e-2);
-    test::expectValidVelocityBasis(m);
+    testing::expectValidVelocityBasis(m);
 }
 
 TEST(DomainVariants, ModeRangesSelectFromTheFullSpectrum) {
-    SceneSpec scene = test::gridScene({40, 40, 1}, {-1.1, -1.1, 0.0}, {1.1, 1.1, 0.0}, 2);
-    scene.domain = {test::ball({0.0, 0.0, 0.0}, 1.0)};
-    scene.basis.scalarModes = 0;
-    scene.basis.velocityModes = {{1, 12}};
+    SceneSpec scene = testing::unitBallScene(2, 40, 12, 0);
     const BasisCache full = solve(scene);
     scene.basis.velocityModes = {{1, 3}, {9, 12}};
     const BasisCache shaped = solve(scene);
@@ -58,17 +55,14 @@ TEST(DomainVariants, ModeRangesSelectFromTheFullSpectrum) {
     for (int i = 0; i < 7; ++i)
         EXPECT_NEAR(shaped.velocity.eigenvalues[i], full.velocity.eigenvalues[expected[i] - 1],
                     1e-9 * full.velocity.eigenvalues[expected[i] - 1]);
-    test::expectValidVelocityBasis(shaped);
+    testing::expectValidVelocityBasis(shaped);
 }
 
 TEST(DomainVariants, NoSlipWallsRaiseTheSpectrum) {
     // Keeping the wall vorticity penalizes tangential slip: every eigenvalue rises, and the disk's
     // first mode moves towards the no-slip (Stokes) value j₁,₁² = 14.68 from the free-slip
     // j₀,₁² = 5.78.
-    SceneSpec scene = test::gridScene({64, 64, 1}, {-1.1, -1.1, 0.0}, {1.1, 1.1, 0.0}, 2);
-    scene.domain = {test::ball({0.0, 0.0, 0.0}, 1.0)};
-    scene.basis.scalarModes = 0;
-    scene.basis.velocityModes = {{1, 6}};
+    SceneSpec scene = testing::unitBallScene(2, 64, 6, 0);
     const BasisCache freeSlip = solve(scene);
     scene.basis.wall = WallKind::NoSlip;
     const BasisCache noSlip = solve(scene);
@@ -77,7 +71,7 @@ TEST(DomainVariants, NoSlipWallsRaiseTheSpectrum) {
     for (int i = 0; i < 6; ++i)
         EXPECT_GT(noSlip.velocity.eigenvalues[i], freeSlip.velocity.eigenvalues[i]) << i;
     EXPECT_GT(noSlip.velocity.eigenvalues[0], 10.0);
-    test::expectValidVelocityBasis(noSlip);
+    testing::expectValidVelocityBasis(noSlip);
 }
 
 }  // namespace

@@ -9,7 +9,7 @@
 
 #include "engine/core/MacGrid.h"
 #include "precompute/geometry/FluidMask.h"
-#include "tests/precompute/TestScenes.h"
+#include "tests/support/TestScenes.h"
 
 namespace modeflow {
 namespace {
@@ -23,15 +23,15 @@ BasisCache fractionsOnly(const SceneSpec& scene, std::vector<double> fractions) 
 }
 
 TEST(FluidMask, WholeBoxIsAllFluid) {
-    const SceneSpec scene = test::gridScene({8, 6, 4}, {0, 0, 0}, {1, 1, 1}, 3);
+    const SceneSpec scene = testing::gridScene({8, 6, 4}, {0, 0, 0}, {1, 1, 1}, 3);
     const std::vector<std::uint8_t> mask = fluidMask(scene, fractionsOnly(scene, std::vector<double>(192, 1.0)), 2);
     EXPECT_EQ(mask.size(), 16u * 12u * 8u);
     EXPECT_TRUE(std::all_of(mask.begin(), mask.end(), [](std::uint8_t m) { return m == 1; }));
 }
 
 TEST(FluidMask, FollowsBasisCellsAtScaleOneAndTheDomainOnFinerGrids) {
-    SceneSpec scene = test::gridScene({32, 32, 1}, {-1.1, -1.1, 0}, {1.1, 1.1, 0}, 2);
-    scene.domain = {test::ball({0.3, 0.0, 0.0}, 0.6)};
+    SceneSpec scene = testing::gridScene({32, 32, 1}, {-1.1, -1.1, 0}, {1.1, 1.1, 0}, 2);
+    scene.domain = {testing::ball({0.3, 0.0, 0.0}, 0.6)};
     const MacGrid basis = MacGrid::fromSpec(scene.grid);
     // Fractions of a disk by sub-sampling: what the precompute's cut cells give, near enough.
     std::vector<double> fractions(std::size_t(basis.cellCount()), 0.0);

@@ -5,7 +5,8 @@
 
 #include "precompute/Precompute.h"
 #include "precompute/solve/SpectralBasis.h"
-#include "tests/precompute/TestScenes.h"
+#include "tests/support/RealBases.h"
+#include "tests/support/TestScenes.h"
 
 namespace modeflow {
 namespace {
@@ -21,29 +22,23 @@ void expectOneHarmonic(const BasisCache& cache) {
     EXPECT_EQ(cache.velocity.harmonic, 1);
     EXPECT_EQ(cache.velocity.eigenvalues[0], 0.0) << "the solve's round-off is not cleared";
     EXPECT_GT(cache.velocity.eigenvalues[1], 1.0) << "second mode must not be harmonic";
-    test::expectValidVelocityBasis(cache);
+    testing::expectValidVelocityBasis(cache);
 }
 
 TEST(HarmonicModes, AnnulusHasExactlyOne) {
-    SceneSpec scene = test::gridScene({64, 64, 1}, {-1.1, -1.1, 0.0}, {1.1, 1.1, 0.0}, 2);
-    scene.domain = {test::ball({0.0, 0.0, 0.0}, 1.0),
-                    test::ball({0.0, 0.0, 0.0}, 0.4, CsgOp::Subtract)};
+    SceneSpec scene = testing::unitBallScene(2, 64);
+    scene.domain.push_back(testing::ball({0.0, 0.0, 0.0}, 0.4, CsgOp::Subtract));
     expectOneHarmonic(solve(scene));
 }
 
 TEST(HarmonicModes, DiskHasNone) {
-    SceneSpec scene = test::gridScene({48, 48, 1}, {-1.1, -1.1, 0.0}, {1.1, 1.1, 0.0}, 2);
-    scene.domain = {test::ball({0.0, 0.0, 0.0}, 1.0)};
+    SceneSpec scene = testing::unitBallScene(2, 48);
     EXPECT_EQ(solve(scene).velocity.harmonic, 0);
 }
 
 TEST(HarmonicModes, SolidTorusHasExactlyOne) {
-    SceneSpec scene = test::gridScene({28, 28, 14}, {-1.0, -1.0, -0.5}, {1.0, 1.0, 0.5}, 3);
-    ShapeSpec torus;
-    torus.kind = ShapeKind::Torus;
-    torus.majorRadius = 0.6;
-    torus.minorRadius = 0.3;
-    scene.domain = {torus};
+    SceneSpec scene = testing::gridScene({28, 28, 14}, {-1.0, -1.0, -0.5}, {1.0, 1.0, 0.5}, 3);
+    scene.domain = {testing::torus({0.0, 0.0, 0.0}, 0.6, 0.3)};
     expectOneHarmonic(solve(scene));
 }
 

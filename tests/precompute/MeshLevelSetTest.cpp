@@ -18,6 +18,7 @@
 #include "precompute/geometry/ImplicitShape.h"
 #include "precompute/geometry/MeshGenerator.h"
 #include "precompute/geometry/MeshLevelSet.h"
+#include "tests/support/TestFolder.h"
 
 namespace modeflow {
 namespace {
@@ -26,24 +27,14 @@ namespace fs = std::filesystem;
 
 class MeshLevelSetTest : public ::testing::Test {
 protected:
-    void SetUp() override {
-        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-        mDir = fs::temp_directory_path() / ("modeflow_mesh_" + std::string(info->name()) + "_" +
-                                            std::to_string(std::random_device{}()));
-        fs::create_directories(mDir);
-    }
-    void TearDown() override {
-        std::error_code ec;
-        fs::remove_all(mDir, ec);
-    }
-
     fs::path write(const std::string& name, const std::string& text) const {
         const fs::path file = mDir / name;
         std::ofstream(file, std::ios::binary) << text;
         return file;
     }
 
-    fs::path mDir;
+    testing::TestFolder mFolder;
+    const fs::path mDir = mFolder.path();
 };
 
 /// The cube [-h, h]³ as six quads (outward normals); `skipTop` leaves the +z face out.

@@ -17,7 +17,7 @@
 
 #include "engine/core/Error.h"
 #include "precompute/Precompute.h"
-#include "tests/precompute/TestScenes.h"
+#include "tests/support/TestScenes.h"
 
 extern "C" void omp_set_num_threads(int);  // libgomp, linked through the precompute
 
@@ -73,10 +73,7 @@ std::string inCappedChild(std::size_t headroom, const std::function<void()>& wor
 TEST(OutOfMemoryStage, AFailedAllocationEndsAsOutOfMemoryInItsStage) {
     // 512² cells need about 70 MiB of cut-cell measures; the child may take 24 MiB more. The
     // memory limit lets the estimate pass, so that the stage itself runs out.
-    SceneSpec scene = test::gridScene({512, 512, 1}, {-1.1, -1.1, 0.0}, {1.1, 1.1, 0.0}, 2);
-    scene.domain = {test::ball({0.0, 0.0, 0.0}, 1.0)};
-    scene.basis.velocityModes = {{1, 4}};
-    scene.basis.scalarModes = 0;
+    SceneSpec scene = testing::unitBallScene(2, 512, 4, 0);
     setenv("MODEFLOW_MEMORY_LIMIT", "1000000000000000", 1);
     const std::string report = inCappedChild(std::size_t(24) << 20, [&] {
         Progress quiet = Progress::silent();

@@ -16,6 +16,8 @@
 
 #include "precompute/PrecomputeMemory.h"
 #include "precompute/scene/SceneLoader.h"
+#include "tests/support/CliFixture.h"
+#include "tests/support/TestFolder.h"
 
 extern char** environ;
 
@@ -26,7 +28,7 @@ namespace fs = std::filesystem;
 
 /// Peak resident bytes of `modeflow precompute SCENE` into a fresh cache folder.
 double measuredPeak(const fs::path& scene, const fs::path& cache) {
-    const std::string cli = MODEFLOW_CLI, command = "precompute", dir = "--cache-dir";
+    const std::string cli = testing::cliPath(), command = "precompute", dir = "--cache-dir";
     const std::string scenePath = scene.string(), cachePath = cache.string();
     char* argv[] = {const_cast<char*>(cli.c_str()),       const_cast<char*>(command.c_str()),
                     const_cast<char*>(scenePath.c_str()), const_cast<char*>(dir.c_str()),
@@ -46,9 +48,7 @@ double measuredPeak(const fs::path& scene, const fs::path& cache) {
 }
 
 TEST(PrecomputeMemorySlow, TheEstimateIsConservativeButLessThanTwiceThePeak) {
-    const fs::path dir = fs::temp_directory_path() / "modeflow-precompute-memory";
-    fs::remove_all(dir);
-    fs::create_directories(dir);
+    const testing::TestFolder dir;
     const std::string disk = R"([grid]
 resolution = [128, 128]
 bounds_min = [-1.1, -1.1]
@@ -83,7 +83,6 @@ scalar_modes = 0
         EXPECT_GE(estimate / peak, 1.0) << name << ": estimate " << estimate << ", peak " << peak;
         EXPECT_LE(estimate / peak, 2.0) << name << ": estimate " << estimate << ", peak " << peak;
     }
-    fs::remove_all(dir);
 }
 
 }  // namespace

@@ -11,26 +11,10 @@
 #include "engine/core/Error.h"
 #include "precompute/Precompute.h"
 #include "precompute/PrecomputeMemory.h"
-#include "tests/precompute/TestScenes.h"
+#include "tests/support/TestScenes.h"
 
 namespace modeflow {
 namespace {
-
-SceneSpec disk(int n, int modes) {
-    SceneSpec scene = test::gridScene({n, n, 1}, {-1.1, -1.1, 0.0}, {1.1, 1.1, 0.0}, 2);
-    scene.domain = {test::ball({0.0, 0.0, 0.0}, 1.0)};
-    scene.basis.velocityModes = {{1, modes}};
-    scene.basis.scalarModes = 0;
-    return scene;
-}
-
-SceneSpec ball(int n, int modes) {
-    SceneSpec scene = test::gridScene({n, n, n}, {-1.1, -1.1, -1.1}, {1.1, 1.1, 1.1}, 3);
-    scene.domain = {test::ball({0.0, 0.0, 0.0}, 1.0)};
-    scene.basis.velocityModes = {{1, modes}};
-    scene.basis.scalarModes = 0;
-    return scene;
-}
 
 /// Sets MODEFLOW_MEMORY_LIMIT for one scope.
 class MemoryLimit {
@@ -51,7 +35,7 @@ std::string refusal(const SceneSpec& scene) {
 }
 
 TEST(PrecomputeMemory, TheDofCountsAreThoseOfTheDomainWithinAFewPercent) {
-    for (const SceneSpec& scene : {disk(96, 4), ball(20, 4)}) {
+    for (const SceneSpec& scene : {testing::unitBallScene(2, 96, 4, 0), testing::unitBallScene(3, 20, 4, 0)}) {
         const PrecomputeMemory estimate = estimatePrecomputeMemory(scene);
         Progress quiet = Progress::silent();
         const BasisCache cache = computeBasis(scene, quiet);
@@ -66,7 +50,7 @@ TEST(PrecomputeMemory, TheDofCountsAreThoseOfTheDomainWithinAFewPercent) {
 }
 
 TEST(PrecomputeMemory, ARefusalNamesTheResolutionAndTheModesWhenFewerWouldFit) {
-    const SceneSpec scene = disk(64, 400);  // 400 modes: the packed coefficients dominate
+    const SceneSpec scene = testing::unitBallScene(2, 64, 400, 0);  // 400 modes: the packed coefficients dominate
     const PrecomputeMemory estimate = estimatePrecomputeMemory(scene);
     ASSERT_LT(2.0 * estimate.gridBytes, estimate.peakBytes);
     {

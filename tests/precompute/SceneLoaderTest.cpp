@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "precompute/scene/SceneLoader.h"
+#include "tests/support/TestFolder.h"
 
 namespace modeflow {
 namespace {
@@ -23,15 +24,6 @@ namespace fs = std::filesystem;
 /// A private temporary folder, removed with the fixture.
 class SceneLoaderTest : public ::testing::Test {
 protected:
-    void SetUp() override {
-        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-        mDir = fs::temp_directory_path() / (std::string("modeflow_scene_") + info->name() + "_" +
-                                            std::to_string(reinterpret_cast<std::uintptr_t>(this)));
-        fs::remove_all(mDir);
-        fs::create_directories(mDir);
-    }
-    void TearDown() override { fs::remove_all(mDir); }
-
     fs::path write(const std::string& name, const std::string& text) const {
         const fs::path path = mDir / name;
         fs::create_directories(path.parent_path());
@@ -39,7 +31,8 @@ protected:
         return path;
     }
 
-    fs::path mDir;
+    testing::TestFolder mFolder;
+    const fs::path mDir = mFolder.path();
 };
 
 constexpr const char* kGrid2d = R"(

@@ -17,6 +17,7 @@
 #include "engine/core/Error.h"
 #include "precompute/geometry/Domain.h"
 #include "precompute/geometry/ImplicitShape.h"
+#include "tests/support/TestScenes.h"
 
 namespace modeflow {
 namespace {
@@ -24,46 +25,11 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 constexpr double kVoxel = 0.01;  // unused by analytic shapes
 
-ShapeSpec ball(const Vec3& center, double radius, CsgOp op = CsgOp::Union) {
-    ShapeSpec s;
-    s.kind = ShapeKind::Ball;
-    s.center = center;
-    s.radius = radius;
-    s.op = op;
-    return s;
-}
-ShapeSpec box(const Vec3& min, const Vec3& max, CsgOp op = CsgOp::Union) {
-    ShapeSpec s;
-    s.kind = ShapeKind::Box;
-    s.min = min;
-    s.max = max;
-    s.op = op;
-    return s;
-}
-ShapeSpec ellipsoid(const Vec3& center, const Vec3& radii) {
-    ShapeSpec s;
-    s.kind = ShapeKind::Ellipsoid;
-    s.center = center;
-    s.radii = radii;
-    return s;
-}
-ShapeSpec cylinder(const Vec3& center, double radius, double halfHeight, CsgOp op = CsgOp::Union) {
-    ShapeSpec s;
-    s.op = op;
-    s.kind = ShapeKind::Cylinder;
-    s.center = center;
-    s.radius = radius;
-    s.halfHeight = halfHeight;
-    return s;
-}
-ShapeSpec torus(const Vec3& center, double major, double minor) {
-    ShapeSpec s;
-    s.kind = ShapeKind::Torus;
-    s.center = center;
-    s.majorRadius = major;
-    s.minorRadius = minor;
-    return s;
-}
+using testing::ball;
+using testing::box;
+using testing::cylinder;
+using testing::ellipsoid;
+using testing::torus;
 
 double value(const ShapeSpec& spec, int dim, const Vec3& p) {
     return makeShape(spec, dim, kVoxel)->value(p);

@@ -8,7 +8,8 @@
 #include <cstdio>
 
 #include "precompute/Precompute.h"
-#include "tests/precompute/TestScenes.h"
+#include "tests/support/RealBases.h"
+#include "tests/support/TestScenes.h"
 
 namespace modeflow {
 namespace {
@@ -32,13 +33,13 @@ std::vector<double> continuumBoxSpectrum(const std::vector<double>& sides, int c
 }
 
 double boxError(int dim, int n, const Vec3& lo, const Vec3& hi, int count) {
-    SceneSpec scene = test::gridScene({n, n, n}, {-0.5, -0.5, -0.5}, {0.5, 0.5, 0.5}, dim);
-    scene.domain = {test::box(lo, hi)};
+    SceneSpec scene = testing::gridScene({n, n, n}, {-0.5, -0.5, -0.5}, {0.5, 0.5, 0.5}, dim);
+    scene.domain = {testing::box(lo, hi)};
     scene.basis.velocityModes = {{1, count}};
     scene.basis.scalarModes = 0;
     Progress quiet = Progress::silent();
     const BasisCache cache = computeBasis(scene, quiet);
-    test::expectValidVelocityBasis(cache);
+    testing::expectValidVelocityBasis(cache);
     std::vector<double> sides;
     for (int a = 0; a < dim; ++a) sides.push_back(hi[a] - lo[a]);
     const std::vector<double> exact = continuumBoxSpectrum(sides, count);

@@ -21,7 +21,7 @@
 #include "precompute/dec/CutCellDec.h"
 #include "precompute/initial/UniformField.h"
 #include "precompute/initial/VortexProjection.h"
-#include "tests/precompute/TestScenes.h"
+#include "tests/support/TestScenes.h"
 
 namespace modeflow {
 namespace {
@@ -31,11 +31,7 @@ constexpr int kDiskCells = 32;
 /// A unit disk on a grid symmetric about the origin (so a 90° turn maps faces onto faces).
 const BasisCache& disk() {
     static const BasisCache cache = [] {
-        SceneSpec scene =
-            test::gridScene({kDiskCells, kDiskCells, 1}, {-1.1, -1.1, 0.0}, {1.1, 1.1, 0.0}, 2);
-        scene.domain = {test::ball({0.0, 0.0, 0.0}, 1.0)};
-        scene.basis.velocityModes = {{1, 10}};
-        scene.basis.scalarModes = 0;
+        SceneSpec scene = testing::unitBallScene(2, kDiskCells, 10, 0);
         Progress quiet = Progress::silent();
         return computeBasis(scene, quiet);
     }();
@@ -171,10 +167,7 @@ TEST(VortexProjection, RingVelocityAtItsCentreFollowsTheNormal) {
 }
 
 TEST(VortexProjection, RingProjectsWithEnergyQuadraticInCirculation) {
-    SceneSpec scene = test::gridScene({14, 14, 14}, {-1.1, -1.1, -1.1}, {1.1, 1.1, 1.1}, 3);
-    scene.domain = {test::ball({0.0, 0.0, 0.0}, 1.0)};
-    scene.basis.velocityModes = {{1, 24}};
-    scene.basis.scalarModes = 0;
+    SceneSpec scene = testing::unitBallScene(3, 14, 24, 0);
     Progress quiet = Progress::silent();
     const BasisCache cache = computeBasis(scene, quiet);
 
@@ -192,17 +185,14 @@ TEST(VortexProjection, RingProjectsWithEnergyQuadraticInCirculation) {
 /// A unit disk at 48² with 40 modes: enough for the interior of a uniform field to be resolved.
 const BasisCache& disk40() {
     static const BasisCache cache = [] {
-        SceneSpec scene = test::gridScene({48, 48, 1}, {-1.1, -1.1, 0.0}, {1.1, 1.1, 0.0}, 2);
-        scene.domain = {test::ball({0.0, 0.0, 0.0}, 1.0)};
-        scene.basis.velocityModes = {{1, 40}};
-        scene.basis.scalarModes = 0;
+        SceneSpec scene = testing::unitBallScene(2, 48, 40, 0);
         Progress quiet = Progress::silent();
         return computeBasis(scene, quiet);
     }();
     return cache;
 }
 
-const std::vector<ShapeSpec> kUnitDisk{test::ball({0.0, 0.0, 0.0}, 1.0)};
+const std::vector<ShapeSpec> kUnitDisk{testing::ball({0.0, 0.0, 0.0}, 1.0)};
 
 TEST(UniformField, IsUniformInsideDivergenceFreeAndTangentAtTheWall) {
     const UniformField field(disk(), kUnitDisk, {2.0, 1.0, 0.0}, 1.5, 0.3);

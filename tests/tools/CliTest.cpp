@@ -1,5 +1,5 @@
 // The `modeflow` command line, run as users run it: exit codes, messages that name what is
-// wrong, and no cache file left behind by a failure (DESIGN §5).
+// wrong, and no cache file left behind by a failure (README.md, "Command line").
 
 #include <gtest/gtest.h>
 
@@ -13,7 +13,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "tests/tools/CliFixture.h"
+#include "tests/support/CliFixture.h"
 
 namespace {
 

@@ -9,7 +9,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "tests/tools/CliFixture.h"
+#include "tests/support/CliFixture.h"
 
 namespace modeflow {
 namespace {

@@ -7,7 +7,7 @@
 
 #include <gtest/gtest.h>
 
-#include "tests/tools/CliFixture.h"
+#include "tests/support/CliFixture.h"
 
 namespace modeflow {
 namespace {

@@ -3,14 +3,21 @@
 /// input refused before any work.
 
 #include <cmath>
+#include <fstream>
 #include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
 
+#include <fcntl.h>
+#include <sys/file.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include "engine/core/MacGrid.h"
+#include "engine/output/RunFolder.h"
 #include "engine/output/VdbFrame.h"
-#include "tests/tools/CliFixture.h"
+#include "tests/support/CliFixture.h"
 
 namespace modeflow {
 namespace {
@@ -217,6 +224,122 @@ shape = "cone"
                        mCache.string(),
                    "--device gpu0");
     EXPECT_FALSE(fs::exists(mDir / "g")) << "the output folder was made before the device was checked";
+}
+
+
+TEST_F(RunCommand, WhatTheBackendCannotDoIsRefusedBeforeThePrecompute) {
+    const fs::path s = scene("hot.toml", kHotDisk);
+    // A device index that is not there: the device is opened before any precompute.
+    expectRejected("run " + s.string() + " --out " + (mDir / "f").string() + " --device 7 --cache-dir " +
+                       mCache.string(),
+                   "device");
+    // The trapezoidal rule runs on the CPU reference only (the capability table).
+    std::string text = kHotDisk;
+    text.replace(text.find("dt = 0.02"), 9, "dt = 0.02\nintegrator = \"trapezoidal\"");
+    const fs::path trapezoidal = scene("trap.toml", text);
+    expectRejected("run " + trapezoidal.string() + " --out " + (mDir / "t").string() + " --cache-dir " +
+                       mCache.string(),
+                   "[simulation].integrator = \"trapezoidal\" runs on the CPU reference only");
+}
+
+TEST_F(RunCommand, ASourceOutsideTheDomainIsRefusedNamingIt) {
+    const fs::path s = scene("outside.toml", std::string(testing::kSmallDisk) + R"(
+[[source]]
+shape = "ball"
+center = [0.0, -0.5]
+radius = 0.2
+[[source]]
+shape = "ball"
+center = [1.05, 1.05]
+radius = 0.05
+)");
+    const RunResult r = simulate(s, mDir / "f", "--frames 1");
+    EXPECT_EQ(r.status, 1);
+    EXPECT_NE(r.err.find("[[source]] #2 covers no fluid cell"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(mDir / "f" / "outside_0001.vdb"));
+}
+
+/// A closed octahedron, scaled by `scale`: a mesh domain small enough for quick tests.
+std::string octahedron(double scale) {
+    std::string obj;
+    const double v[6][3] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+    for (const auto& p : v)
+        obj += "v " + std::to_string(scale * p[0]) + " " + std::to_string(scale * p[1]) + " " +
+               std::to_string(scale * p[2]) + "\n";
+    obj += "f 1 3 5\nf 3 2 5\nf 2 4 5\nf 4 1 5\nf 3 1 6\nf 2 3 6\nf 4 2 6\nf 1 4 6\n";
+    return obj;
+}
+
+TEST_F(RunCommand, ResumeAfterEditingOnlyTheMeshIsRefused) {
+    std::ofstream(mDir / "shape.obj") << octahedron(1.0);
+    const fs::path s = scene("mesh.toml", R"(
+[grid]
+resolution = [10, 10, 10]
+bounds_min = [-1.1, -1.1, -1.1]
+bounds_max = [1.1, 1.1, 1.1]
+[[domain]]
+shape = "mesh"
+file = "shape.obj"
+[basis]
+velocity_modes = 4
+scalar_modes = 0
+[initial]
+velocity = "random"
+energy = 0.1
+[output]
+frames = 2
+)");
+    ASSERT_EQ(simulate(s, mDir / "out", "--frames 1 --device cpu").status, 0);
+    std::ofstream(mDir / "shape.obj") << octahedron(0.9);  // the scene's text is unchanged
+    const RunResult resumed = simulate(s, mDir / "out", "--resume --device cpu");
+    EXPECT_NE(resumed.status, 0) << "a resume continued in another basis";
+    EXPECT_NE(resumed.err.find("basis (mesh file)"), std::string::npos) << resumed.err;
+}
+
+TEST_F(RunCommand, AShorterRerunLeavesNoFramesOfTheEarlierRun) {
+    const fs::path s = scene("hot.toml", kHotDisk), out = mDir / "frames";
+    ASSERT_EQ(simulate(s, out).status, 0);
+    std::ofstream(out / "other_0003.vdb") << "another scene's frame";
+    std::ofstream(out / "hot_notes.txt") << "the user's";
+    const RunResult rerun = simulate(s, out, "--frames 2");
+    ASSERT_EQ(rerun.status, 0) << rerun.err;
+    EXPECT_NE(rerun.err.find("files of an earlier hot run"), std::string::npos) << rerun.err;
+    EXPECT_TRUE(fs::exists(out / "hot_0002.vdb"));
+    EXPECT_FALSE(fs::exists(out / "hot_0003.vdb")) << "a frame of the earlier, longer run is left";
+    EXPECT_FALSE(fs::exists(out / "hot_0004.vdb")) << "a frame of the earlier, longer run is left";
+    EXPECT_TRUE(fs::exists(out / "other_0003.vdb"));
+    EXPECT_TRUE(fs::exists(out / "hot_notes.txt"));
+}
+
+TEST_F(RunCommand, ASecondRunIntoTheSameFolderIsRefused) {
+    const fs::path s = scene("hot.toml", kHotDisk), out = mDir / "frames";
+    fs::create_directories(out);
+    // This process holds the folder as a running `modeflow run` would.
+    const int held = ::open(RunFolder::lockPath(out, "hot").c_str(), O_RDWR | O_CREAT, 0644);
+    ASSERT_GE(held, 0);
+    ASSERT_EQ(::flock(held, LOCK_EX), 0);
+    const RunResult second = simulate(s, out);
+    EXPECT_NE(second.status, 0);
+    EXPECT_NE(second.err.find("another modeflow run"), std::string::npos) << second.err;
+    EXPECT_FALSE(fs::exists(out / "hot_0001.vdb"));
+    ::close(held);  // the first run ends: the folder is free again
+    const RunResult after = simulate(s, out, "--frames 1");
+    EXPECT_EQ(after.status, 0) << after.err;
+}
+
+TEST_F(RunCommand, PartialFilesOfKilledRunsAreRemoved) {
+    const fs::path s = scene("hot.toml", kHotDisk), out = mDir / "frames";
+    fs::create_directories(out);
+    const pid_t child = ::fork();
+    ASSERT_GE(child, 0);
+    if (child == 0) ::_exit(0);
+    ::waitpid(child, nullptr, 0);  // a process that is gone, as a killed run's is
+    const fs::path partial = out / ("hot_0002.vdb.tmp-" + std::to_string(child));
+    std::ofstream(partial) << "half a frame";
+    const RunResult r = simulate(s, out, "--frames 1");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_FALSE(fs::exists(partial));
+    EXPECT_NE(r.err.find("partial files of killed runs"), std::string::npos) << r.err;
 }
 
 }  // namespace

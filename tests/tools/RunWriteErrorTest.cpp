@@ -4,12 +4,15 @@
 /// is real: the run is started with a file size limit (`ulimit -f`, with SIGXFSZ ignored so the
 /// write fails with EFBIG instead of killing the process), as a full disk fails a write.
 
+#include <cstdlib>
 #include <string>
+
+#include <sys/wait.h>
 
 #include <gtest/gtest.h>
 
 #include "engine/output/VdbFrame.h"
-#include "tests/tools/CliFixture.h"
+#include "tests/support/CliFixture.h"
 
 namespace modeflow {
 namespace {
@@ -41,7 +44,7 @@ TEST_F(RunWriteError, StopsWithAMessageAndLeavesOnlyWholeFrames) {
     // 40 KiB per file: the first two frames (little smoke yet) and the checkpoint fit, the third
     // frame does not (about 44 KiB).
     const std::string command = "bash -c \"trap '' XFSZ; ulimit -f 40; exec env -u MODEFLOW_CACHE_DIR " +
-                                std::string(MODEFLOW_CLI) + " run " + scene.string() + " --out " +
+                                testing::cliPath() + " run " + scene.string() + " --out " +
                                 out.string() + " --cache-dir " + mCache.string() + "\" >/dev/null 2>" +
                                 err.string() + " </dev/null";
     const int raw = std::system(command.c_str());

@@ -1,9 +1,10 @@
 /// `modeflow stir` from the command line: what it refuses before any work. (The window itself
-/// is tested under Xvfb by tests/engine/StirWindowTest and tests/tools/StirCommandWindowTest.)
+/// is tested under Xvfb by tests/engine/StirWindowSlowTest and tests/tools/StirCommandWindowTest.)
 
 #include <cstdlib>
+#include <fstream>
 
-#include "tests/tools/CliFixture.h"
+#include "tests/support/CliFixture.h"
 
 namespace modeflow::testing {
 namespace {

@@ -11,7 +11,6 @@
 
 #include <map>
 #include <memory>
-#include <random>
 #include <vector>
 
 #include <Eigen/Core>
@@ -19,9 +18,9 @@
 #include "engine/dynamics/DenseCoefficients.h"
 #include "engine/dynamics/FluidSystem.h"
 #include "engine/dynamics/ModalIntegrator.h"
-#include "engine/core/PackedLayout.h"
 #include "engine/dynamics/SparseCoefficients.h"
 #include "engine/dynamics/ThreadCount.h"
+#include "tests/support/RandomCoefficients.h"
 
 namespace {
 
@@ -31,34 +30,23 @@ enum class Storage { Dense, Sparse };
 
 constexpr double kSparseDensity = 0.1;
 
-/// Random coefficients, built once per (N, storage): the packed array is antisymmetric by
-/// construction, and the sparse one keeps a random 10% of it.
+/// Random coefficients (tests/support/RandomCoefficients.h), built once per (N, storage); the
+/// sparse ones keep a random 10% of the entries.
 const StructuralCoefficients& coefficients(int n, Storage storage) {
     static std::map<std::pair<int, Storage>, std::unique_ptr<StructuralCoefficients>> cache;
     auto& slot = cache[{n, storage}];
     if (!slot) {
-        std::mt19937_64 rng(std::uint64_t(n) * 7919 + int(storage));
-        std::uniform_real_distribution<double> value(-1.0, 1.0);
-        std::bernoulli_distribution keep(kSparseDensity);
-        std::vector<double> packed(packedSize(n));
-        for (double& c : packed) c = (storage == Storage::Dense || keep(rng)) ? value(rng) : 0.0;
-        DenseCoefficients dense(n, std::move(packed));
-        if (storage == Storage::Dense) {
-            slot = std::make_unique<DenseCoefficients>(std::move(dense));
-        } else {
-            slot = std::make_unique<SparseCoefficients>(SparseCoefficients::fromDense(dense));
-        }
+        const std::uint64_t seed = std::uint64_t(n) * 7919 + int(storage);
+        if (storage == Storage::Dense)
+            slot = std::make_unique<DenseCoefficients>(testing::randomDense(n, seed));
+        else
+            slot = std::make_unique<SparseCoefficients>(
+                SparseCoefficients::fromDense(testing::randomDense(n, seed, kSparseDensity)));
     }
     return *slot;
 }
 
-Eigen::VectorXd randomState(int n) {
-    std::mt19937_64 rng(12345);
-    std::normal_distribution<double> normal;
-    Eigen::VectorXd v(n);
-    for (double& x : v) x = normal(rng);
-    return v;
-}
+Eigen::VectorXd randomState(int n) { return testing::randomVector(n, 12345); }
 
 void contraction(benchmark::State& state, Storage storage, bool withJacobian) {
     const ThreadCount threads(int(state.range(1)));

@@ -1,6 +1,6 @@
 #pragma once
 /// @file Commands.h
-/// The `modeflow` subcommands (DESIGN §5). Each registers its options on the CLI11 app and
+/// The `modeflow` subcommands (README.md, "Command line"). Each registers its options on the CLI11 app and
 /// returns the function that runs it; errors propagate as modeflow::Error to main().
 
 #include <filesystem>

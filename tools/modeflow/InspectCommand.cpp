@@ -119,7 +119,7 @@ Command addInspect(CLI::App& app) {
     sub->add_option("CACHE_OR_SCENE", opts->target, "a .mfbasis cache file or a .toml scene")
         ->required();
     sub->add_option("--cache-dir", opts->cacheDir, "cache folder used for a scene");
-    sub->add_flag("--json", opts->json, "print one JSON object (DESIGN §5 keys)");
+    sub->add_flag("--json", opts->json, "print one JSON object (keys in the README)");
     return [sub, opts]() {
         if (!*sub) return -1;
         std::filesystem::path path = opts->target;

@@ -5,14 +5,17 @@
 #include <iterator>
 #include <memory>
 #include <new>
+#include <optional>
 #include <sstream>
 #include <string>
 
 #include "engine/format/CacheFile.h"
 #include "engine/core/Error.h"
 #include "engine/core/WritableDirectory.h"
+#include "engine/output/RunFolder.h"
 #include "engine/output/VdbFrame.h"
 #include "engine/simulation/Checkpoint.h"
+#include "precompute/Precompute.h"
 #include "precompute/scene/SceneLoader.h"
 #include "tools/modeflow/Commands.h"
 #include "tools/modeflow/FramePreview.h"
@@ -74,10 +77,24 @@ Command addRun(CLI::App& app) {
         const int frames = opts->frames.value_or(scene.output.frames);
         const std::filesystem::path out = opts->out.value_or(scene.name + "_frames");
         ensureWritableDirectory(out, "output folder", "; choose another with --out");
-        const std::filesystem::path checkpointPath = out / (scene.name + ".resume");
-        // The checkpoint belongs to this scene text and device kind; frames do not change results.
+        // One run at a time per scene in a folder; taken before any work.
+        const RunFolder folder(out, scene.name);
+        if (folder.staleTemporariesRemoved() > 0)
+            std::cerr << "removed " << folder.staleTemporariesRemoved() << " partial files of killed runs from "
+                      << out.string() << "\n";
+        // The checkpoint belongs to this scene text, the basis it makes (mesh files included) and the
+        // device kind; the frame count does not change results.
         const std::string sceneHash = hex(fnv1a64(fileBytes(scene.sourceFile)));
-        const std::uint64_t runHash = fnv1a64(sceneHash + "|" + std::string(capabilitiesOf(choice.kind).option));
+        const std::uint64_t runHash = fnv1a64(sceneHash + "|" + basisKey(scene) + "|" +
+                                              std::string(capabilitiesOf(choice.kind).option));
+        std::optional<Checkpoint> resumeFrom;
+        if (opts->resume && std::filesystem::exists(folder.checkpointPath())) {
+            resumeFrom = readCheckpoint(folder.checkpointPath());
+            if (resumeFrom->runHash != runHash)
+                throw Error("checkpoint " + folder.checkpointPath().string() +
+                            " was written for another scene text, basis (mesh file) or device; run without "
+                            "--resume to start afresh");
+        }
         const Backend backend(choice);
         std::cerr << backend.describe();
 
@@ -89,15 +106,14 @@ Command addRun(CLI::App& app) {
             inRunStage("setting up the simulation", memory, [&] { return backend.makeSimulator(run); });
 
         int first = 0;
-        if (opts->resume && std::filesystem::exists(checkpointPath)) {
-            const Checkpoint checkpoint = readCheckpoint(checkpointPath);
-            if (checkpoint.runHash != runHash)
-                throw Error("checkpoint " + checkpointPath.string() +
-                            " was written for another scene text or device; run without --resume to start afresh");
-            simulator->restore(checkpoint.time, checkpoint.velocity, checkpoint.smoke);
-            if (settings.mhd) simulator->setMagneticField(checkpoint.magnetic);
-            first = checkpoint.frame;
-            std::cerr << "resuming after frame " << first << " (t = " << checkpoint.time << ")\n";
+        if (resumeFrom) {
+            simulator->restore(resumeFrom->time, resumeFrom->velocity, resumeFrom->smoke);
+            if (settings.mhd) simulator->setMagneticField(resumeFrom->magnetic);
+            first = resumeFrom->frame;
+            std::cerr << "resuming after frame " << first << " (t = " << resumeFrom->time << ")\n";
+        } else if (const int removed = folder.removeEarlierRun(); removed > 0) {
+            std::cerr << "removed " << removed << " files of an earlier " << scene.name << " run from " << out.string()
+                      << "\n";
         }
 
         const MacGrid basisGrid = MacGrid::fromSpec(run.cache.grid);
@@ -139,7 +155,7 @@ Command addRun(CLI::App& app) {
                 std::filesystem::path png = out / frameFileName(scene.name, frame);
                 preview->write(png.replace_extension(".png"), frame, smoke, temperature);
             }
-            writeCheckpoint(checkpointPath, {frame, simulator->time(), runHash, simulator->velocity(),
+            writeCheckpoint(folder.checkpointPath(), {frame, simulator->time(), runHash, simulator->velocity(),
                                              simulator->magneticField(), smoke});
             std::string detail;
             if (stats.unconvergedSteps) detail += std::to_string(stats.unconvergedSteps) + " unconverged steps ";

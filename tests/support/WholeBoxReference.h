@@ -15,7 +15,7 @@
 #include "engine/core/MacGrid.h"
 #include "engine/format/BasisCache.h"
 
-namespace modeflow::test {
+namespace modeflow::testing {
 
 class WholeBoxReference {
 public:
@@ -143,4 +143,4 @@ private:
     Eigen::MatrixXd mDiv, mL2, mL3;
 };
 
-}  // namespace modeflow::test
+}  // namespace modeflow::testing

@@ -5,27 +5,19 @@
 /// the tests fail and say so instead of skipping.
 
 #include <memory>
+#include <string>
 
 #include <gtest/gtest.h>
 
-#include "engine/core/Error.h"
 #include "engine/vulkan/VulkanContext.h"
 
 namespace modeflow::testing {
 
 /// The context, or nullptr after recording a failure that quotes the reason.
-inline std::unique_ptr<vulkan::VulkanContext> makeVulkanContext(bool validation) {
-    try {
-        vulkan::VulkanContextOptions options;
-        options.validation = validation;
-        return std::make_unique<vulkan::VulkanContext>(options);
-    } catch (const Error& e) {
-        ADD_FAILURE() << "no usable Vulkan device (tools/install-deps.sh installs lavapipe (mesa-vulkan-drivers) "
-                         "and the validation layers): "
-                      << e.what();
-        return nullptr;
-    }
-}
+std::unique_ptr<vulkan::VulkanContext> makeVulkanContext(bool validation);
+
+/// A failure listing the validation layer's messages, if `context` recorded any.
+void expectNoValidationMessages(const vulkan::VulkanContext& context);
 
 /// Base fixture, parameterized on validation: each test runs once without and once with the
 /// Khronos validation layer, and the validated run must end with zero warnings and errors.
@@ -39,13 +31,7 @@ protected:
     }
 
     /// Called by each test after its Vulkan objects are gone (messages can come on destruction).
-    void expectNoValidationMessages() const {
-        EXPECT_EQ(mContext->validationMessageCount(), 0u) << [this] {
-            std::string all;
-            for (const auto& m : mContext->validationMessages()) all += m + "\n";
-            return all;
-        }();
-    }
+    void expectNoValidationMessages() const { testing::expectNoValidationMessages(*mContext); }
 
     void TearDown() override {
         if (mContext) expectNoValidationMessages();
@@ -56,8 +42,7 @@ protected:
     std::unique_ptr<vulkan::VulkanContext> mContext;
 };
 
-inline std::string validationName(const ::testing::TestParamInfo<bool>& info) {
-    return info.param ? "Validated" : "Plain";
-}
+/// "Plain" or "Validated", the name of a VulkanTest's parameter.
+std::string validationName(const ::testing::TestParamInfo<bool>& info);
 
 }  // namespace modeflow::testing

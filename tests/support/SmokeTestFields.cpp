@@ -1,25 +1,13 @@
-#pragma once
-/// @file SmokeTestFields.h
-/// Grids, fluid masks, velocity face fields and smoke fields for the smoke advection tests:
-/// divergence-free velocities come from a stream function ψ on the grid's z-edges (2D: its
-/// vertices), whose discrete curl (u = ∂ψ/∂y, v = −∂ψ/∂x, face by face) has zero discrete
-/// divergence exactly.
+#include "tests/support/SmokeTestFields.h"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstdint>
-#include <functional>
 #include <random>
-#include <vector>
-
-#include "engine/core/MacGrid.h"
-#include "engine/reference/SmokeAdvection.h"
 
 namespace modeflow::testing {
 
-/// [−1, 1]^dim with n cells per axis.
-inline MacGrid smokeTestGrid(int dim, int n) {
+MacGrid smokeTestGrid(int dim, int n) {
     MacGrid grid;
     grid.dim = dim;
     for (int a = 0; a < dim; ++a) {
@@ -30,33 +18,21 @@ inline MacGrid smokeTestGrid(int dim, int n) {
     return grid;
 }
 
-inline Vec3 cellCentre(const MacGrid& grid, int x, int y, int z) {
+Vec3 cellCentre(const MacGrid& grid, int x, int y, int z) {
     return {grid.cellCentre(0, x), grid.cellCentre(1, y), grid.dim == 3 ? grid.cellCentre(2, z) : 0.0};
 }
 
-/// One value per cell of `f` at its centre (the third coordinate 0 in 2D).
-template <typename T>
-std::vector<T> cellValues(const MacGrid& grid, const std::function<T(const Vec3&)>& f) {
-    std::vector<T> values(std::size_t(grid.cellCount()));
-    for (int z = 0; z < grid.cells[2]; ++z)
-        for (int y = 0; y < grid.cells[1]; ++y)
-            for (int x = 0; x < grid.cells[0]; ++x) values[grid.cellIndex(x, y, z)] = f(cellCentre(grid, x, y, z));
-    return values;
-}
-
-/// 1 on cells whose centre lies within `radius` of the origin (a disk or a ball).
-inline std::vector<std::uint8_t> ballMask(const MacGrid& grid, double radius) {
+std::vector<std::uint8_t> ballMask(const MacGrid& grid, double radius) {
     return cellValues<std::uint8_t>(grid, [radius](const Vec3& p) {
         return std::uint8_t(p[0] * p[0] + p[1] * p[1] + p[2] * p[2] < radius * radius);
     });
 }
 
-inline std::vector<std::uint8_t> wholeMask(const MacGrid& grid) {
+std::vector<std::uint8_t> wholeMask(const MacGrid& grid) {
     return std::vector<std::uint8_t>(std::size_t(grid.cellCount()), 1);
 }
 
-/// A Gaussian bump of height 1 and width σ around `centre`.
-inline std::vector<double> gaussianBlob(const MacGrid& grid, const Vec3& centre, double sigma) {
+std::vector<double> gaussianBlob(const MacGrid& grid, const Vec3& centre, double sigma) {
     return cellValues<double>(grid, [&](const Vec3& p) {
         double r2 = 0.0;
         for (int a = 0; a < 3; ++a) r2 += (p[a] - centre[a]) * (p[a] - centre[a]);
@@ -64,8 +40,7 @@ inline std::vector<double> gaussianBlob(const MacGrid& grid, const Vec3& centre,
     });
 }
 
-/// `u` on every interior face of each axis, 0 on the walls of the box.
-inline std::vector<double> constantVelocity(const MacGrid& grid, const Vec3& u) {
+std::vector<double> constantVelocity(const MacGrid& grid, const Vec3& u) {
     std::vector<double> faces(std::size_t(grid.faceTotal()), 0.0);
     for (int axis = 0; axis < grid.dim; ++axis) {
         const std::array<int, 3> e = grid.faceExtent(axis);
@@ -79,9 +54,7 @@ inline std::vector<double> constantVelocity(const MacGrid& grid, const Vec3& u) 
     return faces;
 }
 
-/// The discrete curl of ψ(x, y, z) sampled on z-edges (x_i, y_j, centre of layer k): exactly
-/// divergence-free; the walls get zero flux when ψ is constant along the box's boundary.
-inline std::vector<double> streamFunctionVelocity(const MacGrid& grid, const std::function<double(const Vec3&)>& psi) {
+std::vector<double> streamFunctionVelocity(const MacGrid& grid, const std::function<double(const Vec3&)>& psi) {
     const auto at = [&](int i, int j, int k) {
         return psi({grid.origin[0] + i * grid.spacing[0], grid.origin[1] + j * grid.spacing[1],
                     grid.dim == 3 ? grid.cellCentre(2, k) : 0.0});
@@ -98,18 +71,14 @@ inline std::vector<double> streamFunctionVelocity(const MacGrid& grid, const std
     return faces;
 }
 
-/// Rigid rotation at angular speed ω about the z axis inside radius R, at rest outside
-/// (ψ = −ω min(r, R)² / 2, r the distance to the z axis).
-inline std::vector<double> rotationVelocity(const MacGrid& grid, double omega, double radius) {
+std::vector<double> rotationVelocity(const MacGrid& grid, double omega, double radius) {
     return streamFunctionVelocity(grid, [omega, radius](const Vec3& p) {
         const double r = std::min(std::hypot(p[0], p[1]), radius);
         return -0.5 * omega * r * r;
     });
 }
 
-/// A random smooth swirl about z confined to the disk (ball) of radius R: ψ a few random
-/// Fourier modes times (1 − r²/R²)² inside, 0 outside, so no flux leaves the disk (ball).
-inline std::vector<double> randomSwirlVelocity(const MacGrid& grid, double radius, std::uint64_t seed) {
+std::vector<double> randomSwirlVelocity(const MacGrid& grid, double radius, std::uint64_t seed) {
     std::mt19937_64 rng(seed);
     std::uniform_real_distribution<double> coefficient(-1.0, 1.0);
     std::vector<std::array<double, 6>> modes(6);
@@ -126,8 +95,7 @@ inline std::vector<double> randomSwirlVelocity(const MacGrid& grid, double radiu
     });
 }
 
-/// randomSwirlVelocity scaled to max |face value| = 1.
-inline std::vector<double> unitSwirlVelocity(const MacGrid& grid, double radius, std::uint64_t seed) {
+std::vector<double> unitSwirlVelocity(const MacGrid& grid, double radius, std::uint64_t seed) {
     std::vector<double> faces = randomSwirlVelocity(grid, radius, seed);
     double peak = 0.0;
     for (const double v : faces) peak = std::max(peak, std::abs(v));
@@ -135,14 +103,28 @@ inline std::vector<double> unitSwirlVelocity(const MacGrid& grid, double radius,
     return faces;
 }
 
-inline constexpr AdvectionScheme kAdvectionSchemes[] = {AdvectionScheme::SemiLagrangian, AdvectionScheme::MacCormack};
+std::vector<SmokeEmitter> smokeTestEmitters() {
+    return {{EmitterShape::Ball, {0.25, -0.5, 0.125}, 0.3, {}, {}, 1.5, 0.75},
+            {EmitterShape::Box, {}, 0.0, {-0.875, -0.3, -0.3}, {-0.5, 0.2, 0.2}, 0.5, 2.0}};
+}
 
-inline const char* schemeName(AdvectionScheme scheme) {
+std::vector<float> mushroomCloud(const MacGrid& grid) {
+    return cellValues<float>(grid, [](const Vec3& p) {
+        const double x = p[0], y = p[1], z = p[2];
+        const double sx = x - 0.06 * std::sin(7.0 * z), stem = sx * sx + y * y;
+        const double ring = std::pow(std::hypot(x, y) - 0.3, 2) + (z - 0.3) * (z - 0.3);
+        const double cap = x * x + y * y + (z - 0.4) * (z - 0.4);
+        return float(0.5 * std::exp(-stem / 0.01) * std::clamp((0.3 - z) / 0.2, 0.0, 1.0) *
+                         (0.8 + 0.2 * std::sin(23.0 * z)) +
+                     std::exp(-ring / 0.012) + 0.6 * std::exp(-cap / 0.03));
+    });
+}
+
+const char* schemeName(AdvectionScheme scheme) {
     return scheme == AdvectionScheme::SemiLagrangian ? "semi-Lagrangian" : "MacCormack";
 }
 
-/// Σ φ·x / Σ φ over the cells.
-inline Vec3 centroid(const MacGrid& grid, const std::vector<double>& field) {
+Vec3 centroid(const MacGrid& grid, const std::vector<double>& field) {
     Vec3 moment{0.0, 0.0, 0.0};
     double total = 0.0;
     for (int z = 0; z < grid.cells[2]; ++z)

@@ -1,5 +1,5 @@
 // Curved and unaligned walls: eigenvalues converge to the continuum at second order with cut
-// cells, first order with the staircase switch (DESIGN §6).
+// cells, first order with the staircase switch (tests/README.md).
 
 #include <gtest/gtest.h>
 
@@ -8,7 +8,8 @@
 #include <cstdio>
 
 #include "precompute/Precompute.h"
-#include "tests/precompute/TestScenes.h"
+#include "tests/support/RealBases.h"
+#include "tests/support/TestScenes.h"
 
 namespace modeflow {
 namespace {
@@ -33,13 +34,12 @@ struct DiskErrors {
 };
 
 DiskErrors diskErrors(int n, BoundaryTreatment treatment) {
-    SceneSpec scene = test::gridScene({n, n, 1}, {-1.1, -1.1, 0.0}, {1.1, 1.1, 0.0}, 2);
-    scene.domain = {test::ball({0.0, 0.0, 0.0}, 1.0)};
+    SceneSpec scene = testing::unitBallScene(2, n);
     scene.basis.boundary = treatment;
     Progress quiet = Progress::silent();
     const BasisCache neumann = computeBasis(scene, quiet);
     SCOPED_TRACE(n);
-    test::expectValidVelocityBasis(neumann);
+    testing::expectValidVelocityBasis(neumann);
     scene.basis.scalarBoundary = ScalarBoundary::Dirichlet;
     scene.basis.velocityModes = {{1, 1}};
     const BasisCache dirichlet = computeBasis(scene, quiet);

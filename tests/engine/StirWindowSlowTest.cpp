@@ -1,22 +1,17 @@
 /// `modeflow stir`'s window, run for real: under Xvfb on lavapipe (tests/CMakeLists.txt wraps
-/// files named *WindowTest in xvfb-run) with the validation layer on, driven by input scripts
-/// on the frame clock, so every run is reproducible.
+/// files named *WindowTest and *WindowSlowTest in xvfb-run) with the validation layer on, driven
+/// by input scripts on the frame clock, so every run is reproducible. Label `slow`: about 20 s.
 
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <sstream>
 
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wmissing-field-initializers"
-#pragma GCC diagnostic ignored "-Wunused-function"
-#define STB_IMAGE_IMPLEMENTATION
-#include <stb/stb_image.h>
-#pragma GCC diagnostic pop
-
 #include "engine/stir/StirApp.h"
 #include "engine/stir/StirView.h"
-#include "tests/engine/StirTestRuns.h"
+#include "tests/support/PngFile.h"
+#include "tests/support/StirRuns.h"
+#include "tests/support/TestFolder.h"
 
 namespace modeflow {
 namespace {
@@ -26,32 +21,33 @@ namespace fs = std::filesystem;
 using testing::drag;
 using testing::preparedStirRun;
 
-fs::path scratch(const std::string& name) {
-    const fs::path dir = fs::temp_directory_path() / "modeflow-stir-window-test";
-    fs::create_directories(dir);
-    return dir / name;
-}
+/// Scripted runs in a window, their screenshots in the test's own folder.
+class StirWindowTest : public ::testing::Test {
+protected:
+    fs::path scratch(const std::string& name) const { return mFolder / name; }
 
-/// A scripted run in a 640 × 480 window (`sized` false: the default size), simulated on the
-/// window's device or on the CPU reference beside it.
-stir::StirReport run(int dim, const std::string& script, int frames = 40,
-                     const fs::path& screenshot = {}, bool sized = true,
-                     BackendKind backend = BackendKind::Vulkan) {
-    stir::StirOptions options;
-    options.backend.kind = backend;
-    if (sized) {
-        options.width = 640;
-        options.height = 480;
+    /// A scripted run in a 640 × 480 window (`sized` false: the default size), simulated on the
+    /// window's device or on the CPU reference beside it.
+    stir::StirReport run(int dim, const std::string& script, int frames = 40, const fs::path& screenshot = {},
+                         bool sized = true, BackendKind backend = BackendKind::Vulkan) const {
+        stir::StirOptions options;
+        options.backend.kind = backend;
+        if (sized) {
+            options.width = 640;
+            options.height = 480;
+        }
+        options.frames = frames;
+        options.screenshot = screenshot;
+        options.screenshotFolder = mFolder;
+        options.statistics = false;
+        options.backend.vulkan.validation = true;
+        options.script = stir::parseInputScript(script, "test script");
+        std::ostringstream log;
+        return stir::runStir(options, preparedStirRun(dim), log);
     }
-    options.frames = frames;
-    options.screenshot = screenshot;
-    options.screenshotFolder = scratch("");
-    options.statistics = false;
-    options.backend.vulkan.validation = true;
-    options.script = stir::parseInputScript(script, "test script");
-    std::ostringstream log;
-    return stir::runStir(options, preparedStirRun(dim), log);
-}
+
+    testing::TestFolder mFolder;
+};
 
 Vec3 smokeCentroid(int dim, const stir::StirReport& report) {
     return testing::smokeCentroid(dim, report.smoke.density);
@@ -59,16 +55,16 @@ Vec3 smokeCentroid(int dim, const stir::StirReport& report) {
 
 /// The horizontal centre of the bright pixels of a PNG (testing::brightCentreX), and its size.
 double brightCentreX(const fs::path& png, int& width, int& height) {
-    int channels = 0;
-    unsigned char* pixels = stbi_load(png.string().c_str(), &width, &height, &channels, 4);
-    if (!pixels) return -1.0;
+    const std::optional<testing::PngPixels> read = testing::readPng(png);
+    if (!read) return -1.0;
+    width = read->width;
+    height = read->height;
     preview::Image picture(width, height);
-    picture.rgba.assign(pixels, pixels + picture.rgba.size());
-    stbi_image_free(pixels);
+    picture.rgba = read->rgba;
     return testing::brightCentreX(picture);
 }
 
-TEST(StirWindowTest, DragCarriesTheSmokeAlongAndThePictureShowsIt) {
+TEST_F(StirWindowTest, DragCarriesTheSmokeAlongAndThePictureShowsIt) {
     const fs::path still = scratch("still.png"), right = scratch("right.png");
     const stir::StirReport none = run(2, "", 40, still);
     const stir::StirReport toRight = run(2, drag(0.3, 0.7), 40, right);
@@ -88,7 +84,7 @@ TEST(StirWindowTest, DragCarriesTheSmokeAlongAndThePictureShowsIt) {
     EXPECT_GT(moved, still0 + 20.0);
 }
 
-TEST(StirWindowTest, CpuReferenceDragMovesTheSmokeLikeTheDevice) {
+TEST_F(StirWindowTest, CpuReferenceDragMovesTheSmokeLikeTheDevice) {
     // The CPU reference simulates, the window's device draws its uploaded fields.
     const fs::path shot = scratch("cpu_right.png");
     const stir::StirReport device = run(2, drag(0.3, 0.7), 40);
@@ -105,14 +101,14 @@ TEST(StirWindowTest, CpuReferenceDragMovesTheSmokeLikeTheDevice) {
     EXPECT_EQ(w, 640);
 }
 
-TEST(StirWindowTest, PaddleFollowsTheDragAndPushesTheSmoke) {
+TEST_F(StirWindowTest, PaddleFollowsTheDragAndPushesTheSmoke) {
     const stir::StirReport none = run(2, "0.0 key m\n", 40);
     const stir::StirReport pushed = run(2, drag(0.3, 0.7, "0.0 key m\n"), 40);
     EXPECT_NE(pushed.status.find("mouse: paddle"), std::string::npos) << pushed.status;
     EXPECT_GT(smokeCentroid(2, pushed)[0], smokeCentroid(2, none)[0] + 0.05);
 }
 
-TEST(StirWindowTest, WindowResizesWithoutErrors) {
+TEST_F(StirWindowTest, WindowResizesWithoutErrors) {
     const fs::path shot = scratch("resized.png");
     const stir::StirReport report =
         run(2, "0.1 resize 800 400\n0.3 resize 320 240\n", 20, shot);
@@ -125,14 +121,14 @@ TEST(StirWindowTest, WindowResizesWithoutErrors) {
     EXPECT_EQ(h, 240);
 }
 
-TEST(StirWindowTest, DefaultWindowFitsTheDevice) {
+TEST_F(StirWindowTest, DefaultWindowFitsTheDevice) {
     const stir::StirReport report = run(2, "", 5, {}, false);
     const bool cpu = vulkan::VulkanContext().properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
     EXPECT_EQ(report.width, cpu ? 960 : 1280);
     EXPECT_EQ(report.height, cpu ? 540 : 720);
 }
 
-TEST(StirWindowTest, KeysPauseSwitchAndReset) {
+TEST_F(StirWindowTest, KeysPauseSwitchAndReset) {
     // Paused from the start: no time passes, no smoke appears; one step key advances one frame.
     const stir::StirReport paused = run(2, "0.0 key space\n0.1 key s\n", 10);
     EXPECT_NEAR(paused.simulatedTime, 0.025, 1e-12);
@@ -151,7 +147,7 @@ TEST(StirWindowTest, KeysPauseSwitchAndReset) {
     EXPECT_EQ(back.modes, 20) << "b cycles back to the whole basis";
 }
 
-TEST(StirWindowTest, ThreeDimensionalSceneOrbitsZoomsAndStirsAcrossTheView) {
+TEST_F(StirWindowTest, ThreeDimensionalSceneOrbitsZoomsAndStirsAcrossTheView) {
     const std::string orbit = "0.05 rdown 0.5 0.5\n0.1 move 0.6 0.45\n0.15 rup 0.6 0.45\n0.15 scroll 2\n";
     const stir::StirReport none = run(3, orbit, 40);
     const std::string stroke = orbit + "0.2 down 0.3 0.7\n0.3 move 0.5 0.7\n0.4 move 0.7 0.7\n0.45 up 0.7 0.7\n";

@@ -1,0 +1,26 @@
+#pragma once
+/// @file TestScenes.h
+/// Scenes and shapes built in code, for every test that needs one: grids, the unit disk or ball
+/// most tests run on, and each kind of ShapeSpec.
+
+#include <array>
+
+#include "engine/core/SceneSpec.h"
+
+namespace modeflow::testing {
+
+/// A `dim`-dimensional grid of `res` cells over [lo, hi] (2D: res[2] = 1), no domain (the whole
+/// box is fluid), 10 velocity and 10 scalar modes.
+SceneSpec gridScene(std::array<int, 3> res, Vec3 lo, Vec3 hi, int dim);
+
+/// The unit disk (2D) or ball (3D) at the origin in [−1.1, 1.1]^dim with `cells` per axis and the
+/// first `velocityModes` velocity modes.
+SceneSpec unitBallScene(int dim, int cells, int velocityModes = 10, int scalarModes = 10);
+
+ShapeSpec ball(const Vec3& centre, double radius, CsgOp op = CsgOp::Union);
+ShapeSpec box(const Vec3& min, const Vec3& max, CsgOp op = CsgOp::Union);
+ShapeSpec ellipsoid(const Vec3& centre, const Vec3& radii);
+ShapeSpec cylinder(const Vec3& centre, double radius, double halfHeight, CsgOp op = CsgOp::Union);
+ShapeSpec torus(const Vec3& centre, double major, double minor);
+
+}  // namespace modeflow::testing
