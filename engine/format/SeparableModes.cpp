@@ -25,6 +25,23 @@ double axisSigma(const GridSpec& grid, int axis, int wave) {
     return 2.0 / grid.spacing(axis) * std::sin(0.5 * theta);
 }
 
+std::vector<std::int64_t> wholeBoxFaces(const GridSpec& grid) {
+    const MacGrid mac = MacGrid::fromSpec(grid);
+    std::vector<std::int64_t> faces;
+    for (int a = 0; a < grid.dim; ++a) {
+        const std::array<int, 3> e = mac.faceExtent(a);
+        const int first = grid.isPeriodic(a) ? 0 : 1;
+        const int last = grid.resolution[a] - 1;  // a wall at n_a; on a periodic axis, face 0 again
+        for (int z = 0; z < e[2]; ++z)
+            for (int y = 0; y < e[1]; ++y)
+                for (int x = 0; x < e[0]; ++x) {
+                    const std::array<int, 3> p{x, y, z};
+                    if (p[a] >= first && p[a] <= last) faces.push_back(mac.faceIndex(a, x, y, z));
+                }
+    }
+    return faces;
+}
+
 namespace {
 
 /// One axis factor at positions 0..count−1 (+½ when `half`).

@@ -48,6 +48,11 @@ double separableFactor(const GridSpec& grid, int axis, int wave, int shift, int 
 /// σ_a = (2/h_a) sin(θ_a/2), the per-axis eigenvalue's square root.
 double axisSigma(const GridSpec& grid, int axis, int wave);
 
+/// The face DOFs of the whole grid box (MacGrid numbering): by normal axis, x fastest, every face
+/// but the walls' (on a periodic axis the face at position 0 stands for its plane, and the one at
+/// n is not a DOF). What precompute/closedform/WholeBoxDofs gives a closed-form basis.
+std::vector<std::int64_t> wholeBoxFaces(const GridSpec& grid);
+
 /// The fluxes of velocity modes through the face DOFs `faces` (CubicalComplex / MacGrid
 /// numbering), one column per mode.
 Eigen::MatrixXd velocityModeFluxes(const GridSpec& grid, const std::vector<std::int64_t>& faces,
