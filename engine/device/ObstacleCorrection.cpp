@@ -31,7 +31,7 @@ ObstacleCorrection::ObstacleCorrection(const vulkan::VulkanContext& context, con
     : mContext(context),
       mGrid(MacGrid::fromSpec(cache.grid)),
       mDofCount(std::uint32_t(cache.faces.size())),
-      mModeCount(std::uint32_t(cache.velocity.modes.cols())),
+      mModeCount(std::uint32_t(cache.velocity.eigenvalues.size())),
       mFaces(uploadDofFaces(context, cache)),
       mObstacles(context, maxObstacles * sizeof(shaders::ObstacleRecord), "obstacles"),
       mMismatch(zeros(context, std::size_t(mGrid.faceTotal()), "obstacle mismatch")),

@@ -6,6 +6,7 @@
 
 #include "engine/core/Error.h"
 #include "engine/dynamics/ModalDivergence.h"
+#include "engine/format/ModeMaterialization.h"
 #include "engine/simulation/BackendCapabilities.h"
 
 namespace modeflow::device {
@@ -25,6 +26,12 @@ std::uint32_t maxDispatchesPerStep(const ModalStepper& stepper) {
     return std::uint32_t(kMaxSubsteps * stepper.dispatchesPerStep() + 64);
 }
 
+/// The basis columns the device's kernels take: a closed-form basis's formed for the upload.
+ModeBuffer modeBufferOf(const vulkan::VulkanContext& context, const BasisCache& cache, ModePrecision precision) {
+    if (cache.velocity.source != BasisSource::ClosedForm) return {context, cache.velocity.modes, precision};
+    return {context, materializedVelocityModes(cache), precision};
+}
+
 std::vector<double> widened(const std::vector<float>& values) {
     return {values.begin(), values.end()};
 }
@@ -37,7 +44,7 @@ Simulation::Simulation(const vulkan::VulkanContext& context, const BasisCache& c
     : mSettings(supported(std::move(settings))),
       mStepper(context, coefficients, mSettings.fluid,
                DeviceStepSettings{mSettings.integrator}),
-      mModes(context, cache.velocity.modes, mSettings.basisPrecision),
+      mModes(modeBufferOf(context, cache, mSettings.basisPrecision)),
       mReconstruction(context, cache),
       mFaceVelocity(mReconstruction.makeFaceField("grid velocity")),
       mForceField(context, cache, mSettings.smokeScale),

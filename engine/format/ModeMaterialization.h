@@ -1,9 +1,9 @@
 #pragma once
 /// @file ModeMaterialization.h
-/// The dense columns of a closed-form velocity basis (engine/format/SeparableModes.h), for the
-/// parts of a run that read BasisCache::velocity.modes: reconstruction, force projection,
-/// obstacles, initial states. A cache stores such a basis as descriptors only; a run
-/// materializes it once, after checking that faces × modes doubles fit in memory.
+/// The dense columns of a closed-form velocity basis (engine/format/SeparableModes.h), for what
+/// takes columns only: the Vulkan device's basis kernels. A cache stores such a basis as
+/// descriptors only, and the CPU reference goes through its transforms (VelocityBasis.h); the
+/// columns are formed once, after checking that faces × modes doubles fit in memory.
 
 #include <cstdint>
 
@@ -13,6 +13,9 @@ namespace modeflow {
 
 /// Bytes the dense velocity columns take (faces × modes doubles), stored or to be materialized.
 double velocityModeBytes(std::int64_t faces, std::int64_t modes);
+
+/// The columns of a closed-form basis from its descriptors (memory checked as below).
+Eigen::MatrixXd materializedVelocityModes(const BasisCache& cache);
 
 /// Fills cache.velocity.modes from its descriptors when the basis is closed form and the
 /// columns are not there yet; nothing for an eigensolved basis.

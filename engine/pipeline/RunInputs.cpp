@@ -5,7 +5,6 @@
 #include "engine/core/Error.h"
 #include "engine/core/MacGrid.h"
 #include "engine/dynamics/CachedCoefficients.h"
-#include "engine/format/ModeMaterialization.h"
 #include "engine/pipeline/InitialState.h"
 #include "engine/pipeline/SmokeMask.h"
 #include "precompute/Precompute.h"
@@ -45,7 +44,6 @@ void requireFinite(const SceneSpec& scene, const Eigen::VectorXd& state, const c
 /// Everything after the cache.
 void complete(RunInputs& run, RunParts parts, Progress& progress) {
     const SceneSpec& scene = run.scene;
-    materializeVelocityModes(run.cache);
     run.coefficients = coefficientsFromCache(run.cache);
     run.settings = SimulationSettings::fromScene(scene, run.cache);
     const int modes = run.coefficients->size();

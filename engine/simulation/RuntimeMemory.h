@@ -5,10 +5,11 @@
 /// resolution_scale^dim):
 ///   program       48 MiB (CPU reference) or 150 MiB (a Vulkan device: lavapipe's driver; its
 ///                 device memory is host memory)
-///   basis         3 × (V·K·8 + coefficient bytes): the cache, the dynamics' coefficients, the
-///                 device's copies; the coefficients are K²(K−1)/2·8 dense, 20 per non-zero
-///                 sparse; a closed-form basis's V·K·8 is its materialization
-///                 (engine/format/ModeMaterialization.h)
+///   basis         3 × (column bytes + coefficient bytes): the cache, the dynamics' coefficients,
+///                 the device's copies; the columns V·K·8 (a closed-form basis's formed for a
+///                 device, engine/format/ModeMaterialization.h; on the CPU reference its
+///                 transforms' buffers instead, counted as 8 face fields, V·64), the coefficients
+///                 K²(K−1)/2·8 dense, 20 bytes per non-zero sparse
 ///   smoke         150 (CPU reference: double fields, back-traces, MacCormack temporaries, frames)
 ///                 or 200 (device: float fields, their staging, frames) bytes per smoke cell
 /// times 1.15. Measured peaks of `modeflow run` (2D disk 128² with 40 and 200 modes, smoke scales
@@ -25,8 +26,7 @@ struct RunMemory {
 };
 
 /// `device`: a Vulkan device runs it (else the CPU reference).
-RunMemory estimateRunMemory(std::int64_t smokeCells, std::int64_t velocityDofs, int modes,
-                            double coefficientBytes, bool device);
+RunMemory estimateRunMemory(std::int64_t smokeCells, double columnBytes, double coefficientBytes, bool device);
 
 /// The bytes of dense packed coefficients of `modes` modes, K²(K−1)/2·8.
 double denseCoefficientBytes(int modes);
