@@ -55,18 +55,12 @@ struct Peak {
     const char* stage = "";
 };
 
-/// A closed-form precompute (precompute/closedform): the DOF arrays, then the coefficients
-/// (per-thread chunks and their concatenation, 2 × 20 bytes per non-zero), then the cache
-/// serialized (3 × its size; the descriptors are a few dozen bytes a mode).
+/// A closed-form precompute (precompute/closedform): the DOF arrays and the coefficients, 20 bytes
+/// per non-zero, written in place and streamed to the cache file (no copy of either).
 Peak closedFormPeakOf(const Counts& c) {
     const double dofs = 24.0 * c.velocity + 32.0 * c.cells;
     const double coefficients = kSparseEntryBytes * estimatedClosedFormNonZeros(c.dim, int(c.kept));
-    const Peak stages[] = {{dofs + 2.0 * coefficients, "structural coefficients"},
-                           {dofs + coefficients + 3.0 * (coefficients + dofs), "write cache"}};
-    Peak peak = *std::max_element(std::begin(stages), std::end(stages),
-                                  [](const Peak& a, const Peak& b) { return a.bytes < b.bytes; });
-    peak.bytes = kMargin * (kProgram + peak.bytes);
-    return peak;
+    return {kMargin * (kProgram + dofs + coefficients), "structural coefficients"};
 }
 
 Peak peakOf(const Counts& c) {

@@ -47,9 +47,22 @@ int tripleSum(const Axis& axis, const ModeFactors& m1, bool sine1, const ModeFac
     return total;
 }
 
-struct Entries {
-    std::vector<std::int32_t> k, i, j;
-    std::vector<double> value;
+/// Where the assembler puts entries: counted only, then written in place.
+struct Counter {
+    std::size_t count = 0;
+    void push(int, int, int, double) { ++count; }
+};
+
+struct Filler {
+    BasisCache::Coefficients& out;
+    std::size_t at;
+    void push(int k, int i, int j, double value) {
+        out.k[at] = k;
+        out.i[at] = i;
+        out.j[at] = j;
+        out.value[at] = value;
+        ++at;
+    }
 };
 
 class Assembler {
@@ -78,28 +91,27 @@ public:
         groupByWaveVector();
     }
 
-    Entries run() const {
-        // One chunk of entries per first group, concatenated in order: the same result whatever
-        // the threads did.
-        std::vector<Entries> chunks(mGroups.size());
+    /// Every entry in a fixed order (by first group), whatever the threads did: counted per first
+    /// group, then written in place, so the memory is the entries' alone (a few GB at N = 10 000).
+    void run(BasisCache::Coefficients& c) const {
+        std::vector<std::size_t> offsets(mGroups.size() + 1, 0);
 #pragma omp parallel for schedule(dynamic)
-        for (std::size_t g = 0; g < mGroups.size(); ++g)
-            for (std::size_t h = g; h < mGroups.size(); ++h) pairOfGroups(g, h, chunks[g]);
-        Entries all;
-        std::size_t total = 0;
-        for (const Entries& c : chunks) total += c.value.size();
-        all.k.reserve(total);
-        all.i.reserve(total);
-        all.j.reserve(total);
-        all.value.reserve(total);
-        for (Entries& c : chunks) {
-            all.k.insert(all.k.end(), c.k.begin(), c.k.end());
-            all.i.insert(all.i.end(), c.i.begin(), c.i.end());
-            all.j.insert(all.j.end(), c.j.begin(), c.j.end());
-            all.value.insert(all.value.end(), c.value.begin(), c.value.end());
-            c = Entries{};
+        for (std::size_t g = 0; g < mGroups.size(); ++g) {
+            Counter counter;
+            for (std::size_t h = g; h < mGroups.size(); ++h) pairOfGroups(g, h, counter);
+            offsets[g + 1] = counter.count;
         }
-        return all;
+        for (std::size_t g = 0; g < mGroups.size(); ++g) offsets[g + 1] += offsets[g];
+        const std::size_t total = offsets.back();
+        c.k.resize(total);
+        c.i.resize(total);
+        c.j.resize(total);
+        c.value.resize(total);
+#pragma omp parallel for schedule(dynamic)
+        for (std::size_t g = 0; g < mGroups.size(); ++g) {
+            Filler filler{c, offsets[g]};
+            for (std::size_t h = g; h < mGroups.size(); ++h) pairOfGroups(g, h, filler);
+        }
     }
 
 private:
@@ -126,7 +138,8 @@ private:
 
     /// Every C[k][i][j] with k, j from groups g and h (k ≠ j) and i from a group that the
     /// selection rule allows.
-    void pairOfGroups(std::size_t g, std::size_t h, Entries& out) const {
+    template <typename Sink>
+    void pairOfGroups(std::size_t g, std::size_t h, Sink& out) const {
         const ModeFactors& first = mModes[std::size_t(mGroups[g].front())];
         const ModeFactors& second = mModes[std::size_t(mGroups[h].front())];
         // Per axis: the wave numbers ±l_k ± l_j modulo the period that the basis holds.
@@ -159,7 +172,8 @@ private:
                 }
     }
 
-    void add(int k, int i, int j, Entries& out) const {
+    template <typename Sink>
+    void add(int k, int i, int j, Sink& out) const {
         const ModeFactors& mk = mModes[std::size_t(k)];
         const ModeFactors& mi = mModes[std::size_t(i)];
         const ModeFactors& mj = mModes[std::size_t(j)];
@@ -191,10 +205,7 @@ private:
         const double bound = 2.0 * mVolume * mPositions * mi.largestAmplitude * mi.largestSigma *
                              mk.largestAmplitude * mj.largestAmplitude;
         if (!(std::abs(value) > 1e-12 * bound)) return;
-        out.k.push_back(k);
-        out.i.push_back(i);
-        out.j.push_back(j);
-        out.value.push_back(value);
+        out.push(k, i, j, value);
     }
 
     int mDim;
@@ -215,15 +226,11 @@ double estimatedClosedFormNonZeros(int dim, int modes) {
 
 BasisCache::Coefficients assembleClosedFormCoefficients(const GridSpec& grid,
                                                         const std::vector<SeparableMode>& modes) {
-    Entries entries = Assembler(grid, modes).run();
     BasisCache::Coefficients c;
     c.storage = BasisCache::Coefficients::Storage::Sparse;
+    Assembler(grid, modes).run(c);
     const std::size_t stored = packedSize(modes.size());
-    c.density = stored == 0 ? 0.0 : double(entries.value.size()) / double(stored);
-    c.k = std::move(entries.k);
-    c.i = std::move(entries.i);
-    c.j = std::move(entries.j);
-    c.value = std::move(entries.value);
+    c.density = stored == 0 ? 0.0 : double(c.value.size()) / double(stored);
     return c;
 }
 
