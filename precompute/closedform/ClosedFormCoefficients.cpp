@@ -221,7 +221,9 @@ private:
 }  // namespace
 
 double estimatedClosedFormNonZeros(int dim, int modes) {
-    return (dim == 3 ? 2.6 : 1.2) * double(modes) * double(modes);
+    const double n = std::max(modes, 1);
+    const double perSquare = dim == 3 ? std::max(1.5, 2.35 + 0.55 * std::log10(n / 1000.0)) : 1.2;
+    return perSquare * n * n;
 }
 
 BasisCache::Coefficients assembleClosedFormCoefficients(const GridSpec& grid,

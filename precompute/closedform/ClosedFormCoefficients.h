@@ -30,10 +30,11 @@ namespace modeflow {
 BasisCache::Coefficients assembleClosedFormCoefficients(const GridSpec& grid,
                                                         const std::vector<SeparableMode>& modes);
 
-/// The non-zeros the first `modes` modes of a box give, for memory estimates: about 1.2 N² in 2D
-/// and 2.6 N² in 3D (measured on 64³ and 256² boxes at N = 200…2000: 1.03–1.13 N² and 1.67–2.41
-/// N², growing slowly with N; a few percent more on periodic axes, where both phases of a wave
-/// vector interact).
+/// The non-zeros the first `modes` modes of a box give, for memory estimates, a little above the
+/// counts measured on 64³ and 256² boxes: 2D 1.2 N² (measured 1.03–1.13 N² at N = 200…2000); 3D
+/// (2.35 + 0.55 log10(N/1000)) N², at least 1.5 N² (measured 2.09, 2.24, 2.43, 2.58, 2.76 N² at
+/// N = 600, 1000, 2000, 4000, 10 000; a few percent more on periodic axes, where both phases of a
+/// wave vector interact).
 double estimatedClosedFormNonZeros(int dim, int modes);
 
 /// Bytes of one stored non-zero in a cache (k, i, j as int32 and the value).
