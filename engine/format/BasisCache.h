@@ -35,7 +35,7 @@ struct BasisCache {
         BasisSource source = BasisSource::Eigensolve;
         Eigen::VectorXd eigenvalues;   ///< κ², ascending within each range
         /// faces × count, ⋆(n-1)-orthonormal fluxes. A closed-form basis stores `separable`
-        /// instead and leaves this empty until engine/format/ModeMaterialization fills it.
+        /// instead and leaves this empty (runs go through its transforms, VelocityBasis.h).
         Eigen::MatrixXd modes;
         std::vector<SeparableMode> separable;  ///< closed form: one descriptor per mode
         std::vector<int> modeNumbers;  ///< 1-based index in the div-free spectrum

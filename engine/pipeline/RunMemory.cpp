@@ -14,13 +14,13 @@ RunMemory requireRunMemory(const SceneSpec& scene, BackendKind backend) {
     std::int64_t smokeCells = 1;
     for (int a = 0; a < grid.dim; ++a) smokeCells *= std::int64_t{grid.resolution[a]} * scene.smoke.resolutionScale;
     const int modes = scene.basis.velocityCount();
-    // A closed-form basis (whole box, free slip) has sparse coefficients, and its columns are
-    // formed only for a device's kernels (the CPU reference transforms: a few face fields).
+    // A closed-form basis (whole box, free slip) has sparse coefficients and no columns: its
+    // transforms' buffers are a few face fields.
     const bool closedForm = hasClosedFormVelocity(scene);
     const std::int64_t dofs = estimatePrecomputeMemory(scene).velocityDofs;
     const double coefficientBytes = closedForm ? kSparseEntryBytes * estimatedClosedFormNonZeros(grid.dim, modes)
                                                : denseCoefficientBytes(modes);
-    const double columnBytes = closedForm && !device ? 8.0 * 8.0 * double(dofs) : 8.0 * double(dofs) * modes;
+    const double columnBytes = closedForm ? 8.0 * 8.0 * double(dofs) : 8.0 * double(dofs) * modes;
     const RunMemory memory = estimateRunMemory(smokeCells, columnBytes, coefficientBytes, device);
     const bool smoke = memory.smokeBytes > memory.basisBytes;
     requireMemory(memory.peakBytes,

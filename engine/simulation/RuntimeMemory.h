@@ -6,9 +6,8 @@
 ///   program       48 MiB (CPU reference) or 150 MiB (a Vulkan device: lavapipe's driver; its
 ///                 device memory is host memory)
 ///   basis         3 × (column bytes + coefficient bytes): the cache, the dynamics' coefficients,
-///                 the device's copies; the columns V·K·8 (a closed-form basis's formed for a
-///                 device, engine/format/ModeMaterialization.h; on the CPU reference its
-///                 transforms' buffers instead, counted as 8 face fields, V·64), the coefficients
+///                 the device's copies; the columns V·K·8 (a closed-form basis has none: its
+///                 transforms' buffers, counted as 8 face fields, V·64), the coefficients
 ///                 K²(K−1)/2·8 dense, 20 bytes per non-zero sparse
 ///   smoke         150 (CPU reference: double fields, back-traces, MacCormack temporaries, frames)
 ///                 or 200 (device: float fields, their staging, frames) bytes per smoke cell
