@@ -252,6 +252,101 @@ TEST_F(Cli, DamagedCachesAreRefusedAndRebuilt) {
     EXPECT_NE(r.err.find("not a modeflow basis cache"), std::string::npos) << r.err;
 }
 
+TEST_F(Cli, InspectTellsCachesFromScenesByTheirContents) {
+    const auto inspect = [&](const fs::path& file) {
+        return run("inspect " + file.string() + " --cache-dir " + mCache.string() + " --json");
+    };
+    const RunResult upper = inspect(scene("disk.TOML", kSmallDisk));
+    ASSERT_EQ(upper.status, 0) << upper.err;
+    const auto expected = nlohmann::json::parse(upper.out);
+    const RunResult text = inspect(scene("disk.txt", kSmallDisk));
+    ASSERT_EQ(text.status, 0) << text.err;
+    EXPECT_EQ(nlohmann::json::parse(text.out)["velocity"]["eigenvalues"],
+              expected["velocity"]["eigenvalues"]);
+
+    const fs::path renamed = mDir / "renamed.toml";
+    fs::copy_file(expected["cache"]["path"].get<std::string>(), renamed);
+    const RunResult cache = inspect(renamed);
+    ASSERT_EQ(cache.status, 0) << cache.err;
+    EXPECT_EQ(nlohmann::json::parse(cache.out)["velocity"]["eigenvalues"],
+              expected["velocity"]["eigenvalues"]);
+
+    std::ofstream(mDir / "picture.toml", std::ios::binary)
+        << std::string("\x89PNG\r\n\x1a\n\0\0\0\rIHDR", 16);
+    const RunResult neither = inspect(mDir / "picture.toml");
+    EXPECT_EQ(neither.status, 1);
+    EXPECT_NE(neither.err.find("picture.toml is neither a modeflow basis cache"), std::string::npos)
+        << neither.err;
+}
+
+TEST_F(Cli, InspectRefusesFoldersAndDevicesByName) {
+    fs::create_directories(mDir / "folder.mfbasis");
+    for (const fs::path& target : {mDir / "folder.mfbasis", fs::path("/dev/zero")}) {
+        const RunResult r = run("inspect " + target.string());
+        EXPECT_EQ(r.status, 1) << "an internal error exits 2: " << r.err;
+        EXPECT_NE(r.err.find("modeflow: error: " + target.string() + ": is a "), std::string::npos)
+            << r.err;
+        EXPECT_NE(r.err.find(", not a cache or scene file"), std::string::npos) << r.err;
+    }
+    // A folder where the cache belongs is reported and replaced by a fresh cache... or refused
+    // clearly when it cannot be.
+    const fs::path s = scene("disk.toml", kSmallDisk);
+    const RunResult first = run(precompute(s));
+    ASSERT_EQ(first.status, 0) << first.err;
+    const fs::path cache = first.out.substr(0, first.out.find('\n'));
+    fs::remove(cache);
+    fs::create_directories(cache / "inside");
+    const RunResult again = run(precompute(s));
+    EXPECT_EQ(again.status, 1) << again.err;
+    EXPECT_NE(again.err.find(cache.string() + ": is a directory, not a cache file; rebuilding"),
+              std::string::npos)
+        << again.err;
+    EXPECT_NE(again.err.find("modeflow: error: cannot write cache file " + cache.string() +
+                             ": cannot rename"),
+              std::string::npos)
+        << again.err;
+}
+
+TEST_F(Cli, NumericOptionsRefuseNonsenseNamingTheOption) {
+    const fs::path s = scene("disk.toml", kSmallDisk);
+    const std::string cache = " --cache-dir " + mCache.string();
+    const struct {
+        std::string args, message;
+    } cases[] = {
+        {"stir " + s.string() + " --force nan",
+         "--force: must be a finite number of at least 0, got \"nan\""},
+        {"stir " + s.string() + " --force -1",
+         "--force: must be a finite number of at least 0, got \"-1\""},
+        {"stir " + s.string() + " --frames 0",
+         "--frames: must be a whole number from 1 to 1000000, got \"0\""},
+        {"stir " + s.string() + " --width 1e9",
+         "--width: must be a whole number from 1 to 16384, got \"1e9\""},
+        {"stir " + s.string() + " --height 0", "--height: must be a whole number from 1 to 16384"},
+        {"modes " + s.string() + " --dt nan",
+         "--dt: must be a finite number greater than 0, got \"nan\""},
+        {"modes " + s.string() + " --dt inf",
+         "--dt: must be a finite number greater than 0, got \"inf\""},
+        {"modes " + s.string() + " --dt 0",
+         "--dt: must be a finite number greater than 0, got \"0\""},
+        {"modes " + s.string() + " --steps 2.5",
+         "--steps: must be a whole number from 1 to 1000000000"},
+        {"run " + s.string() + " --frames 0",
+         "--frames: must be a whole number from 1 to 1000000, got \"0\""},
+        {"run " + s.string() + " --frames 99999999999",
+         "--frames: must be a whole number from 1 to 1000000"},
+        {"run " + s.string() + " --preview-every -3",
+         "--preview-every: must be a whole number from 1 to 1000000"},
+    };
+    for (const auto& c : cases) {
+        const RunResult r = run(c.args + cache);
+        EXPECT_NE(r.status, 0) << c.args;
+        EXPECT_NE(r.err.find(c.message), std::string::npos) << c.args << "\nstderr: " << r.err;
+        EXPECT_LT(r.err.size(), 300u) << c.args << "\nstderr: " << r.err;
+        EXPECT_FALSE(fs::exists(mCache))
+            << c.args << ": work started before the option was checked";
+    }
+}
+
 TEST_F(Cli, ModesRunsTheReducedDynamicsAsCsv) {
     const fs::path s = scene("modes.toml", std::string(kSmallDisk) +
                                                "[initial]\nvelocity = \"random\"\nenergy = 2.0\n");
