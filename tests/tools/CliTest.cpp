@@ -92,6 +92,7 @@ TEST_F(Cli, InspectJsonReportsTheContractKeys) {
     const auto j = nlohmann::json::parse(r.out);
     EXPECT_EQ(j["dim"], 2);
     EXPECT_EQ(j["resolution"], nlohmann::json({24, 24}));
+    EXPECT_EQ(j["periodic"], nlohmann::json({false, false}));
     EXPECT_EQ(j["velocity"]["count"], 8);
     EXPECT_EQ(j["velocity"]["eigenvalues"].size(), 8u);
     EXPECT_EQ(j["velocity"]["harmonic"], 0);
@@ -112,6 +113,31 @@ TEST_F(Cli, InspectJsonReportsTheContractKeys) {
     const RunResult direct = run("inspect " + j["cache"]["path"].get<std::string>() + " --json");
     ASSERT_EQ(direct.status, 0) << direct.err;
     EXPECT_EQ(nlohmann::json::parse(direct.out)["velocity"]["eigenvalues"], ev);
+}
+
+TEST_F(Cli, InspectSaysWhichAxesArePeriodic) {
+    // A channel periodic along x: one harmonic field, the uniform flow along it.
+    const fs::path s = scene("channel.toml", R"(
+[grid]
+resolution = [16, 8]
+bounds_min = [0.0, 0.0]
+bounds_max = [2.0, 1.0]
+periodic = [true, false]
+[basis]
+velocity_modes = 6
+scalar_modes = 2
+)");
+    const RunResult json =
+        run("inspect " + s.string() + " --cache-dir " + mCache.string() + " --json");
+    ASSERT_EQ(json.status, 0) << json.err;
+    const auto j = nlohmann::json::parse(json.out);
+    EXPECT_EQ(j["periodic"], nlohmann::json({true, false}));
+    EXPECT_EQ(j["velocity"]["harmonic"], 1);
+    EXPECT_EQ(j["dofs"]["faces"], 16 * 8 + 16 * 7)
+        << "every x-face (16 a row, the seam's once), y-faces off the walls";
+    const RunResult text = run("inspect " + s.string() + " --cache-dir " + mCache.string());
+    ASSERT_EQ(text.status, 0) << text.err;
+    EXPECT_NE(text.out.find("grid       2D [16,8], periodic x, "), std::string::npos) << text.out;
 }
 
 TEST_F(Cli, InspectNamesTheClosedFormBasesOfAWholeBox) {

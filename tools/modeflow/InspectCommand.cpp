@@ -27,6 +27,7 @@ nlohmann::ordered_json summarize(const BasisCache& c, const std::filesystem::pat
     j["resolution"] = std::vector<int>(c.grid.resolution.begin(), c.grid.resolution.begin() + n);
     j["bounds_min"] = std::vector<double>(c.grid.boundsMin.begin(), c.grid.boundsMin.begin() + n);
     j["bounds_max"] = std::vector<double>(c.grid.boundsMax.begin(), c.grid.boundsMax.begin() + n);
+    j["periodic"] = std::vector<bool>(c.grid.periodic.begin(), c.grid.periodic.begin() + n);
     j["wall"] = sceneKeyword(c.wall);
     j["boundary"] = sceneKeyword(c.boundary);
     j["dofs"] = {{"faces", c.faces.size()}, {"cells", c.cells.size()}};
@@ -65,6 +66,15 @@ nlohmann::ordered_json summarize(const BasisCache& c, const std::filesystem::pat
     return j;
 }
 
+/// ", periodic x, z" for the periodic axes; nothing when every axis has walls.
+std::string periodicAxes(const nlohmann::ordered_json& flags) {
+    std::string axes;
+    for (std::size_t a = 0; a < flags.size(); ++a)
+        if (flags[a].get<bool>())
+            axes += std::string(axes.empty() ? ", periodic " : ", ") + "xyz"[a];
+    return axes;
+}
+
 /// Whether `bytes` read as text: no control characters but tab and line ends (a TOML scene has
 /// none; a picture, an archive or a cache has many).
 bool isText(std::string_view bytes) {
@@ -91,8 +101,9 @@ bool isCache(const std::filesystem::path& path) {
 }
 
 void printText(const nlohmann::ordered_json& j) {
-    std::cout << "grid       " << j["dim"] << "D " << j["resolution"].dump() << ", "
-              << j["boundary"].get<std::string>() << ", " << j["wall"].get<std::string>() << "\n"
+    std::cout << "grid       " << j["dim"] << "D " << j["resolution"].dump()
+              << periodicAxes(j["periodic"]) << ", " << j["boundary"].get<std::string>() << ", "
+              << j["wall"].get<std::string>() << "\n"
               << "dofs       " << j["dofs"]["faces"] << " faces, " << j["dofs"]["cells"]
               << " cells\n";
     auto list = [](const nlohmann::ordered_json& values) {
