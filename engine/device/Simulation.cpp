@@ -34,9 +34,14 @@ Simulation::Simulation(const vulkan::VulkanContext& context, const BasisCache& c
                        const StructuralCoefficients& coefficients, SimulationSettings settings,
                        std::span<const std::uint8_t> smokeMask, bool timestamps)
     : mSettings(supported(std::move(settings))),
-      mModes(context, cache.velocity.modes, mSettings.basisPrecision),
+      mModes(cache.velocity.source == BasisSource::ClosedForm
+                 ? nullptr
+                 : std::make_unique<ModeBuffer>(context, cache.velocity.modes, mSettings.basisPrecision)),
+      mSeparable(cache.velocity.source == BasisSource::ClosedForm
+                     ? std::make_unique<SeparableTransformKernels>(context, cache)
+                     : nullptr),
       mStepper(context, coefficients, modelOf(mSettings), DeviceStepSettings{mSettings.integrator}, &cache,
-               mSettings.basisPrecision == ModePrecision::Float32 ? &mModes : nullptr),
+               mModes && mSettings.basisPrecision == ModePrecision::Float32 ? mModes.get() : nullptr),
       mReconstruction(context, cache),
       mFaceVelocity(mReconstruction.makeFaceField("grid velocity")),
       mForceField(context, cache, mSettings.smokeScale),
@@ -100,22 +105,37 @@ void Simulation::recordStep(std::vector<std::size_t>& boundaries) {
     if (forcesActive()) {
         mForceField.record(mSequence, mSettings.buoyancy, mSmoke.temperature(), &mSmoke.mask(),
                            mForceDensity);
-        mProjection.record(mSequence, mModes, mForceDensity, mStepper.forceBuffer());
+        if (mSeparable)
+            mSeparable->recordProjection(mSequence, mForceDensity, mStepper.forceBuffer());
+        else
+            mProjection.record(mSequence, *mModes, mForceDensity, mStepper.forceBuffer());
     }
     boundaries.push_back(mSequence.dispatchCount());
     mStepper.recordStep(mSequence, dt, mSubsteps);
     boundaries.push_back(mSequence.dispatchCount());
-    mReconstruction.record(mSequence, mModes, mStepper.stateBuffer(), mFaceVelocity);
+    recordReconstruction();
     boundaries.push_back(mSequence.dispatchCount());
     if (!mSettings.obstacles.empty()) {
         // Where the obstacles are at the end of the step, which the advection then sees.
         mObstacles.setObstacles(mSettings.obstacles, mTime + dt);
-        mObstacles.record(mSequence, mModes, mFaceVelocity, mStepper.stateBuffer());
-        mReconstruction.record(mSequence, mModes, mStepper.stateBuffer(), mFaceVelocity);
+        if (mSeparable)
+            mObstacles.record(mSequence, *mSeparable, mFaceVelocity, mStepper.stateBuffer());
+        else
+            mObstacles.record(mSequence, *mModes, mFaceVelocity, mStepper.stateBuffer());
+        recordReconstruction();
     }
     boundaries.push_back(mSequence.dispatchCount());
     mAdvection.record(mSequence, mSmoke, mFaceVelocity, dt, mSettings.advection);
     boundaries.push_back(mSequence.dispatchCount());
+}
+
+void Simulation::recordReconstruction() { recordReconstruction(mStepper.stateBuffer(), mFaceVelocity); }
+
+void Simulation::recordReconstruction(const vulkan::DeviceBuffer& modal, const vulkan::DeviceBuffer& field) const {
+    if (mSeparable)
+        mSeparable->recordReconstruction(mSequence, modal, field);
+    else
+        mReconstruction.record(mSequence, *mModes, modal, field);
 }
 
 FrameStats Simulation::advanceSteps(int steps) {
@@ -163,7 +183,7 @@ Eigen::VectorXd Simulation::magneticField() const {
 std::vector<double> Simulation::faceMagneticField() const {
     if (!mSettings.mhd) return {};
     const vulkan::DeviceBuffer field = mReconstruction.makeFaceField("magnetic face field");
-    mReconstruction.record(mSequence, mModes, mStepper.magneticFieldBuffer(), field);
+    recordReconstruction(mStepper.magneticFieldBuffer(), field);
     mSequence.submitAndWait();
     std::vector<float> faces(std::size_t(mReconstruction.grid().faceTotal()));
     field.download<float>(faces);

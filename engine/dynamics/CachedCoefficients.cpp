@@ -23,11 +23,14 @@ std::vector<CoefficientEntry> entriesOf(const BasisCache::Coefficients& c) {
 std::unique_ptr<StructuralCoefficients> coefficientsFromCache(const BasisCache& cache,
                                                               CoefficientStorage requested) {
     const auto& c = cache.coefficients;
-    const int n = int(cache.velocity.modes.cols());
+    const int n = int(cache.velocity.eigenvalues.size());
     if (requested == CoefficientStorage::TensorFree || c.storage == Storage::None) {
         if (requested == CoefficientStorage::Dense || requested == CoefficientStorage::Sparse)
             throw Error("the basis cache holds no structural coefficients (precomputed tensor-free); "
                         "precompute the scene again to assemble them");
+        if (cache.velocity.source == BasisSource::ClosedForm)
+            throw Error("[basis].coefficients = \"tensor-free\": a closed-form basis (a whole box) has "
+                        "sparse coefficients by selection rules and no vorticity quadrature; use \"auto\"");
         return std::make_unique<TensorFreeCoefficients>(cache.velocity.modes, cache.quadrature);
     }
     if (c.storage == Storage::Dense) {

@@ -42,6 +42,8 @@ public:
                    Eigen::MatrixXd& byJ) const override;
     void advect(const Eigen::VectorXd& u, const Eigen::VectorXd& x,
                 Eigen::VectorXd& out) const override;
+    /// False: linearize is O(E·N²) where apply is O(N·V).
+    bool linearizesCheaply() const override { return false; }
 
 private:
     /// The fluxes Ψ·[a b] (one pass over Ψ for both), or Ψa alone when b = a.

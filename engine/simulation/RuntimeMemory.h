@@ -5,9 +5,11 @@
 /// resolution_scale^dim):
 ///   program       48 MiB (CPU reference) or 150 MiB (a Vulkan device: lavapipe's driver; its
 ///                 device memory is host memory)
-///   basis         3 × (V·K·8 + K²(K−1)/2·8 + 120·V): the cache, the dynamics' coefficients, the
-///                 device's copies (the tensor term 0 when the advection is tensor-free; 120·V
-///                 the vorticity quadrature)
+///   basis         3 × (column bytes + coefficient bytes): the cache, the dynamics' coefficients,
+///                 the device's copies; the columns V·K·8 and the vorticity quadrature 120·V (a
+///                 closed-form basis has neither: its transforms' buffers, counted as 8 face
+///                 fields, V·64), the coefficients K²(K−1)/2·8 dense, 20 bytes per non-zero
+///                 sparse, none tensor-free
 ///   smoke         150 (CPU reference: double fields, back-traces, MacCormack temporaries, frames)
 ///                 or 200 (device: float fields, their staging, frames) bytes per smoke cell
 /// times 1.15. Measured peaks of `modeflow run` (2D disk 128² with 40 and 200 modes, smoke scales
@@ -23,9 +25,10 @@ struct RunMemory {
     double peakBytes = 0.0;  ///< everything, with the margin
 };
 
-/// `device`: a Vulkan device runs it (else the CPU reference). `tensor`: the structural
-/// coefficients are stored (else the advection is tensor-free).
-RunMemory estimateRunMemory(std::int64_t smokeCells, std::int64_t velocityDofs, int modes,
-                            bool device, bool tensor = true);
+/// `device`: a Vulkan device runs it (else the CPU reference).
+RunMemory estimateRunMemory(std::int64_t smokeCells, double columnBytes, double coefficientBytes, bool device);
+
+/// The bytes of dense packed coefficients of `modes` modes, K²(K−1)/2·8.
+double denseCoefficientBytes(int modes);
 
 }  // namespace modeflow
