@@ -8,14 +8,9 @@
 #include <vector>
 
 #include "engine/core/SceneSpec.h"
+#include "engine/core/TriangleMesh.h"
 
 namespace modeflow {
-
-/// An indexed triangle mesh; triangles are counter-clockwise seen from outside.
-struct TriangleMesh {
-    std::vector<Vec3> vertices;
-    std::vector<std::array<int, 3>> triangles;  ///< 0-based vertex indices
-};
 
 /// The icosahedron, each face split in four `subdivisions` times, vertices pushed onto the sphere
 /// of `radius` around `center`. 10·4^s + 2 vertices, 20·4^s triangles; closed and manifold.
