@@ -1,6 +1,8 @@
 #include "precompute/BasisChecks.h"
 
+#include "engine/core/Error.h"
 #include "precompute/dec/CubicalComplex.h"
+#include "precompute/surface/SurfaceDec.h"
 
 namespace modeflow {
 namespace {
@@ -17,6 +19,20 @@ BasisChecks checkBasis(const BasisCache& cache) {
     BasisChecks checks;
     checks.velocityOrthonormality = orthonormalityError(cache.velocity.modes, cache.faceStar);
     checks.scalarOrthonormality = orthonormalityError(cache.scalar.modes, cache.scalar.cellStar);
+    if (cache.kind == BasisKind::Surface) {
+        // The net flux into every triangle, through d1 rebuilt from the stored mesh.
+        const SurfaceTopology topology = checkClosedSurface(cache.surface.mesh, "cached surface");
+        if (topology.edges != cache.surface.edges)
+            throw Error("the cached surface's edges do not match its triangles; rerun precompute with --force");
+        const SurfaceDec dec = buildSurfaceDec(cache.surface.mesh, topology);
+        for (Eigen::Index m = 0; m < cache.velocity.modes.cols(); ++m) {
+            const double size = cache.velocity.modes.col(m).cwiseAbs().maxCoeff();
+            if (size > 0.0)
+                checks.maxDivergence = std::max(
+                    checks.maxDivergence, (dec.d1 * cache.velocity.modes.col(m)).cwiseAbs().maxCoeff() / size);
+        }
+        return checks;
+    }
 
     // Divergence through the full incidence matrix: a flux leaking through a non-DOF face would
     // show up in the cells beside it.

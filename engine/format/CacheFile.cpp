@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include "engine/core/Error.h"
+#include "engine/core/PackedLayout.h"
 
 static_assert(__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__, "the cache format is little-endian");
 
@@ -144,7 +145,49 @@ std::string serialize(const BasisCache& c) {
         w.string(name);
         w.pod(seconds);
     }
+    w.pod<std::int32_t>(int(c.kind));
+    if (c.kind == BasisKind::Surface) {
+        std::vector<double> points;
+        for (const Vec3& p : c.surface.mesh.vertices) points.insert(points.end(), p.begin(), p.end());
+        std::vector<std::int32_t> corners;
+        for (const auto& t : c.surface.mesh.triangles) corners.insert(corners.end(), t.begin(), t.end());
+        std::vector<std::int32_t> ends;
+        for (const auto& e : c.surface.edges) ends.insert(ends.end(), e.begin(), e.end());
+        w.vector(points);
+        w.vector(corners);
+        w.vector(ends);
+        w.matrix(c.surface.advection);
+        w.matrix(c.surface.vertexVelocity);
+    }
     return w.bytes();
+}
+
+/// The mesh and edges of a surface basis, refused unless every index and size fits the rest.
+void readSurface(Reader& r, BasisCache& c) {
+    const std::vector<double> points = r.vector<double>();
+    const std::vector<std::int32_t> corners = r.vector<std::int32_t>();
+    const std::vector<std::int32_t> ends = r.vector<std::int32_t>();
+    c.surface.advection = r.matrix();
+    c.surface.vertexVelocity = r.matrix();
+    if (points.size() % 3 != 0 || corners.size() % 3 != 0 || ends.size() % 2 != 0) r.corrupt();
+    const auto vertices = std::int64_t(points.size() / 3);
+    for (const std::int32_t v : corners)
+        if (v < 0 || v >= vertices) r.corrupt();
+    for (const std::int32_t v : ends)
+        if (v < 0 || v >= vertices) r.corrupt();
+    for (std::size_t i = 0; i < points.size(); i += 3)
+        c.surface.mesh.vertices.push_back({points[i], points[i + 1], points[i + 2]});
+    for (std::size_t i = 0; i < corners.size(); i += 3)
+        c.surface.mesh.triangles.push_back({corners[i], corners[i + 1], corners[i + 2]});
+    for (std::size_t i = 0; i < ends.size(); i += 2) c.surface.edges.push_back({ends[i], ends[i + 1]});
+    const auto edges = Eigen::Index(c.surface.edges.size());
+    if (c.faceStar.size() != edges || c.velocity.modes.rows() != edges ||
+        c.cellStar.size() != Eigen::Index(c.surface.mesh.triangles.size()) ||
+        c.scalar.cellStar.size() != vertices || c.scalar.modes.rows() != vertices ||
+        c.surface.advection.rows() != Eigen::Index(pairCount(std::size_t(c.scalar.modes.cols()))) ||
+        c.surface.advection.cols() != c.velocity.modes.cols() || c.surface.vertexVelocity.rows() != 3 * vertices ||
+        c.surface.vertexVelocity.cols() != c.velocity.modes.cols())
+        r.corrupt();
 }
 
 BasisCache deserialize(std::string_view payload, const std::filesystem::path& path) {
@@ -186,6 +229,10 @@ BasisCache deserialize(std::string_view payload, const std::filesystem::path& pa
         std::string name = r.string();
         c.timings.emplace_back(std::move(name), r.pod<double>());
     }
+    const auto kind = r.pod<std::int32_t>();
+    if (kind != int(BasisKind::Grid) && kind != int(BasisKind::Surface)) r.corrupt();
+    c.kind = BasisKind(kind);
+    if (c.kind == BasisKind::Surface) readSurface(r, c);
     if (!r.atEnd()) r.corrupt();
     return c;
 }

@@ -15,7 +15,7 @@
 
 namespace modeflow {
 
-inline constexpr std::uint32_t kCacheFormatVersion = 3;  ///< 3: periodic axes
+inline constexpr std::uint32_t kCacheFormatVersion = 4;  ///< 3: periodic axes; 4: surface bases
 
 /// Writes to a temporary file beside `path`, flushes it, then renames it over `path`, so
 /// readers see the old file or the whole new one.

@@ -173,7 +173,7 @@ SurfaceBasisResult solveSurfaceBasis(const SurfaceDec& dec, const std::vector<Mo
     r.omittedConstants = components;
     const int wanted = std::max(highest - harmonic, scalarModes);
     Eigen::VectorXd lambda;
-    Eigen::MatrixXd psi;
+    Eigen::MatrixXd psi(vertices, 0);
     if (wanted > 0) {
         // λ₁ of a round sphere of this area is 8π/A; the shift only has to lie below 0.
         const double scale = 8.0 * M_PI / dec.totalArea();

@@ -20,6 +20,7 @@
 #include "tools/modeflow/Commands.h"
 #include "tools/modeflow/FramePreview.h"
 #include "tools/modeflow/FrameProgress.h"
+#include "tools/modeflow/SurfaceRun.h"
 #include "engine/pipeline/Backend.h"
 #include "engine/pipeline/RunInputs.h"
 #include "engine/pipeline/RunMemory.h"
@@ -94,6 +95,13 @@ Command addRun(CLI::App& app) {
                 throw Error("checkpoint " + folder.checkpointPath().string() +
                             " was written for another scene text, basis (mesh file) or device; run without "
                             "--resume to start afresh");
+        }
+        if (scene.isSurface()) {
+            if (opts->half || opts->preview || opts->previewEvery)
+                throw Error(std::string(opts->half ? "--half" : "--preview") +
+                            ": surface scenes write PLY frames, without pictures yet");
+            return runSurface({scene, frames, folder, sceneHash, runHash, resumeFrom,
+                               resolveCacheDir(opts->cacheDir), memory});
         }
         const Backend backend(choice);
         std::cerr << backend.describe();
