@@ -1,9 +1,9 @@
 /// Every scene under scenes/ runs end to end with the real `modeflow` binary, one test per scene
 /// (named after it), found when the test runs: `run --frames 2` on each backend that supports
-/// the scene (the frames read back — VDB files, or PLY files for surface scenes —, the resume
-/// checkpoint holds a finite state, moving when the
-/// scene sets anything going), the refusal with the capability table's message on each backend
-/// that does not (before any precompute), and `modes` for a few steps (finite energy).
+/// the scene (the frames read back: VDB files, or PLY files for surface scenes; the resume
+/// checkpoint holds a finite state, moving when the scene sets anything going), the refusal with
+/// the capability table's message on each backend that does not (before any precompute), and
+/// `modes` for a few steps (finite energy).
 /// tests/CMakeLists.txt rebuilds this test when a scene file is added or removed, so that CTest's
 /// list follows scenes/.
 ///
