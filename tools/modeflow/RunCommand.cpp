@@ -96,12 +96,12 @@ Command addRun(CLI::App& app) {
                             " was written for another scene text, basis (mesh file) or device; run without "
                             "--resume to start afresh");
         }
+        const bool previews = opts->preview || opts->previewEvery.has_value();
+        const int previewEvery = opts->previewEvery.value_or(std::max(1, frames / 24));
         if (scene.isSurface()) {
-            if (opts->half || opts->preview || opts->previewEvery)
-                throw Error(std::string(opts->half ? "--half" : "--preview") +
-                            ": surface scenes write PLY frames, without pictures yet");
+            if (opts->half) throw Error("--half: surface scenes write PLY frames, in 32-bit floats");
             return runSurface({scene, frames, folder, sceneHash, runHash, resumeFrom,
-                               resolveCacheDir(opts->cacheDir), memory});
+                               resolveCacheDir(opts->cacheDir), memory, previews ? previewEvery : 0});
         }
         const Backend backend(choice);
         std::cerr << backend.describe();
@@ -126,8 +126,6 @@ Command addRun(CLI::App& app) {
 
         const MacGrid basisGrid = MacGrid::fromSpec(run.cache.grid);
         const bool temperature = settings.simulatesTemperature();
-        const bool previews = opts->preview || opts->previewEvery.has_value();
-        const int previewEvery = opts->previewEvery.value_or(std::max(1, frames / 24));
         std::unique_ptr<FramePreview> preview;
         if (previews)
             preview = std::make_unique<FramePreview>(simulator->smokeGrid(), run.smokeMask, backend.vulkanContext());

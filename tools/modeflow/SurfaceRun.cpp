@@ -9,6 +9,9 @@
 #include "engine/core/SceneKeywords.h"
 #include "engine/dynamics/ModalDivergence.h"
 #include "engine/output/PlyFrame.h"
+#include "engine/preview/ContactSheet.h"
+#include "engine/preview/PngWriter.h"
+#include "engine/preview/SurfaceImage.h"
 #include "engine/pipeline/RunInputs.h"
 #include "engine/surface/SurfaceSimulation.h"
 #include "tools/modeflow/FrameProgress.h"
@@ -32,12 +35,14 @@ int runSurface(const SurfaceRunOptions& o) {
         std::cerr << "removed " << removed << " files of an earlier " << o.scene.name << " run from "
                   << o.folder.path().string() << "\n";
     }
-    // Colours saturate at the dye all sources add in one frame, spread over the whole surface ×
-    // 10, or at 1 without sources: one scale for the whole run, so that frames compare.
+    // Colours saturate at four frames' worth of the strongest source's rate (1 without sources):
+    // one scale for the whole run, so that frames compare.
     double dyeScale = 0.0;
     for (const SmokeEmitter& e : run.settings.emitters) dyeScale = std::max(dyeScale, e.densityRate);
-    dyeScale = dyeScale > 0.0 ? dyeScale * run.settings.dt * run.settings.stepsPerFrame * 10.0 : 1.0;
+    dyeScale = dyeScale > 0.0 ? dyeScale * run.settings.dt * run.settings.stepsPerFrame * 4.0 : 1.0;
 
+    std::vector<preview::Image> pictures;
+    std::vector<int> pictured;
     FrameProgress bar(first, o.frames, run.settings.stepsPerFrame);
     for (int frame = first + 1; frame <= o.frames; ++frame) {
         const std::string stage = "frame " + std::to_string(frame);
@@ -57,6 +62,12 @@ int runSurface(const SurfaceRunOptions& o) {
         ply.time = simulation.time();
         ply.sceneHash = o.sceneHash;
         inRunStage(stage, o.memory, [&] { writePlyFrame(o.folder.path() / plyFrameFileName(o.scene.name, frame), ply); });
+        if (o.previewEvery > 0 && (frame % o.previewEvery == 0 || frame == o.frames)) {
+            pictures.push_back(preview::surfaceImage(run.cache.surface.mesh, dye, dyeScale, 512, 384));
+            pictured.push_back(frame);
+            std::filesystem::path png = o.folder.path() / plyFrameFileName(o.scene.name, frame);
+            preview::writePng(png.replace_extension(".png"), pictures.back());
+        }
         Checkpoint checkpoint{frame, simulation.time(), o.runHash, simulation.velocity(), {}, {}};
         const Eigen::VectorXd& state = simulation.dye().state();
         checkpoint.smoke.density.assign(state.data(), state.data() + state.size());
@@ -65,6 +76,12 @@ int runSurface(const SurfaceRunOptions& o) {
         bar.frameDone(frame, simulation.time(), "");
     }
     bar.finish();
+    if (!pictures.empty()) {
+        preview::ContactSheetOptions options;
+        options.labels = pictured;
+        preview::writePng(o.folder.path() / (o.scene.name + "_contact.png"),
+                          preview::contactSheet(pictures, std::min<int>(6, int(pictures.size())), options));
+    }
     std::printf("%s\n", o.folder.path().string().c_str());
     return 0;
 }

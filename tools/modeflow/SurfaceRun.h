@@ -1,7 +1,8 @@
 #pragma once
 /// @file SurfaceRun.h
 /// `run` for a surface scene (README.md, "Curved surfaces"): the CPU simulation of the flow and
-/// its dye, one PLY file per frame and the resume checkpoint (the dye's modal state [mean, f] in
+/// its dye, one PLY file per frame (with --preview, PNG pictures and a contact sheet too) and
+/// the resume checkpoint (the dye's modal state [mean, f] in
 /// the checkpoint's density, zeros in its temperature).
 
 #include <filesystem>
@@ -24,6 +25,7 @@ struct SurfaceRunOptions {
     std::optional<Checkpoint> resumeFrom;
     std::filesystem::path cacheDir;
     const RunMemory& memory;
+    int previewEvery = 0;  ///< a picture every this many frames; 0: none
 };
 
 /// Runs the frames and returns the exit status.
