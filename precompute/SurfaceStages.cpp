@@ -42,7 +42,9 @@ BasisCache computeSurfaceStages(const SceneSpec& scene, std::string key, Progres
     cache.timings.emplace_back("operators", progress.end());
 
     progress.begin("surface eigensolve");
-    const auto counter = [&progress](long ops) { progress.update(std::to_string(ops) + " solves"); };
+    const auto counter = [&progress](long ops) {
+        progress.update(std::to_string(ops) + " solves");
+    };
     const SurfaceBasisResult basis =
         solveSurfaceBasis(dec, scene.basis.velocityModes, scene.basis.scalarModes, counter);
     cache.velocity.eigenvalues = basis.velocityEigenvalues;

@@ -42,15 +42,18 @@ void writePlyFrame(const std::filesystem::path& path, const PlyFrame& frame) {
     for (std::size_t i = 0; i < frame.dye.size(); ++i)
         if (!std::isfinite(frame.dye[i]) || !std::isfinite(frame.velocity[3 * i]) ||
             !std::isfinite(frame.velocity[3 * i + 1]) || !std::isfinite(frame.velocity[3 * i + 2]))
-            throw Error(where + ": vertex " + std::to_string(i + 1) + " has a non-finite value (the run diverged)");
+            throw Error(where + ": vertex " + std::to_string(i + 1) +
+                        " has a non-finite value (the run diverged)");
     char header[512];
-    std::snprintf(header, sizeof header,
-                  "ply\nformat binary_little_endian 1.0\ncomment creator modeflow\ncomment frame %d\n"
-                  "comment time %.17g\ncomment scene_hash %s\nelement vertex %zu\nproperty float x\n"
-                  "property float y\nproperty float z\nproperty float vx\nproperty float vy\nproperty float vz\n"
-                  "property float density\nproperty uchar red\nproperty uchar green\nproperty uchar blue\n"
-                  "element face %zu\nproperty list uchar int vertex_indices\nend_header\n",
-                  frame.frame, frame.time, frame.sceneHash.c_str(), vertices, mesh.triangles.size());
+    std::snprintf(
+        header, sizeof header,
+        "ply\nformat binary_little_endian 1.0\ncomment creator modeflow\ncomment frame %d\n"
+        "comment time %.17g\ncomment scene_hash %s\nelement vertex %zu\nproperty float x\n"
+        "property float y\nproperty float z\nproperty float vx\nproperty float vy\nproperty float "
+        "vz\n"
+        "property float density\nproperty uchar red\nproperty uchar green\nproperty uchar blue\n"
+        "element face %zu\nproperty list uchar int vertex_indices\nend_header\n",
+        frame.frame, frame.time, frame.sceneHash.c_str(), vertices, mesh.triangles.size());
     std::string bytes = header;
     bytes.reserve(bytes.size() + vertices * 31 + mesh.triangles.size() * 13);
     for (std::size_t v = 0; v < vertices; ++v) {

@@ -13,7 +13,7 @@
 namespace modeflow::preview {
 
 /// @throw modeflow::Error when `dye` does not hold one value per vertex or the size is below 8.
-Image surfaceImage(const TriangleMesh& mesh, std::span<const double> dye, double dyeScale, int width,
-                   int height);
+Image surfaceImage(const TriangleMesh& mesh, std::span<const double> dye, double dyeScale,
+                   int width, int height);
 
 }  // namespace modeflow::preview

@@ -17,7 +17,8 @@ SurfaceDye::SurfaceDye(const BasisCache& cache, std::span<const SmokeEmitter> em
     for (std::size_t e = 0; e < emitters.size(); ++e) {
         Eigen::VectorXd inside = Eigen::VectorXd::Zero(area.size());
         for (Eigen::Index v = 0; v < inside.size(); ++v)
-            inside[v] = emitters[e].contains(cache.surface.mesh.vertices[std::size_t(v)], 3) ? 1.0 : 0.0;
+            inside[v] =
+                emitters[e].contains(cache.surface.mesh.vertices[std::size_t(v)], 3) ? 1.0 : 0.0;
         if (inside.sum() == 0.0)
             throw Error("[[source]] #" + std::to_string(e + 1) +
                         " covers no vertex of the surface: move it onto the surface or enlarge it");
@@ -52,14 +53,15 @@ void SurfaceDye::step(const Eigen::VectorXd& v0, const Eigen::VectorXd& v1, doub
 
 void SurfaceDye::setState(const Eigen::VectorXd& state) {
     if (state.size() != mState.size())
-        throw Error("surface dye: a state of " + std::to_string(state.size()) + " values, expected " +
-                    std::to_string(mState.size()));
+        throw Error("surface dye: a state of " + std::to_string(state.size()) +
+                    " values, expected " + std::to_string(mState.size()));
     mState = state;
 }
 
 std::vector<double> SurfaceDye::vertexValues() const {
     const Eigen::VectorXd values =
-        Eigen::VectorXd::Constant(mCache.scalar.modes.rows(), mState[0]) + mCache.scalar.modes * mState.tail(mScalars);
+        Eigen::VectorXd::Constant(mCache.scalar.modes.rows(), mState[0]) +
+        mCache.scalar.modes * mState.tail(mScalars);
     return {values.data(), values.data() + values.size()};
 }
 

@@ -9,8 +9,10 @@
 
 namespace modeflow {
 
-SurfaceSimulation::SurfaceSimulation(const BasisCache& cache, const StructuralCoefficients& coefficients,
-                                     const SimulationSettings& settings, const Eigen::VectorXd& velocity)
+SurfaceSimulation::SurfaceSimulation(const BasisCache& cache,
+                                     const StructuralCoefficients& coefficients,
+                                     const SimulationSettings& settings,
+                                     const Eigen::VectorXd& velocity)
     : mCache(cache),
       mSettings(settings),
       mSystem(coefficients, settings.fluid),
@@ -29,10 +31,11 @@ void SurfaceSimulation::advanceFrame() {
     }
 }
 
-void SurfaceSimulation::restore(double time, const Eigen::VectorXd& velocity, const Eigen::VectorXd& dye) {
+void SurfaceSimulation::restore(double time, const Eigen::VectorXd& velocity,
+                                const Eigen::VectorXd& dye) {
     if (velocity.size() != mVelocity.size())
-        throw Error("surface simulation: a velocity of " + std::to_string(velocity.size()) + " modes, expected " +
-                    std::to_string(mVelocity.size()));
+        throw Error("surface simulation: a velocity of " + std::to_string(velocity.size()) +
+                    " modes, expected " + std::to_string(mVelocity.size()));
     mDye.setState(dye);
     mVelocity = velocity;
     mTime = time;

@@ -16,12 +16,15 @@ Eigen::Vector3d point(const TriangleMesh& mesh, int v) {
     return {p[0], p[1], p[2]};
 }
 
-Eigen::Vector3d vec(const Vec3& v) { return {v[0], v[1], v[2]}; }
+Eigen::Vector3d vec(const Vec3& v) {
+    return {v[0], v[1], v[2]};
+}
 
 }  // namespace
 
 Eigen::MatrixXd surfaceAdvection(const SurfaceDec& dec, const TriangleMesh& mesh,
-                                 const Eigen::MatrixXd& scalarModes, const Eigen::MatrixXd& velocityModes) {
+                                 const Eigen::MatrixXd& scalarModes,
+                                 const Eigen::MatrixXd& velocityModes) {
     const FaceVelocityMap map = faceVelocityMap(dec, mesh);
     const auto triangles = Eigen::Index(mesh.triangles.size());
     const Eigen::Index vertices = dec.star0.size();
@@ -29,16 +32,19 @@ Eigen::MatrixXd surfaceAdvection(const SurfaceDec& dec, const TriangleMesh& mesh
     std::vector<Triplet> mean, along1, along2;
     for (Eigen::Index t = 0; t < triangles; ++t) {
         const auto& tri = mesh.triangles[std::size_t(t)];
-        const Eigen::Vector3d p[3] = {point(mesh, tri[0]), point(mesh, tri[1]), point(mesh, tri[2])};
+        const Eigen::Vector3d p[3] = {point(mesh, tri[0]), point(mesh, tri[1]),
+                                      point(mesh, tri[2])};
         const Eigen::Vector3d n = vec(dec.normal[std::size_t(t)]);
         for (int k = 0; k < 3; ++k) {
-            const Eigen::Vector3d g = n.cross(p[(k + 2) % 3] - p[(k + 1) % 3]) / (2.0 * dec.area[t]);
+            const Eigen::Vector3d g =
+                n.cross(p[(k + 2) % 3] - p[(k + 1) % 3]) / (2.0 * dec.area[t]);
             mean.emplace_back(t, tri[std::size_t(k)], dec.area[t] / 3.0);
             along1.emplace_back(t, tri[std::size_t(k)], g.dot(vec(map.e1[std::size_t(t)])));
             along2.emplace_back(t, tri[std::size_t(k)], g.dot(vec(map.e2[std::size_t(t)])));
         }
     }
-    SurfaceDec::Sparse meanMap(triangles, vertices), g1Map(triangles, vertices), g2Map(triangles, vertices);
+    SurfaceDec::Sparse meanMap(triangles, vertices), g1Map(triangles, vertices),
+        g2Map(triangles, vertices);
     meanMap.setFromTriplets(mean.begin(), mean.end());
     g1Map.setFromTriplets(along1.begin(), along1.end());
     g2Map.setFromTriplets(along2.begin(), along2.end());
@@ -49,12 +55,14 @@ Eigen::MatrixXd surfaceAdvection(const SurfaceDec& dec, const TriangleMesh& mesh
     const auto m = std::size_t(scalarModes.cols());
     Eigen::MatrixXd packed(Eigen::Index(pairCount(m)), velocityModes.cols());
     for (Eigen::Index mode = 0; mode < velocityModes.cols(); ++mode) {
-        const Eigen::MatrixXd grad = u1.col(mode).asDiagonal() * g1 + u2.col(mode).asDiagonal() * g2;
+        const Eigen::MatrixXd grad =
+            u1.col(mode).asDiagonal() * g1 + u2.col(mode).asDiagonal() * g2;
         const Eigen::MatrixXd a = weighted.transpose() * grad;
         for (std::size_t i = 0; i < m; ++i)
             for (std::size_t j = i + 1; j < m; ++j)
                 packed(Eigen::Index(pairIndex(m, i, j)), mode) =
-                    0.5 * (a(Eigen::Index(i), Eigen::Index(j)) - a(Eigen::Index(j), Eigen::Index(i)));
+                    0.5 *
+                    (a(Eigen::Index(i), Eigen::Index(j)) - a(Eigen::Index(j), Eigen::Index(i)));
     }
     return packed;
 }

@@ -15,7 +15,8 @@ namespace modeflow {
 /// Φ. Divergence-free Ψ_m make A_m antisymmetric; it is stored as ½(A_ij − A_ji) for i < j, one
 /// row per pair in the row order of engine/core/PackedLayout.h, one column per velocity mode.
 Eigen::MatrixXd surfaceAdvection(const SurfaceDec& dec, const TriangleMesh& mesh,
-                                 const Eigen::MatrixXd& scalarModes, const Eigen::MatrixXd& velocityModes);
+                                 const Eigen::MatrixXd& scalarModes,
+                                 const Eigen::MatrixXd& velocityModes);
 
 /// The velocity of each mode at the vertices, 3 rows (x, y, z) per vertex: the area-weighted
 /// mean of the constant velocities of the triangles around it.

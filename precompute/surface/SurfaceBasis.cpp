@@ -28,7 +28,9 @@ EdgeSides edgeSides(const SurfaceTopology& top) {
     EdgeSides sides{std::vector<int>(top.edges.size(), -1), std::vector<int>(top.edges.size(), -1)};
     for (std::size_t t = 0; t < top.triangleEdges.size(); ++t)
         for (std::size_t k = 0; k < 3; ++k)
-            (top.triangleEdgeSigns[t][k] > 0 ? sides.left : sides.right)[std::size_t(top.triangleEdges[t][k])] = int(t);
+            (top.triangleEdgeSigns[t][k] > 0 ? sides.left
+                                             : sides.right)[std::size_t(top.triangleEdges[t][k])] =
+                int(t);
     return sides;
 }
 
@@ -51,7 +53,8 @@ Eigen::MatrixXd cohomologyGenerators(const SurfaceDec& dec) {
             const int v = queue.front();
             queue.pop_front();
             for (int e : vertexEdges[std::size_t(v)]) {
-                const int w = top.edges[std::size_t(e)][0] == v ? top.edges[std::size_t(e)][1] : top.edges[std::size_t(e)][0];
+                const int w = top.edges[std::size_t(e)][0] == v ? top.edges[std::size_t(e)][1]
+                                                                : top.edges[std::size_t(e)][0];
                 if (reached[std::size_t(w)]) continue;
                 reached[std::size_t(w)] = true;
                 primalTree[std::size_t(e)] = true;
@@ -71,7 +74,8 @@ Eigen::MatrixXd cohomologyGenerators(const SurfaceDec& dec) {
             queue.pop_front();
             for (int e : top.triangleEdges[std::size_t(t)]) {
                 if (primalTree[std::size_t(e)]) continue;
-                const int u = sides.left[std::size_t(e)] == t ? sides.right[std::size_t(e)] : sides.left[std::size_t(e)];
+                const int u = sides.left[std::size_t(e)] == t ? sides.right[std::size_t(e)]
+                                                              : sides.left[std::size_t(e)];
                 if (visited[std::size_t(u)]) continue;
                 visited[std::size_t(u)] = true;
                 dualTree[std::size_t(e)] = true;
@@ -86,19 +90,24 @@ Eigen::MatrixXd cohomologyGenerators(const SurfaceDec& dec) {
         if (!primalTree[e] && !dualTree[e]) leftOver.push_back(int(e));
     const int expected = top.harmonicCount(int(vertices));
     if (int(leftOver.size()) != expected)
-        throw Error("surface basis: the tree-cotree decomposition left " + std::to_string(leftOver.size()) +
+        throw Error("surface basis: the tree-cotree decomposition left " +
+                    std::to_string(leftOver.size()) +
                     " edges, but the Euler characteristic asks for " + std::to_string(expected));
 
     Eigen::MatrixXd c = Eigen::MatrixXd::Zero(Eigen::Index(edges), Eigen::Index(leftOver.size()));
     for (std::size_t g = 0; g < leftOver.size(); ++g) {
         auto column = c.col(Eigen::Index(g));
         // A unit flux across e into triangle `into`: positive towards the edge's left.
-        const auto cross = [&](int e, int into) { column[e] += sides.left[std::size_t(e)] == into ? 1.0 : -1.0; };
+        const auto cross = [&](int e, int into) {
+            column[e] += sides.left[std::size_t(e)] == into ? 1.0 : -1.0;
+        };
         const int e = leftOver[g];
         const int from = sides.left[std::size_t(e)], to = sides.right[std::size_t(e)];
         cross(e, to);
-        for (int t = to; parent[std::size_t(t)] >= 0; t = parent[std::size_t(t)]) cross(parentEdge[std::size_t(t)], parent[std::size_t(t)]);
-        for (int t = from; parent[std::size_t(t)] >= 0; t = parent[std::size_t(t)]) cross(parentEdge[std::size_t(t)], t);
+        for (int t = to; parent[std::size_t(t)] >= 0; t = parent[std::size_t(t)])
+            cross(parentEdge[std::size_t(t)], parent[std::size_t(t)]);
+        for (int t = from; parent[std::size_t(t)] >= 0; t = parent[std::size_t(t)])
+            cross(parentEdge[std::size_t(t)], t);
     }
     return c;
 }
@@ -134,7 +143,9 @@ Eigen::MatrixXd solvePinnedLaplacian(const SurfaceDec& dec, const Eigen::MatrixX
     const Sparse reduced = Sparse(select.transpose() * dec.laplacian() * select);
     Eigen::SimplicialLDLT<Sparse> solver(reduced);
     if (solver.info() != Eigen::Success)
-        throw Error("surface basis: the Laplace–Beltrami operator could not be factorized for the harmonic fields");
+        throw Error(
+            "surface basis: the Laplace–Beltrami operator could not be factorized for the harmonic "
+            "fields");
     return select * Eigen::MatrixXd(solver.solve(select.transpose() * b));
 }
 
@@ -164,10 +175,12 @@ SurfaceBasisResult solveSurfaceBasis(const SurfaceDec& dec, const std::vector<Mo
     if (highest > coExact + harmonic)
         throw Error("[basis]: asked for divergence-free mode " + std::to_string(highest) +
                     " but the surface holds only " + std::to_string(coExact + harmonic) +
-                    " divergence-free fields (" + std::to_string(harmonic) + " harmonic); use a finer mesh");
+                    " divergence-free fields (" + std::to_string(harmonic) +
+                    " harmonic); use a finer mesh");
     if (scalarModes > coExact)
-        throw Error("[basis].scalar_modes = " + std::to_string(scalarModes) + ": the surface holds only " +
-                    std::to_string(coExact) + " non-constant scalar modes; use a finer mesh");
+        throw Error("[basis].scalar_modes = " + std::to_string(scalarModes) +
+                    ": the surface holds only " + std::to_string(coExact) +
+                    " non-constant scalar modes; use a finer mesh");
 
     SurfaceBasisResult r;
     r.omittedConstants = components;

@@ -13,7 +13,8 @@ std::vector<double> assembleSurfaceCoefficients(const SurfaceDec& dec, const Tri
     if (modes.cols() < 2) return packed;
     std::vector<Eigen::Triplet<double>> corners;
     for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
-        for (int v : mesh.triangles[t]) corners.emplace_back(Eigen::Index(t), v, dec.area[Eigen::Index(t)] / 3.0);
+        for (int v : mesh.triangles[t])
+            corners.emplace_back(Eigen::Index(t), v, dec.area[Eigen::Index(t)] / 3.0);
     SurfaceDec::Sparse cornerWeights(Eigen::Index(mesh.triangles.size()), dec.star0.size());
     cornerWeights.setFromTriplets(corners.begin(), corners.end());
     const Eigen::MatrixXd omega = cornerWeights * vertexVorticity(dec, modes);

@@ -43,7 +43,8 @@ SurfaceDec buildSurfaceDec(const TriangleMesh& mesh, SurfaceTopology topology) {
     dec.normal.resize(std::size_t(triangles));
     for (Eigen::Index t = 0; t < triangles; ++t) {
         const auto& tri = mesh.triangles[std::size_t(t)];
-        const Eigen::Vector3d p[3] = {point(mesh, tri[0]), point(mesh, tri[1]), point(mesh, tri[2])};
+        const Eigen::Vector3d p[3] = {point(mesh, tri[0]), point(mesh, tri[1]),
+                                      point(mesh, tri[2])};
         const Eigen::Vector3d n = (p[1] - p[0]).cross(p[2] - p[0]);
         const double a = 0.5 * n.norm();
         dec.area[t] = a;
@@ -80,7 +81,8 @@ FaceVelocityMap faceVelocityMap(const SurfaceDec& dec, const TriangleMesh& mesh)
     std::vector<Triplet> along1, along2;
     for (Eigen::Index t = 0; t < triangles; ++t) {
         const auto& tri = mesh.triangles[std::size_t(t)];
-        const Eigen::Vector3d p[3] = {point(mesh, tri[0]), point(mesh, tri[1]), point(mesh, tri[2])};
+        const Eigen::Vector3d p[3] = {point(mesh, tri[0]), point(mesh, tri[1]),
+                                      point(mesh, tri[2])};
         const Vec3& nv = dec.normal[std::size_t(t)];
         const Eigen::Vector3d n(nv[0], nv[1], nv[2]);
         const Eigen::Vector3d e1 = (p[1] - p[0]).normalized(), e2 = n.cross(e1);

@@ -32,12 +32,12 @@ namespace modeflow {
 struct SurfaceDec {
     using Sparse = Eigen::SparseMatrix<double>;
     SurfaceTopology topology;
-    Sparse d0;               ///< edges × vertices: (d0ψ)_ab = ψ_b − ψ_a
-    Sparse d1;               ///< triangles × edges: ±1 as each side runs along its edge
-    Eigen::VectorXd star0;   ///< barycentric vertex areas
-    Eigen::VectorXd star1;   ///< cotan weights (may be negative, see above)
-    Eigen::VectorXd star2;   ///< 1 / triangle area
-    Eigen::VectorXd area;    ///< triangle areas
+    Sparse d0;                 ///< edges × vertices: (d0ψ)_ab = ψ_b − ψ_a
+    Sparse d1;                 ///< triangles × edges: ±1 as each side runs along its edge
+    Eigen::VectorXd star0;     ///< barycentric vertex areas
+    Eigen::VectorXd star1;     ///< cotan weights (may be negative, see above)
+    Eigen::VectorXd star2;     ///< 1 / triangle area
+    Eigen::VectorXd area;      ///< triangle areas
     std::vector<Vec3> normal;  ///< unit normal of each triangle (counter-clockwise: outward)
 
     /// The Laplace–Beltrami stiffness d0ᵀ⋆1d0 (mass: ⋆0).

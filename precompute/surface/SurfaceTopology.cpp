@@ -20,11 +20,15 @@ std::string triangleText(const TriangleMesh& mesh, std::size_t t) {
            std::to_string(b + 1) + ", " + std::to_string(c + 1) + ")";
 }
 
-Vec3 minus(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+Vec3 minus(const Vec3& a, const Vec3& b) {
+    return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
+}
 Vec3 cross(const Vec3& a, const Vec3& b) {
     return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
 }
-double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+double dot(const Vec3& a, const Vec3& b) {
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
 
 void requireNonDegenerate(const TriangleMesh& mesh, const std::string& name) {
     for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
@@ -52,7 +56,8 @@ struct EdgeUse {
 };
 
 int findRoot(std::vector<int>& parent, int i) {
-    while (parent[std::size_t(i)] != i) i = parent[std::size_t(i)] = parent[std::size_t(parent[std::size_t(i)])];
+    while (parent[std::size_t(i)] != i)
+        i = parent[std::size_t(i)] = parent[std::size_t(parent[std::size_t(i)])];
     return i;
 }
 
@@ -68,7 +73,8 @@ SurfaceTopology checkClosedSurface(const TriangleMesh& mesh, const std::string& 
     top.triangleEdgeSigns.resize(mesh.triangles.size());
     for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
         for (int k = 0; k < 3; ++k) {
-            const int a = mesh.triangles[t][std::size_t(k)], b = mesh.triangles[t][std::size_t((k + 1) % 3)];
+            const int a = mesh.triangles[t][std::size_t(k)],
+                      b = mesh.triangles[t][std::size_t((k + 1) % 3)];
             const int lo = std::min(a, b), hi = std::max(a, b);
             const std::uint64_t key = (std::uint64_t(lo) << 32) | std::uint64_t(hi);
             const auto [it, added] = edgeIndex.emplace(key, int(top.edges.size()));
@@ -85,8 +91,9 @@ SurfaceTopology checkClosedSurface(const TriangleMesh& mesh, const std::string& 
     }
     for (std::size_t e = 0; e < top.edges.size(); ++e) {
         const EdgeUse& use = uses[e];
-        const std::string edge = "the edge between vertices " + std::to_string(top.edges[e][0] + 1) +
-                                 " and " + std::to_string(top.edges[e][1] + 1);
+        const std::string edge = "the edge between vertices " +
+                                 std::to_string(top.edges[e][0] + 1) + " and " +
+                                 std::to_string(top.edges[e][1] + 1);
         if (use.triangles.size() == 1)
             throw Error(name + ": the surface is not closed: " + edge + " belongs to " +
                         triangleText(mesh, std::size_t(use.triangles[0])) +
@@ -103,7 +110,8 @@ SurfaceTopology checkClosedSurface(const TriangleMesh& mesh, const std::string& 
         if (use.signs[0] == use.signs[1])
             throw Error(name + ": the triangles are not consistently oriented: " +
                         triangleText(mesh, std::size_t(use.triangles[0])) + " and " +
-                        triangleText(mesh, std::size_t(use.triangles[1])) + " both run along " + edge +
+                        triangleText(mesh, std::size_t(use.triangles[1])) + " both run along " +
+                        edge +
                         " in the same direction; reverse the vertex order of one of them (every "
                         "triangle must be counter-clockwise seen from outside)");
     }
@@ -113,7 +121,8 @@ SurfaceTopology checkClosedSurface(const TriangleMesh& mesh, const std::string& 
     std::vector<std::vector<std::array<int, 2>>> link(vertexCount);
     for (const auto& tri : mesh.triangles)
         for (int k = 0; k < 3; ++k)
-            link[std::size_t(tri[std::size_t(k)])].push_back({tri[std::size_t((k + 1) % 3)], tri[std::size_t((k + 2) % 3)]});
+            link[std::size_t(tri[std::size_t(k)])].push_back(
+                {tri[std::size_t((k + 1) % 3)], tri[std::size_t((k + 2) % 3)]});
     for (std::size_t v = 0; v < vertexCount; ++v) {
         const auto& steps = link[v];
         if (steps.empty())
@@ -132,16 +141,21 @@ SurfaceTopology checkClosedSurface(const TriangleMesh& mesh, const std::string& 
 
     std::vector<int> parent(vertexCount);
     std::iota(parent.begin(), parent.end(), 0);
-    for (const auto& [a, b] : top.edges) parent[std::size_t(findRoot(parent, a))] = findRoot(parent, b);
-    for (std::size_t v = 0; v < vertexCount; ++v) top.components += findRoot(parent, int(v)) == int(v);
+    for (const auto& [a, b] : top.edges)
+        parent[std::size_t(findRoot(parent, a))] = findRoot(parent, b);
+    for (std::size_t v = 0; v < vertexCount; ++v)
+        top.components += findRoot(parent, int(v)) == int(v);
 
     double volume = 0.0;
     for (const auto& [a, b, c] : mesh.triangles)
-        volume += dot(mesh.vertices[std::size_t(a)], cross(mesh.vertices[std::size_t(b)], mesh.vertices[std::size_t(c)])) / 6.0;
+        volume += dot(mesh.vertices[std::size_t(a)],
+                      cross(mesh.vertices[std::size_t(b)], mesh.vertices[std::size_t(c)])) /
+                  6.0;
     if (volume < 0.0)
-        throw Error(name + ": the triangles are clockwise seen from outside (they enclose a "
-                        "negative volume, " + std::to_string(volume) +
-                        "); reverse the vertex order of every face");
+        throw Error(name +
+                    ": the triangles are clockwise seen from outside (they enclose a "
+                    "negative volume, " +
+                    std::to_string(volume) + "); reverse the vertex order of every face");
     return top;
 }
 

@@ -19,7 +19,8 @@
 namespace modeflow {
 namespace {
 
-BasisCache sphereBasis(const testing::TestFolder& folder, int subdivisions = 3, int scalarModes = 35) {
+BasisCache sphereBasis(const testing::TestFolder& folder, int subdivisions = 3,
+                       int scalarModes = 35) {
     writeObj(folder / "sphere.obj", makeIcosphere(subdivisions));
     SceneSpec scene;
     scene.surface = SurfaceSpec{folder / "sphere.obj"};
@@ -48,7 +49,8 @@ TEST(SurfaceDye, AdvectionKeepsTheVarianceAndSourcesRaiseTheMean) {
     double covered = 0.0, total = 0.0;
     for (std::size_t i = 0; i < cache.surface.mesh.vertices.size(); ++i) {
         total += cache.scalar.cellStar[Eigen::Index(i)];
-        if (source.contains(cache.surface.mesh.vertices[i], 3)) covered += cache.scalar.cellStar[Eigen::Index(i)];
+        if (source.contains(cache.surface.mesh.vertices[i], 3))
+            covered += cache.scalar.cellStar[Eigen::Index(i)];
     }
     EXPECT_NEAR(dye.state()[0], 2.0 * covered / total * 0.5, 1e-12);
     // Without sources the variance stays exactly.
@@ -57,7 +59,8 @@ TEST(SurfaceDye, AdvectionKeepsTheVarianceAndSourcesRaiseTheMean) {
     const double variance = carried.state().tail(35).squaredNorm();
     for (int s = 0; s < 200; ++s) carried.step(v, v * 0.9, 0.0, 0.05);
     EXPECT_NEAR(carried.state().tail(35).squaredNorm(), variance, 1e-12 * variance);
-    EXPECT_GT((carried.state() - dye.state()).norm(), 1e-3 * dye.state().norm()) << "the dye did not move";
+    EXPECT_GT((carried.state() - dye.state()).norm(), 1e-3 * dye.state().norm())
+        << "the dye did not move";
 }
 
 /// Under a solid rotation at angular speed Ω, a band of degree l turns rigidly: the advection
@@ -70,7 +73,8 @@ TEST(SurfaceDye, ASolidRotationTurnsEachBandAtItsAngularSpeed) {
     // Ω is the largest speed on the unit sphere (at the rotation's equator).
     const Eigen::VectorXd u = cache.surface.vertexVelocity * v;
     double omega = 0.0;
-    for (Eigen::Index i = 0; i < u.size() / 3; ++i) omega = std::max(omega, u.segment<3>(3 * i).norm());
+    for (Eigen::Index i = 0; i < u.size() / 3; ++i)
+        omega = std::max(omega, u.segment<3>(3 * i).norm());
     const Eigen::VectorXd pairs = cache.surface.advection * v;
     Eigen::MatrixXd k = Eigen::MatrixXd::Zero(15, 15);
     for (int i = 0, at = 0; i < 15; ++i)

@@ -20,7 +20,9 @@
 namespace modeflow {
 namespace {
 
-SurfaceDec decOf(const TriangleMesh& mesh) { return buildSurfaceDec(mesh, checkClosedSurface(mesh, "test mesh")); }
+SurfaceDec decOf(const TriangleMesh& mesh) {
+    return buildSurfaceDec(mesh, checkClosedSurface(mesh, "test mesh"));
+}
 
 SurfaceBasisResult basisOf(const SurfaceDec& dec, int velocity, int scalar) {
     return solveSurfaceBasis(dec, {{1, velocity}}, scalar, {});
@@ -34,7 +36,9 @@ std::vector<double> sphereSpectrum(int count) {
     return out;
 }
 
-double maxAbs(const Eigen::MatrixXd& m) { return m.size() ? m.cwiseAbs().maxCoeff() : 0.0; }
+double maxAbs(const Eigen::MatrixXd& m) {
+    return m.size() ? m.cwiseAbs().maxCoeff() : 0.0;
+}
 
 TEST(SurfaceDec, IncidencesComposeToZeroAndStarsAddUpToTheArea) {
     const TriangleMesh mesh = makeBlobMesh(2, 3);
@@ -42,7 +46,8 @@ TEST(SurfaceDec, IncidencesComposeToZeroAndStarsAddUpToTheArea) {
     EXPECT_EQ(maxAbs(Eigen::MatrixXd(dec.d1 * dec.d0)), 0.0);
     EXPECT_NEAR(dec.star0.sum(), dec.area.sum(), 1e-12 * dec.area.sum());
     // The cotan Laplacian annihilates constants.
-    EXPECT_LT((dec.laplacian() * Eigen::VectorXd::Ones(dec.star0.size())).cwiseAbs().maxCoeff(), 1e-12);
+    EXPECT_LT((dec.laplacian() * Eigen::VectorXd::Ones(dec.star0.size())).cwiseAbs().maxCoeff(),
+              1e-12);
 }
 
 /// A flat triangular bipyramid: each equatorial edge faces two angles of almost 120°, so its
@@ -57,7 +62,8 @@ TEST(SurfaceDec, NegativeCotanWeightsKeepTheEnergyExactAndPositive) {
     std::cout << "smallest cotan weight " << dec.star1.minCoeff() << "\n";
     ASSERT_LT(dec.star1.minCoeff(), 0.0) << "the mesh was meant to have a negative weight";
     const Eigen::MatrixXd l = Eigen::MatrixXd(dec.laplacian());
-    const Eigen::VectorXd spectrum = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(l).eigenvalues();
+    const Eigen::VectorXd spectrum =
+        Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(l).eigenvalues();
     EXPECT_GT(spectrum[0], -1e-12) << "the Laplacian lost its semi-definiteness";
     EXPECT_GT(spectrum[1], 1e-6) << "a second null vector appeared";
 
@@ -69,7 +75,8 @@ TEST(SurfaceDec, NegativeCotanWeightsKeepTheEnergyExactAndPositive) {
     const FaceVelocityMap u = faceVelocityMap(dec, mesh);
     const Eigen::VectorXd u1 = u.alongE1 * flux, u2 = u.alongE2 * flux;
     double energy = 0.0;
-    for (Eigen::Index t = 0; t < u1.size(); ++t) energy += dec.area[t] * (u1[t] * u1[t] + u2[t] * u2[t]);
+    for (Eigen::Index t = 0; t < u1.size(); ++t)
+        energy += dec.area[t] * (u1[t] * u1[t] + u2[t] * u2[t]);
     const double star = flux.dot(dec.star1.asDiagonal() * flux);
     EXPECT_NEAR(star, energy, 1e-12 * energy) << "Fᵀ⋆1F against Σ A|u|²";
     EXPECT_GT(star, 0.0);
@@ -85,7 +92,8 @@ TEST(SurfaceBasis, SphereSpectrumIsLTimesLPlusOneAndConvergesAtSecondOrder) {
         double error = 0.0;
         for (int m = 0; m < kModes; ++m) {
             error = std::max(error, std::abs(basis.scalarEigenvalues[m] - exact[std::size_t(m)]));
-            EXPECT_DOUBLE_EQ(basis.velocityEigenvalues[m], basis.scalarEigenvalues[m]) << "κ² = λ, mode " << m;
+            EXPECT_DOUBLE_EQ(basis.velocityEigenvalues[m], basis.scalarEigenvalues[m])
+                << "κ² = λ, mode " << m;
         }
         EXPECT_EQ(basis.harmonicCount, 0);
         std::cout << "icosphere " << level << ": max |λ − l(l+1)| = " << error << "\n";
@@ -110,13 +118,16 @@ TEST(SurfaceBasis, SphereSpectrumIsLTimesLPlusOneAndConvergesAtSecondOrder) {
 /// dim H¹ = dim ker d1 − rank d0, from the ranks of the incidences alone.
 int firstBettiNumber(const SurfaceDec& dec) {
     const Eigen::MatrixXd d0 = Eigen::MatrixXd(dec.d0), d1 = Eigen::MatrixXd(dec.d1);
-    const auto rank = [](const Eigen::MatrixXd& m) { return int(Eigen::FullPivLU<Eigen::MatrixXd>(m).rank()); };
+    const auto rank = [](const Eigen::MatrixXd& m) {
+        return int(Eigen::FullPivLU<Eigen::MatrixXd>(m).rank());
+    };
     return int(d1.cols()) - rank(d1) - rank(d0);
 }
 
 void expectHarmonic(const SurfaceDec& dec, const Eigen::MatrixXd& h) {
     const Eigen::MatrixXd gram = h.transpose() * dec.star1.asDiagonal() * h;
-    EXPECT_LT(maxAbs(gram - Eigen::MatrixXd::Identity(h.cols(), h.cols())), 1e-12) << "⋆1-orthonormal";
+    EXPECT_LT(maxAbs(gram - Eigen::MatrixXd::Identity(h.cols(), h.cols())), 1e-12)
+        << "⋆1-orthonormal";
     EXPECT_LT(maxAbs(dec.d1 * h) / maxAbs(h), 1e-14) << "divergence";
     EXPECT_LT(maxAbs(vertexVorticity(dec, h)), 1e-9) << "vorticity";
 }
@@ -132,10 +143,12 @@ TEST(SurfaceBasis, TorusHasExactlyTwoHarmonicFields) {
     // eigenvalues, and the harmonic fields are its null vectors.
     ASSERT_GT(dec.star1.minCoeff(), 0.0);
     const Eigen::MatrixXd s1 = dec.star1.asDiagonal();
-    const Eigen::MatrixXd l1 = s1 * Eigen::MatrixXd(dec.d0) * dec.star0.cwiseInverse().asDiagonal() *
-                                   Eigen::MatrixXd(dec.d0).transpose() * s1 +
-                               Eigen::MatrixXd(dec.d1).transpose() * dec.star2.asDiagonal() * Eigen::MatrixXd(dec.d1);
-    const Eigen::VectorXd values = Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd>(l1, s1).eigenvalues();
+    const Eigen::MatrixXd l1 =
+        s1 * Eigen::MatrixXd(dec.d0) * dec.star0.cwiseInverse().asDiagonal() *
+            Eigen::MatrixXd(dec.d0).transpose() * s1 +
+        Eigen::MatrixXd(dec.d1).transpose() * dec.star2.asDiagonal() * Eigen::MatrixXd(dec.d1);
+    const Eigen::VectorXd values =
+        Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd>(l1, s1).eigenvalues();
     std::cout << "Hodge Laplacian: " << values[0] << ", " << values[1] << ", " << values[2] << "\n";
     EXPECT_LT(std::abs(values[1]), 1e-9);
     EXPECT_GT(values[2], 0.1);
@@ -160,12 +173,14 @@ TEST(SurfaceBasis, BasisIsOrthonormalAndDivergenceFreeToRoundOff) {
     const SurfaceDec dec = decOf(mesh);
     const SurfaceBasisResult basis = basisOf(dec, 40, 30);
     const Eigen::MatrixXd& v = basis.velocityModes;
-    const double velocityError = maxAbs(v.transpose() * dec.star1.asDiagonal() * v - Eigen::MatrixXd::Identity(40, 40));
-    const double scalarError = maxAbs(basis.scalarModes.transpose() * dec.star0.asDiagonal() * basis.scalarModes -
-                                      Eigen::MatrixXd::Identity(30, 30));
+    const double velocityError =
+        maxAbs(v.transpose() * dec.star1.asDiagonal() * v - Eigen::MatrixXd::Identity(40, 40));
+    const double scalarError =
+        maxAbs(basis.scalarModes.transpose() * dec.star0.asDiagonal() * basis.scalarModes -
+               Eigen::MatrixXd::Identity(30, 30));
     const double divergence = maxAbs(dec.d1 * v) / maxAbs(v);
-    std::cout << "orthonormality " << velocityError << " (velocity), " << scalarError << " (scalar); divergence "
-              << divergence << "\n";
+    std::cout << "orthonormality " << velocityError << " (velocity), " << scalarError
+              << " (scalar); divergence " << divergence << "\n";
     EXPECT_LT(velocityError, 1e-10);
     EXPECT_LT(scalarError, 1e-10);
     EXPECT_LT(divergence, 1e-14);
@@ -196,7 +211,8 @@ TEST(SurfaceCoefficients, ConvergeAtSecondOrderToTheContinuumIntegral) {
         std::cout << "icosphere " << level << ": C = " << c << " (continuum " << exact << ")\n";
     }
     for (std::size_t i = 1; i < errors.size(); ++i)
-        EXPECT_GT(std::log2(errors[i - 1] / errors[i]), 1.8) << "between levels " << i + 1 << " and " << i + 2;
+        EXPECT_GT(std::log2(errors[i - 1] / errors[i]), 1.8)
+            << "between levels " << i + 1 << " and " << i + 2;
 }
 
 }  // namespace

@@ -50,7 +50,8 @@ double energyDrift(const BasisCache& cache, double alpha, int steps, double dt) 
     double drift = 0.0;
     for (int s = 0; s < steps; ++s) {
         integrator.step(v, dt);
-        drift = std::max(drift, std::abs(lansEnergy(v, cache.velocity.eigenvalues, alpha) / e0 - 1.0));
+        drift =
+            std::max(drift, std::abs(lansEnergy(v, cache.velocity.eigenvalues, alpha) / e0 - 1.0));
     }
     return drift;
 }
@@ -93,7 +94,8 @@ TEST(SurfaceDynamics, SolidRotationOfTheSphereStaysSteady) {
     // The l = 1 modes: any combination is the solid rotation u = Ω × x about some axis Ω.
     Eigen::VectorXd v = Eigen::VectorXd::Zero(15);
     v.head(3) << 0.3, -0.8, 0.5;
-    const SurfaceDec dec = buildSurfaceDec(cache.surface.mesh, checkClosedSurface(cache.surface.mesh, "sphere"));
+    const SurfaceDec dec =
+        buildSurfaceDec(cache.surface.mesh, checkClosedSurface(cache.surface.mesh, "sphere"));
     const FaceVelocityMap map = faceVelocityMap(dec, cache.surface.mesh);
     const Eigen::VectorXd flux = cache.velocity.modes * v;
     const Eigen::VectorXd a = map.alongE1 * flux, b = map.alongE2 * flux;
@@ -103,16 +105,19 @@ TEST(SurfaceDynamics, SolidRotationOfTheSphereStaysSteady) {
     for (Eigen::Index t = 0; t < a.size(); ++t) {
         Eigen::Vector3d c = Eigen::Vector3d::Zero();
         for (int corner : cache.surface.mesh.triangles[std::size_t(t)])
-            for (int k = 0; k < 3; ++k) c[k] += mesh.vertices[std::size_t(corner)][std::size_t(k)] / 3.0;
+            for (int k = 0; k < 3; ++k)
+                c[k] += mesh.vertices[std::size_t(corner)][std::size_t(k)] / 3.0;
         const auto& e1 = map.e1[std::size_t(t)];
         const auto& e2 = map.e2[std::size_t(t)];
-        for (int k = 0; k < 3; ++k) rhs[3 * t + k] = a[t] * e1[std::size_t(k)] + b[t] * e2[std::size_t(k)];
+        for (int k = 0; k < 3; ++k)
+            rhs[3 * t + k] = a[t] * e1[std::size_t(k)] + b[t] * e2[std::size_t(k)];
         // Ω × c = −[c]× Ω
         system.block(3 * t, 0, 3, 3) << 0, c[2], -c[1], -c[2], 0, c[0], c[1], -c[0], 0;
     }
     const Eigen::Vector3d omega = system.colPivHouseholderQr().solve(rhs);
     const double misfit = (system * omega - rhs).norm() / rhs.norm();
-    std::cout << "solid rotation Ω = " << omega.transpose() << ", relative misfit " << misfit << "\n";
+    std::cout << "solid rotation Ω = " << omega.transpose() << ", relative misfit " << misfit
+              << "\n";
     EXPECT_LT(misfit, 0.02) << "the l = 1 modes are not a solid rotation";
 
     const auto coefficients = coefficientsFromCache(cache);

@@ -32,7 +32,8 @@ std::string refusal(const TriangleMesh& mesh) {
 
 /// A tetrahedron, counter-clockwise seen from outside.
 TriangleMesh tetrahedron() {
-    return {{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}}, {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}}};
+    return {{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}},
+            {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}}};
 }
 
 TEST(SurfaceMesh, ClosedMeshesPassWithTheirEdgesAndTopology) {
@@ -44,7 +45,9 @@ TEST(SurfaceMesh, ClosedMeshesPassWithTheirEdgesAndTopology) {
     const TriangleMesh torus = makeTorus(12, 8, 1.0, 0.4);
     EXPECT_EQ(checkClosedSurface(torus, "torus").harmonicCount(int(torus.vertices.size())), 2);
     const TriangleMesh twoHoles = makeDoubleTorus(1);
-    EXPECT_EQ(checkClosedSurface(twoHoles, "double torus").harmonicCount(int(twoHoles.vertices.size())), 4);
+    EXPECT_EQ(
+        checkClosedSurface(twoHoles, "double torus").harmonicCount(int(twoHoles.vertices.size())),
+        4);
     const TriangleMesh sphere = makeIcosphere(2);
     EXPECT_EQ(checkClosedSurface(sphere, "sphere").harmonicCount(int(sphere.vertices.size())), 0);
 }
@@ -52,7 +55,8 @@ TEST(SurfaceMesh, ClosedMeshesPassWithTheirEdgesAndTopology) {
 TEST(SurfaceMesh, RefusesDegenerateTriangles) {
     TriangleMesh mesh = tetrahedron();
     mesh.triangles[1] = {0, 1, 1};
-    EXPECT_CONTAINS(refusal(mesh), "mesh file m.obj: triangle 2 (vertices 1, 2, 2) repeats a vertex");
+    EXPECT_CONTAINS(refusal(mesh),
+                    "mesh file m.obj: triangle 2 (vertices 1, 2, 2) repeats a vertex");
     mesh = tetrahedron();
     mesh.vertices[3] = {0.5, 0.5, 0.0};  // on the line from vertex 2 to vertex 3
     EXPECT_CONTAINS(refusal(mesh), "triangle 4 (vertices 2, 3, 4) has no area");
@@ -61,23 +65,26 @@ TEST(SurfaceMesh, RefusesDegenerateTriangles) {
 TEST(SurfaceMesh, RefusesOpenSurfaces) {
     TriangleMesh mesh = tetrahedron();
     mesh.triangles.pop_back();
-    EXPECT_CONTAINS(refusal(mesh), "the surface is not closed: the edge between vertices 2 and 3 belongs to "
-                                   "triangle 1 (vertices 1, 3, 2) only");
+    EXPECT_CONTAINS(refusal(mesh),
+                    "the surface is not closed: the edge between vertices 2 and 3 belongs to "
+                    "triangle 1 (vertices 1, 3, 2) only");
 }
 
 TEST(SurfaceMesh, RefusesEdgesSharedByMoreThanTwoTriangles) {
     TriangleMesh mesh = tetrahedron();
     mesh.vertices.push_back({-1, -1, -1});
     mesh.triangles.push_back({0, 1, 4});
-    EXPECT_CONTAINS(refusal(mesh), "not a manifold: the edge between vertices 1 and 2 is shared by 3 triangles "
-                                   "(1, 2, 5)");
+    EXPECT_CONTAINS(refusal(mesh),
+                    "not a manifold: the edge between vertices 1 and 2 is shared by 3 triangles "
+                    "(1, 2, 5)");
 }
 
 TEST(SurfaceMesh, RefusesInconsistentOrientation) {
     TriangleMesh mesh = tetrahedron();
     std::swap(mesh.triangles[3][0], mesh.triangles[3][1]);
-    EXPECT_CONTAINS(refusal(mesh), "not consistently oriented: triangle 1 (vertices 1, 3, 2) and triangle 4 "
-                                   "(vertices 3, 2, 4) both run along the edge between vertices 2 and 3");
+    EXPECT_CONTAINS(refusal(mesh),
+                    "not consistently oriented: triangle 1 (vertices 1, 3, 2) and triangle 4 "
+                    "(vertices 3, 2, 4) both run along the edge between vertices 2 and 3");
 }
 
 TEST(SurfaceMesh, RefusesInsideOutSurfaces) {
@@ -93,13 +100,16 @@ TEST(SurfaceMesh, RefusesVerticesOutsideTrianglesAndPinchedVertices) {
     // Two tetrahedra sharing vertex 1 only: every edge is fine, the vertex is not.
     mesh = tetrahedron();
     const TriangleMesh other = tetrahedron();
-    for (std::size_t v = 1; v < 4; ++v) mesh.vertices.push_back({-other.vertices[v][0], -other.vertices[v][1], -other.vertices[v][2]});
+    for (std::size_t v = 1; v < 4; ++v)
+        mesh.vertices.push_back(
+            {-other.vertices[v][0], -other.vertices[v][1], -other.vertices[v][2]});
     for (auto t : other.triangles) {
         for (int& v : t) v = v == 0 ? 0 : v + 3;
         std::swap(t[1], t[2]);  // mirrored: keep it counter-clockwise from outside
         mesh.triangles.push_back(t);
     }
-    EXPECT_CONTAINS(refusal(mesh), "vertex 1 is not a manifold point: its triangles form separate fans");
+    EXPECT_CONTAINS(refusal(mesh),
+                    "vertex 1 is not a manifold point: its triangles form separate fans");
 }
 
 TEST(SurfaceMesh, ObjFilesAreReadWithTheMeshDomainsChecks) {
@@ -108,7 +118,8 @@ TEST(SurfaceMesh, ObjFilesAreReadWithTheMeshDomainsChecks) {
         std::ofstream(folder / name) << text;
         return folder / name;
     };
-    const std::string tet = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n";
+    const std::string tet =
+        "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n";
     EXPECT_EQ(readObjMesh(write("tet.obj", tet)), tetrahedron());
     try {
         readObjMesh(write("nan.obj", "v 0 0 nan\n" + tet));

@@ -15,7 +15,8 @@ namespace {
 class SurfaceScene : public Cli {
 protected:
     fs::path surfaceScene(const std::string& mesh, const std::string& extra = "") const {
-        return scene("surface.toml", "[surface]\nmesh = \"" + mesh + "\"\n[basis]\nvelocity_modes = 6\nscalar_modes = 6\n" +
+        return scene("surface.toml", "[surface]\nmesh = \"" + mesh +
+                                         "\"\n[basis]\nvelocity_modes = 6\nscalar_modes = 6\n" +
                                          extra);
     }
 };
@@ -24,13 +25,15 @@ TEST_F(SurfaceScene, AnOpenMeshIsRefusedNamingTheKeyAndTheEdge) {
     TriangleMesh open = makeIcosphere(1);
     open.triangles.pop_back();
     writeObj(mDir / "open.obj", open);
-    expectRejected(precompute(surfaceScene("open.obj")),
-                   "[surface].mesh: mesh file " + (mDir / "open.obj").string() + ": the surface is not closed");
+    expectRejected(precompute(surfaceScene("open.obj")), "[surface].mesh: mesh file " +
+                                                             (mDir / "open.obj").string() +
+                                                             ": the surface is not closed");
 }
 
 TEST_F(SurfaceScene, InspectReportsTheSurfaceAndItsHarmonicModes) {
     writeObj(mDir / "torus.obj", makeTorus(24, 10, 1.0, 0.4));
-    const RunResult r = run("inspect " + surfaceScene("torus.obj").string() + " --json --cache-dir " + mCache.string());
+    const RunResult r = run("inspect " + surfaceScene("torus.obj").string() +
+                            " --json --cache-dir " + mCache.string());
     ASSERT_EQ(r.status, 0) << r.err;
     const auto j = nlohmann::json::parse(r.out);
     EXPECT_EQ(j["kind"], "surface");
@@ -42,15 +45,17 @@ TEST_F(SurfaceScene, InspectReportsTheSurfaceAndItsHarmonicModes) {
 
 TEST_F(SurfaceScene, RunWritesPlyFramesPicturesAndAContactSheet) {
     writeObj(mDir / "sphere.obj", makeIcosphere(2));
-    const fs::path s = surfaceScene("sphere.obj",
-                                    "[initial]\nvelocity = \"random\"\n[[source]]\nshape = \"ball\"\n"
-                                    "center = [0, 0, 1]\nradius = 0.4\n");
+    const fs::path s =
+        surfaceScene("sphere.obj",
+                     "[initial]\nvelocity = \"random\"\n[[source]]\nshape = \"ball\"\n"
+                     "center = [0, 0, 1]\nradius = 0.4\n");
     const fs::path out = mDir / "frames";
-    const RunResult r = run("run " + s.string() + " --device cpu --frames 4 --preview-every 2 --out " + out.string() +
-                            " --cache-dir " + mCache.string());
+    const RunResult r =
+        run("run " + s.string() + " --device cpu --frames 4 --preview-every 2 --out " +
+            out.string() + " --cache-dir " + mCache.string());
     ASSERT_EQ(r.status, 0) << r.err;
-    for (const char* file : {"surface_0001.ply", "surface_0004.ply", "surface_0002.png", "surface_0004.png",
-                             "surface_contact.png", "surface.resume"})
+    for (const char* file : {"surface_0001.ply", "surface_0004.ply", "surface_0002.png",
+                             "surface_0004.png", "surface_contact.png", "surface.resume"})
         EXPECT_TRUE(fs::exists(out / file)) << file;
     EXPECT_FALSE(fs::exists(out / "surface_0001.png"));
 }
@@ -58,13 +63,14 @@ TEST_F(SurfaceScene, RunWritesPlyFramesPicturesAndAContactSheet) {
 TEST_F(SurfaceScene, WhatSurfacesDoNotDoIsRefusedBeforeAnyWork) {
     writeObj(mDir / "sphere.obj", makeIcosphere(1));
     const fs::path s = surfaceScene("sphere.obj");
-    expectRejected("run " + s.string() + " --device cpu --half --out " + (mDir / "o").string() + " --cache-dir " +
-                       mCache.string(),
+    expectRejected("run " + s.string() + " --device cpu --half --out " + (mDir / "o").string() +
+                       " --cache-dir " + mCache.string(),
                    "--half: surface scenes write PLY frames");
-    expectRejected("run " + s.string() + " --device vulkan --out " + (mDir / "o").string() + " --cache-dir " +
-                       mCache.string(),
+    expectRejected("run " + s.string() + " --device vulkan --out " + (mDir / "o").string() +
+                       " --cache-dir " + mCache.string(),
                    "[surface] scenes run on the CPU reference only; use --device cpu");
-    expectRejected("stir " + s.string() + " --cache-dir " + mCache.string(), "[surface] scenes are not stirred");
+    expectRejected("stir " + s.string() + " --cache-dir " + mCache.string(),
+                   "[surface] scenes are not stirred");
 }
 
 }  // namespace
