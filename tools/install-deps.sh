@@ -5,12 +5,13 @@ set -euo pipefail
 
 packages=(
     build-essential cmake ninja-build pkg-config
-    libeigen3-dev libspectra-dev libsuitesparse-dev libopenblas0-pthread
+    libeigen3-dev libspectra-dev libsuitesparse-dev libopenblas0-pthread libfftw3-dev
     libopenvdb-dev libboost-iostreams-dev libtbb-dev
     libtomlplusplus-dev libcli11-dev nlohmann-json3-dev libtinyobjloader-dev
     libvulkan-dev mesa-vulkan-drivers vulkan-tools glslang-tools spirv-tools vulkan-validationlayers
     libglfw3-dev xvfb xauth
-    libstb-dev libgtest-dev libbenchmark-dev time bc python3 clang-format
+    libstb-dev libgtest-dev libbenchmark-dev time bc python3 clang-format  # tools/check-layering.py, tools/check-format.sh
+    clang libclang-rt-14-dev    # the fuzz targets (libFuzzer), tools/fuzz.sh
 )
 
 missing=()

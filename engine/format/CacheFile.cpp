@@ -1,197 +1,211 @@
 #include "engine/format/CacheFile.h"
 
+#include <cerrno>
 #include <cstring>
+#include <deque>
 #include <fstream>
-#include <system_error>
+#include <new>
+#include <string>
+#include <vector>
 
-#include <unistd.h>
-
+#include "engine/core/AtomicFile.h"
 #include "engine/core/Error.h"
-#include "engine/core/PackedLayout.h"
-
-static_assert(__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__, "the cache format is little-endian");
+#include "engine/core/InputFile.h"
+#include "engine/format/CacheConsistency.h"
 
 namespace modeflow {
 namespace {
 
 constexpr char kMagic[16] = {'M', 'O', 'D', 'E', 'F', 'L', 'O', 'W', '-', 'B', 'A', 'S', 'I', 'S', 0, 0};
 constexpr size_t kHeaderSize = 16 + 4 + 4 + 8 + 8;
+/// The largest cache file read (64 GiB): far above any basis a precompute finishes, low enough that
+/// a damaged or hostile file cannot make the reader ask for terabytes.
+constexpr std::uintmax_t kMaxCacheBytes = std::uintmax_t{1} << 36;
 
-class Writer {
-public:
-    template <typename T>
-    void pod(const T& v) {
-        static_assert(std::is_trivially_copyable_v<T>);
-        mBytes.append(reinterpret_cast<const char*>(&v), sizeof(T));
-    }
-    void string(std::string_view s) {
-        pod<std::uint64_t>(s.size());
-        mBytes.append(s);
-    }
-    template <typename T>
-    void vector(const std::vector<T>& v) {
-        pod<std::uint64_t>(v.size());
-        mBytes.append(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(T));
-    }
-    void vector(const Eigen::VectorXd& v) {
-        pod<std::uint64_t>(std::uint64_t(v.size()));
-        mBytes.append(reinterpret_cast<const char*>(v.data()), size_t(v.size()) * sizeof(double));
-    }
-    void matrix(const Eigen::MatrixXd& m) {
-        pod<std::uint64_t>(std::uint64_t(m.rows()));
-        pod<std::uint64_t>(std::uint64_t(m.cols()));
-        mBytes.append(reinterpret_cast<const char*>(m.data()), size_t(m.size()) * sizeof(double));
-    }
-    const std::string& bytes() const { return mBytes; }
-
-private:
-    std::string mBytes;
-};
-
-class Reader {
-public:
-    Reader(std::string_view bytes, const std::filesystem::path& path) : mBytes(bytes), mPath(path) {}
-
-    template <typename T>
-    T pod() {
-        T v;
-        std::memcpy(&v, take(sizeof(T)), sizeof(T));
-        return v;
-    }
-    std::string string() {
-        const auto n = count(1);
-        return std::string(take(n), n);
-    }
-    template <typename T>
-    std::vector<T> vector() {
-        const auto n = count(sizeof(T));
-        std::vector<T> v(n);
-        std::memcpy(v.data(), take(n * sizeof(T)), n * sizeof(T));
-        return v;
-    }
-    Eigen::VectorXd eigenVector() {
-        const auto n = count(sizeof(double));
-        Eigen::VectorXd v(static_cast<Eigen::Index>(n));
-        std::memcpy(v.data(), take(n * sizeof(double)), n * sizeof(double));
-        return v;
-    }
-    Eigen::MatrixXd matrix() {
-        const auto rows = pod<std::uint64_t>();
-        const auto cols = pod<std::uint64_t>();
-        if (cols != 0 && rows > (mBytes.size() - mAt) / sizeof(double) / cols) corrupt();
-        Eigen::MatrixXd m(static_cast<Eigen::Index>(rows), static_cast<Eigen::Index>(cols));
-        std::memcpy(m.data(), take(rows * cols * sizeof(double)), rows * cols * sizeof(double));
-        return m;
-    }
-    bool atEnd() const { return mAt == mBytes.size(); }
-    [[noreturn]] void corrupt() const {
-        throw Error("cache file " + mPath.string() +
-                    " is corrupt (its contents do not match its layout); delete it or rerun "
-                    "precompute with --force");
-    }
-
-private:
-    std::uint64_t count(size_t elementSize) {
-        const auto n = pod<std::uint64_t>();
-        if (n > (mBytes.size() - mAt) / elementSize) corrupt();
-        return n;
-    }
-    const char* take(size_t n) {
-        if (n > mBytes.size() - mAt) corrupt();
-        const char* p = mBytes.data() + mAt;
-        mAt += n;
-        return p;
-    }
-    std::string_view mBytes;
-    size_t mAt = 0;
-    const std::filesystem::path& mPath;
-};
-
-std::string serialize(const BasisCache& c) {
-    Writer w;
-    w.string(c.key);
-    w.pod<std::int32_t>(c.grid.dim);
-    for (int r : c.grid.resolution) w.pod<std::int32_t>(r);
-    for (double x : c.grid.boundsMin) w.pod(x);
-    for (double x : c.grid.boundsMax) w.pod(x);
-    for (bool periodic : c.grid.periodic) w.pod<std::uint8_t>(periodic);
-    w.pod<std::int32_t>(int(c.wall));
-    w.pod<std::int32_t>(int(c.boundary));
-    w.vector(c.cellFraction);
-    w.vector(c.faces);
-    w.vector(c.faceStar);
-    w.vector(c.cells);
-    w.vector(c.cellStar);
-    w.vector(c.velocity.eigenvalues);
-    w.matrix(c.velocity.modes);
-    w.vector(c.velocity.modeNumbers);
-    w.pod<std::int32_t>(c.velocity.harmonic);
-    w.pod(c.velocity.penalty);
-    w.pod<std::int32_t>(int(c.scalar.boundary));
-    w.vector(c.scalar.cells);
-    w.vector(c.scalar.cellStar);
-    w.vector(c.scalar.eigenvalues);
-    w.matrix(c.scalar.modes);
-    w.pod<std::int32_t>(c.scalar.omittedConstants);
-    w.pod<std::int32_t>(int(c.coefficients.storage));
-    w.vector(c.coefficients.packed);
-    w.vector(c.coefficients.k);
-    w.vector(c.coefficients.i);
-    w.vector(c.coefficients.j);
-    w.vector(c.coefficients.value);
-    w.pod(c.coefficients.density);
-    w.pod<std::uint64_t>(c.timings.size());
-    for (const auto& [name, seconds] : c.timings) {
-        w.string(name);
-        w.pod(seconds);
-    }
-    w.pod<std::int32_t>(int(c.kind));
-    if (c.kind == BasisKind::Surface) {
-        std::vector<double> points;
-        for (const Vec3& p : c.surface.mesh.vertices) points.insert(points.end(), p.begin(), p.end());
-        std::vector<std::int32_t> corners;
-        for (const auto& t : c.surface.mesh.triangles) corners.insert(corners.end(), t.begin(), t.end());
-        std::vector<std::int32_t> ends;
-        for (const auto& e : c.surface.edges) ends.insert(ends.end(), e.begin(), e.end());
-        w.vector(points);
-        w.vector(corners);
-        w.vector(ends);
-        w.matrix(c.surface.advection);
-        w.matrix(c.surface.vertexVelocity);
-    }
-    return w.bytes();
+void putVector(ByteWriter& w, const Eigen::VectorXd& v) {
+    w.array(v.data(), std::size_t(v.size()));
 }
 
-/// The mesh and edges of a surface basis, refused unless every index and size fits the rest.
-void readSurface(Reader& r, BasisCache& c) {
+/// Field by field (no padding bytes in the file): waves, shifts, amplitudes.
+void putSeparable(ByteWriter& w, const std::vector<SeparableMode>& modes) {
+    w.pod<std::uint64_t>(modes.size());
+    for (const SeparableMode& m : modes) {
+        for (std::int32_t l : m.wave) w.pod(l);
+        for (std::uint8_t s : m.shift) w.pod(s);
+        for (double a : m.amplitude) w.pod(a);
+    }
+}
+
+std::vector<SeparableMode> takeSeparable(ByteReader& r) {
+    constexpr std::size_t kBytes = 3 * (sizeof(std::int32_t) + sizeof(std::uint8_t) + sizeof(double));
+    std::vector<SeparableMode> modes(r.count(kBytes));
+    for (SeparableMode& m : modes) {
+        for (std::int32_t& l : m.wave) l = r.pod<std::int32_t>();
+        for (std::uint8_t& s : m.shift) s = r.pod<std::uint8_t>();
+        for (double& a : m.amplitude) a = r.pod<double>();
+    }
+    return modes;
+}
+
+/// The next `count` doubles into `to`, which may be null when count is 0 (an empty vector's
+/// data()).
+void takeDoubles(ByteReader& r, double* to, std::size_t count) {
+    const std::string_view bytes = r.bytes(count * sizeof(double));
+    if (count != 0) std::memcpy(to, bytes.data(), bytes.size());
+}
+
+Eigen::VectorXd takeVector(ByteReader& r) {
+    const auto n = r.count(sizeof(double));
+    Eigen::VectorXd v(static_cast<Eigen::Index>(n));
+    takeDoubles(r, v.data(), n);
+    return v;
+}
+
+Eigen::MatrixXd takeMatrix(ByteReader& r) {
+    const auto rows = r.pod<std::uint64_t>();
+    const auto cols = r.pod<std::uint64_t>();
+    // An empty matrix keeps its other dimension (no scalar modes: cells × 0), which only a
+    // bound far beyond any grid limits.
+    constexpr std::uint64_t kMaxDimension = std::uint64_t{1} << 40;
+    if (rows > kMaxDimension || cols > kMaxDimension ||
+        (cols != 0 && rows > r.remaining() / sizeof(double) / cols))
+        r.fail("a matrix runs past the end");
+    Eigen::MatrixXd m(static_cast<Eigen::Index>(rows), static_cast<Eigen::Index>(cols));
+    takeDoubles(r, m.data(), rows * cols);
+    return m;
+}
+
+/// The payload as pieces to write one after another: the small records serialized, the large
+/// arrays (columns, coefficients) viewed where they lie, so that a cache of gigabytes (closed-form
+/// coefficients at N = 10 000) is never copied to be written.
+class Payload {
+public:
+    ByteWriter& small() { return mSmall.back(); }
+    /// A count and the values, viewed in place.
+    template <typename T>
+    void array(const T* values, std::size_t count) {
+        small().pod<std::uint64_t>(count);
+        view(values, count);
+    }
+    template <typename T>
+    void view(const T* values, std::size_t count) {
+        mViews.push_back({reinterpret_cast<const char*>(values), count * sizeof(T)});
+        mOrder.push_back(false);
+        mSmall.emplace_back();
+        mOrder.push_back(true);
+    }
+    /// The pieces in order.
+    std::vector<std::string_view> pieces() const {
+        std::vector<std::string_view> out;
+        std::size_t small = 0, view = 0;
+        out.push_back(mSmall[small++].bytes());
+        for (std::size_t p = 0; p < mOrder.size(); ++p)
+            out.push_back(mOrder[p] ? std::string_view(mSmall[small++].bytes()) : mViews[view++]);
+        return out;
+    }
+
+private:
+    std::deque<ByteWriter> mSmall = std::deque<ByteWriter>(1);
+    std::vector<std::string_view> mViews;
+    std::vector<bool> mOrder;  ///< after the first small piece: true small, false view
+};
+
+/// Rows, columns, then the values viewed in place.
+void putMatrix(Payload& p, const Eigen::MatrixXd& m) {
+    p.small().pod<std::uint64_t>(std::uint64_t(m.rows()));
+    p.small().pod<std::uint64_t>(std::uint64_t(m.cols()));
+    p.view(m.data(), std::size_t(m.size()));
+}
+
+/// A surface basis's mesh, edges and runtime matrices, as flat arrays of coordinates and indices.
+void putSurface(Payload& p, const BasisCache::Surface& s) {
+    std::vector<double> points;
+    for (const Vec3& v : s.mesh.vertices) points.insert(points.end(), v.begin(), v.end());
+    std::vector<std::int32_t> corners;
+    for (const auto& t : s.mesh.triangles) corners.insert(corners.end(), t.begin(), t.end());
+    std::vector<std::int32_t> ends;
+    for (const auto& e : s.edges) ends.insert(ends.end(), e.begin(), e.end());
+    p.small().vector(points);
+    p.small().vector(corners);
+    p.small().vector(ends);
+    putMatrix(p, s.advection);
+    putMatrix(p, s.vertexVelocity);
+}
+
+void serialize(const BasisCache& c, Payload& p) {
+    p.small().string(c.key);
+    p.small().pod<std::int32_t>(c.grid.dim);
+    for (int r : c.grid.resolution) p.small().pod<std::int32_t>(r);
+    for (double x : c.grid.boundsMin) p.small().pod(x);
+    for (double x : c.grid.boundsMax) p.small().pod(x);
+    for (bool periodic : c.grid.periodic) p.small().pod<std::uint8_t>(periodic);
+    p.small().pod<std::int32_t>(int(c.wall));
+    p.small().pod<std::int32_t>(int(c.boundary));
+    p.array(c.cellFraction.data(), c.cellFraction.size());
+    p.array(c.faces.data(), c.faces.size());
+    p.array(c.faceStar.data(), std::size_t(c.faceStar.size()));
+    p.array(c.cells.data(), c.cells.size());
+    p.array(c.cellStar.data(), std::size_t(c.cellStar.size()));
+    p.small().pod<std::int32_t>(int(c.velocity.source));
+    putVector(p.small(), c.velocity.eigenvalues);
+    putMatrix(p, c.velocity.modes);
+    putSeparable(p.small(), c.velocity.separable);
+    p.small().vector(c.velocity.modeNumbers);
+    p.small().pod<std::int32_t>(c.velocity.harmonic);
+    p.small().pod(c.velocity.penalty);
+    p.small().pod<std::int32_t>(int(c.scalar.boundary));
+    p.array(c.scalar.cells.data(), c.scalar.cells.size());
+    p.array(c.scalar.cellStar.data(), std::size_t(c.scalar.cellStar.size()));
+    p.small().pod<std::int32_t>(int(c.scalar.source));
+    putVector(p.small(), c.scalar.eigenvalues);
+    putMatrix(p, c.scalar.modes);
+    putSeparable(p.small(), c.scalar.separable);
+    p.small().pod<std::int32_t>(c.scalar.omittedConstants);
+    p.small().pod<std::int32_t>(int(c.coefficients.storage));
+    p.array(c.coefficients.packed.data(), c.coefficients.packed.size());
+    p.array(c.coefficients.k.data(), c.coefficients.k.size());
+    p.array(c.coefficients.i.data(), c.coefficients.i.size());
+    p.array(c.coefficients.j.data(), c.coefficients.j.size());
+    p.array(c.coefficients.value.data(), c.coefficients.value.size());
+    p.small().pod(c.coefficients.density);
+    p.small().pod<std::uint64_t>(c.timings.size());
+    for (const auto& [name, seconds] : c.timings) {
+        p.small().string(name);
+        p.small().pod(seconds);
+    }
+    p.small().pod<std::int32_t>(int(c.kind));
+    if (c.kind == BasisKind::Surface) putSurface(p, c.surface);
+}
+
+BasisSource takeSource(ByteReader& r) {
+    const auto value = r.pod<std::int32_t>();
+    if (value != int(BasisSource::Eigensolve) && value != int(BasisSource::ClosedForm))
+        r.fail("a basis source is out of range");
+    return BasisSource(value);
+}
+
+/// The mesh and edges of a surface basis; whether their indices and sizes fit the rest is
+/// requireConsistentCache's to check.
+void takeSurface(ByteReader& r, BasisCache::Surface& s) {
     const std::vector<double> points = r.vector<double>();
     const std::vector<std::int32_t> corners = r.vector<std::int32_t>();
     const std::vector<std::int32_t> ends = r.vector<std::int32_t>();
-    c.surface.advection = r.matrix();
-    c.surface.vertexVelocity = r.matrix();
-    if (points.size() % 3 != 0 || corners.size() % 3 != 0 || ends.size() % 2 != 0) r.corrupt();
-    const auto vertices = std::int64_t(points.size() / 3);
-    for (const std::int32_t v : corners)
-        if (v < 0 || v >= vertices) r.corrupt();
-    for (const std::int32_t v : ends)
-        if (v < 0 || v >= vertices) r.corrupt();
+    s.advection = takeMatrix(r);
+    s.vertexVelocity = takeMatrix(r);
+    if (points.size() % 3 != 0 || corners.size() % 3 != 0 || ends.size() % 2 != 0)
+        r.fail("its surface's points, triangles or edges are not whole");
     for (std::size_t i = 0; i < points.size(); i += 3)
-        c.surface.mesh.vertices.push_back({points[i], points[i + 1], points[i + 2]});
+        s.mesh.vertices.push_back({points[i], points[i + 1], points[i + 2]});
     for (std::size_t i = 0; i < corners.size(); i += 3)
-        c.surface.mesh.triangles.push_back({corners[i], corners[i + 1], corners[i + 2]});
-    for (std::size_t i = 0; i < ends.size(); i += 2) c.surface.edges.push_back({ends[i], ends[i + 1]});
-    const auto edges = Eigen::Index(c.surface.edges.size());
-    if (c.faceStar.size() != edges || c.velocity.modes.rows() != edges ||
-        c.cellStar.size() != Eigen::Index(c.surface.mesh.triangles.size()) ||
-        c.scalar.cellStar.size() != vertices || c.scalar.modes.rows() != vertices ||
-        c.surface.advection.rows() != Eigen::Index(pairCount(std::size_t(c.scalar.modes.cols()))) ||
-        c.surface.advection.cols() != c.velocity.modes.cols() || c.surface.vertexVelocity.rows() != 3 * vertices ||
-        c.surface.vertexVelocity.cols() != c.velocity.modes.cols())
-        r.corrupt();
+        s.mesh.triangles.push_back({corners[i], corners[i + 1], corners[i + 2]});
+    for (std::size_t i = 0; i < ends.size(); i += 2) s.edges.push_back({ends[i], ends[i + 1]});
 }
 
-BasisCache deserialize(std::string_view payload, const std::filesystem::path& path) {
-    Reader r(payload, path);
+BasisCache deserialize(std::string_view payload, const std::string& where) {
+    ByteReader r(payload, [&](std::string_view why) {
+        return where + " is corrupt (" + std::string(why) +
+               "); delete it or rerun precompute with --force";
+    });
     BasisCache c;
     c.key = r.string();
     c.grid.dim = r.pod<std::int32_t>();
@@ -203,19 +217,23 @@ BasisCache deserialize(std::string_view payload, const std::filesystem::path& pa
     c.boundary = BoundaryTreatment(r.pod<std::int32_t>());
     c.cellFraction = r.vector<double>();
     c.faces = r.vector<std::int64_t>();
-    c.faceStar = r.eigenVector();
+    c.faceStar = takeVector(r);
     c.cells = r.vector<std::int64_t>();
-    c.cellStar = r.eigenVector();
-    c.velocity.eigenvalues = r.eigenVector();
-    c.velocity.modes = r.matrix();
+    c.cellStar = takeVector(r);
+    c.velocity.source = takeSource(r);
+    c.velocity.eigenvalues = takeVector(r);
+    c.velocity.modes = takeMatrix(r);
+    c.velocity.separable = takeSeparable(r);
     c.velocity.modeNumbers = r.vector<int>();
     c.velocity.harmonic = r.pod<std::int32_t>();
     c.velocity.penalty = r.pod<double>();
     c.scalar.boundary = ScalarBoundary(r.pod<std::int32_t>());
     c.scalar.cells = r.vector<std::int64_t>();
-    c.scalar.cellStar = r.eigenVector();
-    c.scalar.eigenvalues = r.eigenVector();
-    c.scalar.modes = r.matrix();
+    c.scalar.cellStar = takeVector(r);
+    c.scalar.source = takeSource(r);
+    c.scalar.eigenvalues = takeVector(r);
+    c.scalar.modes = takeMatrix(r);
+    c.scalar.separable = takeSeparable(r);
     c.scalar.omittedConstants = r.pod<std::int32_t>();
     c.coefficients.storage = BasisCache::Coefficients::Storage(r.pod<std::int32_t>());
     c.coefficients.packed = r.vector<double>();
@@ -230,18 +248,13 @@ BasisCache deserialize(std::string_view payload, const std::filesystem::path& pa
         c.timings.emplace_back(std::move(name), r.pod<double>());
     }
     const auto kind = r.pod<std::int32_t>();
-    if (kind != int(BasisKind::Grid) && kind != int(BasisKind::Surface)) r.corrupt();
+    if (kind != int(BasisKind::Grid) && kind != int(BasisKind::Surface))
+        r.fail("its basis kind is out of range");
     c.kind = BasisKind(kind);
-    if (c.kind == BasisKind::Surface) readSurface(r, c);
-    if (!r.atEnd()) r.corrupt();
+    if (c.kind == BasisKind::Surface) takeSurface(r, c.surface);
+    if (!r.atEnd()) r.fail("bytes follow its last record");
+    requireConsistentCache(c, where);
     return c;
-}
-
-std::string readAll(const std::filesystem::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw Error("cannot open cache file " + path.string() + ": " +
-                         std::error_code(errno, std::generic_category()).message());
-    return std::string(std::istreambuf_iterator<char>(in), {});
 }
 
 struct Header {
@@ -249,84 +262,110 @@ struct Header {
     std::uint64_t payloadSize = 0;
 };
 
-Header parseHeader(std::string_view bytes, const std::filesystem::path& path) {
-    const std::string where = "cache file " + path.string();
-    if (bytes.size() < sizeof(kMagic) || std::memcmp(bytes.data(), kMagic, sizeof(kMagic)) != 0)
-        throw Error(where + " is not a modeflow basis cache (bad magic)");
-    if (bytes.size() < kHeaderSize) throw Error(where + " is truncated (incomplete header)");
-    std::uint32_t version;
-    std::memcpy(&version, bytes.data() + 16, 4);
+Header parseHeader(std::string_view bytes, const std::string& where) {
+    if (!hasCacheMagic(bytes)) throw Error(where + " is not a modeflow basis cache (bad magic)");
+    ByteReader r(bytes,
+                 [&](std::string_view) { return where + " is truncated (incomplete header)"; });
+    r.bytes(sizeof kMagic);
+    const auto version = r.pod<std::uint32_t>();
     if (version != kCacheFormatVersion)
         throw Error(where + " has format version " + std::to_string(version) +
                     ", this modeflow reads version " + std::to_string(kCacheFormatVersion) +
                     "; rerun precompute to rebuild it");
+    r.pod<std::uint32_t>();  // reserved
     Header h;
-    std::memcpy(&h.keyHash, bytes.data() + 24, 8);
-    std::memcpy(&h.payloadSize, bytes.data() + 32, 8);
+    h.keyHash = r.pod<std::uint64_t>();
+    h.payloadSize = r.pod<std::uint64_t>();
     return h;
+}
+
+/// An open cache file and its size, after the checks of inputFileSize.
+struct OpenCache {
+    std::string where;
+    std::ifstream in;
+    std::uintmax_t size = 0;
+};
+
+OpenCache openCache(const std::filesystem::path& path) {
+    OpenCache file;
+    file.where = "cache file " + path.string();
+    file.size = inputFileSize(path, "cache file", kMaxCacheBytes);
+    file.in.open(path, std::ios::binary);
+    if (!file.in)
+        throw Error(path.string() + ": cannot open the cache file (" + std::strerror(errno) + ")");
+    return file;
+}
+
+/// The header, read alone: a file that is no cache is refused before its bulk is read.
+Header readHeader(OpenCache& file) {
+    std::string header(kHeaderSize, '\0');
+    file.in.read(header.data(), std::streamsize(kHeaderSize));
+    header.resize(size_t(file.in.gcount()));
+    return parseHeader(header, file.where);
 }
 
 }  // namespace
 
 void writeCache(const std::filesystem::path& path, const BasisCache& cache) {
-    const std::string payload = serialize(cache);
-    Writer w;
-    w.pod(kMagic);
-    w.pod(kCacheFormatVersion);
-    w.pod<std::uint32_t>(0);
-    w.pod(fnv1a64(cache.key));
-    w.pod<std::uint64_t>(payload.size());
-    const std::uint64_t checksum = fnv1a64(payload);
-
-    const std::filesystem::path tmp =
-        path.parent_path() / (path.filename().string() + ".tmp." + std::to_string(::getpid()));
-    {
-        std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-        if (!out) throw Error("cannot write cache file " + tmp.string() + ": " +
-                              std::error_code(errno, std::generic_category()).message());
-        out.write(w.bytes().data(), std::streamsize(w.bytes().size()));
-        out.write(payload.data(), std::streamsize(payload.size()));
-        out.write(reinterpret_cast<const char*>(&checksum), sizeof(checksum));
-        out.flush();
-        if (!out) {
-            out.close();
-            std::filesystem::remove(tmp);
-            throw Error("writing cache file " + tmp.string() + " failed (disk full?)");
-        }
+    Payload payload;
+    serialize(cache, payload);
+    const std::vector<std::string_view> pieces = payload.pieces();
+    std::uint64_t size = 0, hash = fnv1a64({});
+    for (const std::string_view piece : pieces) {
+        size += piece.size();
+        hash = fnv1a64(piece, hash);
     }
-    std::error_code ec;
-    std::filesystem::rename(tmp, path, ec);
-    if (ec) {
-        std::filesystem::remove(tmp);
-        throw Error("cannot move cache file into place at " + path.string() + ": " + ec.message());
-    }
+    ByteWriter header;
+    header.pod(kMagic);
+    header.pod(kCacheFormatVersion);
+    header.pod<std::uint32_t>(0);
+    header.pod(fnv1a64(cache.key));
+    header.pod<std::uint64_t>(size);
+    ByteWriter checksum;
+    checksum.pod(hash);
+    std::vector<std::string_view> file{header.bytes()};
+    file.insert(file.end(), pieces.begin(), pieces.end());
+    file.push_back(checksum.bytes());
+    writeFileAtomically(path, file, "cache file");
 }
 
 BasisCache readCache(const std::filesystem::path& path) {
-    const std::string bytes = readAll(path);
-    const Header h = parseHeader(bytes, path);
-    if (bytes.size() != kHeaderSize + h.payloadSize + 8)
-        throw Error("cache file " + path.string() + " is truncated or has trailing bytes (" +
-                    std::to_string(bytes.size()) + " bytes, expected " +
-                    std::to_string(kHeaderSize + h.payloadSize + 8) + ")");
-    const std::string_view payload(bytes.data() + kHeaderSize, h.payloadSize);
-    std::uint64_t checksum;
-    std::memcpy(&checksum, bytes.data() + kHeaderSize + h.payloadSize, 8);
-    if (checksum != fnv1a64(payload))
-        throw Error("cache file " + path.string() + " is corrupt (checksum mismatch)");
-    BasisCache c = deserialize(payload, path);
+    OpenCache file = openCache(path);
+    const Header h = readHeader(file);
+    const std::string& where = file.where;
+    if (h.payloadSize > file.size)
+        throw Error(where + " is truncated (" + std::to_string(file.size) +
+                    " bytes, its header declares a payload of " + std::to_string(h.payloadSize) +
+                    ")");
+    if (file.size != kHeaderSize + h.payloadSize + 8)
+        throw Error(where + " is truncated or has trailing bytes (" + std::to_string(file.size) +
+                    " bytes, expected " + std::to_string(kHeaderSize + h.payloadSize + 8) + ")");
+    std::string payload;
+    try {
+        payload.resize(size_t(h.payloadSize));
+    } catch (const std::bad_alloc&) {
+        throw Error("not enough memory to read " + where + " (" + std::to_string(file.size) +
+                    " bytes)");
+    }
+    std::uint64_t checksum = 0;
+    file.in.read(payload.data(), std::streamsize(payload.size()));
+    file.in.read(reinterpret_cast<char*>(&checksum), sizeof checksum);
+    if (!file.in)
+        throw Error(where + " could not be read to its end (it changed while it was read?)");
+    if (checksum != fnv1a64(payload)) throw Error(where + " is corrupt (checksum mismatch)");
+    BasisCache c = deserialize(payload, where);
     if (fnv1a64(c.key) != h.keyHash)
-        throw Error("cache file " + path.string() + " is corrupt (key does not match its hash)");
+        throw Error(where + " is corrupt (key does not match its hash)");
     return c;
 }
 
+bool hasCacheMagic(std::string_view bytes) {
+    return bytes.size() >= sizeof(kMagic) && std::memcmp(bytes.data(), kMagic, sizeof(kMagic)) == 0;
+}
+
 std::uint64_t readCacheKeyHash(const std::filesystem::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw Error("cannot open cache file " + path.string());
-    std::string header(kHeaderSize, '\0');
-    in.read(header.data(), std::streamsize(kHeaderSize));
-    header.resize(size_t(in.gcount()));
-    return parseHeader(header, path).keyHash;
+    OpenCache file = openCache(path);
+    return readHeader(file).keyHash;
 }
 
 }  // namespace modeflow

@@ -20,7 +20,7 @@ std::vector<double> obstacleMismatch(const BasisCache& cache, std::span<const do
         const FaceLocation location = locateFace(grid, face);
         const Vec3 centre = faceCentre(grid, location);
         for (std::size_t o = 0; o < obstacles.size(); ++o)
-            if (obstacles[o].covers(centre, centres[o], grid.dim)) {
+            if (obstacles[o].covers(centre, centres[o], grid)) {
                 mismatch[std::size_t(face)] = faceField[std::size_t(face)] - velocities[o][location.axis];
                 break;  // the first obstacle covering a face sets its velocity
             }
@@ -28,10 +28,14 @@ std::vector<double> obstacleMismatch(const BasisCache& cache, std::span<const do
     return mismatch;
 }
 
+Eigen::VectorXd obstacleCorrection(const VelocityBasis& basis, std::span<const double> faceField,
+                                   std::span<const MovingObstacle> obstacles, double t) {
+    return projectFaceField(basis, obstacleMismatch(basis.cache(), faceField, obstacles, t));
+}
+
 Eigen::VectorXd obstacleCorrection(const BasisCache& cache, std::span<const double> faceField,
                                    std::span<const MovingObstacle> obstacles, double t) {
-    const std::vector<double> mismatch = obstacleMismatch(cache, faceField, obstacles, t);
-    return projectFaceField(cache, mismatch);
+    return obstacleCorrection(VelocityBasis(cache), faceField, obstacles, t);
 }
 
 }  // namespace modeflow::reference

@@ -17,6 +17,13 @@ bool SmokeEmitter::contains(const Vec3& point, int dim) const {
     return distance2 <= radius * radius;
 }
 
+bool SmokeEmitter::contains(const Vec3& worldPoint, const MacGrid& grid) const {
+    const Vec3 middle = shape == EmitterShape::Box
+                            ? Vec3{0.5 * (min[0] + max[0]), 0.5 * (min[1] + max[1]), 0.5 * (min[2] + max[2])}
+                            : centre;
+    return contains(grid.nearestImage(worldPoint, middle), grid.dim);
+}
+
 SmokeEmitter emitterFromSource(const SourceSpec& source) {
     SmokeEmitter emitter;
     switch (source.shape.kind) {
@@ -61,7 +68,7 @@ void applyEmitters(const MacGrid& smokeGrid, std::span<const std::uint8_t> fluid
                 if (!fluidMask[c]) continue;
                 const Vec3 centre{smokeGrid.cellCentre(0, x), smokeGrid.cellCentre(1, y), smokeGrid.cellCentre(2, z)};
                 for (const SmokeEmitter& emitter : emitters)
-                    if (emitter.contains(centre, smokeGrid.dim)) {
+                    if (emitter.contains(centre, smokeGrid)) {
                         density[c] += emitter.densityRate * dt;
                         temperature[c] += emitter.temperatureRate * dt;
                     }

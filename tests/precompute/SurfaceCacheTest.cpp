@@ -1,4 +1,4 @@
-/// A surface basis in a cache file (format version 4): it reads back whole, and a surface block
+/// A surface basis in a cache file (format version 5): it reads back whole, and a surface block
 /// whose indices or sizes do not fit the rest is refused as corrupt, never misread.
 
 #include <gtest/gtest.h>
