@@ -21,6 +21,7 @@ struct BackendCapabilities {
     bool mhd = false;         ///< [simulation].mhd
     bool trapezoidal = false;  ///< [simulation].integrator = "trapezoidal"
     bool stageTimes = false;  ///< per-stage times in FrameStats
+    bool surfaces = false;    ///< surface scenes ([surface])
 };
 
 /// The row of the table for `kind`.
