@@ -7,19 +7,36 @@
 # findings. A finding stops its target and leaves the input in
 # build-fuzz/tests/fuzz/run/<target>/findings/; the script then exits 1. Fix it, and keep the
 # input as a regression test: copy it to tests/fuzz/regressions/<target>/ (FuzzRegressionTest
-# replays every file there). `tools/fuzz.sh --build-only` only builds (tools/run-tests.sh).
+# replays every file there). `tools/fuzz.sh --build-only` only builds, for the short runs of
+# tools/run-tests.sh (10 s a target); `tools/fuzz.sh --available` says whether clang++ can link
+# libFuzzer here (exit 0) or not (exit 1).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build="$root/build-fuzz"
+
+# Whether clang++ links a libFuzzer target (Debian: the clang and libclang-rt-14-dev packages).
+fuzzer_available() {
+    command -v clang++ >/dev/null || return 1
+    local probe
+    probe=$(mktemp -d)
+    echo 'extern "C" int LLVMFuzzerTestOneInput(const unsigned char*, unsigned long) { return 0; }' >"$probe/probe.cpp"
+    local status=0
+    clang++ -fsanitize=fuzzer "$probe/probe.cpp" -o "$probe/probe" >/dev/null 2>&1 || status=1
+    rm -rf "$probe"
+    return $status
+}
+
 seconds=10
 build_only=0
 case "${1:-60}" in
+    --available) fuzzer_available; exit ;;
     --build-only) build_only=1 ;;
-    *[!0-9]* | "") echo "usage: tools/fuzz.sh [SECONDS | --build-only]" >&2; exit 2 ;;
+    *[!0-9]* | "") echo "usage: tools/fuzz.sh [SECONDS | --build-only | --available]" >&2; exit 2 ;;
     *) seconds=${1:-60} ;;
 esac
 
 "$root/tools/install-deps.sh"
+fuzzer_available || { echo "tools/fuzz.sh: clang++ cannot link libFuzzer here (-fsanitize=fuzzer)" >&2; exit 1; }
 cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER=clang++ \
     -DMODEFLOW_FUZZ=ON -DMODEFLOW_FUZZ_SECONDS="$seconds" -DMODEFLOW_BUILD_TESTS=OFF \
     -DMODEFLOW_BUILD_BENCHMARKS=OFF >/dev/null

@@ -2,13 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <numbers>
 #include <random>
 #include <string>
 
 #include "engine/core/Error.h"
 #include "engine/core/NumberText.h"
+#include "engine/dynamics/ModalDivergence.h"
 
 namespace modeflow {
 namespace {
@@ -65,8 +65,8 @@ void requireRepresentableState(const Eigen::VectorXd& state, const std::string& 
         if (!std::isfinite(state[i]))
             throw Error(what + ": the modal state is not finite (mode " + std::to_string(i + 1) +
                         " is " + numberText(state[i]) + ")");
-    // The largest |v| with |v|⁴ finite; stableNorm() itself does not overflow before |v| does.
-    static const double largest = std::pow(std::numeric_limits<double>::max(), 0.25);
+    // stableNorm() itself does not overflow before |v| does.
+    const double largest = largestSteppableNorm();
     const double norm = state.stableNorm();
     if (norm > largest)
         throw Error(what + ": the modal state is too large for double precision: |v| = " +

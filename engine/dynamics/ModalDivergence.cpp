@@ -1,5 +1,8 @@
 #include "engine/dynamics/ModalDivergence.h"
 
+#include <cmath>
+#include <limits>
+
 #include "engine/core/NumberText.h"
 
 namespace modeflow {
@@ -10,8 +13,15 @@ ModalStateDiverged::ModalStateDiverged(long step, double time)
       mStep(step),
       mTime(time) {}
 
+double largestSteppableNorm() {
+    static const double largest = std::pow(std::numeric_limits<double>::max(), 0.25);
+    return largest;
+}
+
 void requireFiniteModalState(const Eigen::VectorXd& state, long step, double time) {
-    if (!state.allFinite()) throw ModalStateDiverged(step, time);
+    // stableNorm() does not overflow before the state does.
+    if (!state.allFinite() || state.stableNorm() > largestSteppableNorm())
+        throw ModalStateDiverged(step, time);
 }
 
 std::string divergenceAdvice(const ModalStateDiverged& diverged, std::string_view integrator,

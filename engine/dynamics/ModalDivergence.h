@@ -26,8 +26,14 @@ private:
     double mTime;
 };
 
+/// The largest |v| a step can take: |v|⁴ must be finite, because a step takes norms of the
+/// quadratic term C·v·v (about 1.2e77).
+double largestSteppableNorm();
+
 /// @throw ModalStateDiverged when `state` (v, or [v; F] with MHD) has a NaN or infinite entry
-/// after step `step` (counted from t = 0), at time `time`.
+/// after step `step` (counted from t = 0), at time `time`, or a norm above
+/// largestSteppableNorm(): still finite, but the next step and the face velocity a frame
+/// reconstructs from it would overflow.
 void requireFiniteModalState(const Eigen::VectorXd& state, long step, double time);
 
 /// The message for a user: the error's own, then "; <integrator> is unstable at this step size:

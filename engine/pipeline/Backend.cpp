@@ -43,6 +43,7 @@ std::string Backend::describe() const {
 }
 
 std::unique_ptr<Simulator> Backend::makeSimulator(const RunInputs& run, bool stageTimes) const {
+    requireSupport(run.scene, mKind);
     std::unique_ptr<Simulator> simulator;
     if (mKind == BackendKind::Vulkan)
         simulator = std::make_unique<device::Simulation>(*mContext, run.cache, *run.coefficients, run.settings,
@@ -55,6 +56,7 @@ std::unique_ptr<Simulator> Backend::makeSimulator(const RunInputs& run, bool sta
 }
 
 std::unique_ptr<ModalStepping> Backend::makeModalStepper(const RunInputs& run, Integrator scheme) const {
+    requireSupport(run.scene, mKind);
     std::unique_ptr<ModalStepping> stepper;
     if (mKind == BackendKind::Vulkan) {
         auto device = std::make_unique<device::ModalStepper>(*mContext, *run.coefficients, device::modelOf(run.settings),

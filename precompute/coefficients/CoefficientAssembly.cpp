@@ -82,31 +82,6 @@ ElementSampling sampleElements(const CubicalComplex& cx, const CutCellMeasures& 
     return s;
 }
 
-/// packed(:, pair(k,j)) += Ωᵀ R(k,j), R_e(k,j) = P_ek Q_ej − Q_ek P_ej, in blocks of pairs so the
-/// products are matrix-matrix (cache friendly, threaded by Eigen).
-void accumulate(const Eigen::MatrixXd& omega, const Eigen::MatrixXd& p, const Eigen::MatrixXd& q,
-                std::vector<double>& packed) {
-    const int modes = int(p.cols());
-    const Eigen::Index elements = p.rows();
-    const std::size_t pairs = pairCount(std::size_t(modes));
-    std::vector<int> pairK(pairs), pairJ(pairs);
-    for (int k = 0, at = 0; k < modes; ++k)
-        for (int j = k + 1; j < modes; ++j, ++at) pairK[at] = k, pairJ[at] = j;
-
-    Eigen::Map<Eigen::MatrixXd> out(packed.data(), modes, Eigen::Index(pairs));
-    constexpr Eigen::Index kBlock = 256;
-    Eigen::MatrixXd r(elements, kBlock);
-    for (Eigen::Index start = 0; start < Eigen::Index(pairs); start += kBlock) {
-        const Eigen::Index count = std::min<Eigen::Index>(kBlock, Eigen::Index(pairs) - start);
-#pragma omp parallel for schedule(static)
-        for (Eigen::Index m = 0; m < count; ++m) {
-            const int k = pairK[size_t(start + m)], j = pairJ[size_t(start + m)];
-            r.col(m) = p.col(k).cwiseProduct(q.col(j)) - q.col(k).cwiseProduct(p.col(j));
-        }
-        out.middleCols(start, count).noalias() += omega.transpose() * r.leftCols(count);
-    }
-}
-
 /// Appends the rows of `m` to `rows`.
 void appendRows(const ColSparse& m, SparseRows& rows) {
     const Eigen::SparseMatrix<double, Eigen::RowMajor> byRow = m;
@@ -137,6 +112,29 @@ constexpr std::int64_t kElementBlock = 1 << 16;
 
 }  // namespace
 
+void accumulateCrossProducts(const Eigen::MatrixXd& omega, const Eigen::MatrixXd& p, const Eigen::MatrixXd& q,
+                             std::vector<double>& packed) {
+    const int modes = int(p.cols());
+    const Eigen::Index elements = p.rows();
+    const std::size_t pairs = pairCount(std::size_t(modes));
+    std::vector<int> pairK(pairs), pairJ(pairs);
+    for (int k = 0, at = 0; k < modes; ++k)
+        for (int j = k + 1; j < modes; ++j, ++at) pairK[at] = k, pairJ[at] = j;
+
+    Eigen::Map<Eigen::MatrixXd> out(packed.data(), modes, Eigen::Index(pairs));
+    constexpr Eigen::Index kBlock = 256;
+    Eigen::MatrixXd r(elements, kBlock);
+    for (Eigen::Index start = 0; start < Eigen::Index(pairs); start += kBlock) {
+        const Eigen::Index count = std::min<Eigen::Index>(kBlock, Eigen::Index(pairs) - start);
+#pragma omp parallel for schedule(static)
+        for (Eigen::Index m = 0; m < count; ++m) {
+            const int k = pairK[size_t(start + m)], j = pairJ[size_t(start + m)];
+            r.col(m) = p.col(k).cwiseProduct(q.col(j)) - q.col(k).cwiseProduct(p.col(j));
+        }
+        out.middleCols(start, count).noalias() += omega.transpose() * r.leftCols(count);
+    }
+}
+
 BasisCache::Quadrature vorticityQuadrature(const CubicalComplex& complex,
                                            const CutCellMeasures& measures, const CutCellDec& dec) {
     const int n = complex.dim();
@@ -163,7 +161,7 @@ std::vector<double> assembleStructuralCoefficients(const BasisCache::Quadrature&
         const Eigen::MatrixXd omega = rowBlock(quadrature.curl, first, count, modes.rows()) * modes;
         const Eigen::MatrixXd p = rowBlock(quadrature.velocityB, first, count, modes.rows()) * modes;
         const Eigen::MatrixXd q = rowBlock(quadrature.velocityC, first, count, modes.rows()) * modes;
-        accumulate(omega, p, q, packed);
+        accumulateCrossProducts(omega, p, q, packed);
     }
     return packed;
 }

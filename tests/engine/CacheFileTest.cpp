@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -130,6 +131,25 @@ TEST(CacheFileTest, AWellFormedButInconsistentBasisIsRefused) {
               }).find("grid bounds"),
               std::string::npos);
     EXPECT_EQ(errorOfDamaged([](BasisCache&) {}), "accepted") << "the undamaged basis";
+}
+
+TEST(CacheFileTest, AnEarlierFormatIsRefusedByItsVersion) {
+    // Format 6 added the vorticity quadrature: a format-5 file (same magic) must be rebuilt.
+    const TestFolder folder;
+    const fs::path file = folder / "old.mfbasis";
+    writeCache(file, smallBasis());
+    {
+        std::fstream f(file, std::ios::in | std::ios::out | std::ios::binary);
+        const std::uint32_t previous = kCacheFormatVersion - 1;
+        f.seekp(16);  // after the magic
+        f.write(reinterpret_cast<const char*>(&previous), sizeof previous);
+    }
+    const std::string message = readError(file);
+    EXPECT_NE(message.find("has format version " + std::to_string(kCacheFormatVersion - 1) +
+                           ", this modeflow reads version " + std::to_string(kCacheFormatVersion)),
+              std::string::npos)
+        << message;
+    EXPECT_NE(message.find("rerun precompute"), std::string::npos) << message;
 }
 
 TEST(CacheFileTest, TheQuadratureAndAMissingTensorRoundTrip) {

@@ -49,12 +49,21 @@ velocity = "random"
 magnetic_energy = 0.5'
 scene box "$box" 4 ""
 scene wholebox "$wholebox" 6 ""
+# A fluid on an icosahedron's surface: a surface basis (mesh, edges, advection, vertex velocities).
+t=1.618033988749895
+printf 'v %s\n' "-1 $t 0" "1 $t 0" "-1 -$t 0" "1 -$t 0" "0 -1 $t" "0 1 $t" "0 -1 -$t" "0 1 -$t" \
+    "$t 0 -1" "$t 0 1" "-$t 0 -1" "-$t 0 1" >"$work/icosahedron.obj"
+printf 'f %s\n' "1 12 6" "1 6 2" "1 2 8" "1 8 11" "1 11 12" "2 6 10" "6 12 5" "12 11 3" "11 8 7" \
+    "8 2 9" "4 10 5" "4 5 3" "4 3 7" "4 7 9" "4 9 10" "5 10 6" "3 5 12" "7 3 11" "9 7 8" "10 9 2" \
+    >>"$work/icosahedron.obj"
+scene surface "[surface]
+mesh = \"icosahedron.obj\"" 4 ""
 # No tensor, only the vorticity quadrature (the extra line lands in [basis]).
-scene disk_tensor_free "$disk" 3 'coefficients = "tensor-free"' 
+scene disk_tensor_free "$disk" 3 'coefficients = "tensor-free"'
 
 caches="$here/corpus/CacheReader" checkpoints="$here/corpus/CheckpointReader"
 mkdir -p "$caches" "$checkpoints"
-for name in disk box wholebox disk_tensor_free; do
+for name in disk box wholebox surface disk_tensor_free; do
     # A folder per scene: disk and disk_tensor_free share their basis key.
     cache=$("$modeflow" precompute "$work/$name.toml" --cache-dir "$work/cache_$name" 2>/dev/null | tail -n 1)
     cp "$cache" "$caches/$name.mfbasis"

@@ -157,6 +157,40 @@ TEST_F(Cli, TensorFreeScenesStoreNoTensorAndRunLikeDenseOnes) {
         EXPECT_NEAR(energies[step] / expected[step], 1.0, 1e-5) << "step " << step << " on the device";
 }
 
+TEST_F(Cli, TensorFreeIsRefusedForClosedFormAndSurfaceBases) {
+    // A whole box with free-slip walls has closed-form bases: no columns, no vorticity quadrature.
+    const std::string box = "[grid]\nresolution = [4, 3, 3]\nbounds_min = [0.0, 0.0, 0.0]\n"
+                            "bounds_max = [1.0, 1.0, 1.0]\n[basis]\nvelocity_modes = 6\nscalar_modes = 1\n";
+    const fs::path free = scene("box_free.toml", box + "coefficients = \"tensor-free\"\n");
+    const std::string closedForm = "a whole box with free-slip walls gets closed-form bases";
+    expectRejected("precompute " + free.string() + " --cache-dir " + mCache.string(), closedForm);
+    // Its cache made by auto (sparse coefficients), then the scene asks for tensor-free: refused
+    // when the run loads the cache, on either backend.
+    const fs::path automatic = scene("box_auto.toml", box);
+    const RunResult made = run("precompute " + automatic.string() + " --cache-dir " + mCache.string());
+    ASSERT_EQ(made.status, 0) << made.err;
+    for (const char* device : {"cpu", "vulkan"}) {
+        const RunResult r = run("modes " + free.string() + " --steps 2 --csv --device " + device +
+                                " --cache-dir " + mCache.string());
+        EXPECT_NE(r.status, 0) << device;
+        EXPECT_NE(r.err.find("modeflow: error: [basis].coefficients = \"tensor-free\": a closed-form basis"),
+                  std::string::npos)
+            << device << ": " << r.err;
+    }
+
+    // A surface's coefficients are always assembled: refused when the scene is read.
+    std::ofstream(mDir / "tetrahedron.obj") << "v 1 1 1\nv 1 -1 -1\nv -1 1 -1\nv -1 -1 1\n"
+                                               "f 1 2 3\nf 1 4 2\nf 1 3 4\nf 2 4 3\n";
+    const fs::path surface = scene("surface_free.toml",
+                                   "[surface]\nmesh = \"tetrahedron.obj\"\n[basis]\nvelocity_modes = 2\n"
+                                   "scalar_modes = 1\ncoefficients = \"tensor-free\"\n");
+    fs::remove_all(mCache);
+    expectRejected("precompute " + surface.string() + " --cache-dir " + mCache.string(),
+                   "[basis].coefficients");
+    expectRejected("modes " + surface.string() + " --cache-dir " + mCache.string(),
+                   "always assembled (tensor-free advection runs on grid bases only)");
+}
+
 TEST_F(Cli, InspectSaysWhichAxesArePeriodic) {
     // A channel periodic along x: one harmonic field, the uniform flow along it.
     const fs::path s = scene("channel.toml", R"(

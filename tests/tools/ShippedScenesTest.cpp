@@ -1,7 +1,9 @@
 /// Every scene under scenes/ runs end to end with the real `modeflow` binary, one test per scene
-/// (named after it), found when the test runs: `run --frames 2` on each backend (the frames read
-/// back, the resume checkpoint holds a finite state, moving when the scene sets anything going),
-/// and `modes` for a few steps (finite energy).
+/// (named after it), found when the test runs: `run --frames 2` on each backend that supports
+/// the scene (the frames read back: VDB files, or PLY files for surface scenes; the resume
+/// checkpoint holds a finite state, moving when the scene sets anything going), the refusal with
+/// the capability table's message on each backend that does not (before any precompute), and
+/// `modes` for a few steps (finite energy).
 /// tests/CMakeLists.txt rebuilds this test when a scene file is added or removed, so that CTest's
 /// list follows scenes/.
 ///
@@ -27,6 +29,7 @@
 
 #include <gtest/gtest.h>
 
+#include "engine/output/PlyFrame.h"
 #include "engine/output/VdbFrame.h"
 #include "engine/simulation/Checkpoint.h"
 #include "tests/support/CliFixture.h"
@@ -54,7 +57,16 @@ protected:
         const RunResult r = run("run " + s.file.string() + " --frames " + std::to_string(kFrames) + " --device " +
                                 backend + " --out " + out.string() + " --cache-dir " + mCache.string());
         ASSERT_EQ(r.status, 0) << "run --device " << backend << ": " << r.err;
-        for (int frame = 1; frame <= kFrames; ++frame) {
+        for (int frame = 1; frame <= kFrames && s.scene.isSurface(); ++frame) {
+            // A surface scene's frames are PLY files: a header for its mesh, the binary data after it.
+            const fs::path ply = out / plyFrameFileName(s.scene.name, frame);
+            ASSERT_TRUE(fs::exists(ply)) << ply;
+            const std::string text = slurp(ply);
+            EXPECT_EQ(text.rfind("ply\nformat binary_little_endian 1.0\n", 0), 0u) << ply;
+            EXPECT_NE(text.find("comment frame " + std::to_string(frame) + "\n"), std::string::npos) << ply;
+            EXPECT_NE(text.find("property float density\n"), std::string::npos) << ply;
+        }
+        for (int frame = 1; frame <= kFrames && !s.scene.isSurface(); ++frame) {
             const fs::path vdb = out / frameFileName(s.scene.name, frame);
             ASSERT_TRUE(fs::exists(vdb)) << vdb;
             EXPECT_GT(fs::file_size(vdb), 0u) << vdb;
@@ -102,16 +114,37 @@ protected:
         }
         EXPECT_EQ(rows, kModeSteps + 1) << r.out;
     }
+
+    /// A backend that cannot run the scene refuses it with the capability table's message, before
+    /// any precompute (no cache file) or output folder.
+    void refuses(const SceneUnderTest& s, const BackendVerdict& v) {
+        const fs::path out = mDir / ("refused_" + v.option);
+        for (const std::string command : {"run", "modes"}) {
+            const std::string args = command + " " + s.file.string() + " --device " + v.option +
+                                     (command == "run" ? " --out " + out.string() : "") + " --cache-dir " +
+                                     mCache.string();
+            expectRejected(args, "modeflow: error: " + *v.refusal);
+        }
+        EXPECT_FALSE(fs::exists(out)) << "the output folder was made before the refusal";
+    }
 };
 
 TEST_P(ShippedScene, RunsEndToEnd) {
     const SceneUnderTest s = sceneUnderTest(GetParam(), mDir / "reduced");
     std::cout << s.description << "\n";
     RecordProperty("scene", s.description);
-    for (const std::string& backend : backendOptions()) {
-        runs(s, backend);
-        stepsModes(s, backend);
+    const std::vector<BackendVerdict> verdicts = backendVerdicts(s.scene);
+    // Refusals first: the cache folder is still empty, so "no cache written" means something.
+    for (const BackendVerdict& v : verdicts)
+        if (v.refusal) refuses(s, v);
+    int backends = 0;
+    for (const BackendVerdict& v : verdicts) {
+        if (v.refusal) continue;
+        ++backends;
+        runs(s, v.option);
+        stepsModes(s, v.option);
     }
+    EXPECT_GT(backends, 0) << "no backend runs " << GetParam();
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, ShippedScene, ::testing::ValuesIn(shippedScenes()),

@@ -21,6 +21,7 @@
 #include "tools/modeflow/FramePreview.h"
 #include "tools/modeflow/FrameProgress.h"
 #include "tools/modeflow/NumberOptions.h"
+#include "tools/modeflow/SurfaceRun.h"
 #include "engine/pipeline/Backend.h"
 #include "engine/pipeline/RunInputs.h"
 #include "engine/pipeline/RunMemory.h"
@@ -74,6 +75,7 @@ Command addRun(CLI::App& app) {
         // Everything that can be refused is checked before any precompute or simulation work.
         const BackendChoice choice = parseDeviceOption(opts->device);
         const SceneSpec scene = loadScene(opts->scene);
+        requireSupport(scene, choice.kind);
         const RunMemory memory = requireRunMemory(scene, choice.kind);
         const int frames = opts->frames.value_or(scene.output.frames);
         const std::filesystem::path out = opts->out.value_or(scene.name + "_frames");
@@ -95,6 +97,13 @@ Command addRun(CLI::App& app) {
                 throw Error("checkpoint " + folder.checkpointPath().string() +
                             " was written for another scene text, basis (mesh file) or device; run without "
                             "--resume to start afresh");
+        }
+        const bool previews = opts->preview || opts->previewEvery.has_value();
+        const int previewEvery = opts->previewEvery.value_or(std::max(1, frames / 24));
+        if (scene.isSurface()) {
+            if (opts->half) throw Error("--half: surface scenes write PLY frames, in 32-bit floats");
+            return runSurface({scene, frames, folder, sceneHash, runHash, resumeFrom,
+                               resolveCacheDir(opts->cacheDir), memory, previews ? previewEvery : 0});
         }
         const Backend backend(choice);
         std::cerr << backend.describe();
@@ -119,8 +128,6 @@ Command addRun(CLI::App& app) {
 
         const MacGrid basisGrid = MacGrid::fromSpec(run.cache.grid);
         const bool temperature = settings.simulatesTemperature();
-        const bool previews = opts->preview || opts->previewEvery.has_value();
-        const int previewEvery = opts->previewEvery.value_or(std::max(1, frames / 24));
         std::unique_ptr<FramePreview> preview;
         if (previews)
             preview = std::make_unique<FramePreview>(simulator->smokeGrid(), run.smokeMask, backend.vulkanContext());
