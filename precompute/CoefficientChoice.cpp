@@ -2,20 +2,35 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 
 #include "engine/core/AvailableMemory.h"
 #include "engine/core/PackedLayout.h"
+#include "engine/core/SceneKeywords.h"
 #include "precompute/coefficients/CoefficientAssembly.h"
 
 namespace modeflow {
 
-bool assemblesTensor(CoefficientStorage requested, int modes, std::int64_t velocityDofs) {
-    if (requested != CoefficientStorage::Auto) return requested != CoefficientStorage::TensorFree;
+TensorChoice chooseTensor(CoefficientStorage requested, int modes, std::int64_t velocityDofs) {
+    if (requested != CoefficientStorage::Auto) {
+        const bool assemble = requested != CoefficientStorage::TensorFree;
+        return {assemble, "[basis].coefficients = \"" + std::string(sceneKeyword(requested)) + "\""};
+    }
     const double n = modes;
     const double tensorBytes = n * n * (n - 1.0) / 2.0 * 8.0;
     if (const auto available = availableMemory(); available && tensorBytes > 0.25 * double(*available))
-        return false;
-    return n * (n - 1.0) <= 4.0 * kTensorFreeValueCost * double(velocityDofs);
+        return {false, "auto: the tensor's " + memoryText(tensorBytes) + " exceed a quarter of the " +
+                           memoryText(double(*available)) + " available (a run holds it up to three times)"};
+    // Values streamed per evaluation, weighted by their measured cost: N²(N−1)/2 coefficients
+    // against 2·V·N basis values.
+    const double tensorCost = n * n * (n - 1.0) / 2.0, freeCost = kTensorFreeValueCost * 2.0 * double(velocityDofs) * n;
+    std::ostringstream why;
+    why.precision(3);
+    const bool assemble = tensorCost <= freeCost;
+    why << "auto: the " << (assemble ? "tensor" : "tensor-free advection") << " streams fewer values per step ("
+        << tensorCost << " coefficients against " << freeCost << " weighted basis values for " << modes
+        << " modes on " << velocityDofs << " faces)";
+    return {assemble, why.str()};
 }
 
 BasisCache::Coefficients storedCoefficients(CoefficientStorage requested, std::vector<double> packed,

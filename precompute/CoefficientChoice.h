@@ -12,9 +12,11 @@
 /// advection costs kTensorFreeValueCost times a stored coefficient (tools/bench/bench_tensor_free,
 /// 48³ box, N = 250–1000: 0.8–1.2 on the CPU reference, 0.9–1.6 on lavapipe), so it wins once
 /// N(N−1) > 4·kTensorFreeValueCost·V: N ≈ 1400 on a 48³ box.
-/// A tensor that "auto" assembles is stored sparse below a density of 0.25 (boxes, appendix C.2).
+/// A precompute that assembles none says why (TensorChoice::reason). A tensor that "auto"
+/// assembles is stored sparse below a density of 0.25 (boxes, appendix C.2).
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "engine/core/SceneSpec.h"
@@ -26,9 +28,15 @@ namespace modeflow {
 /// Cost of a value the tensor-free advection streams, relative to a stored coefficient.
 inline constexpr double kTensorFreeValueCost = 1.5;
 
-/// Whether a precompute with `requested` storage assembles a tensor for `modes` velocity modes on
+/// Whether a precompute assembles a tensor, and why, in words for its output.
+struct TensorChoice {
+    bool assemble = true;
+    std::string reason;  ///< e.g. "auto: the tensor-free advection streams fewer values per step (…)"
+};
+
+/// The choice of a precompute with `requested` storage for `modes` velocity modes on
 /// `velocityDofs` faces (auto: see the file comment; availableMemory() is read).
-bool assemblesTensor(CoefficientStorage requested, int modes, std::int64_t velocityDofs);
+TensorChoice chooseTensor(CoefficientStorage requested, int modes, std::int64_t velocityDofs);
 
 /// The coefficients a cache stores for `requested` from the packed k < j tensor: dense or
 /// sparse as requested, or by density for auto (entries below 1e-12 · max |C| count as zero).

@@ -251,14 +251,15 @@ BasisCache computeStages(const SceneSpec& scene, std::string key, Progress& prog
     progress.begin("structural coefficients");
     cache.quadrature = vorticityQuadrature(complex, measures, dec);
     const int modes = int(cache.velocity.modes.cols());
-    if (assemblesTensor(basis.coefficients, modes, dec.faces.size())) {
+    const TensorChoice choice = chooseTensor(basis.coefficients, modes, std::int64_t(dec.faces.size()));
+    if (choice.assemble) {
         cache.coefficients = storedCoefficients(
             basis.coefficients, assembleStructuralCoefficients(cache.quadrature, cache.velocity.modes),
             modes);
     } else {
         cache.coefficients.storage = BasisCache::Coefficients::Storage::None;
         progress.note("  structural coefficients: none assembled, the advection is evaluated "
-                      "tensor-free");
+                      "tensor-free (" + choice.reason + ")");
     }
     cache.timings.emplace_back("coefficients", progress.end());
     return cache;

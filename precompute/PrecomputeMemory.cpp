@@ -179,7 +179,7 @@ PrecomputeMemory estimatePrecomputeMemory(const SceneSpec& scene) {
     // One constant per component is computed and dropped; the first Neumann modes always are.
     c.scalarRequest = std::max(basis.scalarModes, 1) + 1;
     c.closedForm = hasClosedFormVelocity(scene);
-    c.tensor = c.closedForm || assemblesTensor(basis.coefficients, basis.velocityCount(), std::int64_t(c.velocity));
+    c.tensor = c.closedForm || chooseTensor(basis.coefficients, basis.velocityCount(), std::int64_t(c.velocity)).assemble;
 
     PrecomputeMemory memory;
     memory.velocityDofs = std::int64_t(c.velocity);

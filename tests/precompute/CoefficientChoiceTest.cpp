@@ -61,21 +61,25 @@ TEST(CoefficientChoice, AutoLeavesTheTensorOutWhenItCostsMorePerStep) {
     // Tensor-free streams 2·V·N values, the tensor N²(N−1)/2: the crossover is N(N−1) = 4·c·V.
     const std::int64_t faces = 10000;
     const int crossover = int(std::floor(0.5 + std::sqrt(4.0 * kTensorFreeValueCost * faces)));
-    EXPECT_TRUE(assemblesTensor(CoefficientStorage::Auto, crossover - 5, faces));
-    EXPECT_FALSE(assemblesTensor(CoefficientStorage::Auto, crossover + 5, faces));
-    EXPECT_TRUE(assemblesTensor(CoefficientStorage::Dense, 10 * crossover, faces));
-    EXPECT_TRUE(assemblesTensor(CoefficientStorage::Sparse, 10 * crossover, faces));
-    EXPECT_FALSE(assemblesTensor(CoefficientStorage::TensorFree, 10, faces));
+    EXPECT_TRUE(chooseTensor(CoefficientStorage::Auto, crossover - 5, faces).assemble);
+    const TensorChoice beyond = chooseTensor(CoefficientStorage::Auto, crossover + 5, faces);
+    EXPECT_FALSE(beyond.assemble);
+    EXPECT_NE(beyond.reason.find("auto: the tensor-free advection streams fewer values per step"), std::string::npos)
+        << beyond.reason;
+    EXPECT_TRUE(chooseTensor(CoefficientStorage::Dense, 10 * crossover, faces).assemble);
+    EXPECT_TRUE(chooseTensor(CoefficientStorage::Sparse, 10 * crossover, faces).assemble);
+    EXPECT_FALSE(chooseTensor(CoefficientStorage::TensorFree, 10, faces).assemble);
 }
 
 TEST(CoefficientChoice, AutoLeavesOutATensorThatWouldNotFit) {
     // 100 modes: a 3.96 MB tensor, below the cost crossover of a million faces.
     setenv("MODEFLOW_MEMORY_LIMIT", "12000000", 1);
-    const bool tight = assemblesTensor(CoefficientStorage::Auto, 100, 1000000);
+    const TensorChoice tight = chooseTensor(CoefficientStorage::Auto, 100, 1000000);
     setenv("MODEFLOW_MEMORY_LIMIT", "20000000", 1);
-    const bool roomy = assemblesTensor(CoefficientStorage::Auto, 100, 1000000);
+    const bool roomy = chooseTensor(CoefficientStorage::Auto, 100, 1000000).assemble;
     unsetenv("MODEFLOW_MEMORY_LIMIT");
-    EXPECT_FALSE(tight);
+    EXPECT_FALSE(tight.assemble);
+    EXPECT_NE(tight.reason.find("exceed a quarter of the"), std::string::npos) << tight.reason;
     EXPECT_TRUE(roomy);
 }
 
