@@ -104,11 +104,12 @@ void cpuStep(benchmark::State& state, const char* file) {
         start = Clock::now();
         benchmark::DoNotOptimize(reference::projectFaceField(basis, field));
         proj.push_back(msSince(start));
-        reference::SmokeAdvection advection(MacGrid::fromSpec(run.cache.grid), run.settings.smokeScale,
-                                            run.smokeMask);
+        reference::SmokeAdvection advection(MacGrid::fromSpec(run.cache.grid),
+                                            run.settings.smokeScale, run.smokeMask);
         SmokeFields smoke = simulation.smoke();
         start = Clock::now();
-        advection.step(std::span<const double>(field), run.settings.dt, run.settings.advection, {}, smoke);
+        advection.step(std::span<const double>(field), run.settings.dt, run.settings.advection, {},
+                       smoke);
         advect.push_back(msSince(start));
         start = Clock::now();
         simulation.advanceSteps(1);
@@ -140,7 +141,8 @@ void deviceStep(benchmark::State& state, const char* file) {
     int iterations = 0;
     for (auto _ : state) {
         const FrameStats stats = simulation->advanceSteps(1);
-        const double total = stats.forcesMs + stats.modalMs + stats.reconstructionMs + stats.advectionMs;
+        const double total =
+            stats.forcesMs + stats.modalMs + stats.reconstructionMs + stats.advectionMs;
         state.SetIterationTime(total * 1e-3);
         forces.push_back(stats.forcesMs);
         modal.push_back(stats.modalMs);
@@ -170,16 +172,42 @@ void deviceStep(benchmark::State& state, const char* file) {
 constexpr const char* kBox = "box_closed_form_3d.toml";
 constexpr const char* kTorus = "torus_closed_form_2d.toml";
 
-BENCHMARK_CAPTURE(precompute, box_3d, kBox)->ArgName("N")->Arg(1000)->Arg(2000)->Iterations(1)
+BENCHMARK_CAPTURE(precompute, box_3d, kBox)
+    ->ArgName("N")
+    ->Arg(1000)
+    ->Arg(2000)
+    ->Iterations(1)
     ->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(precompute, torus_2d, kTorus)->ArgName("N")->Arg(500)->Iterations(1)->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(cpuStep, box_3d, kBox)->ArgName("N")->Arg(1000)->Arg(2000)->Iterations(5)->UseManualTime()
+BENCHMARK_CAPTURE(precompute, torus_2d, kTorus)
+    ->ArgName("N")
+    ->Arg(500)
+    ->Iterations(1)
     ->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(cpuStep, torus_2d, kTorus)->ArgName("N")->Arg(500)->Iterations(20)->UseManualTime()
+BENCHMARK_CAPTURE(cpuStep, box_3d, kBox)
+    ->ArgName("N")
+    ->Arg(1000)
+    ->Arg(2000)
+    ->Iterations(5)
+    ->UseManualTime()
     ->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(deviceStep, box_3d, kBox)->ArgName("N")->Arg(1000)->Arg(2000)->Iterations(5)->UseManualTime()
+BENCHMARK_CAPTURE(cpuStep, torus_2d, kTorus)
+    ->ArgName("N")
+    ->Arg(500)
+    ->Iterations(20)
+    ->UseManualTime()
     ->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(deviceStep, torus_2d, kTorus)->ArgName("N")->Arg(500)->Iterations(20)->UseManualTime()
+BENCHMARK_CAPTURE(deviceStep, box_3d, kBox)
+    ->ArgName("N")
+    ->Arg(1000)
+    ->Arg(2000)
+    ->Iterations(5)
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(deviceStep, torus_2d, kTorus)
+    ->ArgName("N")
+    ->Arg(500)
+    ->Iterations(20)
+    ->UseManualTime()
     ->Unit(benchmark::kMillisecond);
 
 }  // namespace
