@@ -1,0 +1,129 @@
+#!/usr/bin/env python3
+"""Draws the report of `modeflow validate` (tools/validate/README.md).
+
+    python3 report.py DIR       reads DIR/results.json, writes DIR/figures/*.png and
+                                DIR/report.html (self-contained: the figures inline as base64)
+    python3 report.py --check   exits 3 when matplotlib cannot be imported
+
+`modeflow validate` runs this script (embedded in the binary) with Debian's python3 and
+python3-matplotlib. Every figure is drawn from results.json alone.
+"""
+import base64
+import html
+import json
+import os
+import sys
+
+try:
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+except ImportError as e:
+    print(f"report.py: matplotlib is missing ({e}); install python3-matplotlib", file=sys.stderr)
+    sys.exit(3)
+
+FIGURE_DPI = 110
+
+
+def save(fig, folder, name):
+    path = os.path.join(folder, name + ".png")
+    fig.tight_layout()
+    fig.savefig(path, dpi=FIGURE_DPI)
+    plt.close(fig)
+    return path
+
+
+# One function per study: (its results, the figures folder) -> [(png path, caption)].
+
+
+def draw_convergence(data, folder):
+    colours = {"velocity": "tab:blue", "neumann": "tab:green", "dirichlet": "tab:red"}
+    styles = {"cut-cell": "-", "staircase": "--"}
+    domains = sorted({s["domain"] for s in data["series"]}, key=lambda d: d != "disk")
+    fig, axes = plt.subplots(1, len(domains), figsize=(5.2 * len(domains), 4.2), squeeze=False)
+    for ax, domain in zip(axes[0], domains):
+        series = [s for s in data["series"] if s["domain"] == domain]
+        for s in series:
+            ax.loglog(s["h"], s["max_relative_error"], styles[s["boundary"]], marker="o", ms=4,
+                      color=colours[s["field"]],
+                      label=f'{s["field"]}, {s["boundary"]}: order {s["order"]:.2f}')
+        h = [min(x for s in series for x in s["h"]), max(x for s in series for x in s["h"])]
+        top = max(e for s in series for e in s["max_relative_error"])
+        for p, ls in ((1, ":"), (2, "-.")):
+            ax.loglog(h, [top * (x / h[1]) ** p for x in h], ls, color="grey", lw=1, label=f"h^{p}")
+        ax.set_xlabel("cell size h")
+        ax.set_ylabel(f'max relative error, first {data["eigenvalues_compared"]} eigenvalues')
+        ax.set_title(f"unit {domain}")
+        ax.legend(fontsize=7)
+        ax.grid(True, which="both", alpha=0.3)
+    return [(save(fig, folder, "convergence"),
+             "Eigenvalue error against the closed forms (Bessel roots) as the grid is refined: cut cells "
+             "converge at second order, the staircase at first (seed Fig. 6.13).")]
+
+
+DRAWERS = {
+    "convergence": draw_convergence,
+}
+
+
+def embedded(path):
+    with open(path, "rb") as f:
+        return "data:image/png;base64," + base64.b64encode(f.read()).decode("ascii")
+
+
+def headline_row(key, study):
+    h = study.get("headline", {})
+    verdict = "met" if h.get("met") else "NOT met"
+    return (f"<tr><td><a href='#{key}'>{html.escape(key)}</a></td><td>{html.escape(h.get('name', ''))}</td>"
+            f"<td>{h.get('value', float('nan')):.4g}</td><td>{html.escape(h.get('expectation', ''))}</td>"
+            f"<td class='{'ok' if h.get('met') else 'bad'}'>{verdict}</td>"
+            f"<td>{study.get('seconds', 0):.1f} s</td></tr>")
+
+
+def main():
+    if sys.argv[1:] == ["--check"]:
+        return 0
+    if len(sys.argv) != 2:
+        print(__doc__, file=sys.stderr)
+        return 2
+    folder = sys.argv[1]
+    with open(os.path.join(folder, "results.json"), encoding="utf-8") as f:
+        results = json.load(f)
+    figures = os.path.join(folder, "figures")
+    os.makedirs(figures, exist_ok=True)
+    studies = results["studies"]
+    parts = [
+        "<!DOCTYPE html><html><head><meta charset='utf-8'><title>modeflow validate</title><style>"
+        "body{font-family:sans-serif;max-width:1150px;margin:2em auto;color:#222}"
+        "table{border-collapse:collapse}td,th{border:1px solid #ccc;padding:4px 8px;text-align:left}"
+        ".ok{color:#070}.bad{color:#b00;font-weight:bold}img{max-width:100%}figure{margin:1em 0}"
+        "figcaption{font-size:90%;color:#444}</style></head><body>",
+        f"<h1>modeflow validate{' (quick)' if results.get('quick') else ''}</h1>",
+        f"<p>modeflow {html.escape(results.get('modeflow_version', '?'))}, "
+        f"{results.get('seconds', 0):.0f} s in all. The numbers of every figure are in results.json.</p>",
+        "<table><tr><th>study</th><th>headline</th><th>value</th><th>expectation</th><th></th><th>time</th></tr>",
+    ]
+    parts += [headline_row(key, study) for key, study in studies.items()]
+    parts.append("</table>")
+    for key, study in studies.items():
+        parts.append(f"<h2 id='{key}'>{html.escape(key)}</h2><p>{html.escape(study.get('title', ''))}</p>")
+        for note in study.get("notes", []):
+            parts.append(f"<p>{html.escape(note)}</p>")
+        drawer = DRAWERS.get(key)
+        if drawer is None:
+            parts.append("<p>(no figure for this study)</p>")
+            continue
+        for path, caption in drawer(study["data"], figures):
+            parts.append(f"<figure><img src='{embedded(path)}' alt='{html.escape(key)}'>"
+                         f"<figcaption>{html.escape(caption)}</figcaption></figure>")
+    parts.append("</body></html>")
+    report = os.path.join(folder, "report.html")
+    with open(report + ".tmp", "w", encoding="utf-8") as f:
+        f.write("\n".join(parts))
+    os.replace(report + ".tmp", report)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
