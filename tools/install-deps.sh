@@ -11,6 +11,7 @@ packages=(
     libvulkan-dev mesa-vulkan-drivers vulkan-tools glslang-tools spirv-tools vulkan-validationlayers
     libglfw3-dev xvfb xauth
     libstb-dev libgtest-dev libbenchmark-dev time bc
+    python3-matplotlib
 )
 
 missing=()
