@@ -7,5 +7,6 @@
 namespace modeflow::validate {
 
 StudyResult convergenceStudy(const StudyOptions& options);
+StudyResult integratorStudy(const StudyOptions& options);
 
 }  // namespace modeflow::validate
