@@ -7,6 +7,8 @@ const std::vector<Study>& allStudies() {
         {"convergence", "eigenvalue error against the disk's and ball's closed forms, by resolution",
          convergenceStudy},
         {"integrators", "energy over time for each integrator and step, and reversibility", integratorStudy},
+        {"mhd", "the MHD rotor: energies and cross helicity over time, the dye with and without the field",
+         mhdStudy},
     };
     return studies;
 }

@@ -8,5 +8,6 @@ namespace modeflow::validate {
 
 StudyResult convergenceStudy(const StudyOptions& options);
 StudyResult integratorStudy(const StudyOptions& options);
+StudyResult mhdStudy(const StudyOptions& options);
 
 }  // namespace modeflow::validate
