@@ -9,6 +9,8 @@ const std::vector<Study>& allStudies() {
         {"integrators", "energy over time for each integrator and step, and reversibility", integratorStudy},
         {"mhd", "the MHD rotor: energies and cross helicity over time, the dye with and without the field",
          mhdStudy},
+        {"coefficients", "our antisymmetric coefficients against grid-evaluated advection, error against a full run",
+         coefficientStudy},
     };
     return studies;
 }

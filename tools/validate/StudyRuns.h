@@ -23,6 +23,9 @@ RunInputs prepareStudyRun(const SceneSpec& scene, const StudyOptions& options,
 /// Every `stride`-th value of a series and its last one: figures need a few hundred points.
 std::vector<double> thinned(const std::vector<double>& values, std::size_t stride);
 
+/// `value` in scientific notation with 2 significant digits ("3.1e-15").
+std::string scientific(double value);
+
 /// A vector's values as a std::vector (for JSON).
 std::vector<double> toStd(const Eigen::VectorXd& v);
 

@@ -135,10 +135,40 @@ def draw_mhd(data, folder):
     return figures
 
 
+def draw_coefficients(data, folder):
+    counts = sorted({r["modes"] for r in data["runs"]})
+    colours = dict(zip(counts, ["tab:blue", "tab:orange", "tab:green", "tab:red", "tab:purple"]))
+    fig, axes = plt.subplots(1, 3, figsize=(16, 4))
+    for run in data["runs"]:
+        style = "-" if run["coefficients"] == "ours" else "--"
+        label = f'{run["modes"]} modes, {"ours" if run["coefficients"] == "ours" else "grid-evaluated"}'
+        axes[0].plot(data["time"], run["relative_l2"], style, color=colours[run["modes"]], label=label)
+        axes[1].plot(data["time"], run["relative_linf"], style, color=colours[run["modes"]], label=label)
+        e0 = run["energy"][0]
+        axes[2].plot(data["time"], [e / e0 - 1 for e in run["energy"]], style, color=colours[run["modes"]],
+                     label=label)
+    for ax, title in zip(axes, ["relative L2 error against the full run", "relative L∞ error against the full run",
+                                "E(t) / E(0) − 1"]):
+        ax.set_xlabel("time")
+        ax.set_title(title, fontsize=10)
+        ax.grid(True, alpha=0.3)
+    axes[0].legend(fontsize=7)
+    scene = data["scene"]
+    means = ", ".join(f'{r["modes"]} {r["coefficients"]} {r["mean_relative_l2"]:.3f}' for r in data["runs"])
+    asym = ", ".join(f'{a["antisymmetry_error"]:.2f} at {a["modes"]}' for a in data["grid_antisymmetry"])
+    return [(save(fig, folder, "coefficients"),
+             f'Two co-rotating vortices in the unit disk at {scene["resolution"]}²: every divergence-free mode '
+             f'({scene["full_modes"]}) is the full simulation; the first N modes with our exactly antisymmetric '
+             f'coefficients (solid) and with the advection −⟨Ψk, (Ψi·∇)Ψj⟩ evaluated on the grid (dashed; '
+             f'antisymmetry error {asym}), midpoint rule for all, dt = {scene["dt"]}. Mean relative L2 errors: '
+             f'{means}. Ours keep the energy to round-off; the grid-evaluated ones do not.')]
+
+
 DRAWERS = {
     "convergence": draw_convergence,
     "integrators": draw_integrators,
     "mhd": draw_mhd,
+    "coefficients": draw_coefficients,
 }
 
 
