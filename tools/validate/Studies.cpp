@@ -11,6 +11,7 @@ const std::vector<Study>& allStudies() {
          mhdStudy},
         {"coefficients", "our antisymmetric coefficients against grid-evaluated advection, error against a full run",
          coefficientStudy},
+        {"resolution", "one smoke scene on three grids: centroid path, modal energy, pictures", resolutionStudy},
     };
     return studies;
 }

@@ -164,11 +164,52 @@ def draw_coefficients(data, folder):
              f'{means}. Ours keep the energy to round-off; the grid-evaluated ones do not.')]
 
 
+def draw_resolution(data, folder):
+    runs = data["runs"]
+    colours = ["tab:blue", "tab:green", "tab:red"]
+    fig, (path, energy) = plt.subplots(1, 2, figsize=(11, 3.8))
+    for run, colour in zip(runs, colours):
+        label = f'{run["resolution"]}²'
+        path.plot(run["time"], run["centroid_y"], color=colour, label=label)
+        energy.plot(run["time"], run["modal_energy"], color=colour, label=label)
+    path.set_ylabel("smoke centroid height")
+    energy.set_ylabel("modal energy ½|v|²")
+    for ax in (path, energy):
+        ax.set_xlabel("time")
+        ax.legend(fontsize=8)
+        ax.grid(True, alpha=0.3)
+    figures = [(save(fig, folder, "resolution_paths"),
+                "Smoke rising in the unit disk (the default scene, 40 modes) on grids of "
+                + ", ".join(f'{r["resolution"]}²' for r in runs) + ": centroid height and modal energy over time. "
+                "Largest centroid distance from the finest grid: "
+                + ", ".join(f'{r["resolution"]}² {r["max_centroid_distance_to_finest"]:.4f}' for r in runs[:-1])
+                + " (disk radius 1).")]
+    shots = len(runs[0]["pictures"])
+    fig, axes = plt.subplots(1, shots, figsize=(4 * shots, 4.4), squeeze=False)
+    extent = data["scene"]["extent"]
+    for ax, index in zip(axes[0], range(shots)):
+        finest = runs[-1]["pictures"][index]["density"]
+        top = max(max(row) for row in finest)
+        ax.imshow(finest, origin="lower", extent=extent, cmap="Greys", vmin=0, vmax=top)
+        for run, colour in zip(runs, colours):
+            picture = run["pictures"][index]["density"]
+            ax.contour(picture, levels=[0.25 * top], colors=[colour], origin="lower", extent=extent, linewidths=1.2)
+        ax.set_title(f't = {runs[-1]["pictures"][index]["time"]:.2f}: '
+                     + ", ".join(f'{r["resolution"]}²' for r in runs), fontsize=9)
+        ax.set_xticks([])
+        ax.set_yticks([])
+    figures.append((save(fig, folder, "resolution_overlay"),
+                    "The smoke of the finest grid (grey) with the outline (a quarter of its peak density) of every "
+                    "grid drawn over it in the colours above (seed Fig. 6.11)."))
+    return figures
+
+
 DRAWERS = {
     "convergence": draw_convergence,
     "integrators": draw_integrators,
     "mhd": draw_mhd,
     "coefficients": draw_coefficients,
+    "resolution": draw_resolution,
 }
 
 
