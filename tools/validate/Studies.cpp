@@ -12,6 +12,7 @@ const std::vector<Study>& allStudies() {
         {"coefficients", "our antisymmetric coefficients against grid-evaluated advection, error against a full run",
          coefficientStudy},
         {"resolution", "one smoke scene on three grids: centroid path, modal energy, pictures", resolutionStudy},
+        {"speed", "seconds per reduced-dynamics step against the seed's published figures", speedStudy},
     };
     return studies;
 }

@@ -204,12 +204,33 @@ def draw_resolution(data, folder):
     return figures
 
 
+def draw_speed(data, folder):
+    fig, ax = plt.subplots(figsize=(7, 4.2))
+    for storage, colour in (("dense", "tab:blue"), ("sparse", "tab:green")):
+        rows = [r for r in data["rows"] if r["storage"] == storage]
+        modes = [r["modes"] for r in rows]
+        ax.loglog(modes, [r["midpoint_seconds"] for r in rows], "o-", color=colour, label=f"ours, {storage}, midpoint")
+        ax.loglog(modes, [r["explicit_seconds"] for r in rows], "^:", color=colour, label=f"ours, {storage}, explicit")
+        ax.loglog(modes, [r["seed_seconds"] for r in rows], "s--", color=colour, alpha=0.6,
+                  label=f"seed §6.4, {storage}")
+    ax.set_xlabel("modes")
+    ax.set_ylabel("seconds per step")
+    ax.legend(fontsize=7)
+    ax.grid(True, which="both", alpha=0.3)
+    rows = "; ".join(f'{r["storage"]} {r["modes"]}: {r["midpoint_seconds"] * 1e3:.2f} ms '
+                     f'({r["midpoint_iterations"]:.1f} iterations), {r["speedup"]:.0f}× the seed' for r in data["rows"])
+    return [(save(fig, folder, "speed"),
+             f'Wall time of one reduced step on the CPU reference, {data["threads"]} thread, against the seed’s '
+             f'published figures (an Intel i7 laptop): {rows}.')]
+
+
 DRAWERS = {
     "convergence": draw_convergence,
     "integrators": draw_integrators,
     "mhd": draw_mhd,
     "coefficients": draw_coefficients,
     "resolution": draw_resolution,
+    "speed": draw_speed,
 }
 
 
