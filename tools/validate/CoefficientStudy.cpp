@@ -12,10 +12,10 @@
 
 #include "engine/core/FaceLocation.h"
 #include "engine/core/MacGrid.h"
-#include "engine/dynamics/DenseCoefficients.h"
 #include "engine/dynamics/Diagnostics.h"
 #include "engine/dynamics/FluidSystem.h"
 #include "engine/dynamics/ModalIntegrator.h"
+#include "engine/stir/ShapedBases.h"
 #include "tools/validate/GridCoefficients.h"
 #include "tools/validate/Studies.h"
 #include "tools/validate/StudyRuns.h"
@@ -86,8 +86,7 @@ StudyResult coefficientStudy(const StudyOptions& options) {
             run.style = style;
             run.modes = n;
             if (run.style == "ours") {
-                run.coefficients = std::make_unique<DenseCoefficients>(
-                    DenseCoefficients::fromFull(n, leadingFullTensor(*full.coefficients, n)));
+                run.coefficients = stir::leadingCoefficients(*full.coefficients, n);
             } else {
                 auto grid = std::make_unique<FullTensorCoefficients>(gridAdvectionCoefficients(full.cache, n));
                 antisymmetry.push_back({{"modes", n}, {"antisymmetry_error", grid->antisymmetryError()}});

@@ -141,13 +141,4 @@ FullTensorCoefficients gridAdvectionCoefficients(const BasisCache& cache, int co
     return FullTensorCoefficients(count, std::move(full));
 }
 
-std::vector<double> leadingFullTensor(const StructuralCoefficients& coefficients, int count) {
-    std::vector<double> full(std::size_t(count) * count * count);
-    for (int k = 0; k < count; ++k)
-        for (int i = 0; i < count; ++i)
-            for (int j = 0; j < count; ++j)
-                full[(std::size_t(k) * count + i) * count + j] = coefficients.entry(k, i, j);
-    return full;
-}
-
 }  // namespace modeflow::validate

@@ -39,7 +39,4 @@ private:
 /// −⟨Ψ_k, (Ψ_i·∇)Ψ_j⟩ on the grid for the first `count` velocity modes of `cache` (2D or 3D).
 FullTensorCoefficients gridAdvectionCoefficients(const BasisCache& cache, int count);
 
-/// The first `count` modes' share of `coefficients`, exactly antisymmetric as the whole.
-std::vector<double> leadingFullTensor(const StructuralCoefficients& coefficients, int count);
-
 }  // namespace modeflow::validate

@@ -14,7 +14,7 @@
 #include "engine/dynamics/FluidSystem.h"
 #include "engine/dynamics/ModalIntegrator.h"
 #include "engine/dynamics/SparseCoefficients.h"
-#include "tools/validate/GridCoefficients.h"
+#include "engine/stir/ShapedBases.h"
 #include "tools/validate/Studies.h"
 #include "tools/validate/StudyRuns.h"
 
@@ -69,11 +69,11 @@ StudyResult speedStudy(const StudyOptions& options) {
             const int n = counts[c];
             const char* storage = disk ? "dense" : "sparse";
             options.note(std::string(storage) + ", " + std::to_string(n) + " modes");
-            const DenseCoefficients dense = DenseCoefficients::fromFull(n, leadingFullTensor(*run.coefficients, n));
+            std::unique_ptr<StructuralCoefficients> coefficients = stir::leadingCoefficients(*run.coefficients, n);
             // Sparse keeps what the precompute keeps: |C| above 1e-12 of the largest.
-            const std::unique_ptr<StructuralCoefficients> coefficients =
-                disk ? std::unique_ptr<StructuralCoefficients>(std::make_unique<DenseCoefficients>(dense))
-                     : std::make_unique<SparseCoefficients>(SparseCoefficients::fromDense(dense, 1e-12));
+            if (!disk)
+                coefficients = std::make_unique<SparseCoefficients>(
+                    SparseCoefficients::fromDense(static_cast<const DenseCoefficients&>(*coefficients), 1e-12));
             const FluidSystem system(*coefficients);
             const Eigen::VectorXd v0 = run.initialVelocity.head(n);
             const auto [midpoint, iterations] = secondsPerStep(system, v0, Integrator::Midpoint, budget);
