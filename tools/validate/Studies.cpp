@@ -13,6 +13,8 @@ const std::vector<Study>& allStudies() {
          coefficientStudy},
         {"resolution", "one smoke scene on three grids: centroid path, modal energy, pictures", resolutionStudy},
         {"speed", "seconds per reduced-dynamics step against the seed's published figures", speedStudy},
+        {"reduced_vs_full", "reduced runs of N modes against the full run of every mode of the grid",
+         reducedVsFullStudy},
     };
     return studies;
 }

@@ -13,6 +13,7 @@ StudyResult mhdStudy(const StudyOptions& options);
 StudyResult coefficientStudy(const StudyOptions& options);
 StudyResult resolutionStudy(const StudyOptions& options);
 StudyResult speedStudy(const StudyOptions& options);
+StudyResult reducedVsFullStudy(const StudyOptions& options);
 
 /// The vortex pair of scenes/seed/vortex_merge_2d.toml at `cells`², no dye, with every
 /// divergence-free mode of that grid.
