@@ -7,8 +7,8 @@
 namespace modeflow {
 namespace {
 
-constexpr BackendCapabilities kCpuReference{"the CPU reference", "cpu", true, true, false};
-constexpr BackendCapabilities kVulkan{"a Vulkan device", "vulkan", false, false, true};
+constexpr BackendCapabilities kCpuReference{"the CPU reference", "cpu", true, true, true, false};
+constexpr BackendCapabilities kVulkan{"a Vulkan device", "vulkan", false, false, false, true};
 
 }  // namespace
 
@@ -22,6 +22,8 @@ void requireSupport(const SceneSpec& scene, BackendKind kind, std::optional<Inte
     const std::string file = scene.sourceFile.empty() ? scene.name : scene.sourceFile.string();
     if (scene.simulation.mhd && !backend.mhd)
         throw Error(file + ": [simulation].mhd runs on the CPU reference only; use --device cpu");
+    if (scene.forcing.holds() && !backend.forcing)
+        throw Error(file + ": [forcing] (held modes) runs on the CPU reference only; use --device cpu");
     if (!backend.trapezoidal) {
         const std::string where = integrator ? std::string(integratorOption) + " trapezoidal"
                                              : file + ": [simulation].integrator = \"trapezoidal\"";
