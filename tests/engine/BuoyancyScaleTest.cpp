@@ -6,7 +6,7 @@
 /// divergence-free MAC fields, computed here by a pressure solve that shares no code with the
 /// bases. A flux taken for a velocity, or a spacing or face area on the wrong axis (the cells are
 /// not cubes), shows as a ratio away from 1; with fewer modes the same step is P_N(g), smaller
-/// where g is narrower than the modes (README.md, "Validation").
+/// where g is narrower than the modes (tools/validate/README.md, "The slow plume").
 
 #include <cmath>
 #include <iostream>

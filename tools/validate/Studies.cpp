@@ -15,6 +15,7 @@ const std::vector<Study>& allStudies() {
         {"speed", "seconds per reduced-dynamics step against the seed's published figures", speedStudy},
         {"reduced_vs_full", "reduced runs of N modes against the full run of every mode of the grid",
          reducedVsFullStudy},
+        {"lans_alpha", "the energy spectrum of a forced flow, Navier–Stokes against LANS-α", lansAlphaStudy},
     };
     return studies;
 }

@@ -14,6 +14,7 @@ StudyResult coefficientStudy(const StudyOptions& options);
 StudyResult resolutionStudy(const StudyOptions& options);
 StudyResult speedStudy(const StudyOptions& options);
 StudyResult reducedVsFullStudy(const StudyOptions& options);
+StudyResult lansAlphaStudy(const StudyOptions& options);
 
 /// The vortex pair of scenes/seed/vortex_merge_2d.toml at `cells`², no dye, with every
 /// divergence-free mode of that grid.

@@ -254,6 +254,35 @@ def draw_reduced_vs_full(data, folder):
              f'the smoke rises slowly (the projection of a force narrower than the modes).')]
 
 
+def draw_lans_alpha(data, folder):
+    scene = data["scene"]
+    fig, (spectrum, energy) = plt.subplots(1, 2, figsize=(12, 4.2))
+    for key, colour, name in (("navier_stokes", "tab:red", "Navier–Stokes"), ("lans_alpha", "tab:blue", "LANS-α")):
+        run = data[key]
+        spectrum.loglog(run["kappa"], run["energy"], "o-", color=colour,
+                        label=f'{name}: slope {run["high_kappa_slope"]:.2f} at high κ')
+        energy.plot(run["time"], run["total_energy"], color=colour, label=name)
+    k = [x for x in data["navier_stokes"]["kappa"] if x > 0]
+    anchor = data["navier_stokes"]["energy"][data["navier_stokes"]["kappa"].index(k[0])]
+    spectrum.loglog(k, [anchor * (x / k[0]) ** (-5.0 / 3.0) for x in k], "k--", label="κ^(−5/3)")
+    spectrum.set_xticks(k)
+    spectrum.set_xticklabels([f"{x:g}" for x in k])
+    spectrum.minorticks_off()
+    spectrum.set_xlabel("κ (shells of width 1; the last, cut by the truncation, left out)")
+    spectrum.set_ylabel(f'E(κ), averaged over t = {scene["averaged_from"]:g} … {scene["duration"]:g}')
+    spectrum.legend(fontsize=8)
+    spectrum.grid(True, which="both", alpha=0.3)
+    energy.set_xlabel("time")
+    energy.set_ylabel("½|v|²")
+    energy.axvline(scene["averaged_from"], color="grey", lw=1)
+    energy.legend(fontsize=8)
+    energy.grid(True, alpha=0.3)
+    return [(save(fig, folder, "lans_alpha"),
+             f'A closed box [0, π]³ ({scene["resolution"]}³, {scene["modes"]} modes) whose modes with κ < 2 are '
+             f'held at fixed amplitudes ([forcing]), viscosity {scene["viscosity"]}, LANS-α with α = '
+             f'{scene["alpha"]}: the average energy spectrum (seed Fig. 6.9) and the energy over time.')]
+
+
 DRAWERS = {
     "convergence": draw_convergence,
     "integrators": draw_integrators,
@@ -262,6 +291,7 @@ DRAWERS = {
     "resolution": draw_resolution,
     "speed": draw_speed,
     "reduced_vs_full": draw_reduced_vs_full,
+    "lans_alpha": draw_lans_alpha,
 }
 
 
