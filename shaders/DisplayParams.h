@@ -38,7 +38,8 @@ using uint = std::uint32_t;
 #define DISPLAY_HOT_B 0.3294
 #define DISPLAY_TONE 2.5
 /* Outside the viewport, a shade darker than the background, with a frame of the wall colour
-   this many pixels wide around the picture (the box's walls). */
+   this many pixels wide around the picture (the box's walls; not on the sides of a periodic
+   axis, which have none). */
 #define DISPLAY_MARGIN 0.6
 #define DISPLAY_FRAME_PIXELS 3
 /* Velocity arrows. */
@@ -73,7 +74,8 @@ struct DisplayParams {
     float arrowScale;   /* window pixels per unit of velocity, */
     uint basisX;        /* from the face velocity of the basis grid of basisX x basisY cells */
     uint basisY;
-    uint pad0;
+    uint periodic; /* display_smoke_2d: bit a, axis a is periodic (MacGrid::periodic): the
+                      smoke and velocity wrap, and no wall frame is drawn on its sides */
     uint pad1;
 };
 

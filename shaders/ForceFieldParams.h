@@ -26,7 +26,7 @@ struct ForceSplatRecord {
 struct ForceFieldParams {
     uint dofCount;     /* velocity DOFs; one invocation per DOF (grid-stride loop) */
     uint upCount;      /* entries of the up-DOF list (the buoyancy stage) */
-    uint pad0;
+    uint periodic;     /* bit a: axis a is periodic (MacGrid::periodic) */
     uint splatCount;   /* splats in the splat buffer */
     uint cells[3];     /* basis grid cells per axis (1 on the unused 2D axis) */
     uint pad1;

@@ -10,7 +10,13 @@
    stencils clamp to it: tangential components keep their nearest value, the normal component
    falls to 0 at the wall, because wall faces (position 0 or n along their normal) read as 0
    whatever the field holds. Where the reference skips a wall corner this adds weight x 0, and on
-   an axis of one position (hi == lo) the second corner of a pair has weight 0: the same sums. */
+   an axis of one position (hi == lo) the second corner of a pair has weight 0: the same sums.
+
+   Periodic axes (bit a of `periodic`, MacGrid::periodic) clamp nothing: the stencil wraps (lo the
+   last position, hi the first), their faces have no wall, and on a periodic x the includer's
+   pair of the row's last face holds the row's first face as its second value (the x-neighbour
+   across the seam). Corner offsets that wrap are negative; uint arithmetic takes them modulo
+   2^32, so the addresses come out right. */
 #ifndef MODEFLOW_SHADERS_MAC_SAMPLING_GLSL
 #define MODEFLOW_SHADERS_MAC_SAMPLING_GLSL
 
@@ -22,26 +28,39 @@ struct AxisStencil {
     float f;
 };
 
-/* Along an axis with n samples at grid coordinates offset + 0, 1, ..., n - 1, clamped to them.
-   The index is clamped as an integer too: a diverged run's NaN coordinate makes floor() some
-   undefined value, which must still address the buffer (the reference samples it as 0). */
-AxisStencil axisStencil(float coordinate, float offset, int n) {
-    const float s = clamp(coordinate - offset, 0.0, float(n - 1));
+/* Along an axis with n samples at grid coordinates offset + 0, 1, ..., n - 1, clamped to them,
+   or on a periodic axis repeating every n (n - 1 interpolates with 0). The index is clamped as an
+   integer too: a diverged run's NaN coordinate makes floor() some undefined value, which must
+   still address the buffer (the reference samples it as 0). */
+AxisStencil axisStencil(float coordinate, float offset, int n, bool periodic) {
     AxisStencil a;
+    if (periodic) {
+        const float s = mod(coordinate - offset, float(n));  // [0, n], n only by round-off
+        const float below = floor(s);
+        a.lo = clamp(int(below), 0, n) % n;
+        a.hi = (a.lo + 1) % n;
+        a.f = s - below;
+        return a;
+    }
+    const float s = clamp(coordinate - offset, 0.0, float(n - 1));
     a.lo = clamp(int(floor(s)), 0, max(n - 2, 0));
     a.hi = min(a.lo + 1, n - 1);
     a.f = s - float(a.lo);
     return a;
 }
 
+bool isPeriodic(uint periodic, int axis) { return (periodic & (1u << uint(axis))) != 0u; }
+
 /* The normal-`axis` component at gridPoint on a grid of `cells`, whose normal-`axis` faces start
    at number `faceOffset`. */
-float sampleFaceComponent(const int axis, vec3 gridPoint, ivec3 cells, uint faceOffset) {
+float sampleFaceComponent(const int axis, vec3 gridPoint, ivec3 cells, uint faceOffset, uint periodic) {
+    const bool wraps = isPeriodic(periodic, axis);
     ivec3 extent = cells;
-    extent[axis] += 1;
+    extent[axis] += wraps ? 0 : 1;
     AxisStencil s[3];
     s[2] = AxisStencil(0, 0, 0.0);
-    [[unroll]] for (int a = 0; a < MAC_DIM; ++a) s[a] = axisStencil(gridPoint[a], a == axis ? 0.0 : 0.5, extent[a]);
+    [[unroll]] for (int a = 0; a < MAC_DIM; ++a)
+        s[a] = axisStencil(gridPoint[a], a == axis ? 0.0 : 0.5, extent[a], isPeriodic(periodic, a));
     const uint row = faceOffset + uint((s[2].lo * extent.y + s[1].lo) * extent.x + s[0].lo);
     const uint rowY = uint((s[1].hi - s[1].lo) * extent.x);
     const uint rowZ = uint((s[2].hi - s[2].lo) * extent.y * extent.x);
@@ -51,8 +70,8 @@ float sampleFaceComponent(const int axis, vec3 gridPoint, ivec3 cells, uint face
             const vec2 pair = macFacePair(row + uint(cy) * rowY + uint(cz) * rowZ);
             const ivec3 lo = ivec3(s[0].lo, cy != 0 ? s[1].hi : s[1].lo, cz != 0 ? s[2].hi : s[2].lo);
             const ivec3 hi = ivec3(s[0].hi, lo.yz);
-            const bool wallLo = lo[axis] == 0 || lo[axis] == cells[axis];
-            const bool wallHi = hi[axis] == 0 || hi[axis] == cells[axis];
+            const bool wallLo = !wraps && (lo[axis] == 0 || lo[axis] == cells[axis]);
+            const bool wallHi = !wraps && (hi[axis] == 0 || hi[axis] == cells[axis]);
             const float wy = cy != 0 ? s[1].f : 1.0 - s[1].f;
             float wz = 1.0;
 #if MAC_DIM == 3
@@ -65,10 +84,10 @@ float sampleFaceComponent(const int axis, vec3 gridPoint, ivec3 cells, uint face
 }
 
 /* All components (0 beyond MAC_DIM), in world units per unit time. */
-vec3 sampleVelocityGrid(vec3 gridPoint, ivec3 cells, uvec3 faceOffsets) {
+vec3 sampleVelocityGrid(vec3 gridPoint, ivec3 cells, uvec3 faceOffsets, uint periodic) {
     vec3 u = vec3(0.0);
     [[unroll]] for (int axis = 0; axis < MAC_DIM; ++axis)
-        u[axis] = sampleFaceComponent(axis, gridPoint, cells, faceOffsets[axis]);
+        u[axis] = sampleFaceComponent(axis, gridPoint, cells, faceOffsets[axis], periodic);
     return u;
 }
 

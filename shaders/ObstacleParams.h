@@ -34,7 +34,7 @@ struct ObstacleMismatchParams {
     uint cells[3];
     uint dim;
     float origin[3];
-    float pad0;
+    uint periodic; /* bit a: axis a is periodic (MacGrid::periodic) */
     float spacing[3];
     float pad1;
 };

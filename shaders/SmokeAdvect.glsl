@@ -10,8 +10,10 @@
 
    SL: RK2 (midpoint) backtrace from the cell centre with the MAC-sampled velocity of the basis
    grid, in smoke-grid units; trilinear sample over the fluid cells of the stencil only, weights
-   renormalized; no fluid weight left: the cell keeps its own value. smoke_face_pairs.comp runs
-   first each step. Cells outside the fluid mask are never written: SmokeState keeps them 0.
+   renormalized; no fluid weight left: the cell keeps its own value. Along periodic axes traces
+   leave through one end and come in through the other: the stencils wrap (MacSampling.glsl).
+   smoke_face_pairs.comp runs first each step. Cells outside the fluid mask are never written:
+   SmokeState keeps them 0.
 
    Layout and work, chosen by measurement on lavapipe (Mesa 22.3; SmokeKernelTest's TimingPerStep,
    totals in engine/device/SmokeAdvection.h). There every lane's storage-buffer load or store of
@@ -95,7 +97,7 @@ vec3 velocityAt(vec3 g) {
     vec3 basisPoint = g;
     [[unroll]] for (int a = 0; a < SMOKE_DIM; ++a) basisPoint[a] = g[a] / float(params.scale);
     return sampleVelocityGrid(basisPoint, ivec3(params.basisX, params.basisY, params.basisZ),
-                              uvec3(0u, params.faceOffsetY, params.faceOffsetZ));
+                              uvec3(0u, params.faceOffsetY, params.faceOffsetZ), params.periodic);
 }
 
 // Where the RK2 trace from `start` ends after -step * u, in smoke-grid units; u0 = velocityAt(start).
@@ -116,10 +118,12 @@ FluidSample sampleFluid(usamplerBuffer fields, vec3 g, vec2 fallback) {
     const ivec3 cells = ivec3(params.cellsX, params.cellsY, params.cellsZ);
     AxisStencil s[3];
     s[2] = AxisStencil(0, 0, 0.0);
-    [[unroll]] for (int a = 0; a < SMOKE_DIM; ++a) s[a] = axisStencil(g[a], 0.5, cells[a]);
+    [[unroll]] for (int a = 0; a < SMOKE_DIM; ++a)
+        s[a] = axisStencil(g[a], 0.5, cells[a], isPeriodic(params.periodic, a));
     const uint base = cellIndex(ivec3(s[0].lo, s[1].lo, s[2].lo));
     const uint fluid = stencilBits(base);
-    // Offsets of the hi corners: 0 on a one-cell axis, whose hi corner is the lo one (its bit is 0).
+    // Offsets of the hi corners: 0 on a one-cell axis, whose hi corner is the lo one (its bit is 0);
+    // negative across a periodic seam (uint arithmetic wraps them right).
     const uint dx = uint(s[0].hi - s[0].lo);
     const uint dy = uint(s[1].hi - s[1].lo) * params.cellsX;
     const uint dz = uint(s[2].hi - s[2].lo) * params.cellsX * params.cellsY;

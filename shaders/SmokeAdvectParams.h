@@ -23,8 +23,9 @@ using uint = std::uint32_t;
 #define SMOKE_CELL_AXIS_LIMIT 65535u
 
 /* The stencil mask: one byte per cell, 4 to a 32-bit word, 16 to a texel; bit cx + 2 cy + 4 cz of
-   the byte of cell (i, j, k) is set when cell (i + cx, j + cy, k + cz) exists and is fluid, so one
-   load gives the fluid flags of a whole trilinear stencil whose low corner is (i, j, k). */
+   the byte of cell (i, j, k) is set when cell (i + cx, j + cy, k + cz) exists and is fluid (taken
+   across the seam along a periodic axis), so one load gives the fluid flags of a whole trilinear
+   stencil whose low corner is (i, j, k). */
 
 /* MacCormack's record of a fluid cell (list order), written by the forward stage for the
    correction: 64-bit words (lo.density, lo.temperature), (hi.density, hi.temperature) over the
@@ -44,7 +45,7 @@ struct SmokeAdvectParams {
     uint faceOffsetY; /* number of the first normal-y and normal-z face (MacGrid::faceOffset) */
     uint faceOffsetZ;
     uint firstCell; /* this dispatch handles list entries firstCell ... firstCell + invocations - 1 */
-    uint pad0;
+    uint periodic;  /* bit a: axis a is periodic (both grids; MacGrid::periodic) */
     float stepX; /* dt / smoke spacing per axis (0 on an unused axis): velocity to cells per step */
     float stepY;
     float stepZ;
@@ -55,7 +56,8 @@ struct SmokeFacePairsParams {
     uint faceCount; /* MacGrid::faceTotal of the basis grid */
     uint firstFace; /* a multiple of 4: this dispatch handles faces firstFace ... firstFace + 4
                        invocations - 1 */
-    uint pad0;
+    uint wrapX;     /* x periodic: the basis grid's cells along x, every face group's row length
+                       (the last face of a row pairs with the row's first); 0 otherwise */
     uint pad1;
 };
 

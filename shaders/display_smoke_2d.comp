@@ -1,7 +1,8 @@
 #version 450
 // display_smoke_2d.comp: the stir window's picture of a 2D scene, each window pixel: the smoke sampled bilinearly between cell centres (the walls nearest-cell, so the
 // domain's boundary shows as it is discretized), toned like the PNG previews, tinted where hot,
-// with the text overlay on top. Wrapper: engine/display/DisplayKernels.cpp.
+// with the text overlay on top; along a periodic axis the smoke and the arrows' velocity are
+// sampled across the seam. Wrapper: engine/display/DisplayKernels.cpp.
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_control_flow_attributes : require
 #include "DisplayParams.h"
@@ -18,7 +19,13 @@ layout(push_constant) uniform Push { DisplayParams params; };
 #include "DisplayView.glsl"
 
 #define MAC_DIM 2
-vec2 macFacePair(uint face) { return vec2(faces[face], faces[min(face + 1u, uint(faces.length()) - 1u)]); }
+// The face and its x-neighbour; on a periodic x the last face of a row pairs with the row's first
+// (every face group's rows are basisX long then).
+vec2 macFacePair(uint face) {
+    const bool wrapX = (params.periodic & 1u) != 0u && face % params.basisX == params.basisX - 1u;
+    const uint next = wrapX ? face + 1u - params.basisX : min(face + 1u, uint(faces.length()) - 1u);
+    return vec2(faces[face], faces[next]);
+}
 #include "MacSampling.glsl"
 
 float segmentDistance(vec2 p, vec2 a, vec2 b) {
@@ -37,8 +44,9 @@ vec3 withArrow(vec3 colour, uint x, uint y) {
     const vec2 basis = vec2(params.basisX, params.basisY);
     const vec3 point = vec3(centre.x / view.x * basis.x, (1.0 - centre.y / view.y) * basis.y, 0.0);
     const ivec3 cells = ivec3(params.basisX, params.basisY, 1);
-    const uint yOffset = (params.basisX + 1u) * params.basisY;
-    const vec2 u = vec2(sampleFaceComponent(0, point, cells, 0u), sampleFaceComponent(1, point, cells, yOffset));
+    const uint yOffset = (params.basisX + ((params.periodic & 1u) != 0u ? 0u : 1u)) * params.basisY;
+    const vec2 u = vec2(sampleFaceComponent(0, point, cells, 0u, params.periodic),
+                        sampleFaceComponent(1, point, cells, yOffset, params.periodic));
     vec2 d = vec2(u.x, -u.y) * params.arrowScale;
     const float limit = 0.9 * params.arrowSpacing;
     if (length(d) > limit) d *= limit / length(d);
@@ -64,9 +72,16 @@ vec3 pixelColour(uint x, uint y) {
         if (!isFluid(uint(nearest.y * n.x + nearest.x))) {
             colour = vec3(DISPLAY_WALL_R, DISPLAY_WALL_G, DISPLAY_WALL_B);
         } else {
-            const vec2 s = clamp(p - 0.5, vec2(0.0), vec2(n - 1));
-            const ivec2 lo = min(ivec2(floor(s)), max(n - 2, ivec2(0)));
-            const ivec2 hi = min(lo + 1, n - 1);
+            vec2 s = clamp(p - 0.5, vec2(0.0), vec2(n - 1));
+            ivec2 lo = min(ivec2(floor(s)), max(n - 2, ivec2(0)));
+            ivec2 hi = min(lo + 1, n - 1);
+            // Along a periodic axis the edge pixels blend with the other end's cells.
+            [[unroll]] for (int a = 0; a < 2; ++a)
+                if ((params.periodic & (1u << a)) != 0u) {
+                    s[a] = mod(p[a] - 0.5, float(n[a]));
+                    lo[a] = clamp(int(floor(s[a])), 0, n[a] - 1);
+                    hi[a] = (lo[a] + 1) % n[a];
+                }
             const vec2 f = s - vec2(lo);
             // Wall cells hold 0: the smoke fades into the wall rather than past it.
             const vec2 v = mix(mix(fields[lo.y * n.x + lo.x], fields[lo.y * n.x + hi.x], f.x),

@@ -43,7 +43,7 @@ const float END_WEIGHT = (SCALE & 1u) != 0u ? 0.5 : 1.0;  // odd scale: the end 
 
 // Mean temperature over the dual cell of the up-facing face at `pos`: SCALE smoke cells across
 // per tangential axis, [p s - REACH, p s + REACH) along up, cells outside the grid (and, with the
-// mask, solid ones) left out.
+// mask, solid ones) left out; along a periodic up axis those are the other end's cells.
 float dualCellTemperature(uvec3 pos) {
     const ivec3 smokeCells = ivec3(params.cells[0], params.cells[1], params.cells[2]) *
                              ivec3(SCALE, SCALE, DIM == 3u ? SCALE : 1u);
@@ -58,8 +58,12 @@ float dualCellTemperature(uvec3 pos) {
                 ivec3 c = begin + ivec3(i, j, k);
                 const int step = UP == 1u ? j : k;  // position along up within the dual cell
                 float w = step == 0 || step == ALONG - 1 ? END_WEIGHT : 1.0;
-                if (c[UP] < 0 || c[UP] >= smokeCells[UP]) w = 0.0;
-                c[UP] = clamp(c[UP], 0, smokeCells[UP] - 1);  // read in bounds, weigh 0
+                if ((params.periodic & (1u << UP)) != 0u) {
+                    c[UP] = (c[UP] + smokeCells[UP]) % smokeCells[UP];  // REACH < one period
+                } else {
+                    if (c[UP] < 0 || c[UP] >= smokeCells[UP]) w = 0.0;
+                    c[UP] = clamp(c[UP], 0, smokeCells[UP] - 1);  // read in bounds, weigh 0
+                }
                 const uint cell = uint((c.z * smokeCells.y + c.y) * smokeCells.x + c.x);
                 if (USE_MASK != 0u && !isFluid(cell)) w = 0.0;
                 sum += w * temperature[cell];
@@ -71,15 +75,18 @@ float dualCellTemperature(uvec3 pos) {
 float splatForce(uint face) {
     const uint axis = faceAxis(face, params.faceStart1, params.faceStart2);
     const uint start = axis == 0u ? 0u : (axis == 1u ? params.faceStart1 : params.faceStart2);
-    const uvec3 pos = facePosition(face - start, axis, uvec3(params.cells[0], params.cells[1], params.cells[2]));
+    const uvec3 cells = uvec3(params.cells[0], params.cells[1], params.cells[2]);
+    const uvec3 pos = facePosition(face - start, axis, cells, params.periodic);
+    const vec3 spacing = vec3(params.spacing[0], params.spacing[1], params.spacing[2]);
+    vec3 x = vec3(0.0);
+    [[unroll]] for (uint a = 0u; a < DIM; ++a)
+        x[a] = params.origin[a] + (float(pos[a]) + (a == axis ? 0.0 : 0.5)) * params.spacing[a];
     float value = 0.0;
     for (uint k = 0u; k < params.splatCount; ++k) {
-        float r2 = 0.0;
-        [[unroll]] for (uint a = 0u; a < DIM; ++a) {
-            const float x = params.origin[a] + (float(pos[a]) + (a == axis ? 0.0 : 0.5)) * params.spacing[a];
-            r2 += (x - splats[k].centre[a]) * (x - splats[k].centre[a]);
-        }
-        value += splats[k].force[axis] * exp(-r2 / (splats[k].radius * splats[k].radius));
+        vec3 d = x - vec3(splats[k].centre[0], splats[k].centre[1], splats[k].centre[2]);
+        if (DIM == 2u) d.z = 0.0;
+        d = minimumImage(d, vec3(cells) * spacing, params.periodic);
+        value += splats[k].force[axis] * exp(-dot(d, d) / (splats[k].radius * splats[k].radius));
     }
     return value;
 }

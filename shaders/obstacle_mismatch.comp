@@ -5,6 +5,7 @@
 // faces keep the 0 they were created with). project_force.comp then projects it on the basis
 // (face-field weights: the exact inverse of the reconstruction) and modal_correct.comp subtracts
 // the result from v. One invocation per DOF, grid-stride; the first covering obstacle decides.
+// Along periodic axes an obstacle covers at the minimum-image offset (it reaches over the seam).
 #extension GL_GOOGLE_include_directive : require
 #include "FaceLocation.glsl"
 #include "ObstacleParams.h"
@@ -22,6 +23,8 @@ vec3 v3(float a[3]) { return vec3(a[0], a[1], a[2]); }
 bool covers(ObstacleRecord o, vec3 point) {
     vec3 d = point - v3(o.centre);
     if (params.dim == 2u) d.z = 0.0;
+    const vec3 box = vec3(params.cells[0], params.cells[1], params.cells[2]) * v3(params.spacing);
+    d = minimumImage(d, box, params.periodic);
     if (o.shape == OBSTACLE_BOX) return all(lessThanEqual(abs(d), v3(o.halfSize)));
     if (o.shape == OBSTACLE_CAPSULE) {
         const vec3 axis = v3(o.axis);
@@ -38,7 +41,7 @@ void main() {
         const uint face = faces[dof];
         const uint axis = faceAxis(face, params.faceStart1, params.faceStart2);
         const uint start = axis == 0u ? 0u : (axis == 1u ? params.faceStart1 : params.faceStart2);
-        const uvec3 position = facePosition(face - start, axis, cells);
+        const uvec3 position = facePosition(face - start, axis, cells, params.periodic);
         vec3 centre = v3(params.origin) + (vec3(position) + vec3(0.5)) * v3(params.spacing);
         centre[axis] -= 0.5 * params.spacing[axis];
         if (params.dim == 2u) centre.z = 0.0;

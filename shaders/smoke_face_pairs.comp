@@ -12,7 +12,9 @@
 // 64-bit and a float storage load per two faces), and stores 64-bit words: one scalar access per
 // lane on lavapipe, where a uvec2 takes two. f + 1 past a row's end pairs with the next row's
 // first face, which no stencil uses with a non-zero weight. The last face is a wall, which the
-// sampling reads as 0: it stands in for the faces past it.
+// sampling reads as 0: it stands in for the faces past it. Along a periodic x (wrapX: the row
+// length of every face group) the stencil of a row's last face reaches across the seam to the
+// row's first face, which it pairs with instead.
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
 #extension GL_EXT_control_flow_attributes : require
@@ -39,6 +41,14 @@ void main() {
             u[c] = floatBitsToUint(velocity[min(4u * k + c, faces - 1u)]);
         next = floatBitsToUint(velocity[faces - 1u]);
     }
-    pairs[2u * k] = u64vec2(pack64(u.xy), pack64(u.yz));
-    pairs[2u * k + 1u] = u64vec2(pack64(u.zw), pack64(uvec2(u.w, next)));
+    uvec4 second = uvec4(u.yzw, next);
+    if (params.wrapX != 0u) {
+        [[unroll]] for (uint c = 0u; c < 4u; ++c) {
+            const uint face = min(4u * k + c, faces - 1u);
+            if (face % params.wrapX == params.wrapX - 1u)
+                second[c] = floatBitsToUint(velocity[face - (params.wrapX - 1u)]);
+        }
+    }
+    pairs[2u * k] = u64vec2(pack64(uvec2(u.x, second.x)), pack64(uvec2(u.y, second.y)));
+    pairs[2u * k + 1u] = u64vec2(pack64(uvec2(u.z, second.z)), pack64(uvec2(u.w, second.w)));
 }

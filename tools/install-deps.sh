@@ -10,8 +10,9 @@ packages=(
     libtomlplusplus-dev libcli11-dev nlohmann-json3-dev libtinyobjloader-dev
     libvulkan-dev mesa-vulkan-drivers vulkan-tools glslang-tools spirv-tools vulkan-validationlayers
     libglfw3-dev xvfb xauth
-    libstb-dev libgtest-dev libbenchmark-dev time bc
-    python3-matplotlib
+    libstb-dev libgtest-dev libbenchmark-dev time bc python3 clang-format  # tools/check-layering.py, tools/check-format.sh
+    clang libclang-rt-14-dev    # the fuzz targets (libFuzzer), tools/fuzz.sh
+    python3-matplotlib          # modeflow validate draws its figures with it
 )
 
 missing=()

@@ -3,11 +3,28 @@
 # e.g. `tools/run-tests.sh -LE slow` or `-R Cli`. Without arguments the Vulkan tests (labels
 # engine and tools) then run a second time with the Khronos validation layer forced on for every
 # context (MODEFLOW_VULKAN_VALIDATION=1); their tests fail on any validation message.
+# The fuzz targets of tests/fuzz are built too (build-fuzz/, by tools/fuzz.sh) and each runs for
+# 10 s on its seeds (label fuzz), so a target that stops building or starts failing is noticed.
+#
+# `tools/run-tests.sh --sanitize [CTEST ARGS]` instead builds into build-asan/ with
+# AddressSanitizer and UndefinedBehaviorSanitizer (MODEFLOW_SANITIZE=ON) and runs the whole
+# suite there; any finding fails its test.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
+if [ "${1:-}" = --sanitize ]; then
+    shift
+    "$root/tools/install-deps.sh"
+    cmake -S "$root" -B "$root/build-asan" -G Ninja -DCMAKE_BUILD_TYPE=Release -DMODEFLOW_SANITIZE=ON \
+        -DMODEFLOW_BUILD_BENCHMARKS=OFF >/dev/null
+    cmake --build "$root/build-asan" -j "$(nproc)"
+    cd "$root/build-asan"
+    exec ctest --output-on-failure -j "$(nproc)" "$@"
+fi
 "$root/tools/build.sh"
+"$root/tools/fuzz.sh" --build-only
 cd "$root/build"
 ctest --output-on-failure -j "$(nproc)" "$@"
+(cd "$root/build-fuzz" && ctest --output-on-failure -j "$(nproc)" "$@")
 if [ $# -eq 0 ]; then
     echo "== again with the Vulkan validation layer on every context =="
     MODEFLOW_VULKAN_VALIDATION=1 ctest --output-on-failure -j "$(nproc)" -L "engine|tools"

@@ -22,20 +22,23 @@ std::string failure(std::string_view what, const fs::path& path, const std::stri
     return "cannot write " + std::string(what) + " " + path.string() + ": " + reason;
 }
 
-/// Writes all of `bytes` to a new file; the system's reason on failure.
-void writeAll(const fs::path& file, std::string_view bytes, std::string_view what, const fs::path& finalPath) {
+/// Writes all of `pieces` to a new file; the system's reason on failure.
+void writeAll(const fs::path& file, std::initializer_list<std::string_view> pieces,
+              std::string_view what, const fs::path& finalPath) {
     const int fd = ::open(file.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
     if (fd < 0) throw Error(failure(what, finalPath, std::strerror(errno)));
-    std::size_t done = 0;
-    while (done < bytes.size()) {
-        const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
-        if (n < 0 && errno == EINTR) continue;
-        if (n <= 0) {
-            const int error = n < 0 ? errno : ENOSPC;
-            ::close(fd);
-            throw Error(failure(what, finalPath, std::strerror(error)));
+    for (const std::string_view bytes : pieces) {
+        std::size_t done = 0;
+        while (done < bytes.size()) {
+            const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
+            if (n < 0 && errno == EINTR) continue;
+            if (n <= 0) {
+                const int error = n < 0 ? errno : ENOSPC;
+                ::close(fd);
+                throw Error(failure(what, finalPath, std::strerror(error)));
+            }
+            done += std::size_t(n);
         }
-        done += std::size_t(n);
     }
     if (::close(fd) != 0) throw Error(failure(what, finalPath, std::strerror(errno)));
 }
@@ -49,7 +52,13 @@ fs::path temporaryPathFor(const fs::path& path) {
 }
 
 void writeFileAtomically(const fs::path& path, std::string_view bytes, std::string_view what) {
-    writeFileAtomically(path, what, [&](const fs::path& temporary) { writeAll(temporary, bytes, what, path); });
+    writeFileAtomically(path, {bytes}, what);
+}
+
+void writeFileAtomically(const fs::path& path, std::initializer_list<std::string_view> pieces,
+                         std::string_view what) {
+    writeFileAtomically(
+        path, what, [&](const fs::path& temporary) { writeAll(temporary, pieces, what, path); });
 }
 
 void writeFileAtomically(const fs::path& path, std::string_view what,

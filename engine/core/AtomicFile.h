@@ -7,6 +7,7 @@
 
 #include <filesystem>
 #include <functional>
+#include <initializer_list>
 #include <string_view>
 
 namespace modeflow {
@@ -18,6 +19,11 @@ std::filesystem::path temporaryPathFor(const std::filesystem::path& path);
 /// @throw modeflow::Error "cannot write <what> <path>: <the system's reason>" (e.g. "No space
 ///        left on device"); the temporary file is removed and an existing `path` left as it was.
 void writeFileAtomically(const std::filesystem::path& path, std::string_view bytes, std::string_view what);
+
+/// The same for a file made of `pieces` one after another (a header, a large payload, a
+/// checksum), written without joining them in memory first.
+void writeFileAtomically(const std::filesystem::path& path,
+                         std::initializer_list<std::string_view> pieces, std::string_view what);
 
 /// The same for writers that need a file name (OpenVDB, image encoders): `write` writes the
 /// temporary file it is given, then it is renamed over `path`. Whatever `write` throws is

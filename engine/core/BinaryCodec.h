@@ -32,8 +32,14 @@ public:
     /// A count, then the values.
     template <typename T>
     void array(const T* values, std::size_t count) {
-        static_assert(std::is_trivially_copyable_v<T>);
         pod<std::uint64_t>(count);
+        this->values(values, count);
+    }
+    /// The values alone, for a record that states their number otherwise (a matrix's rows and
+    /// columns); ByteReader::bytes reads them back.
+    template <typename T>
+    void values(const T* values, std::size_t count) {
+        static_assert(std::is_trivially_copyable_v<T>);
         mBytes.append(reinterpret_cast<const char*>(values), count * sizeof(T));
     }
     template <typename T>

@@ -1,5 +1,7 @@
 #include "engine/core/MacGrid.h"
 
+#include <cmath>
+
 #include "engine/core/Error.h"
 
 namespace modeflow {
@@ -11,6 +13,7 @@ MacGrid MacGrid::fromSpec(const GridSpec& grid) {
         mac.cells[a] = grid.resolution[a];
         mac.origin[a] = grid.boundsMin[a];
         mac.spacing[a] = grid.spacing(a);
+        mac.periodic[a] = grid.isPeriodic(a);
     }
     return mac;
 }
@@ -23,6 +26,18 @@ MacGrid MacGrid::refined(int scale) const {
         fine.spacing[a] = spacing[a] / scale;
     }
     return fine;
+}
+
+Vec3 MacGrid::minimumImage(Vec3 offset) const {
+    for (int a = 0; a < dim; ++a)
+        if (periodic[a]) offset[a] -= length(a) * std::round(offset[a] / length(a));
+    return offset;
+}
+
+Vec3 MacGrid::nearestImage(Vec3 point, const Vec3& to) const {
+    for (int a = 0; a < dim; ++a)
+        if (periodic[a]) point[a] -= length(a) * std::round((point[a] - to[a]) / length(a));
+    return point;
 }
 
 double MacGrid::faceArea(int axis) const {

@@ -1,9 +1,14 @@
 #pragma once
 /// @file MacGrid.h
-/// The regular grid of a scene seen as a MAC grid (precompute/README.md; engine/README.md): cells, and faces numbered as
-/// the precompute's CubicalComplex numbers them, so the basis's face DOFs index straight into it:
-/// faces grouped by normal axis (axis 0 first), inside a group x fastest, with n_a + 1 positions
-/// along the normal axis a and n_b along the others. Cells are numbered x fastest.
+/// The regular grid of a scene seen as a MAC grid (precompute/README.md; engine/README.md): cells,
+/// and faces numbered as the precompute's CubicalComplex numbers them, so the basis's face DOFs
+/// index straight into it: faces grouped by normal axis (axis 0 first), inside a group x fastest,
+/// with n_a + 1 positions along the normal axis a and n_b along the others. Cells are numbered x
+/// fastest.
+///
+/// Periodic axes (GridSpec::periodic) wrap: the box's two ends along them are one plane, so a
+/// periodic normal axis has n_a face positions (the face at n_a is the face at 0), no wall, and
+/// positions and offsets along it are taken modulo the box's length (wrap, minimumImage).
 ///
 /// A face value in a "face field" is the face-normal velocity (or force density) averaged over
 /// the whole face: a flux divided by the full face area (the divergence-free fluxes stay
@@ -21,6 +26,8 @@ struct MacGrid {
     std::array<int, 3> cells{1, 1, 1};
     std::array<double, 3> origin{0.0, 0.0, 0.0};   ///< lower corner of the box
     std::array<double, 3> spacing{1.0, 1.0, 1.0};  ///< cell size per axis
+    /// Per axis: the box wraps (at least 2 cells along it).
+    std::array<bool, 3> periodic{false, false, false};
 
     static MacGrid fromSpec(const GridSpec& grid);
     /// The same box with `scale` cells per cell along each used axis (the smoke grid).
@@ -36,7 +43,7 @@ struct MacGrid {
     /// Positions of normal-`axis` faces along each axis.
     std::array<int, 3> faceExtent(int axis) const {
         std::array<int, 3> e = cells;
-        e[axis] += 1;
+        if (!periodic[axis]) e[axis] += 1;
         return e;
     }
     std::int64_t faceCount(int axis) const {
@@ -55,6 +62,38 @@ struct MacGrid {
         const std::array<int, 3> e = faceExtent(axis);
         return faceOffset(axis) + (std::int64_t(z) * e[1] + y) * e[0] + x;
     }
+    /// The normal-`axis` face on the upper side of cell (x, y, z) (across the seam on a periodic
+    /// axis).
+    std::int64_t upperFaceIndex(int axis, int x, int y, int z) const {
+        std::array<int, 3> p{x, y, z};
+        p[axis] = p[axis] + 1 == cells[axis] && periodic[axis] ? 0 : p[axis] + 1;
+        return faceIndex(axis, p[0], p[1], p[2]);
+    }
+    /// Whether the normal-`axis` faces at `position` are a wall of the box: positions 0 and n
+    /// along a non-periodic axis.
+    bool isWallFace(int axis, int position) const {
+        return !periodic[axis] && (position == 0 || position == cells[axis]);
+    }
+    /// Bit a set when axis a is periodic: the `periodic` word of the device kernels' parameters.
+    std::uint32_t periodicBits() const {
+        return std::uint32_t(periodic[0]) | std::uint32_t(periodic[1]) << 1 |
+               std::uint32_t(periodic[2]) << 2;
+    }
+    /// Length of the box along `axis`.
+    double length(int axis) const { return cells[axis] * spacing[axis]; }
+    /// `position` along `axis` brought into 0 … cells − 1 on a periodic axis; as is on others.
+    int wrap(int axis, int position) const {
+        if (!periodic[axis]) return position;
+        const int n = cells[axis];
+        return ((position % n) + n) % n;
+    }
+    /// The shortest of the offsets a whole number of box lengths apart along each periodic axis
+    /// (the minimum image); the other components exactly as given.
+    Vec3 minimumImage(Vec3 offset) const;
+    /// `point` moved by whole box lengths along periodic axes to lie nearest `to`; the other
+    /// coordinates exactly as given.
+    Vec3 nearestImage(Vec3 point, const Vec3& to) const;
+
     /// Area of a whole normal-`axis` face (a length in 2D).
     double faceArea(int axis) const;
     double cellVolume() const { return spacing[0] * spacing[1] * spacing[2]; }

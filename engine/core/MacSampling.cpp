@@ -17,10 +17,20 @@ struct AxisStencil {
     double f = 0.0;  ///< weight of `hi`
 };
 
-/// Along an axis with `n` samples at grid coordinates offset + 0, 1, …, n − 1, clamped to them.
-AxisStencil axisStencil(double coordinate, double offset, int n) {
-    const double s = std::clamp(coordinate - offset, 0.0, double(n - 1));
+/// Along an axis with `n` samples at grid coordinates offset + 0, 1, …, n − 1, clamped to them;
+/// on a periodic axis the samples repeat every n, and the stencil wraps (n − 1 to 0).
+AxisStencil axisStencil(double coordinate, double offset, int n, bool periodic) {
     AxisStencil a;
+    if (periodic) {
+        double s = std::fmod(coordinate - offset, double(n));  // exact, (−n, n)
+        if (s < 0.0) s += n;                                   // [0, n], n only by round-off
+        const double below = std::floor(s);
+        a.lo = int(below) % n;
+        a.hi = (a.lo + 1) % n;
+        a.f = s - below;
+        return a;
+    }
+    const double s = std::clamp(coordinate - offset, 0.0, double(n - 1));
     a.lo = std::min(int(std::floor(s)), std::max(n - 2, 0));
     a.hi = std::min(a.lo + 1, n - 1);
     a.f = s - a.lo;
@@ -35,14 +45,16 @@ struct Corners {
 };
 
 /// The stencil at `gridPoint` on a lattice of extent[a] points along axis a, at grid coordinates
-/// offset[a] + 0, 1, … (cell centres: offset ½; face positions along their normal: offset 0).
-Corners trilinearCorners(const std::array<int, 3>& extent, const Vec3& offset, const Vec3& gridPoint) {
+/// offset[a] + 0, 1, … (cell centres: offset ½; face positions along their normal: offset 0),
+/// wrapping along the grid's periodic axes.
+Corners trilinearCorners(const std::array<int, 3>& extent, const std::array<bool, 3>& periodic,
+                         const Vec3& offset, const Vec3& gridPoint) {
     Corners corners;
     // A diverged state moves points to NaN or infinity: no stencil (floor of NaN is no index).
     for (int a = 0; a < 3; ++a)
         if (!std::isfinite(gridPoint[a])) return corners;
     std::array<AxisStencil, 3> s;
-    for (int a = 0; a < 3; ++a) s[a] = axisStencil(gridPoint[a], offset[a], extent[a]);
+    for (int a = 0; a < 3; ++a) s[a] = axisStencil(gridPoint[a], offset[a], extent[a], periodic[a]);
     for (int cz = 0; cz <= (s[2].hi != s[2].lo); ++cz)
         for (int cy = 0; cy <= (s[1].hi != s[1].lo); ++cy)
             for (int cx = 0; cx <= (s[0].hi != s[0].lo); ++cx) {
@@ -64,7 +76,7 @@ Vec3 worldToGrid(const MacGrid& grid, const Vec3& world) {
 }
 
 CellStencil cellStencil(const MacGrid& grid, const Vec3& gridPoint) {
-    const Corners corners = trilinearCorners(grid.cells, {0.5, 0.5, 0.5}, gridPoint);
+    const Corners corners = trilinearCorners(grid.cells, grid.periodic, {0.5, 0.5, 0.5}, gridPoint);
     CellStencil stencil;
     stencil.count = corners.count;
     for (int c = 0; c < corners.count; ++c) {
@@ -91,11 +103,12 @@ double sampleFaceComponent(const MacGrid& grid, std::span<const T> faces, int ax
     // Face positions along the normal sit on integer coordinates, along the others at centres.
     Vec3 offset{0.5, 0.5, 0.5};
     offset[axis] = 0.0;
-    const Corners corners = trilinearCorners(grid.faceExtent(axis), offset, gridPoint);
+    const Corners corners =
+        trilinearCorners(grid.faceExtent(axis), grid.periodic, offset, gridPoint);
     double value = 0.0;
     for (int c = 0; c < corners.count; ++c) {
         const std::array<int, 3>& p = corners.position[c];
-        if (p[axis] == 0 || p[axis] == grid.cells[axis]) continue;  // a wall of the box
+        if (grid.isWallFace(axis, p[axis])) continue;
         value += corners.weight[c] * double(faces[grid.faceIndex(axis, p[0], p[1], p[2])]);
     }
     return value;

@@ -1,8 +1,8 @@
 #pragma once
 /// @file MacSampling.h
-/// Trilinear sampling on a MacGrid (engine/README.md): the staggered (MAC) rule for a face field, each
-/// velocity component interpolated from its own grid of face centres, and the cell-centred rule
-/// for a cell field. 2D grids (cells[2] = 1) go through the same code: a one-cell axis has a
+/// Trilinear sampling on a MacGrid (engine/README.md): the staggered (MAC) rule for a face field,
+/// each velocity component interpolated from its own grid of face centres, and the cell-centred
+/// rule for a cell field. 2D grids (cells[2] = 1) go through the same code: a one-cell axis has a
 /// one-point stencil.
 ///
 /// Points are given in *grid units*: (world − origin) / spacing per axis, so cell (i, j, k)
@@ -16,6 +16,10 @@
 /// linearly to zero at the wall, because the walls of the box carry zero normal velocity: the
 /// wall faces (positions 0 and n along their normal) read as 0 whatever the field stores there.
 /// A point with a non-finite coordinate (a diverged run) has an empty stencil and samples as 0.
+///
+/// Along a periodic axis nothing is clamped: stencils wrap across the seam (the last cell centre
+/// or face interpolates with the first), so a point anywhere samples the field's periodic
+/// continuation, continuous across the seam.
 
 #include <array>
 #include <cstdint>

@@ -5,8 +5,9 @@
 namespace modeflow {
 namespace {
 
-/// The length of the UTF-8 sequence of a printable character at the start of `text` (C1
-/// controls U+0080–U+009F excluded), or 0.
+/// The length of the UTF-8 sequence of a printable character at the start of `text`, or 0: a
+/// lead byte and its continuation bytes, neither overlong nor a surrogate nor beyond U+10FFFF,
+/// and not a C1 control (U+0080–U+009F).
 std::size_t printableSequence(std::string_view text) {
     const auto byte = [&](std::size_t i) { return static_cast<unsigned char>(text[i]); };
     const unsigned char lead = byte(0);
@@ -16,10 +17,14 @@ std::size_t printableSequence(std::string_view text) {
                                : lead >= 0xf0 && lead <= 0xf4 ? 4
                                                               : 0;
     if (length == 0 || text.size() < length) return 0;
-    for (std::size_t i = 1; i < length; ++i)
+    char32_t code = lead & (0xff >> (length + 1));
+    for (std::size_t i = 1; i < length; ++i) {
         if ((byte(i) & 0xc0) != 0x80) return 0;
-    if (lead == 0xc2 && byte(1) < 0xa0) return 0;  // C1 controls
-    return length;
+        code = (code << 6) | (byte(i) & 0x3f);
+    }
+    constexpr char32_t kSmallest[] = {0, 0, 0xa0, 0x800, 0x10000};  // 2 bytes: C1 controls too
+    const bool surrogate = code >= 0xd800 && code <= 0xdfff;
+    return code >= kSmallest[length] && code <= 0x10ffff && !surrogate ? length : 0;
 }
 
 }  // namespace

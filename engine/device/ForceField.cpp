@@ -97,6 +97,7 @@ void ForceFieldKernel::record(vulkan::CommandSequence& sequence, double buoyancy
     params.faceStart1 = std::uint32_t(mGrid.faceOffset(1));
     params.faceStart2 = std::uint32_t(mGrid.faceOffset(2));
     params.buoyancy = float(buoyancy);
+    params.periodic = mGrid.periodicBits();
     for (int a = 0; a < 3; ++a) {
         params.cells[a] = std::uint32_t(mGrid.cells[a]);
         params.origin[a] = float(mGrid.origin[a]);

@@ -73,6 +73,7 @@ void ObstacleCorrection::record(vulkan::CommandSequence& sequence, const ModeBuf
     params.faceStart1 = std::uint32_t(mGrid.faceOffset(1));
     params.faceStart2 = std::uint32_t(mGrid.faceOffset(2));
     params.dim = std::uint32_t(mGrid.dim);
+    params.periodic = mGrid.periodicBits();
     for (int a = 0; a < 3; ++a) {
         params.cells[a] = std::uint32_t(mGrid.cells[a]);
         params.origin[a] = float(mGrid.origin[a]);

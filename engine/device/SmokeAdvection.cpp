@@ -40,6 +40,7 @@ shaders::SmokeAdvectParams stepParams(const SmokeState& state, double dt) {
     p.scale = std::uint32_t(state.scale());
     p.faceOffsetY = std::uint32_t(basis.faceOffset(1));
     p.faceOffsetZ = std::uint32_t(basis.faceOffset(2));
+    p.periodic = basis.periodicBits();
     // Velocity times dt / spacing: smoke cells per step, as in the CPU reference.
     p.stepX = float(dt / smoke.spacing[0]);
     p.stepY = float(dt / smoke.spacing[1]);
@@ -51,6 +52,7 @@ shaders::SmokeAdvectParams stepParams(const SmokeState& state, double dt) {
 shaders::SmokeFacePairsParams pairParams(const MacGrid& basis) {
     shaders::SmokeFacePairsParams p{};
     p.faceCount = std::uint32_t(basis.faceTotal());
+    p.wrapX = basis.periodic[0] ? std::uint32_t(basis.cells[0]) : 0u;
     return p;
 }
 

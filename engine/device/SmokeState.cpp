@@ -54,10 +54,14 @@ vulkan::DeviceBuffer zeroBuffer(const vulkan::VulkanContext& context, std::size_
     return texelBuffer(context, std::vector<std::uint32_t>(bytes / 4, 0), name);
 }
 
-/// Per cell: bit cx + 2 cy + 4 cz set when cell (x + cx, y + cy, z + cz) exists and is fluid.
+/// Per cell: bit cx + 2 cy + 4 cz set when cell (x + cx, y + cy, z + cz) exists and is fluid
+/// (across the seam along a periodic axis).
 std::vector<std::uint8_t> stencilFlags(const MacGrid& smoke, const std::vector<std::uint8_t>& fluid) {
     std::vector<std::uint8_t> bits(fluid.size(), 0);
     const auto fluidAt = [&](int x, int y, int z) {
+        x = smoke.wrap(0, x);
+        y = smoke.wrap(1, y);
+        z = smoke.wrap(2, z);
         return x < smoke.cells[0] && y < smoke.cells[1] && z < smoke.cells[2] && fluid[smoke.cellIndex(x, y, z)];
     };
     for (int z = 0; z < smoke.cells[2]; ++z)

@@ -78,6 +78,7 @@ void DisplayKernels::recordSmoke2D(vulkan::CommandSequence& sequence, const Fiel
     p.arrowScale = look.arrowScale;
     p.basisX = std::uint32_t(basis.cells[0]);
     p.basisY = std::uint32_t(basis.cells[1]);
+    p.periodic = basis.periodicBits();
     const std::array<const vulkan::DeviceBuffer*, 5> buffers{&fields.smoke, &fields.mask, &overlay,
                                                              &pixels, &fields.faceVelocity};
     sequence.dispatch(mSmoke2D, buffers, p, pixelGroups(mSmoke2D, target, overlay, pixels));

@@ -18,6 +18,9 @@ enum class InputKind {
 
 enum class MouseButton { Left, Right };
 
+/// The widest or tallest window a script or the command line may ask for, in screen units.
+inline constexpr int kMaxWindowSide = 16384;
+
 struct InputEvent {
     InputKind kind = InputKind::Move;
     double x = 0.0;

@@ -1,113 +1,65 @@
 #include "engine/format/CacheFile.h"
 
+#include <cerrno>
 #include <cstring>
 #include <fstream>
-#include <system_error>
+#include <new>
+#include <string>
 
-#include <unistd.h>
-
+#include "engine/core/AtomicFile.h"
 #include "engine/core/Error.h"
-
-static_assert(__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__, "the cache format is little-endian");
+#include "engine/core/InputFile.h"
+#include "engine/format/CacheConsistency.h"
 
 namespace modeflow {
 namespace {
 
 constexpr char kMagic[16] = {'M', 'O', 'D', 'E', 'F', 'L', 'O', 'W', '-', 'B', 'A', 'S', 'I', 'S', 0, 0};
 constexpr size_t kHeaderSize = 16 + 4 + 4 + 8 + 8;
+/// The largest cache file read (64 GiB): far above any basis a precompute finishes, low enough that
+/// a damaged or hostile file cannot make the reader ask for terabytes.
+constexpr std::uintmax_t kMaxCacheBytes = std::uintmax_t{1} << 36;
 
-class Writer {
-public:
-    template <typename T>
-    void pod(const T& v) {
-        static_assert(std::is_trivially_copyable_v<T>);
-        mBytes.append(reinterpret_cast<const char*>(&v), sizeof(T));
-    }
-    void string(std::string_view s) {
-        pod<std::uint64_t>(s.size());
-        mBytes.append(s);
-    }
-    template <typename T>
-    void vector(const std::vector<T>& v) {
-        pod<std::uint64_t>(v.size());
-        mBytes.append(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(T));
-    }
-    void vector(const Eigen::VectorXd& v) {
-        pod<std::uint64_t>(std::uint64_t(v.size()));
-        mBytes.append(reinterpret_cast<const char*>(v.data()), size_t(v.size()) * sizeof(double));
-    }
-    void matrix(const Eigen::MatrixXd& m) {
-        pod<std::uint64_t>(std::uint64_t(m.rows()));
-        pod<std::uint64_t>(std::uint64_t(m.cols()));
-        mBytes.append(reinterpret_cast<const char*>(m.data()), size_t(m.size()) * sizeof(double));
-    }
-    const std::string& bytes() const { return mBytes; }
+void putVector(ByteWriter& w, const Eigen::VectorXd& v) {
+    w.array(v.data(), std::size_t(v.size()));
+}
 
-private:
-    std::string mBytes;
-};
+void putMatrix(ByteWriter& w, const Eigen::MatrixXd& m) {
+    w.pod<std::uint64_t>(std::uint64_t(m.rows()));
+    w.pod<std::uint64_t>(std::uint64_t(m.cols()));
+    w.values(m.data(), std::size_t(m.size()));
+}
 
-class Reader {
-public:
-    Reader(std::string_view bytes, const std::filesystem::path& path) : mBytes(bytes), mPath(path) {}
+/// The next `count` doubles into `to`, which may be null when count is 0 (an empty vector's
+/// data()).
+void takeDoubles(ByteReader& r, double* to, std::size_t count) {
+    const std::string_view bytes = r.bytes(count * sizeof(double));
+    if (count != 0) std::memcpy(to, bytes.data(), bytes.size());
+}
 
-    template <typename T>
-    T pod() {
-        T v;
-        std::memcpy(&v, take(sizeof(T)), sizeof(T));
-        return v;
-    }
-    std::string string() {
-        const auto n = count(1);
-        return std::string(take(n), n);
-    }
-    template <typename T>
-    std::vector<T> vector() {
-        const auto n = count(sizeof(T));
-        std::vector<T> v(n);
-        std::memcpy(v.data(), take(n * sizeof(T)), n * sizeof(T));
-        return v;
-    }
-    Eigen::VectorXd eigenVector() {
-        const auto n = count(sizeof(double));
-        Eigen::VectorXd v(static_cast<Eigen::Index>(n));
-        std::memcpy(v.data(), take(n * sizeof(double)), n * sizeof(double));
-        return v;
-    }
-    Eigen::MatrixXd matrix() {
-        const auto rows = pod<std::uint64_t>();
-        const auto cols = pod<std::uint64_t>();
-        if (cols != 0 && rows > (mBytes.size() - mAt) / sizeof(double) / cols) corrupt();
-        Eigen::MatrixXd m(static_cast<Eigen::Index>(rows), static_cast<Eigen::Index>(cols));
-        std::memcpy(m.data(), take(rows * cols * sizeof(double)), rows * cols * sizeof(double));
-        return m;
-    }
-    bool atEnd() const { return mAt == mBytes.size(); }
-    [[noreturn]] void corrupt() const {
-        throw Error("cache file " + mPath.string() +
-                    " is corrupt (its contents do not match its layout); delete it or rerun "
-                    "precompute with --force");
-    }
+Eigen::VectorXd takeVector(ByteReader& r) {
+    const auto n = r.count(sizeof(double));
+    Eigen::VectorXd v(static_cast<Eigen::Index>(n));
+    takeDoubles(r, v.data(), n);
+    return v;
+}
 
-private:
-    std::uint64_t count(size_t elementSize) {
-        const auto n = pod<std::uint64_t>();
-        if (n > (mBytes.size() - mAt) / elementSize) corrupt();
-        return n;
-    }
-    const char* take(size_t n) {
-        if (n > mBytes.size() - mAt) corrupt();
-        const char* p = mBytes.data() + mAt;
-        mAt += n;
-        return p;
-    }
-    std::string_view mBytes;
-    size_t mAt = 0;
-    const std::filesystem::path& mPath;
-};
+Eigen::MatrixXd takeMatrix(ByteReader& r) {
+    const auto rows = r.pod<std::uint64_t>();
+    const auto cols = r.pod<std::uint64_t>();
+    // An empty matrix keeps its other dimension (no scalar modes: cells × 0), which only a
+    // bound far beyond any grid limits.
+    constexpr std::uint64_t kMaxDimension = std::uint64_t{1} << 40;
+    if (rows > kMaxDimension || cols > kMaxDimension ||
+        (cols != 0 && rows > r.remaining() / sizeof(double) / cols))
+        r.fail("a matrix runs past the end");
+    Eigen::MatrixXd m(static_cast<Eigen::Index>(rows), static_cast<Eigen::Index>(cols));
+    takeDoubles(r, m.data(), rows * cols);
+    return m;
+}
 
 std::string serialize(const BasisCache& c) {
-    Writer w;
+    ByteWriter w;
     w.string(c.key);
     w.pod<std::int32_t>(c.grid.dim);
     for (int r : c.grid.resolution) w.pod<std::int32_t>(r);
@@ -118,19 +70,19 @@ std::string serialize(const BasisCache& c) {
     w.pod<std::int32_t>(int(c.boundary));
     w.vector(c.cellFraction);
     w.vector(c.faces);
-    w.vector(c.faceStar);
+    putVector(w, c.faceStar);
     w.vector(c.cells);
-    w.vector(c.cellStar);
-    w.vector(c.velocity.eigenvalues);
-    w.matrix(c.velocity.modes);
+    putVector(w, c.cellStar);
+    putVector(w, c.velocity.eigenvalues);
+    putMatrix(w, c.velocity.modes);
     w.vector(c.velocity.modeNumbers);
     w.pod<std::int32_t>(c.velocity.harmonic);
     w.pod(c.velocity.penalty);
     w.pod<std::int32_t>(int(c.scalar.boundary));
     w.vector(c.scalar.cells);
-    w.vector(c.scalar.cellStar);
-    w.vector(c.scalar.eigenvalues);
-    w.matrix(c.scalar.modes);
+    putVector(w, c.scalar.cellStar);
+    putVector(w, c.scalar.eigenvalues);
+    putMatrix(w, c.scalar.modes);
     w.pod<std::int32_t>(c.scalar.omittedConstants);
     w.pod<std::int32_t>(int(c.coefficients.storage));
     w.vector(c.coefficients.packed);
@@ -147,8 +99,11 @@ std::string serialize(const BasisCache& c) {
     return w.bytes();
 }
 
-BasisCache deserialize(std::string_view payload, const std::filesystem::path& path) {
-    Reader r(payload, path);
+BasisCache deserialize(std::string_view payload, const std::string& where) {
+    ByteReader r(payload, [&](std::string_view why) {
+        return where + " is corrupt (" + std::string(why) +
+               "); delete it or rerun precompute with --force";
+    });
     BasisCache c;
     c.key = r.string();
     c.grid.dim = r.pod<std::int32_t>();
@@ -160,19 +115,19 @@ BasisCache deserialize(std::string_view payload, const std::filesystem::path& pa
     c.boundary = BoundaryTreatment(r.pod<std::int32_t>());
     c.cellFraction = r.vector<double>();
     c.faces = r.vector<std::int64_t>();
-    c.faceStar = r.eigenVector();
+    c.faceStar = takeVector(r);
     c.cells = r.vector<std::int64_t>();
-    c.cellStar = r.eigenVector();
-    c.velocity.eigenvalues = r.eigenVector();
-    c.velocity.modes = r.matrix();
+    c.cellStar = takeVector(r);
+    c.velocity.eigenvalues = takeVector(r);
+    c.velocity.modes = takeMatrix(r);
     c.velocity.modeNumbers = r.vector<int>();
     c.velocity.harmonic = r.pod<std::int32_t>();
     c.velocity.penalty = r.pod<double>();
     c.scalar.boundary = ScalarBoundary(r.pod<std::int32_t>());
     c.scalar.cells = r.vector<std::int64_t>();
-    c.scalar.cellStar = r.eigenVector();
-    c.scalar.eigenvalues = r.eigenVector();
-    c.scalar.modes = r.matrix();
+    c.scalar.cellStar = takeVector(r);
+    c.scalar.eigenvalues = takeVector(r);
+    c.scalar.modes = takeMatrix(r);
     c.scalar.omittedConstants = r.pod<std::int32_t>();
     c.coefficients.storage = BasisCache::Coefficients::Storage(r.pod<std::int32_t>());
     c.coefficients.packed = r.vector<double>();
@@ -186,15 +141,9 @@ BasisCache deserialize(std::string_view payload, const std::filesystem::path& pa
         std::string name = r.string();
         c.timings.emplace_back(std::move(name), r.pod<double>());
     }
-    if (!r.atEnd()) r.corrupt();
+    if (!r.atEnd()) r.fail("bytes follow its last record");
+    requireConsistentCache(c, where);
     return c;
-}
-
-std::string readAll(const std::filesystem::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw Error("cannot open cache file " + path.string() + ": " +
-                         std::error_code(errno, std::generic_category()).message());
-    return std::string(std::istreambuf_iterator<char>(in), {});
 }
 
 struct Header {
@@ -202,84 +151,100 @@ struct Header {
     std::uint64_t payloadSize = 0;
 };
 
-Header parseHeader(std::string_view bytes, const std::filesystem::path& path) {
-    const std::string where = "cache file " + path.string();
-    if (bytes.size() < sizeof(kMagic) || std::memcmp(bytes.data(), kMagic, sizeof(kMagic)) != 0)
-        throw Error(where + " is not a modeflow basis cache (bad magic)");
-    if (bytes.size() < kHeaderSize) throw Error(where + " is truncated (incomplete header)");
-    std::uint32_t version;
-    std::memcpy(&version, bytes.data() + 16, 4);
+Header parseHeader(std::string_view bytes, const std::string& where) {
+    if (!hasCacheMagic(bytes)) throw Error(where + " is not a modeflow basis cache (bad magic)");
+    ByteReader r(bytes,
+                 [&](std::string_view) { return where + " is truncated (incomplete header)"; });
+    r.bytes(sizeof kMagic);
+    const auto version = r.pod<std::uint32_t>();
     if (version != kCacheFormatVersion)
         throw Error(where + " has format version " + std::to_string(version) +
                     ", this modeflow reads version " + std::to_string(kCacheFormatVersion) +
                     "; rerun precompute to rebuild it");
+    r.pod<std::uint32_t>();  // reserved
     Header h;
-    std::memcpy(&h.keyHash, bytes.data() + 24, 8);
-    std::memcpy(&h.payloadSize, bytes.data() + 32, 8);
+    h.keyHash = r.pod<std::uint64_t>();
+    h.payloadSize = r.pod<std::uint64_t>();
     return h;
+}
+
+/// An open cache file and its size, after the checks of inputFileSize.
+struct OpenCache {
+    std::string where;
+    std::ifstream in;
+    std::uintmax_t size = 0;
+};
+
+OpenCache openCache(const std::filesystem::path& path) {
+    OpenCache file;
+    file.where = "cache file " + path.string();
+    file.size = inputFileSize(path, "cache file", kMaxCacheBytes);
+    file.in.open(path, std::ios::binary);
+    if (!file.in)
+        throw Error(path.string() + ": cannot open the cache file (" + std::strerror(errno) + ")");
+    return file;
+}
+
+/// The header, read alone: a file that is no cache is refused before its bulk is read.
+Header readHeader(OpenCache& file) {
+    std::string header(kHeaderSize, '\0');
+    file.in.read(header.data(), std::streamsize(kHeaderSize));
+    header.resize(size_t(file.in.gcount()));
+    return parseHeader(header, file.where);
 }
 
 }  // namespace
 
 void writeCache(const std::filesystem::path& path, const BasisCache& cache) {
     const std::string payload = serialize(cache);
-    Writer w;
-    w.pod(kMagic);
-    w.pod(kCacheFormatVersion);
-    w.pod<std::uint32_t>(0);
-    w.pod(fnv1a64(cache.key));
-    w.pod<std::uint64_t>(payload.size());
-    const std::uint64_t checksum = fnv1a64(payload);
-
-    const std::filesystem::path tmp =
-        path.parent_path() / (path.filename().string() + ".tmp." + std::to_string(::getpid()));
-    {
-        std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-        if (!out) throw Error("cannot write cache file " + tmp.string() + ": " +
-                              std::error_code(errno, std::generic_category()).message());
-        out.write(w.bytes().data(), std::streamsize(w.bytes().size()));
-        out.write(payload.data(), std::streamsize(payload.size()));
-        out.write(reinterpret_cast<const char*>(&checksum), sizeof(checksum));
-        out.flush();
-        if (!out) {
-            out.close();
-            std::filesystem::remove(tmp);
-            throw Error("writing cache file " + tmp.string() + " failed (disk full?)");
-        }
-    }
-    std::error_code ec;
-    std::filesystem::rename(tmp, path, ec);
-    if (ec) {
-        std::filesystem::remove(tmp);
-        throw Error("cannot move cache file into place at " + path.string() + ": " + ec.message());
-    }
+    ByteWriter header;
+    header.pod(kMagic);
+    header.pod(kCacheFormatVersion);
+    header.pod<std::uint32_t>(0);
+    header.pod(fnv1a64(cache.key));
+    header.pod<std::uint64_t>(payload.size());
+    ByteWriter checksum;
+    checksum.pod(fnv1a64(payload));
+    writeFileAtomically(path, {header.bytes(), payload, checksum.bytes()}, "cache file");
 }
 
 BasisCache readCache(const std::filesystem::path& path) {
-    const std::string bytes = readAll(path);
-    const Header h = parseHeader(bytes, path);
-    if (bytes.size() != kHeaderSize + h.payloadSize + 8)
-        throw Error("cache file " + path.string() + " is truncated or has trailing bytes (" +
-                    std::to_string(bytes.size()) + " bytes, expected " +
-                    std::to_string(kHeaderSize + h.payloadSize + 8) + ")");
-    const std::string_view payload(bytes.data() + kHeaderSize, h.payloadSize);
-    std::uint64_t checksum;
-    std::memcpy(&checksum, bytes.data() + kHeaderSize + h.payloadSize, 8);
-    if (checksum != fnv1a64(payload))
-        throw Error("cache file " + path.string() + " is corrupt (checksum mismatch)");
-    BasisCache c = deserialize(payload, path);
+    OpenCache file = openCache(path);
+    const Header h = readHeader(file);
+    const std::string& where = file.where;
+    if (h.payloadSize > file.size)
+        throw Error(where + " is truncated (" + std::to_string(file.size) +
+                    " bytes, its header declares a payload of " + std::to_string(h.payloadSize) +
+                    ")");
+    if (file.size != kHeaderSize + h.payloadSize + 8)
+        throw Error(where + " is truncated or has trailing bytes (" + std::to_string(file.size) +
+                    " bytes, expected " + std::to_string(kHeaderSize + h.payloadSize + 8) + ")");
+    std::string payload;
+    try {
+        payload.resize(size_t(h.payloadSize));
+    } catch (const std::bad_alloc&) {
+        throw Error("not enough memory to read " + where + " (" + std::to_string(file.size) +
+                    " bytes)");
+    }
+    std::uint64_t checksum = 0;
+    file.in.read(payload.data(), std::streamsize(payload.size()));
+    file.in.read(reinterpret_cast<char*>(&checksum), sizeof checksum);
+    if (!file.in)
+        throw Error(where + " could not be read to its end (it changed while it was read?)");
+    if (checksum != fnv1a64(payload)) throw Error(where + " is corrupt (checksum mismatch)");
+    BasisCache c = deserialize(payload, where);
     if (fnv1a64(c.key) != h.keyHash)
-        throw Error("cache file " + path.string() + " is corrupt (key does not match its hash)");
+        throw Error(where + " is corrupt (key does not match its hash)");
     return c;
 }
 
+bool hasCacheMagic(std::string_view bytes) {
+    return bytes.size() >= sizeof(kMagic) && std::memcmp(bytes.data(), kMagic, sizeof(kMagic)) == 0;
+}
+
 std::uint64_t readCacheKeyHash(const std::filesystem::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw Error("cannot open cache file " + path.string());
-    std::string header(kHeaderSize, '\0');
-    in.read(header.data(), std::streamsize(kHeaderSize));
-    header.resize(size_t(in.gcount()));
-    return parseHeader(header, path).keyHash;
+    OpenCache file = openCache(path);
+    return readHeader(file).keyHash;
 }
 
 }  // namespace modeflow

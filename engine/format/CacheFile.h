@@ -17,13 +17,21 @@ namespace modeflow {
 
 inline constexpr std::uint32_t kCacheFormatVersion = 3;  ///< 3: periodic axes
 
-/// Writes to a temporary file beside `path`, flushes it, then renames it over `path`, so
+/// Writes to a temporary file beside `path` (AtomicFile.h), then renames it over `path`, so
 /// readers see the old file or the whole new one.
 /// @throw Error naming the path when it cannot be written.
 void writeCache(const std::filesystem::path& path, const BasisCache& cache);
 
-/// @throw Error saying why the file cannot be used (missing, truncated, corrupt, other version).
+/// Reads the header first: a file that is no cache, or larger than any cache (64 GiB), is
+/// refused before its bulk is read; a well-formed file that describes no basis a precompute
+/// writes (CacheConsistency.h) is refused too.
+/// @throw Error saying why the file cannot be used (missing, not a regular file, truncated,
+///        corrupt, other version).
 BasisCache readCache(const std::filesystem::path& path);
+
+/// Whether `bytes`, the first bytes of a file, begin with the cache's magic: the file is a cache
+/// (whole or damaged; readCache says which) and nothing else.
+bool hasCacheMagic(std::string_view bytes);
 
 /// Reads only the header's key hash; @throw Error like readCache for a damaged header.
 std::uint64_t readCacheKeyHash(const std::filesystem::path& path);

@@ -29,6 +29,8 @@ namespace {
 namespace fs = std::filesystem;
 namespace vdb = openvdb;
 
+const char* const kPeriodicMetadata = "modeflow_periodic";
+
 void initializeOpenVdb() {
     static std::once_flag once;
     std::call_once(once, [] { vdb::initialize(); });
@@ -49,6 +51,8 @@ void validate(const VdbFrame& frame) {
     if (frame.basisGrid.dim != smoke.dim)
         throw Error("the smoke grid is " + std::to_string(smoke.dim) + "D but the basis grid is " +
                     std::to_string(frame.basisGrid.dim) + "D");
+    if (frame.basisGrid.periodic != smoke.periodic)
+        throw Error("the smoke grid and the basis grid differ in their periodic axes");
     if (size(frame.density) != cells)
         throw Error("density has " + count(size(frame.density)) + " values for " + count(cells) +
                     " smoke cells");
@@ -100,6 +104,19 @@ void addFrameMetadata(vdb::MetaMap& meta, const VdbFrame& frame) {
     meta.insertMeta("scene_hash", vdb::StringMetadata(frame.sceneHash));
     meta.insertMeta("modeflow_version", vdb::StringMetadata(frame.modeflowVersion));
     meta.insertMeta(vdb::GridBase::META_GRID_CREATOR, vdb::StringMetadata("modeflow"));
+    const MacGrid& grid = frame.smokeGrid;
+    if (grid.periodicBits() != 0)
+        meta.insertMeta(
+            kPeriodicMetadata,
+            vdb::Vec3IMetadata(vdb::Vec3i(grid.periodic[0], grid.periodic[1], grid.periodic[2])));
+}
+
+/// The `modeflow_periodic` entry of `meta` as flags; empty when absent.
+std::optional<std::array<bool, 3>> periodicFlags(const vdb::MetaMap& meta) {
+    const auto flags = meta.getMetadata<vdb::Vec3IMetadata>(kPeriodicMetadata);
+    if (!flags) return std::nullopt;
+    const vdb::Vec3i& v = flags->value();
+    return std::array<bool, 3>{v[0] != 0, v[1] != 0, v[2] != 0};
 }
 
 /// Sparse grid from a dense array in cellIndex order (x fastest: OpenVDB's LayoutXYZ). Entries
@@ -289,6 +306,7 @@ VdbGridInfo gridInfo(const vdb::GridBase& grid) {
     info.savedAsHalf = grid.saveFloatAsHalf();
     info.valuesInWorldSpace = grid.isInWorldSpace();
     info.activeVoxels = static_cast<std::int64_t>(grid.activeVoxelCount());
+    info.periodic = periodicFlags(grid);
     const vdb::Vec3d voxel = grid.voxelSize();
     info.voxelSize = {voxel[0], voxel[1], voxel[2]};
     const vdb::Mat4d m = grid.transform().baseMap()->getAffineMap()->getMat4();
@@ -325,6 +343,7 @@ VdbFrameInfo readVdbFrameInfo(const fs::path& file) {
         info.sceneHash = metaValue<std::string>(*meta, "scene_hash").value_or("");
         info.modeflowVersion = metaValue<std::string>(*meta, "modeflow_version").value_or("");
         info.creator = metaValue<std::string>(*meta, vdb::GridBase::META_GRID_CREATOR).value_or("");
+        info.periodic = periodicFlags(*meta);
         const vdb::GridPtrVecPtr grids = vdbFile->getGrids();  // kept: the loop borrows its vector
         for (const vdb::GridBase::Ptr& grid : *grids) info.grids.push_back(gridInfo(*grid));
     } catch (const std::exception& e) {

@@ -25,7 +25,9 @@
 ///
 /// Metadata, both on the file and on every grid (importers show one or the other: Houdini turns
 /// grid metadata into primitive attributes): `frame` (int32), `time` (double), `scene_hash`,
-/// `modeflow_version` and `creator` = "modeflow" (strings).
+/// `modeflow_version` and `creator` = "modeflow" (strings), and for a grid with periodic axes
+/// `modeflow_periodic` (vec3i: 1 where the axis x, y, z wraps, else 0): the voxels then hold one
+/// period of a field that repeats along those axes, whose ends meet across the seam.
 ///
 /// OpenVDB's types stay out of this header: VdbFrame.cpp is the one translation unit that
 /// includes OpenVDB (its headers cost 15–30 s of compile time each).
@@ -74,7 +76,8 @@ struct VdbFrame {
 /// under `file` (an existing file there is left as it was).
 /// @throw modeflow::Error naming `file` and the cause: the folder is missing or not writable, a
 ///        span has the wrong size, a value is not finite, the grids differ in dimension, the
-///        threshold is negative, OpenVDB or the file system failed (disk full included).
+///        threshold is negative, the grids differ in their periodic axes, OpenVDB or the file
+///        system failed (disk full included).
 void writeVdbFrame(const std::filesystem::path& file, const VdbFrame& frame);
 
 /// "NAME_0001.vdb": the frame number with at least 4 digits (frame 12345 gives 5).
@@ -90,6 +93,7 @@ struct VdbGridInfo {
     bool savedAsHalf = false;
     bool valuesInWorldSpace = false;  ///< vectors are world-space (not index-space) values
     std::int64_t activeVoxels = 0;
+    std::optional<std::array<bool, 3>> periodic;  ///< `modeflow_periodic`; empty when absent
     Vec3 voxelSize{0.0, 0.0, 0.0};
     /// The affine part of the index-to-world map, row-vector convention as in OpenVDB:
     /// world = (i, j, k, 1) · M, M row-major.
@@ -106,6 +110,7 @@ struct VdbFrameInfo {
     std::string sceneHash;           ///< empty when absent
     std::string modeflowVersion;
     std::string creator;
+    std::optional<std::array<bool, 3>> periodic;  ///< `modeflow_periodic`; empty when absent
 
     /// The grid called `name`, nullptr when the file has none.
     const VdbGridInfo* grid(std::string_view name) const;

@@ -26,7 +26,7 @@ void requireSourcesInFluid(const SceneSpec& scene, const RunInputs& run) {
                     if (!run.smokeMask[std::size_t(grid.cellIndex(x, y, z))]) continue;
                     const Vec3 centre{grid.cellCentre(0, x), grid.cellCentre(1, y),
                                       grid.dim == 3 ? grid.cellCentre(2, z) : 0.0};
-                    covers = emitter.contains(centre, grid.dim);
+                    covers = emitter.contains(centre, grid);
                 }
         if (!covers)
             throw Error(scene.sourceFile.string() + ": [[source]] #" + std::to_string(e + 1) +

@@ -39,13 +39,21 @@ double dualCellTemperature(const MacGrid& basisGrid, int scale, const FaceLocati
     const int up = upAxis(basisGrid);
     std::array<AxisRange, 3> range{};
     for (int a = 0; a < basisGrid.dim; ++a) range[a] = dualRange(face, a, scale, up);
+    // Along a periodic up axis the dual cell of a face on the seam wraps to the other end;
+    // elsewhere cells past the box are left out.
+    const auto inBox = [&](int axis, int position) {
+        const int wrapped = smoke.wrap(axis, position);
+        return wrapped >= 0 && wrapped < smoke.cells[axis] ? wrapped : -1;
+    };
     double sum = 0.0, weight = 0.0;
-    for (int z = std::max(range[2].begin, 0); z < std::min(range[2].end, smoke.cells[2]); ++z)
-        for (int y = std::max(range[1].begin, 0); y < std::min(range[1].end, smoke.cells[1]); ++y)
-            for (int x = std::max(range[0].begin, 0); x < std::min(range[0].end, smoke.cells[0]); ++x) {
+    for (int rz = range[2].begin; rz < range[2].end; ++rz)
+        for (int ry = range[1].begin; ry < range[1].end; ++ry)
+            for (int rx = range[0].begin; rx < range[0].end; ++rx) {
+                const int x = inBox(0, rx), y = inBox(1, ry), z = inBox(2, rz);
+                if (x < 0 || y < 0 || z < 0) continue;
                 const std::int64_t c = smoke.cellIndex(x, y, z);
                 if (!mask.empty() && !mask[std::size_t(c)]) continue;
-                const int along = up == 1 ? y : z;
+                const int along = up == 1 ? ry : rz;
                 const double w = along == range[up].begin || along == range[up].end - 1 ? range[up].endWeight : 1.0;
                 sum += w * temperature[std::size_t(c)];
                 weight += w;
@@ -57,8 +65,10 @@ double splatForce(const MacGrid& grid, const FaceLocation& face, std::span<const
     const Vec3 x = faceCentre(grid, face);
     double g = 0.0;
     for (const ForceSplat& splat : splats) {
+        const Vec3 d = grid.minimumImage(
+            {x[0] - splat.centre[0], x[1] - splat.centre[1], x[2] - splat.centre[2]});
         double r2 = 0.0;
-        for (int a = 0; a < grid.dim; ++a) r2 += (x[a] - splat.centre[a]) * (x[a] - splat.centre[a]);
+        for (int a = 0; a < grid.dim; ++a) r2 += d[a] * d[a];
         g += splat.force[face.axis] * std::exp(-r2 / (splat.radius * splat.radius));
     }
     return g;

@@ -1,9 +1,9 @@
 #pragma once
 /// @file ForceField.h
-/// Grid forces on the velocity DOFs (README.md, "Reduced dynamics"; engine/README.md), the double-precision CPU reference of
-/// engine/device/ForceField: a force density g (force per unit volume, along the face normal)
-/// on each DOF face, from buoyancy and stirring splats. ForceProjection.h turns g into modal
-/// forces.
+/// Grid forces on the velocity DOFs (README.md, "Reduced dynamics"; engine/README.md), the
+/// double-precision CPU reference of engine/device/ForceField: a force density g (force per unit
+/// volume, along the face normal) on each DOF face, from buoyancy and stirring splats.
+/// ForceProjection.h turns g into modal forces.
 ///
 /// Buoyancy acts on the faces whose normal is up (+y in 2D, +z in 3D): g = buoyancy × the mean
 /// temperature over the face's dual cell, the box reaching half a basis cell below and above
@@ -20,6 +20,9 @@
 ///
 /// A splat pushes with g = (force · n) exp(−|x − centre|² / radius²) at the face centre x,
 /// n the face normal: the DOF faces of every axis get their component.
+///
+/// Periodic axes: the dual cell of an up-facing face on the seam reaches across it, and a splat
+/// acts at the minimum-image distance (a splat past one end pushes near the other).
 
 #include <cstdint>
 #include <span>
@@ -41,7 +44,8 @@ struct BuoyancyInput {
 };
 
 /// Weighted mean of `temperature` over the dual cell of the up-facing face `face` (see above);
-/// smoke cells outside the box are left out. `mask` may be empty.
+/// smoke cells outside the box are left out (across a periodic seam they are the other end's).
+/// `mask` may be empty.
 /// @throw modeflow::Error when `temperature` or a non-empty `mask` is not one value per smoke cell.
 double dualCellTemperature(const MacGrid& basisGrid, int scale, const FaceLocation& face,
                            std::span<const double> temperature, std::span<const std::uint8_t> mask);

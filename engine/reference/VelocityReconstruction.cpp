@@ -36,11 +36,9 @@ std::vector<Vec3> cellCentreVelocity(const MacGrid& grid, std::span<const double
         for (int y = 0; y < grid.cells[1]; ++y)
             for (int x = 0; x < grid.cells[0]; ++x) {
                 Vec3& u = velocity[std::size_t(grid.cellIndex(x, y, z))];
-                for (int a = 0; a < grid.dim; ++a) {
-                    const std::array<int, 3> upper{x + (a == 0), y + (a == 1), z + (a == 2)};
+                for (int a = 0; a < grid.dim; ++a)
                     u[a] = 0.5 * (faceField[grid.faceIndex(a, x, y, z)] +
-                                  faceField[grid.faceIndex(a, upper[0], upper[1], upper[2])]);
-                }
+                                  faceField[grid.upperFaceIndex(a, x, y, z)]);
             }
     return velocity;
 }
@@ -52,12 +50,10 @@ std::vector<double> faceFieldDivergence(const MacGrid& grid, std::span<const dou
         for (int y = 0; y < grid.cells[1]; ++y)
             for (int x = 0; x < grid.cells[0]; ++x) {
                 double outflow = 0.0;
-                for (int a = 0; a < grid.dim; ++a) {
-                    const std::array<int, 3> upper{x + (a == 0), y + (a == 1), z + (a == 2)};
-                    outflow += (faceField[grid.faceIndex(a, upper[0], upper[1], upper[2])] -
+                for (int a = 0; a < grid.dim; ++a)
+                    outflow += (faceField[grid.upperFaceIndex(a, x, y, z)] -
                                 faceField[grid.faceIndex(a, x, y, z)]) *
                                grid.faceArea(a);
-                }
                 divergence[std::size_t(grid.cellIndex(x, y, z))] = outflow;
             }
     return divergence;

@@ -1,124 +1,113 @@
 #include "engine/simulation/Checkpoint.h"
 
-#include <array>
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
 #include <cstring>
 #include <fstream>
-#include <iterator>
+#include <limits>
+#include <new>
 #include <string>
-#include <unistd.h>
+#include <string_view>
 
-#include "engine/format/CacheFile.h"
+#include "engine/core/AtomicFile.h"
+#include "engine/core/BinaryCodec.h"
 #include "engine/core/Error.h"
+#include "engine/core/InputFile.h"
 
 namespace modeflow {
 namespace {
 
 constexpr char kMagic[16] = {'M', 'O', 'D', 'E', 'F', 'L', 'O', 'W', '-', 'R', 'E', 'S', 'U', 'M', 'E', '\0'};
 constexpr std::uint32_t kVersion = 2;  ///< 2: the magnetic field after the velocity
+/// The largest checkpoint read (64 GiB): the modal state and two fields of the largest smoke grid a
+/// scene may ask for fit, and a damaged file cannot make the reader ask for terabytes.
+constexpr std::uintmax_t kMaxCheckpointBytes = std::uintmax_t{1} << 36;
+/// Magic, version, frame, run hash, time: what is checked before the bulk is read.
+constexpr std::size_t kHeaderBytes = sizeof kMagic + 4 + 4 + 8 + 8;
 
-template <typename T>
-void put(std::string& out, const T& value) {
-    out.append(reinterpret_cast<const char*>(&value), sizeof(T));
+std::string refusal(const std::filesystem::path& path, std::string_view why) {
+    return "checkpoint " + path.string() + ": " + std::string(why) +
+           "; delete it to start the run afresh";
 }
 
-void putDoubles(std::string& out, const double* values, std::size_t count) {
-    put(out, std::uint64_t(count));
-    out.append(reinterpret_cast<const char*>(values), count * sizeof(double));
+[[noreturn]] void fail(const std::filesystem::path& path, std::string_view why) {
+    throw Error(refusal(path, why));
 }
 
-/// Reads values front to back, failing with the file's name on a short read.
-class Reader {
-public:
-    Reader(const std::string& bytes, const std::filesystem::path& path) : mBytes(bytes), mPath(path) {}
-    template <typename T>
-    T get() {
-        T value;
-        take(&value, sizeof(T));
-        return value;
+/// The whole file, its magic and version checked before the rest is read: a file that is no
+/// checkpoint is refused without reading its bulk.
+std::string readCheckpointBytes(const std::filesystem::path& path) {
+    const std::uintmax_t size = inputFileSize(path, "checkpoint", kMaxCheckpointBytes);
+    std::ifstream in(path, std::ios::binary);
+    if (!in) fail(path, std::string("cannot be opened (") + std::strerror(errno) + ")");
+    std::string bytes(std::min<std::uintmax_t>(size, kHeaderBytes), '\0');
+    in.read(bytes.data(), std::streamsize(bytes.size()));
+    if (bytes.size() < sizeof kMagic || std::memcmp(bytes.data(), kMagic, sizeof kMagic) != 0)
+        fail(path, "not a modeflow checkpoint");
+    std::uint32_t version = 0;
+    if (bytes.size() >= sizeof kMagic + sizeof version)
+        std::memcpy(&version, bytes.data() + sizeof kMagic, sizeof version);
+    if (version != kVersion) fail(path, "written by another modeflow version");
+    if (size < kHeaderBytes + sizeof(std::uint64_t)) fail(path, "truncated");
+    try {
+        bytes.resize(std::size_t(size));
+    } catch (const std::bad_alloc&) {
+        fail(path, "not enough memory to read its " + std::to_string(size) + " bytes");
     }
-    std::vector<double> doubles() {
-        const auto count = get<std::uint64_t>();
-        if (count > (mBytes.size() - mAt) / sizeof(double)) fail("truncated");
-        std::vector<double> values(count);
-        take(values.data(), count * sizeof(double));
-        return values;
-    }
-    [[noreturn]] void fail(const std::string& why) const {
-        throw Error("checkpoint " + mPath.string() + ": " + why + "; delete it to start the run afresh");
-    }
+    in.read(bytes.data() + kHeaderBytes, std::streamsize(size - kHeaderBytes));
+    if (!in) fail(path, "could not be read to its end (it changed while it was read?)");
+    return bytes;
+}
 
-private:
-    void take(void* to, std::size_t bytes) {
-        if (bytes > mBytes.size() - mAt) fail("truncated");
-        std::memcpy(to, mBytes.data() + mAt, bytes);
-        mAt += bytes;
-    }
-    const std::string& mBytes;
-    const std::filesystem::path& mPath;
-    std::size_t mAt = 0;
-};
+Eigen::VectorXd modalVector(ByteReader& reader) {
+    const std::vector<double> values = reader.vector<double>();
+    return Eigen::Map<const Eigen::VectorXd>(values.data(), Eigen::Index(values.size()));
+}
 
 }  // namespace
 
 void writeCheckpoint(const std::filesystem::path& path, const Checkpoint& checkpoint) {
-    std::string bytes(kMagic, sizeof kMagic);
-    put(bytes, kVersion);
-    put(bytes, std::uint32_t(checkpoint.frame));
-    put(bytes, checkpoint.runHash);
-    put(bytes, checkpoint.time);
-    putDoubles(bytes, checkpoint.velocity.data(), std::size_t(checkpoint.velocity.size()));
-    putDoubles(bytes, checkpoint.magnetic.data(), std::size_t(checkpoint.magnetic.size()));
-    putDoubles(bytes, checkpoint.smoke.density.data(), checkpoint.smoke.density.size());
-    putDoubles(bytes, checkpoint.smoke.temperature.data(), checkpoint.smoke.temperature.size());
-    put(bytes, fnv1a64(bytes));
-
-    const std::filesystem::path temporary = path.string() + ".tmp-" + std::to_string(::getpid());
-    {
-        std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-        out.write(bytes.data(), std::streamsize(bytes.size()));
-        out.flush();
-        if (!out) {
-            std::error_code ignored;
-            std::filesystem::remove(temporary, ignored);
-            throw Error("cannot write checkpoint " + path.string() + " (disk full or not writable)");
-        }
-    }
-    std::error_code error;
-    std::filesystem::rename(temporary, path, error);
-    if (error) {
-        std::filesystem::remove(temporary, error);
-        throw Error("cannot write checkpoint " + path.string() + ": " + error.message());
-    }
+    ByteWriter w;
+    w.pod(kMagic);
+    w.pod(kVersion);
+    w.pod(std::uint32_t(checkpoint.frame));
+    w.pod(checkpoint.runHash);
+    w.pod(checkpoint.time);
+    w.array(checkpoint.velocity.data(), std::size_t(checkpoint.velocity.size()));
+    w.array(checkpoint.magnetic.data(), std::size_t(checkpoint.magnetic.size()));
+    w.vector(checkpoint.smoke.density);
+    w.vector(checkpoint.smoke.temperature);
+    ByteWriter checksum;
+    checksum.pod(fnv1a64(w.bytes()));
+    writeFileAtomically(path, {w.bytes(), checksum.bytes()}, "checkpoint");
 }
 
 Checkpoint readCheckpoint(const std::filesystem::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw Error("checkpoint " + path.string() + ": cannot be opened");
-    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    Reader reader(bytes, path);
-    if (bytes.size() < sizeof kMagic + sizeof(std::uint64_t) || std::memcmp(bytes.data(), kMagic, sizeof kMagic) != 0)
-        reader.fail("not a modeflow checkpoint");
-    const std::size_t body = bytes.size() - sizeof(std::uint64_t);
+    const std::string bytes = readCheckpointBytes(path);
+    const std::string_view body(bytes.data(), bytes.size() - sizeof(std::uint64_t));
     std::uint64_t checksum;
-    std::memcpy(&checksum, bytes.data() + body, sizeof checksum);
-    if (checksum != fnv1a64(std::string_view(bytes.data(), body))) reader.fail("checksum mismatch (damaged)");
+    std::memcpy(&checksum, bytes.data() + body.size(), sizeof checksum);
+    if (checksum != fnv1a64(body)) fail(path, "checksum mismatch (damaged)");
 
-    reader.get<std::array<char, sizeof kMagic>>();
-    if (reader.get<std::uint32_t>() != kVersion) reader.fail("written by another modeflow version");
+    ByteReader reader(body, [&](std::string_view why) { return refusal(path, why); });
+    reader.bytes(sizeof kMagic + sizeof kVersion);  // checked by readCheckpointBytes
     Checkpoint checkpoint;
-    checkpoint.frame = int(reader.get<std::uint32_t>());
-    checkpoint.runHash = reader.get<std::uint64_t>();
-    checkpoint.time = reader.get<double>();
-    const auto modal = [&reader] {
-        const std::vector<double> values = reader.doubles();
-        return Eigen::VectorXd(Eigen::Map<const Eigen::VectorXd>(values.data(), Eigen::Index(values.size())));
-    };
-    checkpoint.velocity = modal();
-    checkpoint.magnetic = modal();
-    checkpoint.smoke.density = reader.doubles();
-    checkpoint.smoke.temperature = reader.doubles();
+    const auto frame = reader.pod<std::uint32_t>();
+    if (frame > std::uint32_t(std::numeric_limits<int>::max()))
+        fail(path, "its frame number is out of range");
+    checkpoint.frame = int(frame);
+    checkpoint.runHash = reader.pod<std::uint64_t>();
+    checkpoint.time = reader.pod<double>();
+    if (!(std::isfinite(checkpoint.time) && checkpoint.time >= 0.0))
+        fail(path, "its time is not a non-negative number");
+    checkpoint.velocity = modalVector(reader);
+    checkpoint.magnetic = modalVector(reader);
+    checkpoint.smoke.density = reader.vector<double>();
+    checkpoint.smoke.temperature = reader.vector<double>();
     if (checkpoint.smoke.density.size() != checkpoint.smoke.temperature.size())
-        reader.fail("density and temperature sizes differ");
+        fail(path, "density and temperature sizes differ");
+    if (!reader.atEnd()) fail(path, "bytes follow its smoke fields");
     return checkpoint;
 }
 

@@ -28,9 +28,11 @@ Vec3 MovingObstacle::velocityAt(double t) const {
     return {(p1[0] - p0[0]) / (t1 - t0), (p1[1] - p0[1]) / (t1 - t0), (p1[2] - p0[2]) / (t1 - t0)};
 }
 
-bool MovingObstacle::covers(const Vec3& point, const Vec3& centre, int dim) const {
+bool MovingObstacle::covers(const Vec3& point, const Vec3& centre, const MacGrid& grid) const {
+    const int dim = grid.dim;
     Vec3 d{0.0, 0.0, 0.0};
     for (int a = 0; a < dim; ++a) d[a] = point[a] - centre[a];
+    d = grid.minimumImage(d);
     switch (spec.shape) {
         case ObstacleShape::Box:
             for (int a = 0; a < dim; ++a)

@@ -5,6 +5,7 @@
 /// on the faces it covers match its own (ObstacleCorrection in engine/reference and
 /// engine/device).
 
+#include "engine/core/MacGrid.h"
 #include "engine/core/RuntimeLimits.h"
 #include "engine/core/SceneSpec.h"
 
@@ -17,8 +18,10 @@ struct MovingObstacle {
     Vec3 centreAt(double t) const;
     /// Velocity at time t (of the key-frame segment holding t; 0 outside the path's span).
     Vec3 velocityAt(double t) const;
-    /// Whether the world point lies in the solid when its centre is `centre` (first `dim` axes).
-    bool covers(const Vec3& point, const Vec3& centre, int dim) const;
+    /// Whether the world point lies in the solid when its centre is `centre` (the grid's axes;
+    /// along its periodic ones at the minimum-image offset, so a solid on the seam covers both
+    /// ends).
+    bool covers(const Vec3& point, const Vec3& centre, const MacGrid& grid) const;
 };
 
 }  // namespace modeflow

@@ -6,12 +6,17 @@
 
 namespace modeflow {
 
-bool SmokeEmitter::contains(const Vec3& point, int dim) const {
+bool SmokeEmitter::contains(const Vec3& worldPoint, const MacGrid& grid) const {
+    const int dim = grid.dim;
     if (shape == EmitterShape::Box) {
+        const Vec3 middle{0.5 * (min[0] + max[0]), 0.5 * (min[1] + max[1]),
+                          0.5 * (min[2] + max[2])};
+        const Vec3 point = grid.nearestImage(worldPoint, middle);
         for (int a = 0; a < dim; ++a)
             if (point[a] < min[a] || point[a] > max[a]) return false;
         return true;
     }
+    const Vec3 point = grid.nearestImage(worldPoint, centre);
     double distance2 = 0.0;
     for (int a = 0; a < dim; ++a) distance2 += (point[a] - centre[a]) * (point[a] - centre[a]);
     return distance2 <= radius * radius;
@@ -61,7 +66,7 @@ void applyEmitters(const MacGrid& smokeGrid, std::span<const std::uint8_t> fluid
                 if (!fluidMask[c]) continue;
                 const Vec3 centre{smokeGrid.cellCentre(0, x), smokeGrid.cellCentre(1, y), smokeGrid.cellCentre(2, z)};
                 for (const SmokeEmitter& emitter : emitters)
-                    if (emitter.contains(centre, smokeGrid.dim)) {
+                    if (emitter.contains(centre, smokeGrid)) {
                         density[c] += emitter.densityRate * dt;
                         temperature[c] += emitter.temperatureRate * dt;
                     }

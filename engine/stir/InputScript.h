@@ -28,11 +28,14 @@ struct TimedEvent {
     display::InputEvent event;
 };
 
-/// The events of a script's text; `source` names it in error messages.
+/// The events of a script's text; `source` names it in error messages, which quote the script's
+/// words escaped and shortened (engine/core/PrintableText.h).
 /// @throw modeflow::Error "SOURCE:LINE: why" for an unknown event or key, missing, extra or
-///        non-numeric arguments, fractions outside [0, 1], sizes below 1 or decreasing times.
+///        non-numeric arguments, numbers that are not finite, fractions outside [0, 1], sizes
+///        outside 1..kMaxWindowSide or decreasing times.
 std::vector<TimedEvent> parseInputScript(const std::string& text, const std::string& source);
-/// parseInputScript of a file. @throw modeflow::Error also when it cannot be read.
+/// parseInputScript of a file. @throw modeflow::Error also when it cannot be read or is not a
+///        regular file of at most 16 MiB (a folder, a FIFO or /dev/zero is refused at once).
 std::vector<TimedEvent> readInputScript(const std::filesystem::path& path);
 
 }  // namespace modeflow::stir

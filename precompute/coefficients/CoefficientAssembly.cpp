@@ -28,11 +28,16 @@ ElementSampling sampleElements(const CubicalComplex& cx, const CutCellMeasures& 
     std::vector<Triplet> omega, ub, uc;
     std::int64_t rows = 0;
 
-    // Face DOF beside `pos` with the given normal, or -1 (outside the grid or not a DOF).
+    // Face DOF beside `pos` with the given normal, or -1 (outside the grid or not a DOF). On a
+    // periodic axis the neighbour lies across the seam.
     auto faceDof = [&](Index3 pos, int normal) -> std::int64_t {
-        for (int a = 0; a < n; ++a)
-            if (pos[a] < 0 || pos[a] > grid.resolution[a] - ((a == normal) ? 0 : 1)) return -1;
-        return dec.faces.toLocal[cx.index(Element{all & ~(1u << normal), pos})];
+        const unsigned axes = all & ~(1u << normal);
+        const Index3 extent = cx.extent(axes);
+        for (int a = 0; a < n; ++a) {
+            pos[a] = cx.wrap(a, pos[a]);
+            if (pos[a] < 0 || pos[a] >= extent[a]) return -1;
+        }
+        return dec.faces.toLocal[cx.index(Element{axes, pos})];
     };
     auto faceStar = [&](std::int64_t dof) { return dec.faceStar[dof]; };
     auto faceVelocity = [&](std::int64_t dof) {

@@ -26,7 +26,7 @@ CubicalComplex::CubicalComplex(const GridSpec& grid) : mGrid(grid) {
 Index3 CubicalComplex::extent(unsigned axes) const {
     Index3 e{1, 1, 1};
     for (int a = 0; a < mGrid.dim; ++a)
-        e[a] = mGrid.resolution[a] + ((axes >> a) & 1u ? 0 : 1);
+        e[a] = mGrid.resolution[a] + ((axes >> a) & 1u || mGrid.isPeriodic(a) ? 0 : 1);
     return e;
 }
 
@@ -59,10 +59,16 @@ Element CubicalComplex::element(int k, std::int64_t index) const {
 
 bool CubicalComplex::onBoxBoundary(const Element& e) const {
     for (int a = 0; a < mGrid.dim; ++a) {
-        if ((e.axes >> a) & 1u) continue;
+        if ((e.axes >> a) & 1u || mGrid.isPeriodic(a)) continue;
         if (e.pos[a] == 0 || e.pos[a] == mGrid.resolution[a]) return true;
     }
     return false;
+}
+
+int CubicalComplex::wrap(int axis, int position) const {
+    if (!mGrid.isPeriodic(axis)) return position;
+    const int n = mGrid.resolution[axis];
+    return ((position % n) + n) % n;
 }
 
 namespace {
@@ -97,10 +103,11 @@ SparseMatrix CubicalComplex::incidence(int k) const {
                         // s is the lower face of the (k+1)-cell at s.pos ...
                         if (s.pos[a] < mGrid.resolution[a])
                             triplets.emplace_back(index(Element{tm, s.pos}), col, -base);
-                        // ... and the upper face of the one at s.pos - e_a.
-                        if (s.pos[a] > 0) {
+                        // ... and the upper face of the one at s.pos - e_a (across the seam
+                        // on a periodic axis).
+                        if (s.pos[a] > 0 || mGrid.isPeriodic(a)) {
                             Element t{tm, s.pos};
-                            --t.pos[a];
+                            t.pos[a] = wrap(a, s.pos[a] - 1);
                             triplets.emplace_back(index(t), col, base);
                         }
                     }

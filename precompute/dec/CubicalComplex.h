@@ -5,7 +5,13 @@
 /// A k-cell is identified by the set of axes it extends along (a bit mask with k bits) and the
 /// integer position of its lower corner. Along an axis in the mask there are n_a positions, along
 /// any other axis n_a + 1. Cells of one dimension are numbered type by type; faces ((n-1)-cells)
-/// are ordered by their normal axis, so face type `a` has normal `a`.
+/// are ordered by their normal axis, so face type `a` has normal `a`. Within a type, x fastest:
+/// index = offset(type) + (z·e_y + y)·e_x + x with e the type's extent.
+///
+/// Periodic axes (GridSpec::periodic): the complex wraps. Along a periodic axis every element
+/// type has n_a positions 0 … n_a − 1, the plane at n_a being the plane at 0; the incidence
+/// matrices wrap (the upper face of the last cell is the lower face of the first), and nothing
+/// on that axis lies on the box boundary.
 
 #include <array>
 #include <cstdint>
@@ -44,8 +50,12 @@ public:
     std::int64_t index(const Element& e) const;
     Element element(int k, std::int64_t index) const;
 
-    /// True when the element lies in the grid box's boundary (it is then on a wall).
+    /// True when the element lies in the grid box's boundary (it is then on a wall): at position
+    /// 0 or n_a along a non-periodic axis it does not extend along.
     bool onBoxBoundary(const Element& e) const;
+    /// `position` along `axis` brought into 0 … n_a − 1 on a periodic axis (a neighbour across
+    /// the seam); unchanged on other axes.
+    int wrap(int axis, int position) const;
 
     /// Signed incidence d_k from k-cells to (k+1)-cells, d_{k+1} d_k = 0. Faces are oriented so a
     /// positive value is a flux along +normal: (d_{n-1} Ψ)_cell = Σ outflow through its faces.

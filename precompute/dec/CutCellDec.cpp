@@ -24,7 +24,8 @@ double dualMeasure(const GridSpec& grid, const Element& e) {
     double m = 1.0;
     for (int a = 0; a < grid.dim; ++a) {
         if ((e.axes >> a) & 1u) continue;
-        const bool onWall = e.pos[a] == 0 || e.pos[a] == grid.resolution[a];
+        const bool onWall =
+            !grid.isPeriodic(a) && (e.pos[a] == 0 || e.pos[a] == grid.resolution[a]);
         m *= grid.spacing(a) * (onWall ? 0.5 : 1.0);
     }
     return m;

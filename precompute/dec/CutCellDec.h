@@ -40,7 +40,8 @@ struct CutCellDec {
 
 /// Primal measure |element| (length, area, volume; 1 for a vertex) before cutting.
 double primalMeasure(const GridSpec& grid, unsigned axes);
-/// Dual measure of an element, clipped to the grid box (halved per axis where it lies on a wall).
+/// Dual measure of an element, clipped to the grid box (halved per axis where it lies on a wall;
+/// never along a periodic axis, where the dual cell wraps across the seam).
 double dualMeasure(const GridSpec& grid, const Element& e);
 
 /// Assembles the restricted operators. Free-slip: vorticity elements with no measure inside Ω

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numeric>
 
+#include "precompute/dec/PeriodicSeams.h"
 #include "precompute/dec/SimplexFraction.h"
 
 namespace modeflow {
@@ -165,7 +166,8 @@ void measureStaircase(const CubicalComplex& cx, const Domain& domain, CutCellMea
             for (unsigned corner = 0; corner < (1u << free.size()) && inside; ++corner) {
                 Element cell{(1u << n) - 1, e.pos};
                 for (size_t i = 0; i < free.size(); ++i)
-                    if ((corner >> i) & 1u) --cell.pos[free[i]];
+                    if ((corner >> i) & 1u)
+                        cell.pos[free[i]] = cx.wrap(free[i], cell.pos[free[i]] - 1);
                 inside = cells[cx.index(cell)] > 0.0;
             }
             f[id] = inside ? 1.0 : 0.0;
@@ -217,9 +219,11 @@ void measureCut(const CubicalComplex& cx, const Domain& domain, int subsamples,
 
 CutCellMeasures measureCutCells(const CubicalComplex& complex, const Domain& domain,
                                 BoundaryTreatment treatment, int subsamples) {
+    requireDomainAgreesAcrossSeams(complex, domain, subsamples);
     CutCellMeasures m;
     if (treatment == BoundaryTreatment::Staircase) measureStaircase(complex, domain, m);
     else measureCut(complex, domain, subsamples, m);
+    requireNoWallOnSeams(complex, m);
     for (auto& f : m.fraction)
         for (double& x : f)
             if (x > 0.0) x = std::max(x, CutCellMeasures::kMinFraction);

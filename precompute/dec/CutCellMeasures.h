@@ -34,7 +34,10 @@ struct CutCellMeasures {
 ///
 /// χ at or below a tolerance of 1e-10 h counts as outside, so walls lying on grid planes give
 /// exactly zero measures (no round-off "phantom" elements). Elements in the grid box's boundary
-/// always measure 0: the box is a wall.
+/// always measure 0: the box is a wall, except along periodic axes, where χ is evaluated where
+/// each element lies (positions 0 … n − 1, the last ones reaching bounds_max).
+/// @throw Error naming [[domain]] when the domain does not repeat across a periodic axis's seam
+///        (PeriodicSeams.h).
 CutCellMeasures measureCutCells(const CubicalComplex& complex, const Domain& domain,
                                 BoundaryTreatment treatment, int subsamples);
 

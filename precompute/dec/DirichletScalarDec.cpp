@@ -12,11 +12,18 @@ Vec3 cellCentre(const GridSpec& grid, const Index3& pos) {
     return c;
 }
 
-/// χ with the grid box's walls included.
-double chiInBox(const GridSpec& grid, const Domain& domain, const Vec3& p) {
+/// χ with the grid box's walls included (periodic axes have none: a point past the seam is
+/// brought back into the box).
+double chiInBox(const GridSpec& grid, const Domain& domain, Vec3 p) {
+    for (int a = 0; a < grid.dim; ++a) {
+        if (!grid.isPeriodic(a)) continue;
+        const double length = grid.boundsMax[a] - grid.boundsMin[a];
+        p[a] -= length * std::floor((p[a] - grid.boundsMin[a]) / length);
+    }
     double box = domain.chi(p);
     for (int a = 0; a < grid.dim; ++a)
-        box = std::min({box, p[a] - grid.boundsMin[a], grid.boundsMax[a] - p[a]});
+        if (!grid.isPeriodic(a))
+            box = std::min({box, p[a] - grid.boundsMin[a], grid.boundsMax[a] - p[a]});
     return box;
 }
 
@@ -64,8 +71,9 @@ DirichletScalarDec buildDirichletScalarDec(const CubicalComplex& cx, const Domai
         const Element face = cx.element(n - 1, f);
         const int normal = __builtin_ctz(((1u << n) - 1) & ~face.axes);
         Index3 below = face.pos, above = face.pos;
-        --below[normal];
-        const bool hasBelow = face.pos[normal] > 0, hasAbove = face.pos[normal] < grid.resolution[normal];
+        below[normal] = cx.wrap(normal, below[normal] - 1);
+        const bool hasBelow = below[normal] >= 0,
+                   hasAbove = face.pos[normal] < grid.resolution[normal];
         const std::int64_t cb = hasBelow ? cx.index(Element{(1u << n) - 1, below}) : -1;
         const std::int64_t ca = hasAbove ? cx.index(Element{(1u << n) - 1, above}) : -1;
         const bool inB = cb >= 0 && inside[cb], inA = ca >= 0 && inside[ca];

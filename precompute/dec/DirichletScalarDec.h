@@ -20,8 +20,8 @@ struct DirichletScalarDec {
     Eigen::VectorXd faceWeight;
 };
 
-/// The grid box counts as a wall at its faces (θ = 1/2 there). With the staircase treatment
-/// every wall sits on the voxel faces (θ = 1/2 everywhere), for comparison.
+/// The grid box counts as a wall at its faces (θ = 1/2 there), except along periodic axes. With the
+/// staircase treatment every wall sits on the voxel faces (θ = 1/2 everywhere), for comparison.
 DirichletScalarDec buildDirichletScalarDec(const CubicalComplex& complex, const Domain& domain,
                                            BoundaryTreatment treatment);
 

@@ -68,10 +68,12 @@ UniformField::UniformField(const BasisCache& cache, const std::vector<ShapeSpec>
 }
 
 double UniformField::wallDistance(const Vec3& x) const {
-    // χ never exceeds the distance to Ω's wall (Domain.h); the grid box is a wall too.
+    // χ never exceeds the distance to Ω's wall (Domain.h); the grid box is a wall too, except
+    // at the ends of a periodic axis, which meet.
     double d = mDomain.chi(x);
     for (int a = 0; a < mGrid.dim; ++a)
-        d = std::min({d, x[a] - mGrid.boundsMin[a], mGrid.boundsMax[a] - x[a]});
+        if (!mGrid.isPeriodic(a))
+            d = std::min({d, x[a] - mGrid.boundsMin[a], mGrid.boundsMax[a] - x[a]});
     return d;
 }
 

@@ -10,7 +10,8 @@
 ///
 ///     B = ∇×(w A) = w B0 + ∇w × A,   ∇×A = B0,   w = smoothstep(d(x) / L),
 ///
-/// with d the distance to the wall (Ω's χ and the grid box) and A = ½ B0 × (x − c) (3D), or
+/// with d the distance to the wall (Ω's χ and the grid box's walls: not the ends of a periodic
+/// axis, where the field goes on) and A = ½ B0 × (x − c) (3D), or
 /// A = (B0ₓ(y − c_y) − B0_y(x − c_x)) ẑ (2D), about Ω's centroid c. B is divergence-free, equals
 /// B0 where d ≥ L, and has zero normal flux through the wall (w = 0 there); the flux B0 carries
 /// across Ω returns along the wall within the layer L. It is projected on the basis exactly as

@@ -91,9 +91,6 @@ void readPeriodicAxes(const TomlReader& reader, const Section& s, GridSpec& grid
                         "expected true or false, got " + describeType(flag), &flag);
         grid.periodic[std::size_t(a)] = *value;
     }
-    if (grid.anyPeriodic())
-        reader.fail(s, "periodic",
-                    "periodic axes are not simulated by this build yet; set every axis to false", node);
 }
 
 }  // namespace

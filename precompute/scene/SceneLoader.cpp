@@ -5,12 +5,9 @@
 
 #include "precompute/scene/SceneLoader.h"
 
-#include <cerrno>
-#include <cstring>
-#include <fstream>
 #include <string>
 
-#include "engine/core/FileKind.h"
+#include "engine/core/InputFile.h"
 #include "engine/core/PrintableText.h"
 #include "engine/core/RuntimeLimits.h"
 #include "precompute/scene/SceneSections.h"
@@ -89,41 +86,16 @@ SceneSpec readScene(std::string_view text, const std::filesystem::path& origin) 
     return scene;
 }
 
-std::string tooLarge(const std::string& file, std::uintmax_t bytes) {
-    return file + ": " + std::to_string(bytes) + " bytes is too large for a scene file (at most " +
-           std::to_string(kMaxSceneFileBytes >> 20) + " MiB); is it the right file?";
-}
-
 }  // namespace
 
 SceneSpec parseScene(std::string_view text, const std::filesystem::path& origin) {
-    if (text.size() > kMaxSceneFileBytes) throw Error(tooLarge(origin.string(), text.size()));
+    if (text.size() > kMaxSceneFileBytes)
+        throw Error(inputTooLarge(origin.string(), text.size(), "scene file", kMaxSceneFileBytes));
     return readScene(text, origin);
 }
 
 SceneSpec loadScene(const std::filesystem::path& file) {
-    const std::string name = file.string();
-    std::error_code ec;
-    if (auto why = whyNotARegularFile(file)) {
-        throw Error(name + ": " +
-                    (std::filesystem::exists(file, ec) ? *why + ", not a scene file"
-                                                       : "no such scene file"));
-    }
-    const std::uintmax_t size = std::filesystem::file_size(file, ec);
-    if (!ec && size > kMaxSceneFileBytes) throw Error(tooLarge(name, size));
-    std::ifstream in(file, std::ios::binary);
-    if (!in) {
-        throw Error(name + ": cannot open the scene file (" + std::strerror(errno) + ")");
-    }
-    // Read in pieces up to the limit: the file may have grown since its size was taken.
-    std::string text;
-    char piece[1 << 16];
-    while (in.read(piece, sizeof piece) || in.gcount() > 0) {
-        text.append(piece, static_cast<std::size_t>(in.gcount()));
-        if (text.size() > kMaxSceneFileBytes) throw Error(tooLarge(name, text.size()));
-    }
-    if (in.bad()) throw Error(name + ": error while reading the scene file");
-    return parseScene(text, file);
+    return parseScene(readInputFile(file, "scene file", kMaxSceneFileBytes), file);
 }
 
 }  // namespace modeflow

@@ -30,7 +30,7 @@ void checkBasisFitsGrid(const TomlReader& reader, const Section& s, const BasisS
     for (int a = 0; a < grid.dim; ++a) cells *= grid.resolution[a];
     std::int64_t faces = 0;
     for (int a = 0; a < grid.dim; ++a)
-        faces += cells / grid.resolution[a] * (grid.resolution[a] + 1);
+        faces += cells / grid.resolution[a] * (grid.resolution[a] + (grid.isPeriodic(a) ? 0 : 1));
     if (basis.highestVelocityMode() > faces) {
         const toml::node* countNode = s.table.get("velocity_modes");
         reader.fail(s, countNode != nullptr ? "velocity_modes" : "modes",

@@ -4,6 +4,9 @@
 #include <chrono>
 #include <exception>
 #include <new>
+#include <numeric>
+#include <random>
+#include <vector>
 
 #include <Eigen/CholmodSupport>
 #include <Spectra/SymEigsShiftSolver.h>
@@ -44,74 +47,103 @@ void requireCholmodSuccess(const cholmod_common& common, const std::string& what
     }
 }
 
+/// The factorization of K − σM, made once and shared by every Lanczos run of a solve.
+class ShiftedFactor {
+public:
+    ShiftedFactor(const Eigen::SparseMatrix<double>& k, const Eigen::VectorXd& m, double sigma,
+                  const EigenRequest& request, SolverStats& stats)
+        : mScale(m.cwiseSqrt()), mRequest(request), mStats(stats) {
+        // CHOLMOD prints its warnings on stdout; its status becomes our message instead.
+        mSolver.cholmod().print = 0;
+        Eigen::SparseMatrix<double> shifted = k;
+        for (Eigen::Index i = 0; i < m.size(); ++i) shifted.coeffRef(i, i) -= sigma * m[i];
+        const auto start = std::chrono::steady_clock::now();
+        mSolver.analyzePattern(shifted);
+        // A failed analysis leaves no factor, which Eigen's factorize() would dereference.
+        requireCholmodSuccess(mSolver.cholmod(), request.what, k.rows());
+        mSolver.factorize(shifted);
+        mStats.factorSeconds += secondsSince(start);
+        requireCholmodSuccess(mSolver.cholmod(), request.what, k.rows());
+    }
+
+    Eigen::Index size() const { return mScale.size(); }
+    /// M^{1/2} diagonal: scaled vectors are M^{1/2} x.
+    const Eigen::VectorXd& scale() const { return mScale; }
+
+    /// y = M^{1/2} (K − σM)⁻¹ M^{1/2} x
+    Eigen::VectorXd apply(const Eigen::VectorXd& x) const {
+        const auto start = std::chrono::steady_clock::now();
+        Eigen::VectorXd y = mScale.cwiseProduct(mSolver.solve(mScale.cwiseProduct(x)));
+        mStats.solveSeconds += secondsSince(start);
+        ++mStats.operations;
+        if (mRequest.progress && mStats.operations % 16 == 0) mRequest.progress(mStats.operations);
+        return y;
+    }
+
+private:
+    Eigen::VectorXd mScale;
+    const EigenRequest& mRequest;
+    SolverStats& mStats;
+    Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>, Eigen::Lower> mSolver;
+};
+
 /// (A − σI)⁻¹ for the symmetrically scaled A = M^{-1/2} K M^{-1/2}: a diagonal M turns the
-/// generalized problem into a standard one, so Lanczos needs no M-inner products.
+/// generalized problem into a standard one, so Lanczos needs no M-inner products. With
+/// `deflated` (orthonormal columns), (I − QQᵀ)(A − σI)⁻¹(I − QQᵀ): the eigenpairs already found
+/// move to 0, out of Lanczos's way.
 class ScaledShiftInvert {
 public:
     using Scalar = double;
 
-    ScaledShiftInvert(const Eigen::SparseMatrix<double>& k, const Eigen::VectorXd& m,
-                      const EigenRequest& request)
-        : mK(k), mM(m), mRequest(request) {
-        // CHOLMOD prints its warnings on stdout; its status becomes our message instead.
-        mSolver.cholmod().print = 0;
-    }
+    ScaledShiftInvert(const ShiftedFactor& factor, const Eigen::MatrixXd& deflated)
+        : mFactor(factor), mDeflated(deflated) {}
 
-    Eigen::Index rows() const { return mK.rows(); }
-    Eigen::Index cols() const { return mK.cols(); }
+    Eigen::Index rows() const { return mFactor.size(); }
+    Eigen::Index cols() const { return mFactor.size(); }
+    /// Spectra passes the shift it was made with, which the factor already holds.
+    void set_shift(const Scalar&) {}
 
-    void set_shift(const Scalar& sigma) {
-        Eigen::SparseMatrix<double> shifted = mK;
-        for (Eigen::Index i = 0; i < mM.size(); ++i) shifted.coeffRef(i, i) -= sigma * mM[i];
-        const auto start = std::chrono::steady_clock::now();
-        mSolver.analyzePattern(shifted);
-        // A failed analysis leaves no factor, which Eigen's factorize() would dereference.
-        requireCholmodSuccess(mSolver.cholmod(), mRequest.what, rows());
-        mSolver.factorize(shifted);
-        mStats.factorSeconds += secondsSince(start);
-        requireCholmodSuccess(mSolver.cholmod(), mRequest.what, rows());
-        mScale = mM.cwiseSqrt();
-    }
-
-    // y = M^{1/2} (K − σM)⁻¹ M^{1/2} x
     void perform_op(const Scalar* xIn, Scalar* yOut) const {
         Eigen::Map<const Eigen::VectorXd> x(xIn, rows());
         Eigen::Map<Eigen::VectorXd> y(yOut, rows());
-        const auto start = std::chrono::steady_clock::now();
-        y = mScale.cwiseProduct(mSolver.solve(mScale.cwiseProduct(x)));
-        mStats.solveSeconds += secondsSince(start);
-        ++mStats.operations;
-        if (mRequest.progress && mStats.operations % 16 == 0) mRequest.progress(mStats.operations);
+        y = mFactor.apply(project(x));
+        y = project(y);
     }
 
-    const SolverStats& stats() const { return mStats; }
+    Eigen::VectorXd project(const Eigen::VectorXd& x) const {
+        if (mDeflated.cols() == 0) return x;
+        return x - mDeflated * (mDeflated.transpose() * x);
+    }
 
 private:
-    const Eigen::SparseMatrix<double>& mK;
-    const Eigen::VectorXd& mM;
-    const EigenRequest& mRequest;
-    Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>, Eigen::Lower> mSolver;
-    Eigen::VectorXd mScale;
-    mutable SolverStats mStats;
+    const ShiftedFactor& mFactor;
+    const Eigen::MatrixXd& mDeflated;
 };
 
-}  // namespace
-
-EigenPairs smallestEigenpairs(const Eigen::SparseMatrix<double>& stiffness,
-                              const Eigen::VectorXd& massDiagonal, const EigenRequest& request) {
-    const Eigen::Index n = stiffness.rows();
-    if (request.count < 1 || request.count >= n)
-        throw Error(request.what + ": asked for " + std::to_string(request.count) +
-                    " eigenpairs of a " + std::to_string(n) + "-dimensional space");
-    ScaledShiftInvert op(stiffness, massDiagonal, request);
-    const Eigen::Index nev = request.count;
+/// The `nev` lowest pairs of the (deflated) operator: ascending values, scaled vectors.
+EigenPairs lanczos(const ShiftedFactor& factor, const Eigen::MatrixXd& deflated, Eigen::Index nev,
+                   const EigenRequest& request, long& restarts) {
+    const Eigen::Index n = factor.size();
+    ScaledShiftInvert op(factor, deflated);
     // ncv = 1.5 nev needed fewer solves and less time than the textbook 2 nev (48³ ball, 100 modes:
     // 334 against 406 solves, 47 s against 58 s): the Krylov basis is re-orthogonalized at every
     // step, and its bandwidth grows with ncv.
-    const Eigen::Index ncv = std::min<Eigen::Index>(n, std::max<Eigen::Index>(3 * nev / 2 + 1, nev + 30));
+    const Eigen::Index room = n - deflated.cols();
+    const Eigen::Index ncv =
+        std::min<Eigen::Index>(room, std::max<Eigen::Index>(3 * nev / 2 + 1, nev + 30));
     Spectra::SymEigsShiftSolver<ScaledShiftInvert> solver(op, nev, ncv, request.shift);
     try {
-        solver.init();
+        if (deflated.cols() == 0) {
+            solver.init();
+        } else {
+            // A start vector with no part along the pairs already found (a fixed seed: repeatable).
+            std::mt19937_64 random(0x5eed);
+            std::uniform_real_distribution<double> uniform(-0.5, 0.5);
+            Eigen::VectorXd start(n);
+            for (Eigen::Index i = 0; i < n; ++i) start[i] = uniform(random);
+            start = op.project(start);
+            solver.init(start.data());
+        }
         solver.compute(Spectra::SortRule::LargestMagn, 1000, request.tolerance,
                        Spectra::SortRule::SmallestAlge);
     } catch (const Error&) {
@@ -122,16 +154,77 @@ EigenPairs smallestEigenpairs(const Eigen::SparseMatrix<double>& stiffness,
         // Spectra's own failures (a NaN in the Krylov basis: the operator overflowed).
         throw Error(request.what + ": Lanczos failed (" + e.what() + ")");
     }
+    restarts += solver.num_iterations();
     if (solver.info() != Spectra::CompInfo::Successful)
         throw Error(request.what + ": Lanczos did not converge for " + std::to_string(nev) +
                     " eigenpairs (" + std::to_string(solver.num_iterations()) + " restarts)");
     EigenPairs out;
     out.values = solver.eigenvalues();
     out.vectors = solver.eigenvectors();
-    const Eigen::VectorXd invScale = massDiagonal.cwiseSqrt().cwiseInverse();
-    out.vectors = invScale.asDiagonal() * out.vectors;
-    out.stats = op.stats();
-    out.stats.restarts = solver.num_iterations();
+    return out;
+}
+
+/// The `keep` lowest of two sets of pairs together, ascending.
+EigenPairs lowestOf(const EigenPairs& a, const EigenPairs& b, Eigen::Index keep) {
+    const Eigen::Index total = a.values.size() + b.values.size();
+    std::vector<Eigen::Index> order(static_cast<std::size_t>(total));
+    std::iota(order.begin(), order.end(), 0);
+    const auto value = [&](Eigen::Index i) {
+        return i < a.values.size() ? a.values[i] : b.values[i - a.values.size()];
+    };
+    std::stable_sort(order.begin(), order.end(),
+                     [&](Eigen::Index i, Eigen::Index j) { return value(i) < value(j); });
+    EigenPairs out;
+    out.values.resize(keep);
+    out.vectors.resize(a.vectors.rows(), keep);
+    for (Eigen::Index c = 0; c < keep; ++c) {
+        const Eigen::Index i = order[std::size_t(c)];
+        out.values[c] = value(i);
+        out.vectors.col(c) =
+            i < a.values.size() ? a.vectors.col(i) : b.vectors.col(i - a.values.size());
+    }
+    return out;
+}
+
+/// Runs on the operator deflated by the pairs kept so far, while they find eigenvalues below the
+/// highest kept one: copies of degenerate eigenvalues that the first run missed.
+void findMissedCopies(const ShiftedFactor& factor, EigenPairs& pairs, const EigenRequest& request,
+                      long& restarts) {
+    const Eigen::Index nev = pairs.values.size();
+    constexpr int kMaxRuns = 32;
+    for (int run = 0;; ++run) {
+        const Eigen::Index block =
+            std::min<Eigen::Index>(std::max<Eigen::Index>(8, nev / 4), factor.size() - nev - 2);
+        if (block < 1) return;
+        const double top = pairs.values[nev - 1];
+        const EigenPairs more = lanczos(factor, pairs.vectors, block, request, restarts);
+        // Equal to the highest kept one is no miss: a cut through a degenerate eigenspace keeps
+        // any part of it.
+        if (more.values[0] >= top - 1e-9 * std::abs(top)) return;
+        if (run == kMaxRuns)
+            throw Error(request.what +
+                        ": still finding missed copies of degenerate eigenvalues after " +
+                        std::to_string(kMaxRuns) + " deflated Lanczos runs");
+        pairs = lowestOf(pairs, more, nev);
+    }
+}
+
+}  // namespace
+
+EigenPairs smallestEigenpairs(const Eigen::SparseMatrix<double>& stiffness,
+                              const Eigen::VectorXd& massDiagonal, const EigenRequest& request) {
+    const Eigen::Index n = stiffness.rows();
+    if (request.count < 1 || request.count >= n)
+        throw Error(request.what + ": asked for " + std::to_string(request.count) +
+                    " eigenpairs of a " + std::to_string(n) + "-dimensional space");
+    SolverStats stats;
+    const ShiftedFactor factor(stiffness, massDiagonal, request.shift, request, stats);
+    long restarts = 0;
+    EigenPairs out = lanczos(factor, Eigen::MatrixXd(n, 0), request.count, request, restarts);
+    if (request.findMissedCopies) findMissedCopies(factor, out, request, restarts);
+    out.vectors = factor.scale().cwiseInverse().asDiagonal() * out.vectors;
+    out.stats = stats;
+    out.stats.restarts = restarts;
     return out;
 }
 

@@ -45,6 +45,13 @@ struct EigenRequest {
     double tolerance = 1e-12;
     std::string what;  ///< named in error messages ("velocity eigensolve")
     SolveProgress progress;
+    /// The operator has eigenvalues of high multiplicity (the translations and reflections of
+    /// periodic axes: up to 16 equal κ² on a 3D torus). Lanczos from one start vector finds one
+    /// vector per eigenspace in exact arithmetic and the other copies only through round-off,
+    /// so it can miss some (3D torus 10×8×12, 70 modes: 8 of the 16 copies of one κ²). With this
+    /// set, further Lanczos runs on the operator deflated by the pairs found so far look for
+    /// eigenvalues below the highest one kept, until a run finds none.
+    bool findMissedCopies = false;
 };
 
 /// @throw Error naming `what` when the factorization fails or Lanczos does not converge.

@@ -122,8 +122,12 @@ ScalarBasisResult solveNeumannScalarBasis(const CutCellDec& dec, int count,
     if (count > available)
         throw Error("[basis].scalar_modes = " + std::to_string(count) + ": the domain holds only " +
                     plural(available, "non-constant Neumann scalar mode"));
-    const EigenRequest request{count + constants, -1e-2 * referenceEigenvalue(dec.grid), 1e-12,
-                               "scalar (Neumann) eigensolve", progress};
+    const EigenRequest request{count + constants,
+                               -1e-2 * referenceEigenvalue(dec.grid),
+                               1e-12,
+                               "scalar (Neumann) eigensolve",
+                               progress,
+                               dec.grid.anyPeriodic()};
     return fromPairs(lowestPairs(neumannScalarLaplacian(dec), dec.cellStar, request), constants);
 }
 
@@ -132,8 +136,9 @@ ScalarBasisResult solveDirichletScalarBasis(const DirichletScalarDec& dec, int c
     if (count > dec.cells.size())
         throw Error("[basis].scalar_modes = " + std::to_string(count) + ": the domain holds only " +
                     plural(dec.cells.size(), "Dirichlet scalar mode"));
-    const EigenRequest request{count, -1e-2 * referenceEigenvalue(dec.grid), 1e-12,
-                               "scalar (Dirichlet) eigensolve", progress};
+    const EigenRequest request{count,    -1e-2 * referenceEigenvalue(dec.grid),
+                               1e-12,    "scalar (Dirichlet) eigensolve",
+                               progress, dec.grid.anyPeriodic()};
     return fromPairs(lowestPairs(dirichletScalarLaplacian(dec), dec.cellStar, request), 0);
 }
 
@@ -155,8 +160,9 @@ VelocityBasisResult solveVelocityBasis(const CutCellDec& dec, const std::vector<
     // with an exact projection and a Rayleigh–Ritz step.
     double penalty = std::max(1.0, 2.0 * weylEstimate(dec.grid.dim, highest, domainMeasure) / mu1) *
                      (noSlip ? 1e4 : 1.0);
-    const EigenRequest request{highest, -1e-2 * referenceEigenvalue(dec.grid), 1e-12,
-                               "velocity eigensolve", progress};
+    const EigenRequest request{highest,  -1e-2 * referenceEigenvalue(dec.grid),
+                               1e-12,    "velocity eigensolve",
+                               progress, dec.grid.anyPeriodic()};
     EigenPairs pairs;
     SolverStats stats;
     for (int attempt = 0;; ++attempt) {

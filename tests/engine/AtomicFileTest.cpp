@@ -39,6 +39,9 @@ TEST_F(AtomicFileTest, WritesAndReplacesWholeFiles) {
     writeFileAtomically(file, std::string(100000, 'x'), "test file");
     EXPECT_EQ(contents(file), std::string(100000, 'x'));
     EXPECT_EQ(entries(), 1);
+    writeFileAtomically(file, {"head|", std::string(70000, 'p'), "", "|sum"}, "test file");
+    EXPECT_EQ(contents(file), "head|" + std::string(70000, 'p') + "|sum");
+    EXPECT_EQ(entries(), 1);
 }
 
 TEST_F(AtomicFileTest, AFailedWriteKeepsTheOldFileAndSaysWhy) {

@@ -23,6 +23,8 @@ TEST(BinaryCodec, ValuesStringsAndArraysRoundTrip) {
     w.string("key text");
     w.vector(std::vector<std::int64_t>{1, -2, 3});
     w.vector(std::vector<double>{});
+    const double block[] = {0.5, -1.0};
+    w.values(block, 2);
     const std::string bytes = w.bytes();
     ByteReader r = readerOf(bytes);
     EXPECT_EQ(r.pod<std::int32_t>(), -7);
@@ -30,6 +32,8 @@ TEST(BinaryCodec, ValuesStringsAndArraysRoundTrip) {
     EXPECT_EQ(r.string(), "key text");
     EXPECT_EQ(r.vector<std::int64_t>(), (std::vector<std::int64_t>{1, -2, 3}));
     EXPECT_TRUE(r.vector<double>().empty());
+    EXPECT_EQ(r.bytes(2 * sizeof(double)),
+              std::string_view(reinterpret_cast<const char*>(block), sizeof block));
     EXPECT_TRUE(r.atEnd());
 }
 

@@ -112,7 +112,11 @@ Eigen::VectorXd projectOnRounded(const BasisCache& cache, const Eigen::VectorXd&
 class ForceProjectionKernelTest : public testing::VulkanTest {};
 
 TEST_P(ForceProjectionKernelTest, ForceFieldEqualsTheCpuReference) {
-    for (const BasisCache* cache : {&testing::disk2d(), &testing::ball3d()})
+    // The periodic bases: splats reach across seams (the second splat lies past the channel's
+    // start), and on the torus around a disk and the 3D torus the up axis wraps too.
+    for (const BasisCache* cache :
+         {&testing::disk2d(), &testing::ball3d(), &testing::periodicChannel2d(),
+          &testing::torusAroundDisk2d(), &testing::torus3d()})
         for (const int scale : {1, 2, 3})
             for (const bool useMask : {false, true}) {
                 const Smoke smoke = randomSmoke(*cache, scale, 3 + scale);
@@ -122,7 +126,9 @@ TEST_P(ForceProjectionKernelTest, ForceFieldEqualsTheCpuReference) {
                                           useMask ? std::span<const std::uint8_t>(smoke.mask) : std::span<const std::uint8_t>()};
                 const Eigen::VectorXd reference = reference::forceDensity(*cache, input, splats());
                 EXPECT_LE(testing::relativeError(device, reference), 1e-5)
-                    << cache->grid.dim << "D, scale " << scale << ", mask " << useMask;
+                    << cache->grid.dim << "D, periodic " << cache->grid.periodic[0]
+                    << cache->grid.periodic[1] << cache->grid.periodic[2] << ", scale " << scale
+                    << ", mask " << useMask;
             }
 }
 

@@ -1,11 +1,13 @@
 /// @file ForceProjectionTest.cpp
 /// The CPU reference of the force field and its projection (engine/reference/ForceField.h,
 /// ForceProjection.h): the weights against the cache's Hodge stars, the orthonormality round
-/// trip, buoyancy of a uniform temperature (a gradient: no div-free part), splat signs, and the
-/// dual-cell mean on finer smoke grids.
+/// trip, buoyancy of a uniform temperature (a gradient: no div-free part), splat signs, the
+/// dual-cell mean on finer smoke grids, and both across periodic seams.
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
+#include <utility>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -170,6 +172,47 @@ TEST(ForceProjection, DualCellMeanCoversHalfACellEachSideWithHalfEndCellsForOddS
                     << dim << "D, scale " << s << ", face " << f;
             }
         }
+}
+
+TEST(ForceProjection, OnAPeriodicUpAxisTheSeamFacesDualCellReachesAcrossIt) {
+    // Periodic along y (up in 2D), smoke scale 3: the up face on the seam (y = 0) averages the
+    // smoke rows −2 … 1, that is the top two rows 10 and 11 and the bottom two 0 and 1, the end
+    // rows (10 and 1) at half weight.
+    GridSpec spec = testing::boxGrid(2, 4);
+    spec.periodic = {false, true, false};
+    const MacGrid basis = MacGrid::fromSpec(spec), smoke = basis.refined(3);
+    const FaceLocation seam{1, {1, 0, 0}};
+    for (const auto& [row, expected] :
+         {std::pair{11, 1.0 / 3}, std::pair{10, 1.0 / 6}, std::pair{0, 1.0 / 3},
+          std::pair{1, 1.0 / 6}, std::pair{9, 0.0}, std::pair{2, 0.0}}) {
+        std::vector<double> temperature(std::size_t(smoke.cellCount()), 0.0);
+        for (int x = 3; x < 6; ++x) temperature[std::size_t(smoke.cellIndex(x, row, 0))] = 1.0;
+        EXPECT_DOUBLE_EQ(reference::dualCellTemperature(basis, 3, seam, temperature, {}), expected)
+            << "row " << row;
+    }
+}
+
+TEST(ForceProjection, OnAPeriodicAxisASplatPastOneEndPushesAtTheOther) {
+    // The channel around a disk, periodic along x over [0, 2]: a splat a box length to the right
+    // is the same splat, and one on the seam pushes at both ends.
+    const BasisCache& cache = testing::periodicChannel2d();
+    const MacGrid grid = MacGrid::fromSpec(cache.grid);
+    const ForceSplat nearStart{{0.05, 0.5, 0.0}, {1.0, 0.5, 0.0}, 0.2};
+    ForceSplat pastEnd = nearStart;
+    pastEnd.centre[0] += 2.0;
+    const Eigen::VectorXd g =
+        reference::forceDensity(cache, {}, std::vector<ForceSplat>{nearStart});
+    const Eigen::VectorXd same =
+        reference::forceDensity(cache, {}, std::vector<ForceSplat>{pastEnd});
+    EXPECT_LE((g - same).lpNorm<Eigen::Infinity>(), 1e-14 * g.lpNorm<Eigen::Infinity>());
+    double farEnd = 0.0;
+    for (std::size_t d = 0; d < cache.faces.size(); ++d) {
+        const FaceLocation face = locateFace(grid, cache.faces[d]);
+        if (faceCentre(grid, face)[0] > 1.8) farEnd = std::max(farEnd, g[Eigen::Index(d)]);
+    }
+    std::cout << "splat at x = 0.05 of radius 0.2: largest push at x > 1.8 " << farEnd << " (peak "
+              << g.maxCoeff() << ")\n";
+    EXPECT_GT(farEnd, 0.3 * g.maxCoeff());
 }
 
 TEST(ForceProjection, SplatsPushAlongTheirForce) {

@@ -15,6 +15,13 @@
 namespace modeflow {
 namespace {
 
+/// A walled grid of the given dimension (covers() reads its dimension and periodic axes).
+MacGrid walledGrid(int dim) {
+    MacGrid grid;
+    grid.dim = dim;
+    return grid;
+}
+
 MovingObstacle ball(double radius, std::vector<std::pair<double, Vec3>> path) {
     ObstacleSpec spec;
     spec.shape = ObstacleShape::Ball;
@@ -50,18 +57,67 @@ TEST(MovingObstacle, ShapesCoverWhatTheySay) {
     box.halfSize = {0.2, 0.1, 0.3};
     box.path = {{0.0, {0.0, 0.0, 0.0}}};
     const MovingObstacle b{box};
-    EXPECT_TRUE(b.covers({0.19, -0.09, 0.0}, {0.0, 0.0, 0.0}, 2));
-    EXPECT_FALSE(b.covers({0.21, 0.0, 0.0}, {0.0, 0.0, 0.0}, 2));
-    EXPECT_FALSE(b.covers({0.0, 0.0, 0.31}, {0.0, 0.0, 0.0}, 3));
+    EXPECT_TRUE(b.covers({0.19, -0.09, 0.0}, {0.0, 0.0, 0.0}, walledGrid(2)));
+    EXPECT_FALSE(b.covers({0.21, 0.0, 0.0}, {0.0, 0.0, 0.0}, walledGrid(2)));
+    EXPECT_FALSE(b.covers({0.0, 0.0, 0.31}, {0.0, 0.0, 0.0}, walledGrid(3)));
     ObstacleSpec capsule;
     capsule.shape = ObstacleShape::Capsule;
     capsule.radius = 0.1;
     capsule.axis = {0.5, 0.0, 0.0};
     capsule.path = box.path;
     const MovingObstacle c{capsule};
-    EXPECT_TRUE(c.covers({0.55, 0.05, 0.0}, {0.0, 0.0, 0.0}, 2));   // near the end cap
-    EXPECT_FALSE(c.covers({0.65, 0.0, 0.0}, {0.0, 0.0, 0.0}, 2));   // past it
-    EXPECT_FALSE(c.covers({0.0, 0.11, 0.0}, {0.0, 0.0, 0.0}, 2));   // beside the segment
+    EXPECT_TRUE(c.covers({0.55, 0.05, 0.0}, {0.0, 0.0, 0.0}, walledGrid(2)));  // near the end cap
+    EXPECT_FALSE(c.covers({0.65, 0.0, 0.0}, {0.0, 0.0, 0.0}, walledGrid(2)));  // past it
+    EXPECT_FALSE(c.covers({0.0, 0.11, 0.0}, {0.0, 0.0, 0.0}, walledGrid(2)));  // beside the segment
+}
+
+TEST(MovingObstacle, CoversAcrossAPeriodicSeamAtTheMinimumImage) {
+    // [0, 2] × [0, 1], periodic along x: a ball at x = 1.95 reaches over the seam to x = 0.1.
+    MacGrid grid = walledGrid(2);
+    grid.cells = {20, 10, 1};
+    grid.spacing = {0.1, 0.1, 1.0};
+    ObstacleSpec ball;
+    ball.shape = ObstacleShape::Ball;
+    ball.radius = 0.2;
+    ball.path = {{0.0, {1.95, 0.5, 0.0}}};
+    const MovingObstacle o{ball};
+    EXPECT_FALSE(o.covers({0.1, 0.5, 0.0}, {1.95, 0.5, 0.0}, grid)) << "walled";
+    grid.periodic[0] = true;
+    EXPECT_TRUE(o.covers({0.1, 0.5, 0.0}, {1.95, 0.5, 0.0}, grid))
+        << "periodic: 0.15 away across the seam";
+    EXPECT_FALSE(o.covers({0.3, 0.5, 0.0}, {1.95, 0.5, 0.0}, grid))
+        << "periodic: 0.35 away across the seam";
+    EXPECT_TRUE(o.covers({1.8, 0.5, 0.0}, {1.95, 0.5, 0.0}, grid)) << "periodic: on its own side";
+}
+
+TEST(MovingObstacle, AnObstacleCrossingAPeriodicSeamDragsTheFluidAtBothEnds) {
+    // The channel around a disk, periodic along x over [0, 2]: a ball moving along +x at speed
+    // 0.4 is on the seam at t = 0.5 (its centre at x = 2, i.e. 0). It covers faces at both ends,
+    // and the fluid it drags moves along +x at both.
+    const BasisCache& cache = testing::periodicChannel2d();
+    const MacGrid grid = MacGrid::fromSpec(cache.grid);
+    const std::vector<MovingObstacle> obstacles{
+        ball(0.15, {{0.0, {1.8, 0.5, 0.0}}, {1.0, {2.2, 0.5, 0.0}}})};
+    const std::vector<double> still(std::size_t(grid.faceTotal()), 0.0);
+    const std::vector<double> mismatch = reference::obstacleMismatch(cache, still, obstacles, 0.5);
+    int left = 0, right = 0;
+    for (std::int64_t f = 0; f < grid.faceCount(0); ++f)
+        if (mismatch[std::size_t(f)] != 0.0) {
+            EXPECT_DOUBLE_EQ(mismatch[std::size_t(f)], -0.4) << "face " << f;
+            (faceCentre(grid, locateFace(grid, f))[0] < 1.0 ? left : right) += 1;
+        }
+    EXPECT_GT(left, 3) << "covered x-faces near x = 0";
+    EXPECT_GT(right, 3) << "covered x-faces near x = 2";
+    const std::vector<double> u = reference::reconstructFaceField(
+        cache, -reference::obstacleCorrection(cache, still, obstacles, 0.5));
+    const double atSeam = u[std::size_t(grid.faceIndex(0, 0, 8, 0))];
+    const double before = u[std::size_t(grid.faceIndex(0, 31, 8, 0))];
+    const double after = u[std::size_t(grid.faceIndex(0, 1, 8, 0))];
+    std::cout << "fluid x velocity at the seam under the ball " << atSeam << ", a cell before "
+              << before << ", a cell after " << after << " (ball: 0.4)\n";
+    EXPECT_GT(atSeam, 0.05);
+    EXPECT_GT(before, 0.5 * atSeam);
+    EXPECT_GT(after, 0.5 * atSeam);
 }
 
 TEST(MovingObstacle, CorrectionShrinksTheMismatchOfAStillObstacle) {

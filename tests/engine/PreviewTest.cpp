@@ -15,14 +15,6 @@
 
 #include <gtest/gtest.h>
 
-#define STB_IMAGE_IMPLEMENTATION
-#define STB_IMAGE_STATIC
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wunused-function"
-#pragma GCC diagnostic ignored "-Wmissing-field-initializers"
-#include <stb/stb_image.h>
-#pragma GCC diagnostic pop
-
 #include "engine/core/Error.h"
 #include "engine/preview/ContactSheet.h"
 #include "engine/preview/Palette.h"
@@ -32,6 +24,7 @@
 #include "engine/preview/VolumeRenderer.h"
 #include "engine/vulkan/CommandSequence.h"
 #include "engine/vulkan/DeviceBuffer.h"
+#include "tests/support/PngFile.h"
 #include "tests/support/SmokeTestFields.h"
 #include "tests/support/TestFolder.h"
 #include "tests/support/VulkanTestContext.h"
@@ -135,14 +128,12 @@ TEST(PngWriterTest, RoundTripKeepsSizeAndEveryPixel) {
     const fs::path file = folder / "round trip.png";
     preview::writePng(file, image);
 
-    int w = 0, h = 0, channels = 0;
-    stbi_uc* data = stbi_load(file.c_str(), &w, &h, &channels, 4);
-    ASSERT_NE(data, nullptr) << stbi_failure_reason();
-    EXPECT_EQ(w, 37);
-    EXPECT_EQ(h, 23);
-    EXPECT_EQ(channels, 4);
-    EXPECT_TRUE(std::equal(image.rgba.begin(), image.rgba.end(), data));
-    stbi_image_free(data);
+    const std::optional<testing::PngPixels> png = testing::readPng(file);
+    ASSERT_TRUE(png) << file;
+    EXPECT_EQ(png->width, 37);
+    EXPECT_EQ(png->height, 23);
+    EXPECT_EQ(png->channelsInFile, 4);
+    EXPECT_TRUE(std::equal(image.rgba.begin(), image.rgba.end(), png->rgba.begin()));
     EXPECT_EQ(std::distance(fs::directory_iterator(folder), fs::directory_iterator()), 1)
         << "temporary file left";
 }

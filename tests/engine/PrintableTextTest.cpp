@@ -19,6 +19,14 @@ TEST(PrintableText, EscapesControlCharactersAndBrokenUtf8) {
     EXPECT_EQ(printableText("\xff\xc3"), "\\xff\\xc3");           // not UTF-8, cut sequence
 }
 
+TEST(PrintableText, EscapesWhatLooksLikeUtf8ButIsNot) {
+    EXPECT_EQ(printableText("\xe0\x80\xaf"), "\\xe0\\x80\\xaf");           // an overlong '/'
+    EXPECT_EQ(printableText("\xed\xa0\x80"), "\\xed\\xa0\\x80");           // a UTF-16 surrogate
+    EXPECT_EQ(printableText("\xf4\x90\x80\x80"), "\\xf4\\x90\\x80\\x80");  // beyond U+10FFFF
+    EXPECT_EQ(printableText("\xf0\x9f\x8c\x80 \xe2\x82\xac"),
+              "\xf0\x9f\x8c\x80 \xe2\x82\xac");  // 🌀 €
+}
+
 TEST(PrintableText, CutsLongTextAfterMaxCharacters) {
     EXPECT_EQ(printableText(std::string(1000000, '7'), 5), "77777...");
     EXPECT_EQ(printableText("12345", 5), "12345");

@@ -8,16 +8,10 @@
 #include <filesystem>
 #include <sstream>
 
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wmissing-field-initializers"
-#pragma GCC diagnostic ignored "-Wunused-function"
-#define STB_IMAGE_IMPLEMENTATION
-#include <stb/stb_image.h>
-#pragma GCC diagnostic pop
-
 #include "engine/display/NullScreen.h"
 #include "engine/stir/StirApp.h"
 #include "engine/stir/StirStatistics.h"
+#include "tests/support/PngFile.h"
 #include "tests/support/StirRuns.h"
 #include "tests/support/TestFolder.h"
 #include "tests/support/VulkanTestContext.h"
@@ -118,12 +112,10 @@ TEST_F(StirLoopTest, ScreenshotIsThePresentedPictureInEitherByteOrder) {
     run(bgra, 2, "", 20);
     EXPECT_EQ(differingFraction(rgba.lastPicture(), bgra.lastPicture(), 0), 0.0)
         << "the blue-first screen shows other colours";
-    int width = 0, height = 0, channels = 0;
-    unsigned char* pixels = stbi_load(shot.string().c_str(), &width, &height, &channels, 4);
-    ASSERT_NE(pixels, nullptr) << shot;
-    preview::Image saved(width, height);
-    saved.rgba.assign(pixels, pixels + saved.rgba.size());
-    stbi_image_free(pixels);
+    const std::optional<testing::PngPixels> png = testing::readPng(shot);
+    ASSERT_TRUE(png) << shot;
+    preview::Image saved(png->width, png->height);
+    saved.rgba = png->rgba;
     EXPECT_EQ(differingFraction(saved, rgba.lastPicture(), 0), 0.0);
 }
 

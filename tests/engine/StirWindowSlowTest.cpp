@@ -7,15 +7,9 @@
 #include <filesystem>
 #include <sstream>
 
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wmissing-field-initializers"
-#pragma GCC diagnostic ignored "-Wunused-function"
-#define STB_IMAGE_IMPLEMENTATION
-#include <stb/stb_image.h>
-#pragma GCC diagnostic pop
-
 #include "engine/stir/StirApp.h"
 #include "engine/stir/StirView.h"
+#include "tests/support/PngFile.h"
 #include "tests/support/StirRuns.h"
 #include "tests/support/TestFolder.h"
 
@@ -61,12 +55,12 @@ Vec3 smokeCentroid(int dim, const stir::StirReport& report) {
 
 /// The horizontal centre of the bright pixels of a PNG (testing::brightCentreX), and its size.
 double brightCentreX(const fs::path& png, int& width, int& height) {
-    int channels = 0;
-    unsigned char* pixels = stbi_load(png.string().c_str(), &width, &height, &channels, 4);
-    if (!pixels) return -1.0;
+    const std::optional<testing::PngPixels> read = testing::readPng(png);
+    if (!read) return -1.0;
+    width = read->width;
+    height = read->height;
     preview::Image picture(width, height);
-    picture.rgba.assign(pixels, pixels + picture.rgba.size());
-    stbi_image_free(pixels);
+    picture.rgba = read->rgba;
     return testing::brightCentreX(picture);
 }
 

@@ -3,12 +3,13 @@
 /// round-trip through the file (grid names, classes and types, voxel centres at the smoke cell
 /// centres, values exact in float32 and within half precision, inactive below the threshold and
 /// outside the fluid mask, vel equal to the MAC sample, metadata; an MHD frame's magnetic grid
-/// sampled like vel), and the write is atomic: a
+/// sampled like vel; periodic frames say which axes wrap), and the write is atomic: a
 /// missing or read-only folder, a directory in the way and a full disk each throw an Error naming
 /// the file and leave neither the frame nor a temporary file behind.
 
 #include <unistd.h>
 
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
@@ -16,6 +17,7 @@
 #include <iostream>
 #include <random>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -63,12 +65,13 @@ struct FrameData {
 
 /// Non-cubic cells, smoke scale 2; every kind of cell present: masked-out cells holding smoke,
 /// values below the threshold (and exactly 0), negative temperatures, slow velocity regions.
-FrameData makeFrame(int dim) {
+FrameData makeFrame(int dim, std::array<bool, 3> periodic = {false, false, false}) {
     FrameData d;
     d.basis.dim = dim;
     d.basis.cells = dim == 3 ? std::array<int, 3>{4, 3, 2} : std::array<int, 3>{5, 3, 1};
     d.basis.origin = {-1.0, 0.5, dim == 3 ? -0.25 : 0.0};
     d.basis.spacing = {0.5, 0.3, dim == 3 ? 0.2 : 1.0};
+    d.basis.periodic = periodic;
     d.smoke = d.basis.refined(2);
     const auto cells = static_cast<std::size_t>(d.smoke.cellCount());
     d.density.resize(cells);
@@ -212,6 +215,31 @@ TEST_F(VdbFrameTest, FramesRoundTripOnNonCubicCellsInFloatAndHalf) {
         }
     // Only the frames: no temporary file left over.
     EXPECT_EQ(entries(mDir).size(), 4u);
+}
+
+TEST_F(VdbFrameTest, PeriodicFramesSayWhichAxesWrapAndOtherwiseKeepTheContract) {
+    // modeflow_periodic on the file and every grid of a periodic frame (the velocity sampled
+    // across the seam, as the runtime does); walled frames carry none.
+    for (const auto& [dim, periodic] : {std::pair{2, std::array<bool, 3>{true, false, false}},
+                                        std::pair{3, std::array<bool, 3>{false, true, true}}}) {
+        SCOPED_TRACE(std::to_string(dim) + "D");
+        const FrameData d = makeFrame(dim, periodic);
+        const fs::path file = mDir / frameFileName("periodic", dim);
+        writeVdbFrame(file, d.frame());
+        checkRoundTrip(d, file, false);
+        const VdbFrameInfo info = readVdbFrameInfo(file);
+        ASSERT_TRUE(info.periodic.has_value());
+        EXPECT_EQ(*info.periodic, periodic);
+        for (const VdbGridInfo& g : info.grids) EXPECT_EQ(g.periodic, info.periodic) << g.name;
+    }
+    FrameData mixed = makeFrame(2, {true, false, false});
+    mixed.smoke.periodic[0] = false;
+    EXPECT_THROW(writeVdbFrame(mDir / "mixed.vdb", mixed.frame()), Error);
+    const fs::path walled = mDir / frameFileName("walled", 0);
+    writeVdbFrame(walled, makeFrame(3).frame());
+    const VdbFrameInfo info = readVdbFrameInfo(walled);
+    EXPECT_FALSE(info.periodic.has_value());
+    for (const VdbGridInfo& g : info.grids) EXPECT_FALSE(g.periodic.has_value()) << g.name;
 }
 
 TEST_F(VdbFrameTest, MhdFramesCarryTheMagneticFieldLikeTheVelocity) {

@@ -23,7 +23,7 @@ Eigen::SparseMatrix<double> diagonal(int n, double first) {
 
 TEST(EigensolverFailures, AnIndefiniteOperatorIsRefusedQuietlyNamingTheStage) {
     const int n = 60;
-    const EigenRequest request{4, -0.01, 1e-12, "test eigensolve", {}};
+    const EigenRequest request{4, -0.01, 1e-12, "test eigensolve", {}, false};
     std::string message;
     ::testing::internal::CaptureStdout();
     ::testing::internal::CaptureStderr();
@@ -43,7 +43,7 @@ TEST(EigensolverFailures, AnIndefiniteOperatorIsRefusedQuietlyNamingTheStage) {
 TEST(EigensolverFailures, APositiveDefiniteOperatorStillSolves) {
     const int n = 60;
     const EigenPairs pairs = smallestEigenpairs(diagonal(n, 0.0), Eigen::VectorXd::Ones(n),
-                                                {4, -0.01, 1e-12, "test eigensolve", {}});
+                                                {4, -0.01, 1e-12, "test eigensolve", {}, false});
     ASSERT_EQ(pairs.values.size(), 4);
     for (int i = 0; i < 4; ++i) EXPECT_NEAR(pairs.values[i], double(i), 1e-10) << i;
 }

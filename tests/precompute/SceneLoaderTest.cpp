@@ -1176,5 +1176,33 @@ TEST(SceneLoaderPeriodic, PeriodicFlagsAreOnePerAxisAndDefaultToWalls) {
     refused("[1, 0]", "[grid].periodic[0]: expected true or false");
 }
 
+TEST(SceneLoaderPeriodic, PeriodicAxesAreAcceptedAndCountTheirFacesOnce) {
+    const SceneSpec channel = parseScene(
+        "[grid]\nresolution = [8, 4]\nbounds_min = [0, 0]\nbounds_max = [2, 1]\nperiodic = [true, "
+        "false]\n"
+        "[basis]\nvelocity_modes = 4\n",
+        "channel.toml");
+    EXPECT_EQ(channel.grid.periodic, (std::array<bool, 3>{true, false, false}));
+    const SceneSpec slab = parseScene(
+        "[grid]\nresolution = [4, 4, 4]\nbounds_min = [0, 0, 0]\nbounds_max = [1, 1, 1]\n"
+        "periodic = [true, false, true]\n[basis]\nvelocity_modes = 4\n",
+        "slab.toml");
+    EXPECT_EQ(slab.grid.periodic, (std::array<bool, 3>{true, false, true}));
+    // A 4 × 4 torus has 32 faces (a walled 4 × 4 box 40): mode 36 lies beyond it.
+    const std::string torus =
+        "[grid]\nresolution = [4, 4]\nbounds_min = [0, 0]\nbounds_max = [1, 1]\n";
+    EXPECT_NO_THROW(
+        parseScene(torus + "[basis]\nvelocity_modes = 36\nscalar_modes = 0\n", "box.toml"));
+    try {
+        parseScene(
+            torus + "periodic = [true, true]\n[basis]\nvelocity_modes = 36\nscalar_modes = 0\n",
+            "torus.toml");
+        ADD_FAILURE() << "mode 36 of a 4 x 4 torus accepted";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("the grid has only 32 faces"), std::string::npos)
+            << e.what();
+    }
+}
+
 }  // namespace
 }  // namespace modeflow

@@ -221,6 +221,21 @@ TEST(UniformField, IsUniformInsideDivergenceFreeAndTangentAtTheWall) {
     EXPECT_THROW(UniformField(disk(), kUnitDisk, {1.0, 0.0, 0.0}, 1.0, 0.0), Error);
 }
 
+TEST(UniformField, IsUniformUpToTheEndsOfPeriodicAxes) {
+    // A channel periodic along x between walls at y = ±1: no layer at x = ±1, one at y = ±1.
+    BasisCache channel;
+    channel.grid = testing::gridScene({16, 16, 1}, {-1.0, -1.0, 0.0}, {1.0, 1.0, 0.0}, 2).grid;
+    channel.grid.periodic = {true, false, false};
+    const UniformField field(channel, {}, {1.0, 0.0, 0.0}, 2.0, 0.3);
+    for (const double x : {-0.999, -0.9, 0.0, 0.95, 0.999}) {
+        const Vec3 b = field({x, 0.0, 0.0});
+        EXPECT_NEAR(b[0], 2.0, 1e-12) << "x = " << x;
+        EXPECT_NEAR(b[1], 0.0, 1e-12) << "x = " << x;
+    }
+    EXPECT_NEAR(field({0.0, 0.999, 0.0})[1], 0.0, 1e-3) << "tangent at a wall";
+    EXPECT_LT(field({0.0, 0.999, 0.0})[0], 0.1) << "faded out at a wall";
+}
+
 TEST(UniformField, ProjectionIsTheLeastSquaresFitAndDivergenceFree) {
     const BasisCache& cache = disk();
     const UniformField field(cache, kUnitDisk, {1.0, 0.0, 0.0}, 1.0, uniformFieldLayer(cache));

@@ -27,6 +27,34 @@ const BasisCache& ball3d() {
     return cache;
 }
 
+namespace {
+
+SceneSpec withModes(SceneSpec scene, int velocityModes) {
+    scene.basis.velocityModes = {{1, velocityModes}};
+    scene.basis.scalarModes = 0;
+    return scene;
+}
+
+}  // namespace
+
+const BasisCache& periodicChannel2d() {
+    static const BasisCache cache = sharedBasis(withModes(periodicChannelScene(32), 20));
+    return cache;
+}
+
+const BasisCache& torusAroundDisk2d() {
+    static const BasisCache cache =
+        sharedBasis(withModes(periodicChannelScene(32, {true, true, false}), 20));
+    return cache;
+}
+
+const BasisCache& torus3d() {
+    SceneSpec scene = gridScene({8, 8, 8}, {-1.0, -1.0, -1.0}, {1.0, 1.0, 1.0}, 3);
+    scene.grid.periodic = {true, true, true};
+    static const BasisCache cache = sharedBasis(withModes(scene, 12));
+    return cache;
+}
+
 void expectValidVelocityBasis(const BasisCache& cache) {
     const BasisChecks checks = checkBasis(cache);
     EXPECT_LE(checks.maxDivergence, 1e-10);

@@ -20,6 +20,14 @@ BasisCache sharedBasis(const SceneSpec& scene);
 const BasisCache& disk2d();
 const BasisCache& ball3d();
 
+/// Periodic bases, once per process: TestScenes' channel around a disk at 32 × 16 cells,
+/// periodic along x (periodicChannel2d) and along both axes, a torus around a disk, whose up
+/// axis wraps too (torusAroundDisk2d), 20 velocity modes each; the whole 3D torus [−1, 1]³ at 8³
+/// with 12 (torus3d). No scalar modes.
+const BasisCache& periodicChannel2d();
+const BasisCache& torusAroundDisk2d();
+const BasisCache& torus3d();
+
 /// The contract every velocity basis meets: max |dΨ|/|Ψ| and |ΨᵀMΨ − I| ≤ 1e-10, recomputed
 /// from the stored data (precompute/BasisChecks).
 void expectValidVelocityBasis(const BasisCache& cache);

@@ -34,8 +34,9 @@ std::vector<std::uint8_t> wholeMask(const MacGrid& grid) {
 
 std::vector<double> gaussianBlob(const MacGrid& grid, const Vec3& centre, double sigma) {
     return cellValues<double>(grid, [&](const Vec3& p) {
+        const Vec3 d = grid.minimumImage({p[0] - centre[0], p[1] - centre[1], p[2] - centre[2]});
         double r2 = 0.0;
-        for (int a = 0; a < 3; ++a) r2 += (p[a] - centre[a]) * (p[a] - centre[a]);
+        for (int a = 0; a < 3; ++a) r2 += d[a] * d[a];
         return std::exp(-r2 / (2.0 * sigma * sigma));
     });
 }
@@ -48,7 +49,8 @@ std::vector<double> constantVelocity(const MacGrid& grid, const Vec3& u) {
             for (int y = 0; y < e[1]; ++y)
                 for (int x = 0; x < e[0]; ++x) {
                     const std::array<int, 3> p{x, y, z};
-                    if (p[axis] > 0 && p[axis] < grid.cells[axis]) faces[grid.faceIndex(axis, x, y, z)] = u[axis];
+                    if (!grid.isWallFace(axis, p[axis]))
+                        faces[grid.faceIndex(axis, x, y, z)] = u[axis];
                 }
     }
     return faces;
@@ -63,9 +65,11 @@ std::vector<double> streamFunctionVelocity(const MacGrid& grid, const std::funct
     for (int k = 0; k < grid.cells[2]; ++k)
         for (int j = 0; j <= grid.cells[1]; ++j)
             for (int i = 0; i <= grid.cells[0]; ++i) {
-                if (j < grid.cells[1])
+                // Along a periodic axis the faces at n are those at 0 (ψ repeats, so the same
+                // value).
+                if (j < grid.cells[1] && i < grid.faceExtent(0)[0])
                     faces[grid.faceIndex(0, i, j, k)] = (at(i, j + 1, k) - at(i, j, k)) / grid.spacing[1];
-                if (i < grid.cells[0])
+                if (i < grid.cells[0] && j < grid.faceExtent(1)[1])
                     faces[grid.faceIndex(1, i, j, k)] = -(at(i + 1, j, k) - at(i, j, k)) / grid.spacing[0];
             }
     return faces;
@@ -125,18 +129,32 @@ const char* schemeName(AdvectionScheme scheme) {
 }
 
 Vec3 centroid(const MacGrid& grid, const std::vector<double>& field) {
+    return centroidNear(grid, field, {0.0, 0.0, 0.0});
+}
+
+Vec3 centroidNear(const MacGrid& grid, const std::vector<double>& field, const Vec3& around) {
     Vec3 moment{0.0, 0.0, 0.0};
     double total = 0.0;
     for (int z = 0; z < grid.cells[2]; ++z)
         for (int y = 0; y < grid.cells[1]; ++y)
             for (int x = 0; x < grid.cells[0]; ++x) {
                 const double v = field[grid.cellIndex(x, y, z)];
-                const Vec3 p = cellCentre(grid, x, y, z);
+                const Vec3 p = grid.nearestImage(cellCentre(grid, x, y, z), around);
                 for (int a = 0; a < 3; ++a) moment[a] += v * p[a];
                 total += v;
             }
     for (double& m : moment) m /= total;
     return moment;
+}
+
+MacGrid periodicSmokeTestGrid(int dim, int n) {
+    MacGrid grid = smokeTestGrid(dim, n);
+    grid.periodic = {true, true, dim == 3};
+    return grid;
+}
+
+std::vector<double> diagonalFlow(const MacGrid& grid) {
+    return constantVelocity(grid, {2.0, 2.0, grid.dim == 3 ? 2.0 : 0.0});
 }
 
 }  // namespace modeflow::testing

@@ -37,14 +37,17 @@ std::vector<std::uint8_t> ballMask(const MacGrid& grid, double radius);
 
 std::vector<std::uint8_t> wholeMask(const MacGrid& grid);
 
-/// A Gaussian bump of height 1 and width σ around `centre`.
+/// A Gaussian bump of height 1 and width σ around `centre` (at the minimum-image distance along
+/// periodic axes, so a bump near the seam continues across it).
 std::vector<double> gaussianBlob(const MacGrid& grid, const Vec3& centre, double sigma);
 
-/// `u` on every interior face of each axis, 0 on the walls of the box.
+/// `u` on every interior face of each axis (the seam's faces on a periodic axis), 0 on the walls
+/// of the box.
 std::vector<double> constantVelocity(const MacGrid& grid, const Vec3& u);
 
 /// The discrete curl of ψ(x, y, z) sampled on z-edges (x_i, y_j, centre of layer k): exactly
-/// divergence-free; the walls get zero flux when ψ is constant along the box's boundary.
+/// divergence-free; the walls get zero flux when ψ is constant along the box's boundary. Along a
+/// periodic axis ψ must repeat (the seam's faces are taken at position 0).
 std::vector<double> streamFunctionVelocity(const MacGrid& grid, const std::function<double(const Vec3&)>& psi);
 
 /// Rigid rotation at angular speed ω about the z axis inside radius R, at rest outside
@@ -70,5 +73,14 @@ const char* schemeName(AdvectionScheme scheme);
 
 /// Σ φ·x / Σ φ over the cells: a smoke field's centre of mass, in scene coordinates.
 Vec3 centroid(const MacGrid& grid, const std::vector<double>& field);
+
+/// The centroid of the field's images nearest `around` along periodic axes (the field must be
+/// small beside the box for that to mean much); `centroid` on other axes.
+Vec3 centroidNear(const MacGrid& grid, const std::vector<double>& field, const Vec3& around);
+
+/// smokeTestGrid periodic along every axis (a torus), and the uniform flow (2, 2[, 2]) that
+/// crosses it along each axis in time 1: a harmonic field of the torus.
+MacGrid periodicSmokeTestGrid(int dim, int n);
+std::vector<double> diagonalFlow(const MacGrid& grid);
 
 }  // namespace modeflow::testing

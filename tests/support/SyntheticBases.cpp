@@ -29,7 +29,7 @@ BasisCache syntheticBasis(const GridSpec& grid, int modes, unsigned seed) {
     std::vector<double> star;
     for (std::int64_t f = 0; f < mac.faceTotal(); ++f) {
         const FaceLocation face = locateFace(mac, f);
-        if (face.pos[face.axis] == 0 || face.pos[face.axis] == mac.cells[face.axis]) continue;  // box wall
+        if (mac.isWallFace(face.axis, face.pos[face.axis])) continue;
         cache.faces.push_back(f);
         star.push_back(mac.spacing[face.axis] / (mac.faceArea(face.axis) * fraction(random)));
     }

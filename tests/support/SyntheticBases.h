@@ -12,7 +12,8 @@ namespace modeflow::testing {
 /// A grid over a non-cubic box ([−1, 1.2] × [−0.9, 1] (× [−0.8, 1.3])), so axis mix-ups show.
 GridSpec boxGrid(int dim, int cells);
 
-/// A complete cache on `grid`: `modes` random modes on every face not on the box, each face with
+/// A complete cache on `grid`: `modes` random modes on every face not on a wall of the box (the
+/// seam's faces of a periodic axis included), each face with
 /// a random cut fraction in [0.3, 1] (⋆ = h / (area × fraction), as for a cut face),
 /// ⋆-orthonormalized; κ² = 1 … modes; every cell fluid; random dense coefficients (randomDense).
 /// prepareRun takes it as a real basis.

@@ -24,6 +24,14 @@ SceneSpec unitBallScene(int dim, int cells, int velocityModes, int scalarModes) 
     return s;
 }
 
+SceneSpec periodicChannelScene(int nx, std::array<bool, 3> periodic) {
+    SceneSpec s = gridScene({nx, nx / 2, 1}, {0.0, 0.0, 0.0}, {2.0, 1.0, 0.0}, 2);
+    s.grid.periodic = periodic;
+    s.domain = {box({-1.0, -1.0, 0.0}, {3.0, 2.0, 0.0}),
+                ball({1.0, 0.5, 0.0}, 0.2, CsgOp::Subtract)};
+    return s;
+}
+
 ShapeSpec ball(const Vec3& centre, double radius, CsgOp op) {
     ShapeSpec s;
     s.kind = ShapeKind::Ball;

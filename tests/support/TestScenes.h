@@ -17,6 +17,11 @@ SceneSpec gridScene(std::array<int, 3> res, Vec3 lo, Vec3 hi, int dim);
 /// first `velocityModes` velocity modes.
 SceneSpec unitBallScene(int dim, int cells, int velocityModes = 10, int scalarModes = 10);
 
+/// A channel along x over [0, 2] × [0, 1] with `nx` × nx/2 cells around a disk of radius 0.2 at
+/// (1, 0.5), its grid periodic as `periodic` says (default: along x): the domain is a box reaching
+/// past the grid along x, so the walls are the grid's y bounds.
+SceneSpec periodicChannelScene(int nx, std::array<bool, 3> periodic = {true, false, false});
+
 ShapeSpec ball(const Vec3& centre, double radius, CsgOp op = CsgOp::Union);
 ShapeSpec box(const Vec3& min, const Vec3& max, CsgOp op = CsgOp::Union);
 ShapeSpec ellipsoid(const Vec3& centre, const Vec3& radii);

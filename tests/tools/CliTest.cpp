@@ -92,6 +92,7 @@ TEST_F(Cli, InspectJsonReportsTheContractKeys) {
     const auto j = nlohmann::json::parse(r.out);
     EXPECT_EQ(j["dim"], 2);
     EXPECT_EQ(j["resolution"], nlohmann::json({24, 24}));
+    EXPECT_EQ(j["periodic"], nlohmann::json({false, false}));
     EXPECT_EQ(j["velocity"]["count"], 8);
     EXPECT_EQ(j["velocity"]["eigenvalues"].size(), 8u);
     EXPECT_EQ(j["velocity"]["harmonic"], 0);
@@ -109,6 +110,31 @@ TEST_F(Cli, InspectJsonReportsTheContractKeys) {
     const RunResult direct = run("inspect " + j["cache"]["path"].get<std::string>() + " --json");
     ASSERT_EQ(direct.status, 0) << direct.err;
     EXPECT_EQ(nlohmann::json::parse(direct.out)["velocity"]["eigenvalues"], ev);
+}
+
+TEST_F(Cli, InspectSaysWhichAxesArePeriodic) {
+    // A channel periodic along x: one harmonic field, the uniform flow along it.
+    const fs::path s = scene("channel.toml", R"(
+[grid]
+resolution = [16, 8]
+bounds_min = [0.0, 0.0]
+bounds_max = [2.0, 1.0]
+periodic = [true, false]
+[basis]
+velocity_modes = 6
+scalar_modes = 2
+)");
+    const RunResult json =
+        run("inspect " + s.string() + " --cache-dir " + mCache.string() + " --json");
+    ASSERT_EQ(json.status, 0) << json.err;
+    const auto j = nlohmann::json::parse(json.out);
+    EXPECT_EQ(j["periodic"], nlohmann::json({true, false}));
+    EXPECT_EQ(j["velocity"]["harmonic"], 1);
+    EXPECT_EQ(j["dofs"]["faces"], 16 * 8 + 16 * 7)
+        << "every x-face (16 a row, the seam's once), y-faces off the walls";
+    const RunResult text = run("inspect " + s.string() + " --cache-dir " + mCache.string());
+    ASSERT_EQ(text.status, 0) << text.err;
+    EXPECT_NE(text.out.find("grid       2D [16,8], periodic x, "), std::string::npos) << text.out;
 }
 
 TEST_F(Cli, HelpDescribesEverySubcommand) {
@@ -219,6 +245,101 @@ TEST_F(Cli, DamagedCachesAreRefusedAndRebuilt) {
     r = run("inspect " + (mDir / "x.mfbasis").string());
     EXPECT_NE(r.status, 0);
     EXPECT_NE(r.err.find("not a modeflow basis cache"), std::string::npos) << r.err;
+}
+
+TEST_F(Cli, InspectTellsCachesFromScenesByTheirContents) {
+    const auto inspect = [&](const fs::path& file) {
+        return run("inspect " + file.string() + " --cache-dir " + mCache.string() + " --json");
+    };
+    const RunResult upper = inspect(scene("disk.TOML", kSmallDisk));
+    ASSERT_EQ(upper.status, 0) << upper.err;
+    const auto expected = nlohmann::json::parse(upper.out);
+    const RunResult text = inspect(scene("disk.txt", kSmallDisk));
+    ASSERT_EQ(text.status, 0) << text.err;
+    EXPECT_EQ(nlohmann::json::parse(text.out)["velocity"]["eigenvalues"],
+              expected["velocity"]["eigenvalues"]);
+
+    const fs::path renamed = mDir / "renamed.toml";
+    fs::copy_file(expected["cache"]["path"].get<std::string>(), renamed);
+    const RunResult cache = inspect(renamed);
+    ASSERT_EQ(cache.status, 0) << cache.err;
+    EXPECT_EQ(nlohmann::json::parse(cache.out)["velocity"]["eigenvalues"],
+              expected["velocity"]["eigenvalues"]);
+
+    std::ofstream(mDir / "picture.toml", std::ios::binary)
+        << std::string("\x89PNG\r\n\x1a\n\0\0\0\rIHDR", 16);
+    const RunResult neither = inspect(mDir / "picture.toml");
+    EXPECT_EQ(neither.status, 1);
+    EXPECT_NE(neither.err.find("picture.toml is neither a modeflow basis cache"), std::string::npos)
+        << neither.err;
+}
+
+TEST_F(Cli, InspectRefusesFoldersAndDevicesByName) {
+    fs::create_directories(mDir / "folder.mfbasis");
+    for (const fs::path& target : {mDir / "folder.mfbasis", fs::path("/dev/zero")}) {
+        const RunResult r = run("inspect " + target.string());
+        EXPECT_EQ(r.status, 1) << "an internal error exits 2: " << r.err;
+        EXPECT_NE(r.err.find("modeflow: error: " + target.string() + ": is a "), std::string::npos)
+            << r.err;
+        EXPECT_NE(r.err.find(", not a cache or scene file"), std::string::npos) << r.err;
+    }
+    // A folder where the cache belongs is reported and replaced by a fresh cache... or refused
+    // clearly when it cannot be.
+    const fs::path s = scene("disk.toml", kSmallDisk);
+    const RunResult first = run(precompute(s));
+    ASSERT_EQ(first.status, 0) << first.err;
+    const fs::path cache = first.out.substr(0, first.out.find('\n'));
+    fs::remove(cache);
+    fs::create_directories(cache / "inside");
+    const RunResult again = run(precompute(s));
+    EXPECT_EQ(again.status, 1) << again.err;
+    EXPECT_NE(again.err.find(cache.string() + ": is a directory, not a cache file; rebuilding"),
+              std::string::npos)
+        << again.err;
+    EXPECT_NE(again.err.find("modeflow: error: cannot write cache file " + cache.string() +
+                             ": cannot rename"),
+              std::string::npos)
+        << again.err;
+}
+
+TEST_F(Cli, NumericOptionsRefuseNonsenseNamingTheOption) {
+    const fs::path s = scene("disk.toml", kSmallDisk);
+    const std::string cache = " --cache-dir " + mCache.string();
+    const struct {
+        std::string args, message;
+    } cases[] = {
+        {"stir " + s.string() + " --force nan",
+         "--force: must be a finite number of at least 0, got \"nan\""},
+        {"stir " + s.string() + " --force -1",
+         "--force: must be a finite number of at least 0, got \"-1\""},
+        {"stir " + s.string() + " --frames 0",
+         "--frames: must be a whole number from 1 to 1000000, got \"0\""},
+        {"stir " + s.string() + " --width 1e9",
+         "--width: must be a whole number from 1 to 16384, got \"1e9\""},
+        {"stir " + s.string() + " --height 0", "--height: must be a whole number from 1 to 16384"},
+        {"modes " + s.string() + " --dt nan",
+         "--dt: must be a finite number greater than 0, got \"nan\""},
+        {"modes " + s.string() + " --dt inf",
+         "--dt: must be a finite number greater than 0, got \"inf\""},
+        {"modes " + s.string() + " --dt 0",
+         "--dt: must be a finite number greater than 0, got \"0\""},
+        {"modes " + s.string() + " --steps 2.5",
+         "--steps: must be a whole number from 1 to 1000000000"},
+        {"run " + s.string() + " --frames 0",
+         "--frames: must be a whole number from 1 to 1000000, got \"0\""},
+        {"run " + s.string() + " --frames 99999999999",
+         "--frames: must be a whole number from 1 to 1000000"},
+        {"run " + s.string() + " --preview-every -3",
+         "--preview-every: must be a whole number from 1 to 1000000"},
+    };
+    for (const auto& c : cases) {
+        const RunResult r = run(c.args + cache);
+        EXPECT_NE(r.status, 0) << c.args;
+        EXPECT_NE(r.err.find(c.message), std::string::npos) << c.args << "\nstderr: " << r.err;
+        EXPECT_LT(r.err.size(), 300u) << c.args << "\nstderr: " << r.err;
+        EXPECT_FALSE(fs::exists(mCache))
+            << c.args << ": work started before the option was checked";
+    }
 }
 
 TEST_F(Cli, ModesRunsTheReducedDynamicsAsCsv) {

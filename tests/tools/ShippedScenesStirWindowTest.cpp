@@ -10,13 +10,7 @@
 #include <string>
 #include <vector>
 
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wmissing-field-initializers"
-#pragma GCC diagnostic ignored "-Wunused-function"
-#define STB_IMAGE_IMPLEMENTATION
-#include <stb/stb_image.h>
-#pragma GCC diagnostic pop
-
+#include "tests/support/PngFile.h"
 #include "tests/support/CliFixture.h"
 #include "tests/support/ShippedScenes.h"
 
@@ -60,11 +54,9 @@ TEST_P(ShippedStirScene, StirsAFewFrames) {
         const RunResult r = run(args);
         ASSERT_EQ(r.status, 0) << "stir --device " << v.option << ": " << r.err;
         EXPECT_NE(r.err.find(std::to_string(kFrames) + " frames ("), std::string::npos) << r.err;
-        int width = 0, height = 0, channels = 0;
-        unsigned char* pixels = stbi_load(shot.string().c_str(), &width, &height, &channels, 3);
-        ASSERT_NE(pixels, nullptr) << "no screenshot at " << shot;
-        stbi_image_free(pixels);
-        EXPECT_GT(width * height, 0);
+        const std::optional<PngPixels> png = readPng(shot);
+        ASSERT_TRUE(png) << "no screenshot at " << shot;
+        EXPECT_GT(png->width * png->height, 0);
     }
     EXPECT_GT(backends, 0) << "no backend stirs " << GetParam();
 }

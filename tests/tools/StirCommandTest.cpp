@@ -29,7 +29,7 @@ TEST_F(StirCommand, BadScriptsAreRefusedBeforeAnyWork) {
                    "drag.txt:2: unknown event \"wiggle\"");
     expectRejected("stir " + s.string() + " --script " + (mDir / "missing.txt").string() +
                        " --cache-dir " + mCache.string(),
-                   "cannot read the input script");
+                   (mDir / "missing.txt").string() + ": no such input script");
     expectRejected("stir " + s.string() + " --device gpu --cache-dir " + mCache.string(),
                    "--device gpu");
     const fs::path mhd = scene("mhd.toml", std::string(kSmallDisk) + "[simulation]\nmhd = true\n");

@@ -5,13 +5,7 @@
 #include <cstdlib>
 #include <string>
 
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wmissing-field-initializers"
-#pragma GCC diagnostic ignored "-Wunused-function"
-#define STB_IMAGE_IMPLEMENTATION
-#include <stb/stb_image.h>
-#pragma GCC diagnostic pop
-
+#include "tests/support/PngFile.h"
 #include "tests/support/CliFixture.h"
 
 namespace modeflow::testing {
@@ -62,15 +56,13 @@ protected:
                                 shot.string() + " --cache-dir " + mCache.string());
         ASSERT_EQ(r.status, 0) << r.err;
         EXPECT_NE(r.err.find("30 frames (320x240)"), std::string::npos) << r.err;
-        int width = 0, height = 0, channels = 0;
-        unsigned char* pixels = stbi_load(shot.string().c_str(), &width, &height, &channels, 3);
-        ASSERT_NE(pixels, nullptr) << "no screenshot at " << shot;
+        const std::optional<PngPixels> png = readPng(shot);
+        ASSERT_TRUE(png) << "no screenshot at " << shot;
         int bright = 0;
-        for (int p = 0; p < width * height; ++p)
-            bright += pixels[3 * p] + pixels[3 * p + 1] + pixels[3 * p + 2] > 3 * 128;
-        stbi_image_free(pixels);
-        EXPECT_EQ(width, 320);
-        EXPECT_EQ(height, 240);
+        for (std::size_t p = 0; p < png->rgba.size(); p += 4)
+            bright += png->rgba[p] + png->rgba[p + 1] + png->rgba[p + 2] > 3 * 128;
+        EXPECT_EQ(png->width, 320);
+        EXPECT_EQ(png->height, 240);
         EXPECT_GT(bright, 50) << "bright (smoke) pixels in the screenshot";
     }
 };

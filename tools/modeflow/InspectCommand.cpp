@@ -1,8 +1,11 @@
+#include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <limits>
 
 #include <nlohmann/json.hpp>
 
+#include "engine/core/InputFile.h"
 #include "engine/format/CacheFile.h"
 #include "precompute/BasisChecks.h"
 #include "precompute/Precompute.h"
@@ -22,6 +25,7 @@ nlohmann::ordered_json summarize(const BasisCache& c, const std::filesystem::pat
     j["resolution"] = std::vector<int>(c.grid.resolution.begin(), c.grid.resolution.begin() + n);
     j["bounds_min"] = std::vector<double>(c.grid.boundsMin.begin(), c.grid.boundsMin.begin() + n);
     j["bounds_max"] = std::vector<double>(c.grid.boundsMax.begin(), c.grid.boundsMax.begin() + n);
+    j["periodic"] = std::vector<bool>(c.grid.periodic.begin(), c.grid.periodic.begin() + n);
     j["wall"] = sceneKeyword(c.wall);
     j["boundary"] = sceneKeyword(c.boundary);
     j["dofs"] = {{"faces", c.faces.size()}, {"cells", c.cells.size()}};
@@ -55,9 +59,44 @@ nlohmann::ordered_json summarize(const BasisCache& c, const std::filesystem::pat
     return j;
 }
 
+/// ", periodic x, z" for the periodic axes; nothing when every axis has walls.
+std::string periodicAxes(const nlohmann::ordered_json& flags) {
+    std::string axes;
+    for (std::size_t a = 0; a < flags.size(); ++a)
+        if (flags[a].get<bool>())
+            axes += std::string(axes.empty() ? ", periodic " : ", ") + "xyz"[a];
+    return axes;
+}
+
+/// Whether `bytes` read as text: no control characters but tab and line ends (a TOML scene has
+/// none; a picture, an archive or a cache has many).
+bool isText(std::string_view bytes) {
+    for (const unsigned char c : bytes)
+        if ((c < 0x20 && c != '\t' && c != '\n' && c != '\r') || c == 0x7f) return false;
+    return true;
+}
+
+/// Whether `path` is a cache or a scene, told by its first bytes rather than its name, so that
+/// "scene.TOML", "scene.txt" and a cache renamed "x.toml" all work.
+/// @throw Error for a folder, a device or a file that is neither.
+bool isCache(const std::filesystem::path& path) {
+    inputFileSize(path, "cache or scene file", std::numeric_limits<std::uintmax_t>::max());
+    std::ifstream in(path, std::ios::binary);
+    std::string start(4096, '\0');
+    in.read(start.data(), std::streamsize(start.size()));
+    start.resize(std::size_t(in.gcount()));
+    // A .mfbasis file is meant as a cache: readCache says what is wrong with it.
+    if (hasCacheMagic(start) || path.extension() == ".mfbasis") return true;
+    if (isText(start)) return false;
+    throw Error(path.string() +
+                " is neither a modeflow basis cache (it lacks the cache's magic) nor a scene "
+                "file (TOML text)");
+}
+
 void printText(const nlohmann::ordered_json& j) {
-    std::cout << "grid       " << j["dim"] << "D " << j["resolution"].dump() << ", "
-              << j["boundary"].get<std::string>() << ", " << j["wall"].get<std::string>() << "\n"
+    std::cout << "grid       " << j["dim"] << "D " << j["resolution"].dump()
+              << periodicAxes(j["periodic"]) << ", " << j["boundary"].get<std::string>() << ", "
+              << j["wall"].get<std::string>() << "\n"
               << "dofs       " << j["dofs"]["faces"] << " faces, " << j["dofs"]["cells"]
               << " cells\n";
     auto list = [](const nlohmann::ordered_json& values) {
@@ -103,14 +142,15 @@ Command addInspect(CLI::App& app) {
     auto opts = std::make_shared<Options>();
     CLI::App* sub = app.add_subcommand(
         "inspect", "Summarize a cache file, or a scene's cache (precomputed on a miss)");
-    sub->add_option("CACHE_OR_SCENE", opts->target, "a .mfbasis cache file or a .toml scene")
+    sub->add_option("CACHE_OR_SCENE", opts->target,
+                    "a cache file or a scene file (told apart by their contents)")
         ->required();
     sub->add_option("--cache-dir", opts->cacheDir, "cache folder used for a scene");
     sub->add_flag("--json", opts->json, "print one JSON object (keys in the README)");
     return [sub, opts]() {
         if (!*sub) return -1;
         std::filesystem::path path = opts->target;
-        if (path.extension() == ".toml") {
+        if (!isCache(path)) {
             const SceneSpec scene = loadScene(path);
             Progress progress = Progress::toStderr();
             path = ensureCache(scene, resolveCacheDir(opts->cacheDir), false, progress).path;

@@ -15,6 +15,7 @@
 #include "engine/pipeline/RunInputs.h"
 #include "precompute/scene/SceneLoader.h"
 #include "tools/modeflow/Commands.h"
+#include "tools/modeflow/NumberOptions.h"
 
 namespace modeflow::cli {
 Command addModes(CLI::App& app) {
@@ -32,9 +33,9 @@ Command addModes(CLI::App& app) {
         "modes", "Run the reduced dynamics alone (no grid) and print energy per step");
     sub->add_option("SCENE", opts->scene, "scene file (TOML)")->required();
     sub->add_option("--steps", opts->steps, "number of steps (default: frames × steps_per_frame)")
-        ->check(CLI::PositiveNumber);
+        ->check(countUpTo(kMaxSteps));
     sub->add_option("--dt", opts->dt, "time step (default: [simulation].dt)")
-        ->check(CLI::PositiveNumber);
+        ->check(finitePositive());
     sub->add_option("--integrator", opts->integrator,
                     "explicit | rk4 | midpoint | trapezoidal (default: [simulation].integrator)");
     sub->add_option("--device", opts->device, kDeviceOptionHelp);

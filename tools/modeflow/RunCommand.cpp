@@ -20,6 +20,7 @@
 #include "tools/modeflow/Commands.h"
 #include "tools/modeflow/FramePreview.h"
 #include "tools/modeflow/FrameProgress.h"
+#include "tools/modeflow/NumberOptions.h"
 #include "engine/pipeline/Backend.h"
 #include "engine/pipeline/RunInputs.h"
 #include "engine/pipeline/RunMemory.h"
@@ -56,7 +57,8 @@ Command addRun(CLI::App& app) {
     auto opts = std::make_shared<Options>();
     CLI::App* sub = app.add_subcommand("run", "Simulate a scene and write one OpenVDB file per frame");
     sub->add_option("SCENE", opts->scene, "scene file (TOML)")->required();
-    sub->add_option("--frames", opts->frames, "frames to write (default: [output].frames)")->check(CLI::PositiveNumber);
+    sub->add_option("--frames", opts->frames, "frames to write (default: [output].frames)")
+        ->check(countUpTo(kMaxFrames));
     sub->add_option("--out", opts->out, "output folder (default: NAME_frames beside the current folder)");
     sub->add_option("--device", opts->device, kDeviceOptionHelp);
     sub->add_flag("--resume", opts->resume, "continue an interrupted run from its last complete frame");
@@ -65,7 +67,7 @@ Command addRun(CLI::App& app) {
                   "also write PNG pictures (NAME_0001.png; 3D scenes ray-marched) and a contact sheet");
     sub->add_option("--preview-every", opts->previewEvery,
                     "picture every K frames (default: about 24 pictures per run); implies --preview")
-        ->check(CLI::PositiveNumber);
+        ->check(countUpTo(kMaxFrames));
     sub->add_option("--cache-dir", opts->cacheDir, "cache folder");
     return [sub, opts]() {
         if (!*sub) return -1;

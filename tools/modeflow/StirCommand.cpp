@@ -6,6 +6,7 @@
 #include "engine/stir/StirApp.h"
 #include "precompute/scene/SceneLoader.h"
 #include "tools/modeflow/Commands.h"
+#include "tools/modeflow/NumberOptions.h"
 
 namespace modeflow::cli {
 
@@ -27,16 +28,17 @@ Command addStir(CLI::App& app) {
     sub->add_option("--frames", opts->frames,
                     "close after N frames; the clock is then the scene's frame clock "
                     "(steps_per_frame steps a frame), not the wall clock")
-        ->check(CLI::PositiveNumber);
+        ->check(countUpTo(kMaxFrames));
     sub->add_option("--screenshot", opts->screenshot, "write the last frame to this PNG file");
     sub->add_option("--script", opts->script, "replay timed mouse and key events from FILE");
-    sub->add_option("--width", opts->width,
-                    "window width in screen units (default 1280, or 960 on a CPU device such as lavapipe)")
-        ->check(CLI::PositiveNumber);
+    sub->add_option(
+           "--width", opts->width,
+           "window width in screen units (default 1280, or 960 on a CPU device such as lavapipe)")
+        ->check(countUpTo(display::kMaxWindowSide));
     sub->add_option("--height", opts->height, "window height (default 720, or 540 on a CPU device)")
-        ->check(CLI::PositiveNumber);
+        ->check(countUpTo(display::kMaxWindowSide));
     sub->add_option("--force", opts->force, "stirring acceleration per unit pointer speed (1/s)")
-        ->check(CLI::NonNegativeNumber);
+        ->check(finiteNonNegative());
     sub->add_option("--device", opts->device,
                     std::string(kDeviceOptionHelp) +
                         "; the window shows on the chosen Vulkan device, or with cpu on the first "

@@ -1,0 +1,114 @@
+#include "engine/format/CacheConsistency.h"
+
+#include <cmath>
+#include <cstdint>
+
+#include "engine/core/Error.h"
+#include "engine/core/MacGrid.h"
+#include "engine/core/PackedLayout.h"
+
+namespace modeflow {
+namespace {
+
+bool known(WallKind wall) {
+    switch (wall) {
+        case WallKind::FreeSlip:
+        case WallKind::NoSlip:
+            return true;
+    }
+    return false;
+}
+bool known(BoundaryTreatment boundary) {
+    switch (boundary) {
+        case BoundaryTreatment::CutCell:
+        case BoundaryTreatment::Staircase:
+            return true;
+    }
+    return false;
+}
+bool known(ScalarBoundary boundary) {
+    switch (boundary) {
+        case ScalarBoundary::Neumann:
+        case ScalarBoundary::Dirichlet:
+            return true;
+    }
+    return false;
+}
+bool known(BasisCache::Coefficients::Storage storage) {
+    switch (storage) {
+        case BasisCache::Coefficients::Storage::Dense:
+        case BasisCache::Coefficients::Storage::Sparse:
+            return true;
+    }
+    return false;
+}
+
+template <typename Index>
+bool allBelow(const std::vector<Index>& indices, std::int64_t end) {
+    for (const Index i : indices)
+        if (i < 0 || std::int64_t(i) >= end) return false;
+    return true;
+}
+
+/// The grid's cell count, or -1 when its resolution is not 2D or 3D with at most `cellLimit` cells.
+std::int64_t cellCount(const GridSpec& grid, std::size_t cellLimit) {
+    if (grid.dim != 2 && grid.dim != 3) return -1;
+    if (grid.dim == 2 && grid.resolution[2] != 1) return -1;
+    std::int64_t cells = 1;
+    for (const int n : grid.resolution) {
+        if (n < 1 || std::uint64_t(n) > cellLimit) return -1;
+        cells *= n;
+        if (std::uint64_t(cells) > cellLimit) return -1;
+    }
+    return cells;
+}
+
+}  // namespace
+
+void requireConsistentCache(const BasisCache& c, const std::string& where) {
+    const auto require = [&where](bool holds, const char* what) {
+        if (!holds) throw Error(where + " is corrupt (" + what + ")");
+    };
+    const std::int64_t cells = cellCount(c.grid, c.cellFraction.size());
+    require(cells >= 0 && std::size_t(cells) == c.cellFraction.size(),
+            "its grid is not a 2D or 3D grid with one fraction per cell");
+    for (int axis = 0; axis < c.grid.dim; ++axis)
+        require(std::isfinite(c.grid.boundsMin[axis]) && std::isfinite(c.grid.boundsMax[axis]) &&
+                    c.grid.boundsMin[axis] < c.grid.boundsMax[axis],
+                "its grid bounds are not an increasing pair of numbers on every axis");
+    require(known(c.wall) && known(c.boundary) && known(c.scalar.boundary) &&
+                known(c.coefficients.storage),
+            "a choice (wall, boundary or coefficient storage) is out of range");
+
+    const auto& v = c.velocity;
+    const Eigen::Index n = v.modes.cols();
+    require(Eigen::Index(c.faces.size()) == v.modes.rows() && c.faceStar.size() == v.modes.rows() &&
+                allBelow(c.faces, MacGrid::fromSpec(c.grid).faceTotal()),
+            "its face degrees of freedom disagree with the grid or the velocity modes");
+    require(Eigen::Index(c.cells.size()) == c.cellStar.size() && allBelow(c.cells, cells),
+            "its cell degrees of freedom disagree with the grid");
+    require(v.eigenvalues.size() == n && Eigen::Index(v.modeNumbers.size()) == n &&
+                v.harmonic >= 0 && v.harmonic <= n,
+            "its velocity eigenvalues, mode numbers or harmonic count disagree with its modes");
+
+    const auto& s = c.scalar;
+    require(Eigen::Index(s.cells.size()) == s.modes.rows() && s.cellStar.size() == s.modes.rows() &&
+                s.eigenvalues.size() == s.modes.cols() && allBelow(s.cells, cells) &&
+                s.omittedConstants >= 0,
+            "its scalar modes disagree with their cells or eigenvalues");
+
+    const auto& co = c.coefficients;
+    if (co.storage == BasisCache::Coefficients::Storage::Dense) {
+        require(co.packed.size() == packedSize(std::size_t(n)) && co.value.empty() && co.k.empty(),
+                "its dense coefficients do not hold N²(N−1)/2 values for its N velocity modes");
+    } else {
+        bool ordered = co.k.size() == co.value.size() && co.i.size() == co.value.size() &&
+                       co.j.size() == co.value.size() && co.packed.empty();
+        for (std::size_t e = 0; ordered && e < co.value.size(); ++e)
+            ordered =
+                co.k[e] >= 0 && co.k[e] < co.j[e] && co.j[e] < n && co.i[e] >= 0 && co.i[e] < n;
+        require(ordered, "its sparse coefficients are not entries k < j of its velocity modes");
+    }
+}
+
+}  // namespace modeflow

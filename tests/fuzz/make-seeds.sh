@@ -1,0 +1,63 @@
+#!/usr/bin/env bash
+# Regenerates the binary seeds of the cache and checkpoint fuzz targets (tests/fuzz/corpus/
+# CacheReader, CheckpointReader) with a built modeflow: tiny bases and one-frame runs, a few KiB
+# each. Run it after a change of either format, e.g. `tests/fuzz/make-seeds.sh build/tools/modeflow/modeflow`.
+set -euo pipefail
+modeflow=$(realpath "${1:?usage: make-seeds.sh path/to/modeflow}")
+here=$(cd "$(dirname "$0")" && pwd)
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+
+scene() {  # name, grid lines, extra sections
+    printf '%s\n[basis]\nvelocity_modes = %s\nscalar_modes = 1\n%s\n[output]\nframes = 1\nsteps_per_frame = 1\n' \
+        "$2" "$3" "$4" >"$work/$1.toml"
+}
+disk='[grid]
+resolution = [6, 6]
+bounds_min = [-1.1, -1.1]
+bounds_max = [1.1, 1.1]
+[[domain]]
+shape = "ball"
+center = [0.0, 0.0]
+radius = 1.0'
+box='[grid]
+resolution = [3, 3, 3]
+bounds_min = [-1.0, -1.0, -1.0]
+bounds_max = [1.0, 1.0, 1.0]
+[[domain]]
+shape = "box"
+min = [-0.9, -0.9, -0.9]
+max = [0.9, 0.9, 0.9]'
+smoke='[[source]]
+shape = "ball"
+center = [0.0, -0.5]
+radius = 0.3
+density = 1.0
+temperature = 1.0
+[smoke]
+buoyancy = 1.0'
+scene disk "$disk" 3 "$smoke"
+scene disk_mhd "$disk" 3 '[simulation]
+mhd = true
+[initial]
+velocity = "random"
+magnetic_energy = 0.5'
+scene box "$box" 4 ""
+
+caches="$here/corpus/CacheReader" checkpoints="$here/corpus/CheckpointReader"
+mkdir -p "$caches" "$checkpoints"
+for name in disk box; do
+    cache=$("$modeflow" precompute "$work/$name.toml" --cache-dir "$work/cache" 2>/dev/null | tail -n 1)
+    cp "$cache" "$caches/$name.mfbasis"
+    # The payload alone: the target wraps inputs without the magic in a valid header and checksum.
+    size=$(stat -c %s "$cache")
+    tail -c +41 "$cache" | head -c $((size - 48)) >"$caches/$name.payload"
+done
+for name in disk disk_mhd; do
+    "$modeflow" run "$work/$name.toml" --device cpu --cache-dir "$work/cache" --out "$work/$name" >/dev/null 2>&1
+    cp "$work/$name/$name.resume" "$checkpoints/$name.resume"
+    # The body after magic and version, without the checksum (wrapped again by the target).
+    size=$(stat -c %s "$work/$name/$name.resume")
+    tail -c +21 "$work/$name/$name.resume" | head -c $((size - 28)) >"$checkpoints/$name.body"
+done
+ls -l "$caches" "$checkpoints"
