@@ -38,11 +38,12 @@ Eigen::VectorXd FluidSystem::massOf(const FluidParameters& parameters, int n) {
 
 Eigen::VectorXd FluidSystem::decayRatesOf(const FluidParameters& parameters, int n) {
     const auto k2 = kappaSquaredUsed(parameters, n);
-    Eigen::VectorXd rates = k2 ? Eigen::VectorXd(parameters.viscosity * *k2) : Eigen::VectorXd::Zero(n);
+    Eigen::VectorXd rates =
+        k2 ? Eigen::VectorXd(parameters.viscosity * *k2) : Eigen::VectorXd::Zero(n);
     for (const int k : parameters.held) {
         if (k < 0 || k >= n)
-            throw Error("fluid dynamics: held mode " + std::to_string(k + 1) + " is outside the basis of " +
-                        std::to_string(n) + " modes");
+            throw Error("fluid dynamics: held mode " + std::to_string(k + 1) +
+                        " is outside the basis of " + std::to_string(n) + " modes");
         rates[k] = 0.0;
     }
     return rates;

@@ -23,7 +23,8 @@ void requireSupport(const SceneSpec& scene, BackendKind kind, std::optional<Inte
     if (scene.simulation.mhd && !backend.mhd)
         throw Error(file + ": [simulation].mhd runs on the CPU reference only; use --device cpu");
     if (scene.forcing.holds() && !backend.forcing)
-        throw Error(file + ": [forcing] (held modes) runs on the CPU reference only; use --device cpu");
+        throw Error(file +
+                    ": [forcing] (held modes) runs on the CPU reference only; use --device cpu");
     if (!backend.trapezoidal) {
         const std::string where = integrator ? std::string(integratorOption) + " trapezoidal"
                                              : file + ": [simulation].integrator = \"trapezoidal\"";

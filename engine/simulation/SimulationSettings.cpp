@@ -18,7 +18,8 @@ SimulationSettings SimulationSettings::fromScene(const SceneSpec& scene, const B
     settings.dt = sim.dt;
     settings.stepsPerFrame = scene.output.stepsPerFrame;
     settings.integrator = sim.integrator;
-    settings.fluid = {cache.velocity.eigenvalues, sim.viscosity, sim.alpha, heldModes(scene, cache)};
+    settings.fluid = {cache.velocity.eigenvalues, sim.viscosity, sim.alpha,
+                      heldModes(scene, cache)};
     settings.mhd = sim.mhd;
     settings.magneticDiffusivity = sim.magneticDiffusivity;
     settings.buoyancy = scene.smoke.buoyancy;
@@ -53,10 +54,13 @@ std::vector<int> heldModes(const SceneSpec& scene, const BasisCache& cache) {
     }
     const std::string file = scene.sourceFile.empty() ? scene.name : scene.sourceFile.string();
     if (held.empty())
-        throw Error(file + ": " + key + " holds none of the basis's " + std::to_string(n) +
-                    " modes (the lowest has κ = " + std::to_string(std::sqrt(std::max(0.0, cache.velocity.eigenvalues.minCoeff()))) + ")");
+        throw Error(
+            file + ": " + key + " holds none of the basis's " + std::to_string(n) +
+            " modes (the lowest has κ = " +
+            std::to_string(std::sqrt(std::max(0.0, cache.velocity.eigenvalues.minCoeff()))) + ")");
     if (int(held.size()) == n)
-        throw Error(file + ": " + key + " holds all " + std::to_string(n) + " modes of the basis: nothing would move");
+        throw Error(file + ": " + key + " holds all " + std::to_string(n) +
+                    " modes of the basis: nothing would move");
     return held;
 }
 

@@ -14,13 +14,16 @@ ForcingSpec readForcing(const TomlReader& reader, const Section& s) {
     const toml::node* modes = s.table.get("hold_modes");
     const toml::node* kappa = s.table.get("hold_below_kappa");
     if (modes != nullptr && kappa != nullptr)
-        reader.fail(s, "hold_below_kappa", "give either hold_modes or hold_below_kappa, not both", kappa);
+        reader.fail(s, "hold_below_kappa", "give either hold_modes or hold_below_kappa, not both",
+                    kappa);
     if (modes == nullptr && kappa == nullptr)
-        reader.fail(s.name, "missing hold_modes (e.g. \"1-5\") or hold_below_kappa (e.g. 2.0)", &s.table);
+        reader.fail(s.name, "missing hold_modes (e.g. \"1-5\") or hold_below_kappa (e.g. 2.0)",
+                    &s.table);
     if (modes != nullptr) {
         const std::string text = *reader.string(s, "hold_modes");
         if (auto problem = parseModeList(text, forcing.holdModes))
-            reader.fail(s, "hold_modes", "bad mode list \"" + printableText(text) + "\": " + *problem, modes);
+            reader.fail(s, "hold_modes",
+                        "bad mode list \"" + printableText(text) + "\": " + *problem, modes);
     } else {
         forcing.holdBelowKappa = reader.readNumber(s, "hold_below_kappa", 0.0, Sign::Positive);
     }

@@ -18,7 +18,8 @@ using keywords::keywordOf;
 using namespace keywords;
 
 inline constexpr std::string_view kTopLevelTables[] = {
-    "grid", "domain", "basis", "simulation", "initial", "source", "obstacle", "smoke", "forcing", "output"};
+    "grid",   "domain",   "basis", "simulation", "initial",
+    "source", "obstacle", "smoke", "forcing",    "output"};
 inline constexpr std::string_view kGridKeys[] = {"resolution", "bounds_min", "bounds_max", "periodic"};
 inline constexpr std::string_view kBasisKeys[] = {
     "velocity_modes", "modes", "scalar_modes", "scalar_boundary", "wall", "boundary", "subsamples"};

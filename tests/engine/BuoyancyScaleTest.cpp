@@ -12,8 +12,8 @@
 #include <iostream>
 #include <vector>
 
-#include <Eigen/Dense>
 #include <gtest/gtest.h>
+#include <Eigen/Dense>
 
 #include "engine/device/Simulation.h"
 #include "engine/reference/Simulation.h"
@@ -29,11 +29,13 @@ constexpr double dt = 0.05;
 
 /// A box of non-cubic cells with every divergence-free mode of its grid (faces − cells + 1).
 SceneSpec completeBoxScene(int dim) {
-    SceneSpec scene = dim == 2 ? testing::gridScene({16, 12, 1}, {0.0, 0.0, 0.0}, {1.0, 0.6, 0.0}, 2)
-                               : testing::gridScene({6, 5, 4}, {0.0, 0.0, 0.0}, {0.9, 0.5, 0.8}, 3);
+    SceneSpec scene = dim == 2
+                          ? testing::gridScene({16, 12, 1}, {0.0, 0.0, 0.0}, {1.0, 0.6, 0.0}, 2)
+                          : testing::gridScene({6, 5, 4}, {0.0, 0.0, 0.0}, {0.9, 0.5, 0.8}, 3);
     const MacGrid grid = MacGrid::fromSpec(scene.grid);
     std::int64_t interiorFaces = 0;
-    for (int a = 0; a < dim; ++a) interiorFaces += grid.cellCount() / grid.cells[a] * (grid.cells[a] - 1);
+    for (int a = 0; a < dim; ++a)
+        interiorFaces += grid.cellCount() / grid.cells[a] * (grid.cells[a] - 1);
     scene.name = "complete";
     scene.basis.velocityModes = {{1, int(interiorFaces - grid.cellCount() + 1)}};
     scene.basis.scalarModes = 0;
@@ -56,7 +58,8 @@ std::vector<double> warmBlob(const MacGrid& grid) {
     for (int z = 0; z < grid.cells[2]; ++z)
         for (int y = 0; y < grid.cells[1]; ++y)
             for (int x = 0; x < grid.cells[0]; ++x) {
-                const Vec3 c{grid.cellCentre(0, x), grid.cellCentre(1, y), grid.dim == 3 ? grid.cellCentre(2, z) : 0.0};
+                const Vec3 c{grid.cellCentre(0, x), grid.cellCentre(1, y),
+                             grid.dim == 3 ? grid.cellCentre(2, z) : 0.0};
                 const Vec3 centre{0.3, 0.2, 0.25};
                 double r2 = 0.0;
                 for (int a = 0; a < grid.dim; ++a) r2 += (c[a] - centre[a]) * (c[a] - centre[a]);
@@ -77,8 +80,9 @@ std::vector<double> buoyancyDensity(const MacGrid& grid, const std::vector<doubl
                 if (p[up] == 0) continue;
                 std::array<int, 3> below = p;
                 --below[up];
-                const double mean = 0.5 * (t[std::size_t(grid.cellIndex(x, y, z))] +
-                                           t[std::size_t(grid.cellIndex(below[0], below[1], below[2]))]);
+                const double mean =
+                    0.5 * (t[std::size_t(grid.cellIndex(x, y, z))] +
+                           t[std::size_t(grid.cellIndex(below[0], below[1], below[2]))]);
                 g[std::size_t(grid.faceIndex(up, x, y, z))] = buoyancy * mean;
             }
     return g;
@@ -97,7 +101,8 @@ std::vector<double> pressureProjection(const MacGrid& grid, const std::vector<do
                     const Eigen::Index c = grid.cellIndex(x, y, z);
                     if (p[a] > 0) d(c, grid.faceIndex(a, x, y, z)) = -grid.faceArea(a);
                     if (p[a] + 1 < grid.cells[a])
-                        d(c, grid.faceIndex(a, x + (a == 0), y + (a == 1), z + (a == 2))) = grid.faceArea(a);
+                        d(c, grid.faceIndex(a, x + (a == 0), y + (a == 1), z + (a == 2))) =
+                            grid.faceArea(a);
                 }
     const Eigen::Map<const Eigen::VectorXd> gv(g.data(), Eigen::Index(g.size()));
     // D Dᵀ is singular along the constant pressure only; D g has no constant part.
@@ -149,8 +154,8 @@ TEST(BuoyancyScale, CompleteBasisStepIsThePressureProjectionOnTheCpuReference) {
         const RunInputs& run = completeBox(dim);
         reference::Simulation simulation(run.cache, *run.coefficients, run.settings, run.smokeMask);
         const Comparison c = stepFromRest(simulation, MacGrid::fromSpec(run.cache.grid));
-        std::cout << dim << "D, " << run.modeCount() << " modes: u / (dt P g) = " << c.ratio << ", max error "
-                  << c.error << "\n";
+        std::cout << dim << "D, " << run.modeCount() << " modes: u / (dt P g) = " << c.ratio
+                  << ", max error " << c.error << "\n";
         EXPECT_NEAR(c.ratio, 1.0, 1e-9) << dim << "D";
         EXPECT_LE(c.error, 1e-9) << dim << "D";
     }
@@ -162,9 +167,11 @@ TEST_P(BuoyancyScaleDevice, CompleteBasisStepIsThePressureProjectionOnTheDevice)
     for (const int dim : {2, 3}) {
         const RunInputs& run = completeBox(dim);
         {
-            device::Simulation simulation(context(), run.cache, *run.coefficients, run.settings, run.smokeMask);
+            device::Simulation simulation(context(), run.cache, *run.coefficients, run.settings,
+                                          run.smokeMask);
             const Comparison c = stepFromRest(simulation, MacGrid::fromSpec(run.cache.grid));
-            std::cout << dim << "D device: u / (dt P g) = " << c.ratio << ", max error " << c.error << "\n";
+            std::cout << dim << "D device: u / (dt P g) = " << c.ratio << ", max error " << c.error
+                      << "\n";
             EXPECT_NEAR(c.ratio, 1.0, 1e-5) << dim << "D";
             EXPECT_LE(c.error, 1e-5) << dim << "D";
         }
@@ -172,7 +179,8 @@ TEST_P(BuoyancyScaleDevice, CompleteBasisStepIsThePressureProjectionOnTheDevice)
     }
 }
 
-INSTANTIATE_TEST_SUITE_P(Validation, BuoyancyScaleDevice, ::testing::Values(false, true), testing::validationName);
+INSTANTIATE_TEST_SUITE_P(Validation, BuoyancyScaleDevice, ::testing::Values(false, true),
+                         testing::validationName);
 
 }  // namespace
 }  // namespace modeflow

@@ -64,7 +64,8 @@ TEST(HeldModes, KeepTheirAmplitudeUnderEverySchemeAndFeedTheOthers) {
     const FluidSystem free(c, {k2, 0.02, 0.0});
     Eigen::VectorXd v0 = Eigen::VectorXd::Zero(n);
     for (const int k : held) v0[k] = 1.0;  // all the energy in the held modes
-    for (Integrator scheme : {Integrator::Explicit, Integrator::Rk4, Integrator::Midpoint, Integrator::Trapezoidal}) {
+    for (Integrator scheme :
+         {Integrator::Explicit, Integrator::Rk4, Integrator::Midpoint, Integrator::Trapezoidal}) {
         ModalIntegrator integrator(forced, {scheme});
         ModalIntegrator unforced(free, {scheme});
         Eigen::VectorXd v = v0, w = v0;

@@ -241,17 +241,22 @@ TEST_F(RunCommand, WhatTheBackendCannotDoIsRefusedBeforeThePrecompute) {
                        mCache.string(),
                    "[simulation].integrator = \"trapezoidal\" runs on the CPU reference only");
     // So do held modes.
-    const fs::path forced = scene("forced.toml", std::string(kHotDisk) + "[forcing]\nhold_modes = \"1-2\"\n");
-    expectRejected("run " + forced.string() + " --out " + (mDir / "h").string() + " --cache-dir " + mCache.string(),
+    const fs::path forced =
+        scene("forced.toml", std::string(kHotDisk) + "[forcing]\nhold_modes = \"1-2\"\n");
+    expectRejected("run " + forced.string() + " --out " + (mDir / "h").string() + " --cache-dir " +
+                       mCache.string(),
                    "[forcing] (held modes) runs on the CPU reference only; use --device cpu");
 }
 
 TEST_F(RunCommand, HeldModesRunOnTheCpuReferenceAndWakeStillFluid) {
     // From rest, with two modes held at amplitude: they set the rest moving.
-    std::string text = std::string(testing::kSmallDisk) +
-                       "[simulation]\ndt = 0.02\n[initial]\nvelocity = \"modes\"\namplitudes = [[1, 0.5], [2, 0.5]]\n"
-                       "[forcing]\nhold_modes = \"1-2\"\n[output]\nframes = 2\nsteps_per_frame = 5\n";
-    const RunResult still = run("modes " + scene("still.toml", text).string() + " --csv --cache-dir " + mCache.string());
+    std::string text =
+        std::string(testing::kSmallDisk) +
+        "[simulation]\ndt = 0.02\n[initial]\nvelocity = \"modes\"\namplitudes = [[1, 0.5], [2, "
+        "0.5]]\n"
+        "[forcing]\nhold_modes = \"1-2\"\n[output]\nframes = 2\nsteps_per_frame = 5\n";
+    const RunResult still = run("modes " + scene("still.toml", text).string() +
+                                " --csv --cache-dir " + mCache.string());
     ASSERT_EQ(still.status, 0) << still.err;
     const RunResult r = run("run " + scene("forced.toml", text).string() + " --device cpu --out " +
                             (mDir / "f").string() + " --cache-dir " + mCache.string());

@@ -24,15 +24,18 @@ namespace fs = std::filesystem;
 using nlohmann::json;
 
 /// The data of study `key` in results.json.
-const json& study(const json& results, const std::string& key) { return results.at("studies").at(key).at("data"); }
+const json& study(const json& results, const std::string& key) {
+    return results.at("studies").at(key).at("data");
+}
 
 /// A progress line per study, every headline met, every figure inline in the report.
-void checkProgressAndReport(const json& results, const std::string& err,
-                                                            const std::string& html) {
-    for (const char* key :
-         {"convergence", "integrators", "mhd", "coefficients", "resolution", "speed", "reduced_vs_full", "lans_alpha"}) {
-        EXPECT_NE(err.find(std::string("] ") + key + ": "), std::string::npos) << key << "\n" << err;
-        EXPECT_NE(err.find(std::string("validate: ") + key + " done in "), std::string::npos) << key;
+void checkProgressAndReport(const json& results, const std::string& err, const std::string& html) {
+    for (const char* key : {"convergence", "integrators", "mhd", "coefficients", "resolution",
+                            "speed", "reduced_vs_full", "lans_alpha"}) {
+        EXPECT_NE(err.find(std::string("] ") + key + ": "), std::string::npos) << key << "\n"
+                                                                               << err;
+        EXPECT_NE(err.find(std::string("validate: ") + key + " done in "), std::string::npos)
+            << key;
         ASSERT_TRUE(results["studies"].contains(key)) << key;
         EXPECT_TRUE(results["studies"][key]["headline"]["met"].get<bool>()) << key;
         EXPECT_NE(html.find(std::string("id='") + key + "'"), std::string::npos) << key;
@@ -47,7 +50,8 @@ void checkProgressAndReport(const json& results, const std::string& err,
 void checkConvergence(const json& results) {
     for (const json& s : study(results, "convergence")["series"]) {
         const double order = s["order"];
-        const std::string what = s["domain"].get<std::string>() + " " + s["field"].get<std::string>() + " " +
+        const std::string what = s["domain"].get<std::string>() + " " +
+                                 s["field"].get<std::string>() + " " +
                                  s["boundary"].get<std::string>();
         if (s["boundary"] == "cut-cell") {
             EXPECT_GE(order, 1.8) << what;
@@ -58,9 +62,11 @@ void checkConvergence(const json& results) {
     for (const char* domain : {"disk", "ball"}) {
         json cut, stairs;
         for (const json& s : study(results, "convergence")["series"])
-            if (s["domain"] == domain && s["field"] == "velocity") (s["boundary"] == "cut-cell" ? cut : stairs) = s;
+            if (s["domain"] == domain && s["field"] == "velocity")
+                (s["boundary"] == "cut-cell" ? cut : stairs) = s;
         for (std::size_t i = 0; i < cut["max_relative_error"].size(); ++i)
-            EXPECT_GT(stairs["max_relative_error"][i].get<double>(), cut["max_relative_error"][i].get<double>())
+            EXPECT_GT(stairs["max_relative_error"][i].get<double>(),
+                      cut["max_relative_error"][i].get<double>())
                 << domain << " at " << cut["resolution"][i];
     }
 }
@@ -69,7 +75,8 @@ void checkConvergence(const json& results) {
 /// orders, the implicit rules run back to their start.
 void checkIntegrators(const json& results) {
     std::map<std::string, std::vector<double>> drift;
-    for (const json& s : study(results, "integrators")["series"]) drift[s["integrator"]].push_back(s["max_relative_drift"]);
+    for (const json& s : study(results, "integrators")["series"])
+        drift[s["integrator"]].push_back(s["max_relative_drift"]);
     for (const double d : drift["midpoint"]) EXPECT_LT(d, 1e-12);
     for (const double d : drift["explicit"]) EXPECT_GT(d, 1e-2) << "explicit Euler gains energy";
     // Steps halve: RK4's drift falls about 2⁴-fold, the trapezoidal rule's 2²-fold.
@@ -96,7 +103,8 @@ void checkMhd(const json& results) {
     // The wound-up field takes kinetic energy from the rotor; without a field none is lost.
     const double k0 = field["kinetic_energy"][0], kEnd = field["kinetic_energy"].back();
     EXPECT_LT(kEnd, 0.95 * k0);
-    EXPECT_NEAR(plain["kinetic_energy"].back().get<double>(), plain["kinetic_energy"][0].get<double>(),
+    EXPECT_NEAR(plain["kinetic_energy"].back().get<double>(),
+                plain["kinetic_energy"][0].get<double>(),
                 1e-10 * plain["kinetic_energy"][0].get<double>());
     EXPECT_EQ(field["pictures"].size(), 4u);
 }
@@ -112,14 +120,16 @@ void checkCoefficients(const json& results) {
         }
         for (const double e : run["relative_l2"]) EXPECT_LT(e, 1.0) << run["modes"];
     }
-    for (const json& a : study(results, "coefficients")["grid_antisymmetry"]) EXPECT_GT(a["antisymmetry_error"].get<double>(), 1e-3);
+    for (const json& a : study(results, "coefficients")["grid_antisymmetry"])
+        EXPECT_GT(a["antisymmetry_error"].get<double>(), 1e-3);
 }
 
 /// The smoke rises alike on every grid.
 void checkResolution(const json& results) {
     const json& runs = study(results, "resolution")["runs"];
     for (const json& run : runs) {
-        EXPECT_GT(run["centroid_y"].back().get<double>() - run["centroid_y"][0].get<double>(), 0.1) << run["resolution"];
+        EXPECT_GT(run["centroid_y"].back().get<double>() - run["centroid_y"][0].get<double>(), 0.1)
+            << run["resolution"];
         EXPECT_LT(run["max_centroid_distance_to_finest"].get<double>(), 0.05) << run["resolution"];
         EXPECT_LT(run["max_energy_difference_to_finest"].get<double>(), 0.1) << run["resolution"];
     }
@@ -151,11 +161,13 @@ void checkReducedVsFull(const json& results) {
 /// Held low modes drive both models; LANS-α's spectrum falls off more steeply at high κ.
 void checkLansAlpha(const json& results) {
     const json& lans = study(results, "lans_alpha");
-    const double ns = lans["navier_stokes"]["high_kappa_slope"], alpha = lans["lans_alpha"]["high_kappa_slope"];
+    const double ns = lans["navier_stokes"]["high_kappa_slope"],
+                 alpha = lans["lans_alpha"]["high_kappa_slope"];
     EXPECT_LT(alpha, ns - 0.5) << "LANS-α " << alpha << ", Navier–Stokes " << ns;
     for (const char* model : {"navier_stokes", "lans_alpha"}) {
         const json& energy = lans[model]["total_energy"];
-        EXPECT_GT(energy.back().get<double>(), 1.5 * energy[0].get<double>()) << model << ": no energy fed in";
+        EXPECT_GT(energy.back().get<double>(), 1.5 * energy[0].get<double>())
+            << model << ": no energy fed in";
     }
 }
 
@@ -163,7 +175,8 @@ class ValidateQuick : public Cli {};
 
 TEST_F(ValidateQuick, EveryStudyMeetsTheSeedsClaims) {
     const fs::path out = mDir / "out";
-    const RunResult r = run("validate --quick --out " + out.string() + " --cache-dir " + mCache.string());
+    const RunResult r =
+        run("validate --quick --out " + out.string() + " --cache-dir " + mCache.string());
     ASSERT_EQ(r.status, 0) << r.err;
     const json results = json::parse(testing::slurp(out / "results.json"));
     checkProgressAndReport(results, r.err, testing::slurp(out / "report.html"));

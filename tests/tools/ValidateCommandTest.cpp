@@ -22,17 +22,19 @@ protected:
     /// `modeflow validate --quick --out OUT ARGS` with MODEFLOW_PYTHON=python.
     RunResult validate(const std::string& python, const std::string& args = "") const {
         return runProgram("env MODEFLOW_PYTHON=" + python + " " + testing::cliPath(),
-                          "validate --quick --out " + (mDir / "out").string() + " --cache-dir " + mCache.string() +
-                              " " + args);
+                          "validate --quick --out " + (mDir / "out").string() + " --cache-dir " +
+                              mCache.string() + " " + args);
     }
 };
 
 TEST_F(ValidateCommand, APythonWithoutMatplotlibIsRefusedBeforeAnyStudy) {
     // A Python whose `import matplotlib` fails, as on a machine without python3-matplotlib.
     fs::create_directories(mDir / "fake" / "matplotlib");
-    std::ofstream(mDir / "fake" / "matplotlib" / "__init__.py") << "raise ImportError('no matplotlib here')\n";
+    std::ofstream(mDir / "fake" / "matplotlib" / "__init__.py")
+        << "raise ImportError('no matplotlib here')\n";
     const fs::path python = mDir / "python-without-matplotlib";
-    std::ofstream(python) << "#!/bin/sh\nPYTHONPATH=" << (mDir / "fake").string() << " exec /usr/bin/python3 \"$@\"\n";
+    std::ofstream(python) << "#!/bin/sh\nPYTHONPATH=" << (mDir / "fake").string()
+                          << " exec /usr/bin/python3 \"$@\"\n";
     fs::permissions(python, fs::perms::owner_all);
     const RunResult r = validate(python.string());
     EXPECT_EQ(r.status, 1) << r.err;
@@ -61,7 +63,8 @@ TEST_F(ValidateCommand, AnUnknownStudyIsNamedWithTheStudiesThereAre) {
 
 TEST_F(ValidateCommand, AnOutputFolderThatCannotBeWrittenIsRefused) {
     std::ofstream(mDir / "file") << "not a folder";
-    const RunResult r = runProgram(testing::cliPath(), "validate --quick --out " + (mDir / "file" / "out").string());
+    const RunResult r = runProgram(testing::cliPath(),
+                                   "validate --quick --out " + (mDir / "file" / "out").string());
     EXPECT_EQ(r.status, 1) << r.err;
     EXPECT_NE(r.err.find("--out"), std::string::npos) << r.err;
 }
@@ -75,7 +78,8 @@ TEST_F(ValidateCommand, OneStudyWritesItsResultsAndAReportWithItsFigure) {
     const std::string html = testing::slurp(mDir / "out" / "report.html");
     EXPECT_NE(html.find("src='data:image/png;base64,iVBOR"), std::string::npos) << "no PNG inline";
     EXPECT_TRUE(fs::exists(mDir / "out" / "figures" / "integrators.png"));
-    EXPECT_NE(testing::slurp(mDir / "out" / "results.json").find("\"integrators\""), std::string::npos);
+    EXPECT_NE(testing::slurp(mDir / "out" / "results.json").find("\"integrators\""),
+              std::string::npos);
 }
 
 }  // namespace

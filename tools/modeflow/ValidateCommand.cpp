@@ -57,10 +57,13 @@ Command addValidate(CLI::App& app) {
     };
     auto opts = std::make_shared<Options>();
     CLI::App* sub = app.add_subcommand(
-        "validate", "Reproduce the seed's results: run the validation studies and write DIR/results.json and "
-                    "DIR/report.html with figures");
-    sub->add_option("--out", opts->out, "folder for results.json, report.html and figures/")->required();
-    sub->add_flag("--quick", opts->quick, "small grids and short runs (about a minute; what the tests run)");
+        "validate",
+        "Reproduce the seed's results: run the validation studies and write DIR/results.json and "
+        "DIR/report.html with figures");
+    sub->add_option("--out", opts->out, "folder for results.json, report.html and figures/")
+        ->required();
+    sub->add_flag("--quick", opts->quick,
+                  "small grids and short runs (about a minute; what the tests run)");
     sub->add_option("--only", opts->only, "comma-separated studies to run (default: all)");
     sub->add_option("--cache-dir", opts->cacheDir, "cache folder for the studies' bases");
     return [sub, opts]() {
@@ -72,7 +75,9 @@ Command addValidate(CLI::App& app) {
         validate::StudyOptions options;
         options.quick = opts->quick;
         options.cacheDir = resolveCacheDir(opts->cacheDir);
-        options.note = [](const std::string& line) { std::cerr << "validate:     " << line << std::endl; };
+        options.note = [](const std::string& line) {
+            std::cerr << "validate:     " << line << std::endl;
+        };
 
         const auto start = std::chrono::steady_clock::now();
         nlohmann::json results = {{"modeflow_version", MODEFLOW_VERSION}, {"quick", opts->quick}};
@@ -80,22 +85,25 @@ Command addValidate(CLI::App& app) {
         std::vector<std::string> unmet;
         for (std::size_t i = 0; i < studies.size(); ++i) {
             const validate::Study& study = studies[i];
-            std::cerr << "validate: [" << i + 1 << "/" << studies.size() << "] " << study.key << ": " << study.title
-                      << std::endl;
+            std::cerr << "validate: [" << i + 1 << "/" << studies.size() << "] " << study.key
+                      << ": " << study.title << std::endl;
             const auto begun = std::chrono::steady_clock::now();
             const validate::StudyResult result = study.run(options);
             const double seconds = secondsSince(begun);
             const validate::Headline& h = result.headline;
-            results["studies"][study.key] = {
-                {"title", study.title},
-                {"seconds", seconds},
-                {"headline", {{"name", h.name}, {"value", h.value}, {"expectation", h.expectation}, {"met", h.met}}},
-                {"data", result.data}};
+            results["studies"][study.key] = {{"title", study.title},
+                                             {"seconds", seconds},
+                                             {"headline",
+                                              {{"name", h.name},
+                                               {"value", h.value},
+                                               {"expectation", h.expectation},
+                                               {"met", h.met}}},
+                                             {"data", result.data}};
             results["seconds"] = secondsSince(start);
             writeFileAtomically(out / "results.json", results.dump(1), "validation results");
-            std::cerr << "validate: " << study.key << " done in " << fixed(seconds, 1) << " s: " << h.name << " = "
-                      << h.value << " (expected " << h.expectation << ": " << (h.met ? "met" : "NOT met") << ")"
-                      << std::endl;
+            std::cerr << "validate: " << study.key << " done in " << fixed(seconds, 1)
+                      << " s: " << h.name << " = " << h.value << " (expected " << h.expectation
+                      << ": " << (h.met ? "met" : "NOT met") << ")" << std::endl;
             if (!h.met) unmet.push_back(study.key);
         }
         validate::drawReport(out);

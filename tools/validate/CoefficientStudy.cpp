@@ -62,7 +62,8 @@ SceneSpec vortexPairWithAllModes(int cells, const StudyOptions& options) {
 
 StudyResult coefficientStudy(const StudyOptions& options) {
     const int cells = options.quick ? 16 : 32;
-    const std::vector<int> counts = options.quick ? std::vector<int>{20, 40} : std::vector<int>{25, 50, 100, 200};
+    const std::vector<int> counts =
+        options.quick ? std::vector<int>{20, 40} : std::vector<int>{25, 50, 100, 200};
     const double dt = 0.02, duration = options.quick ? 2.0 : 8.0;
     const int every = options.quick ? 5 : 10;
 
@@ -88,8 +89,10 @@ StudyResult coefficientStudy(const StudyOptions& options) {
             if (run.style == "ours") {
                 run.coefficients = stir::leadingCoefficients(*full.coefficients, n);
             } else {
-                auto grid = std::make_unique<FullTensorCoefficients>(gridAdvectionCoefficients(full.cache, n));
-                antisymmetry.push_back({{"modes", n}, {"antisymmetry_error", grid->antisymmetryError()}});
+                auto grid = std::make_unique<FullTensorCoefficients>(
+                    gridAdvectionCoefficients(full.cache, n));
+                antisymmetry.push_back(
+                    {{"modes", n}, {"antisymmetry_error", grid->antisymmetryError()}});
                 run.coefficients = std::move(grid);
             }
             run.system = std::make_unique<FluidSystem>(*run.coefficients);
@@ -108,7 +111,8 @@ StudyResult coefficientStudy(const StudyOptions& options) {
             difference.head(run.modes) += run.v;
             run.l2.push_back(difference.norm() / vFull.norm());
             const Eigen::VectorXd u = inverseArea.cwiseProduct(psi.leftCols(run.modes) * run.v);
-            run.linf.push_back((u - uFull).lpNorm<Eigen::Infinity>() / uFull.lpNorm<Eigen::Infinity>());
+            run.linf.push_back((u - uFull).lpNorm<Eigen::Infinity>() /
+                               uFull.lpNorm<Eigen::Infinity>());
             run.energy.push_back(energy(run.v));
         }
     };
@@ -125,7 +129,8 @@ StudyResult coefficientStudy(const StudyOptions& options) {
     }
 
     StudyResult result;
-    result.data["scene"] = {{"resolution", cells}, {"full_modes", total}, {"dt", dt}, {"integrator", "midpoint"}};
+    result.data["scene"] = {
+        {"resolution", cells}, {"full_modes", total}, {"dt", dt}, {"integrator", "midpoint"}};
     result.data["time"] = time;
     result.data["full_energy"] = fullEnergy;
     result.data["grid_antisymmetry"] = antisymmetry;
@@ -134,7 +139,8 @@ StudyResult coefficientStudy(const StudyOptions& options) {
     for (const ReducedRun& run : runs) {
         double mean = 0.0, drift = 0.0;
         for (const double e : run.l2) mean += e / double(run.l2.size());
-        for (const double e : run.energy) drift = std::max(drift, std::abs(e - run.energy[0]) / run.energy[0]);
+        for (const double e : run.energy)
+            drift = std::max(drift, std::abs(e - run.energy[0]) / run.energy[0]);
         result.data["runs"].push_back({{"coefficients", run.style},
                                        {"modes", run.modes},
                                        {"relative_l2", run.l2},
@@ -142,12 +148,14 @@ StudyResult coefficientStudy(const StudyOptions& options) {
                                        {"energy", run.energy},
                                        {"mean_relative_l2", mean},
                                        {"max_relative_energy_drift", drift}});
-        (run.style == "ours" ? oursDrift : gridDrift) = std::max(run.style == "ours" ? oursDrift : gridDrift, drift);
+        (run.style == "ours" ? oursDrift : gridDrift) =
+            std::max(run.style == "ours" ? oursDrift : gridDrift, drift);
     }
     // What the coefficients guarantee, whatever the error against the full run does: energy.
-    result.headline = {"largest relative energy drift with grid-evaluated coefficients", gridDrift,
-                       "above 1e-6, while ours stay below 1e-12 (measured " + scientific(oursDrift) + ")",
-                       gridDrift > 1e-6 && oursDrift < 1e-12};
+    result.headline = {
+        "largest relative energy drift with grid-evaluated coefficients", gridDrift,
+        "above 1e-6, while ours stay below 1e-12 (measured " + scientific(oursDrift) + ")",
+        gridDrift > 1e-6 && oursDrift < 1e-12};
     return result;
 }
 

@@ -35,7 +35,9 @@ SceneSpec unitBall(int dim, int cells, BoundaryTreatment boundary, ScalarBoundar
     return scene;
 }
 
-std::vector<double> values(const Eigen::VectorXd& v) { return {v.data(), v.data() + v.size()}; }
+std::vector<double> values(const Eigen::VectorXd& v) {
+    return {v.data(), v.data() + v.size()};
+}
 
 struct Series {
     std::string domain, boundary, field;
@@ -52,29 +54,32 @@ StudyResult convergenceStudy(const StudyOptions& options) {
         std::vector<int> cells;
     };
     const std::vector<Domain> domains =
-        options.quick ? std::vector<Domain>{{"disk", 2, {32, 64}}, {"ball", 3, {10, 14}}}
-                      : std::vector<Domain>{{"disk", 2, {32, 64, 128, 256}}, {"ball", 3, {12, 16, 24, 32}}};
-    const std::pair<BoundaryTreatment, const char*> boundaries[] = {{BoundaryTreatment::CutCell, "cut-cell"},
-                                                                    {BoundaryTreatment::Staircase, "staircase"}};
-    const std::pair<SpectrumKind, const char*> fields[] = {
-        {SpectrumKind::Velocity, "velocity"}, {SpectrumKind::Neumann, "neumann"}, {SpectrumKind::Dirichlet, "dirichlet"}};
+        options.quick
+            ? std::vector<Domain>{{"disk", 2, {32, 64}}, {"ball", 3, {10, 14}}}
+            : std::vector<Domain>{{"disk", 2, {32, 64, 128, 256}}, {"ball", 3, {12, 16, 24, 32}}};
+    const std::pair<BoundaryTreatment, const char*> boundaries[] = {
+        {BoundaryTreatment::CutCell, "cut-cell"}, {BoundaryTreatment::Staircase, "staircase"}};
+    const std::pair<SpectrumKind, const char*> fields[] = {{SpectrumKind::Velocity, "velocity"},
+                                                           {SpectrumKind::Neumann, "neumann"},
+                                                           {SpectrumKind::Dirichlet, "dirichlet"}};
 
     std::vector<Series> all;
     for (const Domain& domain : domains)
         for (const auto& [boundary, boundaryName] : boundaries) {
             Series series[3];
-            for (int f = 0; f < 3; ++f) series[f] = {domain.name, boundaryName, fields[f].second, domain.dim, {}, {}, {}};
+            for (int f = 0; f < 3; ++f)
+                series[f] = {domain.name, boundaryName, fields[f].second, domain.dim, {}, {}, {}};
             for (const int cells : domain.cells) {
                 options.note(std::string(domain.name) + " " + std::to_string(cells) + "^" +
                              std::to_string(domain.dim) + ", " + boundaryName);
                 Progress quiet = Progress::silent();
                 const BasisCache neumann =
-                    ensureCache(unitBall(domain.dim, cells, boundary, ScalarBoundary::Neumann), options.cacheDir, false,
-                                quiet)
+                    ensureCache(unitBall(domain.dim, cells, boundary, ScalarBoundary::Neumann),
+                                options.cacheDir, false, quiet)
                         .cache;
                 const BasisCache dirichlet =
-                    ensureCache(unitBall(domain.dim, cells, boundary, ScalarBoundary::Dirichlet), options.cacheDir,
-                                false, quiet)
+                    ensureCache(unitBall(domain.dim, cells, boundary, ScalarBoundary::Dirichlet),
+                                options.cacheDir, false, quiet)
                         .cache;
                 const std::vector<double> computed[3] = {values(neumann.velocity.eigenvalues),
                                                          values(neumann.scalar.eigenvalues),
@@ -82,8 +87,8 @@ StudyResult convergenceStudy(const StudyOptions& options) {
                 for (int f = 0; f < 3; ++f) {
                     series[f].resolution.push_back(cells);
                     series[f].h.push_back(2.2 / cells);
-                    series[f].error.push_back(
-                        maxRelativeError(computed[f], unitBallSpectrum(domain.dim, fields[f].first, kEigenvalues)));
+                    series[f].error.push_back(maxRelativeError(
+                        computed[f], unitBallSpectrum(domain.dim, fields[f].first, kEigenvalues)));
                 }
             }
             all.insert(all.end(), std::begin(series), std::end(series));
@@ -103,8 +108,8 @@ StudyResult convergenceStudy(const StudyOptions& options) {
                                          {"max_relative_error", s.error},
                                          {"order", order}});
         if (s.domain == "disk" && s.boundary == "cut-cell" && s.field == "velocity")
-            result.headline = {"fitted order, disk velocity eigenvalues, cut cells", order, "at least 1.8 (second order)",
-                               order >= 1.8};
+            result.headline = {"fitted order, disk velocity eigenvalues, cut cells", order,
+                               "at least 1.8 (second order)", order >= 1.8};
     }
     return result;
 }

@@ -22,8 +22,10 @@ std::vector<double> roots(const std::function<double(double)>& f, double limit) 
             double lo = a, hi = b, flo = fa;
             for (int i = 0; i < 100 && hi - lo > 1e-15 * hi; ++i) {
                 const double mid = 0.5 * (lo + hi), fm = f(mid);
-                if ((fm < 0.0) == (flo < 0.0)) lo = mid, flo = fm;
-                else hi = mid;
+                if ((fm < 0.0) == (flo < 0.0))
+                    lo = mid, flo = fm;
+                else
+                    hi = mid;
             }
             found.push_back(0.5 * (lo + hi));
         }
@@ -33,11 +35,13 @@ std::vector<double> roots(const std::function<double(double)>& f, double limit) 
 }
 
 double besselDerivative(int m, double x) {
-    return m == 0 ? -std::cyl_bessel_j(1, x) : 0.5 * (std::cyl_bessel_j(m - 1, x) - std::cyl_bessel_j(m + 1, x));
+    return m == 0 ? -std::cyl_bessel_j(1, x)
+                  : 0.5 * (std::cyl_bessel_j(m - 1, x) - std::cyl_bessel_j(m + 1, x));
 }
 
 double sphericalDerivative(int l, double x) {
-    return l == 0 ? -std::sph_bessel(1, x) : std::sph_bessel(l - 1, x) - (l + 1) / x * std::sph_bessel(l, x);
+    return l == 0 ? -std::sph_bessel(1, x)
+                  : std::sph_bessel(l - 1, x) - (l + 1) / x * std::sph_bessel(l, x);
 }
 
 }  // namespace
@@ -51,15 +55,19 @@ std::vector<double> unitBallSpectrum(int dim, SpectrumKind kind, int count) {
         const int multiplicity = dim == 2 ? (order == 0 ? 1 : 2) : 2 * order + 1;
         std::vector<std::function<double(double)>> equations;
         if (dim == 2) {
-            if (kind == SpectrumKind::Neumann) equations = {[order](double x) { return besselDerivative(order, x); }};
-            else equations = {[order](double x) { return std::cyl_bessel_j(order, x); }};
+            if (kind == SpectrumKind::Neumann)
+                equations = {[order](double x) { return besselDerivative(order, x); }};
+            else
+                equations = {[order](double x) { return std::cyl_bessel_j(order, x); }};
         } else if (kind == SpectrumKind::Dirichlet) {
             equations = {[order](double x) { return std::sph_bessel(order, x); }};
         } else if (kind == SpectrumKind::Neumann) {
             equations = {[order](double x) { return sphericalDerivative(order, x); }};
         } else if (order >= 1) {
             equations = {[order](double x) { return std::sph_bessel(order, x); },
-                         [order](double x) { return std::sph_bessel(order, x) + x * sphericalDerivative(order, x); }};
+                         [order](double x) {
+                             return std::sph_bessel(order, x) + x * sphericalDerivative(order, x);
+                         }};
         }
         for (const auto& f : equations)
             for (const double root : roots(f, limit))

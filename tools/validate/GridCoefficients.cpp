@@ -10,41 +10,47 @@
 
 namespace modeflow::validate {
 
-FullTensorCoefficients::FullTensorCoefficients(int n, std::vector<double> full) : mN(n), mFull(std::move(full)) {
+FullTensorCoefficients::FullTensorCoefficients(int n, std::vector<double> full)
+    : mN(n), mFull(std::move(full)) {
     if (mFull.size() != std::size_t(n) * n * n)
-        throw Error("full coefficient tensor: " + std::to_string(mFull.size()) + " entries for N = " +
-                    std::to_string(n));
+        throw Error("full coefficient tensor: " + std::to_string(mFull.size()) +
+                    " entries for N = " + std::to_string(n));
 }
 
-void FullTensorCoefficients::apply(const Eigen::VectorXd& a, const Eigen::VectorXd& b, Eigen::VectorXd& out) const {
+void FullTensorCoefficients::apply(const Eigen::VectorXd& a, const Eigen::VectorXd& b,
+                                   Eigen::VectorXd& out) const {
     checkSize("apply", a);
     checkSize("apply", b);
     out.setZero(mN);
     for (int k = 0; k < mN; ++k) {
-        const Eigen::Map<const Eigen::MatrixXd> ck(&mFull[std::size_t(k) * mN * mN], mN, mN);  // (j, i)
+        const Eigen::Map<const Eigen::MatrixXd> ck(&mFull[std::size_t(k) * mN * mN], mN,
+                                                   mN);  // (j, i)
         out[k] = a.dot(ck.transpose() * b);
     }
 }
 
-void FullTensorCoefficients::linearize(const Eigen::VectorXd& a, const Eigen::VectorXd& b, Eigen::MatrixXd& byI,
-                                       Eigen::MatrixXd& byJ) const {
+void FullTensorCoefficients::linearize(const Eigen::VectorXd& a, const Eigen::VectorXd& b,
+                                       Eigen::MatrixXd& byI, Eigen::MatrixXd& byJ) const {
     checkSize("linearize", a);
     checkSize("linearize", b);
     byI.setZero(mN, mN);
     byJ.setZero(mN, mN);
     for (int k = 0; k < mN; ++k) {
-        const Eigen::Map<const Eigen::MatrixXd> ck(&mFull[std::size_t(k) * mN * mN], mN, mN);  // ck(j, i)
+        const Eigen::Map<const Eigen::MatrixXd> ck(&mFull[std::size_t(k) * mN * mN], mN,
+                                                   mN);  // ck(j, i)
         byI.row(k) = (ck * a).transpose();
         byJ.row(k) = (ck.transpose() * b).transpose();
     }
 }
 
-void FullTensorCoefficients::advect(const Eigen::VectorXd& u, const Eigen::VectorXd& x, Eigen::VectorXd& out) const {
+void FullTensorCoefficients::advect(const Eigen::VectorXd& u, const Eigen::VectorXd& x,
+                                    Eigen::VectorXd& out) const {
     checkSize("advect", u);
     checkSize("advect", x);
     out.setZero(mN);
     for (int j = 0; j < mN; ++j) {
-        const Eigen::Map<const Eigen::MatrixXd> cj(&mFull[std::size_t(j) * mN * mN], mN, mN);  // cj(i, k)
+        const Eigen::Map<const Eigen::MatrixXd> cj(&mFull[std::size_t(j) * mN * mN], mN,
+                                                   mN);  // cj(i, k)
         out += u[j] * (cj.transpose() * x);
     }
 }
@@ -66,7 +72,8 @@ namespace {
 using CellField = std::vector<Eigen::VectorXd>;
 
 CellField cellVelocity(const BasisCache& cache, const MacGrid& grid, int mode) {
-    const std::vector<double> faces = reference::fluxesToFaceField(cache, cache.velocity.modes.col(mode));
+    const std::vector<double> faces =
+        reference::fluxesToFaceField(cache, cache.velocity.modes.col(mode));
     const std::vector<Vec3> centred = reference::cellCentreVelocity(grid, faces);
     CellField field(std::size_t(grid.dim), Eigen::VectorXd(Eigen::Index(centred.size())));
     for (std::size_t c = 0; c < centred.size(); ++c)
@@ -76,7 +83,8 @@ CellField cellVelocity(const BasisCache& cache, const MacGrid& grid, int mode) {
 
 /// ∂_b of a cell field: central differences between fluid cells, one-sided where one neighbour
 /// is outside Ω, 0 where both are.
-Eigen::VectorXd derivative(const MacGrid& grid, const std::vector<double>& fraction, const Eigen::VectorXd& f, int b) {
+Eigen::VectorXd derivative(const MacGrid& grid, const std::vector<double>& fraction,
+                           const Eigen::VectorXd& f, int b) {
     Eigen::VectorXd d = Eigen::VectorXd::Zero(f.size());
     for (int z = 0; z < grid.cells[2]; ++z)
         for (int y = 0; y < grid.cells[1]; ++y)
@@ -107,7 +115,8 @@ FullTensorCoefficients gridAdvectionCoefficients(const BasisCache& cache, int co
     const int dim = grid.dim;
     const auto cells = Eigen::Index(grid.cellCount());
     Eigen::VectorXd weight(cells);
-    for (Eigen::Index c = 0; c < cells; ++c) weight[c] = cache.cellFraction[std::size_t(c)] * grid.cellVolume();
+    for (Eigen::Index c = 0; c < cells; ++c)
+        weight[c] = cache.cellFraction[std::size_t(c)] * grid.cellVolume();
     // U: (dim·cells) × N cell velocities; dU[b]: their derivatives along b.
     Eigen::MatrixXd u(dim * cells, count);
     std::vector<Eigen::MatrixXd> du(std::size_t(dim), Eigen::MatrixXd(dim * cells, count));
@@ -122,7 +131,8 @@ FullTensorCoefficients gridAdvectionCoefficients(const BasisCache& cache, int co
     }
     Eigen::MatrixXd weightedU = u;
     for (int a = 0; a < dim; ++a)
-        for (int m = 0; m < count; ++m) weightedU.col(m).segment(a * cells, cells).array() *= weight.array();
+        for (int m = 0; m < count; ++m)
+            weightedU.col(m).segment(a * cells, cells).array() *= weight.array();
     std::vector<double> full(std::size_t(count) * count * count);
     Eigen::MatrixXd advected(dim * cells, count);
     for (int i = 0; i < count; ++i) {
@@ -136,7 +146,8 @@ FullTensorCoefficients gridAdvectionCoefficients(const BasisCache& cache, int co
         }
         const Eigen::MatrixXd ckj = -weightedU.transpose() * advected;  // (k, j)
         for (int k = 0; k < count; ++k)
-            for (int j = 0; j < count; ++j) full[(std::size_t(k) * count + i) * count + j] = ckj(k, j);
+            for (int j = 0; j < count; ++j)
+                full[(std::size_t(k) * count + i) * count + j] = ckj(k, j);
     }
     return FullTensorCoefficients(count, std::move(full));
 }

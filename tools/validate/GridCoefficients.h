@@ -22,11 +22,15 @@ public:
 
     int size() const override { return mN; }
     std::size_t storedBytes() const override { return mFull.size() * sizeof(double); }
-    double entry(int k, int i, int j) const override { return mFull[(std::size_t(k) * mN + i) * mN + j]; }
-    void apply(const Eigen::VectorXd& a, const Eigen::VectorXd& b, Eigen::VectorXd& out) const override;
+    double entry(int k, int i, int j) const override {
+        return mFull[(std::size_t(k) * mN + i) * mN + j];
+    }
+    void apply(const Eigen::VectorXd& a, const Eigen::VectorXd& b,
+               Eigen::VectorXd& out) const override;
     void linearize(const Eigen::VectorXd& a, const Eigen::VectorXd& b, Eigen::MatrixXd& byI,
                    Eigen::MatrixXd& byJ) const override;
-    void advect(const Eigen::VectorXd& u, const Eigen::VectorXd& x, Eigen::VectorXd& out) const override;
+    void advect(const Eigen::VectorXd& u, const Eigen::VectorXd& x,
+                Eigen::VectorXd& out) const override;
 
     /// max |C[k][i][j] + C[j][i][k]| / max |C|: 0 for exactly antisymmetric coefficients.
     double antisymmetryError() const;

@@ -38,8 +38,8 @@ StudyResult integratorStudy(const StudyOptions& options) {
     const int cells = options.quick ? 32 : 64, modes = options.quick ? 20 : 40;
     const double duration = options.quick ? 8.0 : 40.0, reverseDuration = 2.0;
     const std::vector<double> steps = {0.16, 0.08, 0.04};
-    const RunInputs run = prepareStudyRun(sceneFromText(diskScene(cells, modes), "integrators"), options,
-                                          RunParts::Dynamics);
+    const RunInputs run = prepareStudyRun(sceneFromText(diskScene(cells, modes), "integrators"),
+                                          options, RunParts::Dynamics);
     const FluidSystem system(*run.coefficients);
     const Eigen::VectorXd& v0 = run.initialVelocity;
     Eigen::VectorXd r0;
@@ -47,8 +47,9 @@ StudyResult integratorStudy(const StudyOptions& options) {
     const double e0 = energy(v0);
 
     StudyResult result;
-    result.data["system"] = {{"domain", "unit disk"},      {"resolution", cells},    {"modes", modes},
-                             {"initial", "random, E = 1"}, {"duration", duration}, {"rate", r0.norm() / v0.norm()}};
+    result.data["system"] = {{"domain", "unit disk"}, {"resolution", cells},
+                             {"modes", modes},        {"initial", "random, E = 1"},
+                             {"duration", duration},  {"rate", r0.norm() / v0.norm()}};
     result.data["series"] = nlohmann::json::array();
     double midpointDrift = 0.0;
     for (const auto& [scheme, name] : kSchemes)
@@ -91,8 +92,10 @@ StudyResult integratorStudy(const StudyOptions& options) {
         Eigen::VectorXd v = v0;
         for (int s = 0; s < count; ++s) integrator.step(v, h);
         for (int s = 0; s < count; ++s) integrator.step(v, -h);
-        result.data["reversibility"].push_back(
-            {{"integrator", name}, {"dt", h}, {"steps", count}, {"return_error", (v - v0).norm() / v0.norm()}});
+        result.data["reversibility"].push_back({{"integrator", name},
+                                                {"dt", h},
+                                                {"steps", count},
+                                                {"return_error", (v - v0).norm() / v0.norm()}});
     }
     result.headline = {"midpoint: largest relative energy drift, every dt", midpointDrift,
                        "below 1e-12 (exact up to round-off)", midpointDrift < 1e-12};

@@ -32,11 +32,13 @@ std::string boxScene(int cells, int modes, double alpha) {
            std::to_string(modes) +
            "\nscalar_modes = 0\n"
            "[simulation]\ndt = " +
-           std::to_string(kStep) + "\nintegrator = \"midpoint\"\nviscosity = " + std::to_string(kViscosity) +
+           std::to_string(kStep) +
+           "\nintegrator = \"midpoint\"\nviscosity = " + std::to_string(kViscosity) +
            "\nalpha = " + std::to_string(alpha) +
            "\n"
            // The five modes with κ² = 2, 3 (κ < 2) at amplitude 1, held there; the rest at rest.
-           "[initial]\nvelocity = \"modes\"\namplitudes = [[1, 1.0], [2, 1.0], [3, 1.0], [4, 1.0], [5, 1.0]]\n"
+           "[initial]\nvelocity = \"modes\"\namplitudes = [[1, 1.0], [2, 1.0], [3, 1.0], [4, 1.0], "
+           "[5, 1.0]]\n"
            "[forcing]\nhold_below_kappa = 2.0\n";
 }
 
@@ -45,10 +47,12 @@ struct Spectrum {
     std::vector<double> time, totalEnergy;
 };
 
-Spectrum averagedSpectrum(const SceneSpec& scene, double duration, double from, const StudyOptions& options) {
+Spectrum averagedSpectrum(const SceneSpec& scene, double duration, double from,
+                          const StudyOptions& options) {
     const RunInputs run = prepareStudyRun(scene, options, RunParts::Dynamics);
     const Backend backend(BackendChoice{BackendKind::CpuReference, {}});
-    const std::unique_ptr<ModalStepping> stepper = backend.makeModalStepper(run, Integrator::Midpoint);
+    const std::unique_ptr<ModalStepping> stepper =
+        backend.makeModalStepper(run, Integrator::Midpoint);
     const Eigen::VectorXd& k2 = run.cache.velocity.eigenvalues;
     std::map<int, double> shells;
     Spectrum spectrum;
@@ -62,7 +66,8 @@ Spectrum averagedSpectrum(const SceneSpec& scene, double duration, double from, 
             spectrum.totalEnergy.push_back(energy(v));
         }
         if (s * kStep < from) continue;
-        for (Eigen::Index i = 0; i < v.size(); ++i) shells[int(std::lround(std::sqrt(k2[i])))] += 0.5 * v[i] * v[i];
+        for (Eigen::Index i = 0; i < v.size(); ++i)
+            shells[int(std::lround(std::sqrt(k2[i])))] += 0.5 * v[i] * v[i];
         ++averaged;
     }
     // The last shell is cut by the truncation (only some of its modes are in the basis): left out.
@@ -80,26 +85,30 @@ StudyResult lansAlphaStudy(const StudyOptions& options) {
     const int cells = options.quick ? 10 : 12, modes = options.quick ? 100 : 200;
     const double duration = options.quick ? 30.0 : 100.0, from = options.quick ? 10.0 : 33.0;
     StudyResult result;
-    result.data["scene"] = {{"domain", "closed box [0, π]³"}, {"resolution", cells},    {"modes", modes},
-                            {"held", "κ < 2 (5 modes)"},       {"viscosity", kViscosity}, {"alpha", kAlpha},
-                            {"dt", kStep},                     {"duration", duration},   {"averaged_from", from}};
+    result.data["scene"] = {{"domain", "closed box [0, π]³"},
+                            {"resolution", cells},
+                            {"modes", modes},
+                            {"held", "κ < 2 (5 modes)"},
+                            {"viscosity", kViscosity},
+                            {"alpha", kAlpha},
+                            {"dt", kStep},
+                            {"duration", duration},
+                            {"averaged_from", from}};
     double slopes[2] = {0.0, 0.0};
     for (const double alpha : {0.0, kAlpha}) {
         const char* model = alpha > 0.0 ? "lans_alpha" : "navier_stokes";
         options.note(std::string(model) + ", t = 0 to " + std::to_string(duration));
-        const Spectrum s = averagedSpectrum(sceneFromText(boxScene(cells, modes, alpha), "lans_alpha"), duration,
-                                            from, options);
+        const Spectrum s = averagedSpectrum(
+            sceneFromText(boxScene(cells, modes, alpha), "lans_alpha"), duration, from, options);
         // The upper half of the shells.
         std::vector<double> k, e;
-        for (std::size_t i = s.kappa.size() / 2; i < s.kappa.size(); ++i) k.push_back(s.kappa[i]), e.push_back(s.energy[i]);
+        for (std::size_t i = s.kappa.size() / 2; i < s.kappa.size(); ++i)
+            k.push_back(s.kappa[i]), e.push_back(s.energy[i]);
         const double slope = logLogSlope(k, e);
         slopes[alpha > 0.0] = slope;
-        result.data[model] = {{"kappa", s.kappa},
-                              {"energy", s.energy},
-                              {"high_kappa_slope", slope},
-                              {"slope_shells", k},
-                              {"time", s.time},
-                              {"total_energy", s.totalEnergy}};
+        result.data[model] = {
+            {"kappa", s.kappa},  {"energy", s.energy}, {"high_kappa_slope", slope},
+            {"slope_shells", k}, {"time", s.time},     {"total_energy", s.totalEnergy}};
     }
     const double steeper = slopes[1] - slopes[0];
     result.headline = {"high-κ slope of the spectrum, LANS-α minus Navier–Stokes", steeper,

@@ -32,7 +32,8 @@ nlohmann::json densityPicture(const Simulator& simulation, int block) {
         for (int x = 0; x + block <= grid.cells[0]; x += block) {
             double sum = 0.0;
             for (int j = 0; j < block; ++j)
-                for (int i = 0; i < block; ++i) sum += density[std::size_t(grid.cellIndex(x + i, y + j, 0))];
+                for (int i = 0; i < block; ++i)
+                    sum += density[std::size_t(grid.cellIndex(x + i, y + j, 0))];
             row.push_back(std::round(sum / (block * block) * 1000.0) / 1000.0);
         }
         rows.push_back(row);
@@ -69,14 +70,16 @@ MhdRun runMhd(const SceneSpec& scene, const StudyOptions& options, bool pictures
             record();
         }
         if (pictures && frame % (frames / 4) == 0)
-            shots.push_back({{"time", simulation->time()}, {"density", densityPicture(*simulation, block)}});
+            shots.push_back(
+                {{"time", simulation->time()}, {"density", densityPicture(*simulation, block)}});
     }
     MhdRun result;
     const double e0 = kinetic[0] + magnetic[0];
     for (std::size_t i = 0; i < time.size(); ++i) {
-        result.energyDrift = std::max(result.energyDrift, std::abs(kinetic[i] + magnetic[i] - e0) / e0);
-        result.helicityDrift =
-            std::max(result.helicityDrift, std::abs(helicity[i] - helicity[0]) / std::abs(helicity[0]));
+        result.energyDrift =
+            std::max(result.energyDrift, std::abs(kinetic[i] + magnetic[i] - e0) / e0);
+        result.helicityDrift = std::max(
+            result.helicityDrift, std::abs(helicity[i] - helicity[0]) / std::abs(helicity[0]));
     }
     const Vec3& lo = scene.grid.boundsMin;
     const Vec3& hi = scene.grid.boundsMax;
@@ -106,7 +109,8 @@ StudyResult mhdStudy(const StudyOptions& options) {
                             {"modes", scene.basis.velocityCount()},
                             {"dt", scene.simulation.dt},
                             {"integrator", "midpoint"}};
-    options.note("the rotor with the field, B0 = " + std::to_string(scene.initial.magneticStrength));
+    options.note("the rotor with the field, B0 = " +
+                 std::to_string(scene.initial.magneticStrength));
     const MhdRun field = runMhd(scene, options, true);
     scene.initial.magneticStrength = 0.0;
     options.note("the rotor without a field");
@@ -118,8 +122,9 @@ StudyResult mhdStudy(const StudyOptions& options) {
     options.note("a random flow in a random field");
     const MhdRun random = runMhd(disk, options, false);
     result.data["random"] = random.data;
-    result.headline = {"random flow and field: largest relative change of the cross helicity", random.helicityDrift,
-                       "below 1e-10 (conserved)", random.helicityDrift < 1e-10};
+    result.headline = {"random flow and field: largest relative change of the cross helicity",
+                       random.helicityDrift, "below 1e-10 (conserved)",
+                       random.helicityDrift < 1e-10};
     return result;
 }
 

@@ -23,10 +23,12 @@ namespace {
 
 std::string plumeScene(int cells, int modes) {
     const std::string n = std::to_string(cells);
-    return "[grid]\nresolution = [" + n + ", " + n + "]\nbounds_min = [0.0, 0.0]\nbounds_max = [1.0, 1.0]\n" +
+    return "[grid]\nresolution = [" + n + ", " + n +
+           "]\nbounds_min = [0.0, 0.0]\nbounds_max = [1.0, 1.0]\n" +
            "[basis]\nvelocity_modes = " + std::to_string(modes) + "\nscalar_modes = 0\n" +
            "[simulation]\ndt = 0.02\nintegrator = \"midpoint\"\n"
-           "[[source]]\nshape = \"ball\"\ncenter = [0.5, 0.15]\nradius = 0.1\ndensity = 1.0\ntemperature = 1.0\n"
+           "[[source]]\nshape = \"ball\"\ncenter = [0.5, 0.15]\nradius = 0.1\ndensity = "
+           "1.0\ntemperature = 1.0\n"
            "[smoke]\nbuoyancy = 1.0\nresolution_scale = 2\n"
            "[output]\nframes = 1\nsteps_per_frame = 1\n";
 }
@@ -39,8 +41,8 @@ RunInputs leadingRun(const RunInputs& full, int modes) {
     run.cache = stir::leadingModes(full.cache, modes);
     run.coefficients = stir::leadingCoefficients(*full.coefficients, modes);
     if (dynamic_cast<const SparseCoefficients*>(full.coefficients.get()))
-        run.coefficients = std::make_unique<SparseCoefficients>(
-            SparseCoefficients::fromDense(static_cast<const DenseCoefficients&>(*run.coefficients)));
+        run.coefficients = std::make_unique<SparseCoefficients>(SparseCoefficients::fromDense(
+            static_cast<const DenseCoefficients&>(*run.coefficients)));
     run.settings = SimulationSettings::fromScene(full.scene, run.cache);
     run.smokeMask = full.smokeMask;
     run.initialVelocity = Eigen::VectorXd::Zero(modes);
@@ -81,7 +83,8 @@ StudyResult reducedVsFullStudy(const StudyOptions& options) {
     const int frames = options.quick ? 80 : 200;
     // Every divergence-free mode of the closed box: faces − cells + 1.
     const int all = 2 * cells * (cells - 1) - cells * cells + 1;
-    options.note("full: all " + std::to_string(all) + " modes of the " + std::to_string(cells) + "² box");
+    options.note("full: all " + std::to_string(all) + " modes of the " + std::to_string(cells) +
+                 "² box");
     const Backend backend(BackendChoice{BackendKind::CpuReference, {}});
     std::vector<PlumeRun> runs(counts.size() + 1);
     runs.back().inputs = std::make_unique<RunInputs>(
@@ -97,7 +100,8 @@ StudyResult reducedVsFullStudy(const StudyOptions& options) {
     for (int frame = 1; frame <= frames; ++frame) {
         for (PlumeRun& run : runs) run.simulation->advanceSteps(1);
         const Eigen::VectorXd vFull = runs.back().simulation->velocity();
-        if (vFull.norm() == 0.0) continue;  // the first step: the source has not heated anything yet
+        if (vFull.norm() == 0.0)
+            continue;  // the first step: the source has not heated anything yet
         time.push_back(runs.back().simulation->time());
         const std::vector<double> uFull = runs.back().simulation->faceVelocity();
         for (PlumeRun& run : runs) {
@@ -108,7 +112,8 @@ StudyResult reducedVsFullStudy(const StudyOptions& options) {
             difference.head(run.modes) += run.simulation->velocity();
             run.l2.push_back(difference.norm() / vFull.norm());
             double worst = 0.0;
-            for (std::size_t f = 0; f < u.size(); ++f) worst = std::max(worst, std::abs(u[f] - uFull[f]));
+            for (std::size_t f = 0; f < u.size(); ++f)
+                worst = std::max(worst, std::abs(u[f] - uFull[f]));
             run.linf.push_back(worst / maxAbs(uFull));
         }
         if (frame % 40 == 0) options.note("t = " + std::to_string(time.back()));
@@ -135,8 +140,8 @@ StudyResult reducedVsFullStudy(const StudyOptions& options) {
         if (run.modes != all) finalErrors.push_back(run.l2.back());
     }
     const double ratio = finalErrors.back() / finalErrors.front();
-    result.headline = {"final L2 error against the full run, " + std::to_string(counts.back()) + " modes / " +
-                           std::to_string(counts.front()) + " modes",
+    result.headline = {"final L2 error against the full run, " + std::to_string(counts.back()) +
+                           " modes / " + std::to_string(counts.front()) + " modes",
                        ratio, "below 1 (the error falls with more modes)", ratio < 1.0};
     return result;
 }

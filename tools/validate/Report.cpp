@@ -26,7 +26,8 @@ constexpr int kNoInterpreter = 127;
 int runScript(const std::vector<std::string>& args) {
     const std::string interpreter = reportInterpreter();
     int pipeFds[2];
-    if (pipe(pipeFds) != 0) throw Error(std::string("report: cannot create a pipe: ") + std::strerror(errno));
+    if (pipe(pipeFds) != 0)
+        throw Error(std::string("report: cannot create a pipe: ") + std::strerror(errno));
     const pid_t pid = fork();
     if (pid < 0) throw Error(std::string("report: cannot start Python: ") + std::strerror(errno));
     if (pid == 0) {
@@ -66,22 +67,25 @@ void requirePlotting() {
     const int status = runScript({"--check"});
     if (status == kNoInterpreter)
         throw Error("validate: cannot start Python (" + reportInterpreter() +
-                    ") to draw the report: install python3 and python3-matplotlib (tools/install-deps.sh), or "
+                    ") to draw the report: install python3 and python3-matplotlib "
+                    "(tools/install-deps.sh), or "
                     "set MODEFLOW_PYTHON to a Python with matplotlib");
     if (status == kNoMatplotlib)
         throw Error("validate: " + reportInterpreter() +
-                    " cannot import matplotlib, which draws the report's figures: install python3-matplotlib "
+                    " cannot import matplotlib, which draws the report's figures: install "
+                    "python3-matplotlib "
                     "(tools/install-deps.sh), or set MODEFLOW_PYTHON to a Python with matplotlib");
     if (status != 0)
-        throw Error("validate: the report script's check failed in " + reportInterpreter() + " (exit status " +
-                    std::to_string(status) + ")");
+        throw Error("validate: the report script's check failed in " + reportInterpreter() +
+                    " (exit status " + std::to_string(status) + ")");
 }
 
 void drawReport(const std::filesystem::path& dir) {
     const int status = runScript({dir.string()});
     if (status != 0)
-        throw Error("validate: drawing the report from " + (dir / "results.json").string() + " failed (" +
-                    reportInterpreter() + " exit status " + std::to_string(status) + ", its messages above)");
+        throw Error("validate: drawing the report from " + (dir / "results.json").string() +
+                    " failed (" + reportInterpreter() + " exit status " + std::to_string(status) +
+                    ", its messages above)");
 }
 
 }  // namespace modeflow::validate

@@ -72,7 +72,8 @@ ResolutionRun runAt(int cells, int frames, const StudyOptions& options) {
         result.y.push_back(my / mass);
         result.energy.push_back(energy(simulation->velocity()));
         if (frame % (frames / 3) == 0)
-            result.pictures.push_back({{"time", simulation->time()}, {"density", commonPicture(grid, density)}});
+            result.pictures.push_back(
+                {{"time", simulation->time()}, {"density", commonPicture(grid, density)}});
     }
     return result;
 }
@@ -80,7 +81,8 @@ ResolutionRun runAt(int cells, int frames, const StudyOptions& options) {
 }  // namespace
 
 StudyResult resolutionStudy(const StudyOptions& options) {
-    const std::vector<int> grids = options.quick ? std::vector<int>{40, 80} : std::vector<int>{40, 80, 160};
+    const std::vector<int> grids =
+        options.quick ? std::vector<int>{40, 80} : std::vector<int>{40, 80, 160};
     const int frames = options.quick ? 60 : 120;
     std::vector<ResolutionRun> runs;
     for (const int cells : grids) {
@@ -89,16 +91,20 @@ StudyResult resolutionStudy(const StudyOptions& options) {
     }
     const ResolutionRun& finest = runs.back();
     StudyResult result;
-    result.data["scene"] = {{"name", "default"}, {"modes", 40}, {"smoke_cells", 2 * kPictureCells},
+    result.data["scene"] = {{"name", "default"},
+                            {"modes", 40},
+                            {"smoke_cells", 2 * kPictureCells},
                             {"extent", {-1.1, 1.1, -1.1, 1.1}}};
     result.data["runs"] = nlohmann::json::array();
     double headline = 0.0;
     for (const ResolutionRun& run : runs) {
         double distance = 0.0, energyDifference = 0.0;
         for (std::size_t f = 0; f < run.time.size(); ++f) {
-            distance = std::max(distance, std::hypot(run.x[f] - finest.x[f], run.y[f] - finest.y[f]));
+            distance =
+                std::max(distance, std::hypot(run.x[f] - finest.x[f], run.y[f] - finest.y[f]));
             energyDifference =
-                std::max(energyDifference, std::abs(run.energy[f] - finest.energy[f]) / finest.energy.back());
+                std::max(energyDifference,
+                         std::abs(run.energy[f] - finest.energy[f]) / finest.energy.back());
         }
         result.data["runs"].push_back({{"resolution", run.cells},
                                        {"time", run.time},
@@ -110,9 +116,11 @@ StudyResult resolutionStudy(const StudyOptions& options) {
                                        {"pictures", run.pictures}});
         if (&run == &runs[runs.size() - 2]) headline = distance;
     }
-    const std::string pair = std::to_string(grids[grids.size() - 2]) + "² and " + std::to_string(grids.back()) + "²";
-    result.headline = {"largest distance between the smoke centroids of " + pair + " (disk radius 1)", headline,
-                       "below 0.05", headline < 0.05};
+    const std::string pair =
+        std::to_string(grids[grids.size() - 2]) + "² and " + std::to_string(grids.back()) + "²";
+    result.headline = {
+        "largest distance between the smoke centroids of " + pair + " (disk radius 1)", headline,
+        "below 0.05", headline < 0.05};
     return result;
 }
 

@@ -14,14 +14,14 @@
 namespace modeflow::validate {
 
 struct StudyOptions {
-    bool quick = false;                ///< small grids and short runs (the test suite's size)
-    std::filesystem::path cacheDir;    ///< where the bases are cached (reused across runs)
+    bool quick = false;              ///< small grids and short runs (the test suite's size)
+    std::filesystem::path cacheDir;  ///< where the bases are cached (reused across runs)
     std::function<void(const std::string&)> note;  ///< a line of progress within the study
 };
 
 /// The number a reader looks at first, and what it should be.
 struct Headline {
-    std::string name;         ///< what the value is, e.g. "velocity order, disk, cut cells"
+    std::string name;  ///< what the value is, e.g. "velocity order, disk, cut cells"
     double value = 0.0;
     std::string expectation;  ///< e.g. "≥ 1.8 (second order)"
     bool met = false;

@@ -6,7 +6,9 @@
 
 namespace modeflow::validate {
 
-SceneSpec sceneFromText(const std::string& text, const std::string& name) { return parseScene(text, name + ".toml"); }
+SceneSpec sceneFromText(const std::string& text, const std::string& name) {
+    return parseScene(text, name + ".toml");
+}
 
 RunInputs prepareStudyRun(const SceneSpec& scene, const StudyOptions& options, RunParts parts) {
     Progress quiet = Progress::silent();
@@ -26,6 +28,8 @@ std::string scientific(double value) {
     return text;
 }
 
-std::vector<double> toStd(const Eigen::VectorXd& v) { return {v.data(), v.data() + v.size()}; }
+std::vector<double> toStd(const Eigen::VectorXd& v) {
+    return {v.data(), v.data() + v.size()};
+}
 
 }  // namespace modeflow::validate
