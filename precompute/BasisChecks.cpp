@@ -1,5 +1,7 @@
 #include "precompute/BasisChecks.h"
 
+#include <algorithm>
+
 #include "precompute/dec/CubicalComplex.h"
 
 namespace modeflow {
@@ -11,21 +13,58 @@ double orthonormalityError(const Eigen::MatrixXd& modes, const Eigen::VectorXd& 
     return (gram - Eigen::MatrixXd::Identity(gram.rows(), gram.cols())).cwiseAbs().maxCoeff();
 }
 
+/// The columns a check reads: the stored ones, or the sampled closed-form modes materialized.
+template <typename Materialize>
+Eigen::MatrixXd checkedColumns(const Eigen::MatrixXd& stored, const std::vector<SeparableMode>& separable,
+                               std::int64_t dofs, Materialize&& materialize, int& checked) {
+    if (separable.empty() || stored.cols() == Eigen::Index(separable.size())) {
+        checked = int(stored.cols());
+        return stored;
+    }
+    std::vector<SeparableMode> picked;
+    for (int m : checkedModes(dofs, int(separable.size()))) picked.push_back(separable[std::size_t(m)]);
+    checked = int(picked.size());
+    return materialize(picked);
+}
+
 }  // namespace
+
+std::vector<int> checkedModes(std::int64_t dofs, int count) {
+    std::vector<int> out;
+    if (double(dofs) * double(count) * double(count) <= kFullCheckWork) {
+        for (int m = 0; m < count; ++m) out.push_back(m);
+        return out;
+    }
+    constexpr int kPositions = 48;
+    for (int p = 0; p < kPositions; ++p) {
+        const int m = int(std::int64_t(p) * (count - 1) / (kPositions - 1));
+        for (int q : {m, m + 1})
+            if (q < count && (out.empty() || out.back() < q)) out.push_back(q);
+    }
+    return out;
+}
 
 BasisChecks checkBasis(const BasisCache& cache) {
     BasisChecks checks;
-    checks.velocityOrthonormality = orthonormalityError(cache.velocity.modes, cache.faceStar);
-    checks.scalarOrthonormality = orthonormalityError(cache.scalar.modes, cache.scalar.cellStar);
+    const Eigen::MatrixXd velocity = checkedColumns(
+        cache.velocity.modes, cache.velocity.separable, std::int64_t(cache.faces.size()),
+        [&](const std::vector<SeparableMode>& m) { return velocityModeFluxes(cache.grid, cache.faces, m); },
+        checks.velocityChecked);
+    const Eigen::MatrixXd scalar = checkedColumns(
+        cache.scalar.modes, cache.scalar.separable, std::int64_t(cache.scalar.cells.size()),
+        [&](const std::vector<SeparableMode>& m) { return scalarModeValues(cache.grid, cache.scalar.cells, m); },
+        checks.scalarChecked);
+    checks.velocityOrthonormality = orthonormalityError(velocity, cache.faceStar);
+    checks.scalarOrthonormality = orthonormalityError(scalar, cache.scalar.cellStar);
 
     // Divergence through the full incidence matrix: a flux leaking through a non-DOF face would
     // show up in the cells beside it.
     const CubicalComplex complex(cache.grid);
     const SparseMatrix d = complex.incidence(cache.grid.dim - 1);
     Eigen::VectorXd full = Eigen::VectorXd::Zero(complex.count(cache.grid.dim - 1));
-    for (Eigen::Index m = 0; m < cache.velocity.modes.cols(); ++m) {
+    for (Eigen::Index m = 0; m < velocity.cols(); ++m) {
         for (size_t i = 0; i < cache.faces.size(); ++i)
-            full[cache.faces[i]] = cache.velocity.modes(Eigen::Index(i), m);
+            full[cache.faces[i]] = velocity(Eigen::Index(i), m);
         const double size = full.cwiseAbs().maxCoeff();
         const Eigen::VectorXd div = d * full;
         if (size > 0.0)

@@ -15,6 +15,9 @@
 #include "engine/core/Error.h"
 #include "engine/core/WritableDirectory.h"
 #include "precompute/PrecomputeMemory.h"
+#include "precompute/closedform/ClosedFormBasis.h"
+#include "precompute/closedform/ClosedFormCoefficients.h"
+#include "precompute/closedform/WholeBoxDofs.h"
 #include "precompute/coefficients/CoefficientAssembly.h"
 #include "precompute/dec/CubicalComplex.h"
 #include "precompute/dec/CutCellDec.h"
@@ -149,13 +152,51 @@ Error outOfMemory(const std::string& stage, const PrecomputeMemory& estimate) {
                          "lower [grid].resolution or the mode counts in [basis]");
 }
 
+/// A whole box with free-slip walls: both bases in closed form and their coefficients by
+/// selection rules; nothing is measured or solved.
+void closedFormStages(const SceneSpec& scene, BasisCache& cache, Progress& progress) {
+    const BasisSpec& basis = scene.basis;
+    progress.begin("operators");
+    fillWholeBoxDofs(cache);
+    cache.timings.emplace_back("operators", progress.end());
+
+    progress.begin("closed-form scalar basis");
+    cache.scalar.source = BasisSource::ClosedForm;
+    cache.scalar.boundary = basis.scalarBoundary;
+    cache.scalar.cells = cache.cells;
+    cache.scalar.cellStar = cache.cellStar;
+    ClosedFormScalar scalar = closedFormScalarBasis(scene.grid, basis.scalarModes, basis.scalarBoundary);
+    cache.scalar.eigenvalues = scalar.eigenvalues;
+    cache.scalar.separable = std::move(scalar.modes);
+    cache.scalar.omittedConstants = scalar.omittedConstants;
+    cache.timings.emplace_back("closed_form_scalar", progress.end());
+
+    progress.begin("closed-form velocity basis");
+    ClosedFormVelocity velocity = closedFormVelocityBasis(scene.grid, basis.velocityModes);
+    cache.velocity.source = BasisSource::ClosedForm;
+    cache.velocity.eigenvalues = velocity.eigenvalues;
+    cache.velocity.separable = std::move(velocity.modes);
+    cache.velocity.modeNumbers = std::move(velocity.modeNumbers);
+    cache.velocity.harmonic = velocity.harmonicCount;
+    cache.timings.emplace_back("closed_form_velocity", progress.end());
+
+    progress.begin("structural coefficients");
+    cache.coefficients = assembleClosedFormCoefficients(scene.grid, cache.velocity.separable);
+    cache.timings.emplace_back("coefficients", progress.end());
+}
+
 /// The stages of the pipeline for a key already computed (hashing mesh files once per run).
-BasisCache computeStages(const SceneSpec& scene, std::string key, Progress& progress) {
+BasisCache computeStages(const SceneSpec& scene, std::string key, Progress& progress,
+                         BasisMethod method) {
     BasisCache cache;
     cache.key = std::move(key);
     cache.grid = scene.grid;
     cache.wall = scene.basis.wall;
     cache.boundary = scene.basis.boundary;
+    if (method == BasisMethod::Automatic && hasClosedFormVelocity(scene)) {
+        closedFormStages(scene, cache, progress);
+        return cache;
+    }
     const GridSpec& grid = scene.grid;
     const int n = grid.dim;
 
@@ -233,9 +274,9 @@ BasisCache computeStages(const SceneSpec& scene, std::string key, Progress& prog
 
 /// The pipeline, refused before any work when the estimate does not fit in memory.
 BasisCache computeBasis(const SceneSpec& scene, std::string key, Progress& progress,
-                        const PrecomputeMemory& estimate) {
+                        const PrecomputeMemory& estimate, BasisMethod method) {
     try {
-        return computeStages(scene, std::move(key), progress);
+        return computeStages(scene, std::move(key), progress, method);
     } catch (const std::bad_alloc&) {
         throw outOfMemory(progress.stage(), estimate);
     }
@@ -243,9 +284,9 @@ BasisCache computeBasis(const SceneSpec& scene, std::string key, Progress& progr
 
 }  // namespace
 
-BasisCache computeBasis(const SceneSpec& scene, Progress& progress) {
+BasisCache computeBasis(const SceneSpec& scene, Progress& progress, BasisMethod method) {
     const PrecomputeMemory estimate = requirePrecomputeMemory(scene);
-    return computeBasis(scene, basisKey(scene), progress, estimate);
+    return computeBasis(scene, basisKey(scene), progress, estimate, method);
 }
 
 CacheOutcome ensureCache(const SceneSpec& scene, const std::filesystem::path& cacheDir, bool force,
@@ -267,7 +308,7 @@ CacheOutcome ensureCache(const SceneSpec& scene, const std::filesystem::path& ca
         }
     }
     const PrecomputeMemory estimate = requirePrecomputeMemory(scene);
-    outcome.cache = computeBasis(scene, key, progress, estimate);
+    outcome.cache = computeBasis(scene, key, progress, estimate, BasisMethod::Automatic);
     progress.begin("write cache");
     try {
         writeCache(outcome.path, outcome.cache);

@@ -20,10 +20,16 @@ std::string basisKey(const SceneSpec& scene);
 /// `DIR/<16 hex digits of the key's hash>.mfbasis`, for a key from basisKey().
 std::filesystem::path cachePath(const std::string& key, const std::filesystem::path& cacheDir);
 
+/// How the bases are found: in closed form where the domain allows it (a whole box with
+/// free-slip walls: precompute/closedform), else by the eigensolver; or always by the eigensolver
+/// (to compare the two).
+enum class BasisMethod { Automatic, Eigensolve };
+
 /// Runs the whole pipeline in memory, after checking its estimated peak memory against the
 /// machine's (precompute/PrecomputeMemory.h).
 /// @throw Error naming the scene key or stage that failed, "out of memory in <stage>" included.
-BasisCache computeBasis(const SceneSpec& scene, Progress& progress);
+BasisCache computeBasis(const SceneSpec& scene, Progress& progress,
+                        BasisMethod method = BasisMethod::Automatic);
 
 struct CacheOutcome {
     std::filesystem::path path;

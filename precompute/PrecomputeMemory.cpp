@@ -6,6 +6,8 @@
 #include <optional>
 
 #include "engine/core/AvailableMemory.h"
+#include "precompute/closedform/ClosedFormBasis.h"
+#include "precompute/closedform/ClosedFormCoefficients.h"
 #include "precompute/geometry/Domain.h"
 
 namespace modeflow {
@@ -24,6 +26,7 @@ struct Counts {
     double kept = 0.0;           ///< velocity modes stored
     double scalarModes = 0.0;    ///< scalar modes stored
     double scalarRequest = 0.0;  ///< scalar eigenpairs computed (the first Neumann ones at least)
+    bool closedForm = false;     ///< whole box, free slip: descriptors and sparse coefficients
 };
 
 /// Spectra's Krylov dimension (precompute/solve/ShiftInvertEigensolver.cpp).
@@ -52,7 +55,16 @@ struct Peak {
     const char* stage = "";
 };
 
+/// A closed-form precompute (precompute/closedform): the DOF arrays and the coefficients, 20 bytes
+/// per non-zero, written in place and streamed to the cache file (no copy of either).
+Peak closedFormPeakOf(const Counts& c) {
+    const double dofs = 24.0 * c.velocity + 32.0 * c.cells;
+    const double coefficients = kSparseEntryBytes * estimatedClosedFormNonZeros(c.dim, int(c.kept));
+    return {kMargin * (kProgram + dofs + coefficients), "structural coefficients"};
+}
+
 Peak peakOf(const Counts& c) {
+    if (c.closedForm) return closedFormPeakOf(c);
     const bool three = c.dim == 3;
     const double resident =
         three ? 310.0 * c.cells + 490.0 * c.velocity : 50.0 * c.cells + 300.0 * c.velocity;
@@ -128,6 +140,7 @@ PrecomputeMemory estimatePrecomputeMemory(const SceneSpec& scene) {
     c.scalarModes = basis.scalarModes;
     // One constant per component is computed and dropped; the first Neumann modes always are.
     c.scalarRequest = std::max(basis.scalarModes, 1) + 1;
+    c.closedForm = hasClosedFormVelocity(scene);
 
     PrecomputeMemory memory;
     memory.velocityDofs = std::int64_t(c.velocity);

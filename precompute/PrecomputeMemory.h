@@ -15,7 +15,9 @@
 ///   coefficients  2·V·K·8 (modes) + 1.6·K²(K−1)/2·8 (packed, sparse copy) + (V/dim)·(3K+256)·8
 ///   cache write   3 × the cache (serialized into a growing string)
 /// plus the scalar modes (3 copies of S·M·8) and 40 MiB for the program itself, the largest
-/// stage times 1.15. Against measured peaks (VmHWM; 2D disks 128²–512² with 50–200 modes, 3D
+/// stage times 1.15. A closed-form precompute (whole box, free slip) solves and measures nothing:
+/// its peak is the DOF arrays and the sparse coefficients, 20 bytes per estimated non-zero
+/// (estimatedClosedFormNonZeros), assembled in place and streamed to the cache. Against measured peaks (VmHWM; 2D disks 128²–512² with 50–200 modes, 3D
 /// balls 32³–64³ with 100–200 modes, a 32³ box) the model with the exact DOF counts is 0.92–1.17
 /// of the peak; the estimate, with sampled DOF counts and the margin, 1.07–1.40.
 

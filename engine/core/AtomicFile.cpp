@@ -23,7 +23,7 @@ std::string failure(std::string_view what, const fs::path& path, const std::stri
 }
 
 /// Writes all of `pieces` to a new file; the system's reason on failure.
-void writeAll(const fs::path& file, std::initializer_list<std::string_view> pieces,
+void writeAll(const fs::path& file, std::span<const std::string_view> pieces,
               std::string_view what, const fs::path& finalPath) {
     const int fd = ::open(file.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
     if (fd < 0) throw Error(failure(what, finalPath, std::strerror(errno)));
@@ -57,6 +57,10 @@ void writeFileAtomically(const fs::path& path, std::string_view bytes, std::stri
 
 void writeFileAtomically(const fs::path& path, std::initializer_list<std::string_view> pieces,
                          std::string_view what) {
+    writeFileAtomically(path, std::span<const std::string_view>(pieces.begin(), pieces.size()), what);
+}
+
+void writeFileAtomically(const fs::path& path, std::span<const std::string_view> pieces, std::string_view what) {
     writeFileAtomically(
         path, what, [&](const fs::path& temporary) { writeAll(temporary, pieces, what, path); });
 }

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <functional>
 #include <initializer_list>
+#include <span>
 #include <string_view>
 
 namespace modeflow {
@@ -24,6 +25,9 @@ void writeFileAtomically(const std::filesystem::path& path, std::string_view byt
 /// checksum), written without joining them in memory first.
 void writeFileAtomically(const std::filesystem::path& path,
                          std::initializer_list<std::string_view> pieces, std::string_view what);
+/// The same for pieces counted at run time (a cache's records and arrays).
+void writeFileAtomically(const std::filesystem::path& path, std::span<const std::string_view> pieces,
+                         std::string_view what);
 
 /// The same for writers that need a file name (OpenVDB, image encoders): `write` writes the
 /// temporary file it is given, then it is renamed over `path`. Whatever `write` throws is

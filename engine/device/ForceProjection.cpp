@@ -87,7 +87,7 @@ ForceProjectionKernel::ForceProjectionKernel(const vulkan::VulkanContext& contex
                                              const ForceProjectionOptions& options)
     : mQuantity(quantity),
       mDofCount(std::uint32_t(cache.faces.size())),
-      mModeCount(std::uint32_t(cache.velocity.modes.cols())),
+      mModeCount(std::uint32_t(cache.velocity.eigenvalues.size())),
       mFaceTotal(std::uint64_t(MacGrid::fromSpec(cache.grid).faceTotal())),
       mBlockSize(blockSizeFor(context, mDofCount, mModeCount, options)),
       mBlockCount((mDofCount + mBlockSize - 1) / mBlockSize),

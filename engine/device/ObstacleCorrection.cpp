@@ -9,6 +9,7 @@
 #include "engine/core/Error.h"
 #include "engine/device/DeviceCoefficients.h"
 #include "engine/device/DofFaces.h"
+#include "engine/device/SeparableTransform.h"
 #include "engine/vulkan/CommandSequence.h"
 #include "shaders/ObstacleParams.h"
 #include "shaders/modal_correct.spv.h"
@@ -31,7 +32,7 @@ ObstacleCorrection::ObstacleCorrection(const vulkan::VulkanContext& context, con
     : mContext(context),
       mGrid(MacGrid::fromSpec(cache.grid)),
       mDofCount(std::uint32_t(cache.faces.size())),
-      mModeCount(std::uint32_t(cache.velocity.modes.cols())),
+      mModeCount(std::uint32_t(cache.velocity.eigenvalues.size())),
       mFaces(uploadDofFaces(context, cache)),
       mObstacles(context, maxObstacles * sizeof(shaders::ObstacleRecord), "obstacles"),
       mMismatch(zeros(context, std::size_t(mGrid.faceTotal()), "obstacle mismatch")),
@@ -62,8 +63,9 @@ void ObstacleCorrection::setObstacles(std::span<const MovingObstacle> obstacles,
     mObstacleCount = std::uint32_t(records.size());
 }
 
-void ObstacleCorrection::record(vulkan::CommandSequence& sequence, const ModeBuffer& modes, const vulkan::DeviceBuffer& faceField,
-                                const vulkan::DeviceBuffer& v) const {
+template <typename Project>
+void ObstacleCorrection::recordWith(vulkan::CommandSequence& sequence, const vulkan::DeviceBuffer& faceField,
+                                    const vulkan::DeviceBuffer& v, Project&& project) const {
     if (mObstacleCount == 0) return;
     requireWords("obstacle_mismatch", faceField, std::uint64_t(mGrid.faceTotal()));
     requireWords("modal_correct", v, mModeCount);
@@ -81,10 +83,20 @@ void ObstacleCorrection::record(vulkan::CommandSequence& sequence, const ModeBuf
     }
     const std::array<const vulkan::DeviceBuffer*, 4> mismatchBuffers{&mFaces, &faceField, &mObstacles, &mMismatch};
     sequence.dispatch(mMismatchKernel, mismatchBuffers, params, groupsFor(mContext, mDofCount, 64));
-    mProjection.record(sequence, modes, mMismatch, mCorrection);
+    project();
     const std::array<const vulkan::DeviceBuffer*, 2> correctBuffers{&v, &mCorrection};
     sequence.dispatch(mCorrectKernel, correctBuffers, shaders::ModalCorrectParams{mModeCount, 0, 0, 0},
                       (mModeCount + 63) / 64);
+}
+
+void ObstacleCorrection::record(vulkan::CommandSequence& sequence, const ModeBuffer& modes, const vulkan::DeviceBuffer& faceField,
+                                const vulkan::DeviceBuffer& v) const {
+    recordWith(sequence, faceField, v, [&] { mProjection.record(sequence, modes, mMismatch, mCorrection); });
+}
+
+void ObstacleCorrection::record(vulkan::CommandSequence& sequence, const SeparableTransformKernels& transforms,
+                                const vulkan::DeviceBuffer& faceField, const vulkan::DeviceBuffer& v) const {
+    recordWith(sequence, faceField, v, [&] { transforms.recordFaceFieldProjection(sequence, mMismatch, mCorrection); });
 }
 
 }  // namespace modeflow::device

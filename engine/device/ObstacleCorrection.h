@@ -22,6 +22,7 @@ class VulkanContext;
 namespace modeflow::device {
 
 class ModeBuffer;
+class SeparableTransformKernels;
 
 class ObstacleCorrection {
 public:
@@ -36,8 +37,16 @@ public:
     /// Records v −= Ψᵀ⋆(mismatch of `faceField`) with the basis in `modes`; nothing without obstacles.
     void record(vulkan::CommandSequence& sequence, const ModeBuffer& modes, const vulkan::DeviceBuffer& faceField,
                 const vulkan::DeviceBuffer& v) const;
+    /// The same with a closed-form basis's transforms.
+    void record(vulkan::CommandSequence& sequence, const SeparableTransformKernels& transforms,
+                const vulkan::DeviceBuffer& faceField, const vulkan::DeviceBuffer& v) const;
 
 private:
+    /// The mismatch, then `project` (mismatch → correction), then v −= correction.
+    template <typename Project>
+    void recordWith(vulkan::CommandSequence& sequence, const vulkan::DeviceBuffer& faceField,
+                    const vulkan::DeviceBuffer& v, Project&& project) const;
+
     const vulkan::VulkanContext& mContext;
     MacGrid mGrid;
     std::uint32_t mDofCount = 0;

@@ -37,7 +37,12 @@ Simulation::Simulation(const vulkan::VulkanContext& context, const BasisCache& c
     : mSettings(supported(std::move(settings))),
       mStepper(context, coefficients, mSettings.fluid,
                DeviceStepSettings{mSettings.integrator}),
-      mModes(context, cache.velocity.modes, mSettings.basisPrecision),
+      mModes(cache.velocity.source == BasisSource::ClosedForm
+                 ? nullptr
+                 : std::make_unique<ModeBuffer>(context, cache.velocity.modes, mSettings.basisPrecision)),
+      mSeparable(cache.velocity.source == BasisSource::ClosedForm
+                     ? std::make_unique<SeparableTransformKernels>(context, cache)
+                     : nullptr),
       mReconstruction(context, cache),
       mFaceVelocity(mReconstruction.makeFaceField("grid velocity")),
       mForceField(context, cache, mSettings.smokeScale),
@@ -99,22 +104,35 @@ void Simulation::recordStep(std::vector<std::size_t>& boundaries) {
     if (forcesActive()) {
         mForceField.record(mSequence, mSettings.buoyancy, mSmoke.temperature(), &mSmoke.mask(),
                            mForceDensity);
-        mProjection.record(mSequence, mModes, mForceDensity, mStepper.forceBuffer());
+        if (mSeparable)
+            mSeparable->recordProjection(mSequence, mForceDensity, mStepper.forceBuffer());
+        else
+            mProjection.record(mSequence, *mModes, mForceDensity, mStepper.forceBuffer());
     }
     boundaries.push_back(mSequence.dispatchCount());
     mStepper.recordStep(mSequence, dt, mSubsteps);
     boundaries.push_back(mSequence.dispatchCount());
-    mReconstruction.record(mSequence, mModes, mStepper.stateBuffer(), mFaceVelocity);
+    recordReconstruction();
     boundaries.push_back(mSequence.dispatchCount());
     if (!mSettings.obstacles.empty()) {
         // Where the obstacles are at the end of the step, which the advection then sees.
         mObstacles.setObstacles(mSettings.obstacles, mTime + dt);
-        mObstacles.record(mSequence, mModes, mFaceVelocity, mStepper.stateBuffer());
-        mReconstruction.record(mSequence, mModes, mStepper.stateBuffer(), mFaceVelocity);
+        if (mSeparable)
+            mObstacles.record(mSequence, *mSeparable, mFaceVelocity, mStepper.stateBuffer());
+        else
+            mObstacles.record(mSequence, *mModes, mFaceVelocity, mStepper.stateBuffer());
+        recordReconstruction();
     }
     boundaries.push_back(mSequence.dispatchCount());
     mAdvection.record(mSequence, mSmoke, mFaceVelocity, dt, mSettings.advection);
     boundaries.push_back(mSequence.dispatchCount());
+}
+
+void Simulation::recordReconstruction() {
+    if (mSeparable)
+        mSeparable->recordReconstruction(mSequence, mStepper.stateBuffer(), mFaceVelocity);
+    else
+        mReconstruction.record(mSequence, *mModes, mStepper.stateBuffer(), mFaceVelocity);
 }
 
 FrameStats Simulation::advanceSteps(int steps) {

@@ -5,12 +5,14 @@
 ///
 ///     force field (buoyancy from the smoke temperature + stirring splats) → projection f = Ψᵀ⋆F
 ///     → modal step (viscosity, LANS-α) → reconstruction u = Σ v_i Ψ_i
+///     (the basis's columns, or a closed-form basis's separable transforms)
 ///     → moving obstacles (v −= projected mismatch, reconstruct again) → smoke advection + emitters
 ///
 /// with nothing read back; the host reads the velocity, smoke or grid velocity only when it asks
 /// (display, export). CPU reference of the whole chain: reference::Simulation.
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "engine/device/ForceField.h"
@@ -18,6 +20,7 @@
 #include "engine/device/ModalStepper.h"
 #include "engine/device/ModeBuffer.h"
 #include "engine/device/ObstacleCorrection.h"
+#include "engine/device/SeparableTransform.h"
 #include "engine/device/SmokeAdvection.h"
 #include "engine/device/SmokeState.h"
 #include "engine/device/VelocityReconstruction.h"
@@ -65,11 +68,16 @@ public:
 private:
     /// Records one whole step; adds each stage's dispatch range to `ranges`.
     void recordStep(std::vector<std::size_t>& boundaries);
+    /// The grid velocity of the modal state.
+    void recordReconstruction();
     bool forcesActive() const { return mSettings.buoyancy != 0.0 || mForceField.splatCount() > 0; }
 
     SimulationSettings mSettings;
     ModalStepper mStepper;
-    ModeBuffer mModes;
+    /// The basis: its columns (an eigensolved basis), or the transforms of a closed-form one,
+    /// whose columns are never formed.
+    std::unique_ptr<ModeBuffer> mModes;
+    std::unique_ptr<SeparableTransformKernels> mSeparable;
     ReconstructionKernel mReconstruction;
     vulkan::DeviceBuffer mFaceVelocity;
     ForceFieldKernel mForceField;

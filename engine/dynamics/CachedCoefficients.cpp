@@ -7,7 +7,7 @@ namespace modeflow {
 
 std::unique_ptr<StructuralCoefficients> coefficientsFromCache(const BasisCache& cache) {
     const auto& c = cache.coefficients;
-    const int n = int(cache.velocity.modes.cols());
+    const int n = int(cache.velocity.eigenvalues.size());
     if (c.storage == BasisCache::Coefficients::Storage::Dense)
         return std::make_unique<DenseCoefficients>(n, c.packed);
     std::vector<CoefficientEntry> entries(c.value.size());

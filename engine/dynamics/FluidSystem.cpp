@@ -84,4 +84,18 @@ void FluidSystem::linearize(const Eigen::VectorXd& v, Eigen::VectorXd& out,
     }
 }
 
+void FluidSystem::jacobianProduct(const Eigen::VectorXd& v, const Eigen::VectorXd& u,
+                                  Eigen::VectorXd& out) const {
+    // R(v) = apply(Mv, v) is bilinear: ∂R·u = apply(Mu, v) + apply(Mv, u).
+    Eigen::VectorXd second;
+    if (mFiltered) {
+        mCoefficients.apply(mMass.cwiseProduct(u), v, out);
+        mCoefficients.apply(mMass.cwiseProduct(v), u, second);
+    } else {
+        mCoefficients.apply(u, v, out);
+        mCoefficients.apply(v, u, second);
+    }
+    out += second;
+}
+
 }  // namespace modeflow

@@ -48,6 +48,8 @@ public:
     void rhs(const Eigen::VectorXd& v, Eigen::VectorXd& out) const override;
     void linearize(const Eigen::VectorXd& v, Eigen::VectorXd& out,
                    Eigen::MatrixXd& jac) const override;
+    void jacobianProduct(const Eigen::VectorXd& v, const Eigen::VectorXd& u,
+                         Eigen::VectorXd& out) const override;
 
 private:
     const StructuralCoefficients& mCoefficients;

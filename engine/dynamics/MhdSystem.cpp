@@ -76,4 +76,27 @@ void MhdSystem::linearize(const Eigen::VectorXd& x, Eigen::VectorXd& out,
     jac.bottomRightCorner(n, n) = -mv.transpose();
 }
 
+void MhdSystem::jacobianProduct(const Eigen::VectorXd& x, const Eigen::VectorXd& u,
+                                Eigen::VectorXd& out) const {
+    // Every term is bilinear: ∂(vᵀCv − FᵀCF)·(du, dF) = C(du, v) + C(v, du) − C(dF, F) − C(F, dF),
+    // ∂advect(v, F)·(du, dF) = advect(du, F) + advect(v, dF).
+    const int n = mCoefficients.size();
+    const Eigen::VectorXd v = x.head(n), f = x.tail(n), du = u.head(n), df = u.tail(n);
+    Eigen::VectorXd fluid, term, induction;
+    mCoefficients.apply(du, v, fluid);
+    mCoefficients.apply(v, du, term);
+    fluid += term;
+    if (mLorentzForce) {
+        mCoefficients.apply(df, f, term);
+        fluid -= term;
+        mCoefficients.apply(f, df, term);
+        fluid -= term;
+    }
+    mCoefficients.advect(du, f, induction);
+    mCoefficients.advect(v, df, term);
+    induction += term;
+    out.resize(2 * n);
+    out << fluid, induction;
+}
+
 }  // namespace modeflow

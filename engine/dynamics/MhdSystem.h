@@ -44,6 +44,8 @@ public:
     void rhs(const Eigen::VectorXd& x, Eigen::VectorXd& out) const override;
     void linearize(const Eigen::VectorXd& x, Eigen::VectorXd& out,
                    Eigen::MatrixXd& jac) const override;
+    void jacobianProduct(const Eigen::VectorXd& x, const Eigen::VectorXd& u,
+                         Eigen::VectorXd& out) const override;
 
 private:
     const StructuralCoefficients& mCoefficients;

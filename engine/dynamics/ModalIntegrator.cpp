@@ -4,6 +4,7 @@
 #include <cmath>
 #include <string>
 
+#include "engine/dynamics/Gmres.h"
 #include "engine/dynamics/ThreadCount.h"
 #include "engine/core/Error.h"
 
@@ -14,10 +15,12 @@ ModalIntegrator::ModalIntegrator(const ModalSystem& system, IntegratorSettings s
     if (!(settings.relativeTolerance > 0.0) || settings.maxIterations < 1) {
         throw Error("integrator: the Newton tolerance and iteration limit must be positive");
     }
-    if (!(settings.jacobianReuseBelow >= 0.0) || settings.threads < 0) {
-        throw Error("integrator: the Jacobian reuse threshold and thread count must not be "
-                    "negative");
+    if (!(settings.jacobianReuseBelow >= 0.0) || settings.threads < 0 ||
+        settings.denseNewtonLimit < 0) {
+        throw Error("integrator: the Jacobian reuse threshold, thread count and dense Newton limit "
+                    "must not be negative");
     }
+    if (settings.krylovRestart < 1) throw Error("integrator: the GMRES restart must be positive");
 }
 
 StepReport ModalIntegrator::step(Eigen::VectorXd& x, double h) {
@@ -98,11 +101,13 @@ StepReport ModalIntegrator::newton(const Eigen::VectorXd& x, Eigen::VectorXd& w,
     const double c = atMidpoint ? h : 0.5 * h;
     const double momentum = mass.cwiseProduct(x).norm();
     const double nearSolution = std::sqrt(mSettings.relativeTolerance);
+    const bool dense = mSystem.dimension() <= mSettings.denseNewtonLimit;
     Eigen::VectorXd y, r, residual;
     Eigen::MatrixXd jac;
     StepReport report;
+    report.solver = dense ? NewtonSolver::DenseLu : NewtonSolver::FixedPoint;
     double previous = INFINITY;  // relative residual of the last evaluation
-    bool freshJacobian = true;
+    bool freshJacobian = dense;
     for (;;) {
         y = atMidpoint ? Eigen::VectorXd(0.5 * (x + w)) : w;
         if (freshJacobian) {
@@ -125,6 +130,30 @@ StepReport ModalIntegrator::newton(const Eigen::VectorXd& x, Eigen::VectorXd& w,
             report.converged = false;
             return report;
         }
+        if (!dense) {
+            // Fixed-point updates that do not halve the residual, or would not reach the
+            // tolerance within the iteration limit (leaving Newton a few): the step is too stiff
+            // for them, Newton–Krylov from here on.
+            if (report.solver == NewtonSolver::FixedPoint && report.iterations > 0) {
+                const double rate = report.residual / previous;
+                const double needed =
+                    std::log(mSettings.relativeTolerance / report.residual) / std::log(rate);
+                if (rate > 0.5 || report.iterations + needed > mSettings.maxIterations - 5)
+                    report.solver = NewtonSolver::Krylov;
+            }
+            if (report.solver == NewtonSolver::FixedPoint) {
+                w -= residual.cwiseQuotient(mass);  // w = x + M⁻¹(c·R(y) + constant part)
+            } else {
+                // Solve just far enough that this update lands below the tolerance (the
+                // quadratic term is then far smaller), but never more loosely than 1e-2.
+                const double inner =
+                    std::clamp(0.1 * mSettings.relativeTolerance * scale / norm, 1e-12, 1e-2);
+                w -= krylovUpdate(y, h, residual, inner, report);
+            }
+            previous = report.residual;
+            ++report.iterations;
+            continue;
+        }
         if (freshJacobian) {
             jac *= -0.5 * h;
             jac.diagonal() += mass;
@@ -144,6 +173,23 @@ StepReport ModalIntegrator::newton(const Eigen::VectorXd& x, Eigen::VectorXd& w,
         w -= mLu.solve(residual);
         ++report.iterations;
     }
+}
+
+Eigen::VectorXd ModalIntegrator::krylovUpdate(const Eigen::VectorXd& y, double h,
+                                              const Eigen::VectorXd& residual,
+                                              double relativeTolerance, StepReport& report) const {
+    // Left-preconditioned by M⁻¹: (I − (h/2)M⁻¹∂R) δ = M⁻¹ residual.
+    const Eigen::VectorXd& mass = mSystem.mass();
+    Eigen::VectorXd jr;
+    const auto product = [&](const Eigen::VectorXd& v, Eigen::VectorXd& out) {
+        mSystem.jacobianProduct(y, v, jr);
+        out = v - (0.5 * h) * jr.cwiseQuotient(mass);
+    };
+    Eigen::VectorXd delta;
+    const GmresResult g = gmres(product, residual.cwiseQuotient(mass), delta, relativeTolerance,
+                                mSettings.krylovRestart, 20 * mSettings.krylovRestart);
+    report.jacobianProducts += g.iterations;
+    return delta;
 }
 
 Eigen::VectorXd ModalIntegrator::velocity(const Eigen::VectorXd& x, double t,

@@ -7,8 +7,14 @@
 ///   midpoint     M(x' − x) = h (R((x + x')/2) + f(t + h/2))                       (seed eq. 6.8)
 ///   trapezoidal  M(x' − x) = h/2 (R(x) + R(x')) + h/2 (f(t) + f(t + h))           (seed eq. 6.9)
 ///
-/// The implicit equations are solved by Newton with the system's analytic Jacobian until
-/// |residual| ≤ relativeTolerance · max(|Mx|, |Mx'|). Once the residual is below
+/// The implicit equations are solved by Newton until |residual| ≤ relativeTolerance ·
+/// max(|Mx|, |Mx'|), whichever linear solver takes the Newton updates, so that both conserve the
+/// energy alike. Up to denseNewtonLimit unknowns the system's analytic Jacobian is formed and
+/// factorized (LU, N³/3 flops and N² doubles). Above, nothing N² is formed: fixed-point
+/// iterations w ← x + M⁻¹(c·R(y) + f) (one contraction each) while each cuts the residual at
+/// least in half, which at the usual steps (h|∂R| ≲ 0.3) takes a handful; if one does not,
+/// Newton–Krylov from there: each update solved matrix-free by GMRES on Jacobian–vector products
+/// (two contractions each), preconditioned by the diagonal mass. With the dense Jacobian: once the residual is below
 /// jacobianReuseBelow, the iterates move so little that the last factorized Jacobian is as good as
 /// a fresh one (the error it adds is that residual times a factor of order h|C||v|), so the next
 /// evaluation computes the residual alone: a lighter pass over the coefficients and no new LU.
@@ -41,6 +47,11 @@ struct IntegratorSettings {
     /// N ≥ 200 on two idle cores), but on a machine busy with other processes every fork/join
     /// waits for a descheduled thread and steps get several times slower, hence the default 1.
     int threads = 1;
+    /// Newton with a dense LU of the Jacobian up to this many unknowns; fixed-point iterations,
+    /// then Newton–Krylov if they stall, above (an LU at N = 2000 costs ~3 GFLOP per Jacobian, a
+    /// contraction of the sparse box coefficients tens of milliseconds).
+    int denseNewtonLimit = 400;
+    int krylovRestart = 50;  ///< GMRES restart length (Krylov vectors kept)
 };
 
 class ModalIntegrator {
@@ -68,6 +79,10 @@ private:
     /// Newton on the midpoint or trapezoidal equation; see the .cpp.
     StepReport newton(const Eigen::VectorXd& x, Eigen::VectorXd& w, double h, bool atMidpoint,
                       const Eigen::VectorXd& constantPart);
+    /// The Newton update of a matrix-free step: (M − (h/2)∂R/∂y(y)) δ = residual, by GMRES to
+    /// `relativeTolerance` of |residual|.
+    Eigen::VectorXd krylovUpdate(const Eigen::VectorXd& y, double h, const Eigen::VectorXd& residual,
+                                 double relativeTolerance, StepReport& report) const;
     /// M⁻¹(R(x) + f(t)).
     Eigen::VectorXd velocity(const Eigen::VectorXd& x, double t, const ForceFunction* force) const;
     /// f(t) checked for size, or zero without a force.

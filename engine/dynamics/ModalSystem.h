@@ -27,6 +27,10 @@ public:
     /// out = R(x) and jac = ∂R/∂x, in as few passes over the coefficients as possible.
     virtual void linearize(const Eigen::VectorXd& x, Eigen::VectorXd& out,
                            Eigen::MatrixXd& jac) const = 0;
+    /// out = (∂R/∂x)(x)·u without forming the Jacobian (matrix-free Newton–Krylov): R is
+    /// quadratic, so this is a few contractions, O(stored coefficients).
+    virtual void jacobianProduct(const Eigen::VectorXd& x, const Eigen::VectorXd& u,
+                                 Eigen::VectorXd& out) const = 0;
 };
 
 }  // namespace modeflow

@@ -4,6 +4,11 @@
 
 namespace modeflow {
 
+/// How an implicit step was solved (engine/dynamics/ModalIntegrator.h): Newton with a dense LU
+/// of the Jacobian; fixed-point iterations alone; or fixed-point iterations that stopped
+/// contracting, finished by Newton–Krylov.
+enum class NewtonSolver { None, DenseLu, FixedPoint, Krylov };
+
 struct StepReport {
     /// Newton iterations (updates of the state) the implicit scheme took.
     int iterations = 0;
@@ -14,6 +19,10 @@ struct StepReport {
     /// false if Newton stopped at the iteration limit or stalled above the tolerance (the state is
     /// still the best iterate, so the caller may go on, warn, or reduce the step).
     bool converged = true;
+    /// Krylov: products with the Jacobian (two contractions each) over all iterations.
+    int jacobianProducts = 0;
+    /// None for the explicit schemes.
+    NewtonSolver solver = NewtonSolver::None;
 };
 
 }  // namespace modeflow

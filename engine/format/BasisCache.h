@@ -11,6 +11,7 @@
 #include <Eigen/Core>
 
 #include "engine/core/SceneSpec.h"
+#include "engine/format/SeparableModes.h"
 
 namespace modeflow {
 
@@ -31,8 +32,12 @@ struct BasisCache {
     Eigen::VectorXd cellStar;
 
     struct Velocity {
+        BasisSource source = BasisSource::Eigensolve;
         Eigen::VectorXd eigenvalues;   ///< κ², ascending within each range
-        Eigen::MatrixXd modes;         ///< faces × count, ⋆(n-1)-orthonormal fluxes
+        /// faces × count, ⋆(n-1)-orthonormal fluxes. A closed-form basis stores `separable`
+        /// instead and leaves this empty (runs go through its transforms, VelocityBasis.h).
+        Eigen::MatrixXd modes;
+        std::vector<SeparableMode> separable;  ///< closed form: one descriptor per mode
         std::vector<int> modeNumbers;  ///< 1-based index in the div-free spectrum
         int harmonic = 0;
         double penalty = 0.0;          ///< grad-div penalty used by the solve
@@ -42,8 +47,10 @@ struct BasisCache {
         ScalarBoundary boundary = ScalarBoundary::Neumann;
         std::vector<std::int64_t> cells;  ///< scalar DOFs (Dirichlet: cells with centre inside)
         Eigen::VectorXd cellStar;
+        BasisSource source = BasisSource::Eigensolve;
         Eigen::VectorXd eigenvalues;      ///< μ², ascending
-        Eigen::MatrixXd modes;            ///< cells × count, ⋆n-orthonormal
+        Eigen::MatrixXd modes;            ///< cells × count, ⋆n-orthonormal (as for velocity)
+        std::vector<SeparableMode> separable;
         int omittedConstants = 0;
     } scalar;
 

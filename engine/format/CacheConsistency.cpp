@@ -43,6 +43,27 @@ bool known(BasisCache::Coefficients::Storage storage) {
     return false;
 }
 
+bool known(BasisSource source) {
+    switch (source) {
+        case BasisSource::Eigensolve:
+        case BasisSource::ClosedForm:
+            return true;
+    }
+    return false;
+}
+
+/// Wave numbers 0..n_a (a Dirichlet scalar's reach n_a) on the grid's axes, 0 beyond; phases 0 or
+/// 1; finite amplitudes.
+bool separableWithinGrid(const std::vector<SeparableMode>& modes, const GridSpec& grid) {
+    for (const SeparableMode& m : modes)
+        for (int a = 0; a < 3; ++a) {
+            const int limit = a < grid.dim ? grid.resolution[a] : 0;
+            if (m.wave[a] < 0 || m.wave[a] > limit || m.shift[a] > 1 || !std::isfinite(m.amplitude[a]))
+                return false;
+        }
+    return true;
+}
+
 template <typename Index>
 bool allBelow(const std::vector<Index>& indices, std::int64_t end) {
     for (const Index i : indices)
@@ -81,10 +102,17 @@ void requireConsistentCache(const BasisCache& c, const std::string& where) {
             "a choice (wall, boundary or coefficient storage) is out of range");
 
     const auto& v = c.velocity;
-    const Eigen::Index n = v.modes.cols();
-    require(Eigen::Index(c.faces.size()) == v.modes.rows() && c.faceStar.size() == v.modes.rows() &&
-                allBelow(c.faces, MacGrid::fromSpec(c.grid).faceTotal()),
+    // A closed-form basis stores descriptors instead of columns.
+    const bool closed = v.source == BasisSource::ClosedForm, closedScalar = c.scalar.source == BasisSource::ClosedForm;
+    require(known(v.source) && known(c.scalar.source), "a basis source is out of range");
+    const Eigen::Index n = closed ? Eigen::Index(v.separable.size()) : v.modes.cols();
+    const Eigen::Index faceRows = closed ? Eigen::Index(c.faces.size()) : v.modes.rows();
+    require(Eigen::Index(c.faces.size()) == faceRows && c.faceStar.size() == faceRows &&
+                allBelow(c.faces, MacGrid::fromSpec(c.grid).faceTotal()) &&
+                (closed ? v.modes.size() == 0 : v.separable.empty()),
             "its face degrees of freedom disagree with the grid or the velocity modes");
+    require(separableWithinGrid(v.separable, c.grid) && separableWithinGrid(c.scalar.separable, c.grid),
+            "a closed-form mode's wave numbers or phases lie outside its grid");
     require(Eigen::Index(c.cells.size()) == c.cellStar.size() && allBelow(c.cells, cells),
             "its cell degrees of freedom disagree with the grid");
     require(v.eigenvalues.size() == n && Eigen::Index(v.modeNumbers.size()) == n &&
@@ -92,9 +120,11 @@ void requireConsistentCache(const BasisCache& c, const std::string& where) {
             "its velocity eigenvalues, mode numbers or harmonic count disagree with its modes");
 
     const auto& s = c.scalar;
-    require(Eigen::Index(s.cells.size()) == s.modes.rows() && s.cellStar.size() == s.modes.rows() &&
-                s.eigenvalues.size() == s.modes.cols() && allBelow(s.cells, cells) &&
-                s.omittedConstants >= 0,
+    const Eigen::Index cellRows = closedScalar ? Eigen::Index(s.cells.size()) : s.modes.rows();
+    const Eigen::Index scalarCount = closedScalar ? Eigen::Index(s.separable.size()) : s.modes.cols();
+    require(Eigen::Index(s.cells.size()) == cellRows && s.cellStar.size() == cellRows &&
+                s.eigenvalues.size() == scalarCount && allBelow(s.cells, cells) &&
+                s.omittedConstants >= 0 && (closedScalar ? s.modes.size() == 0 : s.separable.empty()),
             "its scalar modes disagree with their cells or eigenvalues");
 
     const auto& co = c.coefficients;

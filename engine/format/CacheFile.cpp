@@ -2,9 +2,11 @@
 
 #include <cerrno>
 #include <cstring>
+#include <deque>
 #include <fstream>
 #include <new>
 #include <string>
+#include <vector>
 
 #include "engine/core/AtomicFile.h"
 #include "engine/core/Error.h"
@@ -24,10 +26,25 @@ void putVector(ByteWriter& w, const Eigen::VectorXd& v) {
     w.array(v.data(), std::size_t(v.size()));
 }
 
-void putMatrix(ByteWriter& w, const Eigen::MatrixXd& m) {
-    w.pod<std::uint64_t>(std::uint64_t(m.rows()));
-    w.pod<std::uint64_t>(std::uint64_t(m.cols()));
-    w.values(m.data(), std::size_t(m.size()));
+/// Field by field (no padding bytes in the file): waves, shifts, amplitudes.
+void putSeparable(ByteWriter& w, const std::vector<SeparableMode>& modes) {
+    w.pod<std::uint64_t>(modes.size());
+    for (const SeparableMode& m : modes) {
+        for (std::int32_t l : m.wave) w.pod(l);
+        for (std::uint8_t s : m.shift) w.pod(s);
+        for (double a : m.amplitude) w.pod(a);
+    }
+}
+
+std::vector<SeparableMode> takeSeparable(ByteReader& r) {
+    constexpr std::size_t kBytes = 3 * (sizeof(std::int32_t) + sizeof(std::uint8_t) + sizeof(double));
+    std::vector<SeparableMode> modes(r.count(kBytes));
+    for (SeparableMode& m : modes) {
+        for (std::int32_t& l : m.wave) l = r.pod<std::int32_t>();
+        for (std::uint8_t& s : m.shift) s = r.pod<std::uint8_t>();
+        for (double& a : m.amplitude) a = r.pod<double>();
+    }
+    return modes;
 }
 
 /// The next `count` doubles into `to`, which may be null when count is 0 (an empty vector's
@@ -58,45 +75,93 @@ Eigen::MatrixXd takeMatrix(ByteReader& r) {
     return m;
 }
 
-std::string serialize(const BasisCache& c) {
-    ByteWriter w;
-    w.string(c.key);
-    w.pod<std::int32_t>(c.grid.dim);
-    for (int r : c.grid.resolution) w.pod<std::int32_t>(r);
-    for (double x : c.grid.boundsMin) w.pod(x);
-    for (double x : c.grid.boundsMax) w.pod(x);
-    for (bool periodic : c.grid.periodic) w.pod<std::uint8_t>(periodic);
-    w.pod<std::int32_t>(int(c.wall));
-    w.pod<std::int32_t>(int(c.boundary));
-    w.vector(c.cellFraction);
-    w.vector(c.faces);
-    putVector(w, c.faceStar);
-    w.vector(c.cells);
-    putVector(w, c.cellStar);
-    putVector(w, c.velocity.eigenvalues);
-    putMatrix(w, c.velocity.modes);
-    w.vector(c.velocity.modeNumbers);
-    w.pod<std::int32_t>(c.velocity.harmonic);
-    w.pod(c.velocity.penalty);
-    w.pod<std::int32_t>(int(c.scalar.boundary));
-    w.vector(c.scalar.cells);
-    putVector(w, c.scalar.cellStar);
-    putVector(w, c.scalar.eigenvalues);
-    putMatrix(w, c.scalar.modes);
-    w.pod<std::int32_t>(c.scalar.omittedConstants);
-    w.pod<std::int32_t>(int(c.coefficients.storage));
-    w.vector(c.coefficients.packed);
-    w.vector(c.coefficients.k);
-    w.vector(c.coefficients.i);
-    w.vector(c.coefficients.j);
-    w.vector(c.coefficients.value);
-    w.pod(c.coefficients.density);
-    w.pod<std::uint64_t>(c.timings.size());
-    for (const auto& [name, seconds] : c.timings) {
-        w.string(name);
-        w.pod(seconds);
+/// The payload as pieces to write one after another: the small records serialized, the large
+/// arrays (columns, coefficients) viewed where they lie, so that a cache of gigabytes (closed-form
+/// coefficients at N = 10 000) is never copied to be written.
+class Payload {
+public:
+    ByteWriter& small() { return mSmall.back(); }
+    /// A count and the values, viewed in place.
+    template <typename T>
+    void array(const T* values, std::size_t count) {
+        small().pod<std::uint64_t>(count);
+        view(values, count);
     }
-    return w.bytes();
+    template <typename T>
+    void view(const T* values, std::size_t count) {
+        mViews.push_back({reinterpret_cast<const char*>(values), count * sizeof(T)});
+        mOrder.push_back(false);
+        mSmall.emplace_back();
+        mOrder.push_back(true);
+    }
+    /// The pieces in order.
+    std::vector<std::string_view> pieces() const {
+        std::vector<std::string_view> out;
+        std::size_t small = 0, view = 0;
+        out.push_back(mSmall[small++].bytes());
+        for (std::size_t p = 0; p < mOrder.size(); ++p)
+            out.push_back(mOrder[p] ? std::string_view(mSmall[small++].bytes()) : mViews[view++]);
+        return out;
+    }
+
+private:
+    std::deque<ByteWriter> mSmall = std::deque<ByteWriter>(1);
+    std::vector<std::string_view> mViews;
+    std::vector<bool> mOrder;  ///< after the first small piece: true small, false view
+};
+
+void serialize(const BasisCache& c, Payload& p) {
+    p.small().string(c.key);
+    p.small().pod<std::int32_t>(c.grid.dim);
+    for (int r : c.grid.resolution) p.small().pod<std::int32_t>(r);
+    for (double x : c.grid.boundsMin) p.small().pod(x);
+    for (double x : c.grid.boundsMax) p.small().pod(x);
+    for (bool periodic : c.grid.periodic) p.small().pod<std::uint8_t>(periodic);
+    p.small().pod<std::int32_t>(int(c.wall));
+    p.small().pod<std::int32_t>(int(c.boundary));
+    p.array(c.cellFraction.data(), c.cellFraction.size());
+    p.array(c.faces.data(), c.faces.size());
+    p.array(c.faceStar.data(), std::size_t(c.faceStar.size()));
+    p.array(c.cells.data(), c.cells.size());
+    p.array(c.cellStar.data(), std::size_t(c.cellStar.size()));
+    p.small().pod<std::int32_t>(int(c.velocity.source));
+    putVector(p.small(), c.velocity.eigenvalues);
+    p.small().pod<std::uint64_t>(std::uint64_t(c.velocity.modes.rows()));
+    p.small().pod<std::uint64_t>(std::uint64_t(c.velocity.modes.cols()));
+    p.view(c.velocity.modes.data(), std::size_t(c.velocity.modes.size()));
+    putSeparable(p.small(), c.velocity.separable);
+    p.small().vector(c.velocity.modeNumbers);
+    p.small().pod<std::int32_t>(c.velocity.harmonic);
+    p.small().pod(c.velocity.penalty);
+    p.small().pod<std::int32_t>(int(c.scalar.boundary));
+    p.array(c.scalar.cells.data(), c.scalar.cells.size());
+    p.array(c.scalar.cellStar.data(), std::size_t(c.scalar.cellStar.size()));
+    p.small().pod<std::int32_t>(int(c.scalar.source));
+    putVector(p.small(), c.scalar.eigenvalues);
+    p.small().pod<std::uint64_t>(std::uint64_t(c.scalar.modes.rows()));
+    p.small().pod<std::uint64_t>(std::uint64_t(c.scalar.modes.cols()));
+    p.view(c.scalar.modes.data(), std::size_t(c.scalar.modes.size()));
+    putSeparable(p.small(), c.scalar.separable);
+    p.small().pod<std::int32_t>(c.scalar.omittedConstants);
+    p.small().pod<std::int32_t>(int(c.coefficients.storage));
+    p.array(c.coefficients.packed.data(), c.coefficients.packed.size());
+    p.array(c.coefficients.k.data(), c.coefficients.k.size());
+    p.array(c.coefficients.i.data(), c.coefficients.i.size());
+    p.array(c.coefficients.j.data(), c.coefficients.j.size());
+    p.array(c.coefficients.value.data(), c.coefficients.value.size());
+    p.small().pod(c.coefficients.density);
+    p.small().pod<std::uint64_t>(c.timings.size());
+    for (const auto& [name, seconds] : c.timings) {
+        p.small().string(name);
+        p.small().pod(seconds);
+    }
+}
+
+BasisSource takeSource(ByteReader& r) {
+    const auto value = r.pod<std::int32_t>();
+    if (value != int(BasisSource::Eigensolve) && value != int(BasisSource::ClosedForm))
+        r.fail("a basis source is out of range");
+    return BasisSource(value);
 }
 
 BasisCache deserialize(std::string_view payload, const std::string& where) {
@@ -118,16 +183,20 @@ BasisCache deserialize(std::string_view payload, const std::string& where) {
     c.faceStar = takeVector(r);
     c.cells = r.vector<std::int64_t>();
     c.cellStar = takeVector(r);
+    c.velocity.source = takeSource(r);
     c.velocity.eigenvalues = takeVector(r);
     c.velocity.modes = takeMatrix(r);
+    c.velocity.separable = takeSeparable(r);
     c.velocity.modeNumbers = r.vector<int>();
     c.velocity.harmonic = r.pod<std::int32_t>();
     c.velocity.penalty = r.pod<double>();
     c.scalar.boundary = ScalarBoundary(r.pod<std::int32_t>());
     c.scalar.cells = r.vector<std::int64_t>();
     c.scalar.cellStar = takeVector(r);
+    c.scalar.source = takeSource(r);
     c.scalar.eigenvalues = takeVector(r);
     c.scalar.modes = takeMatrix(r);
+    c.scalar.separable = takeSeparable(r);
     c.scalar.omittedConstants = r.pod<std::int32_t>();
     c.coefficients.storage = BasisCache::Coefficients::Storage(r.pod<std::int32_t>());
     c.coefficients.packed = r.vector<double>();
@@ -196,16 +265,26 @@ Header readHeader(OpenCache& file) {
 }  // namespace
 
 void writeCache(const std::filesystem::path& path, const BasisCache& cache) {
-    const std::string payload = serialize(cache);
+    Payload payload;
+    serialize(cache, payload);
+    const std::vector<std::string_view> pieces = payload.pieces();
+    std::uint64_t size = 0, hash = fnv1a64({});
+    for (const std::string_view piece : pieces) {
+        size += piece.size();
+        hash = fnv1a64(piece, hash);
+    }
     ByteWriter header;
     header.pod(kMagic);
     header.pod(kCacheFormatVersion);
     header.pod<std::uint32_t>(0);
     header.pod(fnv1a64(cache.key));
-    header.pod<std::uint64_t>(payload.size());
+    header.pod<std::uint64_t>(size);
     ByteWriter checksum;
-    checksum.pod(fnv1a64(payload));
-    writeFileAtomically(path, {header.bytes(), payload, checksum.bytes()}, "cache file");
+    checksum.pod(hash);
+    std::vector<std::string_view> file{header.bytes()};
+    file.insert(file.end(), pieces.begin(), pieces.end());
+    file.push_back(checksum.bytes());
+    writeFileAtomically(path, file, "cache file");
 }
 
 BasisCache readCache(const std::filesystem::path& path) {

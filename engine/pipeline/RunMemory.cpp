@@ -3,6 +3,8 @@
 #include <cstdint>
 
 #include "precompute/PrecomputeMemory.h"
+#include "precompute/closedform/ClosedFormBasis.h"
+#include "precompute/closedform/ClosedFormCoefficients.h"
 
 namespace modeflow {
 
@@ -11,8 +13,15 @@ RunMemory requireRunMemory(const SceneSpec& scene, BackendKind backend) {
     const bool device = backend == BackendKind::Vulkan;
     std::int64_t smokeCells = 1;
     for (int a = 0; a < grid.dim; ++a) smokeCells *= std::int64_t{grid.resolution[a]} * scene.smoke.resolutionScale;
-    const RunMemory memory = estimateRunMemory(smokeCells, estimatePrecomputeMemory(scene).velocityDofs,
-                                               scene.basis.velocityCount(), device);
+    const int modes = scene.basis.velocityCount();
+    // A closed-form basis (whole box, free slip) has sparse coefficients and no columns: its
+    // transforms' buffers are a few face fields.
+    const bool closedForm = hasClosedFormVelocity(scene);
+    const std::int64_t dofs = estimatePrecomputeMemory(scene).velocityDofs;
+    const double coefficientBytes = closedForm ? kSparseEntryBytes * estimatedClosedFormNonZeros(grid.dim, modes)
+                                               : denseCoefficientBytes(modes);
+    const double columnBytes = closedForm ? 8.0 * 8.0 * double(dofs) : 8.0 * double(dofs) * modes;
+    const RunMemory memory = estimateRunMemory(smokeCells, columnBytes, coefficientBytes, device);
     const bool smoke = memory.smokeBytes > memory.basisBytes;
     requireMemory(memory.peakBytes,
                   gridResolutionText(grid) + " with [smoke].resolution_scale = " +

@@ -19,16 +19,21 @@
 #include <Eigen/Core>
 
 #include "engine/format/BasisCache.h"
+#include "engine/format/VelocityBasis.h"
 #include "engine/simulation/ProjectionWeights.h"
 
 namespace modeflow::reference {
 
-/// f_k = Σ_d Ψ_k[d] w_d q_d, q given per DOF (cache.faces order).
+/// f_k = Σ_d Ψ_k[d] w_d q_d, q given per DOF (cache.faces order); by the transposed separable
+/// transforms for a closed-form basis.
 /// @throw modeflow::Error when q is not one value per DOF.
+Eigen::VectorXd projectForce(const VelocityBasis& basis, const Eigen::VectorXd& q, FaceQuantity quantity);
+/// The same through a VelocityBasis made for the call.
 Eigen::VectorXd projectForce(const BasisCache& cache, const Eigen::VectorXd& q, FaceQuantity quantity);
 
 /// projectForce of a whole-grid face field (MacGrid face numbering), read on the DOF faces.
 /// @throw modeflow::Error when the field is not one value per face of the cache's grid.
+Eigen::VectorXd projectFaceField(const VelocityBasis& basis, std::span<const double> faceField);
 Eigen::VectorXd projectFaceField(const BasisCache& cache, std::span<const double> faceField);
 
 }  // namespace modeflow::reference

@@ -28,10 +28,14 @@ std::vector<double> obstacleMismatch(const BasisCache& cache, std::span<const do
     return mismatch;
 }
 
+Eigen::VectorXd obstacleCorrection(const VelocityBasis& basis, std::span<const double> faceField,
+                                   std::span<const MovingObstacle> obstacles, double t) {
+    return projectFaceField(basis, obstacleMismatch(basis.cache(), faceField, obstacles, t));
+}
+
 Eigen::VectorXd obstacleCorrection(const BasisCache& cache, std::span<const double> faceField,
                                    std::span<const MovingObstacle> obstacles, double t) {
-    const std::vector<double> mismatch = obstacleMismatch(cache, faceField, obstacles, t);
-    return projectFaceField(cache, mismatch);
+    return obstacleCorrection(VelocityBasis(cache), faceField, obstacles, t);
 }
 
 }  // namespace modeflow::reference

@@ -10,6 +10,7 @@
 #include <Eigen/Core>
 
 #include "engine/format/BasisCache.h"
+#include "engine/format/VelocityBasis.h"
 #include "engine/simulation/MovingObstacle.h"
 
 namespace modeflow::reference {
@@ -21,6 +22,8 @@ std::vector<double> obstacleMismatch(const BasisCache& cache, std::span<const do
                                      std::span<const MovingObstacle> obstacles, double t);
 
 /// The correction Δv (projectFaceField of the mismatch) that `v -= Δv` applies.
+Eigen::VectorXd obstacleCorrection(const VelocityBasis& basis, std::span<const double> faceField,
+                                   std::span<const MovingObstacle> obstacles, double t);
 Eigen::VectorXd obstacleCorrection(const BasisCache& cache, std::span<const double> faceField,
                                    std::span<const MovingObstacle> obstacles, double t);
 

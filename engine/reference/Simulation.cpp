@@ -16,6 +16,7 @@ namespace modeflow::reference {
 Simulation::Simulation(const BasisCache& cache, const StructuralCoefficients& coefficients,
                        SimulationSettings settings, std::vector<std::uint8_t> smokeMask)
     : mCache(cache),
+      mBasis(cache),
       mSettings(std::move(settings)),
       mStepper(coefficients, mSettings),
       mAdvection(MacGrid::fromSpec(cache.grid), mSettings.smokeScale, std::move(smokeMask)),
@@ -30,7 +31,7 @@ Simulation::Simulation(const BasisCache& cache, const StructuralCoefficients& co
 
 std::vector<double> Simulation::faceMagneticField() const {
     if (!mSettings.mhd) return {};
-    return reconstructFaceField(mCache, mStepper.magneticField());
+    return reconstructFaceField(mBasis, mStepper.magneticField());
 }
 
 void Simulation::restore(double time, const Eigen::VectorXd& v, const SmokeFields& smoke) {
@@ -69,17 +70,17 @@ FrameStats Simulation::advanceSteps(int steps) {
         if (mSettings.buoyancy != 0.0 || !mSplats.empty()) {
             const BuoyancyInput buoyancy{mSettings.buoyancy, mSettings.smokeScale,
                                          mFields.temperature, mAdvection.fluidMask()};
-            force = projectForce(mCache, forceDensity(mCache, buoyancy, mSplats), FaceQuantity::Density);
+            force = projectForce(mBasis, forceDensity(mCache, buoyancy, mSplats), FaceQuantity::Density);
         }
         mStepper.setForce(force);
         const StepReport report = mStepper.step(dt);
         requireFiniteModalState(mStepper.state(), ++mStep, mTime + dt);
         stats.maxIterations = std::max(stats.maxIterations, report.iterations);
         stats.unconvergedSteps += report.converged ? 0 : 1;
-        mFaceVelocity = reconstructFaceField(mCache, velocity());
+        mFaceVelocity = reconstructFaceField(mBasis, velocity());
         if (!mSettings.obstacles.empty()) {
-            setVelocity(velocity() - obstacleCorrection(mCache, mFaceVelocity, mSettings.obstacles, mTime + dt));
-            mFaceVelocity = reconstructFaceField(mCache, velocity());
+            setVelocity(velocity() - obstacleCorrection(mBasis, mFaceVelocity, mSettings.obstacles, mTime + dt));
+            mFaceVelocity = reconstructFaceField(mBasis, velocity());
         }
         mAdvection.step(std::span<const double>(mFaceVelocity), dt, mSettings.advection,
                         activeEmitters(mSettings.emitters, mTime), mFields);

@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "engine/format/VelocityBasis.h"
 #include "engine/reference/ModalStepper.h"
 #include "engine/reference/SmokeAdvection.h"
 #include "engine/simulation/Simulator.h"
@@ -43,6 +44,7 @@ public:
 
 private:
     const BasisCache& mCache;
+    VelocityBasis mBasis;  ///< Ψ v and Ψᵀ q: the columns, or a closed-form basis's transforms
     SimulationSettings mSettings;
     ModalStepper mStepper;
     SmokeAdvection mAdvection;

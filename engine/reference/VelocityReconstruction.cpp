@@ -21,12 +21,12 @@ std::vector<double> fluxesToFaceField(const BasisCache& cache, const Eigen::Vect
     return field;
 }
 
+std::vector<double> reconstructFaceField(const VelocityBasis& basis, const Eigen::VectorXd& v) {
+    return fluxesToFaceField(basis.cache(), basis.fluxes(v));
+}
+
 std::vector<double> reconstructFaceField(const BasisCache& cache, const Eigen::VectorXd& v) {
-    const Eigen::MatrixXd& modes = cache.velocity.modes;
-    if (v.size() != modes.cols())
-        throw Error("reconstruction: " + std::to_string(v.size()) + " coefficients for a basis of " +
-                    std::to_string(modes.cols()) + " modes");
-    return fluxesToFaceField(cache, modes * v);
+    return reconstructFaceField(VelocityBasis(cache), v);
 }
 
 std::vector<Vec3> cellCentreVelocity(const MacGrid& grid, std::span<const double> faceField) {

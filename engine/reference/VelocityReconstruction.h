@@ -12,6 +12,7 @@
 
 #include "engine/core/MacGrid.h"
 #include "engine/format/BasisCache.h"
+#include "engine/format/VelocityBasis.h"
 
 namespace modeflow::reference {
 
@@ -19,7 +20,10 @@ namespace modeflow::reference {
 /// @throw modeflow::Error when `fluxes` is not one value per DOF or a DOF is not a grid face.
 std::vector<double> fluxesToFaceField(const BasisCache& cache, const Eigen::VectorXd& fluxes);
 
-/// The face field of Σ_i v_i Ψ_i. @throw modeflow::Error when v is not one value per mode.
+/// The face field of Σ_i v_i Ψ_i (by the separable transforms for a closed-form basis).
+/// @throw modeflow::Error when v is not one value per mode.
+std::vector<double> reconstructFaceField(const VelocityBasis& basis, const Eigen::VectorXd& v);
+/// The same through a VelocityBasis made for the call.
 std::vector<double> reconstructFaceField(const BasisCache& cache, const Eigen::VectorXd& v);
 
 /// Velocity at every cell centre (cellIndex order): per axis the mean of the cell's two faces

@@ -5,8 +5,10 @@
 /// resolution_scale^dim):
 ///   program       48 MiB (CPU reference) or 150 MiB (a Vulkan device: lavapipe's driver; its
 ///                 device memory is host memory)
-///   basis         3 × (V·K·8 + K²(K−1)/2·8): the cache, the dynamics' coefficients, the device's
-///                 copies
+///   basis         3 × (column bytes + coefficient bytes): the cache, the dynamics' coefficients,
+///                 the device's copies; the columns V·K·8 (a closed-form basis has none: its
+///                 transforms' buffers, counted as 8 face fields, V·64), the coefficients
+///                 K²(K−1)/2·8 dense, 20 bytes per non-zero sparse
 ///   smoke         150 (CPU reference: double fields, back-traces, MacCormack temporaries, frames)
 ///                 or 200 (device: float fields, their staging, frames) bytes per smoke cell
 /// times 1.15. Measured peaks of `modeflow run` (2D disk 128² with 40 and 200 modes, smoke scales
@@ -23,7 +25,9 @@ struct RunMemory {
 };
 
 /// `device`: a Vulkan device runs it (else the CPU reference).
-RunMemory estimateRunMemory(std::int64_t smokeCells, std::int64_t velocityDofs, int modes,
-                            bool device);
+RunMemory estimateRunMemory(std::int64_t smokeCells, double columnBytes, double coefficientBytes, bool device);
+
+/// The bytes of dense packed coefficients of `modes` modes, K²(K−1)/2·8.
+double denseCoefficientBytes(int modes);
 
 }  // namespace modeflow

@@ -22,12 +22,14 @@ std::vector<ShapedBasis> shapedBases(const BasisSpec& basis) {
 }
 
 BasisCache leadingModes(const BasisCache& cache, int modes) {
-    const auto count = int(cache.velocity.modes.cols());
+    const auto count = int(cache.velocity.eigenvalues.size());
     if (modes < 1 || modes > count)
         throw Error("shaped basis of " + std::to_string(modes) + " modes: the cache holds " +
                     std::to_string(count));
     BasisCache out = cache;
-    out.velocity.modes = cache.velocity.modes.leftCols(modes);
+    // The columns of an eigensolved basis, the descriptors of a closed-form one.
+    if (cache.velocity.modes.cols() > 0) out.velocity.modes = cache.velocity.modes.leftCols(modes);
+    if (!cache.velocity.separable.empty()) out.velocity.separable.resize(std::size_t(modes));
     out.velocity.eigenvalues = cache.velocity.eigenvalues.head(modes);
     out.velocity.modeNumbers.resize(std::size_t(modes));
     // The stored coefficients belong to the whole basis; leadingCoefficients gives the rest.

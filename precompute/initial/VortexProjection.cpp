@@ -6,6 +6,7 @@
 #include <string>
 
 #include "engine/core/Error.h"
+#include "engine/format/VelocityBasis.h"
 #include "precompute/dec/CubicalComplex.h"
 #include "precompute/dec/CutCellDec.h"
 
@@ -108,12 +109,12 @@ Eigen::VectorXd faceFluxes(const BasisCache& cache, const VelocityField& u) {
 }
 
 Eigen::VectorXd projectFluxes(const BasisCache& cache, const Eigen::VectorXd& fluxes) {
-    const Eigen::MatrixXd& modes = cache.velocity.modes;
-    if (fluxes.size() != modes.rows() || cache.faceStar.size() != modes.rows()) {
+    const VelocityBasis basis(cache);
+    if (fluxes.size() != basis.dofCount() || cache.faceStar.size() != basis.dofCount()) {
         throw Error("projection: " + std::to_string(fluxes.size()) + " face fluxes for a basis on " +
-                    std::to_string(modes.rows()) + " faces");
+                    std::to_string(basis.dofCount()) + " faces");
     }
-    return modes.transpose() * cache.faceStar.cwiseProduct(fluxes);
+    return basis.transposed(cache.faceStar.cwiseProduct(fluxes));
 }
 
 Eigen::VectorXd projectVortices(const BasisCache& cache, std::span<const VortexSpec> vortices,

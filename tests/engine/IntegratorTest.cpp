@@ -16,6 +16,7 @@
 #include "engine/dynamics/DenseCoefficients.h"
 #include "engine/dynamics/Diagnostics.h"
 #include "engine/dynamics/FluidSystem.h"
+#include "engine/dynamics/MhdSystem.h"
 #include "engine/dynamics/ModalIntegrator.h"
 #include "precompute/scene/SceneLoader.h"
 #include "engine/core/PackedLayout.h"
@@ -83,6 +84,39 @@ TEST_F(RandomState, MidpointConservesEnergyAtALargeStep) {
     std::printf("midpoint h|R|/|v| = 0.3, 1e4 steps: drift %.3g, Newton mean %.2f max %d, "
                 "Jacobians mean %.2f\n",
                 s.maxEnergyDrift, s.meanIterations, s.maxIterations, s.meanJacobians);
+}
+
+TEST_F(RandomState, NewtonKrylovMatchesTheDenseNewtonAndConservesEnergy) {
+    // denseNewtonLimit = 0: nothing N² formed; fixed-point iterations at a small step, Newton–
+    // Krylov once they stop contracting (the large step), to the same tolerance.
+    IntegratorSettings krylov{Integrator::Midpoint};
+    krylov.denseNewtonLimit = 0;
+    const double small = stepFor(mC, mV0, 0.05);
+    for (Integrator scheme : {Integrator::Midpoint, Integrator::Trapezoidal}) {
+        krylov.scheme = scheme;
+        for (const auto& [h, expected] : {std::pair{small, NewtonSolver::FixedPoint},
+                                          std::pair{mH, NewtonSolver::Krylov}}) {
+            ModalIntegrator dense(mSystem, {scheme}), matrixFree(mSystem, krylov);
+            Eigen::VectorXd a = mV0, b = mV0;
+            const StepReport first = dense.step(a, h);
+            const StepReport second = matrixFree.step(b, h);
+            EXPECT_EQ(first.solver, NewtonSolver::DenseLu);
+            EXPECT_EQ(second.solver, expected) << sceneKeyword(scheme) << ", h " << h;
+            EXPECT_EQ(second.jacobianProducts > 0, expected == NewtonSolver::Krylov);
+            EXPECT_EQ(second.jacobians, 0);
+            EXPECT_TRUE(second.converged);
+            EXPECT_LE((a - b).norm(), 1e-13 * a.norm()) << sceneKeyword(scheme) << ", h " << h;
+        }
+    }
+    krylov.scheme = Integrator::Midpoint;
+    ModalIntegrator midpoint(mSystem, krylov);
+    Eigen::VectorXd v = mV0;
+    const RunSummary s = run(midpoint, v, mH, 2000);
+    EXPECT_LE(s.maxEnergyDrift, 1e-10);
+    EXPECT_LE(s.maxResidual, 1e-13);
+    EXPECT_TRUE(s.converged);
+    std::printf("matrix-free midpoint, h|R|/|v| = 0.3, 2000 steps: drift %.3g, iterations mean %.2f max %d\n",
+                s.maxEnergyDrift, s.meanIterations, s.maxIterations);
 }
 
 /// Steps forward then back with −h; the relative distance from the start.
@@ -298,6 +332,24 @@ TEST(Forces, LinearInTimeForceIsExactForSecondOrderSchemes) {
     }
 }
 
+TEST(Integrators, JacobianProductsEqualTheAnalyticJacobian) {
+    const DenseCoefficients c = randomDense(12, 105);
+    FluidParameters lans;
+    lans.alpha = 0.3;
+    lans.kappaSquared = randomVector(12, 7).cwiseAbs();
+    const FluidSystem euler(c), filtered(c, lans);
+    const MhdSystem mhd(c);
+    for (const ModalSystem* system : std::initializer_list<const ModalSystem*>{&euler, &filtered, &mhd}) {
+        const int n = system->dimension();
+        const Eigen::VectorXd x = randomVector(n, 8), u = randomVector(n, 9);
+        Eigen::VectorXd r, product;
+        Eigen::MatrixXd jac;
+        system->linearize(x, r, jac);
+        system->jacobianProduct(x, u, product);
+        EXPECT_LE((product - jac * u).norm(), 1e-13 * (jac * u).norm()) << "dimension " << n;
+    }
+}
+
 TEST(Integrators, RejectBadInput) {
     const DenseCoefficients c = randomDense(6, 104);
     const FluidSystem system(c);
@@ -306,6 +358,9 @@ TEST(Integrators, RejectBadInput) {
     EXPECT_THROW(integrator.step(wrong, 0.1), Error);
     EXPECT_THROW(integrator.step(v, 0.1, Eigen::VectorXd::Ones(7)), Error);
     EXPECT_THROW(ModalIntegrator(system, {Integrator::Midpoint, 0.0, 10}), Error);
+    IntegratorSettings noRestart;
+    noRestart.krylovRestart = 0;
+    EXPECT_THROW(ModalIntegrator(system, noRestart), Error);
     EXPECT_EQ(parseIntegrator("trapezoidal", "--integrator"), Integrator::Trapezoidal);
     EXPECT_EQ(sceneKeyword(parseIntegrator("rk4", "--integrator")), "rk4");
     EXPECT_THROW(parseIntegrator("leapfrog", "--integrator"), Error);

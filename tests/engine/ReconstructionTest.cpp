@@ -36,10 +36,12 @@ double relativeDivergence(const BasisCache& cache, const std::vector<double>& fi
 TEST(Reconstruction, RealBasesGiveDivergenceFreeFaceFieldsOnTheWholeGrid) {
     // The periodic ones: the precompute's faces are MacGrid's, the seam's included, and the
     // divergence of the last cell along a periodic axis takes its upper face across the seam.
+    // The whole 3-torus is a closed-form basis: reconstructed by its transforms, no columns.
     for (const BasisCache* cache :
          {&testing::disk2d(), &testing::ball3d(), &testing::periodicChannel2d(),
           &testing::torusAroundDisk2d(), &testing::torus3d()}) {
-        const Eigen::VectorXd v = testing::randomVector(cache->velocity.modes.cols(), 3);
+        const Eigen::Index modes = cache->velocity.eigenvalues.size();
+        const Eigen::VectorXd v = testing::randomVector(modes, 3);
         const std::vector<double> field = reference::reconstructFaceField(*cache, v);
         const double divergence = relativeDivergence(*cache, field);
         std::cout << cache->grid.dim << "D real basis, periodic " << cache->grid.periodic[0]
@@ -47,7 +49,7 @@ TEST(Reconstruction, RealBasesGiveDivergenceFreeFaceFieldsOnTheWholeGrid) {
                   << ": max |div| / max |flux| = " << divergence << "\n";
         EXPECT_LE(divergence, 1e-12);
         // Each mode alone, too.
-        for (Eigen::Index i = 0; i < cache->velocity.modes.cols(); ++i)
+        for (Eigen::Index i = 0; i < modes; ++i)
             EXPECT_LE(relativeDivergence(*cache, reference::reconstructFaceField(*cache, Eigen::VectorXd::Unit(v.size(), i))),
                       1e-11)
                 << "mode " << i;

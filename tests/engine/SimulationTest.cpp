@@ -204,6 +204,52 @@ TEST_P(SimulationTest, MovingObstaclesMatchTheCpuReference) {
     expectNoValidationMessages();
 }
 
+TEST_P(SimulationTest, AClosedFormBoxRunsOnItsTransformsAndFollowsTheCpuReference) {
+    // A whole box with free-slip walls: closed-form modes, no columns on either side; buoyant
+    // smoke and a moving ball.
+    SceneSpec scene = testing::gridScene({12, 10, 9}, {0.0, 0.0, 0.0}, {1.2, 1.0, 0.9}, 3);
+    scene.name = "closed-form box";
+    scene.basis.velocityModes = {{1, 80}};
+    scene.basis.scalarModes = 0;
+    scene.simulation.dt = 0.02;
+    scene.output.stepsPerFrame = 5;
+    scene.smoke.buoyancy = 2.0;
+    SourceSpec source;
+    source.shape = testing::ball({0.6, 0.5, 0.15}, 0.12);
+    source.density = source.temperature = 1.0;
+    scene.sources = {source};
+    const RunInputs run = testing::sharedRun(scene);
+    ASSERT_EQ(run.cache.velocity.source, BasisSource::ClosedForm);
+    ASSERT_EQ(run.cache.velocity.modes.cols(), 0);
+    SimulationSettings settings = run.settings;
+    ObstacleSpec ball;
+    ball.radius = 0.15;
+    ball.path = {{0.0, {0.3, 0.5, 0.5}}, {1.0, {0.9, 0.5, 0.5}}};
+    settings.obstacles = {MovingObstacle{ball}};
+    {
+        device::Simulation device(context(), run.cache, *run.coefficients, settings, run.smokeMask, true);
+        reference::Simulation cpu(run.cache, *run.coefficients, settings, run.smokeMask);
+        FrameStats stats;
+        for (int frame = 0; frame < 2; ++frame) {
+            stats = device.advanceFrame();
+            cpu.advanceFrame();
+        }
+        const Eigen::VectorXd v = device.velocity(), expected = cpu.velocity();
+        ASSERT_GT(expected.norm(), 0.0);
+        const double error = (v - expected).lpNorm<Eigen::Infinity>() / expected.lpNorm<Eigen::Infinity>();
+        const double faceError = maxDifference(device.faceVelocity(), cpu.faceVelocity()) / maxAbs(cpu.faceVelocity());
+        const double densityError =
+            maxDifference(device.smoke().density, cpu.smoke().density) / maxAbs(cpu.smoke().density);
+        std::cout << "closed-form box, 10 steps: relative max differences: modes " << error << ", grid velocity "
+                  << faceError << ", density " << densityError << "; device ms per frame: forces " << stats.forcesMs
+                  << ", reconstruction " << stats.reconstructionMs << ", obstacles " << stats.obstaclesMs << "\n";
+        EXPECT_LE(error, 1e-4);
+        EXPECT_LE(faceError, 1e-4);
+        EXPECT_LE(densityError, 1e-4);
+    }
+    expectNoValidationMessages();
+}
+
 TEST_P(SimulationTest, EmittersFollowTheirTimeWindows) {
     const RunInputs& disk = hotDisk();
     SimulationSettings settings = disk.settings;

@@ -28,6 +28,11 @@ bounds_max = [1.0, 1.0, 1.0]
 shape = "box"
 min = [-0.9, -0.9, -0.9]
 max = [0.9, 0.9, 0.9]'
+# The whole grid box with free-slip walls: closed-form bases (descriptors, sparse coefficients).
+wholebox='[grid]
+resolution = [4, 3, 3]
+bounds_min = [0.0, 0.0, 0.0]
+bounds_max = [1.0, 1.0, 1.0]'
 smoke='[[source]]
 shape = "ball"
 center = [0.0, -0.5]
@@ -43,10 +48,11 @@ mhd = true
 velocity = "random"
 magnetic_energy = 0.5'
 scene box "$box" 4 ""
+scene wholebox "$wholebox" 6 ""
 
 caches="$here/corpus/CacheReader" checkpoints="$here/corpus/CheckpointReader"
 mkdir -p "$caches" "$checkpoints"
-for name in disk box; do
+for name in disk box wholebox; do
     cache=$("$modeflow" precompute "$work/$name.toml" --cache-dir "$work/cache" 2>/dev/null | tail -n 1)
     cp "$cache" "$caches/$name.mfbasis"
     # The payload alone: the target wraps inputs without the magic in a valid header and checksum.

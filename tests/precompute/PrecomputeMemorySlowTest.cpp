@@ -73,7 +73,17 @@ radius = 1.0
 velocity_modes = 60
 scalar_modes = 0
 )";
-    for (const auto& [name, text] : {std::pair{"disk.toml", disk}, std::pair{"ball.toml", ball}}) {
+    // A whole box with free-slip walls: closed-form bases, sparse coefficients (2.2 million).
+    const std::string box = R"([grid]
+resolution = [64, 64, 64]
+bounds_min = [0.0, 0.0, 0.0]
+bounds_max = [1.0, 1.0, 1.0]
+[basis]
+velocity_modes = 1000
+scalar_modes = 0
+)";
+    for (const auto& [name, text] :
+         {std::pair{"disk.toml", disk}, std::pair{"ball.toml", ball}, std::pair{"box.toml", box}}) {
         const fs::path scene = dir / name;
         std::ofstream(scene) << text;
         const double estimate = estimatePrecomputeMemory(loadScene(scene)).peakBytes;

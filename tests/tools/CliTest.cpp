@@ -100,6 +100,9 @@ TEST_F(Cli, InspectJsonReportsTheContractKeys) {
     EXPECT_LE(j["velocity"]["orthonormality_error"].get<double>(), 1e-10);
     EXPECT_EQ(j["scalar"]["count"], 4);
     EXPECT_EQ(j["scalar"]["boundary"], "neumann");
+    EXPECT_EQ(j["velocity"]["source"], "eigensolve");
+    EXPECT_EQ(j["scalar"]["source"], "eigensolve");
+    EXPECT_EQ(j["velocity"]["checked_modes"], 8);
     EXPECT_TRUE(j["timings"].contains("velocity_eigensolve"));
     EXPECT_EQ(j["coefficients"]["storage"], "dense");
     EXPECT_EQ(j["coefficients"]["antisymmetry_error"], 0.0);
@@ -135,6 +138,34 @@ scalar_modes = 2
     const RunResult text = run("inspect " + s.string() + " --cache-dir " + mCache.string());
     ASSERT_EQ(text.status, 0) << text.err;
     EXPECT_NE(text.out.find("grid       2D [16,8], periodic x, "), std::string::npos) << text.out;
+}
+
+TEST_F(Cli, InspectNamesTheClosedFormBasesOfAWholeBox) {
+    // No [[domain]] and free-slip walls: both bases in closed form, sparse coefficients.
+    const fs::path s = scene("box.toml", "[grid]\nresolution = [10, 8, 6]\nbounds_min = [0, 0, 0]\n"
+                                         "bounds_max = [1, 1, 1]\n[basis]\nvelocity_modes = 30\n"
+                                         "scalar_modes = 5\n");
+    RunResult r = run("inspect " + s.string() + " --cache-dir " + mCache.string() + " --json");
+    ASSERT_EQ(r.status, 0) << r.err;
+    const auto j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j["velocity"]["source"], "closed-form");
+    EXPECT_EQ(j["scalar"]["source"], "closed-form");
+    EXPECT_EQ(j["velocity"]["count"], 30);
+    EXPECT_EQ(j["velocity"]["checked_modes"], 30);
+    EXPECT_LE(j["velocity"]["max_divergence"].get<double>(), 1e-12);
+    EXPECT_LE(j["velocity"]["orthonormality_error"].get<double>(), 1e-12);
+    EXPECT_LE(j["scalar"]["orthonormality_error"].get<double>(), 1e-12);
+    EXPECT_EQ(j["coefficients"]["storage"], "sparse");
+    EXPECT_TRUE(j["timings"].contains("closed_form_velocity"));
+    r = run("inspect " + j["cache"]["path"].get<std::string>());
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.out.find("harmonic), closed-form"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("neumann modes, closed-form"), std::string::npos) << r.out;
+    // No-slip walls keep the eigensolver.
+    const fs::path noSlip = scene("noslip.toml", slurp(s) + "wall = \"no-slip\"\n");
+    r = run("inspect " + noSlip.string() + " --cache-dir " + mCache.string() + " --json");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(nlohmann::json::parse(r.out)["velocity"]["source"], "eigensolve");
 }
 
 TEST_F(Cli, HelpDescribesEverySubcommand) {

@@ -17,6 +17,8 @@ namespace {
 
 std::vector<double> toStd(const Eigen::VectorXd& v) { return {v.data(), v.data() + v.size()}; }
 
+const char* sourceName(BasisSource s) { return s == BasisSource::ClosedForm ? "closed-form" : "eigensolve"; }
+
 nlohmann::ordered_json summarize(const BasisCache& c, const std::filesystem::path& path) {
     const BasisChecks checks = checkBasis(c);
     const int n = c.grid.dim;
@@ -30,22 +32,27 @@ nlohmann::ordered_json summarize(const BasisCache& c, const std::filesystem::pat
     j["boundary"] = sceneKeyword(c.boundary);
     j["dofs"] = {{"faces", c.faces.size()}, {"cells", c.cells.size()}};
     j["velocity"] = {{"count", c.velocity.eigenvalues.size()},
+                     {"source", sourceName(c.velocity.source)},
                      {"eigenvalues", toStd(c.velocity.eigenvalues)},
                      {"mode_numbers", c.velocity.modeNumbers},
                      {"harmonic", c.velocity.harmonic},
                      {"max_divergence", checks.maxDivergence},
                      {"orthonormality_error", checks.velocityOrthonormality},
+                     // Modes the two checks covered: all, or a sample of a large closed-form basis.
+                     {"checked_modes", checks.velocityChecked},
                      {"gradient_penalty", c.velocity.penalty}};
     j["scalar"] = {{"count", c.scalar.eigenvalues.size()},
+                   {"source", sourceName(c.scalar.source)},
                    {"boundary", sceneKeyword(c.scalar.boundary)},
                    {"eigenvalues", toStd(c.scalar.eigenvalues)},
                    {"omitted_constants", c.scalar.omittedConstants},
-                   {"orthonormality_error", checks.scalarOrthonormality}};
+                   {"orthonormality_error", checks.scalarOrthonormality},
+                   {"checked_modes", checks.scalarChecked}};
     const auto& co = c.coefficients;
     const bool dense = co.storage == BasisCache::Coefficients::Storage::Dense;
     j["coefficients"] = {
         {"storage", dense ? "dense" : "sparse"},
-        {"modes", c.velocity.modes.cols()},
+        {"modes", c.velocity.eigenvalues.size()},
         {"stored", dense ? co.packed.size() : co.value.size()},
         {"density", co.density},
         // Only k < j is stored; C[j][i][k] = −C[k][i][j] is implied, so exactly antisymmetric.
@@ -113,13 +120,19 @@ void printText(const nlohmann::ordered_json& j) {
         return s.str();
     };
     const auto& v = j["velocity"];
-    std::cout << "velocity   " << v["count"] << " modes (" << v["harmonic"] << " harmonic), κ² = "
-              << list(v["eigenvalues"]) << "\n"
+    auto checked = [](const nlohmann::ordered_json& basis) {
+        return basis["checked_modes"] == basis["count"]
+                   ? std::string()
+                   : " (over " + basis["checked_modes"].dump() + " sampled modes)";
+    };
+    std::cout << "velocity   " << v["count"] << " modes (" << v["harmonic"] << " harmonic), "
+              << v["source"].get<std::string>() << ", κ² = " << list(v["eigenvalues"]) << "\n"
               << "           max divergence " << v["max_divergence"].get<double>()
-              << ", orthonormality error " << v["orthonormality_error"].get<double>() << "\n";
+              << ", orthonormality error " << v["orthonormality_error"].get<double>() << checked(v)
+              << "\n";
     const auto& s = j["scalar"];
-    std::cout << "scalar     " << s["count"] << " " << s["boundary"].get<std::string>()
-              << " modes, μ² = " << list(s["eigenvalues"]) << "\n";
+    std::cout << "scalar     " << s["count"] << " " << s["boundary"].get<std::string>() << " modes, "
+              << s["source"].get<std::string>() << ", μ² = " << list(s["eigenvalues"]) << "\n";
     const auto& co = j["coefficients"];
     std::cout << "C          " << co["storage"].get<std::string>() << ", " << co["stored"]
               << " stored entries (density " << co["density"].get<double>() << ")\n";

@@ -1,0 +1,79 @@
+#pragma once
+/// @file SeparableTransform.h
+/// The transforms of a closed-form velocity basis on the device (CPU reference:
+/// engine/format/SeparableTransform.h), so that a device run never forms the basis's columns:
+/// reconstruction v → face field and projection q → f = Ψᵀ(w ∘ q) as separable per-axis sums over
+/// the band of wave numbers in use (shaders/separable_pass.comp: one dispatch per axis and
+/// component, each output a dot product with a row of the axis's table of factors), the modes
+/// gathered into and out of each component's tensor of slots (separable_gather.comp) and the
+/// velocities written to their faces (separable_scatter.comp). float32; the tables are computed
+/// in double on the host.
+
+#include <array>
+#include <cstdint>
+
+#include "engine/format/BasisCache.h"
+#include "engine/simulation/ProjectionWeights.h"
+#include "engine/vulkan/ComputeKernel.h"
+#include "engine/vulkan/DeviceBuffer.h"
+
+namespace modeflow::vulkan {
+class CommandSequence;
+class VulkanContext;
+}  // namespace modeflow::vulkan
+
+namespace modeflow::device {
+
+class SeparableTransformKernels {
+public:
+    /// For the closed-form basis of `cache` on its DOFs.
+    /// @throw modeflow::Error for a basis that is not closed form or not on the whole box's faces
+    ///        (SeparableTransform), projection weights that differ along one normal axis, or a
+    ///        device error.
+    SeparableTransformKernels(const vulkan::VulkanContext& context, const BasisCache& cache);
+
+    /// Records faceField = the face field of Σ v_i Ψ_i (v: N floats at least; faces that are not
+    /// DOFs are not written).
+    void recordReconstruction(vulkan::CommandSequence& sequence, const vulkan::DeviceBuffer& v,
+                              const vulkan::DeviceBuffer& faceField) const;
+    /// Records f = Ψᵀ (w ∘ q): q one force density per DOF (DOF order), w = projectionWeights
+    /// for FaceQuantity::Density.
+    void recordProjection(vulkan::CommandSequence& sequence, const vulkan::DeviceBuffer& q,
+                          const vulkan::DeviceBuffer& f) const;
+    /// The same for a whole-grid face field read at the DOF faces, w for FaceQuantity::FaceField.
+    void recordFaceFieldProjection(vulkan::CommandSequence& sequence, const vulkan::DeviceBuffer& faceField,
+                                   const vulkan::DeviceBuffer& f) const;
+
+    std::uint32_t modeCount() const { return mModeCount; }
+    std::uint32_t dofCount() const { return mDofCount; }
+
+private:
+    /// One axis pass's shape and table.
+    struct Pass {
+        std::uint32_t d1, d2, inLength, outLength, tableOffset;
+    };
+    /// Records the three passes of component `normal` (synthesis or analysis).
+    void recordPasses(vulkan::CommandSequence& sequence, int normal, bool synthesis, const vulkan::DeviceBuffer& in,
+                      std::uint32_t inOffset, const vulkan::DeviceBuffer& out, std::uint32_t outOffset) const;
+    /// f from the DOF values in `q` (mGatherWeights[quantity]).
+    void recordAnalysis(vulkan::CommandSequence& sequence, const vulkan::DeviceBuffer& q, FaceQuantity quantity,
+                        const vulkan::DeviceBuffer& f) const;
+
+    const vulkan::VulkanContext& mContext;
+    int mDim = 3;
+    std::uint32_t mModeCount = 0, mDofCount = 0, mSlotCount = 0, mFaceTotal = 0;
+    std::array<std::uint32_t, 3> mDofStart{0, 0, 0};
+    std::array<std::array<Pass, 3>, 3> mSynthesis{}, mAnalysis{};  ///< [normal][axis]
+    vulkan::DeviceBuffer mTables;
+    vulkan::DeviceBuffer mScatterIndex, mScatterWeight;  ///< modes → slots: 2 terms a slot
+    vulkan::DeviceBuffer mGatherIndex;                   ///< slots → modes: a term per component
+    std::array<vulkan::DeviceBuffer, 2> mGatherWeights;  ///< by FaceQuantity
+    vulkan::DeviceBuffer mFaces, mOnes;                  ///< DOF faces; weight 1 a DOF
+    vulkan::DeviceBuffer mSlots;                         ///< the components' tensors of slots
+    vulkan::DeviceBuffer mScratchA, mScratchB;           ///< between passes
+    vulkan::DeviceBuffer mDofValues;                     ///< reconstructed velocities (DOF order)
+    vulkan::DeviceBuffer mDofInput;                      ///< a face field read at the DOF faces
+    vulkan::ComputeKernel mPassKernel, mGatherKernel, mScatterKernel;
+};
+
+}  // namespace modeflow::device

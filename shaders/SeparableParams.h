@@ -1,0 +1,54 @@
+/* SeparableParams.h: push constants of the closed-form basis transforms (separable_pass.comp,
+   separable_gather.comp, separable_scatter.comp; engine/device/SeparableTransform), shared by C++
+   and GLSL (ASCII, no C++-only syntax outside the __cplusplus blocks); padded to 16 bytes. */
+#ifndef MODEFLOW_SHADERS_SEPARABLE_PARAMS_H
+#define MODEFLOW_SHADERS_SEPARABLE_PARAMS_H
+
+#ifdef __cplusplus
+#include <cstdint>
+namespace modeflow::shaders {
+using uint = std::uint32_t;
+#endif
+
+/* Index of a gather term that adds nothing. */
+#define SEPARABLE_NONE 0xFFFFFFFFu
+
+/* One pass along one axis: lines of inLength values (fastest) in d1 x d2 of them, each taken
+   through the outLength x inLength table; the output has the axes rotated (d1 fastest, d2, then
+   outLength). */
+struct SeparablePassParams {
+    uint d1;
+    uint d2;
+    uint inLength;
+    uint outLength;
+    uint inOffset;    /* first value of the input tensor in its buffer */
+    uint outOffset;   /* first value of the output tensor in its buffer */
+    uint tableOffset; /* first entry of the table in the tables buffer */
+    uint pad0;
+};
+
+/* out[outOffset + e] = sum over t < terms of weight[e terms + t] in[index[e terms + t]], for
+   e < count (indices SEPARABLE_NONE add nothing). */
+struct SeparableGatherParams {
+    uint count;
+    uint terms;
+    uint outOffset;
+    uint pad0;
+};
+
+/* field[face[d]] = values[d] for d < count. */
+struct SeparableScatterParams {
+    uint count;
+    uint pad0;
+    uint pad1;
+    uint pad2;
+};
+
+#ifdef __cplusplus
+static_assert(sizeof(SeparablePassParams) == 32, "push constants are padded to 16 bytes");
+static_assert(sizeof(SeparableGatherParams) == 16, "push constants are padded to 16 bytes");
+static_assert(sizeof(SeparableScatterParams) == 16, "push constants are padded to 16 bytes");
+}  // namespace modeflow::shaders
+#endif
+
+#endif

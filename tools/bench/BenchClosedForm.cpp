@@ -1,0 +1,175 @@
+/// @file BenchClosedForm.cpp
+/// The shipped 64³ closed-form box (scenes/box_closed_form_3d.toml: a whole box with free-slip
+/// walls, buoyant smoke from a hot ball near the floor, MacCormack, midpoint) at N = 1000 and
+/// 2000 modes, stage by stage, on the CPU reference and on the Vulkan device (--device N):
+///   precompute        computeBasis (closed-form bases, sparse coefficients by selection rules)
+///   cpu_step          one reference::Simulation step (wall ms, the reported time), and alone:
+///                     contraction_ms (one C(v, v), SparseCoefficients, one thread),
+///                     recon_ms and proj_ms (the separable transforms, FFTW),
+///                     advect_ms (MacCormack on the 64³ smoke grid)
+///   device_step       one device::Simulation step (GPU ms from timestamps, the reported time):
+///                     forces_ms (force field + projection), modal_ms (midpoint iterations),
+///                     recon_ms, advect_ms; and alone: contraction_ms (one C(v, v), sliced
+///                     ELLPACK), proj_ms (the transposed transforms)
+/// The state is a swirl of a twentieth of a turnover per step, so the midpoint rule iterates as
+/// in a run. Run: bench_closed_form [--device N] [--benchmark_filter=...].
+
+#include <chrono>
+#include <map>
+#include <memory>
+#include <vector>
+
+#include <benchmark/benchmark.h>
+
+#include "engine/device/DeviceCoefficients.h"
+#include "engine/device/ModalKernels.h"
+#include "engine/device/SeparableTransform.h"
+#include "engine/format/VelocityBasis.h"
+#include "engine/pipeline/RunInputs.h"
+#include "engine/reference/ForceProjection.h"
+#include "engine/reference/Simulation.h"
+#include "engine/reference/SmokeAdvection.h"
+#include "engine/reference/VelocityReconstruction.h"
+#include "engine/vulkan/CommandSequence.h"
+#include "engine/vulkan/DeviceBuffer.h"
+#include "precompute/Precompute.h"
+#include "precompute/scene/SceneLoader.h"
+#include "tests/support/RandomCoefficients.h"
+#include "tools/bench/BenchDevice.h"
+#include "tools/bench/EigenReference.h"
+
+namespace modeflow::bench {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double msSince(Clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+SceneSpec boxScene(int modes) {
+    SceneSpec scene = loadScene(std::filesystem::path(MODEFLOW_SOURCE_DIR) / "scenes" / "box_closed_form_3d.toml");
+    scene.basis.velocityModes = {{1, modes}};
+    return scene;
+}
+
+/// The run at `modes` modes, kept until another size is asked for.
+const RunInputs& boxRun(int modes) {
+    static std::map<int, std::unique_ptr<RunInputs>> runs;
+    auto& slot = runs[modes];
+    if (!slot) {
+        runs.clear();
+        const SceneSpec scene = boxScene(modes);
+        Progress quiet = Progress::silent();
+        runs[modes] = std::make_unique<RunInputs>(prepareRun(scene, computeBasis(scene, quiet)));
+    }
+    return *runs[modes];
+}
+
+/// A swirl of a twentieth of a turnover per step.
+Eigen::VectorXd swirl(const RunInputs& run) {
+    Eigen::VectorXd v = testing::randomVector(run.modeCount(), 3), r;
+    run.coefficients->apply(v, v, r);
+    return v * (0.05 / (run.settings.dt * r.norm() / v.norm()));
+}
+
+void precompute(benchmark::State& state) {
+    const SceneSpec scene = boxScene(int(state.range(0)));
+    std::size_t nonZeros = 0;
+    for (auto _ : state) {
+        Progress quiet = Progress::silent();
+        nonZeros = computeBasis(scene, quiet).coefficients.value.size();
+    }
+    state.counters["nnz"] = double(nonZeros);
+}
+
+void cpuStep(benchmark::State& state) {
+    const RunInputs& run = boxRun(int(state.range(0)));
+    reference::Simulation simulation(run.cache, *run.coefficients, run.settings, run.smokeMask);
+    simulation.setVelocity(swirl(run));
+    simulation.advanceSteps(3);  // smoke to carry
+    const VelocityBasis basis(run.cache);
+    std::vector<double> contraction, recon, proj, advect;
+    for (auto _ : state) {
+        const Eigen::VectorXd v = simulation.velocity();
+        auto start = Clock::now();
+        Eigen::VectorXd r;
+        run.coefficients->apply(v, v, r);
+        contraction.push_back(msSince(start));
+        start = Clock::now();
+        const std::vector<double> field = reference::reconstructFaceField(basis, v);
+        recon.push_back(msSince(start));
+        start = Clock::now();
+        benchmark::DoNotOptimize(reference::projectFaceField(basis, field));
+        proj.push_back(msSince(start));
+        reference::SmokeAdvection advection(MacGrid::fromSpec(run.cache.grid), run.settings.smokeScale,
+                                            run.smokeMask);
+        SmokeFields smoke = simulation.smoke();
+        start = Clock::now();
+        advection.step(std::span<const double>(field), run.settings.dt, run.settings.advection, {}, smoke);
+        advect.push_back(msSince(start));
+        start = Clock::now();
+        simulation.advanceSteps(1);
+        state.SetIterationTime(msSince(start) * 1e-3);
+    }
+    setMedian(state, "contraction_ms", contraction);
+    setMedian(state, "recon_ms", recon);
+    setMedian(state, "proj_ms", proj);
+    setMedian(state, "advect_ms", advect);
+    state.counters["DOFs"] = double(run.cache.faces.size());
+}
+
+void deviceStep(benchmark::State& state) {
+    const RunInputs& run = boxRun(int(state.range(0)));
+    const vulkan::VulkanContext& context = benchContext();
+    const std::unique_ptr<Simulator> simulation = benchBackend().makeSimulator(run, true);
+    simulation->setVelocity(swirl(run));
+    simulation->advanceSteps(3);
+    // The contraction and the projection alone.
+    const device::ModalKernels kernels(context);
+    const device::DeviceCoefficients coefficients(context, *run.coefficients);
+    const device::SeparableTransformKernels transforms(context, run.cache);
+    const std::vector<float> ones(device::paddedSize(run.modeCount()), 1.0f);
+    const vulkan::DeviceBuffer a = vulkan::DeviceBuffer::fromValues<float>(context, ones, "a");
+    vulkan::DeviceBuffer out(context, ones.size() * sizeof(float), "out");
+    const std::vector<float> density(run.cache.faces.size(), 1.0f);
+    const vulkan::DeviceBuffer q = vulkan::DeviceBuffer::fromValues<float>(context, density, "q");
+    std::vector<double> forces, modal, recon, advect, contraction, proj;
+    int iterations = 0;
+    for (auto _ : state) {
+        const FrameStats stats = simulation->advanceSteps(1);
+        const double total = stats.forcesMs + stats.modalMs + stats.reconstructionMs + stats.advectionMs;
+        state.SetIterationTime(total * 1e-3);
+        forces.push_back(stats.forcesMs);
+        modal.push_back(stats.modalMs);
+        recon.push_back(stats.reconstructionMs);
+        advect.push_back(stats.advectionMs);
+        iterations = std::max(iterations, stats.maxIterations);
+        vulkan::CommandSequence sequence(context, true, 64);
+        coefficients.recordApply(sequence, kernels, a, a, out);
+        const std::size_t applyDispatches = sequence.dispatchCount();
+        transforms.recordProjection(sequence, q, out);
+        sequence.submitAndWait();
+        const std::vector<double>& ms = sequence.dispatchTimesMs();
+        double c = 0.0, p = 0.0;
+        for (std::size_t d = 0; d < ms.size(); ++d) (d < applyDispatches ? c : p) += ms[d];
+        contraction.push_back(c);
+        proj.push_back(p);
+    }
+    setMedian(state, "forces_ms", forces);
+    setMedian(state, "modal_ms", modal);
+    setMedian(state, "recon_ms", recon);
+    setMedian(state, "advect_ms", advect);
+    setMedian(state, "contraction_ms", contraction);
+    setMedian(state, "proj_ms", proj);
+    state.counters["iterations"] = iterations;
+}
+
+BENCHMARK(precompute)->ArgName("N")->Arg(1000)->Arg(2000)->Iterations(1)->Unit(benchmark::kMillisecond);
+BENCHMARK(cpuStep)->Name("cpu_step")->ArgName("N")->Arg(1000)->Arg(2000)->Iterations(5)->UseManualTime()
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(deviceStep)->Name("device_step")->ArgName("N")->Arg(1000)->Arg(2000)->Iterations(5)->UseManualTime()
+    ->Unit(benchmark::kMillisecond);
+
+}  // namespace
+}  // namespace modeflow::bench
