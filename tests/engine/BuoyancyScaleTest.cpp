@@ -10,16 +10,17 @@
 
 #include <cmath>
 #include <iostream>
+#include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
-#include <Eigen/Dense>
 
 #include "engine/device/Simulation.h"
 #include "engine/reference/Simulation.h"
 #include "tests/support/SharedRuns.h"
 #include "tests/support/TestScenes.h"
 #include "tests/support/VulkanTestContext.h"
+#include "tools/validate/PressureProjection.h"
 
 namespace modeflow {
 namespace {
@@ -27,8 +28,10 @@ namespace {
 constexpr double buoyancy = 1.7;
 constexpr double dt = 0.05;
 
-/// A box of non-cubic cells with every divergence-free mode of its grid (faces − cells + 1).
-SceneSpec completeBoxScene(int dim) {
+/// A box of non-cubic cells with every divergence-free mode of its grid (faces − cells + 1), in
+/// closed form (no [[domain]]: the whole grid box) or `eigensolved` (a [[domain]] box reaching
+/// past the grid: the same operators, through the eigensolver).
+SceneSpec completeBoxScene(int dim, bool eigensolved) {
     SceneSpec scene = dim == 2
                           ? testing::gridScene({16, 12, 1}, {0.0, 0.0, 0.0}, {1.0, 0.6, 0.0}, 2)
                           : testing::gridScene({6, 5, 4}, {0.0, 0.0, 0.0}, {0.9, 0.5, 0.8}, 3);
@@ -37,6 +40,7 @@ SceneSpec completeBoxScene(int dim) {
     for (int a = 0; a < dim; ++a)
         interiorFaces += grid.cellCount() / grid.cells[a] * (grid.cells[a] - 1);
     scene.name = "complete";
+    if (eigensolved) scene.domain = {testing::box({-1.0, -1.0, -1.0}, {2.0, 2.0, 2.0})};
     scene.basis.velocityModes = {{1, int(interiorFaces - grid.cellCount() + 1)}};
     scene.basis.scalarModes = 0;
     scene.simulation.integrator = Integrator::Explicit;
@@ -46,10 +50,18 @@ SceneSpec completeBoxScene(int dim) {
     return scene;
 }
 
-const RunInputs& completeBox(int dim) {
-    static const RunInputs box2 = testing::sharedRun(completeBoxScene(2));
-    static const RunInputs box3 = testing::sharedRun(completeBoxScene(3));
-    return dim == 2 ? box2 : box3;
+/// The four complete boxes: 2D and 3D, closed form and eigensolved.
+const std::vector<const RunInputs*>& completeBoxes() {
+    static const RunInputs runs[] = {
+        testing::sharedRun(completeBoxScene(2, false)), testing::sharedRun(completeBoxScene(3, false)),
+        testing::sharedRun(completeBoxScene(2, true)), testing::sharedRun(completeBoxScene(3, true))};
+    static const std::vector<const RunInputs*> all = {&runs[0], &runs[1], &runs[2], &runs[3]};
+    return all;
+}
+
+std::string describe(const RunInputs& run) {
+    return std::to_string(run.cache.grid.dim) + "D, " + std::to_string(run.modeCount()) + " modes, " +
+           (run.cache.velocity.modes.cols() > 0 ? "eigensolved" : "closed form");
 }
 
 /// A warm blob off-centre plus a gentle tilt: a temperature with a large div-free part.
@@ -88,30 +100,6 @@ std::vector<double> buoyancyDensity(const MacGrid& grid, const std::vector<doubl
     return g;
 }
 
-/// P(g): g − Gp with D(g − Gp) = 0 on the MAC grid of a closed box (no flux through the box),
-/// the projection that is L²-orthogonal for face values (every face's dual volume is a cell's).
-std::vector<double> pressureProjection(const MacGrid& grid, const std::vector<double>& g) {
-    const auto cells = Eigen::Index(grid.cellCount());
-    Eigen::MatrixXd d = Eigen::MatrixXd::Zero(cells, Eigen::Index(grid.faceTotal()));
-    for (int z = 0; z < grid.cells[2]; ++z)
-        for (int y = 0; y < grid.cells[1]; ++y)
-            for (int x = 0; x < grid.cells[0]; ++x)
-                for (int a = 0; a < grid.dim; ++a) {
-                    const std::array<int, 3> p{x, y, z};
-                    const Eigen::Index c = grid.cellIndex(x, y, z);
-                    if (p[a] > 0) d(c, grid.faceIndex(a, x, y, z)) = -grid.faceArea(a);
-                    if (p[a] + 1 < grid.cells[a])
-                        d(c, grid.faceIndex(a, x + (a == 0), y + (a == 1), z + (a == 2))) =
-                            grid.faceArea(a);
-                }
-    const Eigen::Map<const Eigen::VectorXd> gv(g.data(), Eigen::Index(g.size()));
-    // D Dᵀ is singular along the constant pressure only; D g has no constant part.
-    const Eigen::MatrixXd laplacian = d * d.transpose() + Eigen::MatrixXd::Ones(cells, cells);
-    const Eigen::VectorXd p = laplacian.ldlt().solve(d * gv);
-    const Eigen::VectorXd u = gv - d.transpose() * p;
-    return {u.data(), u.data() + u.size()};
-}
-
 struct Comparison {
     double ratio = 0.0;  ///< ⟨u, P g⟩ / ⟨P g, P g⟩ / dt: 1 when the scale is right
     double error = 0.0;  ///< max |u − dt P g| / max |dt P g|
@@ -133,15 +121,16 @@ Comparison stepFromRest(Simulator& simulation, const MacGrid& grid) {
     const std::vector<double> t = warmBlob(grid);
     simulation.restore(0.0, Eigen::VectorXd::Zero(simulation.velocity().size()), SmokeFields{t, t});
     simulation.advanceSteps(1);
-    return compare(simulation.faceVelocity(), pressureProjection(grid, buoyancyDensity(grid, t)));
+    return compare(simulation.faceVelocity(), validate::pressureProjection(grid, buoyancyDensity(grid, t)));
 }
 
 TEST(BuoyancyScale, ProjectionIsNotTrivial) {
     // The blob's force is far from a gradient: most of it survives the projection.
-    for (const int dim : {2, 3}) {
-        const MacGrid grid = MacGrid::fromSpec(completeBox(dim).cache.grid);
+    for (const RunInputs* run : completeBoxes()) {
+        const int dim = run->cache.grid.dim;
+        const MacGrid grid = MacGrid::fromSpec(run->cache.grid);
         const std::vector<double> g = buoyancyDensity(grid, warmBlob(grid));
-        const std::vector<double> pg = pressureProjection(grid, g);
+        const std::vector<double> pg = validate::pressureProjection(grid, g);
         double gNorm = 0.0, pNorm = 0.0;
         for (std::size_t f = 0; f < g.size(); ++f) gNorm += g[f] * g[f], pNorm += pg[f] * pg[f];
         EXPECT_GT(std::sqrt(pNorm / gNorm), 0.2) << dim << "D";
@@ -150,30 +139,27 @@ TEST(BuoyancyScale, ProjectionIsNotTrivial) {
 }
 
 TEST(BuoyancyScale, CompleteBasisStepIsThePressureProjectionOnTheCpuReference) {
-    for (const int dim : {2, 3}) {
-        const RunInputs& run = completeBox(dim);
-        reference::Simulation simulation(run.cache, *run.coefficients, run.settings, run.smokeMask);
-        const Comparison c = stepFromRest(simulation, MacGrid::fromSpec(run.cache.grid));
-        std::cout << dim << "D, " << run.modeCount() << " modes: u / (dt P g) = " << c.ratio
-                  << ", max error " << c.error << "\n";
-        EXPECT_NEAR(c.ratio, 1.0, 1e-9) << dim << "D";
-        EXPECT_LE(c.error, 1e-9) << dim << "D";
+    for (const RunInputs* run : completeBoxes()) {
+        reference::Simulation simulation(run->cache, *run->coefficients, run->settings, run->smokeMask);
+        const Comparison c = stepFromRest(simulation, MacGrid::fromSpec(run->cache.grid));
+        std::cout << describe(*run) << ": u / (dt P g) = " << c.ratio << ", max error " << c.error << "\n";
+        EXPECT_NEAR(c.ratio, 1.0, 1e-9) << describe(*run);
+        EXPECT_LE(c.error, 1e-9) << describe(*run);
     }
 }
 
 class BuoyancyScaleDevice : public testing::VulkanTest {};
 
 TEST_P(BuoyancyScaleDevice, CompleteBasisStepIsThePressureProjectionOnTheDevice) {
-    for (const int dim : {2, 3}) {
-        const RunInputs& run = completeBox(dim);
+    for (const RunInputs* run : completeBoxes()) {
         {
-            device::Simulation simulation(context(), run.cache, *run.coefficients, run.settings,
-                                          run.smokeMask);
-            const Comparison c = stepFromRest(simulation, MacGrid::fromSpec(run.cache.grid));
-            std::cout << dim << "D device: u / (dt P g) = " << c.ratio << ", max error " << c.error
-                      << "\n";
-            EXPECT_NEAR(c.ratio, 1.0, 1e-5) << dim << "D";
-            EXPECT_LE(c.error, 1e-5) << dim << "D";
+            device::Simulation simulation(context(), run->cache, *run->coefficients, run->settings,
+                                          run->smokeMask);
+            const Comparison c = stepFromRest(simulation, MacGrid::fromSpec(run->cache.grid));
+            std::cout << describe(*run) << ", device: u / (dt P g) = " << c.ratio << ", max error "
+                      << c.error << "\n";
+            EXPECT_NEAR(c.ratio, 1.0, 1e-5) << describe(*run);
+            EXPECT_LE(c.error, 1e-5) << describe(*run);
         }
         expectNoValidationMessages();
     }

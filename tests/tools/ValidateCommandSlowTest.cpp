@@ -156,6 +156,14 @@ void checkReducedVsFull(const json& results) {
         previouerror = error, previousRise = rise;
     }
     EXPECT_NEAR(previousRise, 1.0, 0.05) << "the most modes rise as the full run";
+    // The 3D ball: the first step's response grows towards the full grid's with more modes.
+    double previousResponse = 0.0;
+    for (const json& run : study(results, "reduced_vs_full")["plume_3d"]["runs"]) {
+        const double response = run["response_rise_fraction"];
+        EXPECT_GT(response, previousResponse) << run["modes"] << " modes";
+        EXPECT_LT(response, 1.0) << run["modes"] << " modes";
+        previousResponse = response;
+    }
 }
 
 /// Held low modes drive both models; LANS-α's spectrum falls off more steeply at high κ.

@@ -13,6 +13,7 @@
 #include "engine/core/FaceLocation.h"
 #include "engine/core/MacGrid.h"
 #include "engine/dynamics/Diagnostics.h"
+#include "engine/format/VelocityBasis.h"
 #include "engine/dynamics/FluidSystem.h"
 #include "engine/dynamics/ModalIntegrator.h"
 #include "engine/stir/ShapedBases.h"
@@ -61,7 +62,7 @@ SceneSpec vortexPairWithAllModes(int cells, const StudyOptions& options) {
 }
 
 StudyResult coefficientStudy(const StudyOptions& options) {
-    const int cells = options.quick ? 16 : 32;
+    const int cells = options.quick ? 16 : 24;
     const std::vector<int> counts =
         options.quick ? std::vector<int>{20, 40} : std::vector<int>{25, 50, 100, 200};
     const double dt = 0.02, duration = options.quick ? 2.0 : 8.0;
@@ -75,7 +76,7 @@ StudyResult coefficientStudy(const StudyOptions& options) {
     const FluidSystem fullSystem(*full.coefficients);
     ModalIntegrator fullIntegrator(fullSystem);
     Eigen::VectorXd vFull = full.initialVelocity;
-    const Eigen::MatrixXd& psi = full.cache.velocity.modes;
+    const VelocityBasis basis(full.cache);
     const Eigen::VectorXd inverseArea = inverseFaceAreas(full.cache);
 
     std::vector<ReducedRun> runs;
@@ -105,12 +106,14 @@ StudyResult coefficientStudy(const StudyOptions& options) {
     std::vector<double> time;
     const auto record = [&] {
         time.push_back(time.empty() ? 0.0 : time.back() + every * dt);
-        const Eigen::VectorXd uFull = inverseArea.cwiseProduct(psi * vFull);
+        const Eigen::VectorXd uFull = inverseArea.cwiseProduct(basis.fluxes(vFull));
         for (ReducedRun& run : runs) {
             Eigen::VectorXd difference = -vFull;
             difference.head(run.modes) += run.v;
             run.l2.push_back(difference.norm() / vFull.norm());
-            const Eigen::VectorXd u = inverseArea.cwiseProduct(psi.leftCols(run.modes) * run.v);
+            Eigen::VectorXd padded = Eigen::VectorXd::Zero(total);
+            padded.head(run.modes) = run.v;
+            const Eigen::VectorXd u = inverseArea.cwiseProduct(basis.fluxes(padded));
             run.linf.push_back((u - uFull).lpNorm<Eigen::Infinity>() /
                                uFull.lpNorm<Eigen::Infinity>());
             run.energy.push_back(energy(run.v));

@@ -56,7 +56,7 @@ StudyResult convergenceStudy(const StudyOptions& options) {
     const std::vector<Domain> domains =
         options.quick
             ? std::vector<Domain>{{"disk", 2, {32, 64}}, {"ball", 3, {10, 14}}}
-            : std::vector<Domain>{{"disk", 2, {32, 64, 128, 256}}, {"ball", 3, {12, 16, 24, 32}}};
+            : std::vector<Domain>{{"disk", 2, {32, 64, 128, 256}}, {"ball", 3, {12, 16, 20, 24}}};
     const std::pair<BoundaryTreatment, const char*> boundaries[] = {
         {BoundaryTreatment::CutCell, "cut-cell"}, {BoundaryTreatment::Staircase, "staircase"}};
     const std::pair<SpectrumKind, const char*> fields[] = {{SpectrumKind::Velocity, "velocity"},

@@ -6,6 +6,7 @@
 
 #include "engine/core/Error.h"
 #include "engine/core/MacGrid.h"
+#include "engine/format/VelocityBasis.h"
 #include "engine/reference/VelocityReconstruction.h"
 
 namespace modeflow::validate {
@@ -71,9 +72,9 @@ namespace {
 /// Cell-centred velocities of one mode: dim arrays over the grid's cells.
 using CellField = std::vector<Eigen::VectorXd>;
 
-CellField cellVelocity(const BasisCache& cache, const MacGrid& grid, int mode) {
-    const std::vector<double> faces =
-        reference::fluxesToFaceField(cache, cache.velocity.modes.col(mode));
+CellField cellVelocity(const VelocityBasis& basis, const MacGrid& grid, int mode) {
+    const std::vector<double> faces = reference::fluxesToFaceField(
+        basis.cache(), basis.fluxes(Eigen::VectorXd::Unit(basis.modeCount(), mode)));
     const std::vector<Vec3> centred = reference::cellCentreVelocity(grid, faces);
     CellField field(std::size_t(grid.dim), Eigen::VectorXd(Eigen::Index(centred.size())));
     for (std::size_t c = 0; c < centred.size(); ++c)
@@ -111,6 +112,7 @@ Eigen::VectorXd derivative(const MacGrid& grid, const std::vector<double>& fract
 }  // namespace
 
 FullTensorCoefficients gridAdvectionCoefficients(const BasisCache& cache, int count) {
+    const VelocityBasis basis(cache);
     const MacGrid grid = MacGrid::fromSpec(cache.grid);
     const int dim = grid.dim;
     const auto cells = Eigen::Index(grid.cellCount());
@@ -121,7 +123,7 @@ FullTensorCoefficients gridAdvectionCoefficients(const BasisCache& cache, int co
     Eigen::MatrixXd u(dim * cells, count);
     std::vector<Eigen::MatrixXd> du(std::size_t(dim), Eigen::MatrixXd(dim * cells, count));
     for (int m = 0; m < count; ++m) {
-        const CellField field = cellVelocity(cache, grid, m);
+        const CellField field = cellVelocity(basis, grid, m);
         for (int a = 0; a < dim; ++a) {
             u.col(m).segment(a * cells, cells) = field[std::size_t(a)];
             for (int b = 0; b < dim; ++b)

@@ -1,11 +1,15 @@
 /// @file ReducedVsFullStudy.cpp
-/// `reduced_vs_full` (seed Figs. 6.12, 6.16): reduced runs of N modes against the full run of the
-/// same grid, whose basis is every divergence-free mode the grid has (so the full run is the
-/// grid's own Galerkin dynamics, the same discretization without truncation). Today's experiment
-/// is a bounded plume: a hot disk at the floor of a closed box. Each run's smoke centroid height
-/// and peak speed over time show the rise converging as N grows, with the relative L2 and L∞
-/// velocity errors against the full run. The reduced runs keep the full basis's leading modes,
-/// so all runs share one eigensolve.
+/// `reduced_vs_full` (seed Figs. 6.12, 6.16): reduced runs of N modes against the full grid.
+///
+/// - `plume`: a hot disk at the floor of a closed 2D box, against the full run of the same grid,
+///   whose basis is every divergence-free mode the grid has (the grid's own Galerkin dynamics,
+///   the same discretization without truncation): each run's smoke centroid height and peak
+///   speed over time, and the relative L2 and L∞ velocity errors against the full run. The
+///   reduced runs keep the full basis's leading modes, so all share one basis.
+/// - `plume_3d`: the hot ball of a closed 64³ box (r = 0.08 at the floor, buoyancy 1, the job of
+///   tools/validate/README.md "The slow plume") with closed-form bases of 50 … 2000 modes: the
+///   first step's response to the ball's buoyancy, dt·P_N(g), against the full grid's dt·P(g)
+///   (a pressure solve, PressureProjection.h), and each run's rise over time.
 
 #include <cmath>
 #include <string>
@@ -14,7 +18,10 @@
 #include "engine/dynamics/DenseCoefficients.h"
 #include "engine/dynamics/SparseCoefficients.h"
 #include "engine/pipeline/Backend.h"
+#include "engine/reference/ForceField.h"
+#include "engine/reference/VelocityReconstruction.h"
 #include "engine/stir/ShapedBases.h"
+#include "tools/validate/PressureProjection.h"
 #include "tools/validate/Studies.h"
 #include "tools/validate/StudyRuns.h"
 
@@ -49,6 +56,20 @@ RunInputs leadingRun(const RunInputs& full, int modes) {
     return run;
 }
 
+/// The smoke density's centroid height in 3D (z).
+double centroidHeight3d(const Simulator& simulation) {
+    const MacGrid& grid = simulation.smokeGrid();
+    const std::vector<double> density = simulation.smoke().density;
+    double mass = 0.0, moment = 0.0;
+    for (int z = 0; z < grid.cells[2]; ++z)
+        for (int y = 0; y < grid.cells[1]; ++y)
+            for (int x = 0; x < grid.cells[0]; ++x) {
+                const double d = density[std::size_t(grid.cellIndex(x, y, z))];
+                mass += d, moment += d * grid.cellCentre(2, z);
+            }
+    return moment / mass;
+}
+
 double centroidHeight(const Simulator& simulation) {
     const MacGrid& grid = simulation.smokeGrid();
     const std::vector<double> density = simulation.smoke().density;
@@ -65,6 +86,94 @@ double maxAbs(const std::vector<double>& values) {
     double m = 0.0;
     for (const double v : values) m = std::max(m, std::abs(v));
     return m;
+}
+
+std::string ballScene(int cells, int modes, int frames) {
+    const std::string n = std::to_string(cells);
+    return "[grid]\nresolution = [" + n + ", " + n + ", " + n +
+           "]\nbounds_min = [0.0, 0.0, 0.0]\nbounds_max = [1.0, 1.0, 1.0]\n[basis]\nvelocity_modes = " +
+           std::to_string(modes) +
+           "\nscalar_modes = 0\n[simulation]\ndt = 0.02\nintegrator = \"midpoint\"\n"
+           "[[source]]\nshape = \"ball\"\ncenter = [0.5, 0.5, 0.1]\nradius = 0.08\ndensity = 1.0\n"
+           "temperature = 1.0\n[smoke]\nbuoyancy = 1.0\n[output]\nframes = " +
+           std::to_string(frames) + "\nsteps_per_frame = 1\n";
+}
+
+/// 1 in the smoke cells whose centre is inside the source ball, 0 elsewhere.
+std::vector<double> ballTemperature(const MacGrid& grid) {
+    std::vector<double> t(std::size_t(grid.cellCount()), 0.0);
+    for (int z = 0; z < grid.cells[2]; ++z)
+        for (int y = 0; y < grid.cells[1]; ++y)
+            for (int x = 0; x < grid.cells[0]; ++x) {
+                const double dx = grid.cellCentre(0, x) - 0.5, dy = grid.cellCentre(1, y) - 0.5,
+                             dz = grid.cellCentre(2, z) - 0.1;
+                if (dx * dx + dy * dy + dz * dz <= 0.08 * 0.08) t[std::size_t(grid.cellIndex(x, y, z))] = 1.0;
+            }
+    return t;
+}
+
+/// The peak upward speed and the mean upward speed weighted by the temperature of the two cells
+/// each up face separates (the ball's rise), of a face field.
+std::pair<double, double> riseOf(const MacGrid& grid, std::span<const double> u, const std::vector<double>& t) {
+    double peak = 0.0, weighted = 0.0, weight = 0.0;
+    for (int z = 1; z < grid.cells[2]; ++z)
+        for (int y = 0; y < grid.cells[1]; ++y)
+            for (int x = 0; x < grid.cells[0]; ++x) {
+                const double w = 0.5 * (t[std::size_t(grid.cellIndex(x, y, z))] + t[std::size_t(grid.cellIndex(x, y, z - 1))]);
+                const double uz = u[std::size_t(grid.faceIndex(2, x, y, z))];
+                peak = std::max(peak, uz);
+                weighted += w * uz, weight += w;
+            }
+    return {peak, weighted / weight};
+}
+
+/// The 3D experiment (see the file's comment).
+nlohmann::json ballPlume(const StudyOptions& options) {
+    const int cells = options.quick ? 24 : 64, frames = options.quick ? 15 : 60;
+    const std::vector<int> counts =
+        options.quick ? std::vector<int>{50, 200, 500} : std::vector<int>{50, 100, 200, 500, 1000, 2000};
+    const Backend backend(BackendChoice{BackendKind::CpuReference, {}});
+    nlohmann::json result = {{"resolution", cells},
+                             {"source", "hot ball r = 0.08 at (0.5, 0.5, 0.1), buoyancy 1, closed unit box"},
+                             {"dt", 0.02},
+                             {"runs", nlohmann::json::array()}};
+    std::pair<double, double> full{0.0, 0.0};
+    for (const int n : counts) {
+        options.note("3D plume, " + std::to_string(n) + " modes");
+        const RunInputs run = prepareStudyRun(sceneFromText(ballScene(cells, n, frames), "reduced_vs_full_ball"), options);
+        const MacGrid grid = MacGrid::fromSpec(run.cache.grid);
+        const std::vector<double> t = ballTemperature(grid);
+        if (n == counts.front()) {
+            // The full grid's response: P(g) for the ball's buoyancy g (one value per DOF).
+            const Eigen::VectorXd g = reference::forceDensity(run.cache, {1.0, 1, t, {}}, {});
+            std::vector<double> field(std::size_t(grid.faceTotal()), 0.0);
+            for (std::size_t d = 0; d < run.cache.faces.size(); ++d) field[std::size_t(run.cache.faces[d])] = g[Eigen::Index(d)];
+            full = riseOf(grid, pressureProjection(grid, field), t);
+            result["full_response"] = {{"peak", full.first}, {"mean_rise", full.second}};
+        }
+        // One explicit step from rest with the ball hot: u = dt·P_N(g).
+        const std::unique_ptr<Simulator> response = backend.makeSimulator(run);
+        response->setIntegrator(Integrator::Explicit);
+        response->restore(0.0, Eigen::VectorXd::Zero(n), SmokeFields{t, t});
+        response->advanceSteps(1);
+        const std::pair<double, double> reduced = riseOf(grid, response->faceVelocity(), t);
+        // The run itself: the source heating from t = 0.
+        const std::unique_ptr<Simulator> simulation = backend.makeSimulator(run);
+        std::vector<double> time, height, peak;
+        for (int frame = 1; frame <= frames; ++frame) {
+            simulation->advanceFrame();
+            time.push_back(simulation->time());
+            height.push_back(centroidHeight3d(*simulation));
+            peak.push_back(maxAbs(simulation->faceVelocity()));
+        }
+        result["runs"].push_back({{"modes", n},
+                                  {"response_peak_fraction", reduced.first / 0.02 / full.first},
+                                  {"response_rise_fraction", reduced.second / 0.02 / full.second},
+                                  {"time", time},
+                                  {"centroid_height", height},
+                                  {"peak_speed", peak}});
+    }
+    return result;
 }
 
 struct PlumeRun {
@@ -139,6 +248,7 @@ StudyResult reducedVsFullStudy(const StudyOptions& options) {
                                                 {"rise_fraction_of_full", rise / fullRise}});
         if (run.modes != all) finalErrors.push_back(run.l2.back());
     }
+    result.data["plume_3d"] = ballPlume(options);
     const double ratio = finalErrors.back() / finalErrors.front();
     result.headline = {"final L2 error against the full run, " + std::to_string(counts.back()) +
                            " modes / " + std::to_string(counts.front()) + " modes",
