@@ -2,7 +2,9 @@
 
 #include <algorithm>
 
+#include "engine/core/Error.h"
 #include "precompute/dec/CubicalComplex.h"
+#include "precompute/surface/SurfaceDec.h"
 
 namespace modeflow {
 namespace {
@@ -56,6 +58,20 @@ BasisChecks checkBasis(const BasisCache& cache) {
         checks.scalarChecked);
     checks.velocityOrthonormality = orthonormalityError(velocity, cache.faceStar);
     checks.scalarOrthonormality = orthonormalityError(scalar, cache.scalar.cellStar);
+    if (cache.kind == BasisKind::Surface) {
+        // The net flux into every triangle, through d1 rebuilt from the stored mesh.
+        const SurfaceTopology topology = checkClosedSurface(cache.surface.mesh, "cached surface");
+        if (topology.edges != cache.surface.edges)
+            throw Error("the cached surface's edges do not match its triangles; rerun precompute with --force");
+        const SurfaceDec dec = buildSurfaceDec(cache.surface.mesh, topology);
+        for (Eigen::Index m = 0; m < velocity.cols(); ++m) {
+            const double size = velocity.col(m).cwiseAbs().maxCoeff();
+            if (size > 0.0)
+                checks.maxDivergence =
+                    std::max(checks.maxDivergence, (dec.d1 * velocity.col(m)).cwiseAbs().maxCoeff() / size);
+        }
+        return checks;
+    }
 
     // Divergence through the full incidence matrix: a flux leaking through a non-DOF face would
     // show up in the cells beside it.

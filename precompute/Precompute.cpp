@@ -15,6 +15,7 @@
 #include "engine/core/Error.h"
 #include "engine/core/WritableDirectory.h"
 #include "precompute/PrecomputeMemory.h"
+#include "precompute/SurfaceStages.h"
 #include "precompute/closedform/ClosedFormBasis.h"
 #include "precompute/closedform/ClosedFormCoefficients.h"
 #include "precompute/closedform/WholeBoxDofs.h"
@@ -31,6 +32,7 @@ namespace {
 
 /// Bumped whenever the numerics change what a cache holds for the same inputs.
 constexpr const char* kAlgorithmVersion = "cut-cell-dec/3";
+constexpr const char* kSurfaceAlgorithmVersion = "surface-dec/1";
 
 std::string fileDigest(const std::filesystem::path& file, const std::string& key) {
     std::ifstream in(file, std::ios::binary);
@@ -101,6 +103,14 @@ BasisCache::Coefficients chooseStorage(std::vector<double> packed, int modes) {
 std::string basisKey(const SceneSpec& scene) {
     std::ostringstream s;
     s << std::setprecision(17);
+    if (scene.isSurface()) {
+        s << "format=" << kCacheFormatVersion << " algorithm=" << kSurfaceAlgorithmVersion << "\n";
+        s << "surface mesh=" << fileDigest(scene.surface->meshFile, "[surface].mesh") << "\n";
+        s << "basis modes=";
+        for (const ModeRange& r : scene.basis.velocityModes) s << r.first << "-" << r.last << ",";
+        s << " scalar=" << scene.basis.scalarModes << "\n";
+        return s.str();
+    }
     const GridSpec& g = scene.grid;
     s << "format=" << kCacheFormatVersion << " algorithm=" << kAlgorithmVersion << "\n";
     s << "grid dim=" << g.dim << " resolution=[";
@@ -276,6 +286,12 @@ BasisCache computeStages(const SceneSpec& scene, std::string key, Progress& prog
 BasisCache computeBasis(const SceneSpec& scene, std::string key, Progress& progress,
                         const PrecomputeMemory& estimate, BasisMethod method) {
     try {
+        if (scene.isSurface()) {
+            BasisCache cache = computeSurfaceStages(scene, std::move(key), progress);
+            cache.coefficients = chooseStorage(std::move(cache.coefficients.packed),
+                                               int(cache.velocity.modes.cols()));
+            return cache;
+        }
         return computeStages(scene, std::move(key), progress, method);
     } catch (const std::bad_alloc&) {
         throw outOfMemory(progress.stage(), estimate);

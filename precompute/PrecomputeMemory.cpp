@@ -6,9 +6,11 @@
 #include <optional>
 
 #include "engine/core/AvailableMemory.h"
+#include "engine/core/Error.h"
 #include "precompute/closedform/ClosedFormBasis.h"
 #include "precompute/closedform/ClosedFormCoefficients.h"
 #include "precompute/geometry/Domain.h"
+#include "precompute/geometry/ObjMesh.h"
 
 namespace modeflow {
 namespace {
@@ -125,7 +127,39 @@ std::string gridResolutionText(const GridSpec& grid) {
     return text + "]";
 }
 
+namespace {
+
+/// A surface scene (V vertices, E ≈ 3V edges, T ≈ 2V triangles, N the highest mode, M scalar
+/// modes): the eigensolve (dense below 1200 vertices: three V² matrices; else the grid's 2D
+/// model of Lanczos and CHOLMOD on V unknowns), or the modes and coefficients, as in the header.
+PrecomputeMemory estimateSurfaceMemory(const SceneSpec& scene) {
+    double v = 0.0;
+    try {
+        v = double(readObjMesh(scene.surface->meshFile).vertices.size());
+    } catch (const Error& e) {
+        throw Error("[surface].mesh: " + std::string(e.what()));
+    }
+    const double n = scene.basis.highestVelocityMode(), m = scene.basis.scalarModes;
+    const double count = std::max(n, m) + 1.0;
+    const double eigensolve = v <= 1200.0 ? 3.0 * v * v * 8.0
+                                          : v * (1.5 * count + 2.0 * count) * 8.0 +
+                                                13.0 * 2.0 * v * std::log2(std::max(v, 2.0)) * 8.0;
+    const double coefficients = 2.0 * 3.0 * v * n * 8.0 + 1.6 * n * n * (n - 1.0) / 2.0 * 8.0 +
+                                2.0 * v * (3.0 * n + 256.0) * 8.0;
+    PrecomputeMemory memory;
+    memory.velocityDofs = std::int64_t(3.0 * v);
+    memory.scalarDofs = std::int64_t(v);
+    const bool solveIsLarger = eigensolve > coefficients;
+    memory.peakStage = solveIsLarger ? "surface eigensolve" : "structural coefficients";
+    memory.peakBytes = 1.15 * (40.0 * 1024 * 1024 + std::max(eigensolve, coefficients) + 3.0 * v * m * 8.0);
+    memory.gridBytes = memory.peakBytes;
+    return memory;
+}
+
+}  // namespace
+
 PrecomputeMemory estimatePrecomputeMemory(const SceneSpec& scene) {
+    if (scene.isSurface()) return estimateSurfaceMemory(scene);
     const GridSpec& grid = scene.grid;
     const BasisSpec& basis = scene.basis;
     Counts c;
@@ -159,6 +193,13 @@ PrecomputeMemory estimatePrecomputeMemory(const SceneSpec& scene) {
 PrecomputeMemory requirePrecomputeMemory(const SceneSpec& scene) {
     const PrecomputeMemory memory = estimatePrecomputeMemory(scene);
     const std::optional<std::uint64_t> available = availableMemory();
+    if (scene.isSurface()) {
+        requireMemory(memory.peakBytes,
+                      "[surface].mesh with " + std::to_string(memory.scalarDofs) + " vertices and velocity modes up to " +
+                          std::to_string(scene.basis.highestVelocityMode()),
+                      "the precompute (" + memory.peakStage + ")", "use a coarser mesh or fewer modes in [basis]");
+        return memory;
+    }
     std::string subject = gridResolutionText(scene.grid);
     std::string advice = "lower [grid].resolution";
     if (available && memory.gridBytes <= double(*available)) {

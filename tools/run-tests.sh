@@ -2,7 +2,8 @@
 # Builds modeflow and runs the whole test suite (set-up included). Extra arguments go to ctest,
 # e.g. `tools/run-tests.sh -LE slow` or `-R Cli`. Without arguments the Vulkan tests (labels
 # engine and tools) then run a second time with the Khronos validation layer forced on for every
-# context (MODEFLOW_VULKAN_VALIDATION=1); their tests fail on any validation message.
+# context (MODEFLOW_VULKAN_VALIDATION=1; slow tests once only: the slow window tests force the
+# layer themselves, the others are CPU-bound); their tests fail on any validation message.
 # The fuzz targets of tests/fuzz are built too (build-fuzz/, by tools/fuzz.sh) and each runs for
 # 10 s on its seeds (label fuzz), so a target that stops building or starts failing is noticed.
 #
@@ -27,5 +28,5 @@ ctest --output-on-failure -j "$(nproc)" "$@"
 (cd "$root/build-fuzz" && ctest --output-on-failure -j "$(nproc)" "$@")
 if [ $# -eq 0 ]; then
     echo "== again with the Vulkan validation layer on every context =="
-    MODEFLOW_VULKAN_VALIDATION=1 ctest --output-on-failure -j "$(nproc)" -L "engine|tools"
+    MODEFLOW_VULKAN_VALIDATION=1 ctest --output-on-failure -j "$(nproc)" -L "engine|tools" -LE slow
 fi

@@ -172,12 +172,22 @@ struct OutputSpec {
     int stepsPerFrame = 1;
 };
 
+/// `[surface]`: the fluid lives on a closed triangle-mesh surface instead of in a grid's box
+/// (README.md, "Curved surfaces").
+struct SurfaceSpec {
+    std::filesystem::path meshFile;  ///< OBJ, resolved against the scene's folder
+    bool operator==(const SurfaceSpec&) const = default;
+};
+
 /// A whole scene, validated: every field holds a meaningful value.
 struct SceneSpec {
     std::filesystem::path sourceFile;  ///< the TOML file it came from (empty if built in code)
     std::string name;                  ///< file stem, used to name outputs
-    GridSpec grid;
+    GridSpec grid;                  ///< grid scenes only
     std::vector<ShapeSpec> domain;  ///< empty: the whole grid box is fluid
+    /// Set in a surface scene, which has no [grid] and no [[domain]] (`grid` keeps its defaults
+    /// and means nothing there).
+    std::optional<SurfaceSpec> surface;
     BasisSpec basis;
     SimulationSpec simulation;
     InitialSpec initial;
@@ -186,6 +196,8 @@ struct SceneSpec {
     SmokeSpec smoke;
     ForcingSpec forcing;
     OutputSpec output;
+
+    bool isSurface() const { return surface.has_value(); }
 };
 
 }  // namespace modeflow

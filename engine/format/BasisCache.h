@@ -11,18 +11,38 @@
 #include <Eigen/Core>
 
 #include "engine/core/SceneSpec.h"
+#include "engine/core/TriangleMesh.h"
 #include "engine/format/SeparableModes.h"
 
 namespace modeflow {
 
+/// A basis on a grid (cut-cell DEC) or on a closed triangle surface (precompute/surface).
+enum class BasisKind { Grid, Surface };
+
 struct BasisCache {
     /// Canonical text of every input that shapes the basis; its hash names the file.
     std::string key;
-    GridSpec grid;
+    BasisKind kind = BasisKind::Grid;
+    GridSpec grid;  ///< grid bases only
     WallKind wall = WallKind::FreeSlip;
     BoundaryTreatment boundary = BoundaryTreatment::CutCell;
 
     std::vector<double> cellFraction;  ///< every grid cell's fraction inside Ω (x fastest)
+
+    /// Surface bases: the mesh and its edges, (a, b) with a < b. There the velocity DOFs are the
+    /// edges (`faces` numbers them 0, 1, …; the flux across a→b towards its left seen from
+    /// outside, ⋆1 the cotan weights), the divergence lives on the triangles (`cells`, ⋆2 =
+    /// 1/area) and the scalar DOFs are the vertices (⋆0 their barycentric areas).
+    struct Surface {
+        TriangleMesh mesh;
+        std::vector<std::array<int, 2>> edges;
+        /// Spectral dye advection (seed eq. 6.2): A_m,ij = ∫Φ_i (Ψ_m·∇Φ_j) for the scalar modes
+        /// i < j (one row per pair, engine/core/PackedLayout.h's row order), one column per
+        /// velocity mode m; A_m,ji = −A_m,ij.
+        Eigen::MatrixXd advection;
+        /// Each velocity mode's velocity at the vertices: rows 3v, 3v+1, 3v+2 are x, y, z.
+        Eigen::MatrixXd vertexVelocity;
+    } surface;
 
     /// Velocity degrees of freedom: faces (CubicalComplex numbering) and their ⋆(n-1).
     std::vector<std::int64_t> faces;

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <functional>
 
 #include "engine/core/Error.h"
 #include "engine/core/MacGrid.h"
@@ -84,12 +85,66 @@ std::int64_t cellCount(const GridSpec& grid, std::size_t cellLimit) {
     return cells;
 }
 
-}  // namespace
+using Require = std::function<void(bool holds, const char* what)>;
 
-void requireConsistentCache(const BasisCache& c, const std::string& where) {
-    const auto require = [&where](bool holds, const char* what) {
-        if (!holds) throw Error(where + " is corrupt (" + what + ")");
-    };
+/// The eigenvalues, mode numbers and coefficients of `n` velocity modes (either kind of basis).
+void requireConsistentSpectrum(const BasisCache& c, Eigen::Index n, const Require& require) {
+    const auto& v = c.velocity;
+    require(v.eigenvalues.size() == n && Eigen::Index(v.modeNumbers.size()) == n &&
+                v.harmonic >= 0 && v.harmonic <= n,
+            "its velocity eigenvalues, mode numbers or harmonic count disagree with its modes");
+    const auto& co = c.coefficients;
+    require(known(co.storage), "its coefficient storage is out of range");
+    if (co.storage == BasisCache::Coefficients::Storage::Dense) {
+        require(co.packed.size() == packedSize(std::size_t(n)) && co.value.empty() && co.k.empty(),
+                "its dense coefficients do not hold N²(N−1)/2 values for its N velocity modes");
+    } else {
+        bool ordered = co.k.size() == co.value.size() && co.i.size() == co.value.size() &&
+                       co.j.size() == co.value.size() && co.packed.empty();
+        for (std::size_t e = 0; ordered && e < co.value.size(); ++e)
+            ordered =
+                co.k[e] >= 0 && co.k[e] < co.j[e] && co.j[e] < n && co.i[e] >= 0 && co.i[e] < n;
+        require(ordered, "its sparse coefficients are not entries k < j of its velocity modes");
+    }
+}
+
+/// A surface basis (BasisCache::Surface): edges carry the velocity, triangles the divergence,
+/// vertices the scalar; every index lies on the mesh and every matrix has their sizes.
+void requireConsistentSurface(const BasisCache& c, const Require& require) {
+    const auto& s = c.surface;
+    const auto vertices = std::int64_t(s.mesh.vertices.size());
+    const auto edges = Eigen::Index(s.edges.size()), triangles = Eigen::Index(s.mesh.triangles.size());
+    bool onMesh = true;
+    for (const auto& t : s.mesh.triangles)
+        for (const int v : t) onMesh = onMesh && v >= 0 && v < vertices;
+    for (const auto& e : s.edges)
+        for (const int v : e) onMesh = onMesh && v >= 0 && v < vertices;
+    require(onMesh, "its surface's triangles or edges name vertices it does not have");
+    const auto& v = c.velocity;
+    const auto& sc = c.scalar;
+    require(v.source == BasisSource::Eigensolve && sc.source == BasisSource::Eigensolve &&
+                v.separable.empty() && sc.separable.empty(),
+            "its surface basis holds closed-form modes");
+    require(Eigen::Index(c.faces.size()) == edges && c.faceStar.size() == edges &&
+                v.modes.rows() == edges && allBelow(c.faces, edges),
+            "its velocity degrees of freedom disagree with its surface's edges");
+    require(Eigen::Index(c.cells.size()) == triangles && c.cellStar.size() == triangles &&
+                allBelow(c.cells, triangles),
+            "its divergence degrees of freedom disagree with its surface's triangles");
+    require(Eigen::Index(sc.cells.size()) == vertices && sc.cellStar.size() == vertices &&
+                sc.modes.rows() == vertices && allBelow(sc.cells, vertices) &&
+                sc.eigenvalues.size() == sc.modes.cols() && sc.omittedConstants >= 0,
+            "its scalar modes disagree with its surface's vertices or their eigenvalues");
+    const Eigen::Index n = v.modes.cols();
+    require(s.advection.rows() == Eigen::Index(pairCount(std::size_t(sc.modes.cols()))) &&
+                s.advection.cols() == n && s.vertexVelocity.rows() == 3 * vertices &&
+                s.vertexVelocity.cols() == n,
+            "its surface advection or vertex velocities disagree with its modes");
+    requireConsistentSpectrum(c, n, require);
+}
+
+/// A grid basis: cut-cell DEC on the grid's faces and cells, or closed-form descriptors.
+void requireConsistentGrid(const BasisCache& c, const Require& require) {
     const std::int64_t cells = cellCount(c.grid, c.cellFraction.size());
     require(cells >= 0 && std::size_t(cells) == c.cellFraction.size(),
             "its grid is not a 2D or 3D grid with one fraction per cell");
@@ -115,9 +170,6 @@ void requireConsistentCache(const BasisCache& c, const std::string& where) {
             "a closed-form mode's wave numbers or phases lie outside its grid");
     require(Eigen::Index(c.cells.size()) == c.cellStar.size() && allBelow(c.cells, cells),
             "its cell degrees of freedom disagree with the grid");
-    require(v.eigenvalues.size() == n && Eigen::Index(v.modeNumbers.size()) == n &&
-                v.harmonic >= 0 && v.harmonic <= n,
-            "its velocity eigenvalues, mode numbers or harmonic count disagree with its modes");
 
     const auto& s = c.scalar;
     const Eigen::Index cellRows = closedScalar ? Eigen::Index(s.cells.size()) : s.modes.rows();
@@ -126,19 +178,19 @@ void requireConsistentCache(const BasisCache& c, const std::string& where) {
                 s.eigenvalues.size() == scalarCount && allBelow(s.cells, cells) &&
                 s.omittedConstants >= 0 && (closedScalar ? s.modes.size() == 0 : s.separable.empty()),
             "its scalar modes disagree with their cells or eigenvalues");
+    requireConsistentSpectrum(c, n, require);
+}
 
-    const auto& co = c.coefficients;
-    if (co.storage == BasisCache::Coefficients::Storage::Dense) {
-        require(co.packed.size() == packedSize(std::size_t(n)) && co.value.empty() && co.k.empty(),
-                "its dense coefficients do not hold N²(N−1)/2 values for its N velocity modes");
-    } else {
-        bool ordered = co.k.size() == co.value.size() && co.i.size() == co.value.size() &&
-                       co.j.size() == co.value.size() && co.packed.empty();
-        for (std::size_t e = 0; ordered && e < co.value.size(); ++e)
-            ordered =
-                co.k[e] >= 0 && co.k[e] < co.j[e] && co.j[e] < n && co.i[e] >= 0 && co.i[e] < n;
-        require(ordered, "its sparse coefficients are not entries k < j of its velocity modes");
-    }
+}  // namespace
+
+void requireConsistentCache(const BasisCache& c, const std::string& where) {
+    const Require require = [&where](bool holds, const char* what) {
+        if (!holds) throw Error(where + " is corrupt (" + what + ")");
+    };
+    if (c.kind == BasisKind::Surface)
+        requireConsistentSurface(c, require);
+    else
+        requireConsistentGrid(c, require);
 }
 
 }  // namespace modeflow

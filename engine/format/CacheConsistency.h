@@ -12,7 +12,7 @@ namespace modeflow {
 
 /// @throw Error "<where> is corrupt (<what is inconsistent>)" for a cache whose grid is not 2D or
 ///        3D with positive sizes, whose choices are out of range, or whose arrays disagree in size
-///        or hold indices outside the grid or the basis.
+///        or hold indices outside the grid (a surface basis: its mesh) or the basis.
 void requireConsistentCache(const BasisCache& cache, const std::string& where);
 
 }  // namespace modeflow

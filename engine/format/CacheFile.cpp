@@ -110,6 +110,28 @@ private:
     std::vector<bool> mOrder;  ///< after the first small piece: true small, false view
 };
 
+/// Rows, columns, then the values viewed in place.
+void putMatrix(Payload& p, const Eigen::MatrixXd& m) {
+    p.small().pod<std::uint64_t>(std::uint64_t(m.rows()));
+    p.small().pod<std::uint64_t>(std::uint64_t(m.cols()));
+    p.view(m.data(), std::size_t(m.size()));
+}
+
+/// A surface basis's mesh, edges and runtime matrices, as flat arrays of coordinates and indices.
+void putSurface(Payload& p, const BasisCache::Surface& s) {
+    std::vector<double> points;
+    for (const Vec3& v : s.mesh.vertices) points.insert(points.end(), v.begin(), v.end());
+    std::vector<std::int32_t> corners;
+    for (const auto& t : s.mesh.triangles) corners.insert(corners.end(), t.begin(), t.end());
+    std::vector<std::int32_t> ends;
+    for (const auto& e : s.edges) ends.insert(ends.end(), e.begin(), e.end());
+    p.small().vector(points);
+    p.small().vector(corners);
+    p.small().vector(ends);
+    putMatrix(p, s.advection);
+    putMatrix(p, s.vertexVelocity);
+}
+
 void serialize(const BasisCache& c, Payload& p) {
     p.small().string(c.key);
     p.small().pod<std::int32_t>(c.grid.dim);
@@ -126,9 +148,7 @@ void serialize(const BasisCache& c, Payload& p) {
     p.array(c.cellStar.data(), std::size_t(c.cellStar.size()));
     p.small().pod<std::int32_t>(int(c.velocity.source));
     putVector(p.small(), c.velocity.eigenvalues);
-    p.small().pod<std::uint64_t>(std::uint64_t(c.velocity.modes.rows()));
-    p.small().pod<std::uint64_t>(std::uint64_t(c.velocity.modes.cols()));
-    p.view(c.velocity.modes.data(), std::size_t(c.velocity.modes.size()));
+    putMatrix(p, c.velocity.modes);
     putSeparable(p.small(), c.velocity.separable);
     p.small().vector(c.velocity.modeNumbers);
     p.small().pod<std::int32_t>(c.velocity.harmonic);
@@ -138,9 +158,7 @@ void serialize(const BasisCache& c, Payload& p) {
     p.array(c.scalar.cellStar.data(), std::size_t(c.scalar.cellStar.size()));
     p.small().pod<std::int32_t>(int(c.scalar.source));
     putVector(p.small(), c.scalar.eigenvalues);
-    p.small().pod<std::uint64_t>(std::uint64_t(c.scalar.modes.rows()));
-    p.small().pod<std::uint64_t>(std::uint64_t(c.scalar.modes.cols()));
-    p.view(c.scalar.modes.data(), std::size_t(c.scalar.modes.size()));
+    putMatrix(p, c.scalar.modes);
     putSeparable(p.small(), c.scalar.separable);
     p.small().pod<std::int32_t>(c.scalar.omittedConstants);
     p.small().pod<std::int32_t>(int(c.coefficients.storage));
@@ -155,6 +173,8 @@ void serialize(const BasisCache& c, Payload& p) {
         p.small().string(name);
         p.small().pod(seconds);
     }
+    p.small().pod<std::int32_t>(int(c.kind));
+    if (c.kind == BasisKind::Surface) putSurface(p, c.surface);
 }
 
 BasisSource takeSource(ByteReader& r) {
@@ -162,6 +182,23 @@ BasisSource takeSource(ByteReader& r) {
     if (value != int(BasisSource::Eigensolve) && value != int(BasisSource::ClosedForm))
         r.fail("a basis source is out of range");
     return BasisSource(value);
+}
+
+/// The mesh and edges of a surface basis; whether their indices and sizes fit the rest is
+/// requireConsistentCache's to check.
+void takeSurface(ByteReader& r, BasisCache::Surface& s) {
+    const std::vector<double> points = r.vector<double>();
+    const std::vector<std::int32_t> corners = r.vector<std::int32_t>();
+    const std::vector<std::int32_t> ends = r.vector<std::int32_t>();
+    s.advection = takeMatrix(r);
+    s.vertexVelocity = takeMatrix(r);
+    if (points.size() % 3 != 0 || corners.size() % 3 != 0 || ends.size() % 2 != 0)
+        r.fail("its surface's points, triangles or edges are not whole");
+    for (std::size_t i = 0; i < points.size(); i += 3)
+        s.mesh.vertices.push_back({points[i], points[i + 1], points[i + 2]});
+    for (std::size_t i = 0; i < corners.size(); i += 3)
+        s.mesh.triangles.push_back({corners[i], corners[i + 1], corners[i + 2]});
+    for (std::size_t i = 0; i < ends.size(); i += 2) s.edges.push_back({ends[i], ends[i + 1]});
 }
 
 BasisCache deserialize(std::string_view payload, const std::string& where) {
@@ -210,6 +247,11 @@ BasisCache deserialize(std::string_view payload, const std::string& where) {
         std::string name = r.string();
         c.timings.emplace_back(std::move(name), r.pod<double>());
     }
+    const auto kind = r.pod<std::int32_t>();
+    if (kind != int(BasisKind::Grid) && kind != int(BasisKind::Surface))
+        r.fail("its basis kind is out of range");
+    c.kind = BasisKind(kind);
+    if (c.kind == BasisKind::Surface) takeSurface(r, c.surface);
     if (!r.atEnd()) r.fail("bytes follow its last record");
     requireConsistentCache(c, where);
     return c;

@@ -15,7 +15,7 @@
 
 namespace modeflow {
 
-inline constexpr std::uint32_t kCacheFormatVersion = 4;  ///< 3: periodic axes; 4: closed-form bases
+inline constexpr std::uint32_t kCacheFormatVersion = 5;  ///< 3: periodic axes; 4: closed-form bases; 5: surface bases
 
 /// Writes to a temporary file beside `path` (AtomicFile.h), then renames it over `path`, so
 /// readers see the old file or the whole new one.

@@ -21,14 +21,14 @@ bool allDigits(std::string_view text) {
     return !text.empty() && text.find_first_not_of("0123456789") == std::string_view::npos;
 }
 
-/// NAME_<digits>.vdb or .png, NAME_contact.png, NAME.resume.
+/// NAME_<digits>.vdb, .ply or .png, NAME_contact.png, NAME.resume.
 bool isRunFile(const std::string& file, const std::string& scene) {
     if (file == scene + ".resume" || file == scene + "_contact.png") return true;
     const std::string prefix = scene + "_";
     if (file.size() <= prefix.size() + 4 || file.compare(0, prefix.size(), prefix) != 0) return false;
     const std::string_view rest = std::string_view(file).substr(prefix.size());
     const std::string_view extension = rest.substr(rest.size() - 4);
-    return (extension == ".vdb" || extension == ".png") && allDigits(rest.substr(0, rest.size() - 4));
+    return (extension == ".vdb" || extension == ".ply" || extension == ".png") && allDigits(rest.substr(0, rest.size() - 4));
 }
 
 }  // namespace

@@ -7,8 +7,8 @@
 namespace modeflow {
 namespace {
 
-constexpr BackendCapabilities kCpuReference{"the CPU reference", "cpu", true, true, true, false};
-constexpr BackendCapabilities kVulkan{"a Vulkan device", "vulkan", false, false, false, true};
+constexpr BackendCapabilities kCpuReference{"the CPU reference", "cpu", true, true, true, false, true};
+constexpr BackendCapabilities kVulkan{"a Vulkan device", "vulkan", false, false, false, true, false};
 
 }  // namespace
 
@@ -20,6 +20,8 @@ void requireSupport(const SceneSpec& scene, BackendKind kind, std::optional<Inte
                     std::string_view integratorOption) {
     const BackendCapabilities& backend = capabilitiesOf(kind);
     const std::string file = scene.sourceFile.empty() ? scene.name : scene.sourceFile.string();
+    if (scene.isSurface() && !backend.surfaces)
+        throw Error(file + ": [surface] scenes run on the CPU reference only; use --device cpu");
     if (scene.simulation.mhd && !backend.mhd)
         throw Error(file + ": [simulation].mhd runs on the CPU reference only; use --device cpu");
     if (scene.forcing.holds() && !backend.forcing)

@@ -22,6 +22,7 @@ struct BackendCapabilities {
     bool trapezoidal = false;  ///< [simulation].integrator = "trapezoidal"
     bool forcing = false;      ///< [forcing]: held modes
     bool stageTimes = false;  ///< per-stage times in FrameStats
+    bool surfaces = false;    ///< surface scenes ([surface])
 };
 
 /// The row of the table for `kind`.

@@ -6,20 +6,22 @@
 
 namespace modeflow {
 
-bool SmokeEmitter::contains(const Vec3& worldPoint, const MacGrid& grid) const {
-    const int dim = grid.dim;
+bool SmokeEmitter::contains(const Vec3& point, int dim) const {
     if (shape == EmitterShape::Box) {
-        const Vec3 middle{0.5 * (min[0] + max[0]), 0.5 * (min[1] + max[1]),
-                          0.5 * (min[2] + max[2])};
-        const Vec3 point = grid.nearestImage(worldPoint, middle);
         for (int a = 0; a < dim; ++a)
             if (point[a] < min[a] || point[a] > max[a]) return false;
         return true;
     }
-    const Vec3 point = grid.nearestImage(worldPoint, centre);
     double distance2 = 0.0;
     for (int a = 0; a < dim; ++a) distance2 += (point[a] - centre[a]) * (point[a] - centre[a]);
     return distance2 <= radius * radius;
+}
+
+bool SmokeEmitter::contains(const Vec3& worldPoint, const MacGrid& grid) const {
+    const Vec3 middle = shape == EmitterShape::Box
+                            ? Vec3{0.5 * (min[0] + max[0]), 0.5 * (min[1] + max[1]), 0.5 * (min[2] + max[2])}
+                            : centre;
+    return contains(grid.nearestImage(worldPoint, middle), grid.dim);
 }
 
 SmokeEmitter emitterFromSource(const SourceSpec& source) {

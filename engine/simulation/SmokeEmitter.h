@@ -30,6 +30,9 @@ struct SmokeEmitter {
 
     /// Whether the emitter emits during the step that starts at time t.
     bool activeAt(double t) const { return start <= t && t < end; }
+    /// Whether the point is inside (boundary included); only the first `dim` axes count (a
+    /// surface's vertices: all three).
+    bool contains(const Vec3& point, int dim) const;
     /// Whether the world point is inside (boundary included); only the grid's axes count, and
     /// along its periodic ones the point's image nearest the emitter's centre (an emitter on the
     /// seam fills both ends).

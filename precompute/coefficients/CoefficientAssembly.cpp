@@ -82,9 +82,9 @@ ElementSampling sampleElements(const CubicalComplex& cx, const CutCellMeasures& 
     return s;
 }
 
-/// packed(:, pair(k,j)) += Ωᵀ R(k,j), R_e(k,j) = P_ek Q_ej − Q_ek P_ej, in blocks of pairs so the
-/// products are matrix-matrix (cache friendly, threaded by Eigen).
-void accumulate(const Eigen::MatrixXd& omega, const Eigen::MatrixXd& p, const Eigen::MatrixXd& q,
+}  // namespace
+
+void accumulateCrossProducts(const Eigen::MatrixXd& omega, const Eigen::MatrixXd& p, const Eigen::MatrixXd& q,
                 std::vector<double>& packed) {
     const int modes = int(p.cols());
     const Eigen::Index elements = p.rows();
@@ -107,8 +107,6 @@ void accumulate(const Eigen::MatrixXd& omega, const Eigen::MatrixXd& p, const Ei
     }
 }
 
-}  // namespace
-
 std::vector<double> assembleStructuralCoefficients(const CubicalComplex& complex,
                                                    const CutCellMeasures& measures,
                                                    const CutCellDec& dec,
@@ -124,7 +122,7 @@ std::vector<double> assembleStructuralCoefficients(const CubicalComplex& complex
         const Eigen::MatrixXd omega = s.vorticity * modes;
         const Eigen::MatrixXd p = s.velocityB * modes;
         const Eigen::MatrixXd q = s.velocityC * modes;
-        accumulate(omega, p, q, packed);
+        accumulateCrossProducts(omega, p, q, packed);
     }
     return packed;
 }

@@ -27,4 +27,12 @@ std::vector<double> assembleStructuralCoefficients(const CubicalComplex& complex
                                                    const CutCellDec& dec,
                                                    const Eigen::MatrixXd& modes);
 
+/// packed(:, pair(k,j)) += Ωᵀ R(k,j) with R_e(k,j) = P_ek Q_ej − Q_ek P_ej: the quadrature of
+/// ω_i (u_k × u_j)·n at elements e (rows) whose weighted vorticity is Ω and whose velocity
+/// components along two orthonormal tangent directions are P and Q (one column per mode). In
+/// blocks of pairs so the products are matrix-matrix (cache friendly, threaded by Eigen). Also
+/// the surfaces' assembly (precompute/surface/SurfaceCoefficients.h).
+void accumulateCrossProducts(const Eigen::MatrixXd& omega, const Eigen::MatrixXd& p,
+                             const Eigen::MatrixXd& q, std::vector<double>& packed);
+
 }  // namespace modeflow

@@ -51,10 +51,13 @@ DirichletScalarDec buildDirichletScalarDec(const CubicalComplex& cx, const Domai
     const GridSpec& grid = cx.grid();
     const int n = grid.dim;
     const double tol = insideTolerance(grid);
-    std::vector<bool> inside(size_t(cx.count(n)));
+    // One byte per cell while threads write: std::vector<bool> packs neighbours into one word,
+    // and concurrent writes to it race (cells went missing at random on small grids).
+    std::vector<char> insideByte(size_t(cx.count(n)));
 #pragma omp parallel for schedule(static)
     for (std::int64_t c = 0; c < cx.count(n); ++c)
-        inside[c] = chiInBox(grid, domain, cellCentre(grid, cx.element(n, c).pos)) > tol;
+        insideByte[c] = chiInBox(grid, domain, cellCentre(grid, cx.element(n, c).pos)) > tol;
+    const std::vector<bool> inside(insideByte.begin(), insideByte.end());
 
     DirichletScalarDec dec;
     dec.grid = grid;

@@ -9,6 +9,7 @@
 #include <map>
 #include <numbers>
 #include <random>
+#include <set>
 #include <utility>
 
 #include "engine/core/Error.h"
@@ -110,6 +111,91 @@ TriangleMesh makeBlobMesh(int subdivisions, unsigned seed) {
         for (double& x : v) x *= 0.8 * scale;
     }
     return mesh;
+}
+
+TriangleMesh makeTorus(int around, int across, double majorRadius, double minorRadius, const Vec3& center) {
+    if (around < 4 || around % 2 != 0 || across < 3)
+        throw Error("torus: an even number of at least 4 vertices around and at least 3 across (got " +
+                    std::to_string(around) + " and " + std::to_string(across) + ")");
+    // Each ring turns half a step further than the one before, so that the triangles are nearly
+    // equilateral: on an untwisted lattice the quads are isosceles trapezoids, whose diagonals
+    // get cotan weights of exactly 0.
+    TriangleMesh mesh;
+    for (int i = 0; i < around; ++i)
+        for (int j = 0; j < across; ++j) {
+            const double u = 2.0 * std::numbers::pi * i / around;
+            const double v = 2.0 * std::numbers::pi * (j + 0.5 * i) / across;
+            const double r = majorRadius + minorRadius * std::cos(v);
+            mesh.vertices.push_back({center[0] + r * std::cos(u), center[1] + r * std::sin(u),
+                                     center[2] + minorRadius * std::sin(v)});
+        }
+    // Ring `around` is ring 0 turned by around/2 steps.
+    const auto at = [&](int i, int j) {
+        if (i == around) return (j + around / 2) % across;
+        return i * across + j % across;
+    };
+    // (∂p/∂u) × (∂p/∂v) points outwards: triangles run along i, then along j.
+    for (int i = 0; i < around; ++i)
+        for (int j = 0; j < across; ++j) {
+            mesh.triangles.push_back({at(i, j), at(i + 1, j), at(i, j + 1)});
+            mesh.triangles.push_back({at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)});
+        }
+    return mesh;
+}
+
+TriangleMesh makeVoxelSurface(const std::vector<std::array<int, 3>>& voxels, int subdivisions, double scale) {
+    const int s = subdivisions;
+    std::map<std::array<int, 3>, int> index;  // lattice point (in 1/s units) → vertex
+    TriangleMesh mesh;
+    std::array<int, 3> lo = voxels.front(), hi = voxels.front();
+    for (const auto& v : voxels)
+        for (int a = 0; a < 3; ++a) lo[a] = std::min(lo[a], v[a]), hi[a] = std::max(hi[a], v[a] + 1);
+    const auto vertex = [&](const std::array<int, 3>& p) {
+        const auto [it, added] = index.emplace(p, int(mesh.vertices.size()));
+        if (added) {
+            Vec3 x;
+            for (int a = 0; a < 3; ++a) x[a] = scale * (double(p[a]) / s - 0.5 * (lo[a] + hi[a]));
+            mesh.vertices.push_back(x);
+        }
+        return it->second;
+    };
+    const std::set<std::array<int, 3>> solid(voxels.begin(), voxels.end());
+    for (const auto& v : voxels)
+        for (int a = 0; a < 3; ++a)
+            for (int side : {0, 1}) {
+                std::array<int, 3> neighbour = v;
+                neighbour[a] += side ? 1 : -1;
+                if (solid.count(neighbour)) continue;
+                const int b = (a + 1) % 3, c = (a + 2) % 3;  // e_b × e_c = e_a
+                for (int i = 0; i < s; ++i)
+                    for (int j = 0; j < s; ++j) {
+                        std::array<int, 4> q;
+                        const int corners[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+                        for (int k = 0; k < 4; ++k) {
+                            std::array<int, 3> p{v[0] * s, v[1] * s, v[2] * s};
+                            p[a] += side * s;
+                            p[b] += i + corners[k][0];
+                            p[c] += j + corners[k][1];
+                            q[k] = vertex(p);
+                        }
+                        if (side == 1) {  // outward +e_a: counter-clockwise in (b, c)
+                            mesh.triangles.push_back({q[0], q[1], q[2]});
+                            mesh.triangles.push_back({q[0], q[2], q[3]});
+                        } else {
+                            mesh.triangles.push_back({q[0], q[2], q[1]});
+                            mesh.triangles.push_back({q[0], q[3], q[2]});
+                        }
+                    }
+            }
+    return mesh;
+}
+
+TriangleMesh makeDoubleTorus(int subdivisions) {
+    std::vector<std::array<int, 3>> voxels;
+    for (int x = 0; x < 5; ++x)
+        for (int y = 0; y < 3; ++y)
+            if (!(y == 1 && (x == 1 || x == 3))) voxels.push_back({x, y, 0});
+    return makeVoxelSurface(voxels, subdivisions, 0.5);
 }
 
 void writeObj(const std::filesystem::path& file, const TriangleMesh& mesh) {

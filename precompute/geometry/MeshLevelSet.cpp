@@ -1,12 +1,11 @@
 /// @file MeshLevelSet.cpp
-/// The one translation unit with OpenVDB and tinyobjloader includes.
+/// The one translation unit with OpenVDB includes.
 
 #include "precompute/geometry/MeshLevelSet.h"
 
 #include <openvdb/openvdb.h>
 #include <openvdb/tools/Interpolation.h>
 #include <openvdb/tools/MeshToVolume.h>
-#include <tiny_obj_loader.h>
 
 #include <array>
 #include <charconv>
@@ -21,8 +20,7 @@
 #include <vector>
 
 #include "engine/core/Error.h"
-#include "engine/core/FileKind.h"
-#include "precompute/geometry/ObjLineCheck.h"
+#include "precompute/geometry/ObjMesh.h"
 
 namespace modeflow {
 namespace {
@@ -57,82 +55,24 @@ void initializeOpenVdb() {
     std::call_once(once, [] { openvdb::initialize(); });
 }
 
-std::string trimmed(std::string s) {
-    while (!s.empty() &&
-           (s.back() == '\n' || s.back() == '\r' || s.back() == ' ' || s.back() == '.'))
-        s.pop_back();
-    return s;
-}
-
 struct RawMesh {
     std::vector<openvdb::Vec3s> points;
     std::vector<openvdb::Vec3I> triangles;
 };
 
-/// Parses the OBJ and triangulates every face (fans for anything tinyobjloader left as a
-/// polygon); drops triangles with a repeated vertex, which have no area. checkObjLines names bad
-/// vertices and faces with their line first; the checks here guard what tinyobjloader returns.
+/// The OBJ's triangles (ObjMesh.h) without those with a repeated vertex, which have no area.
 RawMesh readObj(const fs::path& file) {
-    const std::string name = file.string();
-    if (auto why = whyNotARegularFile(file)) {
-        std::error_code ec;
-        throw Error("mesh file " + name + " " + *why +
-                    (fs::exists(file, ec) ? ", not a regular file" : ""));
-    }
-    checkObjLines(file);
-
-    tinyobj::ObjReaderConfig config;
-    config.triangulate = true;
-    config.vertex_color = false;
-    tinyobj::ObjReader reader;
-    if (!reader.ParseFromFile(name, config)) {
-        const std::string why = trimmed(reader.Error());
-        throw Error("mesh file " + name + " is not a valid OBJ file" +
-                    (why.empty() ? std::string() : ": " + why));
-    }
-
+    const TriangleMesh obj = readObjMesh(file);
     RawMesh mesh;
-    const auto& coords = reader.GetAttrib().vertices;
-    const std::size_t vertexCount = coords.size() / 3;
-    mesh.points.reserve(vertexCount);
-    for (std::size_t i = 0; i < vertexCount; ++i) {
-        const openvdb::Vec3s p(coords[3 * i], coords[3 * i + 1], coords[3 * i + 2]);
-        if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
-            throw Error("mesh file " + name + ": vertex " + std::to_string(i + 1) +
-                        " has a non-finite coordinate");
-        mesh.points.push_back(p);
-    }
-
-    std::size_t faceCount = 0;
-    for (const auto& shape : reader.GetShapes()) {
-        std::size_t offset = 0;
-        for (const unsigned char corners : shape.mesh.num_face_vertices) {
-            std::vector<std::uint32_t> face;
-            for (unsigned c = 0; c < corners; ++c) {
-                const int v = shape.mesh.indices[offset + c].vertex_index;
-                if (v < 0 || static_cast<std::size_t>(v) >= vertexCount)
-                    throw Error("mesh file " + name + ": a face refers to vertex " +
-                                std::to_string(v + 1) + " but the file has " +
-                                std::to_string(vertexCount) + " vertices");
-                face.push_back(static_cast<std::uint32_t>(v));
-            }
-            offset += corners;
-            ++faceCount;
-            for (std::size_t c = 1; c + 1 < face.size(); ++c) {
-                const std::uint32_t a = face[0], b = face[c], d = face[c + 1];
-                if (a == b || b == d || d == a) continue;
-                mesh.triangles.emplace_back(a, b, d);
-            }
-        }
-    }
-    if (faceCount == 0) {
-        throw Error("mesh file " + name + " has no faces" +
-                    (vertexCount == 0 ? std::string(" and no vertices: not an OBJ mesh")
-                                      : " (only " + std::to_string(vertexCount) + " vertices)") +
-                    "; a closed triangle surface is needed");
+    mesh.points.reserve(obj.vertices.size());
+    for (const Vec3& p : obj.vertices)
+        mesh.points.emplace_back(float(p[0]), float(p[1]), float(p[2]));
+    for (const auto& [a, b, c] : obj.triangles) {
+        if (a == b || b == c || c == a) continue;
+        mesh.triangles.emplace_back(std::uint32_t(a), std::uint32_t(b), std::uint32_t(c));
     }
     if (mesh.triangles.empty())
-        throw Error("mesh file " + name + " has only degenerate faces (repeated vertices)");
+        throw Error("mesh file " + file.string() + " has only degenerate faces (repeated vertices)");
     return mesh;
 }
 

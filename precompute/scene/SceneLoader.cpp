@@ -42,24 +42,34 @@ SceneSpec readScene(std::string_view text, const std::filesystem::path& origin) 
     scene.name = origin.stem().string();
 
     checkTopLevel(reader, root);
-    scene.grid = readGrid(reader, {*reader.requireTable(root, "grid"), "[grid]"});
-
-    reader.forEachEntry(root, "domain", [&](const toml::table& t, int index) {
-        scene.domain.push_back(readShape(reader, t, "[[domain]]", index, true));
-    });
+    if (const toml::table* surface = reader.optionalTable(root, "surface")) {
+        checkSurfaceSceneTables(reader, root);
+        scene.surface = readSurface(reader, {*surface, "[surface]"});
+    } else {
+        scene.grid = readGrid(reader, {*reader.requireTable(root, "grid"), "[grid]"});
+        reader.forEachEntry(root, "domain", [&](const toml::table& t, int index) {
+            scene.domain.push_back(readShape(reader, t, "[[domain]]", index, true));
+        });
+    }
     const Section basis{*reader.requireTable(root, "basis"), "[basis]"};
+    if (scene.isSurface()) checkSurfaceBasis(reader, basis);
     scene.basis = readBasis(reader, basis);
-    checkBasisFitsGrid(reader, basis, scene.basis, scene.grid);
+    // A surface's discrete spaces are known once its mesh is read (the precompute checks them).
+    if (!scene.isSurface()) checkBasisFitsGrid(reader, basis, scene.basis, scene.grid);
     if (const toml::table* t = reader.optionalTable(root, "simulation")) {
-        scene.simulation = readSimulation(reader, {*t, "[simulation]"});
+        const Section simulation{*t, "[simulation]"};
+        scene.simulation = readSimulation(reader, simulation);
+        if (scene.isSurface()) checkSurfaceSimulation(reader, simulation, scene.simulation);
     }
     if (const toml::table* t = reader.optionalTable(root, "initial")) {
         const Section initial{*t, "[initial]"};
         // Before reading them, so a field key in a non-MHD scene is named for that.
         checkInitialFieldKeys(reader, initial, scene.simulation);
+        if (scene.isSurface()) checkSurfaceInitial(reader, initial);
         scene.initial = readInitial(reader, initial);
         checkInitialFitsBasis(reader, initial, scene.initial, scene.basis);
-        checkInitialSpeeds(reader, initial, scene.initial, scene.grid);
+        // Speeds are measured on the grid's box; a surface's area is known once its mesh is read.
+        if (!scene.isSurface()) checkInitialSpeeds(reader, initial, scene.initial, scene.grid);
     }
     checkEntryCount(reader, root, "source", maxSmokeEmitters, "sources");
     reader.forEachEntry(root, "source", [&](const toml::table& t, int index) {

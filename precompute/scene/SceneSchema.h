@@ -18,9 +18,12 @@ using keywords::keywordOf;
 using namespace keywords;
 
 inline constexpr std::string_view kTopLevelTables[] = {
-    "grid",   "domain",   "basis", "simulation", "initial",
-    "source", "obstacle", "smoke", "forcing",    "output"};
+    "grid",   "domain",   "surface", "basis",   "simulation", "initial",
+    "source", "obstacle", "smoke",   "forcing", "output"};
 inline constexpr std::string_view kGridKeys[] = {"resolution", "bounds_min", "bounds_max", "periodic"};
+inline constexpr std::string_view kSurfaceKeys[] = {"mesh"};
+/// [basis] keys that only a grid scene takes.
+inline constexpr std::string_view kGridBasisKeys[] = {"scalar_boundary", "wall", "boundary", "subsamples"};
 inline constexpr std::string_view kBasisKeys[] = {
     "velocity_modes", "modes", "scalar_modes", "scalar_boundary", "wall", "boundary", "subsamples"};
 inline constexpr std::string_view kSimulationKeys[] = {

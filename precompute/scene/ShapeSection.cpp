@@ -20,32 +20,6 @@ namespace fs = std::filesystem;
 /// Paths are longer than keys; 240 characters show any reasonable one whole.
 constexpr std::size_t kShownPathChars = 240;
 
-fs::path readMeshFile(const TomlReader& reader, const Section& s) {
-    const std::optional<std::string> file = reader.string(s, "file");
-    if (!file) reader.fail(s, "file", "missing required key");
-    if (file->empty()) reader.fail(s, "file", "must name an OBJ file, got an empty string");
-    fs::path path(*file);
-    if (path.is_relative()) path = reader.origin().parent_path() / path;
-    path = path.lexically_normal();
-    std::string extension = path.extension().string();
-    std::transform(extension.begin(), extension.end(), extension.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    if (extension != ".obj") {
-        reader.fail(s, "file",
-                    "only OBJ meshes are supported, got \"" + printableText(*file) + "\"",
-                    s.table.get("file"));
-    }
-    if (auto why = whyNotARegularFile(path)) {
-        const std::string shown = printableText(path.string(), kShownPathChars);
-        std::error_code ec;
-        reader.fail(s, "file",
-                    fs::exists(path, ec) ? shown + " " + *why + ", not an OBJ file"
-                                         : "no such file: " + shown,
-                    s.table.get("file"));
-    }
-    return path;
-}
-
 /// Rejects every key the shape does not take, naming the shape when the key belongs to another.
 void checkShapeKeys(const TomlReader& reader, const Section& s, ShapeKind kind, bool isDomain) {
     const std::string_view kindName = keywordOf(Choices<ShapeKind>(kShapeKinds), kind);
@@ -84,6 +58,32 @@ void checkShapeKeys(const TomlReader& reader, const Section& s, ShapeKind kind, 
 }
 
 }  // namespace
+
+fs::path readMeshFile(const TomlReader& reader, const Section& s, std::string_view key) {
+    const std::optional<std::string> file = reader.string(s, key);
+    if (!file) reader.fail(s, key, "missing required key");
+    if (file->empty()) reader.fail(s, key, "must name an OBJ file, got an empty string");
+    fs::path path(*file);
+    if (path.is_relative()) path = reader.origin().parent_path() / path;
+    path = path.lexically_normal();
+    std::string extension = path.extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    if (extension != ".obj") {
+        reader.fail(s, key,
+                    "only OBJ meshes are supported, got \"" + printableText(*file) + "\"",
+                    s.table.get(key));
+    }
+    if (auto why = whyNotARegularFile(path)) {
+        const std::string shown = printableText(path.string(), kShownPathChars);
+        std::error_code ec;
+        reader.fail(s, key,
+                    fs::exists(path, ec) ? shown + " " + *why + ", not an OBJ file"
+                                         : "no such file: " + shown,
+                    s.table.get(key));
+    }
+    return path;
+}
 
 ShapeSpec readShape(const TomlReader& reader, const toml::table& table, const std::string& section,
                     int index, bool isDomain) {
@@ -160,7 +160,7 @@ ShapeSpec readShape(const TomlReader& reader, const toml::table& table, const st
             }
             break;
         case ShapeKind::Mesh:
-            shape.meshFile = readMeshFile(reader, s);
+            shape.meshFile = readMeshFile(reader, s, "file");
             break;
     }
 

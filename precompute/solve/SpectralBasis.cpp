@@ -17,18 +17,6 @@ namespace {
 /// Below this size a dense solve is cheaper and exact for any count.
 constexpr Eigen::Index kDenseLimit = 1200;
 
-EigenPairs lowestPairs(const Eigen::SparseMatrix<double>& k, const Eigen::VectorXd& m,
-                       const EigenRequest& request) {
-    if (k.rows() > kDenseLimit) return smallestEigenpairs(k, m, request);
-    const Eigen::VectorXd s = m.cwiseSqrt().cwiseInverse();
-    const Eigen::MatrixXd a = s.asDiagonal() * Eigen::MatrixXd(k) * s.asDiagonal();
-    Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(a);
-    EigenPairs out;
-    out.values = eig.eigenvalues().head(request.count);
-    out.vectors = s.asDiagonal() * eig.eigenvectors().leftCols(request.count);
-    return out;
-}
-
 int find(std::vector<int>& parent, int i) {
     while (parent[i] != i) i = parent[i] = parent[parent[i]];
     return i;
@@ -39,6 +27,18 @@ std::string plural(std::int64_t n, const char* word) {
 }
 
 }  // namespace
+
+EigenPairs lowestEigenpairs(const Eigen::SparseMatrix<double>& k, const Eigen::VectorXd& m,
+                            const EigenRequest& request) {
+    if (k.rows() > kDenseLimit) return smallestEigenpairs(k, m, request);
+    const Eigen::VectorXd s = m.cwiseSqrt().cwiseInverse();
+    const Eigen::MatrixXd a = s.asDiagonal() * Eigen::MatrixXd(k) * s.asDiagonal();
+    Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(a);
+    EigenPairs out;
+    out.values = eig.eigenvalues().head(request.count);
+    out.vectors = s.asDiagonal() * eig.eigenvectors().leftCols(request.count);
+    return out;
+}
 
 double referenceEigenvalue(const GridSpec& grid) {
     double l = 0.0;
@@ -128,7 +128,7 @@ ScalarBasisResult solveNeumannScalarBasis(const CutCellDec& dec, int count,
                                "scalar (Neumann) eigensolve",
                                progress,
                                dec.grid.anyPeriodic()};
-    return fromPairs(lowestPairs(neumannScalarLaplacian(dec), dec.cellStar, request), constants);
+    return fromPairs(lowestEigenpairs(neumannScalarLaplacian(dec), dec.cellStar, request), constants);
 }
 
 ScalarBasisResult solveDirichletScalarBasis(const DirichletScalarDec& dec, int count,
@@ -139,7 +139,7 @@ ScalarBasisResult solveDirichletScalarBasis(const DirichletScalarDec& dec, int c
     const EigenRequest request{count,    -1e-2 * referenceEigenvalue(dec.grid),
                                1e-12,    "scalar (Dirichlet) eigensolve",
                                progress, dec.grid.anyPeriodic()};
-    return fromPairs(lowestPairs(dirichletScalarLaplacian(dec), dec.cellStar, request), 0);
+    return fromPairs(lowestEigenpairs(dirichletScalarLaplacian(dec), dec.cellStar, request), 0);
 }
 
 VelocityBasisResult solveVelocityBasis(const CutCellDec& dec, const std::vector<ModeRange>& ranges,
@@ -166,7 +166,7 @@ VelocityBasisResult solveVelocityBasis(const CutCellDec& dec, const std::vector<
     EigenPairs pairs;
     SolverStats stats;
     for (int attempt = 0;; ++attempt) {
-        pairs = lowestPairs(velocityLaplacian(dec, penalty), dec.faceStar, request);
+        pairs = lowestEigenpairs(velocityLaplacian(dec, penalty), dec.faceStar, request);
         stats += pairs.stats;
         const double top = pairs.values[highest - 1];
         // Every gradient eigenvalue of the penalized operator is at least (1+s)μ₁², so when the

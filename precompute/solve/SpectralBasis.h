@@ -28,6 +28,11 @@ struct ScalarBasisResult {
     SolverStats stats;
 };
 
+/// The lowest `request.count` eigenpairs of K x = λ M x (M diagonal, positive): a dense solve
+/// below 1200 unknowns (exact for any count), shift-invert Lanczos above.
+EigenPairs lowestEigenpairs(const Eigen::SparseMatrix<double>& k, const Eigen::VectorXd& m,
+                            const EigenRequest& request);
+
 /// Number of connected components of the DOF cells, linked through DOF faces.
 int connectedComponents(const CutCellDec& dec);
 

@@ -49,10 +49,19 @@ velocity = "random"
 magnetic_energy = 0.5'
 scene box "$box" 4 ""
 scene wholebox "$wholebox" 6 ""
+# A fluid on an icosahedron's surface: a surface basis (mesh, edges, advection, vertex velocities).
+t=1.618033988749895
+printf 'v %s\n' "-1 $t 0" "1 $t 0" "-1 -$t 0" "1 -$t 0" "0 -1 $t" "0 1 $t" "0 -1 -$t" "0 1 -$t" \
+    "$t 0 -1" "$t 0 1" "-$t 0 -1" "-$t 0 1" >"$work/icosahedron.obj"
+printf 'f %s\n' "1 12 6" "1 6 2" "1 2 8" "1 8 11" "1 11 12" "2 6 10" "6 12 5" "12 11 3" "11 8 7" \
+    "8 2 9" "4 10 5" "4 5 3" "4 3 7" "4 7 9" "4 9 10" "5 10 6" "3 5 12" "7 3 11" "9 7 8" "10 9 2" \
+    >>"$work/icosahedron.obj"
+scene surface "[surface]
+mesh = \"icosahedron.obj\"" 4 ""
 
 caches="$here/corpus/CacheReader" checkpoints="$here/corpus/CheckpointReader"
 mkdir -p "$caches" "$checkpoints"
-for name in disk box wholebox; do
+for name in disk box wholebox surface; do
     cache=$("$modeflow" precompute "$work/$name.toml" --cache-dir "$work/cache" 2>/dev/null | tail -n 1)
     cp "$cache" "$caches/$name.mfbasis"
     # The payload alone: the target wraps inputs without the magic in a valid header and checksum.

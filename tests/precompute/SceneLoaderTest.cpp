@@ -1209,5 +1209,64 @@ TEST(SceneLoaderPeriodic, PeriodicAxesAreAcceptedAndCountTheirFacesOnce) {
     }
 }
 
+// ---- surface scenes ([surface]) -----------------------------------------------------------------
+
+constexpr const char* kSurface = "[surface]\nmesh = \"meshes/ball.obj\"\n";
+
+TEST_F(SceneLoaderTest, SurfaceSceneReadsItsMeshAndThreeDimensionalSources) {
+    write("meshes/ball.obj", "v 0 0 0\n");
+    const fs::path file = write("ball_surface.toml", std::string(kSurface) + R"(
+[basis]
+velocity_modes = 12
+scalar_modes = 20
+
+[initial]
+velocity = "modes"
+amplitudes = [[1, 0.5]]
+
+[[source]]
+shape = "ball"
+center = [0.0, 0.0, 1.0]
+radius = 0.2
+density = 2.0
+)");
+    const SceneSpec scene = loadScene(file);
+    ASSERT_TRUE(scene.isSurface());
+    EXPECT_TRUE(fs::equivalent(scene.surface->meshFile, mDir / "meshes" / "ball.obj"));
+    EXPECT_TRUE(scene.domain.empty());
+    EXPECT_EQ(scene.basis.velocityCount(), 12);
+    EXPECT_EQ(scene.basis.scalarModes, 20);
+    ASSERT_EQ(scene.sources.size(), 1u);
+    EXPECT_EQ(scene.sources[0].shape.center, (Vec3{0.0, 0.0, 1.0}));
+    EXPECT_FALSE(loadScene(write("grid.toml", std::string(kGrid2d) + kBasis)).isSurface());
+}
+
+TEST_F(SceneLoaderTest, SurfaceSceneRefusesTheGridsTablesAndKeys) {
+    write("meshes/ball.obj", "v 0 0 0\n");
+    const fs::path origin = mDir / "s.toml";
+    const std::string surface = std::string(kSurface) + kBasis;
+    EXPECT_CONTAINS(errorOf(std::string(kGrid3d) + surface, origin),
+                    "[grid]: a scene is either a grid scene ([grid], [[domain]]) or a surface scene "
+                    "([surface]), not both");
+    EXPECT_CONTAINS(errorOf(surface + "[[domain]]\nshape = \"ball\"\ncenter = [0, 0, 0]\nradius = 1\n", origin),
+                    "[[domain]]: a scene is either a grid scene");
+    EXPECT_CONTAINS(errorOf(surface + "[[obstacle]]\nshape = \"ball\"\nradius = 0.1\npath = [[0, 0, 0, 0]]\n",
+                            origin),
+                    "[[obstacle]]: moving obstacles push on a grid's faces");
+    EXPECT_CONTAINS(errorOf(surface + "[smoke]\nbuoyancy = 1.0\n", origin), "[smoke]: buoyancy and the smoke grid");
+    EXPECT_CONTAINS(errorOf(std::string(kSurface) + "[basis]\nvelocity_modes = 4\nwall = \"no-slip\"\n", origin),
+                    "[basis].wall: only for grid scenes");
+    EXPECT_CONTAINS(errorOf(surface + "[simulation]\nmhd = true\n", origin),
+                    "[simulation].mhd: MHD is simulated in grid scenes only");
+    EXPECT_CONTAINS(errorOf(surface + "[initial]\nvelocity = \"vortices\"\n", origin),
+                    "[initial].velocity: vortices are projected on a grid");
+    EXPECT_CONTAINS(errorOf("[surface]\nmesh = \"meshes/ball.obj\"\nfile = \"x\"\n" + std::string(kBasis), origin),
+                    "[surface].file: unknown key");
+    EXPECT_CONTAINS(errorOf("[surface]\nmesh = \"missing.obj\"\n" + std::string(kBasis), origin),
+                    "[surface].mesh: no such file");
+    EXPECT_CONTAINS(errorOf("[surface]\nmesh = \"meshes/ball.stl\"\n" + std::string(kBasis), origin),
+                    "[surface].mesh: only OBJ meshes are supported");
+}
+
 }  // namespace
 }  // namespace modeflow

@@ -1,8 +1,9 @@
 /// Every scene under scenes/ runs end to end with the real `modeflow` binary, one test per scene
 /// (named after it), found when the test runs: `run --frames 2` on each backend that supports
-/// the scene (the frames read back, the resume checkpoint holds a finite state, moving when the
-/// scene sets anything going), the refusal with the capability table's message on each backend
-/// that does not (before any precompute), and `modes` for a few steps (finite energy).
+/// the scene (the frames read back: VDB files, or PLY files for surface scenes; the resume
+/// checkpoint holds a finite state, moving when the scene sets anything going), the refusal with
+/// the capability table's message on each backend that does not (before any precompute), and
+/// `modes` for a few steps (finite energy).
 /// tests/CMakeLists.txt rebuilds this test when a scene file is added or removed, so that CTest's
 /// list follows scenes/.
 ///
@@ -28,6 +29,7 @@
 
 #include <gtest/gtest.h>
 
+#include "engine/output/PlyFrame.h"
 #include "engine/output/VdbFrame.h"
 #include "engine/simulation/Checkpoint.h"
 #include "tests/support/CliFixture.h"
@@ -55,7 +57,16 @@ protected:
         const RunResult r = run("run " + s.file.string() + " --frames " + std::to_string(kFrames) + " --device " +
                                 backend + " --out " + out.string() + " --cache-dir " + mCache.string());
         ASSERT_EQ(r.status, 0) << "run --device " << backend << ": " << r.err;
-        for (int frame = 1; frame <= kFrames; ++frame) {
+        for (int frame = 1; frame <= kFrames && s.scene.isSurface(); ++frame) {
+            // A surface scene's frames are PLY files: a header for its mesh, the binary data after it.
+            const fs::path ply = out / plyFrameFileName(s.scene.name, frame);
+            ASSERT_TRUE(fs::exists(ply)) << ply;
+            const std::string text = slurp(ply);
+            EXPECT_EQ(text.rfind("ply\nformat binary_little_endian 1.0\n", 0), 0u) << ply;
+            EXPECT_NE(text.find("comment frame " + std::to_string(frame) + "\n"), std::string::npos) << ply;
+            EXPECT_NE(text.find("property float density\n"), std::string::npos) << ply;
+        }
+        for (int frame = 1; frame <= kFrames && !s.scene.isSurface(); ++frame) {
             const fs::path vdb = out / frameFileName(s.scene.name, frame);
             ASSERT_TRUE(fs::exists(vdb)) << vdb;
             EXPECT_GT(fs::file_size(vdb), 0u) << vdb;

@@ -23,14 +23,23 @@ nlohmann::ordered_json summarize(const BasisCache& c, const std::filesystem::pat
     const BasisChecks checks = checkBasis(c);
     const int n = c.grid.dim;
     nlohmann::ordered_json j;
-    j["dim"] = n;
-    j["resolution"] = std::vector<int>(c.grid.resolution.begin(), c.grid.resolution.begin() + n);
-    j["bounds_min"] = std::vector<double>(c.grid.boundsMin.begin(), c.grid.boundsMin.begin() + n);
-    j["bounds_max"] = std::vector<double>(c.grid.boundsMax.begin(), c.grid.boundsMax.begin() + n);
-    j["periodic"] = std::vector<bool>(c.grid.periodic.begin(), c.grid.periodic.begin() + n);
-    j["wall"] = sceneKeyword(c.wall);
-    j["boundary"] = sceneKeyword(c.boundary);
-    j["dofs"] = {{"faces", c.faces.size()}, {"cells", c.cells.size()}};
+    if (c.kind == BasisKind::Surface) {
+        j["kind"] = "surface";
+        j["surface"] = {{"vertices", c.surface.mesh.vertices.size()},
+                        {"edges", c.surface.edges.size()},
+                        {"triangles", c.surface.mesh.triangles.size()}};
+        j["dofs"] = {{"edges", c.faces.size()}, {"triangles", c.cells.size()}};
+    } else {
+        j["kind"] = "grid";
+        j["dim"] = n;
+        j["resolution"] = std::vector<int>(c.grid.resolution.begin(), c.grid.resolution.begin() + n);
+        j["bounds_min"] = std::vector<double>(c.grid.boundsMin.begin(), c.grid.boundsMin.begin() + n);
+        j["bounds_max"] = std::vector<double>(c.grid.boundsMax.begin(), c.grid.boundsMax.begin() + n);
+        j["periodic"] = std::vector<bool>(c.grid.periodic.begin(), c.grid.periodic.begin() + n);
+        j["wall"] = sceneKeyword(c.wall);
+        j["boundary"] = sceneKeyword(c.boundary);
+        j["dofs"] = {{"faces", c.faces.size()}, {"cells", c.cells.size()}};
+    }
     j["velocity"] = {{"count", c.velocity.eigenvalues.size()},
                      {"source", sourceName(c.velocity.source)},
                      {"eigenvalues", toStd(c.velocity.eigenvalues)},
@@ -43,7 +52,7 @@ nlohmann::ordered_json summarize(const BasisCache& c, const std::filesystem::pat
                      {"gradient_penalty", c.velocity.penalty}};
     j["scalar"] = {{"count", c.scalar.eigenvalues.size()},
                    {"source", sourceName(c.scalar.source)},
-                   {"boundary", sceneKeyword(c.scalar.boundary)},
+                   {"boundary", c.kind == BasisKind::Surface ? "closed surface" : sceneKeyword(c.scalar.boundary)},
                    {"eigenvalues", toStd(c.scalar.eigenvalues)},
                    {"omitted_constants", c.scalar.omittedConstants},
                    {"orthonormality_error", checks.scalarOrthonormality},
@@ -101,11 +110,19 @@ bool isCache(const std::filesystem::path& path) {
 }
 
 void printText(const nlohmann::ordered_json& j) {
-    std::cout << "grid       " << j["dim"] << "D " << j["resolution"].dump()
-              << periodicAxes(j["periodic"]) << ", " << j["boundary"].get<std::string>() << ", "
-              << j["wall"].get<std::string>() << "\n"
-              << "dofs       " << j["dofs"]["faces"] << " faces, " << j["dofs"]["cells"]
-              << " cells\n";
+    if (j["kind"] == "surface") {
+        const auto& m = j["surface"];
+        std::cout << "surface    " << m["vertices"] << " vertices, " << m["edges"] << " edges, "
+                  << m["triangles"] << " triangles\n"
+                  << "dofs       " << j["dofs"]["edges"] << " edge fluxes, " << j["dofs"]["triangles"]
+                  << " triangles\n";
+    } else {
+        std::cout << "grid       " << j["dim"] << "D " << j["resolution"].dump()
+                  << periodicAxes(j["periodic"]) << ", " << j["boundary"].get<std::string>() << ", "
+                  << j["wall"].get<std::string>() << "\n"
+                  << "dofs       " << j["dofs"]["faces"] << " faces, " << j["dofs"]["cells"]
+                  << " cells\n";
+    }
     auto list = [](const nlohmann::ordered_json& values) {
         std::ostringstream s;
         s << std::setprecision(6);

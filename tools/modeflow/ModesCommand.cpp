@@ -63,7 +63,8 @@ Command addModes(CLI::App& app) {
         const std::unique_ptr<ModalStepping> stepper = backend.makeModalStepper(run, scheme);
         Eigen::VectorXd x = stepper->state();
 
-        const bool twoD = run.cache.grid.dim == 2;
+        // Surfaces carry 2D flows: their vorticity is a scalar too.
+        const bool twoD = run.cache.kind == BasisKind::Surface || run.cache.grid.dim == 2;
         // Conserved by the midpoint rule: ½Σ(1+α²κ²)v² (Euler, LANS-α) or ½(|v|²+|F|²) (MHD).
         auto totalEnergy = [&]() {
             return sim.mhd ? energy(x) : lansEnergy(x, k2, sim.alpha);

@@ -21,6 +21,7 @@
 #include "tools/modeflow/FramePreview.h"
 #include "tools/modeflow/FrameProgress.h"
 #include "tools/modeflow/NumberOptions.h"
+#include "tools/modeflow/SurfaceRun.h"
 #include "engine/pipeline/Backend.h"
 #include "engine/pipeline/RunInputs.h"
 #include "engine/pipeline/RunMemory.h"
@@ -97,6 +98,13 @@ Command addRun(CLI::App& app) {
                             " was written for another scene text, basis (mesh file) or device; run without "
                             "--resume to start afresh");
         }
+        const bool previews = opts->preview || opts->previewEvery.has_value();
+        const int previewEvery = opts->previewEvery.value_or(std::max(1, frames / 24));
+        if (scene.isSurface()) {
+            if (opts->half) throw Error("--half: surface scenes write PLY frames, in 32-bit floats");
+            return runSurface({scene, frames, folder, sceneHash, runHash, resumeFrom,
+                               resolveCacheDir(opts->cacheDir), memory, previews ? previewEvery : 0});
+        }
         const Backend backend(choice);
         std::cerr << backend.describe();
 
@@ -120,8 +128,6 @@ Command addRun(CLI::App& app) {
 
         const MacGrid basisGrid = MacGrid::fromSpec(run.cache.grid);
         const bool temperature = settings.simulatesTemperature();
-        const bool previews = opts->preview || opts->previewEvery.has_value();
-        const int previewEvery = opts->previewEvery.value_or(std::max(1, frames / 24));
         std::unique_ptr<FramePreview> preview;
         if (previews)
             preview = std::make_unique<FramePreview>(simulator->smokeGrid(), run.smokeMask, backend.vulkanContext());

@@ -49,6 +49,9 @@ Command addStir(CLI::App& app) {
         // Everything that can be refused is checked before the precompute or the window.
         const BackendChoice choice = parseDeviceOption(opts->device);
         const SceneSpec scene = loadScene(opts->scene);
+        if (scene.isSurface())
+            throw Error(scene.sourceFile.string() +
+                        ": [surface] scenes are not stirred in a window yet; simulate them with run or modes");
         requireSupport(scene, choice.kind);
         stir::StirOptions options;
         options.backend = choice;
