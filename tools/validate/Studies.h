@@ -16,6 +16,9 @@ StudyResult speedStudy(const StudyOptions& options);
 StudyResult reducedVsFullStudy(const StudyOptions& options);
 StudyResult lansAlphaStudy(const StudyOptions& options);
 
+/// reduced_vs_full's periodic band-limited experiment (PeriodicReducedVsFull.cpp): its JSON.
+nlohmann::json periodicBandLimited(const StudyOptions& options);
+
 /// The vortex pair of scenes/seed/vortex_merge_2d.toml at `cells`², no dye, with every
 /// divergence-free mode of that grid.
 SceneSpec vortexPairWithAllModes(int cells, const StudyOptions& options);
