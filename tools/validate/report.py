@@ -312,7 +312,7 @@ def draw_periodic(periodic, folder):
     axes[1].legend(fontsize=7)
     axes[2].legend(fontsize=7)
     figures = [(save(fig, folder, "reduced_vs_full_periodic"),
-                f'A band-limited flow on the torus [0, 2π)², {periodic["resolution"]}² cells ({periodic["initial"]}), '
+                f'A band-limited flow on the torus [0, 2π)², {periodic["resolution"]}² cells ({periodic["initial"]}, RMS face velocity {periodic["rms_speed"]:g}), '
                 f'advanced by reduced runs of N closed-form torus modes and by the {periodic["full"]} (seed Fig. 6.12). '
                 f'The runs leave the full one as energy reaches scales they do not hold; the error falls as N grows.')]
     pictures = [(f'{r["modes"]} modes', r["vorticity"]) for r in runs] + [("full spectrum", periodic["full_vorticity"])]
