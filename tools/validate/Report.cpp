@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <csignal>
 #include <cstdlib>
 #include <cstring>
 #include <vector>
@@ -41,6 +42,12 @@ int runScript(const std::vector<std::string>& args) {
         _exit(kNoInterpreter);
     }
     close(pipeFds[0]);
+    // An interpreter that never started (or exited early) closes the pipe: the write must fail
+    // with EPIPE, not kill this process with SIGPIPE.
+    struct sigaction ignore {
+    }, previous{};
+    ignore.sa_handler = SIG_IGN;
+    sigaction(SIGPIPE, &ignore, &previous);
     const char* text = kReportScript;
     std::size_t left = std::strlen(text);
     while (left > 0) {
@@ -49,6 +56,7 @@ int runScript(const std::vector<std::string>& args) {
         text += n, left -= std::size_t(n);
     }
     close(pipeFds[1]);
+    sigaction(SIGPIPE, &previous, nullptr);
     int status = 0;
     while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
     }
