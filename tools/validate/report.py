@@ -19,6 +19,7 @@ try:
 
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
+    from PIL import Image
 except ImportError as e:
     print(f"report.py: matplotlib is missing ({e}); install python3-matplotlib", file=sys.stderr)
     sys.exit(3)
@@ -31,6 +32,9 @@ def save(fig, folder, name):
     fig.tight_layout()
     fig.savefig(path, dpi=FIGURE_DPI)
     plt.close(fig)
+    # 256 colours (Pillow comes with matplotlib): a third of the size, so the committed figures
+    # stay small.
+    Image.open(path).convert("RGB").quantize(colors=256).save(path, optimize=True)
     return path
 
 
