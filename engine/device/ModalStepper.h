@@ -65,7 +65,7 @@ public:
     void setScheme(Integrator scheme);
     /// New viscosity and LANS-α (κ² as in the constructor) for the steps recorded from now on.
     /// Between submissions only.
-    /// @throw modeflow::Error for parameters FluidSystem refuses.
+    /// @throw modeflow::Error for parameters FluidSystem refuses, or held modes ([forcing]).
     void setParameters(const FluidParameters& parameters);
     /// Host ↔ device copies of the state v and the force f; call between submissions.
     void setState(const Eigen::VectorXd& v) override;
@@ -87,6 +87,8 @@ public:
     StepReport step(double h) override;
 
 private:
+    /// Held modes ([forcing]) are the CPU reference's only (BackendCapabilities).
+    static void requireNoHeldModes(const FluidParameters& parameters);
     void recordUpdate(vulkan::CommandSequence& sequence, std::uint32_t op, std::uint32_t stage, double h,
                       bool indirect) const;
     void upload(vulkan::DeviceBuffer& buffer, const Eigen::VectorXd& values, const char* what) const;

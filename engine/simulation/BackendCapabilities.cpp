@@ -7,8 +7,8 @@
 namespace modeflow {
 namespace {
 
-constexpr BackendCapabilities kCpuReference{"the CPU reference", "cpu", true, true, false, true};
-constexpr BackendCapabilities kVulkan{"a Vulkan device", "vulkan", false, false, true, false};
+constexpr BackendCapabilities kCpuReference{"the CPU reference", "cpu", true, true, true, false, true};
+constexpr BackendCapabilities kVulkan{"a Vulkan device", "vulkan", false, false, false, true, false};
 
 }  // namespace
 
@@ -24,6 +24,9 @@ void requireSupport(const SceneSpec& scene, BackendKind kind, std::optional<Inte
         throw Error(file + ": [surface] scenes run on the CPU reference only; use --device cpu");
     if (scene.simulation.mhd && !backend.mhd)
         throw Error(file + ": [simulation].mhd runs on the CPU reference only; use --device cpu");
+    if (scene.forcing.holds() && !backend.forcing)
+        throw Error(file +
+                    ": [forcing] (held modes) runs on the CPU reference only; use --device cpu");
     if (!backend.trapezoidal) {
         const std::string where = integrator ? std::string(integratorOption) + " trapezoidal"
                                              : file + ": [simulation].integrator = \"trapezoidal\"";

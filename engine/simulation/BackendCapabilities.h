@@ -20,6 +20,7 @@ struct BackendCapabilities {
     std::string_view option;  ///< the --device value that picks it ("cpu", "vulkan")
     bool mhd = false;         ///< [simulation].mhd
     bool trapezoidal = false;  ///< [simulation].integrator = "trapezoidal"
+    bool forcing = false;      ///< [forcing]: held modes
     bool stageTimes = false;  ///< per-stage times in FrameStats
     bool surfaces = false;    ///< surface scenes ([surface])
 };
