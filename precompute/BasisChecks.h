@@ -15,11 +15,11 @@
 namespace modeflow {
 
 struct BasisChecks {
-    double maxDivergence = 0.0;             ///< max over modes of |dΨ|∞ / |Ψ|∞
-    double velocityOrthonormality = 0.0;    ///< max |ΨᵀM Ψ − I|
-    double scalarOrthonormality = 0.0;      ///< max |ΦᵀM Φ − I|
-    int velocityChecked = 0;                ///< velocity modes the checks covered
-    int scalarChecked = 0;                  ///< scalar modes the checks covered
+    double maxDivergence = 0.0;           ///< max over modes of |dΨ|∞ / |Ψ|∞
+    double velocityOrthonormality = 0.0;  ///< max |ΨᵀM Ψ − I|
+    double scalarOrthonormality = 0.0;    ///< max |ΦᵀM Φ − I|
+    int velocityChecked = 0;              ///< velocity modes the checks covered
+    int scalarChecked = 0;                ///< scalar modes the checks covered
 };
 
 /// Above this many multiply-adds (DOFs × checked modes²) a closed-form basis is sampled.

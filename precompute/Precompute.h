@@ -1,14 +1,14 @@
 #pragma once
 /// @file Precompute.h
-/// Scene → cut-cell DEC → eigenbases → cache file (README.md, "How the precompute works"). The only entry point the
-/// command line needs; every stage below it is a separate module.
+/// Scene → cut-cell DEC → eigenbases → cache file (README.md, "How the precompute works"). The only
+/// entry point the command line needs; every stage below it is a separate module.
 
 #include <filesystem>
 #include <string>
 
+#include "engine/core/SceneSpec.h"
 #include "engine/format/BasisCache.h"
 #include "precompute/Progress.h"
-#include "engine/core/SceneSpec.h"
 
 namespace modeflow {
 

@@ -8,7 +8,9 @@
 
 namespace modeflow {
 
-Progress Progress::toStderr() { return Progress(&std::cerr, ::isatty(STDERR_FILENO) != 0); }
+Progress Progress::toStderr() {
+    return Progress(&std::cerr, ::isatty(STDERR_FILENO) != 0);
+}
 
 void Progress::begin(std::string stage) {
     mStage = std::move(stage);
@@ -18,7 +20,8 @@ void Progress::begin(std::string stage) {
 
 void Progress::update(const std::string& detail) {
     if (!mOut || !mLive) return;
-    const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - mStart).count();
+    const double t =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - mStart).count();
     *mOut << "\r\033[K" << mStage << " ... " << detail << " (" << std::fixed << std::setprecision(1)
           << t << " s)" << std::flush;
 }
@@ -30,7 +33,8 @@ void Progress::note(const std::string& message) {
 }
 
 double Progress::end() {
-    const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - mStart).count();
+    const double t =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - mStart).count();
     if (mOut) {
         if (mLive) *mOut << "\r\033[K";
         *mOut << mStage << ": " << std::fixed << std::setprecision(2) << t << " s\n" << std::flush;

@@ -24,19 +24,19 @@ struct ForceSplatRecord {
 #define FORCE_STAGE_BUOYANCY 2u
 
 struct ForceFieldParams {
-    uint dofCount;     /* velocity DOFs; one invocation per DOF (grid-stride loop) */
-    uint upCount;      /* entries of the up-DOF list (the buoyancy stage) */
-    uint periodic;     /* bit a: axis a is periodic (MacGrid::periodic) */
-    uint splatCount;   /* splats in the splat buffer */
-    uint cells[3];     /* basis grid cells per axis (1 on the unused 2D axis) */
+    uint dofCount;   /* velocity DOFs; one invocation per DOF (grid-stride loop) */
+    uint upCount;    /* entries of the up-DOF list (the buoyancy stage) */
+    uint periodic;   /* bit a: axis a is periodic (MacGrid::periodic) */
+    uint splatCount; /* splats in the splat buffer */
+    uint cells[3];   /* basis grid cells per axis (1 on the unused 2D axis) */
     uint pad1;
-    uint faceStart1;   /* first normal-y face */
-    uint faceStart2;   /* first normal-z face (the face total in 2D) */
-    float buoyancy;    /* upward acceleration per unit temperature; 0: no buoyancy */
+    uint faceStart1; /* first normal-y face */
+    uint faceStart2; /* first normal-z face (the face total in 2D) */
+    float buoyancy;  /* upward acceleration per unit temperature; 0: no buoyancy */
     uint pad2;
-    float origin[3];   /* lower corner of the box */
+    float origin[3]; /* lower corner of the box */
     float pad3;
-    float spacing[3];  /* basis cell size per axis */
+    float spacing[3]; /* basis cell size per axis */
     float pad4;
 };
 

@@ -20,7 +20,7 @@ struct ObstacleRecord {
     float radius;      /* ball, capsule */
     float halfSize[3]; /* box */
     uint shape;
-    float axis[3];     /* capsule: centre to one end of its segment */
+    float axis[3]; /* capsule: centre to one end of its segment */
     float pad0;
     float velocity[3];
     float pad1;
@@ -47,9 +47,10 @@ struct ModalCorrectParams {
 };
 
 #ifdef __cplusplus
-static_assert(sizeof(ObstacleRecord) == 64 && sizeof(ObstacleMismatchParams) == 64 && sizeof(ModalCorrectParams) == 16,
+static_assert(sizeof(ObstacleRecord) == 64 && sizeof(ObstacleMismatchParams) == 64 &&
+                  sizeof(ModalCorrectParams) == 16,
               "std430 and C++ layouts agree");
-}  /* namespace modeflow::shaders */
+} /* namespace modeflow::shaders */
 #endif
 
 #endif

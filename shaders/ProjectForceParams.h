@@ -19,19 +19,19 @@ using uint = std::uint32_t;
 #define PROJECT_FORCE_MODES_PER_GROUP 64
 
 struct ProjectForceParams {
-    uint dofCount;       /* velocity DOFs */
-    uint firstMode;      /* the chunk's first mode: row of the partial sums */
-    uint modeCount;      /* modes in the chunk */
-    uint tileCount;      /* tiles per mode (ModeAccess.glsl) */
-    uint blockCount;     /* DOF blocks, one partial sum per mode and block */
-    uint blockTiles;     /* tiles per block */
+    uint dofCount;   /* velocity DOFs */
+    uint firstMode;  /* the chunk's first mode: row of the partial sums */
+    uint modeCount;  /* modes in the chunk */
+    uint tileCount;  /* tiles per mode (ModeAccess.glsl) */
+    uint blockCount; /* DOF blocks, one partial sum per mode and block */
+    uint blockTiles; /* tiles per block */
     uint pad0;
     uint pad1;
 };
 
 struct ProjectForceSumParams {
-    uint modeCount;   /* N: one invocation per mode */
-    uint blockCount;  /* partial sums per mode */
+    uint modeCount;  /* N: one invocation per mode */
+    uint blockCount; /* partial sums per mode */
     uint pad0;
     uint pad1;
 };

@@ -16,11 +16,11 @@ using uint = std::uint32_t;
 #define MODE_TILE_ROWS 2
 
 struct ReconstructVelocityParams {
-    uint dofCount;       /* velocity DOFs */
-    uint firstMode;      /* the chunk's first mode: index into v and the mode scales */
-    uint tileCount;      /* tiles per mode (ModeAccess.glsl) */
-    uint faceStart1;     /* first normal-y face */
-    uint faceStart2;     /* first normal-z face (the face total in 2D) */
+    uint dofCount;        /* velocity DOFs */
+    uint firstMode;       /* the chunk's first mode: index into v and the mode scales */
+    uint tileCount;       /* tiles per mode (ModeAccess.glsl) */
+    uint faceStart1;      /* first normal-y face */
+    uint faceStart2;      /* first normal-z face (the face total in 2D) */
     float inverseArea[3]; /* 1 / whole face area per normal axis */
     uint pad0;
     uint pad1;

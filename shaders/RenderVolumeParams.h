@@ -20,7 +20,7 @@ using uint = std::uint32_t;
 
 /* What one dispatch computes (`stage`). */
 #define RENDER_VOLUME_STAGE_LIGHT 0u /* per (x, y) column: extinction, optical depth to the top */
-#define RENDER_VOLUME_STAGE_IMAGE 1u  /* per pixel: the ray march, one packed RGBA8 word */
+#define RENDER_VOLUME_STAGE_IMAGE 1u /* per pixel: the ray march, one packed RGBA8 word */
 
 /* The look, in linear light (the sRGB curve is applied at the end). Light comes straight from
    above (+z) with a warm white colour; the ambient term is a dim cool sky seen from everywhere.
@@ -76,7 +76,7 @@ struct RenderVolumeParams {
     float dyY;
     float dyZ;
     uint densityStride; /* floats from one cell's density to the next (2: SmokeState's pairs) */
-    float cellsPerTX; /* cells per unit t along each axis: L / spacing */
+    float cellsPerTX;   /* cells per unit t along each axis: L / spacing */
     float cellsPerTY;
     float cellsPerTZ;
     float glassT; /* the glass adds its colour per this much t of wall crossed (half a cell) */

@@ -13,9 +13,10 @@ using uint = std::uint32_t;
 #endif
 
 /* What one smoke_advect kernel computes (SMOKE_STAGE, fixed at compile time). */
-#define SMOKE_STAGE_SEMI_LAGRANGIAN 0     /* out = SL(in) + emitters */
-#define SMOKE_STAGE_MACCORMACK_FORWARD 1  /* hat = SL(in), and the record of the cell */
-#define SMOKE_STAGE_MACCORMACK_CORRECT 2  /* out = clamp(hat + (in - SL_-dt(hat)) / 2) + emitters */
+#define SMOKE_STAGE_SEMI_LAGRANGIAN 0    /* out = SL(in) + emitters */
+#define SMOKE_STAGE_MACCORMACK_FORWARD 1 /* hat = SL(in), and the record of the cell */
+#define SMOKE_STAGE_MACCORMACK_CORRECT 2 /* out = clamp(hat + (in - SL_-dt(hat)) / 2) + emitters \
+                                          */
 
 /* A fluid cell of the list the advection runs over: one 16-byte texel, x | y << 16 (so at most
    65535 cells along x and y), z, and the cell's emitters' density and temperature rates (floats).
@@ -41,10 +42,11 @@ struct SmokeAdvectParams {
     uint basisX;     /* basis (velocity) grid cells per axis */
     uint basisY;
     uint basisZ;
-    uint scale; /* smoke cells per basis cell along each used axis */
+    uint scale;       /* smoke cells per basis cell along each used axis */
     uint faceOffsetY; /* number of the first normal-y and normal-z face (MacGrid::faceOffset) */
     uint faceOffsetZ;
-    uint firstCell; /* this dispatch handles list entries firstCell ... firstCell + invocations - 1 */
+    uint firstCell; /* this dispatch handles list entries firstCell ... firstCell + invocations - 1
+                     */
     uint periodic;  /* bit a: axis a is periodic (both grids; MacGrid::periodic) */
     float stepX; /* dt / smoke spacing per axis (0 on an unused axis): velocity to cells per step */
     float stepY;

@@ -12,6 +12,7 @@ packages=(
     libglfw3-dev xvfb xauth
     libstb-dev libgtest-dev libbenchmark-dev time bc python3 clang-format  # tools/check-layering.py, tools/check-format.sh
     clang libclang-rt-14-dev    # the fuzz targets (libFuzzer), tools/fuzz.sh
+    python3-matplotlib          # modeflow validate draws its figures with it
 )
 
 missing=()

@@ -23,8 +23,8 @@ std::string failure(std::string_view what, const fs::path& path, const std::stri
 }
 
 /// Writes all of `pieces` to a new file; the system's reason on failure.
-void writeAll(const fs::path& file, std::span<const std::string_view> pieces,
-              std::string_view what, const fs::path& finalPath) {
+void writeAll(const fs::path& file, std::span<const std::string_view> pieces, std::string_view what,
+              const fs::path& finalPath) {
     const int fd = ::open(file.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
     if (fd < 0) throw Error(failure(what, finalPath, std::strerror(errno)));
     for (const std::string_view bytes : pieces) {
@@ -57,10 +57,12 @@ void writeFileAtomically(const fs::path& path, std::string_view bytes, std::stri
 
 void writeFileAtomically(const fs::path& path, std::initializer_list<std::string_view> pieces,
                          std::string_view what) {
-    writeFileAtomically(path, std::span<const std::string_view>(pieces.begin(), pieces.size()), what);
+    writeFileAtomically(path, std::span<const std::string_view>(pieces.begin(), pieces.size()),
+                        what);
 }
 
-void writeFileAtomically(const fs::path& path, std::span<const std::string_view> pieces, std::string_view what) {
+void writeFileAtomically(const fs::path& path, std::span<const std::string_view> pieces,
+                         std::string_view what) {
     writeFileAtomically(
         path, what, [&](const fs::path& temporary) { writeAll(temporary, pieces, what, path); });
 }
@@ -72,7 +74,9 @@ void writeFileAtomically(const fs::path& path, std::string_view what,
         write(temporary);
         std::error_code ec;
         fs::rename(temporary, path, ec);
-        if (ec) throw Error(failure(what, path, "cannot rename " + temporary.string() + " over it: " + ec.message()));
+        if (ec)
+            throw Error(failure(
+                what, path, "cannot rename " + temporary.string() + " over it: " + ec.message()));
     } catch (...) {
         std::error_code ignored;
         fs::remove(temporary, ignored);  // never leave a partial file behind, whatever failed
@@ -88,7 +92,8 @@ int removeStaleTemporaries(const fs::path& folder) {
         const std::size_t mark = name.rfind(kTemporaryMark);
         if (mark == std::string::npos || mark == 0) continue;
         const std::string digits = name.substr(mark + kTemporaryMark.size());
-        if (digits.empty() || digits.size() > 9 || digits.find_first_not_of("0123456789") != std::string::npos)
+        if (digits.empty() || digits.size() > 9 ||
+            digits.find_first_not_of("0123456789") != std::string::npos)
             continue;
         const pid_t pid = pid_t(std::stol(digits));
         // A process that still runs (or one we may not signal) may still be writing it.

@@ -19,15 +19,16 @@ std::filesystem::path temporaryPathFor(const std::filesystem::path& path);
 /// Writes `bytes` as the whole content of `path`.
 /// @throw modeflow::Error "cannot write <what> <path>: <the system's reason>" (e.g. "No space
 ///        left on device"); the temporary file is removed and an existing `path` left as it was.
-void writeFileAtomically(const std::filesystem::path& path, std::string_view bytes, std::string_view what);
+void writeFileAtomically(const std::filesystem::path& path, std::string_view bytes,
+                         std::string_view what);
 
 /// The same for a file made of `pieces` one after another (a header, a large payload, a
 /// checksum), written without joining them in memory first.
 void writeFileAtomically(const std::filesystem::path& path,
                          std::initializer_list<std::string_view> pieces, std::string_view what);
 /// The same for pieces counted at run time (a cache's records and arrays).
-void writeFileAtomically(const std::filesystem::path& path, std::span<const std::string_view> pieces,
-                         std::string_view what);
+void writeFileAtomically(const std::filesystem::path& path,
+                         std::span<const std::string_view> pieces, std::string_view what);
 
 /// The same for writers that need a file name (OpenVDB, image encoders): `write` writes the
 /// temporary file it is given, then it is renamed over `path`. Whatever `write` throws is

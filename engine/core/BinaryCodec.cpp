@@ -13,6 +13,8 @@ std::uint64_t fnv1a64(std::string_view bytes, std::uint64_t seed) {
     return h;
 }
 
-void ByteReader::fail(std::string_view why) const { throw Error(mDescribe(why)); }
+void ByteReader::fail(std::string_view why) const {
+    throw Error(mDescribe(why));
+}
 
 }  // namespace modeflow

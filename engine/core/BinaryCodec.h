@@ -43,7 +43,9 @@ public:
         mBytes.append(reinterpret_cast<const char*>(values), count * sizeof(T));
     }
     template <typename T>
-    void vector(const std::vector<T>& values) { array(values.data(), values.size()); }
+    void vector(const std::vector<T>& values) {
+        array(values.data(), values.size());
+    }
     void string(std::string_view text) { array(text.data(), text.size()); }
 
     const std::string& bytes() const { return mBytes; }
@@ -70,7 +72,8 @@ public:
     /// allocated.
     std::uint64_t count(std::size_t elementSize) {
         const auto n = pod<std::uint64_t>();
-        if (elementSize != 0 && n > remaining() / elementSize) fail("truncated or corrupt (a length runs past the end)");
+        if (elementSize != 0 && n > remaining() / elementSize)
+            fail("truncated or corrupt (a length runs past the end)");
         return n;
     }
     template <typename T>

@@ -8,23 +8,25 @@
 #include <cstdint>
 #include <string>
 
-#include "engine/core/MacGrid.h"
 #include "engine/core/Error.h"
+#include "engine/core/MacGrid.h"
 
 namespace modeflow {
 
 struct FaceLocation {
-    int axis = 0;                      ///< normal axis
-    std::array<int, 3> pos{0, 0, 0};   ///< lower corner: the face lies between cells pos − e_axis and pos
+    int axis = 0;  ///< normal axis
+    std::array<int, 3> pos{0, 0,
+                           0};  ///< lower corner: the face lies between cells pos − e_axis and pos
 };
 
 /// @throw modeflow::Error when `face` is not a face of `grid`.
 inline FaceLocation locateFace(const MacGrid& grid, std::int64_t face) {
     if (face < 0 || face >= grid.faceTotal())
-        throw Error("face " + std::to_string(face) + " is outside the grid's " + std::to_string(grid.faceTotal()) +
-                    " faces");
+        throw Error("face " + std::to_string(face) + " is outside the grid's " +
+                    std::to_string(grid.faceTotal()) + " faces");
     FaceLocation location;
-    while (location.axis + 1 < grid.dim && face >= grid.faceOffset(location.axis + 1)) ++location.axis;
+    while (location.axis + 1 < grid.dim && face >= grid.faceOffset(location.axis + 1))
+        ++location.axis;
     const std::array<int, 3> e = grid.faceExtent(location.axis);
     std::int64_t local = face - grid.faceOffset(location.axis);
     location.pos[0] = int(local % e[0]);
@@ -43,6 +45,8 @@ inline Vec3 faceCentre(const MacGrid& grid, const FaceLocation& face) {
 }
 
 /// The "up" axis of buoyancy (README.md, "Scene files"): +y in 2D, +z in 3D.
-inline int upAxis(const MacGrid& grid) { return grid.dim - 1; }
+inline int upAxis(const MacGrid& grid) {
+    return grid.dim - 1;
+}
 
 }  // namespace modeflow

@@ -19,7 +19,8 @@ MacGrid MacGrid::fromSpec(const GridSpec& grid) {
 }
 
 MacGrid MacGrid::refined(int scale) const {
-    if (scale < 1) throw Error("smoke resolution scale must be at least 1, got " + std::to_string(scale));
+    if (scale < 1)
+        throw Error("smoke resolution scale must be at least 1, got " + std::to_string(scale));
     MacGrid fine = *this;
     for (int a = 0; a < dim; ++a) {
         fine.cells[a] = cells[a] * scale;

@@ -38,7 +38,9 @@ struct MacGrid {
         return (std::int64_t(z) * cells[1] + y) * cells[0] + x;
     }
     /// Position of cell (x, y, z)'s centre along `axis`.
-    double cellCentre(int axis, int position) const { return origin[axis] + (position + 0.5) * spacing[axis]; }
+    double cellCentre(int axis, int position) const {
+        return origin[axis] + (position + 0.5) * spacing[axis];
+    }
 
     /// Positions of normal-`axis` faces along each axis.
     std::array<int, 3> faceExtent(int axis) const {

@@ -60,8 +60,9 @@ Corners trilinearCorners(const std::array<int, 3>& extent, const std::array<bool
             for (int cx = 0; cx <= (s[0].hi != s[0].lo); ++cx) {
                 corners.position[corners.count] = {cx ? s[0].hi : s[0].lo, cy ? s[1].hi : s[1].lo,
                                                    cz ? s[2].hi : s[2].lo};
-                corners.weight[corners.count] =
-                    (cx ? s[0].f : 1.0 - s[0].f) * (cy ? s[1].f : 1.0 - s[1].f) * (cz ? s[2].f : 1.0 - s[2].f);
+                corners.weight[corners.count] = (cx ? s[0].f : 1.0 - s[0].f) *
+                                                (cy ? s[1].f : 1.0 - s[1].f) *
+                                                (cz ? s[2].f : 1.0 - s[2].f);
                 ++corners.count;
             }
     return corners;
@@ -89,8 +90,8 @@ CellStencil cellStencil(const MacGrid& grid, const Vec3& gridPoint) {
 
 double sampleCells(const MacGrid& grid, std::span<const double> field, const Vec3& world) {
     if (field.size() != std::size_t(grid.cellCount()))
-        throw Error("sampleCells: the cell field has " + std::to_string(field.size()) + " values, the grid " +
-                    std::to_string(grid.cellCount()) + " cells");
+        throw Error("sampleCells: the cell field has " + std::to_string(field.size()) +
+                    " values, the grid " + std::to_string(grid.cellCount()) + " cells");
     const CellStencil stencil = cellStencil(grid, worldToGrid(grid, world));
     double value = 0.0;
     for (int c = 0; c < stencil.count; ++c) value += stencil.weight[c] * field[stencil.cell[c]];
@@ -98,7 +99,8 @@ double sampleCells(const MacGrid& grid, std::span<const double> field, const Vec
 }
 
 template <typename T>
-double sampleFaceComponent(const MacGrid& grid, std::span<const T> faces, int axis, const Vec3& gridPoint) {
+double sampleFaceComponent(const MacGrid& grid, std::span<const T> faces, int axis,
+                           const Vec3& gridPoint) {
     if (axis >= grid.dim) return 0.0;
     // Face positions along the normal sit on integer coordinates, along the others at centres.
     Vec3 offset{0.5, 0.5, 0.5};
@@ -117,18 +119,22 @@ double sampleFaceComponent(const MacGrid& grid, std::span<const T> faces, int ax
 template <typename T>
 Vec3 sampleVelocityGrid(const MacGrid& grid, std::span<const T> faces, const Vec3& gridPoint) {
     requireFaceField(grid, faces.size(), "sampleVelocity");
-    return {sampleFaceComponent(grid, faces, 0, gridPoint), sampleFaceComponent(grid, faces, 1, gridPoint),
+    return {sampleFaceComponent(grid, faces, 0, gridPoint),
+            sampleFaceComponent(grid, faces, 1, gridPoint),
             sampleFaceComponent(grid, faces, 2, gridPoint)};
 }
 
 void requireFaceField(const MacGrid& grid, std::size_t size, const char* what) {
     if (size != std::size_t(grid.faceTotal()))
-        throw Error(std::string(what) + ": the face field has " + std::to_string(size) + " values, the " +
-                    std::to_string(grid.dim) + "D grid " + std::to_string(grid.faceTotal()) + " faces");
+        throw Error(std::string(what) + ": the face field has " + std::to_string(size) +
+                    " values, the " + std::to_string(grid.dim) + "D grid " +
+                    std::to_string(grid.faceTotal()) + " faces");
 }
 
-template double sampleFaceComponent<float>(const MacGrid&, std::span<const float>, int, const Vec3&);
-template double sampleFaceComponent<double>(const MacGrid&, std::span<const double>, int, const Vec3&);
+template double sampleFaceComponent<float>(const MacGrid&, std::span<const float>, int,
+                                           const Vec3&);
+template double sampleFaceComponent<double>(const MacGrid&, std::span<const double>, int,
+                                            const Vec3&);
 template Vec3 sampleVelocityGrid<float>(const MacGrid&, std::span<const float>, const Vec3&);
 template Vec3 sampleVelocityGrid<double>(const MacGrid&, std::span<const double>, const Vec3&);
 

@@ -52,7 +52,8 @@ double sampleCells(const MacGrid& grid, std::span<const double> field, const Vec
 /// from the normal-`axis` faces of `faces` (a face field, MacGrid::faceIndex order). 0 for the
 /// unused axis of a 2D grid.
 template <typename T>
-double sampleFaceComponent(const MacGrid& grid, std::span<const T> faces, int axis, const Vec3& gridPoint);
+double sampleFaceComponent(const MacGrid& grid, std::span<const T> faces, int axis,
+                           const Vec3& gridPoint);
 
 /// All components at `gridPoint` (grid units), in world units per unit time.
 template <typename T>

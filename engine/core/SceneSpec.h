@@ -164,6 +164,16 @@ struct SmokeSpec {
     AdvectionScheme advection = AdvectionScheme::MacCormack;
 };
 
+/// `[forcing]`: velocity modes held at their initial amplitudes for the whole run. Held low modes
+/// keep feeding energy to the others, the forcing of turbulence studies (seed §6.4, Fig. 6.9).
+struct ForcingSpec {
+    std::vector<ModeRange> holdModes;  ///< 1-based positions in the basis
+    double holdBelowKappa = 0.0;       ///< every mode with κ below this (0: none)
+
+    bool holds() const { return !holdModes.empty() || holdBelowKappa > 0.0; }
+    bool operator==(const ForcingSpec&) const = default;
+};
+
 struct OutputSpec {
     int frames = 48;
     int stepsPerFrame = 1;
@@ -191,6 +201,7 @@ struct SceneSpec {
     std::vector<SourceSpec> sources;
     std::vector<ObstacleSpec> obstacles;
     SmokeSpec smoke;
+    ForcingSpec forcing;
     OutputSpec output;
 
     bool isSurface() const { return surface.has_value(); }

@@ -11,6 +11,7 @@ namespace modeflow {
 /// Creates `dir` (and its parents) if needed and checks a file can be written in it.
 /// @throw modeflow::Error "<what> <dir> cannot be created: ..." or "<what> <dir> is not writable",
 /// followed by `hint` (e.g. which option chooses another folder).
-void ensureWritableDirectory(const std::filesystem::path& dir, const std::string& what, const std::string& hint);
+void ensureWritableDirectory(const std::filesystem::path& dir, const std::string& what,
+                             const std::string& hint);
 
 }  // namespace modeflow

@@ -4,8 +4,8 @@
 #include <limits>
 #include <vector>
 
-#include "engine/core/MacGrid.h"
 #include "engine/core/Error.h"
+#include "engine/core/MacGrid.h"
 #include "engine/vulkan/VulkanContext.h"
 
 namespace modeflow::device {
@@ -19,22 +19,28 @@ vulkan::DeviceBuffer uploadDofFaces(const vulkan::VulkanContext& context, const 
     std::vector<std::uint32_t> faces(cache.faces.size());
     for (std::size_t d = 0; d < faces.size(); ++d) {
         if (cache.faces[d] < 0 || cache.faces[d] >= grid.faceTotal())
-            throw Error("velocity DOFs: DOF " + std::to_string(d) + " names face " + std::to_string(cache.faces[d]) +
-                        ", outside the grid's " + std::to_string(grid.faceTotal()) + " faces");
+            throw Error("velocity DOFs: DOF " + std::to_string(d) + " names face " +
+                        std::to_string(cache.faces[d]) + ", outside the grid's " +
+                        std::to_string(grid.faceTotal()) + " faces");
         faces[d] = std::uint32_t(cache.faces[d]);
     }
     return vulkan::DeviceBuffer::fromValues<std::uint32_t>(context, faces, "DOF faces");
 }
 
-std::uint32_t groupsFor(const vulkan::VulkanContext& context, std::uint64_t items, std::uint32_t workgroupSize) {
-    const std::uint64_t wanted = std::max<std::uint64_t>(1, (items + workgroupSize - 1) / workgroupSize);
-    return std::uint32_t(std::min<std::uint64_t>(wanted, context.properties().limits.maxComputeWorkGroupCount[0]));
+std::uint32_t groupsFor(const vulkan::VulkanContext& context, std::uint64_t items,
+                        std::uint32_t workgroupSize) {
+    const std::uint64_t wanted =
+        std::max<std::uint64_t>(1, (items + workgroupSize - 1) / workgroupSize);
+    return std::uint32_t(
+        std::min<std::uint64_t>(wanted, context.properties().limits.maxComputeWorkGroupCount[0]));
 }
 
-void requireWords(const std::string& kernel, const vulkan::DeviceBuffer& buffer, std::uint64_t count) {
+void requireWords(const std::string& kernel, const vulkan::DeviceBuffer& buffer,
+                  std::uint64_t count) {
     if (buffer.bytes() < count * 4)
-        throw Error(kernel + ": buffer \"" + buffer.name() + "\" holds " + std::to_string(buffer.bytes()) +
-                    " bytes, " + std::to_string(count * 4) + " needed");
+        throw Error(kernel + ": buffer \"" + buffer.name() + "\" holds " +
+                    std::to_string(buffer.bytes()) + " bytes, " + std::to_string(count * 4) +
+                    " needed");
 }
 
 }  // namespace modeflow::device

@@ -15,16 +15,18 @@ class VulkanContext;
 
 namespace modeflow::device {
 
-
 /// cache.faces as uint32 face numbers (MacGrid numbering), in DOF order.
 /// @throw modeflow::Error when there are no DOFs or the grid has 2^32 faces or more.
 vulkan::DeviceBuffer uploadDofFaces(const vulkan::VulkanContext& context, const BasisCache& cache);
 
 /// Workgroups for one invocation per item, capped at the device's group count limit (the
 /// shaders loop with a grid stride over what is left).
-std::uint32_t groupsFor(const vulkan::VulkanContext& context, std::uint64_t items, std::uint32_t workgroupSize);
+std::uint32_t groupsFor(const vulkan::VulkanContext& context, std::uint64_t items,
+                        std::uint32_t workgroupSize);
 
-/// @throw modeflow::Error naming `kernel` and the buffer when it holds fewer than `count` 32-bit values.
-void requireWords(const std::string& kernel, const vulkan::DeviceBuffer& buffer, std::uint64_t count);
+/// @throw modeflow::Error naming `kernel` and the buffer when it holds fewer than `count` 32-bit
+/// values.
+void requireWords(const std::string& kernel, const vulkan::DeviceBuffer& buffer,
+                  std::uint64_t count);
 
 }  // namespace modeflow::device

@@ -4,8 +4,8 @@
 #include <cstdint>  // the generated header uses uint32_t without including it
 #include <vector>
 
-#include "engine/core/FaceLocation.h"
 #include "engine/core/Error.h"
+#include "engine/core/FaceLocation.h"
 #include "engine/device/DofFaces.h"
 #include "engine/vulkan/CommandSequence.h"
 #include "engine/vulkan/VulkanContext.h"
@@ -16,7 +16,9 @@ namespace modeflow::device {
 namespace {
 
 std::uint32_t checkedSplatCapacity(std::uint32_t maxSplats) {
-    if (maxSplats < 1) throw Error("force_field: room for at least one splat is needed, got " + std::to_string(maxSplats));
+    if (maxSplats < 1)
+        throw Error("force_field: room for at least one splat is needed, got " +
+                    std::to_string(maxSplats));
     return maxSplats;
 }
 
@@ -37,8 +39,8 @@ ForceFieldKernel::UpDofs ForceFieldKernel::uploadUpDofs(const vulkan::VulkanCont
     return {vulkan::DeviceBuffer::fromValues<std::uint32_t>(context, entries, "up DOFs"), count};
 }
 
-ForceFieldKernel::ForceFieldKernel(const vulkan::VulkanContext& context, const BasisCache& cache, int scale,
-                                   std::uint32_t maxSplats, std::uint32_t workgroupSize)
+ForceFieldKernel::ForceFieldKernel(const vulkan::VulkanContext& context, const BasisCache& cache,
+                                   int scale, std::uint32_t maxSplats, std::uint32_t workgroupSize)
     : mGrid(MacGrid::fromSpec(cache.grid)),
       mSmoke(mGrid.refined(scale)),
       mScale(scale),
@@ -54,25 +56,29 @@ ForceFieldKernel::ForceFieldKernel(const vulkan::VulkanContext& context, const B
       mBuoyancy(makeKernel(context, FORCE_STAGE_BUOYANCY, false, workgroupSize)),
       mMaskedBuoyancy(makeKernel(context, FORCE_STAGE_BUOYANCY, true, workgroupSize)) {}
 
-vulkan::ComputeKernel ForceFieldKernel::makeKernel(const vulkan::VulkanContext& context, std::uint32_t stage,
-                                           bool useMask, std::uint32_t workgroupSize) const {
-    return vulkan::ComputeKernel(context, vulkan::ComputeKernelSpec{"force_field",
-                                                    force_field_spv,
-                                                    6,
-                                                    sizeof(shaders::ForceFieldParams),
-                                                    workgroupSize,
-                                                    {stage, std::uint32_t(mGrid.dim),
-                                                     std::uint32_t(mScale), useMask},
-                                                    {1}});
+vulkan::ComputeKernel ForceFieldKernel::makeKernel(const vulkan::VulkanContext& context,
+                                                   std::uint32_t stage, bool useMask,
+                                                   std::uint32_t workgroupSize) const {
+    return vulkan::ComputeKernel(
+        context,
+        vulkan::ComputeKernelSpec{"force_field",
+                                  force_field_spv,
+                                  6,
+                                  sizeof(shaders::ForceFieldParams),
+                                  workgroupSize,
+                                  {stage, std::uint32_t(mGrid.dim), std::uint32_t(mScale), useMask},
+                                  {1}});
 }
 
 void ForceFieldKernel::setSplats(std::span<const ForceSplat> splats) {
     if (splats.size() > mMaxSplats)
-        throw Error("force_field: " + std::to_string(splats.size()) + " splats, room for " + std::to_string(mMaxSplats));
+        throw Error("force_field: " + std::to_string(splats.size()) + " splats, room for " +
+                    std::to_string(mMaxSplats));
     std::vector<shaders::ForceSplatRecord> records(splats.size());
     for (std::size_t k = 0; k < splats.size(); ++k) {
         if (!(splats[k].radius > 0.0))
-            throw Error("force_field: a splat radius must be positive, got " + std::to_string(splats[k].radius));
+            throw Error("force_field: a splat radius must be positive, got " +
+                        std::to_string(splats[k].radius));
         for (int a = 0; a < 3; ++a) {
             records[k].centre[a] = float(splats[k].centre[a]);
             records[k].force[a] = float(splats[k].force[a]);
@@ -83,8 +89,10 @@ void ForceFieldKernel::setSplats(std::span<const ForceSplat> splats) {
     mSplatCount = std::uint32_t(splats.size());
 }
 
-void ForceFieldKernel::record(vulkan::CommandSequence& sequence, double buoyancy, const vulkan::DeviceBuffer& temperature,
-                              const vulkan::DeviceBuffer* fluidMask, const vulkan::DeviceBuffer& g) const {
+void ForceFieldKernel::record(vulkan::CommandSequence& sequence, double buoyancy,
+                              const vulkan::DeviceBuffer& temperature,
+                              const vulkan::DeviceBuffer* fluidMask,
+                              const vulkan::DeviceBuffer& g) const {
     const auto smokeCells = std::uint64_t(mSmoke.cellCount());
     requireWords("force_field", temperature, smokeCells);
     if (fluidMask) requireWords("force_field", *fluidMask, (smokeCells + 3) / 4);

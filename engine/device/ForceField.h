@@ -8,9 +8,9 @@
 #include <cstdint>
 #include <span>
 
-#include "engine/simulation/ForceSplat.h"
 #include "engine/core/MacGrid.h"
 #include "engine/format/BasisCache.h"
+#include "engine/simulation/ForceSplat.h"
 #include "engine/vulkan/ComputeKernel.h"
 #include "engine/vulkan/DeviceBuffer.h"
 
@@ -21,14 +21,13 @@ class VulkanContext;
 
 namespace modeflow::device {
 
-
 class ForceFieldKernel {
 public:
     /// For the DOFs and grid of `cache`, a smoke grid of `scale` cells per basis cell and axis,
     /// and up to `maxSplats` splats at once.
     /// @throw modeflow::Error if scale < 1, maxSplats < 1, or a creation call fails.
-    ForceFieldKernel(const vulkan::VulkanContext& context, const BasisCache& cache, int scale, std::uint32_t maxSplats = 16,
-                     std::uint32_t workgroupSize = 64);
+    ForceFieldKernel(const vulkan::VulkanContext& context, const BasisCache& cache, int scale,
+                     std::uint32_t maxSplats = 16, std::uint32_t workgroupSize = 64);
 
     /// The splats of the following submissions (float32 on the device). Between submissions only.
     /// @throw modeflow::Error on more than maxSplats splats or a radius that is not positive.
@@ -39,15 +38,16 @@ public:
     /// `temperature`: one float per smoke cell; `fluidMask`: null, or one byte per smoke cell
     /// packed four to a word (SmokeState's mask), then only fluid cells enter the mean.
     /// @throw modeflow::Error if a buffer is too small.
-    void record(vulkan::CommandSequence& sequence, double buoyancy, const vulkan::DeviceBuffer& temperature,
-                const vulkan::DeviceBuffer* fluidMask, const vulkan::DeviceBuffer& g) const;
+    void record(vulkan::CommandSequence& sequence, double buoyancy,
+                const vulkan::DeviceBuffer& temperature, const vulkan::DeviceBuffer* fluidMask,
+                const vulkan::DeviceBuffer& g) const;
 
     std::uint32_t dofCount() const { return mDofCount; }
 
 private:
     /// force_field.comp's pipeline for `stage` (FORCE_STAGE_*), with or without the fluid mask.
-    vulkan::ComputeKernel makeKernel(const vulkan::VulkanContext& context, std::uint32_t stage, bool useMask,
-                             std::uint32_t workgroupSize) const;
+    vulkan::ComputeKernel makeKernel(const vulkan::VulkanContext& context, std::uint32_t stage,
+                                     bool useMask, std::uint32_t workgroupSize) const;
 
     MacGrid mGrid;
     MacGrid mSmoke;
@@ -58,7 +58,8 @@ private:
     std::uint32_t mGroups = 1;
     vulkan::DeviceBuffer mFaces;
     struct UpDofs {
-        vulkan::DeviceBuffer buffer;  ///< per up-facing DOF: the DOF and its face position (4 uints)
+        vulkan::DeviceBuffer
+            buffer;  ///< per up-facing DOF: the DOF and its face position (4 uints)
         std::uint32_t count = 0;
     };
     static UpDofs uploadUpDofs(const vulkan::VulkanContext& context, const MacGrid& grid,

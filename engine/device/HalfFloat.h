@@ -16,7 +16,8 @@ inline std::uint16_t floatToHalf(float value) {
     const std::uint32_t bits = std::bit_cast<std::uint32_t>(value);
     const auto sign = std::uint16_t((bits >> 16) & 0x8000u);
     const std::uint32_t magnitude = bits & 0x7fffffffu;
-    if (magnitude >= 0x7f800000u) return std::uint16_t(sign | 0x7c00u | (magnitude > 0x7f800000u ? 0x200u : 0u));
+    if (magnitude >= 0x7f800000u)
+        return std::uint16_t(sign | 0x7c00u | (magnitude > 0x7f800000u ? 0x200u : 0u));
     if (magnitude >= 0x477ff000u) return std::uint16_t(sign | 0x7c00u);  // rounds beyond 65504
     if (magnitude < 0x38800000u) {
         // Below 2^-14: a subnormal half, i.e. a multiple of 2^-24; the scaling is exact and
@@ -26,7 +27,8 @@ inline std::uint16_t floatToHalf(float value) {
     }
     std::uint32_t half = (magnitude - 0x38000000u) >> 13;  // rebias 127 → 15, keep 10 mantissa bits
     const std::uint32_t rest = magnitude & 0x1fffu;
-    if (rest > 0x1000u || (rest == 0x1000u && (half & 1u))) ++half;  // a carry moves into the exponent
+    if (rest > 0x1000u || (rest == 0x1000u && (half & 1u)))
+        ++half;  // a carry moves into the exponent
     return std::uint16_t(sign | half);
 }
 
@@ -35,7 +37,9 @@ inline float halfToFloat(std::uint16_t half) {
     const int exponent = (half >> 10) & 0x1f;
     const int mantissa = half & 0x3ff;
     if (exponent == 0) return sign * std::ldexp(float(mantissa), -24);
-    if (exponent == 31) return mantissa ? std::numeric_limits<float>::quiet_NaN() : sign * std::numeric_limits<float>::infinity();
+    if (exponent == 31)
+        return mantissa ? std::numeric_limits<float>::quiet_NaN()
+                        : sign * std::numeric_limits<float>::infinity();
     return sign * std::ldexp(float(mantissa | 0x400), exponent - 25);
 }
 

@@ -97,6 +97,8 @@ void ModalStepper::uploadModel(const DeviceModel& model) {
                     " for a stepper of " + (mMhd ? "MHD" : "a fluid"));
     const int n = size();
     if (const auto* fluid = std::get_if<FluidParameters>(&model)) {
+        if (!fluid->held.empty())
+            throw Error("modal step: held modes ([forcing]) run on the CPU reference only; use --device cpu");
         const Eigen::VectorXd mass = FluidSystem::massOf(*fluid, n);
         mFiltered = (mass.array() != 1.0).any();
         upload(mMass, mass, 0, "mass");

@@ -18,8 +18,8 @@ std::uint32_t checkedDofCount(const Eigen::MatrixXd& modes) {
                     std::to_string(modes.cols()) + " modes)");
     if (modes.rows() > Eigen::Index(std::numeric_limits<std::uint32_t>::max()) ||
         modes.cols() > Eigen::Index(std::numeric_limits<std::uint32_t>::max()))
-        throw Error("mode buffer: " + std::to_string(modes.rows()) + " DOFs × " + std::to_string(modes.cols()) +
-                    " modes do not fit 32-bit indices");
+        throw Error("mode buffer: " + std::to_string(modes.rows()) + " DOFs × " +
+                    std::to_string(modes.cols()) + " modes do not fit 32-bit indices");
     return std::uint32_t(modes.rows());
 }
 
@@ -44,7 +44,8 @@ std::vector<float> paddedScales(const Eigen::MatrixXd& modes, ModePrecision prec
 
 /// 32-bit words per mode: whole tiles of 16-byte vectors of 4 float32 or 8 float16 values.
 std::uint32_t modeStrideFor(std::uint64_t dofs, ModePrecision precision) {
-    const std::uint64_t perTile = std::uint64_t(ModeBuffer::dofsPerVector(precision)) * ModeBuffer::kTileVectors;
+    const std::uint64_t perTile =
+        std::uint64_t(ModeBuffer::dofsPerVector(precision)) * ModeBuffer::kTileVectors;
     return std::uint32_t((dofs + perTile - 1) / perTile * ModeBuffer::kTileVectors * 4);
 }
 
@@ -53,24 +54,28 @@ std::uint32_t modeStrideFor(std::uint64_t dofs, ModePrecision precision) {
 void encodeMode(const Eigen::Ref<const Eigen::VectorXd>& mode, float scale, ModePrecision precision,
                 std::uint32_t* words) {
     if (precision == ModePrecision::Float32) {
-        for (Eigen::Index d = 0; d < mode.size(); ++d) words[d] = std::bit_cast<std::uint32_t>(float(mode[d]));
+        for (Eigen::Index d = 0; d < mode.size(); ++d)
+            words[d] = std::bit_cast<std::uint32_t>(float(mode[d]));
         return;
     }
     for (Eigen::Index d = 0; d < mode.size(); d += 2) {
         const std::uint32_t low = floatToHalf(float(mode[d] / scale));
-        const std::uint32_t high = d + 1 < mode.size() ? floatToHalf(float(mode[d + 1] / scale)) : 0u;
+        const std::uint32_t high =
+            d + 1 < mode.size() ? floatToHalf(float(mode[d + 1] / scale)) : 0u;
         words[d / 2] = low | (high << 16);
     }
 }
 
 }  // namespace
 
-ModeBuffer::ModeBuffer(const vulkan::VulkanContext& context, const Eigen::MatrixXd& modes, ModePrecision precision)
+ModeBuffer::ModeBuffer(const vulkan::VulkanContext& context, const Eigen::MatrixXd& modes,
+                       ModePrecision precision)
     : mDofCount(checkedDofCount(modes)),
       mModeCount(std::uint32_t(modes.cols())),
       mPrecision(precision),
       mModeStride(modeStrideFor(mDofCount, precision)),
-      mScales(vulkan::DeviceBuffer::fromValues<float>(context, paddedScales(modes, precision), "mode scales")) {
+      mScales(vulkan::DeviceBuffer::fromValues<float>(context, paddedScales(modes, precision),
+                                                      "mode scales")) {
     const VkDeviceSize modeBytes = VkDeviceSize(mModeStride) * sizeof(std::uint32_t);
     // The kernels read a chunk as texels: within the texel limit too.
     const VkDeviceSize limit = context.texelBufferLimit();
@@ -86,7 +91,8 @@ ModeBuffer::ModeBuffer(const vulkan::VulkanContext& context, const Eigen::Matrix
     for (std::uint32_t first = 0; first < mModeCount; first += perChunk) {
         const std::uint32_t count = std::min(perChunk, mModeCount - first);
         // Tile-major: tile t of every mode of the chunk, then tile t + 1 (see the header).
-        const std::size_t tileWords = std::size_t(kTileVectors) * 4, tiles = mModeStride / tileWords;
+        const std::size_t tileWords = std::size_t(kTileVectors) * 4,
+                          tiles = mModeStride / tileWords;
         std::vector<std::uint32_t> mode(mModeStride), words(std::size_t(count) * mModeStride);
         for (std::uint32_t i = 0; i < count; ++i) {
             std::fill(mode.begin(), mode.end(), 0u);
@@ -95,8 +101,10 @@ ModeBuffer::ModeBuffer(const vulkan::VulkanContext& context, const Eigen::Matrix
                 std::copy_n(mode.begin() + std::ptrdiff_t(t * tileWords), tileWords,
                             words.begin() + std::ptrdiff_t((t * count + i) * tileWords));
         }
-        const std::string name = "modes " + std::to_string(first) + "-" + std::to_string(first + count - 1);
-        mChunks.push_back(Chunk{first, count, vulkan::DeviceBuffer::fromValues<std::uint32_t>(context, words, name)});
+        const std::string name =
+            "modes " + std::to_string(first) + "-" + std::to_string(first + count - 1);
+        mChunks.push_back(Chunk{
+            first, count, vulkan::DeviceBuffer::fromValues<std::uint32_t>(context, words, name)});
     }
 }
 
@@ -107,9 +115,11 @@ Eigen::MatrixXd ModeBuffer::rounded(const Eigen::MatrixXd& modes, ModePrecision 
     for (Eigen::Index i = 0; i < modes.cols(); ++i) {
         encodeMode(modes.col(i), scales[std::size_t(i)], precision, words.data());
         for (Eigen::Index d = 0; d < modes.rows(); ++d) {
-            const double stored = precision == ModePrecision::Float32
-                                      ? double(std::bit_cast<float>(words[std::size_t(d)]))
-                                      : double(halfToFloat(std::uint16_t(words[std::size_t(d / 2)] >> (16 * (d % 2)))));
+            const double stored =
+                precision == ModePrecision::Float32
+                    ? double(std::bit_cast<float>(words[std::size_t(d)]))
+                    : double(
+                          halfToFloat(std::uint16_t(words[std::size_t(d / 2)] >> (16 * (d % 2)))));
             result(d, i) = stored * scales[std::size_t(i)];
         }
     }

@@ -33,7 +33,6 @@ class VulkanContext;
 
 namespace modeflow::device {
 
-
 class ModeBuffer {
 public:
     /// Invocations that share a tile (lavapipe's SIMD width with AVX2: its batches of
@@ -59,7 +58,8 @@ public:
     ModePrecision precision() const { return mPrecision; }
     /// DOFs per 16-byte vector: 4 (float32) or 8 (float16).
     std::uint32_t dofsPerVector() const { return dofsPerVector(mPrecision); }
-    /// 16-byte vectors per mode: the DOF count divided by dofsPerVector(), rounded up to whole tiles.
+    /// 16-byte vectors per mode: the DOF count divided by dofsPerVector(), rounded up to whole
+    /// tiles.
     std::uint32_t modeVectors() const { return mModeStride / 4; }
     std::uint32_t tileCount() const { return modeVectors() / kTileVectors; }
     /// 32-bit words per mode: 4 × modeVectors().
@@ -72,7 +72,9 @@ public:
     /// that read it four at a time (zeros past N; ModalStepper's state buffers are padded so too).
     std::uint32_t paddedModeCount() const { return (mModeCount + 3) / 4 * 4; }
 
-    static std::uint32_t dofsPerVector(ModePrecision precision) { return precision == ModePrecision::Float16 ? 8 : 4; }
+    static std::uint32_t dofsPerVector(ModePrecision precision) {
+        return precision == ModePrecision::Float16 ? 8 : 4;
+    }
 
     /// The modes as the device holds them (rounded, scales applied), for tests and error bounds.
     static Eigen::MatrixXd rounded(const Eigen::MatrixXd& modes, ModePrecision precision);

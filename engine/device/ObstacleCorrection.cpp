@@ -18,7 +18,8 @@
 namespace modeflow::device {
 namespace {
 
-vulkan::DeviceBuffer zeros(const vulkan::VulkanContext& context, std::size_t count, const char* name) {
+vulkan::DeviceBuffer zeros(const vulkan::VulkanContext& context, std::size_t count,
+                           const char* name) {
     return vulkan::DeviceBuffer::fromValues<float>(context, std::vector<float>(count, 0.0f), name);
 }
 
@@ -28,7 +29,8 @@ void copy3(float to[3], const Vec3& from) {
 
 }  // namespace
 
-ObstacleCorrection::ObstacleCorrection(const vulkan::VulkanContext& context, const BasisCache& cache)
+ObstacleCorrection::ObstacleCorrection(const vulkan::VulkanContext& context,
+                                       const BasisCache& cache)
     : mContext(context),
       mGrid(MacGrid::fromSpec(cache.grid)),
       mDofCount(std::uint32_t(cache.faces.size())),
@@ -40,7 +42,8 @@ ObstacleCorrection::ObstacleCorrection(const vulkan::VulkanContext& context, con
       mProjection(context, cache, FaceQuantity::FaceField),
       mMismatchKernel(context, {"obstacle_mismatch", obstacle_mismatch_spv, 4,
                                 sizeof(shaders::ObstacleMismatchParams), 64}),
-      mCorrectKernel(context, {"modal_correct", modal_correct_spv, 2, sizeof(shaders::ModalCorrectParams), 64}) {}
+      mCorrectKernel(context, {"modal_correct", modal_correct_spv, 2,
+                               sizeof(shaders::ModalCorrectParams), 64}) {}
 
 void ObstacleCorrection::setObstacles(std::span<const MovingObstacle> obstacles, double t) {
     if (obstacles.size() > std::size_t(maxObstacles))
@@ -64,7 +67,8 @@ void ObstacleCorrection::setObstacles(std::span<const MovingObstacle> obstacles,
 }
 
 template <typename Project>
-void ObstacleCorrection::recordWith(vulkan::CommandSequence& sequence, const vulkan::DeviceBuffer& faceField,
+void ObstacleCorrection::recordWith(vulkan::CommandSequence& sequence,
+                                    const vulkan::DeviceBuffer& faceField,
                                     const vulkan::DeviceBuffer& v, Project&& project) const {
     if (mObstacleCount == 0) return;
     requireWords("obstacle_mismatch", faceField, std::uint64_t(mGrid.faceTotal()));
@@ -81,22 +85,28 @@ void ObstacleCorrection::recordWith(vulkan::CommandSequence& sequence, const vul
         params.origin[a] = float(mGrid.origin[a]);
         params.spacing[a] = float(mGrid.spacing[a]);
     }
-    const std::array<const vulkan::DeviceBuffer*, 4> mismatchBuffers{&mFaces, &faceField, &mObstacles, &mMismatch};
+    const std::array<const vulkan::DeviceBuffer*, 4> mismatchBuffers{&mFaces, &faceField,
+                                                                     &mObstacles, &mMismatch};
     sequence.dispatch(mMismatchKernel, mismatchBuffers, params, groupsFor(mContext, mDofCount, 64));
     project();
     const std::array<const vulkan::DeviceBuffer*, 2> correctBuffers{&v, &mCorrection};
-    sequence.dispatch(mCorrectKernel, correctBuffers, shaders::ModalCorrectParams{mModeCount, 0, 0, 0},
-                      (mModeCount + 63) / 64);
+    sequence.dispatch(mCorrectKernel, correctBuffers,
+                      shaders::ModalCorrectParams{mModeCount, 0, 0, 0}, (mModeCount + 63) / 64);
 }
 
-void ObstacleCorrection::record(vulkan::CommandSequence& sequence, const ModeBuffer& modes, const vulkan::DeviceBuffer& faceField,
+void ObstacleCorrection::record(vulkan::CommandSequence& sequence, const ModeBuffer& modes,
+                                const vulkan::DeviceBuffer& faceField,
                                 const vulkan::DeviceBuffer& v) const {
-    recordWith(sequence, faceField, v, [&] { mProjection.record(sequence, modes, mMismatch, mCorrection); });
+    recordWith(sequence, faceField, v,
+               [&] { mProjection.record(sequence, modes, mMismatch, mCorrection); });
 }
 
-void ObstacleCorrection::record(vulkan::CommandSequence& sequence, const SeparableTransformKernels& transforms,
-                                const vulkan::DeviceBuffer& faceField, const vulkan::DeviceBuffer& v) const {
-    recordWith(sequence, faceField, v, [&] { transforms.recordFaceFieldProjection(sequence, mMismatch, mCorrection); });
+void ObstacleCorrection::record(vulkan::CommandSequence& sequence,
+                                const SeparableTransformKernels& transforms,
+                                const vulkan::DeviceBuffer& faceField,
+                                const vulkan::DeviceBuffer& v) const {
+    recordWith(sequence, faceField, v,
+               [&] { transforms.recordFaceFieldProjection(sequence, mMismatch, mCorrection); });
 }
 
 }  // namespace modeflow::device

@@ -8,9 +8,9 @@
 #include <span>
 
 #include "engine/core/MacGrid.h"
-#include "engine/simulation/MovingObstacle.h"
-#include "engine/format/BasisCache.h"
 #include "engine/device/ForceProjection.h"
+#include "engine/format/BasisCache.h"
+#include "engine/simulation/MovingObstacle.h"
 #include "engine/vulkan/ComputeKernel.h"
 #include "engine/vulkan/DeviceBuffer.h"
 
@@ -34,9 +34,10 @@ public:
     /// @throw modeflow::Error for more than maxObstacles.
     void setObstacles(std::span<const MovingObstacle> obstacles, double t);
 
-    /// Records v −= Ψᵀ⋆(mismatch of `faceField`) with the basis in `modes`; nothing without obstacles.
-    void record(vulkan::CommandSequence& sequence, const ModeBuffer& modes, const vulkan::DeviceBuffer& faceField,
-                const vulkan::DeviceBuffer& v) const;
+    /// Records v −= Ψᵀ⋆(mismatch of `faceField`) with the basis in `modes`; nothing without
+    /// obstacles.
+    void record(vulkan::CommandSequence& sequence, const ModeBuffer& modes,
+                const vulkan::DeviceBuffer& faceField, const vulkan::DeviceBuffer& v) const;
     /// The same with a closed-form basis's transforms.
     void record(vulkan::CommandSequence& sequence, const SeparableTransformKernels& transforms,
                 const vulkan::DeviceBuffer& faceField, const vulkan::DeviceBuffer& v) const;

@@ -21,13 +21,15 @@ namespace {
 constexpr std::uint32_t kWorkgroup = 64;
 
 template <typename T>
-vulkan::DeviceBuffer upload(const vulkan::VulkanContext& context, const std::vector<T>& values, const char* name) {
+vulkan::DeviceBuffer upload(const vulkan::VulkanContext& context, const std::vector<T>& values,
+                            const char* name) {
     return vulkan::DeviceBuffer::fromValues<T>(context, values, name);
 }
 
 /// The weight each component's DOFs get in a projection: one per normal axis on a whole box.
 std::array<double, 3> componentWeights(const BasisCache& cache, FaceQuantity quantity,
-                                       const std::array<std::uint32_t, 3>& start, std::uint32_t dofs) {
+                                       const std::array<std::uint32_t, 3>& start,
+                                       std::uint32_t dofs) {
     const Eigen::VectorXd w = projectionWeights(cache, quantity);
     std::array<double, 3> out{0.0, 0.0, 0.0};
     for (int a = 0; a < cache.grid.dim; ++a) {
@@ -35,14 +37,16 @@ std::array<double, 3> componentWeights(const BasisCache& cache, FaceQuantity qua
         out[std::size_t(a)] = w[start[std::size_t(a)]];
         for (std::uint32_t d = start[std::size_t(a)]; d < end; ++d)
             if (w[d] != out[std::size_t(a)])
-                throw Error("separable transform: projection weights differ along normal axis " + std::to_string(a));
+                throw Error("separable transform: projection weights differ along normal axis " +
+                            std::to_string(a));
     }
     return out;
 }
 
 }  // namespace
 
-SeparableTransformKernels::SeparableTransformKernels(const vulkan::VulkanContext& context, const BasisCache& cache)
+SeparableTransformKernels::SeparableTransformKernels(const vulkan::VulkanContext& context,
+                                                     const BasisCache& cache)
     : mContext(context),
       mTables(context, 4),
       mScatterIndex(context, 4),
@@ -56,17 +60,19 @@ SeparableTransformKernels::SeparableTransformKernels(const vulkan::VulkanContext
       mScratchB(context, 4),
       mDofValues(context, 4),
       mDofInput(context, 4),
-      mPassKernel(context, {"separable_pass", separable_pass_spv, 3, sizeof(shaders::SeparablePassParams), kWorkgroup}),
-      mGatherKernel(context,
-                    {"separable_gather", separable_gather_spv, 4, sizeof(shaders::SeparableGatherParams), kWorkgroup}),
-      mScatterKernel(context, {"separable_scatter", separable_scatter_spv, 3, sizeof(shaders::SeparableScatterParams),
-                               kWorkgroup}) {
+      mPassKernel(context, {"separable_pass", separable_pass_spv, 3,
+                            sizeof(shaders::SeparablePassParams), kWorkgroup}),
+      mGatherKernel(context, {"separable_gather", separable_gather_spv, 4,
+                              sizeof(shaders::SeparableGatherParams), kWorkgroup}),
+      mScatterKernel(context, {"separable_scatter", separable_scatter_spv, 3,
+                               sizeof(shaders::SeparableScatterParams), kWorkgroup}) {
     const SeparableTransform host(cache);  // the checks, slots and tables
     mDim = cache.grid.dim;
     mModeCount = std::uint32_t(host.modeCount());
     mDofCount = std::uint32_t(host.dofCount());
     mFaceTotal = std::uint32_t(MacGrid::fromSpec(cache.grid).faceTotal());
-    const std::array<std::uint32_t, 3> k{std::uint32_t(host.slotCount(0)), std::uint32_t(host.slotCount(1)),
+    const std::array<std::uint32_t, 3> k{std::uint32_t(host.slotCount(0)),
+                                         std::uint32_t(host.slotCount(1)),
                                          std::uint32_t(host.slotCount(2))};
     mSlotCount = k[0] * k[1] * k[2];
 
@@ -77,7 +83,8 @@ SeparableTransformKernels::SeparableTransformKernels(const vulkan::VulkanContext
     for (int normal = 0; normal < mDim; ++normal) {
         mDofStart[std::size_t(normal)] = std::uint32_t(start);
         std::array<std::uint32_t, 3> p{};
-        for (int a = 0; a < 3; ++a) p[std::size_t(a)] = std::uint32_t(host.positionCount(normal, a));
+        for (int a = 0; a < 3; ++a)
+            p[std::size_t(a)] = std::uint32_t(host.positionCount(normal, a));
         start += std::uint64_t(p[0]) * p[1] * p[2];
         for (int axis = 0; axis < 3; ++axis) {
             const std::vector<double> table = host.factorTable(normal, axis);  // P × K
@@ -86,45 +93,58 @@ SeparableTransformKernels::SeparableTransformKernels(const vulkan::VulkanContext
             tables.insert(tables.end(), table.begin(), table.end());
             const auto analysisOffset = std::uint32_t(tables.size());
             for (std::uint32_t c = 0; c < cols; ++c)
-                for (std::uint32_t r = 0; r < rows; ++r) tables.push_back(float(table[std::size_t(r) * cols + c]));
+                for (std::uint32_t r = 0; r < rows; ++r)
+                    tables.push_back(float(table[std::size_t(r) * cols + c]));
             // Before pass `axis`, the axes before it are done (positions, or slots in analysis).
             std::array<std::uint32_t, 3> before = k, after = p;
             if (axis >= 1) before[0] = p[0], after[0] = k[0];
             if (axis >= 2) before[1] = p[1], after[1] = k[1];
             const std::uint32_t s1 = (axis + 1) % 3, s2 = (axis + 2) % 3;
             // The two other axes in rotated order: (axis+1, axis+2) → (d1, d2).
-            mSynthesis[std::size_t(normal)][std::size_t(axis)] = {before[s1], before[s2], cols, rows, synthesisOffset};
-            mAnalysis[std::size_t(normal)][std::size_t(axis)] = {after[s1], after[s2], rows, cols, analysisOffset};
-            scratch = std::max<std::uint64_t>(scratch, std::uint64_t(before[s1]) * before[s2] * rows);
+            mSynthesis[std::size_t(normal)][std::size_t(axis)] = {before[s1], before[s2], cols,
+                                                                  rows, synthesisOffset};
+            mAnalysis[std::size_t(normal)][std::size_t(axis)] = {after[s1], after[s2], rows, cols,
+                                                                 analysisOffset};
+            scratch =
+                std::max<std::uint64_t>(scratch, std::uint64_t(before[s1]) * before[s2] * rows);
             scratch = std::max<std::uint64_t>(scratch, std::uint64_t(after[s1]) * after[s2] * cols);
         }
     }
     mTables = upload(context, tables, "separable tables");
     mScratchA = vulkan::DeviceBuffer(context, scratch * sizeof(float), "separable scratch A");
     mScratchB = vulkan::DeviceBuffer(context, scratch * sizeof(float), "separable scratch B");
-    mSlots = vulkan::DeviceBuffer(context, std::uint64_t(mDim) * mSlotCount * sizeof(float), "separable slots");
-    mDofValues = vulkan::DeviceBuffer(context, std::uint64_t(mDofCount) * sizeof(float), "separable DOF values");
-    mDofInput = vulkan::DeviceBuffer(context, std::uint64_t(mDofCount) * sizeof(float), "separable DOF input");
+    mSlots = vulkan::DeviceBuffer(context, std::uint64_t(mDim) * mSlotCount * sizeof(float),
+                                  "separable slots");
+    mDofValues = vulkan::DeviceBuffer(context, std::uint64_t(mDofCount) * sizeof(float),
+                                      "separable DOF values");
+    mDofInput = vulkan::DeviceBuffer(context, std::uint64_t(mDofCount) * sizeof(float),
+                                     "separable DOF input");
 
     // Modes ↔ slots: a slot holds at most two modes of one component (the two polarizations of
     // a 3D wave vector; on periodic axes the phases are slots of their own).
     const std::size_t slots = std::size_t(mDim) * mSlotCount;
-    std::vector<std::uint32_t> scatterIndex(2 * slots, SEPARABLE_NONE), gatherIndex(std::size_t(mDim) * mModeCount);
+    std::vector<std::uint32_t> scatterIndex(2 * slots, SEPARABLE_NONE),
+        gatherIndex(std::size_t(mDim) * mModeCount);
     std::vector<float> scatterWeight(2 * slots, 0.0f);
     std::array<std::vector<float>, 2> gatherWeights{std::vector<float>(gatherIndex.size()),
                                                     std::vector<float>(gatherIndex.size())};
     const MacGrid mac = MacGrid::fromSpec(cache.grid);
     const std::array<FaceQuantity, 2> quantities{FaceQuantity::Density, FaceQuantity::FaceField};
     std::array<std::array<double, 3>, 2> weights{};
-    for (int q = 0; q < 2; ++q) weights[std::size_t(q)] = componentWeights(cache, quantities[std::size_t(q)], mDofStart, mDofCount);
+    for (int q = 0; q < 2; ++q)
+        weights[std::size_t(q)] =
+            componentWeights(cache, quantities[std::size_t(q)], mDofStart, mDofCount);
     for (std::uint32_t m = 0; m < mModeCount; ++m) {
         const SeparableMode& mode = cache.velocity.separable[m];
-        const std::size_t slot = (std::size_t(host.slotOf(mode, 2)) * k[1] + std::size_t(host.slotOf(mode, 1))) * k[0] +
-                                 std::size_t(host.slotOf(mode, 0));
+        const std::size_t slot =
+            (std::size_t(host.slotOf(mode, 2)) * k[1] + std::size_t(host.slotOf(mode, 1))) * k[0] +
+            std::size_t(host.slotOf(mode, 0));
         for (int a = 0; a < mDim; ++a) {
             const double amplitude = mode.amplitude[std::size_t(a)];
             const std::size_t term = std::size_t(a) * mModeCount + m;
-            gatherIndex[term] = amplitude == 0.0 ? SEPARABLE_NONE : std::uint32_t(std::size_t(a) * mSlotCount + slot);
+            gatherIndex[term] = amplitude == 0.0
+                                    ? SEPARABLE_NONE
+                                    : std::uint32_t(std::size_t(a) * mSlotCount + slot);
             for (int q = 0; q < 2; ++q)
                 gatherWeights[std::size_t(q)][term] =
                     float(amplitude * mac.faceArea(a) * weights[std::size_t(q)][std::size_t(a)]);
@@ -140,27 +160,35 @@ SeparableTransformKernels::SeparableTransformKernels(const vulkan::VulkanContext
     // The gather reads a term per component for each mode: terms are component-major above,
     // transposed here to mode-major (index[e terms + t]).
     std::vector<std::uint32_t> byMode(gatherIndex.size());
-    std::array<std::vector<float>, 2> weightsByMode{std::vector<float>(byMode.size()), std::vector<float>(byMode.size())};
+    std::array<std::vector<float>, 2> weightsByMode{std::vector<float>(byMode.size()),
+                                                    std::vector<float>(byMode.size())};
     for (std::uint32_t m = 0; m < mModeCount; ++m)
         for (int a = 0; a < mDim; ++a) {
-            const std::size_t from = std::size_t(a) * mModeCount + m, to = std::size_t(m) * std::size_t(mDim) + std::size_t(a);
+            const std::size_t from = std::size_t(a) * mModeCount + m,
+                              to = std::size_t(m) * std::size_t(mDim) + std::size_t(a);
             byMode[to] = gatherIndex[from];
-            for (int q = 0; q < 2; ++q) weightsByMode[std::size_t(q)][to] = gatherWeights[std::size_t(q)][from];
+            for (int q = 0; q < 2; ++q)
+                weightsByMode[std::size_t(q)][to] = gatherWeights[std::size_t(q)][from];
         }
     mScatterIndex = upload(context, scatterIndex, "separable scatter index");
     mScatterWeight = upload(context, scatterWeight, "separable scatter weight");
     mGatherIndex = upload(context, byMode, "separable gather index");
-    for (int q = 0; q < 2; ++q) mGatherWeights[std::size_t(q)] = upload(context, weightsByMode[std::size_t(q)], "separable gather weight");
+    for (int q = 0; q < 2; ++q)
+        mGatherWeights[std::size_t(q)] =
+            upload(context, weightsByMode[std::size_t(q)], "separable gather weight");
     mFaces = uploadDofFaces(context, cache);
     mOnes = upload(context, std::vector<float>(mDofCount, 1.0f), "ones");
 }
 
-void SeparableTransformKernels::recordPasses(vulkan::CommandSequence& sequence, int normal, bool synthesis,
-                                             const vulkan::DeviceBuffer& in, std::uint32_t inOffset,
-                                             const vulkan::DeviceBuffer& out, std::uint32_t outOffset) const {
+void SeparableTransformKernels::recordPasses(vulkan::CommandSequence& sequence, int normal,
+                                             bool synthesis, const vulkan::DeviceBuffer& in,
+                                             std::uint32_t inOffset,
+                                             const vulkan::DeviceBuffer& out,
+                                             std::uint32_t outOffset) const {
     const std::array<const vulkan::DeviceBuffer*, 4> chain{&in, &mScratchA, &mScratchB, &out};
     for (int axis = 0; axis < 3; ++axis) {
-        const Pass& pass = (synthesis ? mSynthesis : mAnalysis)[std::size_t(normal)][std::size_t(axis)];
+        const Pass& pass =
+            (synthesis ? mSynthesis : mAnalysis)[std::size_t(normal)][std::size_t(axis)];
         shaders::SeparablePassParams params{};
         params.d1 = pass.d1;
         params.d2 = pass.d2;
@@ -176,12 +204,14 @@ void SeparableTransformKernels::recordPasses(vulkan::CommandSequence& sequence, 
     }
 }
 
-void SeparableTransformKernels::recordReconstruction(vulkan::CommandSequence& sequence, const vulkan::DeviceBuffer& v,
+void SeparableTransformKernels::recordReconstruction(vulkan::CommandSequence& sequence,
+                                                     const vulkan::DeviceBuffer& v,
                                                      const vulkan::DeviceBuffer& faceField) const {
     requireWords("separable_gather", v, mModeCount);
     requireWords("separable_scatter", faceField, mFaceTotal);
     const std::uint32_t slots = std::uint32_t(mDim) * mSlotCount;
-    const std::array<const vulkan::DeviceBuffer*, 4> scatter{&mScatterIndex, &mScatterWeight, &v, &mSlots};
+    const std::array<const vulkan::DeviceBuffer*, 4> scatter{&mScatterIndex, &mScatterWeight, &v,
+                                                             &mSlots};
     sequence.dispatch(mGatherKernel, scatter, shaders::SeparableGatherParams{slots, 2, 0, 0},
                       groupsFor(mContext, slots, kWorkgroup));
     for (int normal = 0; normal < mDim; ++normal)
@@ -192,8 +222,9 @@ void SeparableTransformKernels::recordReconstruction(vulkan::CommandSequence& se
                       groupsFor(mContext, mDofCount, kWorkgroup));
 }
 
-void SeparableTransformKernels::recordAnalysis(vulkan::CommandSequence& sequence, const vulkan::DeviceBuffer& q,
-                                               FaceQuantity quantity, const vulkan::DeviceBuffer& f) const {
+void SeparableTransformKernels::recordAnalysis(vulkan::CommandSequence& sequence,
+                                               const vulkan::DeviceBuffer& q, FaceQuantity quantity,
+                                               const vulkan::DeviceBuffer& f) const {
     requireWords("separable_pass", q, mDofCount);
     requireWords("separable_gather", f, mModeCount);
     for (int normal = 0; normal < mDim; ++normal)
@@ -201,11 +232,13 @@ void SeparableTransformKernels::recordAnalysis(vulkan::CommandSequence& sequence
                      std::uint32_t(normal) * mSlotCount);
     const auto& weights = mGatherWeights[quantity == FaceQuantity::Density ? 0 : 1];
     const std::array<const vulkan::DeviceBuffer*, 4> gather{&mGatherIndex, &weights, &mSlots, &f};
-    sequence.dispatch(mGatherKernel, gather, shaders::SeparableGatherParams{mModeCount, std::uint32_t(mDim), 0, 0},
+    sequence.dispatch(mGatherKernel, gather,
+                      shaders::SeparableGatherParams{mModeCount, std::uint32_t(mDim), 0, 0},
                       groupsFor(mContext, mModeCount, kWorkgroup));
 }
 
-void SeparableTransformKernels::recordProjection(vulkan::CommandSequence& sequence, const vulkan::DeviceBuffer& q,
+void SeparableTransformKernels::recordProjection(vulkan::CommandSequence& sequence,
+                                                 const vulkan::DeviceBuffer& q,
                                                  const vulkan::DeviceBuffer& f) const {
     recordAnalysis(sequence, q, FaceQuantity::Density, f);
 }

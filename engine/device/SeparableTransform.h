@@ -41,7 +41,8 @@ public:
     void recordProjection(vulkan::CommandSequence& sequence, const vulkan::DeviceBuffer& q,
                           const vulkan::DeviceBuffer& f) const;
     /// The same for a whole-grid face field read at the DOF faces, w for FaceQuantity::FaceField.
-    void recordFaceFieldProjection(vulkan::CommandSequence& sequence, const vulkan::DeviceBuffer& faceField,
+    void recordFaceFieldProjection(vulkan::CommandSequence& sequence,
+                                   const vulkan::DeviceBuffer& faceField,
                                    const vulkan::DeviceBuffer& f) const;
 
     std::uint32_t modeCount() const { return mModeCount; }
@@ -53,11 +54,12 @@ private:
         std::uint32_t d1, d2, inLength, outLength, tableOffset;
     };
     /// Records the three passes of component `normal` (synthesis or analysis).
-    void recordPasses(vulkan::CommandSequence& sequence, int normal, bool synthesis, const vulkan::DeviceBuffer& in,
-                      std::uint32_t inOffset, const vulkan::DeviceBuffer& out, std::uint32_t outOffset) const;
+    void recordPasses(vulkan::CommandSequence& sequence, int normal, bool synthesis,
+                      const vulkan::DeviceBuffer& in, std::uint32_t inOffset,
+                      const vulkan::DeviceBuffer& out, std::uint32_t outOffset) const;
     /// f from the DOF values in `q` (mGatherWeights[quantity]).
-    void recordAnalysis(vulkan::CommandSequence& sequence, const vulkan::DeviceBuffer& q, FaceQuantity quantity,
-                        const vulkan::DeviceBuffer& f) const;
+    void recordAnalysis(vulkan::CommandSequence& sequence, const vulkan::DeviceBuffer& q,
+                        FaceQuantity quantity, const vulkan::DeviceBuffer& f) const;
 
     const vulkan::VulkanContext& mContext;
     int mDim = 3;

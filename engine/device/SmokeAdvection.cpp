@@ -60,17 +60,18 @@ shaders::SmokeFacePairsParams pairParams(const MacGrid& basis) {
 /// the read-only inputs as texels, and MacCormack's hat and record too in the correction, which
 /// reads what the forward stage wrote.
 vulkan::ComputeKernel advectKernel(const vulkan::VulkanContext& context, const char* name,
-                           std::span<const std::uint32_t> spirv, std::uint32_t stage,
-                           std::uint32_t workgroupSize) {
+                                   std::span<const std::uint32_t> spirv, std::uint32_t stage,
+                                   std::uint32_t workgroupSize) {
     std::vector<std::uint32_t> texels{0, 1, 2, 3};
     if (stage == SMOKE_STAGE_MACCORMACK_CORRECT) texels.insert(texels.end(), {4, 5});
-    return vulkan::ComputeKernel(context, vulkan::ComputeKernelSpec{name,
-                                                    spirv,
-                                                    8,
-                                                    sizeof(shaders::SmokeAdvectParams),
-                                                    workgroupSize,
-                                                    {},
-                                                    std::move(texels)});
+    return vulkan::ComputeKernel(context,
+                                 vulkan::ComputeKernelSpec{name,
+                                                           spirv,
+                                                           8,
+                                                           sizeof(shaders::SmokeAdvectParams),
+                                                           workgroupSize,
+                                                           {},
+                                                           std::move(texels)});
 }
 
 }  // namespace
@@ -79,12 +80,12 @@ SmokeAdvectionKernels::SmokeAdvectionKernels(const vulkan::VulkanContext& contex
                                              std::uint32_t workgroupSize)
     : mContext(context.requireShaderInt64("the smoke advection")),
       mFacePairs(context, vulkan::ComputeKernelSpec{"smoke_face_pairs",
-                                            smoke_face_pairs_spv,
-                                            3,
-                                            sizeof(shaders::SmokeFacePairsParams),
-                                            workgroupSize,
-                                            {},
-                                            {0}}),
+                                                    smoke_face_pairs_spv,
+                                                    3,
+                                                    sizeof(shaders::SmokeFacePairsParams),
+                                                    workgroupSize,
+                                                    {},
+                                                    {0}}),
       mStages{advectKernel(context, "smoke_advect_sl_2d", smoke_advect_sl_2d_spv,
                            SMOKE_STAGE_SEMI_LAGRANGIAN, workgroupSize),
               advectKernel(context, "smoke_advect_forward_2d", smoke_advect_forward_2d_spv,
@@ -98,39 +99,47 @@ SmokeAdvectionKernels::SmokeAdvectionKernels(const vulkan::VulkanContext& contex
               advectKernel(context, "smoke_advect_correct_3d", smoke_advect_correct_3d_spv,
                            SMOKE_STAGE_MACCORMACK_CORRECT, workgroupSize)} {}
 
-const vulkan::ComputeKernel& SmokeAdvectionKernels::stageKernel(std::uint32_t stage, int dim) const {
+const vulkan::ComputeKernel& SmokeAdvectionKernels::stageKernel(std::uint32_t stage,
+                                                                int dim) const {
     return mStages[std::size_t(stage) + (dim == 3 ? 3 : 0)];
 }
 
 template <typename Params>
-void SmokeAdvectionKernels::dispatchAll(vulkan::CommandSequence& sequence, const vulkan::ComputeKernel& kernel,
-                                        std::span<const vulkan::DeviceBuffer* const> buffers, Params& params,
-                                        std::uint32_t Params::*first, std::int64_t count,
-                                        std::uint32_t firstScale) const {
+void SmokeAdvectionKernels::dispatchAll(vulkan::CommandSequence& sequence,
+                                        const vulkan::ComputeKernel& kernel,
+                                        std::span<const vulkan::DeviceBuffer* const> buffers,
+                                        Params& params, std::uint32_t Params::*first,
+                                        std::int64_t count, std::uint32_t firstScale) const {
     const std::int64_t groupSize = kernel.workgroupSize();
-    const std::int64_t perDispatch = std::int64_t(mContext.properties().limits.maxComputeWorkGroupCount[0]) * groupSize;
+    const std::int64_t perDispatch =
+        std::int64_t(mContext.properties().limits.maxComputeWorkGroupCount[0]) * groupSize;
     for (std::int64_t start = 0; start < count; start += perDispatch) {
         params.*first = std::uint32_t(start) * firstScale;
         const std::int64_t chunk = std::min(perDispatch, count - start);
-        sequence.dispatch(kernel, buffers, params, std::uint32_t((chunk + groupSize - 1) / groupSize));
+        sequence.dispatch(kernel, buffers, params,
+                          std::uint32_t((chunk + groupSize - 1) / groupSize));
     }
 }
 
-void SmokeAdvectionKernels::record(vulkan::CommandSequence& sequence, SmokeState& state, const vulkan::DeviceBuffer& velocity,
-                                   double dt, AdvectionScheme scheme) const {
+void SmokeAdvectionKernels::record(vulkan::CommandSequence& sequence, SmokeState& state,
+                                   const vulkan::DeviceBuffer& velocity, double dt,
+                                   AdvectionScheme scheme) const {
     const std::int64_t faces = state.basisGrid().faceTotal();
     if (velocity.bytes() < VkDeviceSize(faces) * sizeof(float))
         throw Error("smoke_advect: velocity buffer \"" + velocity.name() + "\" holds " +
-                    std::to_string(velocity.bytes()) + " bytes, the basis grid's " + std::to_string(faces) +
-                    " faces need " + std::to_string(faces * sizeof(float)));
-    if (!std::isfinite(dt)) throw Error("smoke_advect: time step " + std::to_string(dt) + " is not finite");
+                    std::to_string(velocity.bytes()) + " bytes, the basis grid's " +
+                    std::to_string(faces) + " faces need " + std::to_string(faces * sizeof(float)));
+    if (!std::isfinite(dt))
+        throw Error("smoke_advect: time step " + std::to_string(dt) + " is not finite");
     const std::int64_t cells = state.cellCount();
     if (cells >= (std::int64_t(1) << 32))
-        throw Error("smoke_advect: " + std::to_string(cells) + " smoke cells, at most 2^32 - 1 supported");
+        throw Error("smoke_advect: " + std::to_string(cells) +
+                    " smoke cells, at most 2^32 - 1 supported");
 
     shaders::SmokeFacePairsParams pairs = pairParams(state.basisGrid());
     // Bindings 0-2 of shaders/smoke_face_pairs.comp: the velocity as texels and as floats.
-    const std::array<const vulkan::DeviceBuffer*, 3> pairBuffers{&velocity, &velocity, &state.facePairs()};
+    const std::array<const vulkan::DeviceBuffer*, 3> pairBuffers{&velocity, &velocity,
+                                                                 &state.facePairs()};
     dispatchAll(sequence, mFacePairs, pairBuffers, pairs, &shaders::SmokeFacePairsParams::firstFace,
                 (faces + 3) / 4, 4);
 

@@ -51,7 +51,8 @@ public:
     /// `workgroupSize`: any; 128 ran 2-4% faster than 64 on lavapipe, and suits GPUs.
     /// @throw modeflow::Error if the device lacks 64-bit integers in shaders (shaderInt64) or a
     /// pipeline cannot be created.
-    explicit SmokeAdvectionKernels(const vulkan::VulkanContext& context, std::uint32_t workgroupSize = 128);
+    explicit SmokeAdvectionKernels(const vulkan::VulkanContext& context,
+                                   std::uint32_t workgroupSize = 128);
 
     /// Records one step of `state` by `velocity` (a float32 face field of state.basisGrid(),
     /// MacGrid::faceIndex order) over `dt`, then the state's emitters, and flips the state so
@@ -60,16 +61,17 @@ public:
     /// @throw modeflow::Error when the velocity buffer is smaller than the basis grid's face
     /// count or has no texel view (it is read as texels), dt is not finite, or the smoke grid has
     /// 2^32 cells or more.
-    void record(vulkan::CommandSequence& sequence, SmokeState& state, const vulkan::DeviceBuffer& velocity, double dt,
-                AdvectionScheme scheme) const;
+    void record(vulkan::CommandSequence& sequence, SmokeState& state,
+                const vulkan::DeviceBuffer& velocity, double dt, AdvectionScheme scheme) const;
 
 private:
     /// Dispatches `kernel` over `count` invocations in chunks of at most the group count limit,
     /// each with its first invocation times `firstScale` in params.*first.
     template <typename Params>
     void dispatchAll(vulkan::CommandSequence& sequence, const vulkan::ComputeKernel& kernel,
-                     std::span<const vulkan::DeviceBuffer* const> buffers, Params& params, std::uint32_t Params::*first,
-                     std::int64_t count, std::uint32_t firstScale = 1) const;
+                     std::span<const vulkan::DeviceBuffer* const> buffers, Params& params,
+                     std::uint32_t Params::*first, std::int64_t count,
+                     std::uint32_t firstScale = 1) const;
 
     /// The kernel of `stage` (SMOKE_STAGE_*) for a `dim`-dimensional smoke grid.
     const vulkan::ComputeKernel& stageKernel(std::uint32_t stage, int dim) const;

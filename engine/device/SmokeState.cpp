@@ -14,11 +14,12 @@ namespace {
 /// The mask as 0 and 1, after checking its size and the grid's extent.
 std::vector<std::uint8_t> fluidFlags(const MacGrid& smoke, std::span<const std::uint8_t> mask) {
     if (mask.size() != std::size_t(smoke.cellCount()))
-        throw Error("smoke state: the fluid mask has " + std::to_string(mask.size()) + " entries, the smoke grid " +
-                    std::to_string(smoke.cellCount()) + " cells");
+        throw Error("smoke state: the fluid mask has " + std::to_string(mask.size()) +
+                    " entries, the smoke grid " + std::to_string(smoke.cellCount()) + " cells");
     if (smoke.cells[0] > int(SMOKE_CELL_AXIS_LIMIT) || smoke.cells[1] > int(SMOKE_CELL_AXIS_LIMIT))
         throw Error("smoke state: the smoke grid has " + std::to_string(smoke.cells[0]) + " x " +
-                    std::to_string(smoke.cells[1]) + " cells along x and y, the device kernels take at most " +
+                    std::to_string(smoke.cells[1]) +
+                    " cells along x and y, the device kernels take at most " +
                     std::to_string(SMOKE_CELL_AXIS_LIMIT) + " along each");
     std::vector<std::uint8_t> flags(mask.size());
     for (std::size_t c = 0; c < mask.size(); ++c) flags[c] = mask[c] != 0;
@@ -36,7 +37,7 @@ std::vector<std::int64_t> fluidIndices(const std::vector<std::uint8_t>& fluid) {
 /// texels (DeviceBuffer::texelView), which cover whole texels only.
 template <typename T>
 vulkan::DeviceBuffer texelBuffer(const vulkan::VulkanContext& context, std::vector<T> values,
-                         const std::string& name) {
+                                 const std::string& name) {
     static_assert(vulkan::DeviceBuffer::kTexelBytes % sizeof(T) == 0);
     constexpr std::size_t perTexel = vulkan::DeviceBuffer::kTexelBytes / sizeof(T);
     values.resize(std::max<std::size_t>((values.size() + perTexel - 1) / perTexel, 1) * perTexel,
@@ -50,19 +51,22 @@ vulkan::DeviceBuffer texelBuffer(const vulkan::VulkanContext& context, std::vect
 }
 
 /// A buffer of `bytes` (a multiple of 4) holding zeros, padded to whole texels.
-vulkan::DeviceBuffer zeroBuffer(const vulkan::VulkanContext& context, std::size_t bytes, const std::string& name) {
+vulkan::DeviceBuffer zeroBuffer(const vulkan::VulkanContext& context, std::size_t bytes,
+                                const std::string& name) {
     return texelBuffer(context, std::vector<std::uint32_t>(bytes / 4, 0), name);
 }
 
 /// Per cell: bit cx + 2 cy + 4 cz set when cell (x + cx, y + cy, z + cz) exists and is fluid
 /// (across the seam along a periodic axis).
-std::vector<std::uint8_t> stencilFlags(const MacGrid& smoke, const std::vector<std::uint8_t>& fluid) {
+std::vector<std::uint8_t> stencilFlags(const MacGrid& smoke,
+                                       const std::vector<std::uint8_t>& fluid) {
     std::vector<std::uint8_t> bits(fluid.size(), 0);
     const auto fluidAt = [&](int x, int y, int z) {
         x = smoke.wrap(0, x);
         y = smoke.wrap(1, y);
         z = smoke.wrap(2, z);
-        return x < smoke.cells[0] && y < smoke.cells[1] && z < smoke.cells[2] && fluid[smoke.cellIndex(x, y, z)];
+        return x < smoke.cells[0] && y < smoke.cells[1] && z < smoke.cells[2] &&
+               fluid[smoke.cellIndex(x, y, z)];
     };
     for (int z = 0; z < smoke.cells[2]; ++z)
         for (int y = 0; y < smoke.cells[1]; ++y)
@@ -120,10 +124,11 @@ SmokeState::SmokeState(const vulkan::VulkanContext& context, const MacGrid& basi
           zeroBuffer(context, std::size_t(mBasis.faceTotal() + 3) / 4 * 32, "smoke face pairs")) {}
 
 void SmokeState::upload(std::span<const float> density, std::span<const float> temperature) {
-    if (density.size() != std::size_t(cellCount()) || temperature.size() != std::size_t(cellCount()))
-        throw Error("smoke state upload: density and temperature need " + std::to_string(cellCount()) +
-                    " values each, got " + std::to_string(density.size()) + " and " +
-                    std::to_string(temperature.size()));
+    if (density.size() != std::size_t(cellCount()) ||
+        temperature.size() != std::size_t(cellCount()))
+        throw Error("smoke state upload: density and temperature need " +
+                    std::to_string(cellCount()) + " values each, got " +
+                    std::to_string(density.size()) + " and " + std::to_string(temperature.size()));
     std::vector<float> pairs(2 * density.size(), 0.0f), alone(temperature.size(), 0.0f);
     for (const std::int64_t c : mFluidIndex) {
         pairs[2 * c] = density[c];
@@ -134,9 +139,10 @@ void SmokeState::upload(std::span<const float> density, std::span<const float> t
 }
 
 void SmokeState::download(std::span<float> densityOut, std::span<float> temperatureOut) const {
-    if (densityOut.size() != std::size_t(cellCount()) || temperatureOut.size() != std::size_t(cellCount()))
-        throw Error("smoke state download: density and temperature need room for " + std::to_string(cellCount()) +
-                    " values each");
+    if (densityOut.size() != std::size_t(cellCount()) ||
+        temperatureOut.size() != std::size_t(cellCount()))
+        throw Error("smoke state download: density and temperature need room for " +
+                    std::to_string(cellCount()) + " values each");
     std::vector<float> pairs(2 * densityOut.size());
     fields().download<float>(pairs);
     for (std::size_t c = 0; c < densityOut.size(); ++c) {
@@ -147,8 +153,8 @@ void SmokeState::download(std::span<float> densityOut, std::span<float> temperat
 
 void SmokeState::setEmitters(std::span<const SmokeEmitter> emitters) {
     if (emitters.size() > std::size_t(maxSmokeEmitters))
-        throw Error("smoke: " + std::to_string(emitters.size()) + " emitters, the device step takes at most " +
-                    std::to_string(maxSmokeEmitters));
+        throw Error("smoke: " + std::to_string(emitters.size()) +
+                    " emitters, the device step takes at most " + std::to_string(maxSmokeEmitters));
     // The rates per unit time: the reference's emitters over a step of 1.
     std::vector<double> density(mFluid.size(), 0.0), temperature(mFluid.size(), 0.0);
     applyEmitters(mSmoke, mFluid, emitters, 1.0, density, temperature);

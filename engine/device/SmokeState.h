@@ -27,7 +27,6 @@ class VulkanContext;
 
 namespace modeflow::device {
 
-
 class SmokeState {
 public:
     /// Fields start at 0. `fluidMask`: one entry per smoke cell, non-zero inside Ω.

@@ -55,8 +55,10 @@ std::uint32_t pixelGroups(const vulkan::ComputeKernel& kernel, const DisplayTarg
 
 DisplayKernels::DisplayKernels(const vulkan::VulkanContext& context)
     : mContext(context),
-      mSmoke2D(context, {"display_smoke_2d", display_smoke_2d_spv, 5, sizeof(shaders::DisplayParams)}),
-      mPicture(context, {"display_picture", display_picture_spv, 3, sizeof(shaders::DisplayParams)}) {}
+      mSmoke2D(context,
+               {"display_smoke_2d", display_smoke_2d_spv, 5, sizeof(shaders::DisplayParams)}),
+      mPicture(context,
+               {"display_picture", display_picture_spv, 3, sizeof(shaders::DisplayParams)}) {}
 
 void DisplayKernels::recordSmoke2D(vulkan::CommandSequence& sequence, const FieldBuffers& fields,
                                    const Smoke2DLook& look, const vulkan::DeviceBuffer& overlay,

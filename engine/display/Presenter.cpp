@@ -79,8 +79,8 @@ bool Presenter::present(const vulkan::DeviceBuffer& pixels, VkExtent2D wanted) {
     vulkan::check(vkBeginCommandBuffer(mCommands, &begin), "vkBeginCommandBuffer");
     // The picture's kernels ran in an earlier submission that the host waited on; their writes
     // become visible to the copy through this barrier's source scope.
-    transition(mCommands, image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-               0, VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
+    transition(mCommands, image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 0,
+               VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
                VK_PIPELINE_STAGE_TRANSFER_BIT);
     VkMemoryBarrier computeWrites{};
     computeWrites.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER;

@@ -50,18 +50,21 @@ void Swapchain::create(VkExtent2D wanted, VkSwapchainKHR old) {
     std::vector<VkSurfaceFormatKHR> formats(count);
     vkGetPhysicalDeviceSurfaceFormatsKHR(gpu, surface, &count, formats.data());
     // The kernels' bytes are sRGB-encoded already: any 8-bit format shows them as they are.
-    const auto chosen = std::find_if(formats.begin(), formats.end(), [](const VkSurfaceFormatKHR& f) {
-        return isEightBitRgba(f.format) && f.colorSpace == VK_COLOR_SPACE_SRGB_NONLINEAR_KHR;
-    });
+    const auto chosen =
+        std::find_if(formats.begin(), formats.end(), [](const VkSurfaceFormatKHR& f) {
+            return isEightBitRgba(f.format) && f.colorSpace == VK_COLOR_SPACE_SRGB_NONLINEAR_KHR;
+        });
     if (chosen == formats.end())
-        throw Error("the window's surface offers no 8-bit RGBA or BGRA format in sRGB colour space");
+        throw Error(
+            "the window's surface offers no 8-bit RGBA or BGRA format in sRGB colour space");
     mFormat = chosen->format;
     mBlueFirst = isBlueFirst(mFormat);
 
     // A surface either dictates its size or lets the application pick one within limits.
     mExtent = caps.currentExtent;
     if (mExtent.width == 0xffffffffu) {
-        mExtent.width = std::clamp(wanted.width, caps.minImageExtent.width, caps.maxImageExtent.width);
+        mExtent.width =
+            std::clamp(wanted.width, caps.minImageExtent.width, caps.maxImageExtent.width);
         mExtent.height =
             std::clamp(wanted.height, caps.minImageExtent.height, caps.maxImageExtent.height);
     }
@@ -69,7 +72,8 @@ void Swapchain::create(VkExtent2D wanted, VkSwapchainKHR old) {
     if (caps.maxImageCount > 0) images = std::min(images, caps.maxImageCount);
     VkCompositeAlphaFlagBitsKHR alpha = VK_COMPOSITE_ALPHA_OPAQUE_BIT_KHR;
     if (!(caps.supportedCompositeAlpha & alpha))
-        alpha = VkCompositeAlphaFlagBitsKHR(caps.supportedCompositeAlpha & -caps.supportedCompositeAlpha);
+        alpha = VkCompositeAlphaFlagBitsKHR(caps.supportedCompositeAlpha &
+                                            -caps.supportedCompositeAlpha);
 
     VkSwapchainCreateInfoKHR info{};
     info.sType = VK_STRUCTURE_TYPE_SWAPCHAIN_CREATE_INFO_KHR;

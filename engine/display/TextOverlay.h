@@ -16,8 +16,8 @@
 namespace modeflow::display {
 
 struct TextBlock {
-    int x = 0, y = 0;  ///< top-left corner in window pixels; negative: from the right/bottom edge
-    std::string text;  ///< lines separated by '\n'
+    int x = 0, y = 0;    ///< top-left corner in window pixels; negative: from the right/bottom edge
+    std::string text;    ///< lines separated by '\n'
     bool panel = false;  ///< darken a rectangle behind the text
     bool operator==(const TextBlock&) const = default;
 };

@@ -25,8 +25,8 @@ struct Viewport {
 
     /// A point given as fractions of the window (x right, y down) in fractions of the viewport
     /// (values outside [0, 1] lie in the margin).
-    void toViewport(double windowX, double windowY, int windowWidth, int windowHeight,
-                    double& u, double& v) const {
+    void toViewport(double windowX, double windowY, int windowWidth, int windowHeight, double& u,
+                    double& v) const {
         u = (windowX * windowWidth - x) / width;
         v = (windowY * windowHeight - y) / height;
     }

@@ -5,9 +5,9 @@
 #include <sstream>
 #include <string>
 
+#include "engine/core/Error.h"
 #include "engine/core/PackedLayout.h"
 #include "engine/dynamics/ParallelRows.h"
-#include "engine/core/Error.h"
 
 namespace modeflow {
 namespace {
@@ -21,8 +21,9 @@ constexpr std::size_t kChunkBytes = 32 * 1024;
 
 DenseCoefficients::DenseCoefficients(int n, std::vector<double> packed)
     : mN(n), mPacked(std::move(packed)) {
-    if (n < 1) throw Error("dense coefficients: the mode count must be positive, got " +
-                           std::to_string(n));
+    if (n < 1)
+        throw Error("dense coefficients: the mode count must be positive, got " +
+                    std::to_string(n));
     if (mPacked.size() != packedSize(n)) {
         throw Error("dense coefficients: " + std::to_string(n) + " modes need " +
                     std::to_string(packedSize(n)) + " packed values (N²(N−1)/2), got " +
@@ -88,18 +89,19 @@ void DenseCoefficients::apply(const Eigen::VectorXd& a, const Eigen::VectorXd& b
     checkSize("apply", a);
     checkSize("apply", b);
     out.setZero(mN);
-    reduceOverRows(threadBounds(), out, [&](std::size_t begin, std::size_t end,
-                                            Eigen::VectorXd& acc) {
-        // s_p = Σ_i C[k][i][j] a_i for the range's pairs, as one GEMV over contiguous rows.
-        const Eigen::Map<const RowMajorMatrix> rows(mPacked.data() + begin * mN,
-                                                    Eigen::Index(end - begin), mN);
-        const Eigen::VectorXd s = rows * a;
-        for (std::size_t p = begin; p < end; ++p) {
-            const int k = mPairK[p], j = mPairJ[p];
-            acc[k] += s[p - begin] * b[j];
-            acc[j] -= s[p - begin] * b[k];  // C[j][i][k] = −C[k][i][j]
-        }
-    });
+    reduceOverRows(threadBounds(), out,
+                   [&](std::size_t begin, std::size_t end, Eigen::VectorXd& acc) {
+                       // s_p = Σ_i C[k][i][j] a_i for the range's pairs, as one GEMV over
+                       // contiguous rows.
+                       const Eigen::Map<const RowMajorMatrix> rows(mPacked.data() + begin * mN,
+                                                                   Eigen::Index(end - begin), mN);
+                       const Eigen::VectorXd s = rows * a;
+                       for (std::size_t p = begin; p < end; ++p) {
+                           const int k = mPairK[p], j = mPairJ[p];
+                           acc[k] += s[p - begin] * b[j];
+                           acc[j] -= s[p - begin] * b[k];  // C[j][i][k] = −C[k][i][j]
+                       }
+                   });
 }
 
 void DenseCoefficients::linearize(const Eigen::VectorXd& a, const Eigen::VectorXd& b,
@@ -112,23 +114,23 @@ void DenseCoefficients::linearize(const Eigen::VectorXd& a, const Eigen::VectorX
     // from memory, then twice more from L1/L2 by three GEMV-like Eigen kernels.
     const std::size_t chunkRows = std::max<std::size_t>(1, kChunkBytes / (sizeof(double) * mN));
     Eigen::MatrixXd byJt = Eigen::MatrixXd::Zero(mN, mN);
-    reduceOverRows(threadBounds(), byJt, [&](std::size_t begin, std::size_t end,
-                                             Eigen::MatrixXd& acc) {
-        Eigen::VectorXd s;
-        for (std::size_t p = begin; p < end;) {
-            const int k = mPairK[p], j = mPairJ[p];
-            // Stay inside the block of pairs (k, ·), whose j are consecutive.
-            const std::size_t m = std::min({end - p, chunkRows, std::size_t(mN - j)});
-            const Eigen::Map<const RowMajorMatrix> rows(mPacked.data() + p * mN, Eigen::Index(m),
-                                                        mN);
-            s.noalias() = rows * a;
-            byI.row(k).segment(j, Eigen::Index(m)) = s.transpose();  // owned by this pair range
-            byI.col(k).segment(j, Eigen::Index(m)) = -s;
-            acc.col(k).noalias() += rows.transpose() * b.segment(j, Eigen::Index(m));
-            acc.middleCols(j, Eigen::Index(m)).noalias() -= b[k] * rows.transpose();
-            p += m;
-        }
-    });
+    reduceOverRows(
+        threadBounds(), byJt, [&](std::size_t begin, std::size_t end, Eigen::MatrixXd& acc) {
+            Eigen::VectorXd s;
+            for (std::size_t p = begin; p < end;) {
+                const int k = mPairK[p], j = mPairJ[p];
+                // Stay inside the block of pairs (k, ·), whose j are consecutive.
+                const std::size_t m = std::min({end - p, chunkRows, std::size_t(mN - j)});
+                const Eigen::Map<const RowMajorMatrix> rows(mPacked.data() + p * mN,
+                                                            Eigen::Index(m), mN);
+                s.noalias() = rows * a;
+                byI.row(k).segment(j, Eigen::Index(m)) = s.transpose();  // owned by this pair range
+                byI.col(k).segment(j, Eigen::Index(m)) = -s;
+                acc.col(k).noalias() += rows.transpose() * b.segment(j, Eigen::Index(m));
+                acc.middleCols(j, Eigen::Index(m)).noalias() -= b[k] * rows.transpose();
+                p += m;
+            }
+        });
     byJ = byJt.transpose();
 }
 
@@ -137,18 +139,18 @@ void DenseCoefficients::advect(const Eigen::VectorXd& u, const Eigen::VectorXd& 
     checkSize("advect", u);
     checkSize("advect", x);
     out.setZero(mN);
-    reduceOverRows(threadBounds(), out, [&](std::size_t begin, std::size_t end,
-                                            Eigen::VectorXd& acc) {
-        // out_m = Σ_{pairs k<j} C[k][m][j] (u_k x_j − u_j x_k): one transposed GEMV.
-        Eigen::VectorXd w(Eigen::Index(end - begin));
-        for (std::size_t p = begin; p < end; ++p) {
-            const int k = mPairK[p], j = mPairJ[p];
-            w[p - begin] = u[k] * x[j] - u[j] * x[k];
-        }
-        const Eigen::Map<const RowMajorMatrix> rows(mPacked.data() + begin * mN,
-                                                    Eigen::Index(end - begin), mN);
-        acc.noalias() += rows.transpose() * w;
-    });
+    reduceOverRows(threadBounds(), out,
+                   [&](std::size_t begin, std::size_t end, Eigen::VectorXd& acc) {
+                       // out_m = Σ_{pairs k<j} C[k][m][j] (u_k x_j − u_j x_k): one transposed GEMV.
+                       Eigen::VectorXd w(Eigen::Index(end - begin));
+                       for (std::size_t p = begin; p < end; ++p) {
+                           const int k = mPairK[p], j = mPairJ[p];
+                           w[p - begin] = u[k] * x[j] - u[j] * x[k];
+                       }
+                       const Eigen::Map<const RowMajorMatrix> rows(mPacked.data() + begin * mN,
+                                                                   Eigen::Index(end - begin), mN);
+                       acc.noalias() += rows.transpose() * w;
+                   });
 }
 
 }  // namespace modeflow

@@ -16,7 +16,9 @@ void requireSameSize(const char* what, const Eigen::VectorXd& a, const Eigen::Ve
 
 }  // namespace
 
-double energy(const Eigen::VectorXd& v) { return 0.5 * v.squaredNorm(); }
+double energy(const Eigen::VectorXd& v) {
+    return 0.5 * v.squaredNorm();
+}
 
 double lansEnergy(const Eigen::VectorXd& v, const Eigen::VectorXd& kappaSquared, double alpha) {
     requireSameSize("LANS-alpha energy", v, kappaSquared);

@@ -1,7 +1,7 @@
 #pragma once
 /// @file Diagnostics.h
-/// Invariants and monitors of the reduced dynamics. The basis is ⋆2-orthonormal (precompute/README.md), so
-/// L² integrals of fields become plain sums over modal coefficients.
+/// Invariants and monitors of the reduced dynamics. The basis is ⋆2-orthonormal
+/// (precompute/README.md), so L² integrals of fields become plain sums over modal coefficients.
 
 #include <Eigen/Core>
 

@@ -38,14 +38,23 @@ Eigen::VectorXd FluidSystem::massOf(const FluidParameters& parameters, int n) {
 
 Eigen::VectorXd FluidSystem::decayRatesOf(const FluidParameters& parameters, int n) {
     const auto k2 = kappaSquaredUsed(parameters, n);
-    return k2 ? Eigen::VectorXd(parameters.viscosity * *k2) : Eigen::VectorXd::Zero(n);
+    Eigen::VectorXd rates =
+        k2 ? Eigen::VectorXd(parameters.viscosity * *k2) : Eigen::VectorXd::Zero(n);
+    for (const int k : parameters.held) {
+        if (k < 0 || k >= n)
+            throw Error("fluid dynamics: held mode " + std::to_string(k + 1) +
+                        " is outside the basis of " + std::to_string(n) + " modes");
+        rates[k] = 0.0;
+    }
+    return rates;
 }
 
 FluidSystem::FluidSystem(const StructuralCoefficients& coefficients, FluidParameters parameters)
     : mCoefficients(coefficients),
       mFiltered(parameters.alpha != 0.0),
       mMass(massOf(parameters, coefficients.size())),
-      mDecay(decayRatesOf(parameters, coefficients.size())) {}
+      mDecay(decayRatesOf(parameters, coefficients.size())),
+      mHeld(std::move(parameters.held)) {}
 
 void FluidSystem::rhs(const Eigen::VectorXd& v, Eigen::VectorXd& out) const {
     if (mFiltered) {
@@ -53,6 +62,7 @@ void FluidSystem::rhs(const Eigen::VectorXd& v, Eigen::VectorXd& out) const {
     } else {
         mCoefficients.apply(v, v, out);
     }
+    for (const int k : mHeld) out[k] = 0.0;
 }
 
 void FluidSystem::linearize(const Eigen::VectorXd& v, Eigen::VectorXd& out,
@@ -67,6 +77,10 @@ void FluidSystem::linearize(const Eigen::VectorXd& v, Eigen::VectorXd& out,
         mCoefficients.linearize(v, v, jac, byJ);
         out.noalias() = jac * v;
         jac += byJ;
+    }
+    for (const int k : mHeld) {
+        out[k] = 0.0;
+        jac.row(k).setZero();
     }
 }
 

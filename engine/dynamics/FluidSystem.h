@@ -9,6 +9,8 @@
 /// conserved because vᵀ apply(m, v) = 0 by the k↔j antisymmetry — for the midpoint rule too, as the
 /// identity holds at the midpoint state. κ² may come in any order (frequency-shaped bases).
 
+#include <vector>
+
 #include <Eigen/Core>
 
 #include "engine/dynamics/ModalSystem.h"
@@ -22,13 +24,17 @@ struct FluidParameters {
     Eigen::VectorXd kappaSquared;
     double viscosity = 0.0;  ///< ν
     double alpha = 0.0;      ///< LANS-α filter length
+    /// 0-based modes held at their amplitudes ([forcing]): v̇_k = 0 and no viscous decay for
+    /// them, while they keep acting on the others (a forcing that feeds energy in).
+    std::vector<int> held{};
 };
 
 class FluidSystem final : public ModalSystem {
 public:
-    /// The mass 1 + α²κ_i² and decay rates νκ_i² of n modes (LANS-α, viscosity; seed §6.3.5).
-    /// @throw modeflow::Error for negative ν or α, a κ² list that is needed but not n long, or a
-    /// κ² that checkedKappaSquared refuses.
+    /// The mass 1 + α²κ_i² and decay rates νκ_i² of n modes (LANS-α, viscosity; seed §6.3.5),
+    /// held modes decaying at 0.
+    /// @throw modeflow::Error for negative ν or α, a κ² list that is needed but not n long, a
+    /// κ² that checkedKappaSquared refuses, or a held mode outside [0, n).
     static Eigen::VectorXd massOf(const FluidParameters& parameters, int n);
     static Eigen::VectorXd decayRatesOf(const FluidParameters& parameters, int n);
 
@@ -51,6 +57,7 @@ private:
     bool mFiltered = false;  ///< α > 0, so the mass is not the identity
     Eigen::VectorXd mMass;
     Eigen::VectorXd mDecay;
+    std::vector<int> mHeld;
 };
 
 }  // namespace modeflow

@@ -11,8 +11,8 @@
 namespace modeflow {
 
 struct GmresResult {
-    int iterations = 0;        ///< products with A
-    double residual = 0.0;     ///< |b − A x| / |b| at the end
+    int iterations = 0;     ///< products with A
+    double residual = 0.0;  ///< |b − A x| / |b| at the end
     bool converged = false;
 };
 

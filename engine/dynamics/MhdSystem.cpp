@@ -70,8 +70,10 @@ void MhdSystem::linearize(const Eigen::VectorXd& x, Eigen::VectorXd& out,
     out.tail(n).noalias() = -mv.transpose() * f;
     jac.resize(2 * n, 2 * n);
     jac.topLeftCorner(n, n) = sv + mv;
-    if (mLorentzForce) jac.topRightCorner(n, n) = -(sf + mf);
-    else jac.topRightCorner(n, n).setZero();
+    if (mLorentzForce)
+        jac.topRightCorner(n, n) = -(sf + mf);
+    else
+        jac.topRightCorner(n, n).setZero();
     jac.bottomLeftCorner(n, n) = mf.transpose();
     jac.bottomRightCorner(n, n) = -mv.transpose();
 }

@@ -30,7 +30,10 @@ std::vector<std::size_t> splitRows(std::size_t rows, int threads, WorkBefore wor
         std::size_t lo = bounds[t - 1], hi = rows;
         while (lo < hi) {
             const std::size_t mid = (lo + hi) / 2;
-            if (double(workBefore(mid)) < target) lo = mid + 1; else hi = mid;
+            if (double(workBefore(mid)) < target)
+                lo = mid + 1;
+            else
+                hi = mid;
         }
         bounds[t] = lo;
     }

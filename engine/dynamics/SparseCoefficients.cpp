@@ -5,10 +5,10 @@
 #include <string>
 #include <tuple>
 
-#include "engine/dynamics/DenseCoefficients.h"
-#include "engine/core/PackedLayout.h"
-#include "engine/dynamics/ParallelRows.h"
 #include "engine/core/Error.h"
+#include "engine/core/PackedLayout.h"
+#include "engine/dynamics/DenseCoefficients.h"
+#include "engine/dynamics/ParallelRows.h"
 
 namespace modeflow {
 namespace {
@@ -21,8 +21,9 @@ std::string describe(const CoefficientEntry& e) {
 }  // namespace
 
 SparseCoefficients::SparseCoefficients(int n, std::vector<CoefficientEntry> entries) : mN(n) {
-    if (n < 1) throw Error("sparse coefficients: the mode count must be positive, got " +
-                           std::to_string(n));
+    if (n < 1)
+        throw Error("sparse coefficients: the mode count must be positive, got " +
+                    std::to_string(n));
     for (const CoefficientEntry& e : entries) {
         if (e.k < 0 || e.j >= n || e.i < 0 || e.i >= n) {
             throw Error("sparse coefficients: entry " + describe(e) + " is outside " +
@@ -89,7 +90,10 @@ double SparseCoefficients::entry(int k, int i, int j) const {
     std::size_t lo = 0, hi = mPairK.size();
     while (lo < hi) {  // first row whose pair is not before (k, j)
         const std::size_t mid = (lo + hi) / 2;
-        if (std::tie(mPairK[mid], mPairJ[mid]) < std::tie(k, j)) lo = mid + 1; else hi = mid;
+        if (std::tie(mPairK[mid], mPairJ[mid]) < std::tie(k, j))
+            lo = mid + 1;
+        else
+            hi = mid;
     }
     if (lo == mPairK.size() || mPairK[lo] != k || mPairJ[lo] != j) return 0.0;
     const auto first = mColumn.begin() + std::ptrdiff_t(mRowStart[lo]);
@@ -114,14 +118,14 @@ void SparseCoefficients::apply(const Eigen::VectorXd& a, const Eigen::VectorXd& 
     checkSize("apply", a);
     checkSize("apply", b);
     out.setZero(mN);
-    reduceOverRows(threadBounds(), out, [&](std::size_t begin, std::size_t end,
-                                            Eigen::VectorXd& acc) {
-        for (std::size_t r = begin; r < end; ++r) {
-            const double s = rowDot(r, a);
-            acc[mPairK[r]] += s * b[mPairJ[r]];
-            acc[mPairJ[r]] -= s * b[mPairK[r]];  // C[j][i][k] = −C[k][i][j]
-        }
-    });
+    reduceOverRows(threadBounds(), out,
+                   [&](std::size_t begin, std::size_t end, Eigen::VectorXd& acc) {
+                       for (std::size_t r = begin; r < end; ++r) {
+                           const double s = rowDot(r, a);
+                           acc[mPairK[r]] += s * b[mPairJ[r]];
+                           acc[mPairJ[r]] -= s * b[mPairK[r]];  // C[j][i][k] = −C[k][i][j]
+                       }
+                   });
 }
 
 void SparseCoefficients::linearize(const Eigen::VectorXd& a, const Eigen::VectorXd& b,
@@ -131,19 +135,19 @@ void SparseCoefficients::linearize(const Eigen::VectorXd& a, const Eigen::Vector
     byI.setZero(mN, mN);
     // Accumulated transposed, as in the dense storage: each pair touches two columns.
     Eigen::MatrixXd byJt = Eigen::MatrixXd::Zero(mN, mN);
-    reduceOverRows(threadBounds(), byJt, [&](std::size_t begin, std::size_t end,
-                                             Eigen::MatrixXd& acc) {
-        for (std::size_t r = begin; r < end; ++r) {
-            const int k = mPairK[r], j = mPairJ[r];
-            const double s = rowDot(r, a);
-            byI(k, j) = s;  // each row owns these two entries, so threads never collide
-            byI(j, k) = -s;
-            for (std::size_t t = mRowStart[r]; t < mRowStart[r + 1]; ++t) {
-                acc(mColumn[t], k) += b[j] * mValue[t];
-                acc(mColumn[t], j) -= b[k] * mValue[t];
+    reduceOverRows(
+        threadBounds(), byJt, [&](std::size_t begin, std::size_t end, Eigen::MatrixXd& acc) {
+            for (std::size_t r = begin; r < end; ++r) {
+                const int k = mPairK[r], j = mPairJ[r];
+                const double s = rowDot(r, a);
+                byI(k, j) = s;  // each row owns these two entries, so threads never collide
+                byI(j, k) = -s;
+                for (std::size_t t = mRowStart[r]; t < mRowStart[r + 1]; ++t) {
+                    acc(mColumn[t], k) += b[j] * mValue[t];
+                    acc(mColumn[t], j) -= b[k] * mValue[t];
+                }
             }
-        }
-    });
+        });
     byJ = byJt.transpose();
 }
 
@@ -152,16 +156,16 @@ void SparseCoefficients::advect(const Eigen::VectorXd& u, const Eigen::VectorXd&
     checkSize("advect", u);
     checkSize("advect", x);
     out.setZero(mN);
-    reduceOverRows(threadBounds(), out, [&](std::size_t begin, std::size_t end,
-                                            Eigen::VectorXd& acc) {
-        for (std::size_t r = begin; r < end; ++r) {
-            const int k = mPairK[r], j = mPairJ[r];
-            const double w = u[k] * x[j] - u[j] * x[k];  // see DenseCoefficients::advect
-            for (std::size_t t = mRowStart[r]; t < mRowStart[r + 1]; ++t) {
-                acc[mColumn[t]] += w * mValue[t];
+    reduceOverRows(
+        threadBounds(), out, [&](std::size_t begin, std::size_t end, Eigen::VectorXd& acc) {
+            for (std::size_t r = begin; r < end; ++r) {
+                const int k = mPairK[r], j = mPairJ[r];
+                const double w = u[k] * x[j] - u[j] * x[k];  // see DenseCoefficients::advect
+                for (std::size_t t = mRowStart[r]; t < mRowStart[r + 1]; ++t) {
+                    acc[mColumn[t]] += w * mValue[t];
+                }
             }
-        }
-    });
+        });
 }
 
 }  // namespace modeflow

@@ -10,8 +10,8 @@ double separableFactor(const GridSpec& grid, int axis, int wave, int shift, int 
     // θx + φ − (sine ? π/2 : 0) = π m / (2n).
     const std::int64_t n = grid.resolution[axis];
     const std::int64_t turn = 4 * n;
-    std::int64_t m = std::int64_t(wave) * twiceX * (grid.isPeriodic(axis) ? 2 : 1) + n * shift -
-                     (sine ? n : 0);
+    std::int64_t m =
+        std::int64_t(wave) * twiceX * (grid.isPeriodic(axis) ? 2 : 1) + n * shift - (sine ? n : 0);
     m = ((m % turn) + turn) % turn;
     if (m % n == 0) {
         constexpr double kQuarter[4] = {1.0, 0.0, -1.0, 0.0};
@@ -96,7 +96,8 @@ Eigen::MatrixXd velocityModeFluxes(const GridSpec& grid, const std::vector<std::
             const Place& p = places[f];
             double value = mode.amplitude[p.normal] * area[p.normal];
             for (int a = 0; a < 3; ++a)
-                value *= a == p.normal ? sine[a][std::size_t(p.pos[a])] : cosine[a][std::size_t(p.pos[a])];
+                value *= a == p.normal ? sine[a][std::size_t(p.pos[a])]
+                                       : cosine[a][std::size_t(p.pos[a])];
             column[Eigen::Index(f)] = value;
         }
     }
@@ -119,7 +120,8 @@ Eigen::MatrixXd scalarModeValues(const GridSpec& grid, const std::vector<std::in
             local /= mac.cells[0];
             const auto y = std::size_t(local % mac.cells[1]);
             const auto z = std::size_t(local / mac.cells[1]);
-            out(Eigen::Index(c), Eigen::Index(m)) = scale * cosine[0][x] * cosine[1][y] * cosine[2][z];
+            out(Eigen::Index(c), Eigen::Index(m)) =
+                scale * cosine[0][x] * cosine[1][y] * cosine[2][z];
         }
     }
     return out;

@@ -46,8 +46,10 @@ struct SeparableTransform::Pass {
 
     /// `input` has `lines` lines of inLength values (fastest), D1 × D2 of them; `output` gets
     /// (D1 fastest, D2, outLength).
-    void run(const std::vector<double>& input, std::int64_t d1, std::int64_t d2, std::vector<double>& output) const {
-        const int inLength = synthesis ? slots : positions, outLength = synthesis ? positions : slots;
+    void run(const std::vector<double>& input, std::int64_t d1, std::int64_t d2,
+             std::vector<double>& output) const {
+        const int inLength = synthesis ? slots : positions,
+                  outLength = synthesis ? positions : slots;
         output.assign(std::size_t(std::int64_t(outLength) * d1 * d2), 0.0);
         if (kind == AxisKind::Unused) {
             std::copy(input.begin(), input.end(), output.begin());
@@ -65,7 +67,8 @@ struct SeparableTransform::Pass {
                 case AxisKind::WallCosine:  // y_i = X_0 + 2 Σ_{l≥1} X_l cos(πl(i+½)/n)
                     for (int l = 0; l < slots; ++l) buffer[l] = (l == 0 ? 1.0 : 0.5) * line[l];
                     break;
-                case AxisKind::WallSine:  // y_j = 2 Σ_k X_k sin(π(j+1)(k+1)/n), x = j + 1, l = k + 1
+                case AxisKind::WallSine:  // y_j = 2 Σ_k X_k sin(π(j+1)(k+1)/n), x = j + 1, l = k +
+                                          // 1
                     for (int l = 1; l < slots; ++l) buffer[l - 1] = 0.5 * line[l];
                     break;
                 default: {
@@ -73,7 +76,8 @@ struct SeparableTransform::Pass {
                     // i_l = Im X/2 (HC2R doubles them), r_0 and r_{n/2} = Re X.
                     for (int l = 0; 2 * l < slots; ++l) {
                         const std::complex<double> x =
-                            line[2 * l] * twiddle[std::size_t(2 * l)] + line[2 * l + 1] * twiddle[std::size_t(2 * l + 1)];
+                            line[2 * l] * twiddle[std::size_t(2 * l)] +
+                            line[2 * l + 1] * twiddle[std::size_t(2 * l + 1)];
                         if (l == 0 || 2 * l == length) {
                             buffer[l] = x.real();
                         } else {
@@ -88,7 +92,9 @@ struct SeparableTransform::Pass {
         for (std::int64_t t = 0; t < lines; ++t) {
             const std::int64_t i1 = t % d1, i2 = t / d1;
             const double* buffer = out + t * length;
-            auto at = [&](int q) -> double& { return output[std::size_t((q * d2 + i2) * d1 + i1)]; };
+            auto at = [&](int q) -> double& {
+                return output[std::size_t((q * d2 + i2) * d1 + i1)];
+            };
             if (synthesis) {
                 for (int q = 0; q < positions; ++q) at(q) = buffer[q];
                 continue;
@@ -120,7 +126,8 @@ namespace {
 /// Where a pass of `normal`'s component along `axis` starts and ends (slots, positions) and how
 /// many lines it transforms: synthesis goes x, y, z from slots to positions, analysis x, y, z
 /// from positions to slots.
-std::int64_t linesOf(const std::array<int, 3>& slots, const std::array<int, 3>& positions, int axis, bool synthesis) {
+std::int64_t linesOf(const std::array<int, 3>& slots, const std::array<int, 3>& positions, int axis,
+                     bool synthesis) {
     if (synthesis) {
         // Axes before `axis` are positions by now, those after still slots.
         std::int64_t lines = 1;
@@ -141,12 +148,14 @@ SeparableTransform::SeparableTransform(const BasisCache& cache)
     if (cache.velocity.source != BasisSource::ClosedForm)
         throw Error("separable transform: the velocity basis is not closed form");
     if (cache.faces != wholeBoxFaces(mGrid))
-        throw Error("separable transform: the velocity DOFs are not the faces of the whole grid box");
+        throw Error(
+            "separable transform: the velocity DOFs are not the faces of the whole grid box");
     mDofCount = std::int64_t(cache.faces.size());
     const MacGrid mac = MacGrid::fromSpec(mGrid);
     std::array<int, 3> band{0, 0, 0};
     for (const SeparableMode& m : mModes)
-        for (int a = 0; a < mGrid.dim; ++a) band[std::size_t(a)] = std::max(band[std::size_t(a)], m.wave[std::size_t(a)]);
+        for (int a = 0; a < mGrid.dim; ++a)
+            band[std::size_t(a)] = std::max(band[std::size_t(a)], m.wave[std::size_t(a)]);
     for (int a = 0; a < mGrid.dim; ++a) {
         mSlots[std::size_t(a)] = (mGrid.isPeriodic(a) ? 2 : 1) * (band[std::size_t(a)] + 1);
         mArea[std::size_t(a)] = mac.faceArea(a);
@@ -180,8 +189,9 @@ SeparableTransform::SeparableTransform(const BasisCache& cache)
                         const int l = k / 2, phase = k % 2;
                         const double re = separableFactor(mGrid, axis, l, phase, twiceX, sine);
                         // sin α = cos(α − π/2): one more quarter turn back.
-                        const double im = sine ? -separableFactor(mGrid, axis, l, phase, twiceX, false)
-                                               : separableFactor(mGrid, axis, l, phase, twiceX, true);
+                        const double im =
+                            sine ? -separableFactor(mGrid, axis, l, phase, twiceX, false)
+                                 : separableFactor(mGrid, axis, l, phase, twiceX, true);
                         pass->twiddle.emplace_back(re, im);
                     }
                 } else if (sine) {
@@ -200,11 +210,13 @@ SeparableTransform::SeparableTransform(const BasisCache& cache)
                     if (!pass->in || !pass->out)
                         throw Error("separable transform: out of memory for its FFT buffers");
                     const int length = pass->length;
-                    pass->plan = fftw_plan_many_r2r(1, &length, int(pass->lines), pass->in, nullptr, 1, length,
-                                                    pass->out, nullptr, 1, length, &fftKind, FFTW_ESTIMATE);
+                    pass->plan = fftw_plan_many_r2r(1, &length, int(pass->lines), pass->in, nullptr,
+                                                    1, length, pass->out, nullptr, 1, length,
+                                                    &fftKind, FFTW_ESTIMATE);
                     if (!pass->plan) throw Error("separable transform: FFTW made no plan");
                 }
-                (synthesis ? mSynthesis : mAnalysis)[std::size_t(normal)][std::size_t(axis)] = std::move(pass);
+                (synthesis ? mSynthesis : mAnalysis)[std::size_t(normal)][std::size_t(axis)] =
+                    std::move(pass);
             }
     }
 }
@@ -232,15 +244,16 @@ std::vector<double> SeparableTransform::factorTable(int normal, int axis) const 
         // Faces at whole positions (a wall's first is its position 1), cells at half ones.
         const int twiceX = sine ? 2 * (p + (periodic ? 0 : 1)) : 2 * p + 1;
         for (int k = 0; k < slots; ++k)
-            table[std::size_t(p) * std::size_t(slots) + std::size_t(k)] =
-                separableFactor(mGrid, axis, periodic ? k / 2 : k, periodic ? k % 2 : 0, twiceX, sine);
+            table[std::size_t(p) * std::size_t(slots) + std::size_t(k)] = separableFactor(
+                mGrid, axis, periodic ? k / 2 : k, periodic ? k % 2 : 0, twiceX, sine);
     }
     return table;
 }
 
 std::size_t SeparableTransform::tensorSlot(const SeparableMode& mode) const {
     return (std::size_t(slotOf(mode, 2)) * std::size_t(mSlots[1]) + std::size_t(slotOf(mode, 1))) *
-               std::size_t(mSlots[0]) + std::size_t(slotOf(mode, 0));
+               std::size_t(mSlots[0]) +
+           std::size_t(slotOf(mode, 0));
 }
 
 void SeparableTransform::synthesize(int normal, std::vector<double>& tensor) const {
@@ -254,7 +267,8 @@ void SeparableTransform::synthesize(int normal, std::vector<double>& tensor) con
 }
 
 void SeparableTransform::analyze(int normal, std::vector<double>& tensor) const {
-    std::array<std::int64_t, 3> dims{positionCount(normal, 0), positionCount(normal, 1), positionCount(normal, 2)};
+    std::array<std::int64_t, 3> dims{positionCount(normal, 0), positionCount(normal, 1),
+                                     positionCount(normal, 2)};
     std::vector<double> next;
     for (int axis = 0; axis < 3; ++axis) {
         mAnalysis[std::size_t(normal)][std::size_t(axis)]->run(tensor, dims[1], dims[2], next);
@@ -265,10 +279,11 @@ void SeparableTransform::analyze(int normal, std::vector<double>& tensor) const 
 
 Eigen::VectorXd SeparableTransform::fluxes(const Eigen::VectorXd& v) const {
     if (v.size() != Eigen::Index(mModes.size()))
-        throw Error("separable transform: " + std::to_string(v.size()) + " coefficients for a basis of " +
-                    std::to_string(mModes.size()) + " modes");
+        throw Error("separable transform: " + std::to_string(v.size()) +
+                    " coefficients for a basis of " + std::to_string(mModes.size()) + " modes");
     Eigen::VectorXd out(mDofCount);
-    const std::size_t slots = std::size_t(mSlots[0]) * std::size_t(mSlots[1]) * std::size_t(mSlots[2]);
+    const std::size_t slots =
+        std::size_t(mSlots[0]) * std::size_t(mSlots[1]) * std::size_t(mSlots[2]);
     for (int normal = 0; normal < mGrid.dim; ++normal) {
         std::vector<double> tensor(slots, 0.0);
         for (std::size_t m = 0; m < mModes.size(); ++m) {
@@ -279,15 +294,16 @@ Eigen::VectorXd SeparableTransform::fluxes(const Eigen::VectorXd& v) const {
         synthesize(normal, tensor);
         const double area = mArea[std::size_t(normal)];
         const std::int64_t start = mDofStart[std::size_t(normal)];
-        for (std::size_t d = 0; d < tensor.size(); ++d) out[Eigen::Index(start + std::int64_t(d))] = area * tensor[d];
+        for (std::size_t d = 0; d < tensor.size(); ++d)
+            out[Eigen::Index(start + std::int64_t(d))] = area * tensor[d];
     }
     return out;
 }
 
 Eigen::VectorXd SeparableTransform::transposed(const Eigen::VectorXd& q) const {
     if (q.size() != mDofCount)
-        throw Error("separable transform: " + std::to_string(q.size()) + " face values for a basis on " +
-                    std::to_string(mDofCount) + " faces");
+        throw Error("separable transform: " + std::to_string(q.size()) +
+                    " face values for a basis on " + std::to_string(mDofCount) + " faces");
     Eigen::VectorXd f = Eigen::VectorXd::Zero(Eigen::Index(mModes.size()));
     for (int normal = 0; normal < mGrid.dim; ++normal) {
         std::int64_t count = 1;

@@ -11,7 +11,8 @@
 namespace modeflow {
 namespace {
 
-constexpr char kMagic[16] = {'M', 'O', 'D', 'E', 'F', 'L', 'O', 'W', '-', 'M', 'A', 'S', 'K', 0, 0, 0};
+constexpr char kMagic[16] = {'M', 'O', 'D', 'E', 'F', 'L', 'O', 'W',
+                             '-', 'M', 'A', 'S', 'K', 0,   0,   0};
 constexpr std::uint32_t kVersion = 1;
 
 }  // namespace
@@ -40,26 +41,29 @@ void writeSmokeMask(const std::filesystem::path& path, std::uint64_t keyHash, in
     writeFileAtomically(path, bytes, "smoke mask");
 }
 
-std::vector<std::uint8_t> readSmokeMask(const std::filesystem::path& path, std::uint64_t keyHash, int scale,
-                                        std::size_t cells) {
+std::vector<std::uint8_t> readSmokeMask(const std::filesystem::path& path, std::uint64_t keyHash,
+                                        int scale, std::size_t cells) {
     const std::string where = "smoke mask " + path.string();
     std::error_code ec;
     if (!std::filesystem::is_regular_file(path, ec)) throw Error(where + " is missing");
     // The file's size follows from the cell count: anything else is refused before it is read.
     const std::uintmax_t expected = sizeof kMagic + 4 + 4 + 8 + 8 + 8 + (cells + 7) / 8 + 8;
-    if (std::filesystem::file_size(path, ec) != expected) throw Error(where + " has the wrong size");
+    if (std::filesystem::file_size(path, ec) != expected)
+        throw Error(where + " has the wrong size");
     std::ifstream in(path, std::ios::binary);
     const std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
     if (bytes.size() != expected) throw Error(where + " cannot be read");
     ByteReader r(bytes, [&](std::string_view why) { return where + " is " + std::string(why); });
-    if (r.bytes(sizeof kMagic) != std::string_view(kMagic, sizeof kMagic)) r.fail("not a smoke mask (bad magic)");
+    if (r.bytes(sizeof kMagic) != std::string_view(kMagic, sizeof kMagic))
+        r.fail("not a smoke mask (bad magic)");
     if (r.pod<std::uint32_t>() != kVersion) r.fail("of another format version");
     if (r.pod<std::uint32_t>() != std::uint32_t(scale) || r.pod<std::uint64_t>() != keyHash ||
         r.pod<std::uint64_t>() != cells)
         r.fail("made for another basis or smoke scale");
     const std::vector<std::uint8_t> bits = r.vector<std::uint8_t>();
     const std::size_t body = bytes.size() - r.remaining();
-    if (r.pod<std::uint64_t>() != fnv1a64(std::string_view(bytes.data(), body))) r.fail("damaged (checksum mismatch)");
+    if (r.pod<std::uint64_t>() != fnv1a64(std::string_view(bytes.data(), body)))
+        r.fail("damaged (checksum mismatch)");
     if (bits.size() != (cells + 7) / 8) r.fail("damaged (wrong bit count)");
     std::vector<std::uint8_t> mask(cells);
     for (std::size_t c = 0; c < cells; ++c) mask[c] = (bits[c / 8] >> (c % 8)) & 1u;

@@ -26,7 +26,7 @@ void writeSmokeMask(const std::filesystem::path& path, std::uint64_t keyHash, in
 /// The mask, one byte (0 or 1) per cell.
 /// @throw modeflow::Error saying why the file cannot be used: missing, damaged, or made for
 ///        another basis, scale or cell count.
-std::vector<std::uint8_t> readSmokeMask(const std::filesystem::path& path, std::uint64_t keyHash, int scale,
-                                        std::size_t cells);
+std::vector<std::uint8_t> readSmokeMask(const std::filesystem::path& path, std::uint64_t keyHash,
+                                        int scale, std::size_t cells);
 
 }  // namespace modeflow

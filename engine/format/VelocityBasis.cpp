@@ -7,7 +7,8 @@
 namespace modeflow {
 
 VelocityBasis::VelocityBasis(const BasisCache& cache) : mCache(cache) {
-    if (cache.velocity.source == BasisSource::ClosedForm) mSeparable = std::make_unique<SeparableTransform>(cache);
+    if (cache.velocity.source == BasisSource::ClosedForm)
+        mSeparable = std::make_unique<SeparableTransform>(cache);
 }
 
 int VelocityBasis::modeCount() const {
@@ -16,16 +17,17 @@ int VelocityBasis::modeCount() const {
 
 Eigen::VectorXd VelocityBasis::fluxes(const Eigen::VectorXd& v) const {
     if (v.size() != modeCount())
-        throw Error("reconstruction: " + std::to_string(v.size()) + " coefficients for a basis of " +
-                    std::to_string(modeCount()) + " modes");
+        throw Error("reconstruction: " + std::to_string(v.size()) +
+                    " coefficients for a basis of " + std::to_string(modeCount()) + " modes");
     return mSeparable ? mSeparable->fluxes(v) : Eigen::VectorXd(mCache.velocity.modes * v);
 }
 
 Eigen::VectorXd VelocityBasis::transposed(const Eigen::VectorXd& q) const {
     if (q.size() != dofCount())
-        throw Error("force projection: " + std::to_string(q.size()) + " face values for a basis on " +
-                    std::to_string(dofCount()) + " faces");
-    return mSeparable ? mSeparable->transposed(q) : Eigen::VectorXd(mCache.velocity.modes.transpose() * q);
+        throw Error("force projection: " + std::to_string(q.size()) +
+                    " face values for a basis on " + std::to_string(dofCount()) + " faces");
+    return mSeparable ? mSeparable->transposed(q)
+                      : Eigen::VectorXd(mCache.velocity.modes.transpose() * q);
 }
 
 }  // namespace modeflow

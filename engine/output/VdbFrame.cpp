@@ -3,8 +3,8 @@
 
 #include "engine/output/VdbFrame.h"
 
-#include <openvdb/openvdb.h>
 #include <openvdb/io/Archive.h>
+#include <openvdb/openvdb.h>
 #include <openvdb/tools/Dense.h>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -20,8 +20,8 @@
 #include <system_error>
 
 #include "engine/core/AtomicFile.h"
-#include "engine/core/MacSampling.h"
 #include "engine/core/Error.h"
+#include "engine/core/MacSampling.h"
 
 namespace modeflow {
 namespace {
@@ -36,7 +36,9 @@ void initializeOpenVdb() {
     std::call_once(once, [] { vdb::initialize(); });
 }
 
-std::string quoted(const fs::path& file) { return "'" + file.string() + "'"; }
+std::string quoted(const fs::path& file) {
+    return "'" + file.string() + "'";
+}
 
 std::size_t size(const CellValues& values) {
     return std::visit([](auto span) { return span.size(); }, values);
@@ -67,7 +69,8 @@ void validate(const VdbFrame& frame) {
         requireFaceField(frame.basisGrid, field.size(), name.c_str());
         for (std::size_t f = 0; f < field.size(); ++f)
             if (!std::isfinite(field[f]))
-                throw Error(name + " is not finite at face " + count(f) + " (the simulation diverged)");
+                throw Error(name + " is not finite at face " + count(f) +
+                            " (the simulation diverged)");
     };
     checkFaceField(frame.faceVelocity, "the face velocity");
     if (!frame.faceMagnetic.empty()) checkFaceField(frame.faceMagnetic, "the face magnetic field");
@@ -125,8 +128,8 @@ template <typename GridT>
 typename GridT::Ptr sparseGrid(const MacGrid& smoke, std::vector<typename GridT::ValueType>& dense,
                                const char* name, const VdbFrame& frame) {
     using ValueT = typename GridT::ValueType;
-    const vdb::CoordBBox box(vdb::Coord(0, 0, 0),
-                             vdb::Coord(smoke.cells[0] - 1, smoke.cells[1] - 1, smoke.cells[2] - 1));
+    const vdb::CoordBBox box(vdb::Coord(0, 0, 0), vdb::Coord(smoke.cells[0] - 1, smoke.cells[1] - 1,
+                                                             smoke.cells[2] - 1));
     vdb::tools::Dense<ValueT, vdb::tools::LayoutXYZ> view(box, dense.data());
     auto grid = GridT::create(vdb::zeroVal<ValueT>());
     vdb::tools::copyFromDense(view, *grid, vdb::zeroVal<ValueT>());
@@ -165,23 +168,26 @@ vdb::FloatGrid::Ptr scalarGrid(const VdbFrame& frame, const CellValues& values, 
 
 /// A MAC face field (the velocity, or the magnetic field) sampled at every smoke cell centre, so
 /// it shares the lattice of the scalars; one z-y row of cells per task.
-vdb::Vec3SGrid::Ptr vectorGrid(const VdbFrame& frame, std::span<const double> faceField, const char* name) {
+vdb::Vec3SGrid::Ptr vectorGrid(const VdbFrame& frame, std::span<const double> faceField,
+                               const char* name) {
     const MacGrid& smoke = frame.smokeGrid;
     std::vector<vdb::Vec3s> dense(static_cast<std::size_t>(smoke.cellCount()));
     const double threshold = frame.options.activityThreshold;
-    tbb::parallel_for(tbb::blocked_range<int>(0, smoke.cells[1] * smoke.cells[2]), [&](const auto& rows) {
-        for (int row = rows.begin(); row < rows.end(); ++row) {
-            const int j = row % smoke.cells[1], k = row / smoke.cells[1];
-            for (int i = 0; i < smoke.cells[0]; ++i) {
-                const auto c = static_cast<std::size_t>(smoke.cellIndex(i, j, k));
-                if (!isFluid(frame, c)) continue;
-                const Vec3 world{smoke.cellCentre(0, i), smoke.cellCentre(1, j), smoke.cellCentre(2, k)};
-                const Vec3 v = sampleVelocity(frame.basisGrid, faceField, world);
-                if (std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]) >= threshold)
-                    dense[c] = vdb::Vec3s(float(v[0]), float(v[1]), float(v[2]));
+    tbb::parallel_for(
+        tbb::blocked_range<int>(0, smoke.cells[1] * smoke.cells[2]), [&](const auto& rows) {
+            for (int row = rows.begin(); row < rows.end(); ++row) {
+                const int j = row % smoke.cells[1], k = row / smoke.cells[1];
+                for (int i = 0; i < smoke.cells[0]; ++i) {
+                    const auto c = static_cast<std::size_t>(smoke.cellIndex(i, j, k));
+                    if (!isFluid(frame, c)) continue;
+                    const Vec3 world{smoke.cellCentre(0, i), smoke.cellCentre(1, j),
+                                     smoke.cellCentre(2, k)};
+                    const Vec3 v = sampleVelocity(frame.basisGrid, faceField, world);
+                    if (std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]) >= threshold)
+                        dense[c] = vdb::Vec3s(float(v[0]), float(v[1]), float(v[2]));
+                }
             }
-        }
-    });
+        });
     auto grid = sparseGrid<vdb::Vec3SGrid>(smoke, dense, name, frame);
     // Like a velocity: transformed by the map's linear part, translation ignored; the values are
     // in world units (Houdini's Transform VDB and Blender's motion blur read both settings).
@@ -201,12 +207,17 @@ public:
 };
 
 /// The C library's word for the last failed call; streams keep no error of their own.
-std::string systemCause() { return errno != 0 ? std::strerror(errno) : "input/output error"; }
+std::string systemCause() {
+    return errno != 0 ? std::strerror(errno) : "input/output error";
+}
 
-void writeArchive(const fs::path& temporary, const vdb::GridCPtrVec& grids, const vdb::MetaMap& meta) {
+void writeArchive(const fs::path& temporary, const vdb::GridCPtrVec& grids,
+                  const vdb::MetaMap& meta) {
     errno = 0;
     std::ofstream os(temporary, std::ios::out | std::ios::binary | std::ios::trunc);
-    if (!os) throw Error("cannot write VDB frame: cannot create " + quoted(temporary) + ": " + systemCause());
+    if (!os)
+        throw Error("cannot write VDB frame: cannot create " + quoted(temporary) + ": " +
+                    systemCause());
     CheckedArchive archive;
     // Blosc is fast and what both applications ship with; ZIP is far slower (and OpenVDB skips it
     // for fog volumes anyway).
@@ -217,7 +228,8 @@ void writeArchive(const fs::path& temporary, const vdb::GridCPtrVec& grids, cons
     const bool written = bool(os);
     os.close();
     if (!written || os.fail())
-        throw Error("cannot write VDB frame: writing " + quoted(temporary) + " failed: " + systemCause());
+        throw Error("cannot write VDB frame: writing " + quoted(temporary) +
+                    " failed: " + systemCause());
 }
 
 }  // namespace
@@ -226,16 +238,19 @@ void writeVdbFrame(const fs::path& file, const VdbFrame& frame) {
     const fs::path folder = file.parent_path().empty() ? fs::path(".") : file.parent_path();
     std::error_code ec;
     if (!fs::is_directory(folder, ec))
-        throw Error("cannot write VDB frame " + quoted(file) + ": folder " + quoted(folder) + " does not exist");
+        throw Error("cannot write VDB frame " + quoted(file) + ": folder " + quoted(folder) +
+                    " does not exist");
     vdb::GridCPtrVec grids;
     vdb::MetaMap meta;
     try {
         validate(frame);
         initializeOpenVdb();
         grids.push_back(scalarGrid(frame, frame.density, "density"));
-        if (size(frame.temperature) != 0) grids.push_back(scalarGrid(frame, frame.temperature, "temperature"));
+        if (size(frame.temperature) != 0)
+            grids.push_back(scalarGrid(frame, frame.temperature, "temperature"));
         grids.push_back(vectorGrid(frame, frame.faceVelocity, "vel"));
-        if (!frame.faceMagnetic.empty()) grids.push_back(vectorGrid(frame, frame.faceMagnetic, "magnetic"));
+        if (!frame.faceMagnetic.empty())
+            grids.push_back(vectorGrid(frame, frame.faceMagnetic, "magnetic"));
         addFrameMetadata(meta, frame);
     } catch (const std::exception& e) {
         throw Error("cannot write VDB frame " + quoted(file) + ": " + e.what());
@@ -319,7 +334,8 @@ template <typename GridT>
 void sampleGrid(const GridT& grid, std::span<const Vec3> points, std::vector<VdbSample>& out) {
     const auto accessor = grid.getConstAccessor();
     for (const Vec3& p : points) {
-        const vdb::Coord ijk = grid.transform().worldToIndexCellCentered(vdb::Vec3d(p[0], p[1], p[2]));
+        const vdb::Coord ijk =
+            grid.transform().worldToIndexCellCentered(vdb::Vec3d(p[0], p[1], p[2]));
         VdbSample sample;
         sample.active = accessor.isValueOn(ijk);
         const auto value = accessor.getValue(ijk);
@@ -356,22 +372,28 @@ std::vector<VdbSample> sampleVdbGrid(const fs::path& file, std::string_view grid
                                      std::span<const Vec3> worldPoints) {
     const auto vdbFile = openForReading(file);
     const std::string name(gridName);
-    if (!vdbFile->hasGrid(name)) throw Error("VDB frame " + quoted(file) + " has no grid '" + name + "'");
+    if (!vdbFile->hasGrid(name))
+        throw Error("VDB frame " + quoted(file) + " has no grid '" + name + "'");
     vdb::GridBase::Ptr grid;
     try {
         grid = vdbFile->readGrid(name);
     } catch (const std::exception& e) {
-        throw Error("cannot read grid '" + name + "' of VDB frame " + quoted(file) + ": " + e.what());
+        throw Error("cannot read grid '" + name + "' of VDB frame " + quoted(file) + ": " +
+                    e.what());
     }
     std::vector<VdbSample> samples;
     samples.reserve(worldPoints.size());
-    if (const auto g = vdb::gridConstPtrCast<vdb::FloatGrid>(grid)) sampleGrid(*g, worldPoints, samples);
-    else if (const auto g = vdb::gridConstPtrCast<vdb::DoubleGrid>(grid)) sampleGrid(*g, worldPoints, samples);
-    else if (const auto g = vdb::gridConstPtrCast<vdb::Vec3SGrid>(grid)) sampleGrid(*g, worldPoints, samples);
-    else if (const auto g = vdb::gridConstPtrCast<vdb::Vec3DGrid>(grid)) sampleGrid(*g, worldPoints, samples);
+    if (const auto g = vdb::gridConstPtrCast<vdb::FloatGrid>(grid))
+        sampleGrid(*g, worldPoints, samples);
+    else if (const auto g = vdb::gridConstPtrCast<vdb::DoubleGrid>(grid))
+        sampleGrid(*g, worldPoints, samples);
+    else if (const auto g = vdb::gridConstPtrCast<vdb::Vec3SGrid>(grid))
+        sampleGrid(*g, worldPoints, samples);
+    else if (const auto g = vdb::gridConstPtrCast<vdb::Vec3DGrid>(grid))
+        sampleGrid(*g, worldPoints, samples);
     else
-        throw Error("grid '" + name + "' of VDB frame " + quoted(file) + " holds " + grid->valueType() +
-                    " values, which cannot be sampled here");
+        throw Error("grid '" + name + "' of VDB frame " + quoted(file) + " holds " +
+                    grid->valueType() + " values, which cannot be sampled here");
     return samples;
 }
 

@@ -57,12 +57,12 @@ struct VdbFrameOptions {
 
 /// One frame to write. The spans are borrowed: they must outlive the writeVdbFrame call.
 struct VdbFrame {
-    MacGrid smokeGrid;                     ///< the grid of density, temperature and mask
-    MacGrid basisGrid;                     ///< the grid of the face velocity
-    CellValues density;                    ///< one per smoke cell (concentration)
-    CellValues temperature;                ///< one per smoke cell; empty: no temperature grid
-    std::span<const double> faceVelocity;  ///< face field of basisGrid (MacGrid face numbering)
-    std::span<const double> faceMagnetic;  ///< face field of basisGrid; empty: no magnetic grid
+    MacGrid smokeGrid;                        ///< the grid of density, temperature and mask
+    MacGrid basisGrid;                        ///< the grid of the face velocity
+    CellValues density;                       ///< one per smoke cell (concentration)
+    CellValues temperature;                   ///< one per smoke cell; empty: no temperature grid
+    std::span<const double> faceVelocity;     ///< face field of basisGrid (MacGrid face numbering)
+    std::span<const double> faceMagnetic;     ///< face field of basisGrid; empty: no magnetic grid
     std::span<const std::uint8_t> fluidMask;  ///< one per smoke cell, non-zero in Ω; empty: all
     int frame = 0;
     double time = 0.0;
@@ -107,7 +107,7 @@ struct VdbFrameInfo {
     std::vector<VdbGridInfo> grids;  ///< in file order
     std::optional<int> frame;        ///< file metadata; empty when absent
     std::optional<double> time;
-    std::string sceneHash;           ///< empty when absent
+    std::string sceneHash;  ///< empty when absent
     std::string modeflowVersion;
     std::string creator;
     std::optional<std::array<bool, 3>> periodic;  ///< `modeflow_periodic`; empty when absent

@@ -5,8 +5,8 @@
 #include <utility>
 #include <vector>
 
-#include "engine/dynamics/InitialConditions.h"
 #include "engine/core/Error.h"
+#include "engine/dynamics/InitialConditions.h"
 #include "precompute/initial/UniformField.h"
 #include "precompute/initial/VortexProjection.h"
 
@@ -27,7 +27,6 @@ Eigen::VectorXd keyed(const std::string& key, const std::function<Eigen::VectorX
 }
 
 }  // namespace
-
 
 Eigen::VectorXd initialVelocity(const SceneSpec& scene, const BasisCache& cache, int modes) {
     const InitialSpec& init = scene.initial;
@@ -55,8 +54,7 @@ Eigen::VectorXd initialVelocity(const SceneSpec& scene, const BasisCache& cache,
             for (const auto& [mode, amplitude] : init.amplitudes) {
                 if (mode < 1 || mode > modes)
                     throw Error(where + "amplitudes: mode " + std::to_string(mode) +
-                                " is outside the basis (modes 1 to " + std::to_string(modes) +
-                                ")");
+                                " is outside the basis (modes 1 to " + std::to_string(modes) + ")");
                 amplitudes.emplace_back(mode - 1, amplitude);
             }
             return keyed(where + "amplitudes", [&] { return modalAmplitudes(modes, amplitudes); });
@@ -87,8 +85,10 @@ Eigen::VectorXd initialMagneticField(const SceneSpec& scene, const BasisCache& c
     }
     Eigen::VectorXd f;
     try {
-        const double layer = init.magneticWallLayer > 0.0 ? init.magneticWallLayer : uniformFieldLayer(cache);
-        const UniformField field(cache, scene.domain, init.magneticDirection, init.magneticStrength, layer);
+        const double layer =
+            init.magneticWallLayer > 0.0 ? init.magneticWallLayer : uniformFieldLayer(cache);
+        const UniformField field(cache, scene.domain, init.magneticDirection, init.magneticStrength,
+                                 layer);
         f = projectUniformField(cache, field);
     } catch (const Error& e) {
         throw Error(scene.sourceFile.string() + ": [initial].magnetic: " + e.what());

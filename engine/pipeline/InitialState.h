@@ -5,8 +5,8 @@
 
 #include <Eigen/Core>
 
-#include "engine/format/BasisCache.h"
 #include "engine/core/SceneSpec.h"
+#include "engine/format/BasisCache.h"
 
 namespace modeflow {
 

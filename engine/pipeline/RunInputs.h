@@ -39,11 +39,12 @@ enum class RunParts { Dynamics, DynamicsAndSmoke };
 /// The scene's cache from `cacheDir` (computed and written on a miss), and all the rest from it.
 /// @throw modeflow::Error naming the scene key or stage that failed: an initial state that is
 ///        not finite, a [[source]] with no fluid cell to emit into, a failed precompute.
-RunInputs prepareRun(const SceneSpec& scene, const std::filesystem::path& cacheDir, Progress& progress,
-                     RunParts parts = RunParts::DynamicsAndSmoke);
+RunInputs prepareRun(const SceneSpec& scene, const std::filesystem::path& cacheDir,
+                     Progress& progress, RunParts parts = RunParts::DynamicsAndSmoke);
 
 /// The same on a basis already in memory (tests and benchmarks; `cache.key` may be empty, the
 /// smoke mask is then built from the domain).
-RunInputs prepareRun(const SceneSpec& scene, BasisCache cache, RunParts parts = RunParts::DynamicsAndSmoke);
+RunInputs prepareRun(const SceneSpec& scene, BasisCache cache,
+                     RunParts parts = RunParts::DynamicsAndSmoke);
 
 }  // namespace modeflow

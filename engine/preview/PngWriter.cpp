@@ -56,8 +56,8 @@ void writePng(const fs::path& file, const Image& image) {
     const std::vector<unsigned char> png = encodePng(image);
     if (png.empty()) throw fail("the PNG encoder failed (out of memory?)");
 
-    writeFileAtomically(file,
-                        std::string_view(reinterpret_cast<const char*>(png.data()), png.size()), "PNG");
+    writeFileAtomically(
+        file, std::string_view(reinterpret_cast<const char*>(png.data()), png.size()), "PNG");
 }
 
 }  // namespace modeflow::preview

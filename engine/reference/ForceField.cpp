@@ -18,7 +18,8 @@ struct AxisRange {
 
 AxisRange dualRange(const FaceLocation& face, int axis, int scale, int up) {
     if (axis != up) return {face.pos[axis] * scale, (face.pos[axis] + 1) * scale, 1.0};
-    // [p s − s/2, p s + s/2] in smoke-cell units: ⌈s/2⌉ cells each side, the end ones halved for odd s.
+    // [p s − s/2, p s + s/2] in smoke-cell units: ⌈s/2⌉ cells each side, the end ones halved for
+    // odd s.
     const int half = (scale + 1) / 2;
     return {face.pos[axis] * scale - half, face.pos[axis] * scale + half, scale % 2 ? 0.5 : 1.0};
 }
@@ -32,7 +33,8 @@ void requireSmokeField(std::size_t size, std::int64_t cells, const char* what) {
 }  // namespace
 
 double dualCellTemperature(const MacGrid& basisGrid, int scale, const FaceLocation& face,
-                           std::span<const double> temperature, std::span<const std::uint8_t> mask) {
+                           std::span<const double> temperature,
+                           std::span<const std::uint8_t> mask) {
     const MacGrid smoke = basisGrid.refined(scale);
     requireSmokeField(temperature.size(), smoke.cellCount(), "temperature");
     if (!mask.empty()) requireSmokeField(mask.size(), smoke.cellCount(), "fluid mask");
@@ -54,14 +56,17 @@ double dualCellTemperature(const MacGrid& basisGrid, int scale, const FaceLocati
                 const std::int64_t c = smoke.cellIndex(x, y, z);
                 if (!mask.empty() && !mask[std::size_t(c)]) continue;
                 const int along = up == 1 ? ry : rz;
-                const double w = along == range[up].begin || along == range[up].end - 1 ? range[up].endWeight : 1.0;
+                const double w = along == range[up].begin || along == range[up].end - 1
+                                     ? range[up].endWeight
+                                     : 1.0;
                 sum += w * temperature[std::size_t(c)];
                 weight += w;
             }
     return weight > 0.0 ? sum / weight : 0.0;
 }
 
-double splatForce(const MacGrid& grid, const FaceLocation& face, std::span<const ForceSplat> splats) {
+double splatForce(const MacGrid& grid, const FaceLocation& face,
+                  std::span<const ForceSplat> splats) {
     const Vec3 x = faceCentre(grid, face);
     double g = 0.0;
     for (const ForceSplat& splat : splats) {
@@ -79,19 +84,23 @@ Eigen::VectorXd forceDensity(const BasisCache& cache, const BuoyancyInput& buoya
     const MacGrid grid = MacGrid::fromSpec(cache.grid);
     const std::int64_t smokeCells = grid.refined(buoyancy.scale).cellCount();  // checks the scale
     const bool buoyant = !buoyancy.temperature.empty() && buoyancy.buoyancy != 0.0;
-    if (!buoyancy.temperature.empty()) requireSmokeField(buoyancy.temperature.size(), smokeCells, "temperature");
-    if (!buoyancy.fluidMask.empty()) requireSmokeField(buoyancy.fluidMask.size(), smokeCells, "fluid mask");
+    if (!buoyancy.temperature.empty())
+        requireSmokeField(buoyancy.temperature.size(), smokeCells, "temperature");
+    if (!buoyancy.fluidMask.empty())
+        requireSmokeField(buoyancy.fluidMask.size(), smokeCells, "fluid mask");
     for (const ForceSplat& splat : splats)
         if (!(splat.radius > 0.0))
-            throw Error("force field: a splat radius must be positive, got " + std::to_string(splat.radius));
+            throw Error("force field: a splat radius must be positive, got " +
+                        std::to_string(splat.radius));
 
     Eigen::VectorXd g(Eigen::Index(cache.faces.size()));
     for (std::size_t d = 0; d < cache.faces.size(); ++d) {
         const FaceLocation face = locateFace(grid, cache.faces[d]);
         double value = splatForce(grid, face, splats);
         if (buoyant && face.axis == upAxis(grid))
-            value += buoyancy.buoyancy *
-                     dualCellTemperature(grid, buoyancy.scale, face, buoyancy.temperature, buoyancy.fluidMask);
+            value +=
+                buoyancy.buoyancy * dualCellTemperature(grid, buoyancy.scale, face,
+                                                        buoyancy.temperature, buoyancy.fluidMask);
         g[Eigen::Index(d)] = value;
     }
     return g;

@@ -37,10 +37,11 @@
 namespace modeflow::reference {
 
 struct BuoyancyInput {
-    double buoyancy = 0.0;                    ///< upward acceleration per unit temperature
-    int scale = 1;                            ///< smoke cells per basis cell and axis
-    std::span<const double> temperature;      ///< one value per smoke cell; empty: no buoyancy
-    std::span<const std::uint8_t> fluidMask;  ///< one per smoke cell, non-zero in Ω; empty: all count
+    double buoyancy = 0.0;                ///< upward acceleration per unit temperature
+    int scale = 1;                        ///< smoke cells per basis cell and axis
+    std::span<const double> temperature;  ///< one value per smoke cell; empty: no buoyancy
+    std::span<const std::uint8_t>
+        fluidMask;  ///< one per smoke cell, non-zero in Ω; empty: all count
 };
 
 /// Weighted mean of `temperature` over the dual cell of the up-facing face `face` (see above);
@@ -51,7 +52,8 @@ double dualCellTemperature(const MacGrid& basisGrid, int scale, const FaceLocati
                            std::span<const double> temperature, std::span<const std::uint8_t> mask);
 
 /// Σ over splats of (force · n) exp(−r²/radius²) at the centre of `face`.
-double splatForce(const MacGrid& grid, const FaceLocation& face, std::span<const ForceSplat> splats);
+double splatForce(const MacGrid& grid, const FaceLocation& face,
+                  std::span<const ForceSplat> splats);
 
 /// g on every DOF face (cache.faces order).
 /// @throw modeflow::Error on a scale below 1, a temperature or mask that is not one value per

@@ -1,8 +1,8 @@
 #pragma once
 /// @file ForceProjection.h
-/// Grid forces → modal forces f_k = Ψ_kᵀ ⋆ F (README.md, "Reduced dynamics"), the double-precision CPU reference of
-/// engine/device/ForceProjection. Both inputs reduce to f_k = Σ_d Ψ_k[d] w_d q_d with a weight
-/// per DOF that depends on what q is:
+/// Grid forces → modal forces f_k = Ψ_kᵀ ⋆ F (README.md, "Reduced dynamics"), the double-precision
+/// CPU reference of engine/device/ForceProjection. Both inputs reduce to f_k = Σ_d Ψ_k[d] w_d q_d
+/// with a weight per DOF that depends on what q is:
 ///
 /// - a force density g (force per volume along the normal, ForceField.h): F = g |f ∩ Ω| and
 ///   ⋆ = |dual edge| / |f ∩ Ω|, so ⋆F = g |dual edge| = g h_axis (h_axis the spacing along the
@@ -27,9 +27,11 @@ namespace modeflow::reference {
 /// f_k = Σ_d Ψ_k[d] w_d q_d, q given per DOF (cache.faces order); by the transposed separable
 /// transforms for a closed-form basis.
 /// @throw modeflow::Error when q is not one value per DOF.
-Eigen::VectorXd projectForce(const VelocityBasis& basis, const Eigen::VectorXd& q, FaceQuantity quantity);
+Eigen::VectorXd projectForce(const VelocityBasis& basis, const Eigen::VectorXd& q,
+                             FaceQuantity quantity);
 /// The same through a VelocityBasis made for the call.
-Eigen::VectorXd projectForce(const BasisCache& cache, const Eigen::VectorXd& q, FaceQuantity quantity);
+Eigen::VectorXd projectForce(const BasisCache& cache, const Eigen::VectorXd& q,
+                             FaceQuantity quantity);
 
 /// projectForce of a whole-grid face field (MacGrid face numbering), read on the DOF faces.
 /// @throw modeflow::Error when the field is not one value per face of the cache's grid.

@@ -48,6 +48,8 @@ void ModalStepper::setState(const Eigen::VectorXd& x) {
 void ModalStepper::setForce(const Eigen::VectorXd& f) {
     if (f.size() != mModes) throw Error(sizeMismatch("modal force", f.size(), mModes));
     mForce.head(mModes) = f;
+    // Held modes ([forcing]) keep their amplitude against forces too.
+    for (const int k : mSettings.fluid.held) mForce[k] = 0.0;
 }
 
 StepReport ModalStepper::step(double h) { return mIntegrator->step(mState, h, mForce); }

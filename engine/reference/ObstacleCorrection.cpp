@@ -21,7 +21,8 @@ std::vector<double> obstacleMismatch(const BasisCache& cache, std::span<const do
         const Vec3 centre = faceCentre(grid, location);
         for (std::size_t o = 0; o < obstacles.size(); ++o)
             if (obstacles[o].covers(centre, centres[o], grid)) {
-                mismatch[std::size_t(face)] = faceField[std::size_t(face)] - velocities[o][location.axis];
+                mismatch[std::size_t(face)] =
+                    faceField[std::size_t(face)] - velocities[o][location.axis];
                 break;  // the first obstacle covering a face sets its velocity
             }
     }

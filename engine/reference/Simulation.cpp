@@ -36,9 +36,10 @@ std::vector<double> Simulation::faceMagneticField() const {
 
 void Simulation::restore(double time, const Eigen::VectorXd& v, const SmokeFields& smoke) {
     setVelocity(v);
-    if (smoke.density.size() != mFields.density.size() || smoke.temperature.size() != mFields.temperature.size())
-        throw Error("simulation: saved smoke of " + std::to_string(smoke.density.size()) + " cells, the smoke grid has " +
-                    std::to_string(mFields.density.size()));
+    if (smoke.density.size() != mFields.density.size() ||
+        smoke.temperature.size() != mFields.temperature.size())
+        throw Error("simulation: saved smoke of " + std::to_string(smoke.density.size()) +
+                    " cells, the smoke grid has " + std::to_string(mFields.density.size()));
     mFields = smoke;
     mTime = time;
     mStep = std::lround(time / mSettings.dt);
@@ -70,7 +71,8 @@ FrameStats Simulation::advanceSteps(int steps) {
         if (mSettings.buoyancy != 0.0 || !mSplats.empty()) {
             const BuoyancyInput buoyancy{mSettings.buoyancy, mSettings.smokeScale,
                                          mFields.temperature, mAdvection.fluidMask()};
-            force = projectForce(mBasis, forceDensity(mCache, buoyancy, mSplats), FaceQuantity::Density);
+            force = projectForce(mBasis, forceDensity(mCache, buoyancy, mSplats),
+                                 FaceQuantity::Density);
         }
         mStepper.setForce(force);
         const StepReport report = mStepper.step(dt);
@@ -79,7 +81,8 @@ FrameStats Simulation::advanceSteps(int steps) {
         stats.unconvergedSteps += report.converged ? 0 : 1;
         mFaceVelocity = reconstructFaceField(mBasis, velocity());
         if (!mSettings.obstacles.empty()) {
-            setVelocity(velocity() - obstacleCorrection(mBasis, mFaceVelocity, mSettings.obstacles, mTime + dt));
+            setVelocity(velocity() -
+                        obstacleCorrection(mBasis, mFaceVelocity, mSettings.obstacles, mTime + dt));
             mFaceVelocity = reconstructFaceField(mBasis, velocity());
         }
         mAdvection.step(std::span<const double>(mFaceVelocity), dt, mSettings.advection,

@@ -4,8 +4,8 @@
 #include <limits>
 #include <string>
 
-#include "engine/core/MacSampling.h"
 #include "engine/core/Error.h"
+#include "engine/core/MacSampling.h"
 
 namespace modeflow::reference {
 namespace {
@@ -19,8 +19,8 @@ struct FluidSample {
     bool anyFluid = false;
 };
 
-FluidSample sampleFluid(const MacGrid& grid, std::span<const std::uint8_t> mask, std::span<const double> field,
-                        const Vec3& gridPoint, double fallback) {
+FluidSample sampleFluid(const MacGrid& grid, std::span<const std::uint8_t> mask,
+                        std::span<const double> field, const Vec3& gridPoint, double fallback) {
     const CellStencil stencil = cellStencil(grid, gridPoint);
     FluidSample sample;
     double sum = 0.0, weight = 0.0;
@@ -39,8 +39,12 @@ FluidSample sampleFluid(const MacGrid& grid, std::span<const std::uint8_t> mask,
 
 }  // namespace
 
-SmokeAdvection::SmokeAdvection(const MacGrid& basisGrid, int scale, std::vector<std::uint8_t> fluidMask)
-    : mBasis(basisGrid), mScale(scale), mSmoke(basisGrid.refined(scale)), mMask(std::move(fluidMask)) {
+SmokeAdvection::SmokeAdvection(const MacGrid& basisGrid, int scale,
+                               std::vector<std::uint8_t> fluidMask)
+    : mBasis(basisGrid),
+      mScale(scale),
+      mSmoke(basisGrid.refined(scale)),
+      mMask(std::move(fluidMask)) {
     requireCellField(mMask.size(), "the fluid mask");
 }
 
@@ -84,8 +88,10 @@ std::vector<double> SmokeAdvection::semiLagrangian(std::span<const double> field
     return result;
 }
 
-std::vector<double> SmokeAdvection::advectAlong(std::span<const double> field, const std::vector<Vec3>& back,
-                                                const std::vector<Vec3>& ahead, AdvectionScheme scheme) const {
+std::vector<double> SmokeAdvection::advectAlong(std::span<const double> field,
+                                                const std::vector<Vec3>& back,
+                                                const std::vector<Vec3>& ahead,
+                                                AdvectionScheme scheme) const {
     std::vector<double> forward = semiLagrangian(field, back);
     if (scheme == AdvectionScheme::SemiLagrangian) return forward;
     const std::vector<double> backward = semiLagrangian(forward, ahead);
@@ -117,8 +123,9 @@ void SmokeAdvection::step(std::span<const float> velocity, double dt, AdvectionS
     step(wide, dt, scheme, emitters, fields);
 }
 
-std::vector<double> SmokeAdvection::advect(std::span<const double> velocity, std::span<const double> field,
-                                           double dt, AdvectionScheme scheme) const {
+std::vector<double> SmokeAdvection::advect(std::span<const double> velocity,
+                                           std::span<const double> field, double dt,
+                                           AdvectionScheme scheme) const {
     requireCellField(field.size(), "the advected field");
     const std::vector<Vec3> back = backtrace(velocity, dt);
     const std::vector<Vec3> ahead =

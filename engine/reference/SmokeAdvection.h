@@ -37,7 +37,6 @@
 
 namespace modeflow::reference {
 
-
 class SmokeAdvection {
 public:
     /// `fluidMask`: one entry per cell of basisGrid.refined(scale), non-zero inside Ω.
@@ -59,8 +58,8 @@ public:
               std::span<const SmokeEmitter> emitters, SmokeFields& fields) const;
 
     /// One field advected (no emitters).
-    std::vector<double> advect(std::span<const double> velocity, std::span<const double> field, double dt,
-                               AdvectionScheme scheme) const;
+    std::vector<double> advect(std::span<const double> velocity, std::span<const double> field,
+                               double dt, AdvectionScheme scheme) const;
 
     /// Σ concentration × smoke cell volume.
     double mass(std::span<const double> field) const;
@@ -68,7 +67,8 @@ public:
 private:
     /// Where the RK2 trace from each fluid cell centre ends after −dt·u (smoke-grid units).
     std::vector<Vec3> backtrace(std::span<const double> velocity, double dt) const;
-    std::vector<double> semiLagrangian(std::span<const double> field, const std::vector<Vec3>& traces) const;
+    std::vector<double> semiLagrangian(std::span<const double> field,
+                                       const std::vector<Vec3>& traces) const;
     /// `ahead`: the traces over −dt (MacCormack's backward step), unused by semi-Lagrangian.
     std::vector<double> advectAlong(std::span<const double> field, const std::vector<Vec3>& back,
                                     const std::vector<Vec3>& ahead, AdvectionScheme scheme) const;

@@ -2,9 +2,9 @@
 
 #include <string>
 
+#include "engine/core/Error.h"
 #include "engine/core/FaceLocation.h"
 #include "engine/core/MacSampling.h"
-#include "engine/core/Error.h"
 
 namespace modeflow::reference {
 

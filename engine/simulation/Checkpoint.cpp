@@ -18,7 +18,8 @@
 namespace modeflow {
 namespace {
 
-constexpr char kMagic[16] = {'M', 'O', 'D', 'E', 'F', 'L', 'O', 'W', '-', 'R', 'E', 'S', 'U', 'M', 'E', '\0'};
+constexpr char kMagic[16] = {'M', 'O', 'D', 'E', 'F', 'L', 'O', 'W',
+                             '-', 'R', 'E', 'S', 'U', 'M', 'E', '\0'};
 constexpr std::uint32_t kVersion = 2;  ///< 2: the magnetic field after the velocity
 /// The largest checkpoint read (64 GiB): the modal state and two fields of the largest smoke grid a
 /// scene may ask for fit, and a damaged file cannot make the reader ask for terabytes.

@@ -14,7 +14,8 @@ struct FrameStats {
     /// Device time per stage summed over the timed steps, milliseconds (0 on the CPU reference or
     /// without timestamps): forces (force field + projection), modal step, reconstruction, moving
     /// obstacles (their correction and the reconstruction after it), advection.
-    double forcesMs = 0.0, modalMs = 0.0, reconstructionMs = 0.0, obstaclesMs = 0.0, advectionMs = 0.0;
+    double forcesMs = 0.0, modalMs = 0.0, reconstructionMs = 0.0, obstaclesMs = 0.0,
+           advectionMs = 0.0;
 };
 
 }  // namespace modeflow

@@ -3,15 +3,15 @@
 #include <algorithm>
 #include <cmath>
 
-
 namespace modeflow {
 
 Vec3 MovingObstacle::centreAt(double t) const {
     const auto& path = spec.path;
     if (t <= path.front().first) return path.front().second;
     if (t >= path.back().first) return path.back().second;
-    const auto next = std::upper_bound(path.begin(), path.end(), t,
-                                       [](double time, const auto& frame) { return time < frame.first; });
+    const auto next =
+        std::upper_bound(path.begin(), path.end(), t,
+                         [](double time, const auto& frame) { return time < frame.first; });
     const auto& [t1, p1] = *next;
     const auto& [t0, p0] = *(next - 1);
     const double s = (t - t0) / (t1 - t0);
@@ -21,8 +21,9 @@ Vec3 MovingObstacle::centreAt(double t) const {
 Vec3 MovingObstacle::velocityAt(double t) const {
     const auto& path = spec.path;
     if (path.size() < 2 || t < path.front().first || t >= path.back().first) return {0.0, 0.0, 0.0};
-    const auto next = std::upper_bound(path.begin(), path.end(), t,
-                                       [](double time, const auto& frame) { return time < frame.first; });
+    const auto next =
+        std::upper_bound(path.begin(), path.end(), t,
+                         [](double time, const auto& frame) { return time < frame.first; });
     const auto& [t1, p1] = *next;
     const auto& [t0, p0] = *(next - 1);
     return {(p1[0] - p0[0]) / (t1 - t0), (p1[1] - p0[1]) / (t1 - t0), (p1[2] - p0[2]) / (t1 - t0)};
@@ -49,7 +50,8 @@ bool MovingObstacle::covers(const Vec3& point, const Vec3& centre, const MacGrid
             for (int a = 0; a < dim; ++a) d[a] -= s * spec.axis[a];
             break;
         }
-        case ObstacleShape::Ball: break;
+        case ObstacleShape::Ball:
+            break;
     }
     return d[0] * d[0] + d[1] * d[1] + d[2] * d[2] <= spec.radius * spec.radius;
 }

@@ -7,7 +7,8 @@ double denseCoefficientBytes(int modes) {
     return k * k * (k - 1.0) / 2.0 * 8.0;
 }
 
-RunMemory estimateRunMemory(std::int64_t smokeCells, double columnBytes, double coefficientBytes, bool device) {
+RunMemory estimateRunMemory(std::int64_t smokeCells, double columnBytes, double coefficientBytes,
+                            bool device) {
     constexpr double kMiB = 1024.0 * 1024.0;
     RunMemory memory;
     memory.basisBytes = 3.0 * (columnBytes + coefficientBytes);

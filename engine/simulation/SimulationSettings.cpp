@@ -1,5 +1,7 @@
 #include "engine/simulation/SimulationSettings.h"
 
+#include <algorithm>
+#include <cmath>
 #include <string>
 
 #include "engine/core/Error.h"
@@ -16,7 +18,8 @@ SimulationSettings SimulationSettings::fromScene(const SceneSpec& scene, const B
     settings.dt = sim.dt;
     settings.stepsPerFrame = scene.output.stepsPerFrame;
     settings.integrator = sim.integrator;
-    settings.fluid = {cache.velocity.eigenvalues, sim.viscosity, sim.alpha};
+    settings.fluid = {cache.velocity.eigenvalues, sim.viscosity, sim.alpha,
+                      heldModes(scene, cache)};
     settings.mhd = sim.mhd;
     settings.magneticDiffusivity = sim.magneticDiffusivity;
     settings.buoyancy = scene.smoke.buoyancy;
@@ -31,6 +34,34 @@ SimulationSettings SimulationSettings::fromScene(const SceneSpec& scene, const B
                     " [[obstacle]] entries; the runtime takes at most " + std::to_string(maxObstacles));
     for (const ObstacleSpec& obstacle : scene.obstacles) settings.obstacles.push_back({obstacle});
     return settings;
+}
+
+std::vector<int> heldModes(const SceneSpec& scene, const BasisCache& cache) {
+    const ForcingSpec& forcing = scene.forcing;
+    if (!forcing.holds()) return {};
+    const auto n = int(cache.velocity.eigenvalues.size());
+    std::vector<int> held;
+    std::string key;
+    if (!forcing.holdModes.empty()) {
+        key = "[forcing].hold_modes";
+        for (const ModeRange& range : forcing.holdModes)
+            for (int m = range.first; m <= range.last && m <= n; ++m) held.push_back(m - 1);
+    } else {
+        key = "[forcing].hold_below_kappa";
+        const double limit = forcing.holdBelowKappa * forcing.holdBelowKappa;
+        for (int k = 0; k < n; ++k)
+            if (cache.velocity.eigenvalues[k] < limit) held.push_back(k);
+    }
+    const std::string file = scene.sourceFile.empty() ? scene.name : scene.sourceFile.string();
+    if (held.empty())
+        throw Error(
+            file + ": " + key + " holds none of the basis's " + std::to_string(n) +
+            " modes (the lowest has κ = " +
+            std::to_string(std::sqrt(std::max(0.0, cache.velocity.eigenvalues.minCoeff()))) + ")");
+    if (int(held.size()) == n)
+        throw Error(file + ": " + key + " holds all " + std::to_string(n) +
+                    " modes of the basis: nothing would move");
+    return held;
 }
 
 bool SimulationSettings::simulatesTemperature() const {

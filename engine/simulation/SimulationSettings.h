@@ -42,4 +42,9 @@ struct SimulationSettings {
     static SimulationSettings fromScene(const SceneSpec& scene, const BasisCache& cache);
 };
 
+/// The 0-based modes `[forcing]` holds: the positions of hold_modes, or the modes with κ below
+/// hold_below_kappa (κ² < hold_below_kappa², harmonic ones included).
+/// @throw modeflow::Error naming the key when it holds no mode, or every mode, of the basis.
+std::vector<int> heldModes(const SceneSpec& scene, const BasisCache& cache);
+
 }  // namespace modeflow

@@ -77,7 +77,7 @@ std::vector<TimedEvent> parseInputScript(const std::string& text, const std::str
         std::string name;
         if (!(line >> name)) throw Error(where + ": missing the event after the time");
         if (name == "down" || name == "up" || name == "rdown" || name == "rup" || name == "move") {
-            const InputKind kind = name == "move"                   ? InputKind::Move
+            const InputKind kind = name == "move"                      ? InputKind::Move
                                    : name == "down" || name == "rdown" ? InputKind::ButtonDown
                                                                        : InputKind::ButtonUp;
             const MouseButton button = name[0] == 'r' ? MouseButton::Right : MouseButton::Left;

@@ -25,7 +25,7 @@ public:
 private:
     double mDt;
     double mBudget;
-    double mOwed = 0.0;   ///< wall seconds not yet simulated
+    double mOwed = 0.0;  ///< wall seconds not yet simulated
     double mSpeed = 1.0;
 };
 

@@ -1,8 +1,8 @@
 #include "engine/stir/ShapedBases.h"
 
-#include "engine/dynamics/DenseCoefficients.h"
-#include "engine/core/PackedLayout.h"
 #include "engine/core/Error.h"
+#include "engine/core/PackedLayout.h"
+#include "engine/dynamics/DenseCoefficients.h"
 
 namespace modeflow::stir {
 
@@ -37,8 +37,8 @@ BasisCache leadingModes(const BasisCache& cache, int modes) {
     return out;
 }
 
-std::unique_ptr<StructuralCoefficients> leadingCoefficients(const StructuralCoefficients& coefficients,
-                                                            int modes) {
+std::unique_ptr<StructuralCoefficients> leadingCoefficients(
+    const StructuralCoefficients& coefficients, int modes) {
     if (modes < 1 || modes > coefficients.size())
         throw Error("shaped basis of " + std::to_string(modes) + " modes: the coefficients hold " +
                     std::to_string(coefficients.size()));

@@ -9,9 +9,9 @@
 #include <string>
 #include <vector>
 
+#include "engine/core/SceneSpec.h"
 #include "engine/dynamics/StructuralCoefficients.h"
 #include "engine/format/BasisCache.h"
-#include "engine/core/SceneSpec.h"
 
 namespace modeflow::stir {
 
@@ -28,7 +28,7 @@ std::vector<ShapedBasis> shapedBases(const BasisSpec& basis);
 /// @throw modeflow::Error when `modes` is not between 1 and the cache's count.
 BasisCache leadingModes(const BasisCache& cache, int modes);
 /// C[k][i][j] over k, i, j < modes (the Galerkin system of the leading modes).
-std::unique_ptr<StructuralCoefficients> leadingCoefficients(const StructuralCoefficients& coefficients,
-                                                            int modes);
+std::unique_ptr<StructuralCoefficients> leadingCoefficients(
+    const StructuralCoefficients& coefficients, int modes);
 
 }  // namespace modeflow::stir

@@ -111,7 +111,8 @@ void StirLoop::handle(const InputEvent& event) {
             break;
         case InputKind::Move:
             if (const auto p = scenePoint(event)) mSession.moveTo(*p);
-            if (mOrbiting && mView.grid().dim == 3) mView.orbit(event.x - mOrbitX, event.y - mOrbitY);
+            if (mOrbiting && mView.grid().dim == 3)
+                mView.orbit(event.x - mOrbitX, event.y - mOrbitY);
             mOrbitX = event.x;
             mOrbitY = event.y;
             break;
@@ -130,17 +131,39 @@ void StirLoop::act(StirAction action) {
             mPaused = !mPaused;
             mClock.restart();
             break;
-        case StirAction::Step: mStepOnce = mPaused; break;
-        case StirAction::Reset: mSession.reset(); break;
-        case StirAction::Integrator: mSession.toggleIntegrator(); break;
-        case StirAction::ViscosityUp: mSession.scaleViscosity(true); break;
-        case StirAction::ViscosityDown: mSession.scaleViscosity(false); break;
-        case StirAction::NextBasis: mSession.nextBasis(); break;
-        case StirAction::Paddle: mSession.togglePaddle(); break;
-        case StirAction::Arrows: mArrows = !mArrows; break;
-        case StirAction::Screenshot: mScreenshot = true; break;
-        case StirAction::Help: mHelp = !mHelp; break;
-        case StirAction::Quit: mQuit = true; break;
+        case StirAction::Step:
+            mStepOnce = mPaused;
+            break;
+        case StirAction::Reset:
+            mSession.reset();
+            break;
+        case StirAction::Integrator:
+            mSession.toggleIntegrator();
+            break;
+        case StirAction::ViscosityUp:
+            mSession.scaleViscosity(true);
+            break;
+        case StirAction::ViscosityDown:
+            mSession.scaleViscosity(false);
+            break;
+        case StirAction::NextBasis:
+            mSession.nextBasis();
+            break;
+        case StirAction::Paddle:
+            mSession.togglePaddle();
+            break;
+        case StirAction::Arrows:
+            mArrows = !mArrows;
+            break;
+        case StirAction::Screenshot:
+            mScreenshot = true;
+            break;
+        case StirAction::Help:
+            mHelp = !mHelp;
+            break;
+        case StirAction::Quit:
+            mQuit = true;
+            break;
     }
 }
 
@@ -221,13 +244,15 @@ StirReport StirLoop::run(std::ostream& log) {
     report.status = mSession.status();
     report.validationMessages = mContext.validationMessageCount();
     char summary[200];
-    std::snprintf(summary, sizeof summary,
-                  "%d frames (%dx%d) in %.2f s: %.1f fps, %d steps, %.2f ms per step, %.2f ms per picture\n",
-                  report.frames, report.width, report.height, report.seconds, report.framesPerSecond(),
-                  report.steps, report.stepMs, report.drawMs);
+    std::snprintf(
+        summary, sizeof summary,
+        "%d frames (%dx%d) in %.2f s: %.1f fps, %d steps, %.2f ms per step, %.2f ms per picture\n",
+        report.frames, report.width, report.height, report.seconds, report.framesPerSecond(),
+        report.steps, report.stepMs, report.drawMs);
     log << summary;
     if (report.validationMessages > 0)
-        throw Error("the Vulkan validation layer reported " + std::to_string(report.validationMessages) +
+        throw Error("the Vulkan validation layer reported " +
+                    std::to_string(report.validationMessages) +
                     " problems; the first: " + mContext.validationMessages().front());
     return report;
 }

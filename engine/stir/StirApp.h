@@ -32,11 +32,11 @@ struct StirOptions {
     /// 960 × 540 on a CPU device (lavapipe), where drawing costs per pixel and the smaller window
     /// keeps 30 fps.
     std::optional<int> width, height;
-    std::optional<int> frames;       ///< close after this many frames (frame clock)
-    std::filesystem::path screenshot;                 ///< the last frame as PNG, if not empty
-    std::filesystem::path screenshotFolder = ".";     ///< where the screenshot key writes
-    std::vector<TimedEvent> script;                   ///< events to replay
-    bool statistics = true;                           ///< the statistics over the picture
+    std::optional<int> frames;                     ///< close after this many frames (frame clock)
+    std::filesystem::path screenshot;              ///< the last frame as PNG, if not empty
+    std::filesystem::path screenshotFolder = ".";  ///< where the screenshot key writes
+    std::vector<TimedEvent> script;                ///< events to replay
+    bool statistics = true;                        ///< the statistics over the picture
     /// The backend that simulates: the screen's Vulkan device, or the CPU reference beside it.
     /// The window's device is `backend.vulkan`'s choice (the first suitable one that presents
     /// to the window for the CPU reference too).

@@ -4,9 +4,9 @@
 #include <cmath>
 #include <cstdio>
 
-#include "engine/dynamics/Diagnostics.h"
 #include "engine/core/Error.h"
 #include "engine/core/SceneKeywords.h"
+#include "engine/dynamics/Diagnostics.h"
 
 namespace modeflow::stir {
 namespace {
@@ -85,8 +85,8 @@ void StirSession::reset() {
 }
 
 void StirSession::toggleIntegrator() {
-    const Integrator next = settings().integrator == Integrator::Midpoint ? Integrator::Explicit
-                                                                          : Integrator::Midpoint;
+    const Integrator next =
+        settings().integrator == Integrator::Midpoint ? Integrator::Explicit : Integrator::Midpoint;
     for (auto& simulation : mSimulations)
         if (simulation) simulation->setIntegrator(next);
     mSceneSettings.integrator = next;
@@ -166,7 +166,8 @@ MovingObstacle StirSession::paddleObstacle(int steps) const {
     const double dt = settings().dt, t0 = simulation().time();
     const Vec3 to = mDragging ? mPointer : mPaddleAt;
     Vec3 beyond{};
-    for (int a = 0; a < 3; ++a) beyond[a] = mPaddleAt[a] + (to[a] - mPaddleAt[a]) * (steps + 1.0) / steps;
+    for (int a = 0; a < 3; ++a)
+        beyond[a] = mPaddleAt[a] + (to[a] - mPaddleAt[a]) * (steps + 1.0) / steps;
     obstacle.spec.path = {{t0, mPaddleAt}, {t0 + (steps + 1) * dt, beyond}};
     return obstacle;
 }

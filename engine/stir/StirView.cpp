@@ -12,9 +12,9 @@ double StirView::boxSize() const {
 }
 
 display::Viewport StirView::viewport(int width, int height) const {
-    const double aspect = mGrid.dim == 2 ? mGrid.spacing[0] * mGrid.cells[0] /
-                                               (mGrid.spacing[1] * mGrid.cells[1])
-                                         : double(kPictureWidth) / kPictureHeight;
+    const double aspect =
+        mGrid.dim == 2 ? mGrid.spacing[0] * mGrid.cells[0] / (mGrid.spacing[1] * mGrid.cells[1])
+                       : double(kPictureWidth) / kPictureHeight;
     return display::Viewport::letterbox(width, height, aspect);
 }
 
@@ -56,9 +56,11 @@ std::optional<StirView::Projection> StirView::project(const Vec3& point) const {
     // + (H/2) dy; a point is on it at λ = (point − eye)·forward / |forward|².
     const auto p = preview::volumeViewParams(mGrid, kPictureWidth, kPictureHeight, 1.0f, mCamera);
     const Vec3 dx{p.dxX, p.dxY, p.dxZ}, dy{p.dyX, p.dyY, p.dyZ};
-    double toPoint[3], forward[3], along = 0.0, forward2 = 0.0, onX = 0.0, onY = 0.0, dx2 = 0.0, dy2 = 0.0;
+    double toPoint[3], forward[3], along = 0.0, forward2 = 0.0, onX = 0.0, onY = 0.0, dx2 = 0.0,
+                                   dy2 = 0.0;
     for (int a = 0; a < 3; ++a) {
-        toPoint[a] = point[a] - (mGrid.origin[a] + std::array{p.eyeX, p.eyeY, p.eyeZ}[a] * mGrid.spacing[a]);
+        toPoint[a] =
+            point[a] - (mGrid.origin[a] + std::array{p.eyeX, p.eyeY, p.eyeZ}[a] * mGrid.spacing[a]);
         forward[a] = std::array{p.baseX, p.baseY, p.baseZ}[a] + 0.5 * kPictureWidth * dx[a] +
                      0.5 * kPictureHeight * dy[a];
     }

@@ -7,10 +7,10 @@
 
 #include <optional>
 
-#include "engine/display/Viewport.h"
 #include "engine/core/MacGrid.h"
-#include "engine/preview/VolumeView.h"
 #include "engine/core/SceneSpec.h"
+#include "engine/display/Viewport.h"
+#include "engine/preview/VolumeView.h"
 
 namespace modeflow::stir {
 

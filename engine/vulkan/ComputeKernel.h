@@ -26,11 +26,11 @@ class DeviceBuffer;
 class VulkanContext;
 
 struct ComputeKernelSpec {
-    std::string name;                      ///< for error messages
-    std::span<const std::uint32_t> spirv;  ///< SPIR-V words (a glslangValidator --vn array)
-    std::uint32_t bufferCount = 0;         ///< buffers at bindings 0…N−1
-    std::uint32_t pushConstantBytes = 0;   ///< size of the push-constant block (multiple of 4)
-    std::uint32_t workgroupSize = 64;      ///< local_size_x, specialization constant 0
+    std::string name;                           ///< for error messages
+    std::span<const std::uint32_t> spirv;       ///< SPIR-V words (a glslangValidator --vn array)
+    std::uint32_t bufferCount = 0;              ///< buffers at bindings 0…N−1
+    std::uint32_t pushConstantBytes = 0;        ///< size of the push-constant block (multiple of 4)
+    std::uint32_t workgroupSize = 64;           ///< local_size_x, specialization constant 0
     std::vector<std::uint32_t> constants = {};  ///< specialization constants 1…k, in order
     /// The bindings a shader reads as `usamplerBuffer` (DeviceBuffer::texelView), the rest being
     /// storage buffers. For read-only streams: lavapipe gathers texels with vector loads.

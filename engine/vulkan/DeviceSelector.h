@@ -18,8 +18,9 @@ namespace modeflow::vulkan {
 /// The chosen device and the report that explains the choice.
 struct DeviceSelection {
     VkPhysicalDevice device = VK_NULL_HANDLE;
-    std::uint32_t index = 0;        ///< position in vkEnumeratePhysicalDevices
-    std::uint32_t queueFamily = 0;  ///< a family with compute (and presentation, if required) support
+    std::uint32_t index = 0;  ///< position in vkEnumeratePhysicalDevices
+    std::uint32_t queueFamily =
+        0;  ///< a family with compute (and presentation, if required) support
     std::string name;
     std::string report;  ///< one line per device: "chosen …" or "rejected …: reason"
 };

@@ -201,8 +201,9 @@ std::vector<std::string> VulkanContext::validationMessages() const {
 
 const VulkanContext& VulkanContext::requireShaderInt64(const char* user) const {
     if (!mShaderInt64)
-        throw Error("Vulkan device " + deviceName() + " lacks 64-bit integers in shaders (shaderInt64), which " +
-                    user + " needs; run with --device cpu");
+        throw Error("Vulkan device " + deviceName() +
+                    " lacks 64-bit integers in shaders (shaderInt64), which " + user +
+                    " needs; run with --device cpu");
     return *this;
 }
 

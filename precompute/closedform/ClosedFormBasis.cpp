@@ -10,7 +10,9 @@
 
 namespace modeflow {
 
-bool hasWholeBoxDomain(const SceneSpec& scene) { return scene.domain.empty(); }
+bool hasWholeBoxDomain(const SceneSpec& scene) {
+    return scene.domain.empty();
+}
 
 bool hasClosedFormVelocity(const SceneSpec& scene) {
     return hasWholeBoxDomain(scene) && scene.basis.wall == WallKind::FreeSlip;
@@ -27,12 +29,15 @@ struct AxisWave {
 
 using AxisWaves = std::array<std::vector<AxisWave>, 3>;
 
-bool nyquist(const GridSpec& g, int a, int l) { return g.isPeriodic(a) && 2 * l == g.resolution[a]; }
+bool nyquist(const GridSpec& g, int a, int l) {
+    return g.isPeriodic(a) && 2 * l == g.resolution[a];
+}
 
 /// The factors an axis carries, σ² ascending: on a wall l = 0..n−1 (scalars with a Dirichlet
 /// wall: l = 1..n, phase 1, i.e. sines at the cell centres); on a periodic axis l = 0..⌊n/2⌋ in
 /// phases 0 and 1, except those that vanish on the grid (`keep` decides for l = 0).
-std::vector<AxisWave> axisWaves(const GridSpec& g, int a, bool dirichletWall, bool keepZeroShifted) {
+std::vector<AxisWave> axisWaves(const GridSpec& g, int a, bool dirichletWall,
+                                bool keepZeroShifted) {
     std::vector<AxisWave> out;
     const int n = g.resolution[a];
     if (!g.isPeriodic(a)) {
@@ -215,7 +220,8 @@ std::int64_t closedFormDivergenceFreeDimension(const GridSpec& grid) {
     return faces - cells + 1;
 }
 
-ClosedFormVelocity closedFormVelocityBasis(const GridSpec& grid, const std::vector<ModeRange>& ranges) {
+ClosedFormVelocity closedFormVelocityBasis(const GridSpec& grid,
+                                           const std::vector<ModeRange>& ranges) {
     int highest = 0;
     for (const ModeRange& r : ranges) highest = std::max(highest, r.last);
     const std::int64_t available = closedFormDivergenceFreeDimension(grid);
@@ -223,9 +229,10 @@ ClosedFormVelocity closedFormVelocityBasis(const GridSpec& grid, const std::vect
         throw Error("[basis]: asked for divergence-free mode " + std::to_string(highest) +
                     " but the domain holds only " + plural(available, "divergence-free field") +
                     " at this resolution");
-    const std::vector<Candidate> sorted =
-        lowest(grid, velocityAxes(grid), highest,
-               [&](const auto& choice, std::vector<Candidate>& out) { velocityFields(grid, choice, out); });
+    const std::vector<Candidate> sorted = lowest(
+        grid, velocityAxes(grid), highest, [&](const auto& choice, std::vector<Candidate>& out) {
+            velocityFields(grid, choice, out);
+        });
     ClosedFormVelocity r;
     std::vector<double> values;
     for (const ModeRange& range : ranges)
@@ -257,8 +264,8 @@ ClosedFormScalar closedFormScalarBasis(const GridSpec& grid, int count, ScalarBo
                                                         : "non-constant Neumann scalar mode"));
     double volume = 1.0;
     for (int a = 0; a < grid.dim; ++a) volume *= grid.spacing(a);
-    const std::vector<Candidate> sorted = lowest(
-        grid, axes, count + constants, [&](const auto& c, std::vector<Candidate>& out) {
+    const std::vector<Candidate> sorted =
+        lowest(grid, axes, count + constants, [&](const auto& c, std::vector<Candidate>& out) {
             Candidate cand{0.0, {}, 0};
             double norm2 = volume;
             for (int a = 0; a < grid.dim; ++a) {

@@ -42,7 +42,8 @@ struct ClosedFormScalar {
 /// The div-free modes in `ranges` (1-based), in ascending κ²; within equal κ² ordered by wave
 /// vector, phases and polarization (a fixed order, so a basis is reproducible).
 /// @throw Error when the ranges ask for more modes than the grid holds.
-ClosedFormVelocity closedFormVelocityBasis(const GridSpec& grid, const std::vector<ModeRange>& ranges);
+ClosedFormVelocity closedFormVelocityBasis(const GridSpec& grid,
+                                           const std::vector<ModeRange>& ranges);
 
 /// The first `count` scalar modes: Neumann without the constant, or Dirichlet with the ghost-fluid
 /// wall of the eigensolver (zero half a cell beyond the last cell centre: sin(πl(x)/n), l = 1..n).

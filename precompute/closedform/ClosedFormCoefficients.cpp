@@ -42,7 +42,8 @@ int tripleSum(const Axis& axis, const ModeFactors& m1, bool sine1, const ModeFac
         for (int e3 = -1; e3 <= 1; e3 += 2) {
             const int m = m1.wave[a] + e2 * m2.wave[a] + e3 * m3.wave[a];
             if (m % axis.period != 0) continue;
-            total += cosineOfQuarterTurns(q1 + e2 * q2 + e3 * q3 + (half ? 2 * (m / axis.period) : 0));
+            total +=
+                cosineOfQuarterTurns(q1 + e2 * q2 + e3 * q3 + (half ? 2 * (m / axis.period) : 0));
         }
     return total;
 }
@@ -81,7 +82,8 @@ public:
                 f.shift[a] = s.shift[a];
                 f.amplitude[a] = s.amplitude[a];
                 f.sigma[a] = axisSigma(grid, a, s.wave[a]);
-                const double theta = (grid.isPeriodic(a) ? 2.0 : 1.0) * M_PI * s.wave[a] / grid.resolution[a];
+                const double theta =
+                    (grid.isPeriodic(a) ? 2.0 : 1.0) * M_PI * s.wave[a] / grid.resolution[a];
                 f.gamma[a] = std::cos(0.5 * theta);
                 f.largestAmplitude = std::max(f.largestAmplitude, std::abs(f.amplitude[a]));
                 f.largestSigma = std::max(f.largestSigma, f.sigma[a]);
@@ -133,7 +135,8 @@ private:
 
     std::size_t slot(const std::array<int, 3>& wave) const {
         return (std::size_t(wave[2]) * std::size_t(mLargest[1] + 1) + std::size_t(wave[1])) *
-                   std::size_t(mLargest[0] + 1) + std::size_t(wave[0]);
+                   std::size_t(mLargest[0] + 1) +
+               std::size_t(wave[0]);
     }
 
     /// Every C[k][i][j] with k, j from groups g and h (k ≠ j) and i from a group that the
@@ -152,7 +155,8 @@ private:
                           second.wave[a] - first.wave[a], -first.wave[a] - second.wave[a]}) {
                 const int r = ((v % p) + p) % p;
                 if (r > mLargest[a]) continue;
-                if (std::find(third[a].begin(), third[a].begin() + count[a], r) != third[a].begin() + count[a])
+                if (std::find(third[a].begin(), third[a].begin() + count[a], r) !=
+                    third[a].begin() + count[a])
                     continue;
                 third[a][std::size_t(count[a]++)] = r;
             }
@@ -160,8 +164,9 @@ private:
         for (int x = 0; x < count[0]; ++x)
             for (int y = 0; y < count[1]; ++y)
                 for (int z = 0; z < count[2]; ++z) {
-                    const int gi = mGroupOf[slot({third[0][std::size_t(x)], third[1][std::size_t(y)],
-                                                   third[2][std::size_t(z)]})];
+                    const int gi =
+                        mGroupOf[slot({third[0][std::size_t(x)], third[1][std::size_t(y)],
+                                       third[2][std::size_t(z)]})];
                     if (gi < 0) continue;
                     for (int p : mGroups[g])
                         for (int q : mGroups[h]) {
@@ -214,8 +219,8 @@ private:
     std::array<Axis, 3> mAxes{};
     std::vector<ModeFactors> mModes;
     std::array<int, 3> mLargest{0, 0, 0};
-    std::vector<int> mGroupOf;               ///< wave vector slot → group, or −1
-    std::vector<std::vector<int>> mGroups;   ///< modes sharing a wave vector
+    std::vector<int> mGroupOf;              ///< wave vector slot → group, or −1
+    std::vector<std::vector<int>> mGroups;  ///< modes sharing a wave vector
 };
 
 }  // namespace

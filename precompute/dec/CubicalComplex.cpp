@@ -98,8 +98,8 @@ SparseMatrix CubicalComplex::incidence(int k) const {
                         const unsigned tm = m | (1u << a);
                         // Standard cubical sign: (-1)^(number of axes of s below a).
                         const int below = popcount(m & ((1u << a) - 1));
-                        const int base = (below % 2 ? -1 : 1) * orientation(*this, m) *
-                                         orientation(*this, tm);
+                        const int base =
+                            (below % 2 ? -1 : 1) * orientation(*this, m) * orientation(*this, tm);
                         // s is the lower face of the (k+1)-cell at s.pos ...
                         if (s.pos[a] < mGrid.resolution[a])
                             triplets.emplace_back(index(Element{tm, s.pos}), col, -base);

@@ -68,6 +68,8 @@ private:
     std::array<std::int64_t, 8> mTypeOffset{};  ///< by mask
 };
 
-inline int popcount(unsigned m) { return __builtin_popcount(m); }
+inline int popcount(unsigned m) {
+    return __builtin_popcount(m);
+}
 
 }  // namespace modeflow

@@ -79,15 +79,15 @@ CutCellDec buildCutCellDec(const CubicalComplex& cx, const CutCellMeasures& meas
     dec.cellStar.resize(dec.cells.size());
     for (std::int64_t i = 0; i < dec.cells.size(); ++i) {
         const std::int64_t g = dec.cells.toGlobal[i];
-        dec.cellStar[i] = 1.0 / (primalMeasure(grid, cx.element(n, g).axes) *
-                                 measures.fraction[n][g]);
+        dec.cellStar[i] =
+            1.0 / (primalMeasure(grid, cx.element(n, g).axes) * measures.fraction[n][g]);
     }
     dec.faceStar.resize(dec.faces.size());
     for (std::int64_t i = 0; i < dec.faces.size(); ++i) {
         const std::int64_t g = dec.faces.toGlobal[i];
         const Element e = cx.element(n - 1, g);
-        dec.faceStar[i] = dualMeasure(grid, e) /
-                          (primalMeasure(grid, e.axes) * measures.fraction[n - 1][g]);
+        dec.faceStar[i] =
+            dualMeasure(grid, e) / (primalMeasure(grid, e.axes) * measures.fraction[n - 1][g]);
     }
     dec.vorticityStarInverse.resize(dec.vorticity.size());
     for (std::int64_t i = 0; i < dec.vorticity.size(); ++i) {

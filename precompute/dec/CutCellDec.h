@@ -1,8 +1,8 @@
 #pragma once
 /// @file CutCellDec.h
 /// Exterior derivatives and diagonal Hodge stars restricted to the degrees of freedom of a cut-cell
-/// domain (precompute/README.md, seed §6.3.4, appendix C.1). In 3D: cells = 3-forms, faces = 2-forms,
-/// edges = 1-forms (vorticity); in 2D: cells, faces (edges), vertices (vorticity).
+/// domain (precompute/README.md, seed §6.3.4, appendix C.1). In 3D: cells = 3-forms, faces =
+/// 2-forms, edges = 1-forms (vorticity); in 2D: cells, faces (edges), vertices (vorticity).
 
 #include <cstdint>
 #include <vector>
@@ -33,8 +33,8 @@ struct CutCellDec {
     SparseMatrix div;   ///< d_{n-1}: faces → cells ("d2" in 3D), DOFs only
     SparseMatrix curl;  ///< d_{n-2}: vorticity elements → faces ("d1" in 3D), DOFs only
 
-    Eigen::VectorXd cellStar;            ///< ⋆n = 1 / |cell ∩ Ω|
-    Eigen::VectorXd faceStar;            ///< ⋆(n-1) = |dual edge| / |face ∩ Ω|
+    Eigen::VectorXd cellStar;              ///< ⋆n = 1 / |cell ∩ Ω|
+    Eigen::VectorXd faceStar;              ///< ⋆(n-1) = |dual edge| / |face ∩ Ω|
     Eigen::VectorXd vorticityStarInverse;  ///< ⋆(n-2)⁻¹ = |element ∩ Ω| / |dual|
 };
 

@@ -205,9 +205,12 @@ void measureCut(const CubicalComplex& cx, const Domain& domain, int subsamples,
                     const Element e = cx.element(k, id);
                     if (k < grid.dim && cx.onBoxBoundary(e)) continue;
                     const double chi = domain.chi(elementCentre(grid, e));
-                    if (chi > radius + tol) f[id] = 1.0;
-                    else if (chi < -(radius + tol)) f[id] = 0.0;
-                    else f[id] = sampler.fraction(e);
+                    if (chi > radius + tol)
+                        f[id] = 1.0;
+                    else if (chi < -(radius + tol))
+                        f[id] = 0.0;
+                    else
+                        f[id] = sampler.fraction(e);
                 }
             }
         }
@@ -221,8 +224,10 @@ CutCellMeasures measureCutCells(const CubicalComplex& complex, const Domain& dom
                                 BoundaryTreatment treatment, int subsamples) {
     requireDomainAgreesAcrossSeams(complex, domain, subsamples);
     CutCellMeasures m;
-    if (treatment == BoundaryTreatment::Staircase) measureStaircase(complex, domain, m);
-    else measureCut(complex, domain, subsamples, m);
+    if (treatment == BoundaryTreatment::Staircase)
+        measureStaircase(complex, domain, m);
+    else
+        measureCut(complex, domain, subsamples, m);
     requireNoWallOnSeams(complex, m);
     for (auto& f : m.fraction)
         for (double& x : f)

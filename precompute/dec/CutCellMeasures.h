@@ -1,7 +1,7 @@
 #pragma once
 /// @file CutCellMeasures.h
-/// The part of every primal element (vertex, edge, face, cell) that lies inside Ω (precompute/README.md,
-/// seed §6.3.4): the only geometric input of the cut-cell Hodge stars.
+/// The part of every primal element (vertex, edge, face, cell) that lies inside Ω
+/// (precompute/README.md, seed §6.3.4): the only geometric input of the cut-cell Hodge stars.
 
 #include <array>
 #include <vector>

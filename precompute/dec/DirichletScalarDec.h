@@ -1,8 +1,8 @@
 #pragma once
 /// @file DirichletScalarDec.h
-/// Ghost-fluid operators for Dirichlet scalars (precompute/README.md). Cut primal stars alone give the
-/// Neumann spectrum; a zero value on a curved wall needs the wall's position along each dual edge
-/// (Gibou et al. 2002), which converges at second order.
+/// Ghost-fluid operators for Dirichlet scalars (precompute/README.md). Cut primal stars alone give
+/// the Neumann spectrum; a zero value on a curved wall needs the wall's position along each dual
+/// edge (Gibou et al. 2002), which converges at second order.
 
 #include "precompute/dec/CutCellDec.h"
 #include "precompute/geometry/Domain.h"
@@ -11,10 +11,10 @@ namespace modeflow {
 
 struct DirichletScalarDec {
     GridSpec grid;
-    DofMap cells;                 ///< cells whose centre is inside Ω
+    DofMap cells;                     ///< cells whose centre is inside Ω
     std::vector<std::int64_t> faces;  ///< faces beside at least one such cell (complex numbering)
-    SparseMatrix div;             ///< d_{n-1} restricted: cells × faces
-    Eigen::VectorXd cellStar;     ///< 1 / |cell| (uncut: the unknowns are cell-centre samples)
+    SparseMatrix div;                 ///< d_{n-1} restricted: cells × faces
+    Eigen::VectorXd cellStar;         ///< 1 / |cell| (uncut: the unknowns are cell-centre samples)
     /// Face weight |face| / (θ |dual edge|), θ the fraction of the dual edge (centre to
     /// neighbouring centre) inside Ω before the wall; θ = 1 between two inside cells.
     Eigen::VectorXd faceWeight;

@@ -1,12 +1,13 @@
 #pragma once
 /// @file Domain.h
-/// The fluid domain Ω = {x : χ(x) > 0} (precompute/README.md): the scene's shapes combined in order.
+/// The fluid domain Ω = {x : χ(x) > 0} (precompute/README.md): the scene's shapes combined in
+/// order.
 
 #include <memory>
 #include <vector>
 
-#include "precompute/geometry/ImplicitShape.h"
 #include "engine/core/SceneSpec.h"
+#include "precompute/geometry/ImplicitShape.h"
 
 namespace modeflow {
 

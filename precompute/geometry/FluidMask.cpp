@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <optional>
 
-#include "engine/core/MacGrid.h"
 #include "engine/core/Error.h"
+#include "engine/core/MacGrid.h"
 #include "precompute/geometry/Domain.h"
 
 namespace modeflow {
@@ -20,8 +20,9 @@ std::vector<std::uint8_t> fluidMask(const SceneSpec& scene, const BasisCache& ca
     const bool checkCentres = fluidMaskNeedsDomain(scene, scale);
     std::optional<Domain> domain;
     if (checkCentres)
-        domain.emplace(scene.domain, grid.dim,
-                       0.5 * *std::min_element(grid.spacing.begin(), grid.spacing.begin() + grid.dim));
+        domain.emplace(
+            scene.domain, grid.dim,
+            0.5 * *std::min_element(grid.spacing.begin(), grid.spacing.begin() + grid.dim));
     for (int z = 0; z < grid.cells[2]; ++z)
         for (int y = 0; y < grid.cells[1]; ++y)
             for (int x = 0; x < grid.cells[0]; ++x) {

@@ -274,7 +274,6 @@ private:
 
 }  // namespace
 
-
 std::unique_ptr<ImplicitShape> makeShape(const ShapeSpec& spec, int dim, double voxelSize) {
     if (dim != 2 && dim != 3)
         throw Error("shapes exist in 2D or 3D only (got dimension " + std::to_string(dim) + ")");

@@ -6,8 +6,8 @@
 #include <numbers>
 #include <string>
 
-#include "engine/core/MacGrid.h"
 #include "engine/core/Error.h"
+#include "engine/core/MacGrid.h"
 #include "precompute/initial/VortexProjection.h"
 
 namespace modeflow {
@@ -31,7 +31,8 @@ Vec3 centroid(const BasisCache& cache) {
                 for (int x = 0; x < grid.cells[0]; ++x) {
                     const double f = cache.cellFraction[std::size_t(grid.cellIndex(x, y, z))];
                     const int at[3] = {x, y, z};
-                    for (int a = 0; a < cache.grid.dim; ++a) sum[a] += f * grid.cellCentre(a, at[a]);
+                    for (int a = 0; a < cache.grid.dim; ++a)
+                        sum[a] += f * grid.cellCentre(a, at[a]);
                     total += f;
                 }
     }
@@ -60,8 +61,8 @@ UniformField::UniformField(const BasisCache& cache, const std::vector<ShapeSpec>
       mDomain(shapes, cache.grid.dim, levelSetVoxel(cache.grid)),
       mCentre(centroid(cache)),
       mLayer(layer) {
-    const double length =
-        std::sqrt(direction[0] * direction[0] + direction[1] * direction[1] + direction[2] * direction[2]);
+    const double length = std::sqrt(direction[0] * direction[0] + direction[1] * direction[1] +
+                                    direction[2] * direction[2]);
     if (!(length > 0.0)) throw Error("uniform field: the direction must be a non-zero vector");
     if (!(layer > 0.0)) throw Error("uniform field: the wall layer must be positive");
     for (int a = 0; a < 3; ++a) mField[a] = strength * direction[a] / length;
@@ -103,7 +104,8 @@ Vec3 UniformField::operator()(const Vec3& x) const {
     }
     const double w = weight(x);
     const Vec3 turn = cross(gradient, potential);
-    return {w * mField[0] + turn[0], w * mField[1] + turn[1], mGrid.dim == 2 ? 0.0 : w * mField[2] + turn[2]};
+    return {w * mField[0] + turn[0], w * mField[1] + turn[1],
+            mGrid.dim == 2 ? 0.0 : w * mField[2] + turn[2]};
 }
 
 Eigen::VectorXd projectUniformField(const BasisCache& cache, const UniformField& field) {

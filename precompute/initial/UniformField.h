@@ -21,9 +21,9 @@
 
 #include <Eigen/Core>
 
+#include "engine/core/SceneSpec.h"
 #include "engine/format/BasisCache.h"
 #include "precompute/geometry/Domain.h"
-#include "engine/core/SceneSpec.h"
 
 namespace modeflow {
 
@@ -39,8 +39,8 @@ class UniformField {
 public:
     /// @throw Error for a zero `direction`, a non-positive `layer`, or a domain shape that
     /// cannot be built.
-    UniformField(const BasisCache& cache, const std::vector<ShapeSpec>& shapes, const Vec3& direction,
-                 double strength, double layer);
+    UniformField(const BasisCache& cache, const std::vector<ShapeSpec>& shapes,
+                 const Vec3& direction, double strength, double layer);
     Vec3 operator()(const Vec3& x) const;
 
 private:

@@ -17,7 +17,9 @@ Vec3 cross(const Vec3& a, const Vec3& b) {
     return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
 }
 
-double norm(const Vec3& a) { return std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]); }
+double norm(const Vec3& a) {
+    return std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
+}
 
 Vec3 lambOseen(const VortexSpec& v, const Vec3& x) {
     const double dx = x[0] - v.center[0], dy = x[1] - v.center[1];
@@ -89,8 +91,10 @@ Eigen::VectorXd faceFluxes(const BasisCache& cache, const VelocityField& u) {
         int tangent[2] = {-1, -1};
         int t = 0;
         for (int a = 0; a < n; ++a) {
-            if ((e.axes >> a) & 1u) tangent[t++] = a;
-            else normal = a;
+            if ((e.axes >> a) & 1u)
+                tangent[t++] = a;
+            else
+                normal = a;
         }
         Vec3 corner{0.0, 0.0, 0.0};
         for (int a = 0; a < n; ++a) corner[a] = grid.boundsMin[a] + e.pos[a] * grid.spacing(a);
@@ -111,8 +115,8 @@ Eigen::VectorXd faceFluxes(const BasisCache& cache, const VelocityField& u) {
 Eigen::VectorXd projectFluxes(const BasisCache& cache, const Eigen::VectorXd& fluxes) {
     const VelocityBasis basis(cache);
     if (fluxes.size() != basis.dofCount() || cache.faceStar.size() != basis.dofCount()) {
-        throw Error("projection: " + std::to_string(fluxes.size()) + " face fluxes for a basis on " +
-                    std::to_string(basis.dofCount()) + " faces");
+        throw Error("projection: " + std::to_string(fluxes.size()) +
+                    " face fluxes for a basis on " + std::to_string(basis.dofCount()) + " faces");
     }
     return basis.transposed(cache.faceStar.cwiseProduct(fluxes));
 }
@@ -130,9 +134,10 @@ Eigen::VectorXd projectVortices(const BasisCache& cache, std::span<const VortexS
         // |v| by stableNorm: huge strengths would overflow ½|v|² and rescale to 0.
         const double norm = v.stableNorm();
         if (norm == 0.0) {
-            throw Error("[initial].energy: the vortices project to a zero state on this basis "
-                        "(outside the domain, or all strengths 0), so it cannot be rescaled to " +
-                        std::to_string(energy));
+            throw Error(
+                "[initial].energy: the vortices project to a zero state on this basis "
+                "(outside the domain, or all strengths 0), so it cannot be rescaled to " +
+                std::to_string(energy));
         }
         v *= std::sqrt(2.0 * energy) / norm;
     }

@@ -80,7 +80,8 @@ void readPeriodicAxes(const TomlReader& reader, const Section& s, GridSpec& grid
     const toml::array* array = node->as_array();
     if (array == nullptr || int(array->size()) != grid.dim)
         reader.fail(s, "periodic",
-                    "expected " + std::to_string(grid.dim) + " booleans (one per axis, like resolution), got " +
+                    "expected " + std::to_string(grid.dim) +
+                        " booleans (one per axis, like resolution), got " +
                         (array ? std::to_string(array->size()) + " entries" : describeType(*node)),
                     node);
     for (int a = 0; a < grid.dim; ++a) {

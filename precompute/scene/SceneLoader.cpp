@@ -85,6 +85,11 @@ SceneSpec readScene(std::string_view text, const std::filesystem::path& origin) 
         scene.smoke = readSmoke(reader, smoke);
         checkSmokeGridSize(reader, smoke, scene.smoke, scene.grid);
     }
+    if (const toml::table* t = reader.optionalTable(root, "forcing")) {
+        const Section forcing{*t, "[forcing]"};
+        scene.forcing = readForcing(reader, forcing);
+        checkForcingFitsScene(reader, forcing, scene.forcing, scene.basis, scene.simulation);
+    }
     if (const toml::table* t = reader.optionalTable(root, "output")) {
         scene.output = readOutput(reader, {*t, "[output]"});
     }

@@ -18,8 +18,8 @@ using keywords::keywordOf;
 using namespace keywords;
 
 inline constexpr std::string_view kTopLevelTables[] = {
-    "grid",   "domain", "surface", "basis", "simulation",
-    "initial", "source", "obstacle", "smoke", "output"};
+    "grid",   "domain",   "surface", "basis",   "simulation", "initial",
+    "source", "obstacle", "smoke",   "forcing", "output"};
 inline constexpr std::string_view kGridKeys[] = {"resolution", "bounds_min", "bounds_max", "periodic"};
 inline constexpr std::string_view kSurfaceKeys[] = {"mesh"};
 /// [basis] keys that only a grid scene takes.
@@ -51,6 +51,7 @@ inline constexpr std::string_view kVortexKeys3d[] = {"center", "normal", "ring_r
 inline constexpr std::string_view kObstacleKeys[] = {"shape", "radius", "half_size", "axis",
                                                      "path"};
 inline constexpr std::string_view kSmokeKeys[] = {"buoyancy", "resolution_scale", "advection"};
+inline constexpr std::string_view kForcingKeys[] = {"hold_modes", "hold_below_kappa"};
 inline constexpr std::string_view kOutputKeys[] = {"frames", "steps_per_frame"};
 inline constexpr std::string_view kSourceExtraKeys[] = {"density", "temperature", "start", "end"};
 

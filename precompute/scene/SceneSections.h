@@ -47,6 +47,7 @@ std::vector<VortexSpec> readVortices(const TomlReader& reader, const Section& s)
 SourceSpec readSource(const TomlReader& reader, const toml::table& table, int index);
 ObstacleSpec readObstacle(const TomlReader& reader, const Section& s);
 SmokeSpec readSmoke(const TomlReader& reader, const Section& s);
+ForcingSpec readForcing(const TomlReader& reader, const Section& s);
 OutputSpec readOutput(const TomlReader& reader, const Section& s);
 
 }  // namespace modeflow::scene

@@ -85,6 +85,27 @@ void checkInitialFitsBasis(const TomlReader& reader, const Section& s, const Ini
     }
 }
 
+void checkForcingFitsScene(const TomlReader& reader, const Section& s, const ForcingSpec& forcing,
+                           const BasisSpec& basis, const SimulationSpec& simulation) {
+    if (simulation.mhd)
+        reader.fail(s.name,
+                    "holds velocity modes of the fluid model; it cannot be combined with "
+                    "[simulation] mhd = true",
+                    &s.table);
+    const int modeCount = basis.velocityCount();
+    for (const ModeRange& range : forcing.holdModes)
+        if (range.last > modeCount)
+            reader.fail(s, "hold_modes",
+                        "mode " + std::to_string(range.last) +
+                            " is beyond the basis ([basis] has " + std::to_string(modeCount) +
+                            " velocity modes)",
+                        s.table.get("hold_modes"));
+    if (forcing.holdModes.size() == 1 && forcing.holdModes[0].first == 1 &&
+        forcing.holdModes[0].last == modeCount)
+        reader.fail(s, "hold_modes", "holds every mode of the basis: nothing would move",
+                    s.table.get("hold_modes"));
+}
+
 void checkInitialSpeeds(const TomlReader& reader, const Section& s, const InitialSpec& initial,
                         const GridSpec& grid) {
     // Energies are ½∫|u|² dV (the basis is ⋆-orthonormal); 2D grids are one unit deep.

@@ -31,6 +31,10 @@ void checkInitialFitsBasis(const TomlReader& reader, const Section& s, const Ini
 void checkInitialSpeeds(const TomlReader& reader, const Section& s, const InitialSpec& initial,
                         const GridSpec& grid);
 
+/// The held modes of `[forcing]` (`s`) inside the basis, and no `[forcing]` with MHD.
+void checkForcingFitsScene(const TomlReader& reader, const Section& s, const ForcingSpec& forcing,
+                           const BasisSpec& basis, const SimulationSpec& simulation);
+
 /// The smoke grid (the grid refined by `[smoke]` resolution_scale) within kMaxSmokeCells.
 void checkSmokeGridSize(const TomlReader& reader, const Section& s, const SmokeSpec& smoke,
                         const GridSpec& grid);

@@ -1,7 +1,8 @@
 #pragma once
 /// @file Laplacians.h
-/// The symmetric positive semi-definite operators of precompute/README.md / seed appendix C.1, assembled from
-/// restricted incidence matrices and diagonal stars, so symmetry holds by construction.
+/// The symmetric positive semi-definite operators of precompute/README.md / seed appendix C.1,
+/// assembled from restricted incidence matrices and diagonal stars, so symmetry holds by
+/// construction.
 
 #include <Eigen/SparseCore>
 

@@ -8,8 +8,8 @@
 #include <random>
 #include <vector>
 
-#include <Eigen/CholmodSupport>
 #include <Spectra/SymEigsShiftSolver.h>
+#include <Eigen/CholmodSupport>
 
 #include "engine/core/Error.h"
 

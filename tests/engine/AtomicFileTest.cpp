@@ -7,9 +7,9 @@
 #include <iterator>
 #include <string>
 
+#include <signal.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
-#include <signal.h>
 #include <unistd.h>
 
 #include "engine/core/AtomicFile.h"
@@ -28,7 +28,9 @@ std::string contents(const fs::path& file) {
 
 class AtomicFileTest : public ::testing::Test {
 protected:
-    int entries() const { return int(std::distance(fs::directory_iterator(mFolder), fs::directory_iterator())); }
+    int entries() const {
+        return int(std::distance(fs::directory_iterator(mFolder), fs::directory_iterator()));
+    }
     testing::TestFolder mFolder;
 };
 
@@ -58,7 +60,8 @@ TEST_F(AtomicFileTest, AFailedWriteKeepsTheOldFileAndSaysWhy) {
             writeFileAtomically(file, std::string(5000, 'n'), "test file");
         } catch (const Error& e) {
             const std::string message = e.what();
-            const bool named = message.find("cannot write test file " + file.string()) != std::string::npos;
+            const bool named =
+                message.find("cannot write test file " + file.string()) != std::string::npos;
             const bool reason = message.find("File too large") != std::string::npos;
             ::_exit(named && reason ? 0 : 2);
         }

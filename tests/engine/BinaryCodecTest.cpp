@@ -13,7 +13,8 @@ namespace modeflow {
 namespace {
 
 ByteReader readerOf(const std::string& bytes) {
-    return ByteReader(bytes, [](std::string_view why) { return "test record is " + std::string(why); });
+    return ByteReader(bytes,
+                      [](std::string_view why) { return "test record is " + std::string(why); });
 }
 
 TEST(BinaryCodec, ValuesStringsAndArraysRoundTrip) {

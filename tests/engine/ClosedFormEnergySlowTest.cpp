@@ -49,11 +49,14 @@ TEST(ClosedFormEnergy, MidpointConservesEnergyAtTwoThousandModesIn3D) {
         iterations += report.iterations;
         drift = std::max(drift, std::abs(energy(v) - e0) / e0);
     }
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     EXPECT_LE(drift, 1e-9);
-    std::printf("[ measured ] N = %d, %zu non-zeros, %d midpoint steps: energy drift %.2e, "
-                "%.1f iterations per step, %.1f s\n",
-                kModes, cache.coefficients.value.size(), kSteps, drift, double(iterations) / kSteps, seconds);
+    std::printf(
+        "[ measured ] N = %d, %zu non-zeros, %d midpoint steps: energy drift %.2e, "
+        "%.1f iterations per step, %.1f s\n",
+        kModes, cache.coefficients.value.size(), kSteps, drift, double(iterations) / kSteps,
+        seconds);
 }
 
 }  // namespace

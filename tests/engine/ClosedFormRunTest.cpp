@@ -7,9 +7,9 @@
 
 #include <cstdio>
 
+#include "engine/format/SeparableModes.h"
 #include "engine/pipeline/RunInputs.h"
 #include "engine/reference/Simulation.h"
-#include "engine/format/SeparableModes.h"
 #include "precompute/Precompute.h"
 #include "tests/support/TestScenes.h"
 
@@ -44,7 +44,8 @@ TEST(ClosedFormRun, TheReferenceRunTransformsAndEqualsTheRunOnTheColumns) {
     ASSERT_EQ(closed.velocity.source, BasisSource::ClosedForm);
     BasisCache columns = closed;
     columns.velocity.source = BasisSource::Eigensolve;
-    columns.velocity.modes = velocityModeFluxes(closed.grid, closed.faces, closed.velocity.separable);
+    columns.velocity.modes =
+        velocityModeFluxes(closed.grid, closed.faces, closed.velocity.separable);
 
     const RunInputs a = prepareRun(scene, closed), b = prepareRun(scene, columns);
     EXPECT_EQ(a.cache.velocity.modes.cols(), 0) << "a closed-form run forms no columns";
@@ -55,14 +56,17 @@ TEST(ClosedFormRun, TheReferenceRunTransformsAndEqualsTheRunOnTheColumns) {
         dense.advanceSteps(1);
     }
     const Eigen::VectorXd v1 = transformed.velocity(), v2 = dense.velocity();
-    const double state = (v1 - v2).cwiseAbs().maxCoeff() / v2.cwiseAbs().maxCoeff(), faces = relative(transformed.faceVelocity(), dense.faceVelocity()),
+    const double state = (v1 - v2).cwiseAbs().maxCoeff() / v2.cwiseAbs().maxCoeff(),
+                 faces = relative(transformed.faceVelocity(), dense.faceVelocity()),
                  smoke = relative(transformed.smoke().density, dense.smoke().density);
     EXPECT_GT(v2.norm(), 0.0);
     EXPECT_LE(state, 1e-12);
     EXPECT_LE(faces, 1e-12);
     EXPECT_LE(smoke, 1e-12);
-    std::printf("[ measured ] 6 steps, transforms against columns: state %.1e, face velocity %.1e, smoke %.1e\n",
-                state, faces, smoke);
+    std::printf(
+        "[ measured ] 6 steps, transforms against columns: state %.1e, face velocity %.1e, smoke "
+        "%.1e\n",
+        state, faces, smoke);
 }
 
 }  // namespace

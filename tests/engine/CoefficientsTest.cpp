@@ -9,10 +9,10 @@
 
 #include <Eigen/Core>
 
-#include "engine/dynamics/DenseCoefficients.h"
-#include "engine/core/PackedLayout.h"
-#include "engine/dynamics/SparseCoefficients.h"
 #include "engine/core/Error.h"
+#include "engine/core/PackedLayout.h"
+#include "engine/dynamics/DenseCoefficients.h"
+#include "engine/dynamics/SparseCoefficients.h"
 #include "tests/support/RandomCoefficients.h"
 
 namespace modeflow {
@@ -84,9 +84,9 @@ TEST(DenseCoefficients, PackedRoundTripIsExact) {
 }
 
 TEST(SparseCoefficients, RejectsBadEntries) {
-    EXPECT_THROW(SparseCoefficients(4, {{2, 0, 1, 1.0}}), Error);            // k > j
-    EXPECT_THROW(SparseCoefficients(4, {{1, 0, 1, 1.0}}), Error);            // k = j
-    EXPECT_THROW(SparseCoefficients(4, {{0, 4, 1, 1.0}}), Error);            // i out of range
+    EXPECT_THROW(SparseCoefficients(4, {{2, 0, 1, 1.0}}), Error);                  // k > j
+    EXPECT_THROW(SparseCoefficients(4, {{1, 0, 1, 1.0}}), Error);                  // k = j
+    EXPECT_THROW(SparseCoefficients(4, {{0, 4, 1, 1.0}}), Error);                  // i out of range
     EXPECT_THROW(SparseCoefficients(4, {{0, 1, 2, 1.0}, {0, 1, 2, 2.0}}), Error);  // twice
     const SparseCoefficients c(4, {{0, 3, 2, 1.5}, {1, 1, 3, -2.0}, {0, 0, 2, 0.0}});
     EXPECT_EQ(c.nonZeros(), 2u);

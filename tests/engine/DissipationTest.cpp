@@ -1,9 +1,11 @@
 /// @file DissipationTest.cpp
 /// Viscosity by exact per-mode exponentials (seed §6.3.5), operator-split around every scheme,
-/// with the arbitrary κ² order of frequency-shaped bases.
+/// with the arbitrary κ² order of frequency-shaped bases; held modes ([forcing]) that feed the
+/// energy viscosity takes.
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -51,6 +53,36 @@ TEST(Viscosity, LoneModeDecaysExactlyForAnyStep) {
             EXPECT_EQ(v.norm(), 0.0) << "other modes were excited";
         }
     }
+}
+
+TEST(HeldModes, KeepTheirAmplitudeUnderEverySchemeAndFeedTheOthers) {
+    const int n = 24;
+    const DenseCoefficients c = DenseCoefficients::fromFull(n, randomFullTensor(n, 403));
+    const Eigen::VectorXd k2 = shapedKappaSquared(n);
+    const std::vector<int> held = {0, 1, 5};
+    const FluidSystem forced(c, {k2, 0.02, 0.0, held});
+    const FluidSystem free(c, {k2, 0.02, 0.0});
+    Eigen::VectorXd v0 = Eigen::VectorXd::Zero(n);
+    for (const int k : held) v0[k] = 1.0;  // all the energy in the held modes
+    for (Integrator scheme :
+         {Integrator::Explicit, Integrator::Rk4, Integrator::Midpoint, Integrator::Trapezoidal}) {
+        ModalIntegrator integrator(forced, {scheme});
+        ModalIntegrator unforced(free, {scheme});
+        Eigen::VectorXd v = v0, w = v0;
+        for (int s = 0; s < 400; ++s) {
+            integrator.step(v, 0.01);
+            unforced.step(w, 0.01);
+        }
+        for (const int k : held) EXPECT_EQ(v[k], v0[k]) << sceneKeyword(scheme) << ", mode " << k;
+        double others = 0.0;
+        for (int k = 0; k < n; ++k)
+            if (std::find(held.begin(), held.end(), k) == held.end()) others += 0.5 * v[k] * v[k];
+        EXPECT_GT(others, 1e-3) << sceneKeyword(scheme) << ": the held modes passed no energy on";
+        // Without holding, viscosity and the exchange take energy from the same modes.
+        EXPECT_LT(energy(w), energy(v0)) << sceneKeyword(scheme);
+        EXPECT_GT(energy(v), energy(w)) << sceneKeyword(scheme);
+    }
+    EXPECT_THROW(FluidSystem(c, {k2, 0.0, 0.0, {n}}), Error);
 }
 
 TEST(Viscosity, EnergyFallsEveryStepAndAtLeastAtTheSlowestRate) {

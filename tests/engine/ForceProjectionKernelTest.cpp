@@ -13,12 +13,12 @@
 
 #include <gtest/gtest.h>
 
-#include "engine/reference/ForceField.h"
-#include "engine/reference/ForceProjection.h"
 #include "engine/device/ForceField.h"
 #include "engine/device/ForceProjection.h"
 #include "engine/device/ModeBuffer.h"
 #include "engine/device/VelocityReconstruction.h"
+#include "engine/reference/ForceField.h"
+#include "engine/reference/ForceProjection.h"
 #include "engine/vulkan/CommandSequence.h"
 #include "engine/vulkan/DeviceBuffer.h"
 #include "tests/support/KernelTestSupport.h"
@@ -30,13 +30,13 @@
 namespace modeflow {
 namespace {
 
-using vulkan::CommandSequence;
-using vulkan::DeviceBuffer;
 using device::ForceFieldKernel;
 using device::ForceProjectionKernel;
 using device::ForceProjectionOptions;
 using device::ModeBuffer;
 using device::ReconstructionKernel;
+using vulkan::CommandSequence;
+using vulkan::DeviceBuffer;
 
 const std::vector<ForceSplat>& splats() {
     static const std::vector<ForceSplat> all{{{0.2, -0.3, 0.1}, {1.5, -0.5, 2.0}, 0.3},
@@ -44,7 +44,8 @@ const std::vector<ForceSplat>& splats() {
     return all;
 }
 
-/// A smoke-grid temperature in [0, 1], float-rounded, and a fluid mask (cell centres in the unit ball).
+/// A smoke-grid temperature in [0, 1], float-rounded, and a fluid mask (cell centres in the unit
+/// ball).
 struct Smoke {
     std::vector<double> temperature;
     std::vector<std::uint8_t> mask;
@@ -72,11 +73,12 @@ DeviceBuffer maskBuffer(const vulkan::VulkanContext& context, std::vector<std::u
     return DeviceBuffer::fromValues<std::uint8_t>(context, mask, "fluid mask");
 }
 
-Eigen::VectorXd forceFieldOnDevice(const vulkan::VulkanContext& context, const BasisCache& cache, int scale,
-                                   double buoyancy, const Smoke& smoke, bool useMask) {
+Eigen::VectorXd forceFieldOnDevice(const vulkan::VulkanContext& context, const BasisCache& cache,
+                                   int scale, double buoyancy, const Smoke& smoke, bool useMask) {
     ForceFieldKernel kernel(context, cache, scale);
     kernel.setSplats(splats());
-    const DeviceBuffer temperature = DeviceBuffer::fromValues<float>(context, testing::toFloat(smoke.temperature), "T");
+    const DeviceBuffer temperature =
+        DeviceBuffer::fromValues<float>(context, testing::toFloat(smoke.temperature), "T");
     const DeviceBuffer mask = maskBuffer(context, smoke.mask);
     const std::vector<float> nan(cache.faces.size(), std::numeric_limits<float>::quiet_NaN());
     const DeviceBuffer g = DeviceBuffer::fromValues<float>(context, nan, "g");
@@ -87,14 +89,16 @@ Eigen::VectorXd forceFieldOnDevice(const vulkan::VulkanContext& context, const B
 }
 
 /// f = Ψᵀ(w ∘ q) on the device; q per DOF (Density) or a whole face field (FaceField).
-Eigen::VectorXd projectOnDevice(const vulkan::VulkanContext& context, const BasisCache& cache, const Eigen::VectorXd& q,
-                                FaceQuantity quantity, ModePrecision precision, const ForceProjectionOptions& options = {},
+Eigen::VectorXd projectOnDevice(const vulkan::VulkanContext& context, const BasisCache& cache,
+                                const Eigen::VectorXd& q, FaceQuantity quantity,
+                                ModePrecision precision, const ForceProjectionOptions& options = {},
                                 std::size_t* chunks = nullptr) {
     const ModeBuffer modes(context, cache.velocity.modes, precision);
     if (chunks) *chunks = modes.chunks().size();
     const ForceProjectionKernel kernel(context, cache, quantity, options);
     const DeviceBuffer input = DeviceBuffer::fromValues<float>(context, testing::toFloat(q), "q");
-    const std::vector<float> nan(std::size_t(modes.modeCount()), std::numeric_limits<float>::quiet_NaN());
+    const std::vector<float> nan(std::size_t(modes.modeCount()),
+                                 std::numeric_limits<float>::quiet_NaN());
     const DeviceBuffer f = DeviceBuffer::fromValues<float>(context, nan, "f");
     CommandSequence sequence(context);
     kernel.record(sequence, modes, input, f);
@@ -102,10 +106,12 @@ Eigen::VectorXd projectOnDevice(const vulkan::VulkanContext& context, const Basi
     return testing::downloadFloats(f, nan.size());
 }
 
-Eigen::VectorXd projectOnRounded(const BasisCache& cache, const Eigen::VectorXd& q, ModePrecision precision) {
+Eigen::VectorXd projectOnRounded(const BasisCache& cache, const Eigen::VectorXd& q,
+                                 ModePrecision precision) {
     const BasisCache rounded = testing::withDeviceModes(cache, precision);
     // What the device multiplies: float32 weights and inputs.
-    const Eigen::VectorXd w = testing::roundedToFloat(projectionWeights(cache, FaceQuantity::Density));
+    const Eigen::VectorXd w =
+        testing::roundedToFloat(projectionWeights(cache, FaceQuantity::Density));
     return rounded.velocity.modes.transpose() * w.cwiseProduct(testing::roundedToFloat(q));
 }
 
@@ -120,10 +126,13 @@ TEST_P(ForceProjectionKernelTest, ForceFieldEqualsTheCpuReference) {
         for (const int scale : {1, 2, 3})
             for (const bool useMask : {false, true}) {
                 const Smoke smoke = randomSmoke(*cache, scale, 3 + scale);
-                const Eigen::VectorXd device = forceFieldOnDevice(context(), *cache, scale, 1.7, smoke, useMask);
+                const Eigen::VectorXd device =
+                    forceFieldOnDevice(context(), *cache, scale, 1.7, smoke, useMask);
                 ASSERT_FALSE(device.hasNaN()) << "a DOF was never written";
                 const reference::BuoyancyInput input{1.7, scale, smoke.temperature,
-                                          useMask ? std::span<const std::uint8_t>(smoke.mask) : std::span<const std::uint8_t>()};
+                                                     useMask
+                                                         ? std::span<const std::uint8_t>(smoke.mask)
+                                                         : std::span<const std::uint8_t>()};
                 const Eigen::VectorXd reference = reference::forceDensity(*cache, input, splats());
                 EXPECT_LE(testing::relativeError(device, reference), 1e-5)
                     << cache->grid.dim << "D, periodic " << cache->grid.periodic[0]
@@ -138,13 +147,16 @@ TEST_P(ForceProjectionKernelTest, ProjectionEqualsTheCpuReference) {
         const Eigen::VectorXd g = testing::randomVector(Eigen::Index(cache->faces.size()), 5);
         const Eigen::VectorXd exact = reference::projectForce(*cache, g, FaceQuantity::Density);
         for (const ModePrecision precision : {ModePrecision::Float32, ModePrecision::Float16}) {
-            const Eigen::VectorXd device = projectOnDevice(context(), *cache, g, FaceQuantity::Density, precision);
+            const Eigen::VectorXd device =
+                projectOnDevice(context(), *cache, g, FaceQuantity::Density, precision);
             ASSERT_FALSE(device.hasNaN());
-            const double error = testing::relativeError(device, projectOnRounded(*cache, g, precision));
+            const double error =
+                testing::relativeError(device, projectOnRounded(*cache, g, precision));
             const double exactError = testing::relativeError(device, exact);
             const bool half = precision == ModePrecision::Float16;
-            std::cout << cache->grid.dim << "D, " << cache->faces.size() << " DOFs, " << (half ? "float16" : "float32")
-                      << ": relative error " << error << " (against double modes " << exactError << ")\n";
+            std::cout << cache->grid.dim << "D, " << cache->faces.size() << " DOFs, "
+                      << (half ? "float16" : "float32") << ": relative error " << error
+                      << " (against double modes " << exactError << ")\n";
             EXPECT_LE(error, 1e-5);
             EXPECT_LE(exactError, half ? 1e-3 : 1e-5);
         }
@@ -155,12 +167,14 @@ TEST_P(ForceProjectionKernelTest, BlockAndWorkgroupSizesGiveTheSameProjection) {
     const BasisCache& cache = testing::ball3d();
     const Eigen::VectorXd g = testing::randomVector(Eigen::Index(cache.faces.size()), 6);
     const Eigen::VectorXd reference = projectOnRounded(cache, g, ModePrecision::Float32);
-    for (const auto& [workgroup, dofs] : {std::pair{64u, 64u}, std::pair{64u, 1000u}, std::pair{48u, 100u},
-                                          std::pair{1u, 7u}, std::pair{100u, 1u << 20}}) {
+    for (const auto& [workgroup, dofs] :
+         {std::pair{64u, 64u}, std::pair{64u, 1000u}, std::pair{48u, 100u}, std::pair{1u, 7u},
+          std::pair{100u, 1u << 20}}) {
         const Eigen::VectorXd device = projectOnDevice(context(), cache, g, FaceQuantity::Density,
                                                        ModePrecision::Float32, {workgroup, dofs});
         ASSERT_FALSE(device.hasNaN()) << workgroup << ", " << dofs;
-        EXPECT_LE(testing::relativeError(device, reference), 1e-5) << "workgroup " << workgroup << ", block " << dofs;
+        EXPECT_LE(testing::relativeError(device, reference), 1e-5)
+            << "workgroup " << workgroup << ", block " << dofs;
     }
 }
 
@@ -168,12 +182,13 @@ TEST_P(ForceProjectionKernelTest, SplitModeBuffersGiveTheSameProjection) {
     const BasisCache& cache = testing::disk2d();
     const Eigen::VectorXd g = testing::randomVector(Eigen::Index(cache.faces.size()), 7);
     for (const ModePrecision precision : {ModePrecision::Float32, ModePrecision::Float16}) {
-        const Eigen::VectorXd whole = projectOnDevice(context(), cache, g, FaceQuantity::Density, precision);
+        const Eigen::VectorXd whole =
+            projectOnDevice(context(), cache, g, FaceQuantity::Density, precision);
         const ModeBuffer probe(context(), cache.velocity.modes, precision);
         // Room for 6 modes (chunks of 4, ModeBuffer rounds down) and for 3 (chunks of 3).
         for (const int modesPerBuffer : {6, 3}) {
-            const auto limited =
-                testing::makeLimitedContext(GetParam(), VkDeviceSize(probe.modeStride()) * 4 * modesPerBuffer);
+            const auto limited = testing::makeLimitedContext(
+                GetParam(), VkDeviceSize(probe.modeStride()) * 4 * modesPerBuffer);
             std::size_t chunks = 0;
             const Eigen::VectorXd split =
                 projectOnDevice(*limited, cache, g, FaceQuantity::Density, precision, {}, &chunks);
@@ -200,10 +215,11 @@ TEST_P(ForceProjectionKernelTest, ReconstructThenProjectGivesTheStateBack) {
             reconstruct.record(sequence, modes, state, field);
             project.record(sequence, modes, field, back);
             sequence.submitAndWait();
-            const double error = testing::relativeError(testing::downloadFloats(back, std::size_t(v.size())), v);
+            const double error =
+                testing::relativeError(testing::downloadFloats(back, std::size_t(v.size())), v);
             const bool half = precision == ModePrecision::Float16;
-            std::cout << cache->grid.dim << "D, " << (half ? "float16" : "float32") << ": round trip relative error "
-                      << error << "\n";
+            std::cout << cache->grid.dim << "D, " << (half ? "float16" : "float32")
+                      << ": round trip relative error " << error << "\n";
             EXPECT_LE(error, half ? 2e-3 : 1e-5);
         }
 }
@@ -226,9 +242,14 @@ TEST_P(ForceProjectionKernelTest, UniformBuoyancyProjectsToNearlyZero) {
         // Relative to the largest term Σ_d |Ψ_k[d] w_d g_d| of the sums.
         const Eigen::VectorXd w = projectionWeights(*cache, FaceQuantity::Density);
         const Eigen::VectorXd gDevice = testing::downloadFloats(g, cache->faces.size());
-        const double scaleOfTerms = (cache->velocity.modes.cwiseAbs().transpose() * w.cwiseProduct(gDevice).cwiseAbs()).maxCoeff();
-        const double surviving = testing::downloadFloats(f, modes.modeCount()).lpNorm<Eigen::Infinity>() / scaleOfTerms;
-        std::cout << cache->grid.dim << "D: projected uniform buoyancy / its largest term, float32: " << surviving << "\n";
+        const double scaleOfTerms =
+            (cache->velocity.modes.cwiseAbs().transpose() * w.cwiseProduct(gDevice).cwiseAbs())
+                .maxCoeff();
+        const double surviving =
+            testing::downloadFloats(f, modes.modeCount()).lpNorm<Eigen::Infinity>() / scaleOfTerms;
+        std::cout << cache->grid.dim
+                  << "D: projected uniform buoyancy / its largest term, float32: " << surviving
+                  << "\n";
         EXPECT_LE(surviving, 1e-6);
     }
 }
@@ -271,7 +292,8 @@ TEST_P(ForceProjectionKernelTest, TheWholeChainAtNEquals100MatchesTheReference) 
         field.setSplats(splats());
         const ForceProjectionKernel project(context(), cache, FaceQuantity::Density);
         const Smoke smoke = randomSmoke(cache, 2, 1);
-        const DeviceBuffer temperature = DeviceBuffer::fromValues<float>(context(), testing::toFloat(smoke.temperature), "T");
+        const DeviceBuffer temperature =
+            DeviceBuffer::fromValues<float>(context(), testing::toFloat(smoke.temperature), "T");
         const Eigen::VectorXd v = testing::randomVector(100, 2);
         const DeviceBuffer state = testing::stateBuffer(context(), v);
         const DeviceBuffer faceField = reconstruct.makeFaceField();
@@ -283,12 +305,14 @@ TEST_P(ForceProjectionKernelTest, TheWholeChainAtNEquals100MatchesTheReference) 
         project.record(sequence, modes, g, f);
         sequence.submitAndWait();
         const Eigen::VectorXd reference = projectOnRounded(
-            cache, reference::forceDensity(cache, {1.0, 2, smoke.temperature, {}}, splats()), precision);
+            cache, reference::forceDensity(cache, {1.0, 2, smoke.temperature, {}}, splats()),
+            precision);
         EXPECT_LE(testing::relativeError(testing::downloadFloats(f, 100), reference), 1e-4);
     }
 }
 
-INSTANTIATE_TEST_SUITE_P(Vulkan, ForceProjectionKernelTest, ::testing::Bool(), testing::validationName);
+INSTANTIATE_TEST_SUITE_P(Vulkan, ForceProjectionKernelTest, ::testing::Bool(),
+                         testing::validationName);
 
 }  // namespace
 }  // namespace modeflow

@@ -12,11 +12,11 @@
 
 #include <gtest/gtest.h>
 
+#include "engine/core/Error.h"
 #include "engine/core/FaceLocation.h"
 #include "engine/reference/ForceField.h"
 #include "engine/reference/ForceProjection.h"
 #include "engine/reference/VelocityReconstruction.h"
-#include "engine/core/Error.h"
 #include "precompute/dec/CubicalComplex.h"
 #include "precompute/dec/CutCellDec.h"
 #include "tests/support/RandomCoefficients.h"
@@ -36,9 +36,11 @@ std::vector<std::uint8_t> smokeMask(const BasisCache& cache, int scale, bool byC
             for (int x = 0; x < smoke.cells[0]; ++x) {
                 const double cx = smoke.cellCentre(0, x), cy = smoke.cellCentre(1, y);
                 const double cz = smoke.dim == 3 ? smoke.cellCentre(2, z) : 0.0;
-                const std::int64_t cell = basis.cellIndex(x / scale, y / scale, basis.dim == 3 ? z / scale : 0);
+                const std::int64_t cell =
+                    basis.cellIndex(x / scale, y / scale, basis.dim == 3 ? z / scale : 0);
                 mask[std::size_t(smoke.cellIndex(x, y, z))] =
-                    byCentre ? cx * cx + cy * cy + cz * cz < 1.0 : cache.cellFraction[std::size_t(cell)] > 0.0;
+                    byCentre ? cx * cx + cy * cy + cz * cz < 1.0
+                             : cache.cellFraction[std::size_t(cell)] > 0.0;
             }
     return mask;
 }
@@ -64,19 +66,22 @@ TEST(ForceProjection, DensityWeightIsTheDualEdgeLengthThatTheStarsImply) {
             const Element e = complex.element(n - 1, cache->faces[d]);
             const FaceLocation face = locateFace(grid, cache->faces[d]);
             ASSERT_EQ(e.pos, face.pos);
-            ASSERT_EQ(e.axes, ((1u << n) - 1) & ~(1u << face.axis)) << "the two face numberings differ";
+            ASSERT_EQ(e.axes, ((1u << n) - 1) & ~(1u << face.axis))
+                << "the two face numberings differ";
             const auto i = Eigen::Index(d);
             const double dual = dualMeasure(cache->grid, e);
             EXPECT_EQ(dual, w[i]) << "DOF " << d;
             const double cutArea = dual / cache->faceStar[i];
             EXPECT_LE(cutArea, grid.faceArea(face.axis) * (1.0 + 1e-12));
-            whole += std::abs(cutArea - grid.faceArea(face.axis)) <= 1e-12 * grid.faceArea(face.axis);
+            whole +=
+                std::abs(cutArea - grid.faceArea(face.axis)) <= 1e-12 * grid.faceArea(face.axis);
             starFlux[i] = cache->faceStar[i] * g[i] * cutArea;
         }
         EXPECT_GT(whole, 0);
         const Eigen::VectorXd reference = cache->velocity.modes.transpose() * starFlux;
         const Eigen::VectorXd f = reference::projectForce(*cache, g, FaceQuantity::Density);
-        EXPECT_LE((f - reference).lpNorm<Eigen::Infinity>(), 1e-13 * reference.lpNorm<Eigen::Infinity>());
+        EXPECT_LE((f - reference).lpNorm<Eigen::Infinity>(),
+                  1e-13 * reference.lpNorm<Eigen::Infinity>());
     }
 }
 
@@ -95,7 +100,8 @@ TEST(ForceProjection, ProjectingAReconstructedFieldGivesTheStateBack) {
             g[Eigen::Index(d)] = field[std::size_t(cache->faces[d])] * grid.faceArea(axis) *
                                  cache->faceStar[Eigen::Index(d)] / grid.spacing[axis];
         }
-        const Eigen::VectorXd viaDensity = reference::projectForce(*cache, g, FaceQuantity::Density);
+        const Eigen::VectorXd viaDensity =
+            reference::projectForce(*cache, g, FaceQuantity::Density);
         EXPECT_LE((viaDensity - v).lpNorm<Eigen::Infinity>(), 1e-12 * v.lpNorm<Eigen::Infinity>());
     }
 }
@@ -104,7 +110,8 @@ TEST(ForceProjection, ProjectingAReconstructedFieldGivesTheStateBack) {
 double survivingFraction(const BasisCache& cache, const Eigen::VectorXd& g) {
     const Eigen::VectorXd w = projectionWeights(cache, FaceQuantity::Density);
     const Eigen::VectorXd f = reference::projectForce(cache, g, FaceQuantity::Density);
-    const Eigen::VectorXd scale = cache.velocity.modes.cwiseAbs().transpose() * w.cwiseProduct(g).cwiseAbs();
+    const Eigen::VectorXd scale =
+        cache.velocity.modes.cwiseAbs().transpose() * w.cwiseProduct(g).cwiseAbs();
     return f.lpNorm<Eigen::Infinity>() / scale.maxCoeff();
 }
 
@@ -117,18 +124,20 @@ TEST(ForceProjection, UniformBuoyancyIsAGradientAndProjectsToZero) {
             const std::vector<double> everywhere(std::size_t(smoke.cellCount()), 1.0);
             const std::vector<std::uint8_t> cellMask = smokeMask(*cache, scale, false);
             const std::vector<std::uint8_t> centreMask = smokeMask(*cache, scale, true);
-            const std::vector<double> inCells = onesInside(cellMask), inCentres = onesInside(centreMask);
+            const std::vector<double> inCells = onesInside(cellMask),
+                                      inCentres = onesInside(centreMask);
             auto surviving = [&](std::span<const double> t, std::span<const std::uint8_t> mask) {
-                return survivingFraction(*cache, reference::forceDensity(*cache, {2.0, scale, t, mask}, {}));
+                return survivingFraction(
+                    *cache, reference::forceDensity(*cache, {2.0, scale, t, mask}, {}));
             };
             const double uniform = surviving(everywhere, {});
             const double byCells = surviving(inCells, cellMask);
             const double byCentres = surviving(inCentres, centreMask);
             const double unmasked = surviving(inCentres, {});
             std::cout << cache->grid.dim << "D, smoke scale " << scale
-                      << ": projected uniform buoyancy / its largest term: T = 1 everywhere " << uniform
-                      << "; T = 0 outside the mask: basis-cell mask " << byCells << ", cell-centre mask "
-                      << byCentres << ", no mask " << unmasked << "\n";
+                      << ": projected uniform buoyancy / its largest term: T = 1 everywhere "
+                      << uniform << "; T = 0 outside the mask: basis-cell mask " << byCells
+                      << ", cell-centre mask " << byCentres << ", no mask " << unmasked << "\n";
             EXPECT_LE(uniform, 1e-12);
             // Every DOF face's dual cell holds fluid smoke cells of a basis-cell mask: still exact.
             EXPECT_LE(byCells, 1e-12);
@@ -146,12 +155,15 @@ TEST(ForceProjection, DualCellMeanCoversHalfACellEachSideWithHalfEndCellsForOddS
     const MacGrid smoke = basis.refined(scale);
     const FaceLocation face{1, {0, 1, 0}};  // up face between basis cells (0, 0) and (0, 1)
     // Dual cell: smoke x 0..2, y from 3 − 1.5 to 3 + 1.5: rows 1 and 4 half, rows 2 and 3 whole.
-    for (const auto& [x, y, expected] : {std::tuple{0, 1, 0.5 / 9}, std::tuple{2, 2, 1.0 / 9},
-                                         std::tuple{1, 3, 1.0 / 9}, std::tuple{1, 4, 0.5 / 9},
-                                         std::tuple{1, 0, 0.0}, std::tuple{1, 5, 0.0}, std::tuple{3, 2, 0.0}}) {
+    for (const auto& [x, y, expected] :
+         {std::tuple{0, 1, 0.5 / 9}, std::tuple{2, 2, 1.0 / 9}, std::tuple{1, 3, 1.0 / 9},
+          std::tuple{1, 4, 0.5 / 9}, std::tuple{1, 0, 0.0}, std::tuple{1, 5, 0.0},
+          std::tuple{3, 2, 0.0}}) {
         std::vector<double> temperature(std::size_t(smoke.cellCount()), 0.0);
         temperature[std::size_t(smoke.cellIndex(x, y, 0))] = 1.0;
-        EXPECT_DOUBLE_EQ(reference::dualCellTemperature(basis, scale, face, temperature, {}), expected) << x << ", " << y;
+        EXPECT_DOUBLE_EQ(reference::dualCellTemperature(basis, scale, face, temperature, {}),
+                         expected)
+            << x << ", " << y;
     }
     // A linear temperature averages to its value at the face centre, for any scale, 2D and 3D.
     for (const int dim : {2, 3})
@@ -163,12 +175,14 @@ TEST(ForceProjection, DualCellMeanCoversHalfACellEachSideWithHalfEndCellsForOddS
                 for (int y = 0; y < fine.cells[1]; ++y)
                     for (int x = 0; x < fine.cells[0]; ++x)
                         temperature[std::size_t(fine.cellIndex(x, y, z))] =
-                            linear({fine.cellCentre(0, x), fine.cellCentre(1, y), dim == 3 ? fine.cellCentre(2, z) : 0.0});
+                            linear({fine.cellCentre(0, x), fine.cellCentre(1, y),
+                                    dim == 3 ? fine.cellCentre(2, z) : 0.0});
             const int up = upAxis(b);
             for (std::int64_t f = b.faceOffset(up); f < b.faceOffset(up) + b.faceCount(up); ++f) {
                 const FaceLocation location = locateFace(b, f);
                 if (location.pos[up] == 0 || location.pos[up] == b.cells[up]) continue;
-                EXPECT_NEAR(reference::dualCellTemperature(b, s, location, temperature, {}), linear(faceCentre(b, location)), 1e-13)
+                EXPECT_NEAR(reference::dualCellTemperature(b, s, location, temperature, {}),
+                            linear(faceCentre(b, location)), 1e-13)
                     << dim << "D, scale " << s << ", face " << f;
             }
         }
@@ -232,17 +246,24 @@ TEST(ForceProjection, SplatsPushAlongTheirForce) {
                     const FaceLocation face = locateFace(grid, cache->faces[d]);
                     const Vec3 x = faceCentre(grid, face);
                     double r2 = 0.0;
-                    for (int a = 0; a < n; ++a) r2 += (x[a] - splat.centre[a]) * (x[a] - splat.centre[a]);
-                    EXPECT_NEAR(g[Eigen::Index(d)], face.axis == axis ? splat.force[axis] * std::exp(-r2 / 0.35 / 0.35) : 0.0,
-                                1e-14);
+                    for (int a = 0; a < n; ++a)
+                        r2 += (x[a] - splat.centre[a]) * (x[a] - splat.centre[a]);
+                    EXPECT_NEAR(
+                        g[Eigen::Index(d)],
+                        face.axis == axis ? splat.force[axis] * std::exp(-r2 / 0.35 / 0.35) : 0.0,
+                        1e-14);
                 }
-                // The velocity the modal force makes (v = f): net flow along the force near the centre.
-                const std::vector<double> u = reference::reconstructFaceField(*cache, reference::projectForce(*cache, g, FaceQuantity::Density));
+                // The velocity the modal force makes (v = f): net flow along the force near the
+                // centre.
+                const std::vector<double> u = reference::reconstructFaceField(
+                    *cache, reference::projectForce(*cache, g, FaceQuantity::Density));
                 double momentum = 0.0;
-                for (std::int64_t f = grid.faceOffset(axis); f < grid.faceOffset(axis) + grid.faceCount(axis); ++f) {
+                for (std::int64_t f = grid.faceOffset(axis);
+                     f < grid.faceOffset(axis) + grid.faceCount(axis); ++f) {
                     const Vec3 x = faceCentre(grid, locateFace(grid, f));
                     double r2 = 0.0;
-                    for (int a = 0; a < n; ++a) r2 += (x[a] - splat.centre[a]) * (x[a] - splat.centre[a]);
+                    for (int a = 0; a < n; ++a)
+                        r2 += (x[a] - splat.centre[a]) * (x[a] - splat.centre[a]);
                     if (r2 < 0.35 * 0.35) momentum += u[std::size_t(f)];
                 }
                 EXPECT_GT(momentum * sign, 0.0) << n << "D, axis " << axis << ", sign " << sign;
@@ -256,11 +277,14 @@ TEST(ForceProjection, BadInputsAreRefused) {
     EXPECT_THROW(reference::forceDensity(cache, {1.0, 1, wrong, {}}, {}), Error);
     const MacGrid smoke = MacGrid::fromSpec(cache.grid).refined(2);
     const std::vector<double> right(std::size_t(smoke.cellCount()), 1.0);
-    EXPECT_THROW(reference::forceDensity(cache, {1.0, 2, right, std::vector<std::uint8_t>(3, 1)}, {}), Error);
+    EXPECT_THROW(
+        reference::forceDensity(cache, {1.0, 2, right, std::vector<std::uint8_t>(3, 1)}, {}),
+        Error);
     EXPECT_THROW(reference::forceDensity(cache, {1.0, 0, right, {}}, {}), Error);
     const std::vector<ForceSplat> flat{ForceSplat{{0.0, 0.0, 0.0}, {1.0, 0.0, 0.0}, 0.0}};
     EXPECT_THROW(reference::forceDensity(cache, {}, flat), Error);
-    EXPECT_THROW(reference::projectForce(cache, Eigen::VectorXd::Zero(3), FaceQuantity::Density), Error);
+    EXPECT_THROW(reference::projectForce(cache, Eigen::VectorXd::Zero(3), FaceQuantity::Density),
+                 Error);
     EXPECT_THROW(reference::projectFaceField(cache, wrong), Error);
 }
 

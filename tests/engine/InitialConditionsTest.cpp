@@ -8,9 +8,9 @@
 
 #include <Eigen/Core>
 
+#include "engine/core/Error.h"
 #include "engine/dynamics/Diagnostics.h"
 #include "engine/dynamics/InitialConditions.h"
-#include "engine/core/Error.h"
 
 namespace modeflow {
 namespace {

@@ -63,7 +63,9 @@ TEST(InputScriptTest, RefusesBadLinesNamingThem) {
         }
         return std::string("accepted");
     };
-    EXPECT_EQ(message("0.1 wiggle 0.2 0.2\n"), "drag.txt:1: unknown event \"wiggle\" (down, up, move, rdown, rup, key, scroll, resize)");
+    EXPECT_EQ(
+        message("0.1 wiggle 0.2 0.2\n"),
+        "drag.txt:1: unknown event \"wiggle\" (down, up, move, rdown, rup, key, scroll, resize)");
     EXPECT_EQ(message("0.1 move 0.2\n"), "drag.txt:1: missing y");
     EXPECT_EQ(message("\n0.1 move 1.5 0.2\n"),
               "drag.txt:2: x \"1.5\" is not a fraction of the window in [0, 1]");

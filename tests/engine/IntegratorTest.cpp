@@ -13,14 +13,14 @@
 
 #include <Eigen/Core>
 
+#include "engine/core/Error.h"
+#include "engine/core/PackedLayout.h"
 #include "engine/dynamics/DenseCoefficients.h"
 #include "engine/dynamics/Diagnostics.h"
 #include "engine/dynamics/FluidSystem.h"
 #include "engine/dynamics/MhdSystem.h"
 #include "engine/dynamics/ModalIntegrator.h"
 #include "precompute/scene/SceneLoader.h"
-#include "engine/core/PackedLayout.h"
-#include "engine/core/Error.h"
 #include "tests/support/RandomCoefficients.h"
 
 namespace modeflow {
@@ -81,9 +81,10 @@ TEST_F(RandomState, MidpointConservesEnergyAtALargeStep) {
     EXPECT_GE(s.meanIterations, 1.0);
     EXPECT_LE(s.maxResidual, 1e-13);
     EXPECT_TRUE(s.converged);
-    std::printf("midpoint h|R|/|v| = 0.3, 1e4 steps: drift %.3g, Newton mean %.2f max %d, "
-                "Jacobians mean %.2f\n",
-                s.maxEnergyDrift, s.meanIterations, s.maxIterations, s.meanJacobians);
+    std::printf(
+        "midpoint h|R|/|v| = 0.3, 1e4 steps: drift %.3g, Newton mean %.2f max %d, "
+        "Jacobians mean %.2f\n",
+        s.maxEnergyDrift, s.meanIterations, s.maxIterations, s.meanJacobians);
 }
 
 TEST_F(RandomState, NewtonKrylovMatchesTheDenseNewtonAndConservesEnergy) {
@@ -94,8 +95,8 @@ TEST_F(RandomState, NewtonKrylovMatchesTheDenseNewtonAndConservesEnergy) {
     const double small = stepFor(mC, mV0, 0.05);
     for (Integrator scheme : {Integrator::Midpoint, Integrator::Trapezoidal}) {
         krylov.scheme = scheme;
-        for (const auto& [h, expected] : {std::pair{small, NewtonSolver::FixedPoint},
-                                          std::pair{mH, NewtonSolver::Krylov}}) {
+        for (const auto& [h, expected] :
+             {std::pair{small, NewtonSolver::FixedPoint}, std::pair{mH, NewtonSolver::Krylov}}) {
             ModalIntegrator dense(mSystem, {scheme}), matrixFree(mSystem, krylov);
             Eigen::VectorXd a = mV0, b = mV0;
             const StepReport first = dense.step(a, h);
@@ -115,8 +116,10 @@ TEST_F(RandomState, NewtonKrylovMatchesTheDenseNewtonAndConservesEnergy) {
     EXPECT_LE(s.maxEnergyDrift, 1e-10);
     EXPECT_LE(s.maxResidual, 1e-13);
     EXPECT_TRUE(s.converged);
-    std::printf("matrix-free midpoint, h|R|/|v| = 0.3, 2000 steps: drift %.3g, iterations mean %.2f max %d\n",
-                s.maxEnergyDrift, s.meanIterations, s.maxIterations);
+    std::printf(
+        "matrix-free midpoint, h|R|/|v| = 0.3, 2000 steps: drift %.3g, iterations mean %.2f max "
+        "%d\n",
+        s.maxEnergyDrift, s.meanIterations, s.maxIterations);
 }
 
 /// Steps forward then back with −h; the relative distance from the start.
@@ -214,15 +217,16 @@ TEST(Integrators, ConvergeAtTheirOrders) {
     ModalIntegrator fine(system, {Integrator::Rk4});
     Eigen::VectorXd reference = v0;
     for (int n = 0; n < 4096; ++n) fine.step(reference, time / 4096);
-    const std::vector<std::pair<Integrator, double>> orders{
-        {Integrator::Rk4, 4.0}, {Integrator::Midpoint, 2.0},
-        {Integrator::Trapezoidal, 2.0}, {Integrator::Explicit, 1.0}};
+    const std::vector<std::pair<Integrator, double>> orders{{Integrator::Rk4, 4.0},
+                                                            {Integrator::Midpoint, 2.0},
+                                                            {Integrator::Trapezoidal, 2.0},
+                                                            {Integrator::Explicit, 1.0}};
     for (const auto& [scheme, order] : orders) {
         const double coarse = trajectoryError(system, scheme, v0, time, 64, reference);
         const double finer = trajectoryError(system, scheme, v0, time, 128, reference);
         const double measured = std::log2(coarse / finer);
-        EXPECT_NEAR(measured, order, 0.2) << sceneKeyword(scheme) << ": errors " << coarse
-                                          << " -> " << finer;
+        EXPECT_NEAR(measured, order, 0.2)
+            << sceneKeyword(scheme) << ": errors " << coarse << " -> " << finer;
     }
 }
 
@@ -303,8 +307,8 @@ TEST(Forces, ConstantForceWithoutCouplingIsExactForEveryScheme) {
     const FluidSystem system(zero);
     const Eigen::VectorXd v0 = randomVector(n, 301), f = randomVector(n, 302);
     const double h = 0.05;
-    for (Integrator scheme : {Integrator::Explicit, Integrator::Rk4,
-                              Integrator::Midpoint, Integrator::Trapezoidal}) {
+    for (Integrator scheme :
+         {Integrator::Explicit, Integrator::Rk4, Integrator::Midpoint, Integrator::Trapezoidal}) {
         ModalIntegrator integrator(system, {scheme});
         Eigen::VectorXd v = v0;
         for (int s = 0; s < 100; ++s) integrator.step(v, h, f);
@@ -321,8 +325,7 @@ TEST(Forces, LinearInTimeForceIsExactForSecondOrderSchemes) {
                           f1 = randomVector(n, 305);
     const ForceFunction force = [&](double t) { return Eigen::VectorXd(f0 + t * f1); };
     const double h = 0.1;
-    for (Integrator scheme :
-         {Integrator::Rk4, Integrator::Midpoint, Integrator::Trapezoidal}) {
+    for (Integrator scheme : {Integrator::Rk4, Integrator::Midpoint, Integrator::Trapezoidal}) {
         ModalIntegrator integrator(system, {scheme});
         Eigen::VectorXd v = v0;
         double t = 1.0;
@@ -339,7 +342,8 @@ TEST(Integrators, JacobianProductsEqualTheAnalyticJacobian) {
     lans.kappaSquared = randomVector(12, 7).cwiseAbs();
     const FluidSystem euler(c), filtered(c, lans);
     const MhdSystem mhd(c);
-    for (const ModalSystem* system : std::initializer_list<const ModalSystem*>{&euler, &filtered, &mhd}) {
+    for (const ModalSystem* system :
+         std::initializer_list<const ModalSystem*>{&euler, &filtered, &mhd}) {
         const int n = system->dimension();
         const Eigen::VectorXd x = randomVector(n, 8), u = randomVector(n, 9);
         Eigen::VectorXd r, product;

@@ -10,10 +10,10 @@
 
 #include <Eigen/Core>
 
-#include "engine/dynamics/FluidSystem.h"
-#include "engine/dynamics/MhdSystem.h"
 #include "engine/core/Error.h"
 #include "engine/core/KappaSquared.h"
+#include "engine/dynamics/FluidSystem.h"
+#include "engine/dynamics/MhdSystem.h"
 #include "tests/support/RandomCoefficients.h"
 
 namespace modeflow {

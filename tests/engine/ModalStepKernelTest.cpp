@@ -218,6 +218,10 @@ TEST_P(ModalStepKernelTest, RefusesStatesAndParametersOfTheWrongShape) {
     EXPECT_THROW(stepper.setState(Eigen::VectorXd::Zero(kModes + 1)), Error);
     EXPECT_THROW(stepper.setParameters(MhdParameters{}), Error);
     EXPECT_THROW(stepper.magneticField(), Error);
+    FluidParameters held;
+    held.held = {0};  // [forcing] holds modes on the CPU reference only
+    EXPECT_THROW(stepper.setParameters(held), Error);
+    EXPECT_THROW(ModalStepper(context(), mC, held), Error);
     ModalStepper mhd(context(), mC, MhdParameters{});
     EXPECT_THROW(mhd.setState(Eigen::VectorXd::Zero(kModes)), Error);
     EXPECT_NO_THROW(mhd.setState(Eigen::VectorXd::Zero(2 * kModes)));

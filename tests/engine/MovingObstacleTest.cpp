@@ -6,8 +6,8 @@
 
 #include <gtest/gtest.h>
 
-#include "engine/dynamics/InitialConditions.h"
 #include "engine/core/FaceLocation.h"
+#include "engine/dynamics/InitialConditions.h"
 #include "engine/reference/ObstacleCorrection.h"
 #include "engine/reference/VelocityReconstruction.h"
 #include "tests/support/RealBases.h"
@@ -35,7 +35,8 @@ double starNorm2(const BasisCache& cache, const std::vector<double>& faceField) 
     const MacGrid grid = MacGrid::fromSpec(cache.grid);
     double sum = 0.0;
     for (std::size_t d = 0; d < cache.faces.size(); ++d) {
-        const double flux = faceField[std::size_t(cache.faces[d])] * grid.faceArea(locateFace(grid, cache.faces[d]).axis);
+        const double flux = faceField[std::size_t(cache.faces[d])] *
+                            grid.faceArea(locateFace(grid, cache.faces[d]).axis);
         sum += cache.faceStar[Eigen::Index(d)] * flux * flux;
     }
     return sum;
@@ -126,7 +127,8 @@ TEST(MovingObstacle, CorrectionShrinksTheMismatchOfAStillObstacle) {
     const Eigen::VectorXd v = randomVelocity(int(cache.velocity.modes.cols()), random);
     const std::vector<MovingObstacle> obstacles{ball(0.35, {{0.0, {0.2, 0.1, 0.0}}})};
     const std::vector<double> before = reference::reconstructFaceField(cache, v);
-    const Eigen::VectorXd corrected = v - reference::obstacleCorrection(cache, before, obstacles, 0.0);
+    const Eigen::VectorXd corrected =
+        v - reference::obstacleCorrection(cache, before, obstacles, 0.0);
     const std::vector<double> after = reference::reconstructFaceField(cache, corrected);
     const double m0 = starNorm2(cache, reference::obstacleMismatch(cache, before, obstacles, 0.0));
     const double m1 = starNorm2(cache, reference::obstacleMismatch(cache, after, obstacles, 0.0));
@@ -137,7 +139,8 @@ TEST(MovingObstacle, CorrectionShrinksTheMismatchOfAStillObstacle) {
 
 TEST(MovingObstacle, AMovingObstacleDragsStillFluidAlong) {
     const BasisCache& cache = testing::disk2d();
-    const std::vector<MovingObstacle> obstacles{ball(0.3, {{0.0, {-0.3, 0.0, 0.0}}, {1.0, {0.3, 0.0, 0.0}}})};
+    const std::vector<MovingObstacle> obstacles{
+        ball(0.3, {{0.0, {-0.3, 0.0, 0.0}}, {1.0, {0.3, 0.0, 0.0}}})};
     const std::vector<double> still(std::size_t(MacGrid::fromSpec(cache.grid).faceTotal()), 0.0);
     const Eigen::VectorXd v = -reference::obstacleCorrection(cache, still, obstacles, 0.5);
     ASSERT_GT(v.norm(), 0.0);

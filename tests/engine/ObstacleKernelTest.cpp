@@ -5,13 +5,13 @@
 
 #include <gtest/gtest.h>
 
-#include "engine/dynamics/InitialConditions.h"
-#include "engine/reference/ObstacleCorrection.h"
-#include "engine/reference/VelocityReconstruction.h"
 #include "engine/device/DeviceCoefficients.h"
 #include "engine/device/ModeBuffer.h"
 #include "engine/device/ObstacleCorrection.h"
 #include "engine/device/VelocityReconstruction.h"
+#include "engine/dynamics/InitialConditions.h"
+#include "engine/reference/ObstacleCorrection.h"
+#include "engine/reference/VelocityReconstruction.h"
 #include "engine/vulkan/CommandSequence.h"
 #include "tests/support/RealBases.h"
 #include "tests/support/VulkanTestContext.h"
@@ -71,7 +71,8 @@ TEST_P(ObstacleKernelTest, CorrectionEqualsTheCpuReference) {
     }
 }
 
-INSTANTIATE_TEST_SUITE_P(PlainAndValidated, ObstacleKernelTest, ::testing::Bool(), testing::validationName);
+INSTANTIATE_TEST_SUITE_P(PlainAndValidated, ObstacleKernelTest, ::testing::Bool(),
+                         testing::validationName);
 
 }  // namespace
 }  // namespace modeflow

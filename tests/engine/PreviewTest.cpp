@@ -379,7 +379,8 @@ TEST_P(VolumePreviewTest, Renders64CubedAt512SquaredTheSameEachTime) {
     const vulkan::DeviceBuffer buffer =
         vulkan::DeviceBuffer::fromValues<float>(context(), testing::mushroomCloud(g), "density");
     const Image image = renderer.render(buffer, 15.0f);
-    const Image empty = render(g, std::vector<float>(std::size_t(g.cellCount()), 0.0f), ballMask(g, 0.95), 512, 512, 15.0f);
+    const Image empty = render(g, std::vector<float>(std::size_t(g.cellCount()), 0.0f),
+                               ballMask(g, 0.95), 512, 512, 15.0f);
     EXPECT_GT(brightRowCentre(image, empty), 0.0) << "the cloud does not show";
     EXPECT_EQ(renderer.render(buffer, 15.0f).rgba, image.rgba);
     vulkan::CommandSequence timed(context(), true);

@@ -15,8 +15,10 @@ TEST(PrintableText, EscapesControlCharactersAndBrokenUtf8) {
     EXPECT_EQ(printableText("\x1b[2Jx\x7f"), "\\x1b[2Jx\\x7f");
     EXPECT_EQ(printableText(std::string("a\0b", 3)), "a\\x00b");
     EXPECT_EQ(printableText("caf\xc3\xa9 \xe2\x86\x92"), "caf\xc3\xa9 \xe2\x86\x92");  // é →
-    EXPECT_EQ(printableText("\xc2\x9b" "31m"), "\\xc2\\x9b31m");  // C1 CSI: a terminal command
-    EXPECT_EQ(printableText("\xff\xc3"), "\\xff\\xc3");           // not UTF-8, cut sequence
+    EXPECT_EQ(printableText("\xc2\x9b"
+                            "31m"),
+              "\\xc2\\x9b31m");                          // C1 CSI: a terminal command
+    EXPECT_EQ(printableText("\xff\xc3"), "\\xff\\xc3");  // not UTF-8, cut sequence
 }
 
 TEST(PrintableText, EscapesWhatLooksLikeUtf8ButIsNot) {

@@ -10,10 +10,10 @@
 
 #include <gtest/gtest.h>
 
-#include "engine/reference/VelocityReconstruction.h"
 #include "engine/device/HalfFloat.h"
 #include "engine/device/ModeBuffer.h"
 #include "engine/device/VelocityReconstruction.h"
+#include "engine/reference/VelocityReconstruction.h"
 #include "engine/vulkan/CommandSequence.h"
 #include "engine/vulkan/DeviceBuffer.h"
 #include "tests/support/KernelTestSupport.h"
@@ -25,10 +25,10 @@
 namespace modeflow {
 namespace {
 
-using vulkan::CommandSequence;
-using vulkan::DeviceBuffer;
 using device::ModeBuffer;
 using device::ReconstructionKernel;
+using vulkan::CommandSequence;
+using vulkan::DeviceBuffer;
 
 struct Case {
     const char* name;
@@ -50,14 +50,16 @@ const std::vector<Case>& cases() {
 /// shows), every other face as 0 (and must stay so).
 Eigen::VectorXd reconstructOnDevice(const vulkan::VulkanContext& context, const BasisCache& cache,
                                     const Eigen::VectorXd& v, ModePrecision precision,
-                                    std::uint32_t workgroupSize = 64, std::size_t* chunks = nullptr) {
+                                    std::uint32_t workgroupSize = 64,
+                                    std::size_t* chunks = nullptr) {
     const ModeBuffer modes(context, cache.velocity.modes, precision);
     if (chunks) *chunks = modes.chunks().size();
     const ReconstructionKernel kernel(context, cache, workgroupSize);
     const DeviceBuffer state = testing::stateBuffer(context, v);
     DeviceBuffer field = kernel.makeFaceField();
     std::vector<float> initial(std::size_t(kernel.grid().faceTotal()), 0.0f);
-    for (const std::int64_t f : cache.faces) initial[std::size_t(f)] = std::numeric_limits<float>::quiet_NaN();
+    for (const std::int64_t f : cache.faces)
+        initial[std::size_t(f)] = std::numeric_limits<float>::quiet_NaN();
     field.upload<float>(initial);
     CommandSequence sequence(context);
     kernel.record(sequence, modes, state, field);
@@ -66,9 +68,10 @@ Eigen::VectorXd reconstructOnDevice(const vulkan::VulkanContext& context, const 
 }
 
 /// The CPU reference on the modes as the device holds them and v rounded to float32.
-Eigen::VectorXd referenceOnRounded(const BasisCache& cache, const Eigen::VectorXd& v, ModePrecision precision) {
-    const std::vector<double> field =
-        reference::reconstructFaceField(testing::withDeviceModes(cache, precision), testing::roundedToFloat(v));
+Eigen::VectorXd referenceOnRounded(const BasisCache& cache, const Eigen::VectorXd& v,
+                                   ModePrecision precision) {
+    const std::vector<double> field = reference::reconstructFaceField(
+        testing::withDeviceModes(cache, precision), testing::roundedToFloat(v));
     return Eigen::Map<const Eigen::VectorXd>(field.data(), Eigen::Index(field.size()));
 }
 
@@ -82,7 +85,8 @@ class ReconstructionKernelTest : public testing::VulkanTest {};
 TEST_P(ReconstructionKernelTest, Float32EqualsTheCpuReference) {
     for (const Case& c : cases()) {
         const Eigen::VectorXd v = testing::randomVector(c.cache.velocity.modes.cols(), 7);
-        const Eigen::VectorXd device = reconstructOnDevice(context(), c.cache, v, ModePrecision::Float32);
+        const Eigen::VectorXd device =
+            reconstructOnDevice(context(), c.cache, v, ModePrecision::Float32);
         ASSERT_FALSE(device.hasNaN()) << c.name << ": a DOF face was never written";
         const Eigen::VectorXd reference = referenceOnRounded(c.cache, v, ModePrecision::Float32);
         for (Eigen::Index f = 0; f < device.size(); ++f)
@@ -91,8 +95,8 @@ TEST_P(ReconstructionKernelTest, Float32EqualsTheCpuReference) {
             }
         const double error = testing::relativeError(device, reference);
         const double exactError = testing::relativeError(device, exactReference(c.cache, v));
-        std::cout << c.name << ", float32: relative error " << error << " (against double modes " << exactError
-                  << ")\n";
+        std::cout << c.name << ", float32: relative error " << error << " (against double modes "
+                  << exactError << ")\n";
         EXPECT_LE(error, 1e-5) << c.name;
         EXPECT_LE(exactError, 1e-5) << c.name;
     }
@@ -101,13 +105,15 @@ TEST_P(ReconstructionKernelTest, Float32EqualsTheCpuReference) {
 TEST_P(ReconstructionKernelTest, Float16StaysWithinItsMeasuredBound) {
     for (const Case& c : cases()) {
         const Eigen::VectorXd v = testing::randomVector(c.cache.velocity.modes.cols(), 8);
-        const Eigen::VectorXd device = reconstructOnDevice(context(), c.cache, v, ModePrecision::Float16);
+        const Eigen::VectorXd device =
+            reconstructOnDevice(context(), c.cache, v, ModePrecision::Float16);
         ASSERT_FALSE(device.hasNaN()) << c.name;
         // The decoding and accumulation are float32-exact; the modes' rounding is the error.
-        const double decoded = testing::relativeError(device, referenceOnRounded(c.cache, v, ModePrecision::Float16));
+        const double decoded =
+            testing::relativeError(device, referenceOnRounded(c.cache, v, ModePrecision::Float16));
         const double error = testing::relativeError(device, exactReference(c.cache, v));
-        std::cout << c.name << ", float16: relative error " << error << " (against the rounded modes " << decoded
-                  << ")\n";
+        std::cout << c.name << ", float16: relative error " << error
+                  << " (against the rounded modes " << decoded << ")\n";
         EXPECT_LE(decoded, 1e-5) << c.name;
         EXPECT_LE(error, 1e-3) << c.name;  // measured 2.2e-4 to 3.3e-4
     }
@@ -121,13 +127,15 @@ TEST_P(ReconstructionKernelTest, SplitModeBuffersGiveTheSameField) {
             // Room for a quarter of the modes per buffer (and for the face field).
             const ModeBuffer probe(context(), c.cache.velocity.modes, precision);
             const VkDeviceSize modeBytes = VkDeviceSize(probe.modeStride()) * 4;
-            const VkDeviceSize limit = std::max<VkDeviceSize>(modeBytes * ((probe.modeCount() + 3) / 4),
-                                                              VkDeviceSize(whole.size()) * 4);
+            const VkDeviceSize limit = std::max<VkDeviceSize>(
+                modeBytes * ((probe.modeCount() + 3) / 4), VkDeviceSize(whole.size()) * 4);
             const auto limited = testing::makeLimitedContext(GetParam(), limit);
             std::size_t chunks = 0;
-            const Eigen::VectorXd split = reconstructOnDevice(*limited, c.cache, v, precision, 64, &chunks);
-            std::cout << c.name << (precision == ModePrecision::Float16 ? ", float16" : ", float32") << ": " << chunks
-                      << " chunks, relative difference " << testing::relativeError(split, whole) << "\n";
+            const Eigen::VectorXd split =
+                reconstructOnDevice(*limited, c.cache, v, precision, 64, &chunks);
+            std::cout << c.name << (precision == ModePrecision::Float16 ? ", float16" : ", float32")
+                      << ": " << chunks << " chunks, relative difference "
+                      << testing::relativeError(split, whole) << "\n";
             EXPECT_GE(chunks, 3u) << c.name;
             EXPECT_LE(testing::relativeError(split, whole), 1e-6) << c.name;
             testing::expectNoValidationMessages(*limited);
@@ -147,7 +155,8 @@ TEST_P(ReconstructionKernelTest, ChunksNotAlignedToFourModesGiveTheSameField) {
         ASSERT_GE(limit, VkDeviceSize(whole.size()) * 4) << "the face field must fit the limit too";
         const auto limited = testing::makeLimitedContext(GetParam(), limit);
         std::size_t chunks = 0;
-        const Eigen::VectorXd split = reconstructOnDevice(*limited, c.cache, v, precision, 64, &chunks);
+        const Eigen::VectorXd split =
+            reconstructOnDevice(*limited, c.cache, v, precision, 64, &chunks);
         EXPECT_EQ(chunks, (c.cache.velocity.modes.cols() + 2) / 3);
         EXPECT_LE(testing::relativeError(split, whole), 1e-6);
         testing::expectNoValidationMessages(*limited);
@@ -159,7 +168,8 @@ TEST_P(ReconstructionKernelTest, AnyWorkgroupSizeGivesTheSameField) {
     const Eigen::VectorXd v = testing::randomVector(c.cache.velocity.modes.cols(), 10);
     const Eigen::VectorXd reference = referenceOnRounded(c.cache, v, ModePrecision::Float32);
     for (const std::uint32_t size : {1u, 48u, 100u, 256u}) {
-        const Eigen::VectorXd device = reconstructOnDevice(context(), c.cache, v, ModePrecision::Float32, size);
+        const Eigen::VectorXd device =
+            reconstructOnDevice(context(), c.cache, v, ModePrecision::Float32, size);
         ASSERT_FALSE(device.hasNaN()) << "workgroup size " << size;
         EXPECT_LE(testing::relativeError(device, reference), 1e-5) << "workgroup size " << size;
     }
@@ -189,8 +199,10 @@ TEST_P(ReconstructionKernelTest, MismatchedBuffersAreRefused) {
         const BasisCache& ball = testing::ball3d();
         const ReconstructionKernel ballKernel(context(), ball);
         const ModeBuffer ballModes(context(), ball.velocity.modes);
-        const DeviceBuffer unpadded(context(), ball.velocity.modes.cols() * sizeof(float), "unpadded v");
-        EXPECT_THROW(ballKernel.record(sequence, ballModes, unpadded, ballKernel.makeFaceField()), Error);
+        const DeviceBuffer unpadded(context(), ball.velocity.modes.cols() * sizeof(float),
+                                    "unpadded v");
+        EXPECT_THROW(ballKernel.record(sequence, ballModes, unpadded, ballKernel.makeFaceField()),
+                     Error);
         // A single mode larger than the buffer limit cannot be split.
         const auto tiny = testing::makeLimitedContext(GetParam(), 256);
         EXPECT_THROW(ModeBuffer(*tiny, cache.velocity.modes), Error);
@@ -199,7 +211,8 @@ TEST_P(ReconstructionKernelTest, MismatchedBuffersAreRefused) {
     expectNoValidationMessages();
 }
 
-INSTANTIATE_TEST_SUITE_P(Vulkan, ReconstructionKernelTest, ::testing::Bool(), testing::validationName);
+INSTANTIATE_TEST_SUITE_P(Vulkan, ReconstructionKernelTest, ::testing::Bool(),
+                         testing::validationName);
 
 TEST(HalfFloat, RoundsToNearestEvenIncludingSubnormals) {
     using device::floatToHalf;
@@ -214,7 +227,7 @@ TEST(HalfFloat, RoundsToNearestEvenIncludingSubnormals) {
     EXPECT_EQ(floatToHalf(std::ldexp(1.0f, -25)), 0x0000);     // tie, to even (0)
     EXPECT_EQ(floatToHalf(std::ldexp(1023.0f, -24)), 0x03ff);  // largest subnormal
     EXPECT_EQ(floatToHalf(std::ldexp(1.0f, -14)), 0x0400);     // smallest normal
-    for (int bits = 0; bits < 0x7c00; ++bits) {                // every finite half survives a round trip
+    for (int bits = 0; bits < 0x7c00; ++bits) {  // every finite half survives a round trip
         ASSERT_EQ(floatToHalf(halfToFloat(std::uint16_t(bits))), bits);
         ASSERT_EQ(floatToHalf(halfToFloat(std::uint16_t(bits | 0x8000))), bits | 0x8000);
     }

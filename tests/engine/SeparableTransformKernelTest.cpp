@@ -75,7 +75,8 @@ TEST_P(SeparableTransformKernelTest, ReconstructionEqualsTheCpuReference) {
         const MacGrid grid = MacGrid::fromSpec(c.cache.grid);
         // DOF faces start as NaN (a face never written shows), the others as 0 (and stay so).
         std::vector<float> initial(std::size_t(grid.faceTotal()), 0.0f);
-        for (const std::int64_t f : c.cache.faces) initial[std::size_t(f)] = std::numeric_limits<float>::quiet_NaN();
+        for (const std::int64_t f : c.cache.faces)
+            initial[std::size_t(f)] = std::numeric_limits<float>::quiet_NaN();
         DeviceBuffer field = DeviceBuffer::fromValues<float>(context(), initial, "face field");
         CommandSequence sequence(context());
         kernels.recordReconstruction(sequence, state, field);
@@ -103,26 +104,34 @@ TEST_P(SeparableTransformKernelTest, ProjectionsEqualTheCpuReference) {
         // A force density per DOF, and a face field (values on non-DOF faces are never read).
         const Eigen::VectorXd q = testing::randomVector(dofs, 11);
         std::vector<double> faceField(std::size_t(grid.faceTotal()), 1e3);
-        for (Eigen::Index d = 0; d < dofs; ++d) faceField[std::size_t(c.cache.faces[std::size_t(d)])] = q[d];
-        const DeviceBuffer density = DeviceBuffer::fromValues<float>(context(), testing::toFloat(q), "density");
-        const DeviceBuffer field = DeviceBuffer::fromValues<float>(context(), testing::toFloat(faceField), "field");
+        for (Eigen::Index d = 0; d < dofs; ++d)
+            faceField[std::size_t(c.cache.faces[std::size_t(d)])] = q[d];
+        const DeviceBuffer density =
+            DeviceBuffer::fromValues<float>(context(), testing::toFloat(q), "density");
+        const DeviceBuffer field =
+            DeviceBuffer::fromValues<float>(context(), testing::toFloat(faceField), "field");
         DeviceBuffer f1(context(), std::size_t(modes) * sizeof(float), "f density");
         DeviceBuffer f2(context(), std::size_t(modes) * sizeof(float), "f field");
         CommandSequence sequence(context());
         kernels.recordProjection(sequence, density, f1);
         kernels.recordFaceFieldProjection(sequence, field, f2);
         sequence.submitAndWait();
-        const Eigen::VectorXd byDensity = reference::projectForce(c.cache, q, FaceQuantity::Density);
+        const Eigen::VectorXd byDensity =
+            reference::projectForce(c.cache, q, FaceQuantity::Density);
         const Eigen::VectorXd byField = reference::projectFaceField(c.cache, faceField);
-        const double e1 = testing::relativeError(testing::downloadFloats(f1, std::size_t(modes)), byDensity);
-        const double e2 = testing::relativeError(testing::downloadFloats(f2, std::size_t(modes)), byField);
-        std::cout << c.name << ": projection relative error " << e1 << " (density), " << e2 << " (face field)\n";
+        const double e1 =
+            testing::relativeError(testing::downloadFloats(f1, std::size_t(modes)), byDensity);
+        const double e2 =
+            testing::relativeError(testing::downloadFloats(f2, std::size_t(modes)), byField);
+        std::cout << c.name << ": projection relative error " << e1 << " (density), " << e2
+                  << " (face field)\n";
         EXPECT_LE(e1, 1e-5) << c.name;
         EXPECT_LE(e2, 1e-5) << c.name;
     }
 }
 
-INSTANTIATE_TEST_SUITE_P(Vulkan, SeparableTransformKernelTest, ::testing::Bool(), testing::validationName);
+INSTANTIATE_TEST_SUITE_P(Vulkan, SeparableTransformKernelTest, ::testing::Bool(),
+                         testing::validationName);
 
 }  // namespace
 }  // namespace modeflow

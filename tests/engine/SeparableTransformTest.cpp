@@ -39,20 +39,24 @@ void expectEqualToColumns(const GridSpec& grid, int modes, const std::string& wh
     for (std::uint64_t seed : {1u, 2u}) {
         const Eigen::VectorXd v = testing::randomVector(modes, seed);
         const Eigen::VectorXd dense = columns * v;
-        const double reconstruction = (transform.fluxes(v) - dense).cwiseAbs().maxCoeff() / dense.cwiseAbs().maxCoeff();
-        const Eigen::VectorXd q = testing::randomVector(Eigen::Index(cache.faces.size()), seed + 10);
+        const double reconstruction =
+            (transform.fluxes(v) - dense).cwiseAbs().maxCoeff() / dense.cwiseAbs().maxCoeff();
+        const Eigen::VectorXd q =
+            testing::randomVector(Eigen::Index(cache.faces.size()), seed + 10);
         const Eigen::VectorXd projected = columns.transpose() * q;
-        const double projection =
-            (transform.transposed(q) - projected).cwiseAbs().maxCoeff() / projected.cwiseAbs().maxCoeff();
+        const double projection = (transform.transposed(q) - projected).cwiseAbs().maxCoeff() /
+                                  projected.cwiseAbs().maxCoeff();
         EXPECT_LE(reconstruction, 1e-13) << what;
         EXPECT_LE(projection, 1e-13) << what;
         if (seed == 1)
-            std::printf("[ measured ] %s, %d modes: reconstruction %.1e, projection %.1e (relative)\n", what.c_str(),
-                        modes, reconstruction, projection);
+            std::printf(
+                "[ measured ] %s, %d modes: reconstruction %.1e, projection %.1e (relative)\n",
+                what.c_str(), modes, reconstruction, projection);
     }
 }
 
-GridSpec grid(std::array<int, 3> res, int dim, std::array<bool, 3> periodic = {false, false, false}) {
+GridSpec grid(std::array<int, 3> res, int dim,
+              std::array<bool, 3> periodic = {false, false, false}) {
     GridSpec g = testing::gridScene(res, {0.0, -0.5, 0.25}, {1.0, 0.4, 1.0}, dim).grid;
     g.periodic = periodic;
     return g;
@@ -60,7 +64,8 @@ GridSpec grid(std::array<int, 3> res, int dim, std::array<bool, 3> periodic = {f
 
 TEST(SeparableTransform, EqualsTheColumnsOnWallBoxes) {
     const GridSpec square = grid({12, 9, 1}, 2);
-    expectEqualToColumns(square, int(closedFormDivergenceFreeDimension(square)), "2D box 12x9, all");
+    expectEqualToColumns(square, int(closedFormDivergenceFreeDimension(square)),
+                         "2D box 12x9, all");
     expectEqualToColumns(square, 20, "2D box 12x9, low band");
     const GridSpec cube = grid({7, 6, 5}, 3);
     expectEqualToColumns(cube, int(closedFormDivergenceFreeDimension(cube)), "3D box 7x6x5, all");
@@ -73,8 +78,9 @@ TEST(SeparableTransform, EqualsTheColumnsOnToriAndMixedAxes) {
           std::pair{std::array<int, 3>{7, 5, 1}, std::array<bool, 3>{true, false, false}},
           std::pair{std::array<int, 3>{6, 7, 1}, std::array<bool, 3>{false, true, false}}}) {
         const GridSpec g = grid(res, 2, periodic);
-        const std::string name = "2D " + std::to_string(res[0]) + "x" + std::to_string(res[1]) + " periodic " +
-                                 std::to_string(periodic[0]) + std::to_string(periodic[1]);
+        const std::string name = "2D " + std::to_string(res[0]) + "x" + std::to_string(res[1]) +
+                                 " periodic " + std::to_string(periodic[0]) +
+                                 std::to_string(periodic[1]);
         expectEqualToColumns(g, int(closedFormDivergenceFreeDimension(g)), name + ", all");
         expectEqualToColumns(g, 15, name + ", low band");
     }
@@ -83,15 +89,17 @@ TEST(SeparableTransform, EqualsTheColumnsOnToriAndMixedAxes) {
           std::pair{std::array<int, 3>{5, 6, 4}, std::array<bool, 3>{true, false, true}},
           std::pair{std::array<int, 3>{4, 5, 6}, std::array<bool, 3>{false, true, false}}}) {
         const GridSpec g = grid(res, 3, periodic);
-        const std::string name = "3D " + std::to_string(res[0]) + "x" + std::to_string(res[1]) + "x" +
-                                 std::to_string(res[2]) + " periodic " + std::to_string(periodic[0]) +
-                                 std::to_string(periodic[1]) + std::to_string(periodic[2]);
+        const std::string name = "3D " + std::to_string(res[0]) + "x" + std::to_string(res[1]) +
+                                 "x" + std::to_string(res[2]) + " periodic " +
+                                 std::to_string(periodic[0]) + std::to_string(periodic[1]) +
+                                 std::to_string(periodic[2]);
         expectEqualToColumns(g, int(closedFormDivergenceFreeDimension(g)), name + ", all");
         expectEqualToColumns(g, 30, name + ", low band");
     }
 }
 
-TEST(SeparableTransform, TheVelocityBasisTakesTheTransformsOfAClosedFormBasisAndTheColumnsOfAnother) {
+TEST(SeparableTransform,
+     TheVelocityBasisTakesTheTransformsOfAClosedFormBasisAndTheColumnsOfAnother) {
     BasisCache cache = closedFormCache(grid({6, 5, 4}, 3), 25);
     const VelocityBasis closed(cache);
     ASSERT_NE(closed.separable(), nullptr);
@@ -104,7 +112,8 @@ TEST(SeparableTransform, TheVelocityBasisTakesTheTransformsOfAClosedFormBasisAnd
     dense.velocity.modes = velocityModeFluxes(cache.grid, cache.faces, cache.velocity.separable);
     const VelocityBasis columns(dense);
     EXPECT_EQ(columns.separable(), nullptr);
-    EXPECT_LE((columns.fluxes(v) - fluxes).cwiseAbs().maxCoeff(), 1e-13 * fluxes.cwiseAbs().maxCoeff());
+    EXPECT_LE((columns.fluxes(v) - fluxes).cwiseAbs().maxCoeff(),
+              1e-13 * fluxes.cwiseAbs().maxCoeff());
     EXPECT_THROW(closed.fluxes(testing::randomVector(24, 3)), Error);
     EXPECT_THROW(closed.transposed(testing::randomVector(5, 3)), Error);
     // Not the whole box's faces: refused rather than scattered to the wrong places.

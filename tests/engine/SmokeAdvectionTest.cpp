@@ -16,25 +16,26 @@
 
 #include <gtest/gtest.h>
 
+#include "engine/core/Error.h"
 #include "engine/core/MacSampling.h"
 #include "engine/reference/SmokeAdvection.h"
-#include "engine/core/Error.h"
 #include "tests/support/SmokeTestFields.h"
 
 namespace modeflow {
 namespace {
 
 using testing::ballMask;
-using testing::kAdvectionSchemes;
-using testing::schemeName;
 using testing::centroid;
 using testing::gaussianBlob;
+using testing::kAdvectionSchemes;
+using testing::schemeName;
 using testing::smokeTestGrid;
 using testing::wholeMask;
 
 /// Runs `steps` steps of one field with no emitters.
-std::vector<double> advectSteps(const reference::SmokeAdvection& advection, const std::vector<double>& velocity,
-                                std::vector<double> field, double dt, int steps, AdvectionScheme scheme) {
+std::vector<double> advectSteps(const reference::SmokeAdvection& advection,
+                                const std::vector<double>& velocity, std::vector<double> field,
+                                double dt, int steps, AdvectionScheme scheme) {
     for (int s = 0; s < steps; ++s) field = advection.advect(velocity, field, dt, scheme);
     return field;
 }
@@ -49,7 +50,9 @@ double maxOutside(const std::vector<double>& field, const std::vector<std::uint8
 TEST(MacSampling, CellSamplingIsExactForLinearFieldsAndClampsOutside) {
     for (const int dim : {2, 3}) {
         const MacGrid grid = smokeTestGrid(dim, 7);
-        const auto linear = [](const Vec3& p) { return 1.0 + 2.0 * p[0] - 3.0 * p[1] + 0.5 * p[2]; };
+        const auto linear = [](const Vec3& p) {
+            return 1.0 + 2.0 * p[0] - 3.0 * p[1] + 0.5 * p[2];
+        };
         const std::vector<double> field = testing::cellValues<double>(grid, linear);
         std::mt19937_64 rng(3);
         // Inside the hull of the cell centres: exact; beyond: the value at the clamped point.
@@ -67,7 +70,9 @@ TEST(MacSampling, CellSamplingIsExactForLinearFieldsAndClampsOutside) {
 TEST(MacSampling, StaggeredSamplingIsExactForLinearVelocityAndWallsCarryNoFlux) {
     for (const int dim : {2, 3}) {
         const MacGrid grid = smokeTestGrid(dim, 6);
-        const auto u = [](int axis, const Vec3& p) { return 0.3 + axis + 1.5 * p[(axis + 1) % 3] - 0.7 * p[axis]; };
+        const auto u = [](int axis, const Vec3& p) {
+            return 0.3 + axis + 1.5 * p[(axis + 1) % 3] - 0.7 * p[axis];
+        };
         std::vector<double> faces(std::size_t(grid.faceTotal()));
         for (int axis = 0; axis < dim; ++axis) {
             const std::array<int, 3> e = grid.faceExtent(axis);
@@ -77,8 +82,10 @@ TEST(MacSampling, StaggeredSamplingIsExactForLinearVelocityAndWallsCarryNoFlux) 
                         const std::array<int, 3> i{x, y, z};
                         Vec3 p{0.0, 0.0, 0.0};
                         for (int a = 0; a < dim; ++a)
-                            p[a] = a == axis ? grid.origin[a] + i[a] * grid.spacing[a] : grid.cellCentre(a, i[a]);
-                        faces[grid.faceIndex(axis, x, y, z)] = u(axis, p);  // walls too: must be ignored
+                            p[a] = a == axis ? grid.origin[a] + i[a] * grid.spacing[a]
+                                             : grid.cellCentre(a, i[a]);
+                        faces[grid.faceIndex(axis, x, y, z)] =
+                            u(axis, p);  // walls too: must be ignored
                     }
         }
         std::mt19937_64 rng(4);
@@ -87,7 +94,8 @@ TEST(MacSampling, StaggeredSamplingIsExactForLinearVelocityAndWallsCarryNoFlux) 
         for (int sample = 0; sample < 200; ++sample) {
             const Vec3 p{inner(rng), inner(rng), dim == 3 ? inner(rng) : 0.0};
             const Vec3 sampled = sampleVelocity<double>(grid, faces, p);
-            for (int axis = 0; axis < dim; ++axis) EXPECT_NEAR(sampled[axis], u(axis, p), 1e-12) << dim << "D";
+            for (int axis = 0; axis < dim; ++axis)
+                EXPECT_NEAR(sampled[axis], u(axis, p), 1e-12) << dim << "D";
             if (dim == 2) {
                 EXPECT_EQ(sampled[2], 0.0);
             }
@@ -97,7 +105,8 @@ TEST(MacSampling, StaggeredSamplingIsExactForLinearVelocityAndWallsCarryNoFlux) 
             for (const double side : {-1.0, 1.0, -1.4, 1.4}) {
                 Vec3 p{0.1, -0.2, dim == 3 ? 0.3 : 0.0};
                 p[axis] = side;
-                EXPECT_EQ(sampleVelocity<double>(grid, faces, p)[axis], 0.0) << dim << "D axis " << axis;
+                EXPECT_EQ(sampleVelocity<double>(grid, faces, p)[axis], 0.0)
+                    << dim << "D axis " << axis;
             }
     }
 }
@@ -253,7 +262,8 @@ TEST(SmokeAdvection, ANonFiniteVelocityLeavesTheSmokeWhereItIs) {
 
 TEST(SmokeAdvection, WrongSizesAreRefusedWithTheirNames) {
     const MacGrid basis = smokeTestGrid(2, 8);
-    EXPECT_THROW(reference::SmokeAdvection(basis, 2, std::vector<std::uint8_t>(64, 1)), Error);  // needs 16² = 256
+    EXPECT_THROW(reference::SmokeAdvection(basis, 2, std::vector<std::uint8_t>(64, 1)),
+                 Error);  // needs 16² = 256
     const reference::SmokeAdvection advection(basis, 2, wholeMask(basis.refined(2)));
     std::vector<double> field(256, 0.0);
     try {
@@ -262,8 +272,8 @@ TEST(SmokeAdvection, WrongSizesAreRefusedWithTheirNames) {
     } catch (const Error& e) {
         EXPECT_NE(std::string(e.what()).find("velocity"), std::string::npos) << e.what();
     }
-    EXPECT_THROW(advection.advect(std::vector<double>(std::size_t(basis.faceTotal()), 0.0), std::vector<double>(5),
-                                  0.1, AdvectionScheme::MacCormack),
+    EXPECT_THROW(advection.advect(std::vector<double>(std::size_t(basis.faceTotal()), 0.0),
+                                  std::vector<double>(5), 0.1, AdvectionScheme::MacCormack),
                  Error);
 }
 
@@ -274,20 +284,25 @@ TEST(SmokeAdvection, ConstantVelocityTranslatesABlobByUTimesT) {
     };
     for (const Case c : {Case{2, 32, 2, 0.15}, Case{3, 16, 2, 0.15}}) {
         const MacGrid basis = smokeTestGrid(c.dim, c.cells);
-        const reference::SmokeAdvection advection(basis, c.scale, wholeMask(basis.refined(c.scale)));
+        const reference::SmokeAdvection advection(basis, c.scale,
+                                                  wholeMask(basis.refined(c.scale)));
         const MacGrid& smoke = advection.smokeGrid();
-        const Vec3 u{0.5, 0.25, c.dim == 3 ? -0.3 : 0.0}, start{-0.25, -0.15, c.dim == 3 ? 0.15 : 0.0};
+        const Vec3 u{0.5, 0.25, c.dim == 3 ? -0.3 : 0.0},
+            start{-0.25, -0.15, c.dim == 3 ? 0.15 : 0.0};
         const std::vector<double> velocity = testing::constantVelocity(basis, u);
         const std::vector<double> blob = gaussianBlob(smoke, start, c.sigma);
         const double dt = 0.02;
         const int steps = 40;
         for (const AdvectionScheme scheme : kAdvectionSchemes) {
-            const std::vector<double> moved = advectSteps(advection, velocity, blob, dt, steps, scheme);
+            const std::vector<double> moved =
+                advectSteps(advection, velocity, blob, dt, steps, scheme);
             const Vec3 end = centroid(smoke, moved);
             double error = 0.0;
-            for (int a = 0; a < c.dim; ++a) error = std::max(error, std::abs(end[a] - start[a] - u[a] * dt * steps));
-            std::cout << c.dim << "D " << schemeName(scheme) << ": centroid off by " << error << " after moving "
-                      << 0.5 * dt * steps << " (" << error / smoke.spacing[0] << " smoke cells)\n";
+            for (int a = 0; a < c.dim; ++a)
+                error = std::max(error, std::abs(end[a] - start[a] - u[a] * dt * steps));
+            std::cout << c.dim << "D " << schemeName(scheme) << ": centroid off by " << error
+                      << " after moving " << 0.5 * dt * steps << " (" << error / smoke.spacing[0]
+                      << " smoke cells)\n";
             EXPECT_LT(error, 0.05 * smoke.spacing[0]) << c.dim << "D " << schemeName(scheme);
         }
     }
@@ -305,7 +320,8 @@ TEST(SmokeAdvection, RotationKeepsTheCentroidRadius) {
         const std::vector<double> turned = advectSteps(advection, velocity, blob, 0.02, 50, scheme);
         const Vec3 end = centroid(advection.smokeGrid(), turned);
         const double radius = std::hypot(end[0], end[1]), angle = std::atan2(end[1], end[0]);
-        std::cout << schemeName(scheme) << ": centroid radius " << radius << " (0.4), angle " << angle << " (π/2)\n";
+        std::cout << schemeName(scheme) << ": centroid radius " << radius << " (0.4), angle "
+                  << angle << " (π/2)\n";
         EXPECT_NEAR(radius, 0.4, 0.01) << schemeName(scheme);
         EXPECT_NEAR(angle, std::numbers::pi / 2, 0.02) << schemeName(scheme);
     }
@@ -329,7 +345,8 @@ TEST(SmokeAdvection, NothingLeaksOutOfTheFluidMask) {
                 advection.step(velocity, 0.02, scheme, std::span(&edge, 1), state);
                 ASSERT_EQ(maxOutside(state.density, mask), 0.0)
                     << dim << "D " << schemeName(scheme) << " step " << step;
-                ASSERT_EQ(maxOutside(state.temperature, mask), 0.0) << dim << "D " << schemeName(scheme);
+                ASSERT_EQ(maxOutside(state.temperature, mask), 0.0)
+                    << dim << "D " << schemeName(scheme);
             }
             EXPECT_GE(*std::min_element(state.density.begin(), state.density.end()), 0.0);
         }
@@ -339,15 +356,17 @@ TEST(SmokeAdvection, NothingLeaksOutOfTheFluidMask) {
 TEST(SmokeAdvection, MacCormackKeepsThePeakBetterAndMakesNoNewExtrema) {
     const MacGrid basis = smokeTestGrid(2, 32);
     const reference::SmokeAdvection advection(basis, 2, ballMask(basis.refined(2), 0.9));
-    const std::vector<double> velocity = testing::rotationVelocity(basis, std::numbers::pi / 2, 1.0);
+    const std::vector<double> velocity =
+        testing::rotationVelocity(basis, std::numbers::pi / 2, 1.0);
     const MacGrid& smoke = advection.smokeGrid();
     // A smooth blob for the peak, a sharp-edged disk (values 0 and 1) for the bounds.
     const std::vector<double> blob = gaussianBlob(smoke, {0.4, 0.0, 0.0}, 0.08);
-    const double slPeak =
-        std::ranges::max(advectSteps(advection, velocity, blob, 0.02, 50, AdvectionScheme::SemiLagrangian));
-    const double mcPeak =
-        std::ranges::max(advectSteps(advection, velocity, blob, 0.02, 50, AdvectionScheme::MacCormack));
-    std::cout << "peak after a quarter turn: semi-Lagrangian " << slPeak << ", MacCormack " << mcPeak << " (1)\n";
+    const double slPeak = std::ranges::max(
+        advectSteps(advection, velocity, blob, 0.02, 50, AdvectionScheme::SemiLagrangian));
+    const double mcPeak = std::ranges::max(
+        advectSteps(advection, velocity, blob, 0.02, 50, AdvectionScheme::MacCormack));
+    std::cout << "peak after a quarter turn: semi-Lagrangian " << slPeak << ", MacCormack "
+              << mcPeak << " (1)\n";
     EXPECT_GT(mcPeak, slPeak + 0.1);
 
     std::vector<double> disk = testing::cellValues<double>(
@@ -386,9 +405,11 @@ TEST(SmokeAdvection, EmittersAddExactlyRateTimesDtPerCellInside) {
         const double dt = 0.05;
         const int steps = 10;
         for (const AdvectionScheme scheme : kAdvectionSchemes) {
-            SmokeFields fields{std::vector<double>(mask.size(), 0.0), std::vector<double>(mask.size(), 0.0)};
+            SmokeFields fields{std::vector<double>(mask.size(), 0.0),
+                               std::vector<double>(mask.size(), 0.0)};
             for (int s = 0; s < steps; ++s) advection.step(still, dt, scheme, emitters, fields);
-            EXPECT_NEAR(advection.mass(fields.density), expectedDensity * dt * steps, 1e-12 * expectedDensity)
+            EXPECT_NEAR(advection.mass(fields.density), expectedDensity * dt * steps,
+                        1e-12 * expectedDensity)
                 << dim << "D " << schemeName(scheme);
             EXPECT_NEAR(advection.mass(fields.temperature), expectedTemperature * dt * steps,
                         1e-12 * expectedTemperature);
@@ -459,7 +480,8 @@ TEST(SmokeAdvection, MassDriftPer100StepsInAClosedDomain) {
     };
     for (const Case c : {Case{2, 32, 2, 0.08, 0.01, 1.1}, Case{3, 16, 2, 0.25, 0.01, 0.9}}) {
         const MacGrid basis = smokeTestGrid(c.dim, c.cells);
-        const reference::SmokeAdvection advection(basis, c.scale, ballMask(basis.refined(c.scale), 0.9));
+        const reference::SmokeAdvection advection(basis, c.scale,
+                                                  ballMask(basis.refined(c.scale), 0.9));
         const MacGrid& smoke = advection.smokeGrid();
         // max |u| = 1: 0.64 smoke cells a step.
         const std::vector<double> velocity = testing::unitSwirlVelocity(basis, 0.85, 11);
@@ -470,15 +492,21 @@ TEST(SmokeAdvection, MassDriftPer100StepsInAClosedDomain) {
             if (!mask[i]) fields.density[i] = fields.temperature[i] = 0.0;
         for (const AdvectionScheme scheme : kAdvectionSchemes) {
             SmokeFields state = fields;
-            for (int step = 0; step < 100; ++step) advection.step(velocity, 0.02, scheme, {}, state);
-            const double resolved = advection.mass(state.density) / advection.mass(fields.density) - 1.0;
-            const double sharp = advection.mass(state.temperature) / advection.mass(fields.temperature) - 1.0;
-            std::cout << c.dim << "D " << c.cells << "^" << c.dim << " x" << c.scale << " " << schemeName(scheme)
-                      << ": relative mass change per 100 steps (dt 0.02, max|u| 1): resolved blob " << resolved
-                      << ", sharp blob " << sharp << "\n";
+            for (int step = 0; step < 100; ++step)
+                advection.step(velocity, 0.02, scheme, {}, state);
+            const double resolved =
+                advection.mass(state.density) / advection.mass(fields.density) - 1.0;
+            const double sharp =
+                advection.mass(state.temperature) / advection.mass(fields.temperature) - 1.0;
+            std::cout << c.dim << "D " << c.cells << "^" << c.dim << " x" << c.scale << " "
+                      << schemeName(scheme)
+                      << ": relative mass change per 100 steps (dt 0.02, max|u| 1): resolved blob "
+                      << resolved << ", sharp blob " << sharp << "\n";
             const bool sl = scheme == AdvectionScheme::SemiLagrangian;
-            EXPECT_LT(std::abs(resolved), sl ? c.slBound : c.mcResolvedBound) << c.dim << "D " << schemeName(scheme);
-            EXPECT_LT(std::abs(sharp), sl ? c.slBound : c.mcSharpBound) << c.dim << "D " << schemeName(scheme);
+            EXPECT_LT(std::abs(resolved), sl ? c.slBound : c.mcResolvedBound)
+                << c.dim << "D " << schemeName(scheme);
+            EXPECT_LT(std::abs(sharp), sl ? c.slBound : c.mcSharpBound)
+                << c.dim << "D " << schemeName(scheme);
         }
     }
 }

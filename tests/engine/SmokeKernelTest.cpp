@@ -16,9 +16,9 @@
 
 #include <gtest/gtest.h>
 
-#include "engine/reference/SmokeAdvection.h"
 #include "engine/device/SmokeAdvection.h"
 #include "engine/device/SmokeState.h"
+#include "engine/reference/SmokeAdvection.h"
 #include "engine/vulkan/CommandSequence.h"
 #include "engine/vulkan/DeviceBuffer.h"
 #include "tests/support/SmokeTestFields.h"
@@ -27,15 +27,19 @@
 namespace modeflow {
 namespace {
 
+using device::SmokeAdvectionKernels;
+using device::SmokeState;
 using testing::kAdvectionSchemes;
 using testing::schemeName;
 using vulkan::CommandSequence;
 using vulkan::DeviceBuffer;
-using device::SmokeAdvectionKernels;
-using device::SmokeState;
 
-std::vector<float> toFloat(const std::vector<double>& v) { return std::vector<float>(v.begin(), v.end()); }
-std::vector<double> toDouble(const std::vector<float>& v) { return std::vector<double>(v.begin(), v.end()); }
+std::vector<float> toFloat(const std::vector<double>& v) {
+    return std::vector<float>(v.begin(), v.end());
+}
+std::vector<double> toDouble(const std::vector<float>& v) {
+    return std::vector<double>(v.begin(), v.end());
+}
 void roundToFloat(std::vector<double>& v) {
     for (double& x : v) x = double(float(x));
 }
@@ -111,9 +115,11 @@ SmokeRun runSmoke(const vulkan::VulkanContext& context, const SmokeSetup& s, dou
     SmokeState state(context, basis, s.scale, run.mask);
     state.upload(toFloat(fields.density), toFloat(fields.temperature));
     state.setEmitters(emitters);
-    const DeviceBuffer velocityBuffer = DeviceBuffer::fromValues<float>(context, toFloat(velocity), "velocity");
+    const DeviceBuffer velocityBuffer =
+        DeviceBuffer::fromValues<float>(context, toFloat(velocity), "velocity");
     CommandSequence sequence(context, s.timestamps);
-    for (int step = 0; step < s.steps; ++step) kernels.record(sequence, state, velocityBuffer, dt, s.scheme);
+    for (int step = 0; step < s.steps; ++step)
+        kernels.record(sequence, state, velocityBuffer, dt, s.scheme);
     run.dispatches = sequence.dispatchCount();
     sequence.submitAndWait();
     run.timesMs = sequence.dispatchTimesMs();
@@ -137,7 +143,8 @@ double relativeError(const std::vector<double>& device, const std::vector<double
 void expectCleanOutside(const std::vector<double>& field, const std::vector<std::uint8_t>& mask,
                         const std::string& what) {
     for (std::size_t c = 0; c < field.size(); ++c) {
-        ASSERT_FALSE(std::isnan(field[c])) << what << ": cell " << c << " is NaN (read outside Ω or never written)";
+        ASSERT_FALSE(std::isnan(field[c]))
+            << what << ": cell " << c << " is NaN (read outside Ω or never written)";
         if (!mask[c]) {
             ASSERT_EQ(field[c], 0.0) << what << ": smoke outside Ω at cell " << c;
         }
@@ -157,9 +164,11 @@ TEST_P(SmokeKernelTest, EqualsTheCpuReferenceInFloat32) {
     for (const int dim : {2, 3})
         for (const int scale : {1, 2})
             for (const AdvectionScheme scheme : kAdvectionSchemes) {
-                const std::string what = std::to_string(dim) + "D x" + std::to_string(scale) + " " + schemeName(scheme);
+                const std::string what =
+                    std::to_string(dim) + "D x" + std::to_string(scale) + " " + schemeName(scheme);
                 {
-                    const SmokeRun run = runSmoke(context(), {dim, dim == 2 ? 32 : 12, scale, scheme});
+                    const SmokeRun run =
+                        runSmoke(context(), {dim, dim == 2 ? 32 : 12, scale, scheme});
                     const double error = worstError(run, what);
                     std::cout << what << ", 3 steps: relative max error " << error << "\n";
                     EXPECT_LE(error, 1e-5) << what;
@@ -246,7 +255,8 @@ TEST_P(SmokeKernelTest, OneCellAxesMatchTheReference) {
             const SmokeRun run = runSmoke(context(), setup);
             ASSERT_GT(std::count(run.mask.begin(), run.mask.end(), 1), 50);
             const double error = worstError(run, "12 x 12 x 1");
-            std::cout << "3D 12 x 12 x 1 " << schemeName(scheme) << ", 3 steps: relative max error " << error << "\n";
+            std::cout << "3D 12 x 12 x 1 " << schemeName(scheme) << ", 3 steps: relative max error "
+                      << error << "\n";
             EXPECT_LE(error, 1e-5) << schemeName(scheme);
         }
         expectNoValidationMessages();
@@ -260,7 +270,8 @@ TEST_P(SmokeKernelTest, NoFluidCellsGiveZeros) {
             const std::vector<std::uint8_t> mask(std::size_t(basis.cellCount()), 0);
             SmokeState state(context(), basis, 1, mask);
             EXPECT_EQ(state.fluidCellCount(), 0u);
-            state.upload(std::vector<float>(mask.size(), 1.0f), std::vector<float>(mask.size(), 2.0f));
+            state.upload(std::vector<float>(mask.size(), 1.0f),
+                         std::vector<float>(mask.size(), 2.0f));
             state.setEmitters(testing::smokeTestEmitters());
             const SmokeAdvectionKernels kernels(context());
             const DeviceBuffer velocity = DeviceBuffer::fromValues<float>(
@@ -270,8 +281,10 @@ TEST_P(SmokeKernelTest, NoFluidCellsGiveZeros) {
             sequence.submitAndWait();
             std::vector<float> density(mask.size(), -1.0f), temperature(mask.size(), -1.0f);
             state.download(density, temperature);
-            EXPECT_EQ(*std::max_element(density.begin(), density.end()), 0.0f) << schemeName(scheme);
-            EXPECT_EQ(*std::min_element(temperature.begin(), temperature.end()), 0.0f) << schemeName(scheme);
+            EXPECT_EQ(*std::max_element(density.begin(), density.end()), 0.0f)
+                << schemeName(scheme);
+            EXPECT_EQ(*std::min_element(temperature.begin(), temperature.end()), 0.0f)
+                << schemeName(scheme);
         }
         expectNoValidationMessages();
     }
@@ -288,7 +301,8 @@ TEST_P(SmokeKernelTest, UploadDropsSmokeOutsideTheMask) {
             temperature[c] = -float(c) - 1.0f;
         }
         state.upload(density, temperature);
-        std::vector<float> densityBack(mask.size()), temperatureBack(mask.size()), temperatureAlone(mask.size());
+        std::vector<float> densityBack(mask.size()), temperatureBack(mask.size()),
+            temperatureAlone(mask.size());
         state.download(densityBack, temperatureBack);
         state.temperature().download<float>(temperatureAlone);
         for (std::size_t c = 0; c < mask.size(); ++c) {
@@ -307,7 +321,8 @@ TEST_P(SmokeKernelTest, AnyWorkgroupSizeGivesTheSameResult) {
             SmokeSetup setup{2, 32, 2, AdvectionScheme::MacCormack};
             setup.workgroupSize = size;
             const SmokeRun run = runSmoke(context(), setup);
-            EXPECT_LE(worstError(run, "workgroup size " + std::to_string(size)), 1e-5) << "workgroup size " << size;
+            EXPECT_LE(worstError(run, "workgroup size " + std::to_string(size)), 1e-5)
+                << "workgroup size " << size;
         }
         expectNoValidationMessages();
     }
@@ -341,12 +356,14 @@ TEST_P(SmokeKernelTest, MassDriftPer100StepsMatchesTheCpu) {
             std::vector<double> velocity = testing::unitSwirlVelocity(basis, 0.85, 11);
             roundToFloat(velocity);
             const reference::SmokeAdvection reference(basis, 2, mask);
-            std::vector<double> blob = testing::gaussianBlob(reference.smokeGrid(), {0.2, -0.1, 0.0}, 0.1);
+            std::vector<double> blob =
+                testing::gaussianBlob(reference.smokeGrid(), {0.2, -0.1, 0.0}, 0.1);
             for (std::size_t c = 0; c < mask.size(); ++c)
                 if (!mask[c]) blob[c] = 0.0;
             roundToFloat(blob);
             std::vector<double> cpu = blob;
-            for (int step = 0; step < 100; ++step) cpu = reference.advect(velocity, cpu, 0.02, scheme);
+            for (int step = 0; step < 100; ++step)
+                cpu = reference.advect(velocity, cpu, 0.02, scheme);
 
             const SmokeAdvectionKernels kernels(context());
             SmokeState state(context(), basis, 2, mask);
@@ -354,14 +371,16 @@ TEST_P(SmokeKernelTest, MassDriftPer100StepsMatchesTheCpu) {
             const DeviceBuffer velocityBuffer =
                 DeviceBuffer::fromValues<float>(context(), toFloat(velocity), "velocity");
             CommandSequence sequence(context());
-            for (int step = 0; step < 100; ++step) kernels.record(sequence, state, velocityBuffer, 0.02, scheme);
+            for (int step = 0; step < 100; ++step)
+                kernels.record(sequence, state, velocityBuffer, 0.02, scheme);
             sequence.submitAndWait();
             std::vector<float> density(mask.size()), temperature(mask.size());
             state.download(density, temperature);
             const double m0 = reference.mass(blob);
             const double deviceDrift = reference.mass(toDouble(density)) / m0 - 1.0;
             const double cpuDrift = reference.mass(cpu) / m0 - 1.0;
-            std::cout << schemeName(scheme) << ", 64² disk, 100 steps of dt 0.02, max|u| 1: mass change device "
+            std::cout << schemeName(scheme)
+                      << ", 64² disk, 100 steps of dt 0.02, max|u| 1: mass change device "
                       << deviceDrift << ", CPU " << cpuDrift << "\n";
             EXPECT_NEAR(deviceDrift, cpuDrift, 1e-4) << schemeName(scheme);
             EXPECT_LT(std::abs(deviceDrift), 0.01) << schemeName(scheme);
@@ -396,8 +415,8 @@ TEST_P(SmokeKernelTest, TimestampsGiveTheDurationOfEachStage) {
                     double total = 0.0;
                     for (const double t : run.timesMs) total += t;
                     std::cout << "smoke_advect " << dim << "D " << run.mask.size() << " cells, "
-                              << schemeName(scheme) << ": " << total << " ms a step on " << context().deviceName()
-                              << "\n";
+                              << schemeName(scheme) << ": " << total << " ms a step on "
+                              << context().deviceName() << "\n";
                 }
             }
             expectNoValidationMessages();
@@ -419,7 +438,8 @@ TEST_P(SmokeKernelTest, BadInputsAreRefusedWithTheirNames) {
             kernels.record(sequence, state, small, 0.1, AdvectionScheme::SemiLagrangian);
             FAIL() << "recorded with a too small velocity buffer";
         } catch (const Error& e) {
-            EXPECT_NE(std::string(e.what()).find("\"tiny velocity\""), std::string::npos) << e.what();
+            EXPECT_NE(std::string(e.what()).find("\"tiny velocity\""), std::string::npos)
+                << e.what();
         }
     }
     expectNoValidationMessages();

@@ -34,7 +34,8 @@ std::vector<std::uint8_t> randomMask(std::size_t cells, unsigned seed) {
     return mask;
 }
 
-void expectRefused(const fs::path& file, std::uint64_t key, int scale, std::size_t cells, const std::string& why) {
+void expectRefused(const fs::path& file, std::uint64_t key, int scale, std::size_t cells,
+                   const std::string& why) {
     try {
         readSmokeMask(file, key, scale, cells);
         ADD_FAILURE() << "accepted: " << why;
@@ -88,7 +89,8 @@ TEST_F(SmokeMaskTest, ARunReadsTheMaskFileBesideTheCacheAndRebuildsADamagedOne) 
 
     fs::resize_file(maskFile, 10);
     EXPECT_EQ(prepareRun(scene, mFolder, quiet).smokeMask, first.smokeMask);
-    EXPECT_EQ(readSmokeMask(maskFile, key, 2, first.smokeMask.size()), first.smokeMask) << "not rewritten";
+    EXPECT_EQ(readSmokeMask(maskFile, key, 2, first.smokeMask.size()), first.smokeMask)
+        << "not rewritten";
 }
 
 TEST_F(SmokeMaskTest, AtSmokeScaleOneNoMaskFileIsNeeded) {

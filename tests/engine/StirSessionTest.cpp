@@ -30,7 +30,8 @@ RunInputs smallRun(Integrator integrator) {
 
 TEST(StirSession, StatusNamesTheIntegratorAsTheSceneFileDoes) {
     const Backend backend(BackendChoice{BackendKind::CpuReference, {}});
-    for (const Integrator integrator : {Integrator::Explicit, Integrator::Rk4, Integrator::Midpoint}) {
+    for (const Integrator integrator :
+         {Integrator::Explicit, Integrator::Rk4, Integrator::Midpoint}) {
         const RunInputs run = smallRun(integrator);
         stir::StirSession session(backend, run);
         const std::string status = session.status();

@@ -28,8 +28,9 @@ protected:
 
     /// A scripted run in a 640 × 480 window (`sized` false: the default size), simulated on the
     /// window's device or on the CPU reference beside it.
-    stir::StirReport run(int dim, const std::string& script, int frames = 40, const fs::path& screenshot = {},
-                         bool sized = true, BackendKind backend = BackendKind::Vulkan) const {
+    stir::StirReport run(int dim, const std::string& script, int frames = 40,
+                         const fs::path& screenshot = {}, bool sized = true,
+                         BackendKind backend = BackendKind::Vulkan) const {
         stir::StirOptions options;
         options.backend.kind = backend;
         if (sized) {
@@ -110,8 +111,7 @@ TEST_F(StirWindowTest, PaddleFollowsTheDragAndPushesTheSmoke) {
 
 TEST_F(StirWindowTest, WindowResizesWithoutErrors) {
     const fs::path shot = scratch("resized.png");
-    const stir::StirReport report =
-        run(2, "0.1 resize 800 400\n0.3 resize 320 240\n", 20, shot);
+    const stir::StirReport report = run(2, "0.1 resize 800 400\n0.3 resize 320 240\n", 20, shot);
     EXPECT_EQ(report.width, 320);
     EXPECT_EQ(report.height, 240);
     EXPECT_EQ(report.frames, 20);
@@ -148,9 +148,11 @@ TEST_F(StirWindowTest, KeysPauseSwitchAndReset) {
 }
 
 TEST_F(StirWindowTest, ThreeDimensionalSceneOrbitsZoomsAndStirsAcrossTheView) {
-    const std::string orbit = "0.05 rdown 0.5 0.5\n0.1 move 0.6 0.45\n0.15 rup 0.6 0.45\n0.15 scroll 2\n";
+    const std::string orbit =
+        "0.05 rdown 0.5 0.5\n0.1 move 0.6 0.45\n0.15 rup 0.6 0.45\n0.15 scroll 2\n";
     const stir::StirReport none = run(3, orbit, 40);
-    const std::string stroke = orbit + "0.2 down 0.3 0.7\n0.3 move 0.5 0.7\n0.4 move 0.7 0.7\n0.45 up 0.7 0.7\n";
+    const std::string stroke =
+        orbit + "0.2 down 0.3 0.7\n0.3 move 0.5 0.7\n0.4 move 0.7 0.7\n0.45 up 0.7 0.7\n";
     const stir::StirReport stirred = run(3, stroke, 40);
     EXPECT_EQ(stirred.validationMessages, 0u);
     // The smoke moves along the drag's direction in the scene: the stroke's two ends on the

@@ -14,7 +14,8 @@ std::array<int, 4> extent(const std::vector<std::uint8_t>& codes, int width, std
     for (std::size_t p = 0; p < codes.size(); ++p)
         if (codes[p] == code) {
             const int x = int(p % std::size_t(width)), y = int(p / std::size_t(width));
-            box = {std::min(box[0], x), std::min(box[1], y), std::max(box[2], x + 1), std::max(box[3], y + 1)};
+            box = {std::min(box[0], x), std::min(box[1], y), std::max(box[2], x + 1),
+                   std::max(box[3], y + 1)};
         }
     return box;
 }

@@ -22,8 +22,8 @@
 
 #include <gtest/gtest.h>
 
-#include "engine/core/MacSampling.h"
 #include "engine/core/Error.h"
+#include "engine/core/MacSampling.h"
 #include "engine/output/VdbFrame.h"
 #include "tests/support/TestFolder.h"
 
@@ -59,7 +59,8 @@ struct FrameData {
         return f;
     }
     Vec3 centre(int i, int j, int k) const {
-        return {smoke.cellCentre(0, i), smoke.cellCentre(1, j), smoke.dim == 3 ? smoke.cellCentre(2, k) : 0.0};
+        return {smoke.cellCentre(0, i), smoke.cellCentre(1, j),
+                smoke.dim == 3 ? smoke.cellCentre(2, k) : 0.0};
     }
 };
 
@@ -83,7 +84,8 @@ FrameData makeFrame(int dim, std::array<bool, 3> periodic = {false, false, false
                 const auto c = static_cast<std::size_t>(d.smoke.cellIndex(i, j, k));
                 d.mask[c] = (i + 2 * j + 3 * k) % 7 != 0;
                 d.density[c] = c % 5 == 0 ? 5e-5f : c % 11 == 0 ? 0.0f : 0.1f + 0.013f * float(c);
-                if (dim == 3) d.temperature[c] = c % 4 == 0 ? -2e-5 : 0.7 * std::sin(0.37 * double(c));
+                if (dim == 3)
+                    d.temperature[c] = c % 4 == 0 ? -2e-5 : 0.7 * std::sin(0.37 * double(c));
             }
     std::mt19937_64 rng(11);
     std::uniform_real_distribution<double> u(-1.0, 1.0);
@@ -102,7 +104,8 @@ protected:
     /// Names of everything in `folder` (to spot leftover temporary files).
     static std::vector<std::string> entries(const fs::path& folder) {
         std::vector<std::string> names;
-        for (const auto& e : fs::directory_iterator(folder)) names.push_back(e.path().filename().string());
+        for (const auto& e : fs::directory_iterator(folder))
+            names.push_back(e.path().filename().string());
         return names;
     }
     testing::TestFolder mFolder;
@@ -125,7 +128,8 @@ void checkRoundTrip(const FrameData& d, const fs::path& file, bool halfFloat) {
             EXPECT_TRUE(g.valuesInWorldSpace);
         }
         EXPECT_EQ(g.savedAsHalf, halfFloat);
-        const double depth = dim == 3 ? d.smoke.spacing[2] : std::min(d.smoke.spacing[0], d.smoke.spacing[1]);
+        const double depth =
+            dim == 3 ? d.smoke.spacing[2] : std::min(d.smoke.spacing[0], d.smoke.spacing[1]);
         EXPECT_DOUBLE_EQ(g.voxelSize[0], d.smoke.spacing[0]);
         EXPECT_DOUBLE_EQ(g.voxelSize[1], d.smoke.spacing[1]);
         EXPECT_DOUBLE_EQ(g.voxelSize[2], depth);
@@ -133,7 +137,8 @@ void checkRoundTrip(const FrameData& d, const fs::path& file, bool halfFloat) {
             for (int j = 0; j < d.smoke.cells[1]; ++j)
                 for (int i = 0; i < d.smoke.cells[0]; ++i) {
                     const Vec3 world = g.indexToWorld(i, j, k), centre = d.centre(i, j, k);
-                    for (int a = 0; a < 3; ++a) EXPECT_NEAR(world[a], centre[a], 1e-14) << i << j << k;
+                    for (int a = 0; a < 3; ++a)
+                        EXPECT_NEAR(world[a], centre[a], 1e-14) << i << j << k;
                 }
     }
     EXPECT_EQ(info.frame, 17);
@@ -162,7 +167,8 @@ void checkRoundTrip(const FrameData& d, const fs::path& file, bool halfFloat) {
         for (std::size_t c = 0; c < centres.size(); ++c) {
             const std::string what = std::string(name) + " at cell " + std::to_string(c);
             const bool wantActive = d.mask[c] && std::abs(double(values[c])) >= d.threshold;
-            EXPECT_EQ(samples[c].active, wantActive) << what << " value " << values[c] << " mask " << int(d.mask[c]);
+            EXPECT_EQ(samples[c].active, wantActive)
+                << what << " value " << values[c] << " mask " << int(d.mask[c]);
             if (wantActive) {
                 expectStored(samples[c].value[0], values[c], what);
                 rounded += samples[c].value[0] != double(float(values[c]));
@@ -201,7 +207,8 @@ void checkRoundTrip(const FrameData& d, const fs::path& file, bool halfFloat) {
         slow += d.mask[c] && !wantActive;
     }
     EXPECT_EQ(info.grid("vel")->activeVoxels, active);
-    EXPECT_GT(slow, 0) << "no fluid cell fell below the velocity threshold: the test lost its point";
+    EXPECT_GT(slow, 0)
+        << "no fluid cell fell below the velocity threshold: the test lost its point";
 }
 
 TEST_F(VdbFrameTest, FramesRoundTripOnNonCubicCellsInFloatAndHalf) {
@@ -248,7 +255,8 @@ TEST_F(VdbFrameTest, MhdFramesCarryTheMagneticFieldLikeTheVelocity) {
         const FrameData d = makeFrame(dim);
         // Another face field than the velocity, so a mix-up of the two shows.
         std::vector<double> magnetic(d.faces.size());
-        for (std::size_t f = 0; f < magnetic.size(); ++f) magnetic[f] = 0.5 - 0.9 * d.faces[magnetic.size() - 1 - f];
+        for (std::size_t f = 0; f < magnetic.size(); ++f)
+            magnetic[f] = 0.5 - 0.9 * d.faces[magnetic.size() - 1 - f];
         VdbFrame frame = d.frame();
         frame.faceMagnetic = magnetic;
         const fs::path file = mDir / frameFileName("mhd", dim);
@@ -270,12 +278,15 @@ TEST_F(VdbFrameTest, MhdFramesCarryTheMagneticFieldLikeTheVelocity) {
         const std::vector<VdbSample> stored = sampleVdbGrid(file, "magnetic", centres);
         std::int64_t active = 0;
         for (std::size_t c = 0; c < centres.size(); ++c) {
-            const Vec3 want = sampleVelocity(d.basis, std::span<const double>(magnetic), centres[c]);
-            const double size = std::sqrt(want[0] * want[0] + want[1] * want[1] + want[2] * want[2]);
+            const Vec3 want =
+                sampleVelocity(d.basis, std::span<const double>(magnetic), centres[c]);
+            const double size =
+                std::sqrt(want[0] * want[0] + want[1] * want[1] + want[2] * want[2]);
             const bool wantActive = d.mask[c] && size >= d.threshold;
             EXPECT_EQ(stored[c].active, wantActive) << "cell " << c;
             for (int a = 0; a < 3; ++a)
-                EXPECT_EQ(stored[c].value[a], wantActive ? double(float(want[a])) : 0.0) << "cell " << c;
+                EXPECT_EQ(stored[c].value[a], wantActive ? double(float(want[a])) : 0.0)
+                    << "cell " << c;
             active += wantActive;
         }
         EXPECT_EQ(grid->activeVoxels, active);
@@ -362,7 +373,8 @@ TEST_F(VdbFrameTest, FailedWriteKeepsThePreviousFrame) {
     bad.frame = 99;
     d.density.pop_back();
     bad.density = d.density;
-    expectWriteError([&] { writeVdbFrame(file, bad); }, file, "density has 59 values for 60 smoke cells");
+    expectWriteError([&] { writeVdbFrame(file, bad); }, file,
+                     "density has 59 values for 60 smoke cells");
     EXPECT_EQ(readVdbFrameInfo(file).frame, 17);
     EXPECT_EQ(entries(mDir).size(), 1u);
     // A good frame replaces it.
@@ -377,16 +389,19 @@ TEST_F(VdbFrameTest, FailedWriteKeepsThePreviousFrame) {
 TEST_F(VdbFrameTest, NonFiniteValuesAreRefused) {
     FrameData d = makeFrame(3);
     d.density[5] = std::nanf("");
-    expectWriteError([&] { writeVdbFrame(mDir / "a.vdb", d.frame()); }, mDir / "a.vdb", "density is not finite");
+    expectWriteError([&] { writeVdbFrame(mDir / "a.vdb", d.frame()); }, mDir / "a.vdb",
+                     "density is not finite");
     d = makeFrame(3);
     d.faces[3] = INFINITY;
-    expectWriteError([&] { writeVdbFrame(mDir / "b.vdb", d.frame()); }, mDir / "b.vdb", "face velocity is not finite");
+    expectWriteError([&] { writeVdbFrame(mDir / "b.vdb", d.frame()); }, mDir / "b.vdb",
+                     "face velocity is not finite");
     d = makeFrame(2);
     std::vector<double> magnetic(d.faces.size(), 0.0);
     magnetic[1] = std::nan("");
     VdbFrame frame = d.frame();
     frame.faceMagnetic = magnetic;
-    expectWriteError([&] { writeVdbFrame(mDir / "c.vdb", frame); }, mDir / "c.vdb", "magnetic field is not finite");
+    expectWriteError([&] { writeVdbFrame(mDir / "c.vdb", frame); }, mDir / "c.vdb",
+                     "magnetic field is not finite");
     EXPECT_TRUE(entries(mDir).empty());
 }
 

@@ -1,5 +1,6 @@
-// Whole-box domains must reproduce the plain MAC operators exactly (precompute/README.md; tests/README.md): every κ² and
-// μ² equals a sum of 4/h² sin²(πl/2n) per axis, with the right multiplicity.
+// Whole-box domains must reproduce the plain MAC operators exactly (precompute/README.md;
+// tests/README.md): every κ² and μ² equals a sum of 4/h² sin²(πl/2n) per axis, with the right
+// multiplicity.
 
 #include <gtest/gtest.h>
 
@@ -96,7 +97,8 @@ TEST(BoxSpectrum, AlignedBoxDomainEqualsTheSmallerGrid) {
     scene.basis.scalarModes = 20;
     Progress quiet = Progress::silent();
     const BasisCache cache = computeBasis(scene, quiet);
-    const GridSpec spanned = testing::gridScene({20, 20, 1}, {-0.5, -0.75, 0.0}, {0.75, 0.5, 0.0}, 2).grid;
+    const GridSpec spanned =
+        testing::gridScene({20, 20, 1}, {-0.5, -0.75, 0.0}, {0.75, 0.5, 0.0}, 2).grid;
     expectSpectrum(cache.velocity.eigenvalues, boxSpectrum(spanned, Field::Velocity), "velocity");
     expectSpectrum(cache.scalar.eigenvalues, boxSpectrum(spanned, Field::Neumann), "Neumann");
     EXPECT_EQ(cache.cells.size(), 400u);

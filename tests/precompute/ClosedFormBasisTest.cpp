@@ -41,7 +41,8 @@ double worstRelative(const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
 
 /// max |σ − 1| over the singular values of Qᵀ M P: 0 when the ⋆-orthonormal columns of P and Q
 /// span the same space.
-double spanDistance(const Eigen::MatrixXd& p, const Eigen::MatrixXd& q, const Eigen::VectorXd& mass) {
+double spanDistance(const Eigen::MatrixXd& p, const Eigen::MatrixXd& q,
+                    const Eigen::VectorXd& mass) {
     const Eigen::MatrixXd overlap = q.transpose() * mass.asDiagonal() * p;
     const Eigen::VectorXd s = Eigen::JacobiSVD<Eigen::MatrixXd>(overlap).singularValues();
     return (s.array() - 1.0).abs().maxCoeff();
@@ -55,14 +56,15 @@ Eigen::MatrixXd scalarColumns(const BasisCache& c) {
 /// relative; Dirichlet 1e-9: the eigensolver's ghost-fluid wall sits 1e-10 h inside the box) and
 /// equal spans of every whole degenerate cluster.
 void expectEqualToEigensolver(SceneSpec scene, int velocityModes, int scalarModes,
-                              std::vector<ScalarBoundary> boundaries = {ScalarBoundary::Neumann,
-                                                                        ScalarBoundary::Dirichlet}) {
+                              std::vector<ScalarBoundary> boundaries = {
+                                  ScalarBoundary::Neumann, ScalarBoundary::Dirichlet}) {
     scene.basis.velocityModes = {{1, velocityModes + 1}};
     scene.basis.scalarModes = scalarModes + 1;
     Progress quiet = Progress::silent();
     for (ScalarBoundary boundary : boundaries) {
-        SCOPED_TRACE(std::string(boundary == ScalarBoundary::Dirichlet ? "Dirichlet" : "Neumann") + ", periodic " +
-                     std::to_string(scene.grid.periodic[0]) + std::to_string(scene.grid.periodic[1]) +
+        SCOPED_TRACE(std::string(boundary == ScalarBoundary::Dirichlet ? "Dirichlet" : "Neumann") +
+                     ", periodic " + std::to_string(scene.grid.periodic[0]) +
+                     std::to_string(scene.grid.periodic[1]) +
                      std::to_string(scene.grid.periodic[2]));
         scene.basis.scalarBoundary = boundary;
         BasisCache closed = computeBasis(scene, quiet);
@@ -71,35 +73,46 @@ void expectEqualToEigensolver(SceneSpec scene, int velocityModes, int scalarMode
         ASSERT_EQ(closed.scalar.source, BasisSource::ClosedForm);
         ASSERT_EQ(solved.velocity.source, BasisSource::Eigensolve);
         EXPECT_EQ(closed.faces, solved.faces);
-        EXPECT_LE((closed.faceStar - solved.faceStar).cwiseAbs().maxCoeff(), 1e-14 * solved.faceStar.maxCoeff());
+        EXPECT_LE((closed.faceStar - solved.faceStar).cwiseAbs().maxCoeff(),
+                  1e-14 * solved.faceStar.maxCoeff());
         EXPECT_EQ(closed.cells, solved.cells);
 
         const Eigen::Index nv = clusterEnd(closed.velocity.eigenvalues, velocityModes);
-        EXPECT_LE(worstRelative(closed.velocity.eigenvalues.head(nv), solved.velocity.eigenvalues.head(nv)), 1e-10);
-        const Eigen::MatrixXd columns = velocityModeFluxes(closed.grid, closed.faces, closed.velocity.separable);
-        EXPECT_LE(spanDistance(columns.leftCols(nv), solved.velocity.modes.leftCols(nv),
-                               solved.faceStar), 1e-8);
+        EXPECT_LE(worstRelative(closed.velocity.eigenvalues.head(nv),
+                                solved.velocity.eigenvalues.head(nv)),
+                  1e-10);
+        const Eigen::MatrixXd columns =
+            velocityModeFluxes(closed.grid, closed.faces, closed.velocity.separable);
+        EXPECT_LE(
+            spanDistance(columns.leftCols(nv), solved.velocity.modes.leftCols(nv), solved.faceStar),
+            1e-8);
         testing::expectValidVelocityBasis(closed);
 
         const bool dirichlet = boundary == ScalarBoundary::Dirichlet;
         const Eigen::Index ns = clusterEnd(closed.scalar.eigenvalues, scalarModes);
-        EXPECT_LE(worstRelative(closed.scalar.eigenvalues.head(ns), solved.scalar.eigenvalues.head(ns)),
-                  dirichlet ? 1e-9 : 1e-10) << (dirichlet ? "Dirichlet" : "Neumann");
+        EXPECT_LE(
+            worstRelative(closed.scalar.eigenvalues.head(ns), solved.scalar.eigenvalues.head(ns)),
+            dirichlet ? 1e-9 : 1e-10)
+            << (dirichlet ? "Dirichlet" : "Neumann");
         EXPECT_EQ(closed.scalar.cells, solved.scalar.cells);
         EXPECT_LE(spanDistance(scalarColumns(closed).leftCols(ns), solved.scalar.modes.leftCols(ns),
-                               solved.scalar.cellStar), 1e-8) << (dirichlet ? "Dirichlet" : "Neumann");
+                               solved.scalar.cellStar),
+                  1e-8)
+            << (dirichlet ? "Dirichlet" : "Neumann");
         EXPECT_EQ(closed.scalar.omittedConstants, solved.scalar.omittedConstants);
     }
 }
 
 TEST(ClosedFormBasis, EqualsTheEigensolverOnA2DBox) {
     // Non-square cells and box.
-    expectEqualToEigensolver(testing::gridScene({14, 11, 1}, {-1.0, 0.0, 0.0}, {1.25, 1.5, 0.0}, 2), 60, 40);
+    expectEqualToEigensolver(testing::gridScene({14, 11, 1}, {-1.0, 0.0, 0.0}, {1.25, 1.5, 0.0}, 2),
+                             60, 40);
 }
 
 TEST(ClosedFormBasis, EqualsTheEigensolverOnA3DBox) {
     // Every 3D wave vector with three non-zero wave numbers carries two fields: kept both.
-    expectEqualToEigensolver(testing::gridScene({7, 6, 5}, {0.0, 0.0, 0.0}, {1.2, 0.9, 1.0}, 3), 80, 40);
+    expectEqualToEigensolver(testing::gridScene({7, 6, 5}, {0.0, 0.0, 0.0}, {1.2, 0.9, 1.0}, 3), 80,
+                             40);
 }
 
 /// `scene` with the given axes periodic.
@@ -153,7 +166,9 @@ TEST(ClosedFormBasis, ModeRangesPickPositionsOfTheWholeSpectrum) {
         ADD_FAILURE() << "asked for more modes than the grid holds";
     } catch (const Error& e) {
         // faces 5·5·4 + 6·4·4 + 6·5·3 − cells 6·5·4 + one component
-        EXPECT_NE(std::string(e.what()).find("holds only 167 divergence-free fields"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("holds only 167 divergence-free fields"),
+                  std::string::npos)
+            << e.what();
     }
 }
 
@@ -180,16 +195,19 @@ void expectPeriodicEigenbasis(GridSpec grid, int expectedHarmonic) {
     EXPECT_LE(residual.cwiseAbs().maxCoeff(), 1e-12 * (l2 * modes).cwiseAbs().maxCoeff());
     EXPECT_LE((d * modes).cwiseAbs().maxCoeff(), 1e-12 * modes.cwiseAbs().maxCoeff());
     const Eigen::MatrixXd gram = modes.transpose() * star.asDiagonal() * modes;
-    EXPECT_LE((gram - Eigen::MatrixXd::Identity(dimension, dimension)).cwiseAbs().maxCoeff(), 1e-12);
+    EXPECT_LE((gram - Eigen::MatrixXd::Identity(dimension, dimension)).cwiseAbs().maxCoeff(),
+              1e-12);
 
     // The div-free spectrum of the dense operator: L2 on an orthonormal basis of ker d.
     const Eigen::VectorXd root = star.cwiseSqrt();
     const Eigen::MatrixXd kernel = lu.kernel();
-    const Eigen::MatrixXd q = Eigen::HouseholderQR<Eigen::MatrixXd>(root.asDiagonal() * kernel)
-                                  .householderQ() * Eigen::MatrixXd::Identity(d.cols(), dimension);
+    const Eigen::MatrixXd q =
+        Eigen::HouseholderQR<Eigen::MatrixXd>(root.asDiagonal() * kernel).householderQ() *
+        Eigen::MatrixXd::Identity(d.cols(), dimension);
     const Eigen::MatrixXd reduced = q.transpose() * root.cwiseInverse().asDiagonal() * l2 *
                                     root.cwiseInverse().asDiagonal() * q;
-    Eigen::VectorXd spectrum = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(reduced).eigenvalues();
+    Eigen::VectorXd spectrum =
+        Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(reduced).eigenvalues();
     const double top = spectrum.maxCoeff();
     for (Eigen::Index i = 0; i < dimension; ++i)
         EXPECT_NEAR(spectrum[i], basis.eigenvalues[i], 1e-11 * top) << "mode " << i + 1;
@@ -202,18 +220,23 @@ void expectPeriodicEigenbasis(GridSpec grid, int expectedHarmonic) {
             for (int a = 0; a < grid.dim; ++a) {
                 if (grid.isPeriodic(a)) continue;
                 const MacGrid mac = MacGrid::fromSpec(grid);
-                const double weight = 2.0 * mac.faceArea(a) / grid.spacing(a) / std::pow(mac.cellVolume(), 2);
+                const double weight =
+                    2.0 * mac.faceArea(a) / grid.spacing(a) / std::pow(mac.cellVolume(), 2);
                 for (Eigen::Index c = 0; c < mac.cellCount(); ++c) {
-                    std::array<int, 3> pos{int(c % mac.cells[0]), int(c / mac.cells[0] % mac.cells[1]),
+                    std::array<int, 3> pos{int(c % mac.cells[0]),
+                                           int(c / mac.cells[0] % mac.cells[1]),
                                            int(c / mac.cells[0] / mac.cells[1])};
                     l3(c, c) += weight * ((pos[a] == 0) + (pos[a] == grid.resolution[a] - 1));
                 }
             }
         const Eigen::Index cells = l3.rows();
-        const ClosedFormScalar scalar = closedFormScalarBasis(grid, int(cells) - (dirichlet ? 0 : 1), boundary);
+        const ClosedFormScalar scalar =
+            closedFormScalarBasis(grid, int(cells) - (dirichlet ? 0 : 1), boundary);
         const Eigen::MatrixXd phi = scalarModeValues(grid, cache.cells, scalar.modes);
-        const Eigen::MatrixXd r = l3 * phi - cache.cellStar.asDiagonal() * phi * scalar.eigenvalues.asDiagonal();
-        EXPECT_LE(r.cwiseAbs().maxCoeff(), 1e-12 * (l3 * phi).cwiseAbs().maxCoeff()) << (dirichlet ? "Dirichlet" : "Neumann");
+        const Eigen::MatrixXd r =
+            l3 * phi - cache.cellStar.asDiagonal() * phi * scalar.eigenvalues.asDiagonal();
+        EXPECT_LE(r.cwiseAbs().maxCoeff(), 1e-12 * (l3 * phi).cwiseAbs().maxCoeff())
+            << (dirichlet ? "Dirichlet" : "Neumann");
         const Eigen::MatrixXd g = phi.transpose() * cache.cellStar.asDiagonal() * phi;
         EXPECT_LE((g - Eigen::MatrixXd::Identity(g.rows(), g.cols())).cwiseAbs().maxCoeff(), 1e-12);
     }

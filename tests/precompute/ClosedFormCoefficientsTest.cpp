@@ -28,7 +28,8 @@ std::vector<double> packed(const BasisCache::Coefficients& c, int n) {
     for (std::size_t e = 0; e < c.value.size(); ++e) {
         EXPECT_LT(c.k[e], c.j[e]);
         EXPECT_TRUE(seen.insert({c.k[e], c.i[e], c.j[e]}).second) << "entry given twice";
-        out[packedIndex(std::size_t(n), std::size_t(c.k[e]), std::size_t(c.i[e]), std::size_t(c.j[e]))] = c.value[e];
+        out[packedIndex(std::size_t(n), std::size_t(c.k[e]), std::size_t(c.i[e]),
+                        std::size_t(c.j[e]))] = c.value[e];
     }
     return out;
 }
@@ -54,10 +55,12 @@ void expectEqualToQuadrature(const GridSpec& grid, int modes) {
 
     const CubicalComplex complex(grid);
     const Domain domain({}, grid.dim, grid.spacing(0));
-    const CutCellMeasures measures = measureCutCells(complex, domain, BoundaryTreatment::CutCell, 1);
+    const CutCellMeasures measures =
+        measureCutCells(complex, domain, BoundaryTreatment::CutCell, 1);
     const CutCellDec dec = buildCutCellDec(complex, measures, WallKind::FreeSlip);
     ASSERT_EQ(dec.faces.toGlobal, cache.faces);
-    const std::vector<double> quadrature = assembleStructuralCoefficients(complex, measures, dec, columns);
+    const std::vector<double> quadrature =
+        assembleStructuralCoefficients(complex, measures, dec, columns);
     const BasisCache::Coefficients sparse = assembleClosedFormCoefficients(grid, basis.modes);
     // The test's wrapped quadrature (used on periodic axes below) is the production one here.
     const std::vector<double> full = testing::WholeBoxReference(cache).coefficients(columns);
@@ -65,8 +68,10 @@ void expectEqualToQuadrature(const GridSpec& grid, int modes) {
     for (int k = 0; k < modes; ++k)
         for (int i = 0; i < modes; ++i)
             for (int j = k + 1; j < modes; ++j)
-                mismatch = std::max(mismatch, std::abs(full[std::size_t((k * modes + i) * modes + j)] -
-                                                       quadrature[packedIndex(std::size_t(modes), std::size_t(k), std::size_t(i), std::size_t(j))]));
+                mismatch = std::max(
+                    mismatch, std::abs(full[std::size_t((k * modes + i) * modes + j)] -
+                                       quadrature[packedIndex(std::size_t(modes), std::size_t(k),
+                                                              std::size_t(i), std::size_t(j))]));
     EXPECT_LE(mismatch, 1e-12 * *std::max_element(full.begin(), full.end()));
     const double error = relativeDifference(packed(sparse, modes), quadrature);
     EXPECT_LE(error, 1e-10);
@@ -81,11 +86,13 @@ void expectEqualToQuadrature(const GridSpec& grid, int modes) {
 }
 
 TEST(ClosedFormCoefficients, EqualTheQuadratureOnA2DBox) {
-    expectEqualToQuadrature(testing::gridScene({12, 9, 1}, {-1.0, 0.0, 0.0}, {1.25, 1.5, 0.0}, 2).grid, 60);
+    expectEqualToQuadrature(
+        testing::gridScene({12, 9, 1}, {-1.0, 0.0, 0.0}, {1.25, 1.5, 0.0}, 2).grid, 60);
 }
 
 TEST(ClosedFormCoefficients, EqualTheQuadratureOnA3DBox) {
-    expectEqualToQuadrature(testing::gridScene({7, 6, 5}, {0.0, 0.0, 0.0}, {1.2, 0.9, 1.0}, 3).grid, 70);
+    expectEqualToQuadrature(testing::gridScene({7, 6, 5}, {0.0, 0.0, 0.0}, {1.2, 0.9, 1.0}, 3).grid,
+                            70);
 }
 
 /// Periodic axes: equal to the wrapped quadrature on the materialized modes.
@@ -104,14 +111,19 @@ void expectEqualToWrappedQuadrature(GridSpec grid, std::array<bool, 3> periodic,
             for (int j = 0; j < modes; ++j) {
                 const double c = full[std::size_t((k * modes + i) * modes + j)];
                 largest = std::max(largest, std::abs(c));
-                antisymmetry = std::max(antisymmetry, std::abs(c + full[std::size_t((j * modes + i) * modes + k)]));
-                if (k < j) reference[packedIndex(std::size_t(modes), std::size_t(k), std::size_t(i), std::size_t(j))] = c;
+                antisymmetry = std::max(
+                    antisymmetry, std::abs(c + full[std::size_t((j * modes + i) * modes + k)]));
+                if (k < j)
+                    reference[packedIndex(std::size_t(modes), std::size_t(k), std::size_t(i),
+                                          std::size_t(j))] = c;
             }
     EXPECT_LE(antisymmetry, 1e-13 * largest) << "the reference quadrature itself";
-    const double error = relativeDifference(packed(assembleClosedFormCoefficients(grid, basis.modes), modes), reference);
+    const double error = relativeDifference(
+        packed(assembleClosedFormCoefficients(grid, basis.modes), modes), reference);
     EXPECT_LE(error, 1e-10);
-    std::printf("[ measured ] %dD periodic [%d %d %d], %d modes: |C − quadrature| / max|C| = %.2e\n",
-                grid.dim, periodic[0], periodic[1], periodic[2], modes, error);
+    std::printf(
+        "[ measured ] %dD periodic [%d %d %d], %d modes: |C − quadrature| / max|C| = %.2e\n",
+        grid.dim, periodic[0], periodic[1], periodic[2], modes, error);
 }
 
 TEST(ClosedFormCoefficients, EqualTheWrappedQuadratureOnPeriodicAxes2D) {
@@ -132,14 +144,16 @@ TEST(ClosedFormCoefficients, TheNonZeroEstimateBoundsTheCountFromAbove) {
     // The memory estimates use it: never below the count, and not far above.
     for (const int dim : {2, 3}) {
         const int n = dim == 3 ? 20 : 64, modes = 600;
-        const GridSpec grid =
-            testing::gridScene({n, n, dim == 3 ? n : 1}, {0.0, 0.0, 0.0}, {1.0, 1.0, dim == 3 ? 1.0 : 0.0}, dim).grid;
+        const GridSpec grid = testing::gridScene({n, n, dim == 3 ? n : 1}, {0.0, 0.0, 0.0},
+                                                 {1.0, 1.0, dim == 3 ? 1.0 : 0.0}, dim)
+                                  .grid;
         const ClosedFormVelocity basis = closedFormVelocityBasis(grid, {{1, modes}});
         const double count = double(assembleClosedFormCoefficients(grid, basis.modes).value.size());
         const double ratio = count / estimatedClosedFormNonZeros(dim, modes);
         EXPECT_LE(ratio, 1.0) << dim << "D: " << count << " non-zeros";
         EXPECT_GE(ratio, 0.7) << dim << "D: " << count << " non-zeros";
-        std::printf("[ measured ] %dD, %d modes: %.0f non-zeros, %.2f of the estimate\n", dim, modes, count, ratio);
+        std::printf("[ measured ] %dD, %d modes: %.0f non-zeros, %.2f of the estimate\n", dim,
+                    modes, count, ratio);
     }
 }
 

@@ -116,7 +116,8 @@ std::vector<double> discreteCoefficients(int resolution) {
                     p[normal] = e.pos[normal] * scene.grid.spacing(normal);
                     p[s] = (e.pos[s] + 0.5 * (kNode[a] + 1)) * hs;
                     p[t] = (e.pos[t] + 0.5 * (kNode[b] + 1)) * ht;
-                    flux += kWeight[a] * kWeight[b] * 0.25 * hs * ht * kFields[m].velocity(p)[normal];
+                    flux +=
+                        kWeight[a] * kWeight[b] * 0.25 * hs * ht * kFields[m].velocity(p)[normal];
                 }
             modes(f, Eigen::Index(m)) = flux;
         }
@@ -131,7 +132,8 @@ TEST(CoefficientAssembly3D, BoxCoefficientsConvergeQuadratically) {
     for (size_t k = 0; k < n; ++k)
         for (size_t j = k + 1; j < n; ++j)
             for (size_t i = 0; i < n; ++i) {
-                exact[packedIndex(n, k, i, j)] = continuumCoefficient(kFields[k], kFields[i], kFields[j]);
+                exact[packedIndex(n, k, i, j)] =
+                    continuumCoefficient(kFields[k], kFields[i], kFields[j]);
                 scale = std::max(scale, std::abs(exact[packedIndex(n, k, i, j)]));
             }
     ASSERT_GT(scale, 1.0) << "the chosen fields must interact";

@@ -112,8 +112,8 @@ std::vector<double> discreteCoefficients(int resolution, const std::vector<Mode>
         for (size_t m = 0; m < fields.size(); ++m) {
             const Mode& b = fields[m];
             // Flux along +normal: ψ(end) − ψ(start) for x-normal faces, the opposite for y-normal.
-            modes(f, Eigen::Index(m)) = xNormal ? b.psi(x0, y0 + hy) - b.psi(x0, y0)
-                                                : b.psi(x0, y0) - b.psi(x0 + hx, y0);
+            modes(f, Eigen::Index(m)) =
+                xNormal ? b.psi(x0, y0 + hy) - b.psi(x0, y0) : b.psi(x0, y0) - b.psi(x0 + hx, y0);
         }
     }
     return assembleStructuralCoefficients(cx, measures, dec, modes);

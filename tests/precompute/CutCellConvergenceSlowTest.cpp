@@ -58,12 +58,13 @@ Orders observedOrders(BoundaryTreatment treatment, const char* label) {
     auto order = [](double c, double f) { return std::log2(c / f) / 2.0; };
     const Orders o{order(coarse.velocity, fine.velocity), order(coarse.neumann, fine.neumann),
                    order(coarse.dirichlet, fine.dirichlet)};
-    std::printf("unit disk, %s, max relative error of the first 10 eigenvalues, 64² → 256²:\n"
-                "  velocity  %.3e → %.3e  order %.2f\n"
-                "  Neumann   %.3e → %.3e  order %.2f\n"
-                "  Dirichlet %.3e → %.3e  order %.2f\n",
-                label, coarse.velocity, fine.velocity, o.velocity, coarse.neumann, fine.neumann,
-                o.neumann, coarse.dirichlet, fine.dirichlet, o.dirichlet);
+    std::printf(
+        "unit disk, %s, max relative error of the first 10 eigenvalues, 64² → 256²:\n"
+        "  velocity  %.3e → %.3e  order %.2f\n"
+        "  Neumann   %.3e → %.3e  order %.2f\n"
+        "  Dirichlet %.3e → %.3e  order %.2f\n",
+        label, coarse.velocity, fine.velocity, o.velocity, coarse.neumann, fine.neumann, o.neumann,
+        coarse.dirichlet, fine.dirichlet, o.dirichlet);
     return o;
 }
 

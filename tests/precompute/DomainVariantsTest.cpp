@@ -8,8 +8,8 @@
 
 #include "precompute/Precompute.h"
 #include "precompute/geometry/MeshGenerator.h"
-#include "tests/support/TestFolder.h"
 #include "tests/support/RealBases.h"
+#include "tests/support/TestFolder.h"
 #include "tests/support/TestScenes.h"
 
 namespace modeflow {
@@ -38,7 +38,8 @@ TEST(DomainVariants, MeshedSphereMatchesTheAnalyticBall) {
     const BasisCache m = solve(meshed);
     double worst = 0.0;
     for (int i = 0; i < 8; ++i)
-        worst = std::max(worst, std::abs(m.velocity.eigenvalues[i] / a.velocity.eigenvalues[i] - 1.0));
+        worst =
+            std::max(worst, std::abs(m.velocity.eigenvalues[i] / a.velocity.eigenvalues[i] - 1.0));
     std::printf("meshed vs analytic ball, first 8 κ²: max relative difference %.2e\n", worst);
     EXPECT_LT(worst, 1e-2);
     testing::expectValidVelocityBasis(m);

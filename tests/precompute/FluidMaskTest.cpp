@@ -24,7 +24,8 @@ BasisCache fractionsOnly(const SceneSpec& scene, std::vector<double> fractions) 
 
 TEST(FluidMask, WholeBoxIsAllFluid) {
     const SceneSpec scene = testing::gridScene({8, 6, 4}, {0, 0, 0}, {1, 1, 1}, 3);
-    const std::vector<std::uint8_t> mask = fluidMask(scene, fractionsOnly(scene, std::vector<double>(192, 1.0)), 2);
+    const std::vector<std::uint8_t> mask =
+        fluidMask(scene, fractionsOnly(scene, std::vector<double>(192, 1.0)), 2);
     EXPECT_EQ(mask.size(), 16u * 12u * 8u);
     EXPECT_TRUE(std::all_of(mask.begin(), mask.end(), [](std::uint8_t m) { return m == 1; }));
 }
@@ -40,7 +41,8 @@ TEST(FluidMask, FollowsBasisCellsAtScaleOneAndTheDomainOnFinerGrids) {
             int inside = 0;
             for (int sy = 0; sy < 8; ++sy)
                 for (int sx = 0; sx < 8; ++sx) {
-                    const double px = basis.origin[0] + (x + (sx + 0.5) / 8) * basis.spacing[0] - 0.3;
+                    const double px =
+                        basis.origin[0] + (x + (sx + 0.5) / 8) * basis.spacing[0] - 0.3;
                     const double py = basis.origin[1] + (y + (sy + 0.5) / 8) * basis.spacing[1];
                     inside += px * px + py * py < 0.36;
                 }
@@ -48,7 +50,8 @@ TEST(FluidMask, FollowsBasisCellsAtScaleOneAndTheDomainOnFinerGrids) {
         }
     const BasisCache cache = fractionsOnly(scene, fractions);
     const std::vector<std::uint8_t> coarse = fluidMask(scene, cache, 1);
-    for (std::size_t c = 0; c < coarse.size(); ++c) EXPECT_EQ(coarse[c], fractions[c] > 0.0 ? 1 : 0) << c;
+    for (std::size_t c = 0; c < coarse.size(); ++c)
+        EXPECT_EQ(coarse[c], fractions[c] > 0.0 ? 1 : 0) << c;
     for (const int scale : {2, 3}) {
         const MacGrid grid = basis.refined(scale);
         const std::vector<std::uint8_t> mask = fluidMask(scene, cache, scale);

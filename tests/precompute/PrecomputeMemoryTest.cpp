@@ -35,7 +35,8 @@ std::string refusal(const SceneSpec& scene) {
 }
 
 TEST(PrecomputeMemory, TheDofCountsAreThoseOfTheDomainWithinAFewPercent) {
-    for (const SceneSpec& scene : {testing::unitBallScene(2, 96, 4, 0), testing::unitBallScene(3, 20, 4, 0)}) {
+    for (const SceneSpec& scene :
+         {testing::unitBallScene(2, 96, 4, 0), testing::unitBallScene(3, 20, 4, 0)}) {
         const PrecomputeMemory estimate = estimatePrecomputeMemory(scene);
         Progress quiet = Progress::silent();
         const BasisCache cache = computeBasis(scene, quiet);
@@ -50,7 +51,8 @@ TEST(PrecomputeMemory, TheDofCountsAreThoseOfTheDomainWithinAFewPercent) {
 }
 
 TEST(PrecomputeMemory, ARefusalNamesTheResolutionAndTheModesWhenFewerWouldFit) {
-    const SceneSpec scene = testing::unitBallScene(2, 64, 400, 0);  // 400 modes: the packed coefficients dominate
+    const SceneSpec scene =
+        testing::unitBallScene(2, 64, 400, 0);  // 400 modes: the packed coefficients dominate
     const PrecomputeMemory estimate = estimatePrecomputeMemory(scene);
     ASSERT_LT(2.0 * estimate.gridBytes, estimate.peakBytes);
     {

@@ -846,6 +846,38 @@ TEST_F(SceneLoaderTest, MagneticFieldIsRandomOrUniformAndChecked) {
                     "[initial].magnetic: only used with [simulation] mhd = true");
 }
 
+TEST_F(SceneLoaderTest, ForcingHoldsModesByPositionOrWaveNumber) {
+    const std::string base = std::string(kGrid2d) + kBasis;
+    const SceneSpec none = parseScene(base, "s.toml");
+    EXPECT_FALSE(none.forcing.holds());
+    const SceneSpec byPosition = parseScene(base + "[forcing]\nhold_modes = \"1-3,5\"\n", "s.toml");
+    EXPECT_EQ(byPosition.forcing.holdModes, (std::vector<ModeRange>{{1, 3}, {5, 5}}));
+    EXPECT_TRUE(byPosition.forcing.holds());
+    const SceneSpec byKappa = parseScene(base + "[forcing]\nhold_below_kappa = 2.0\n", "s.toml");
+    EXPECT_EQ(byKappa.forcing.holdBelowKappa, 2.0);
+    EXPECT_TRUE(byKappa.forcing.holdModes.empty());
+
+    EXPECT_CONTAINS(errorOf(base + "[forcing]\n"),
+                    "[forcing]: missing hold_modes (e.g. \"1-5\") or hold_below_kappa (e.g. 2.0)");
+    EXPECT_CONTAINS(
+        errorOf(base + "[forcing]\nhold_modes = \"1\"\nhold_below_kappa = 2.0\n"),
+        "[forcing].hold_below_kappa: give either hold_modes or hold_below_kappa, not both");
+    EXPECT_CONTAINS(errorOf(base + "[forcing]\nhold_below_kappa = 0\n"),
+                    "[forcing].hold_below_kappa: must be > 0");
+    EXPECT_CONTAINS(errorOf(base + "[forcing]\nhold_modes = \"3-1\"\n"),
+                    "[forcing].hold_modes: bad mode list");
+    EXPECT_CONTAINS(
+        errorOf(base + "[forcing]\nhold_modes = \"9-11\"\n"),
+        "[forcing].hold_modes: mode 11 is beyond the basis ([basis] has 10 velocity modes)");
+    EXPECT_CONTAINS(errorOf(base + "[forcing]\nhold_modes = \"1-10\"\n"),
+                    "[forcing].hold_modes: holds every mode of the basis: nothing would move");
+    EXPECT_CONTAINS(errorOf(base + "[forcing]\nhold = 2\n"), "[forcing].hold: unknown key");
+    EXPECT_CONTAINS(errorOf(base + "[simulation]\nmhd = true\n[forcing]\nhold_modes = \"1\"\n"),
+                    "[forcing]: holds velocity modes of the fluid model; it cannot be combined "
+                    "with [simulation] mhd");
+    EXPECT_CONTAINS(errorOf(base + "[forcng]\n"), "unknown table (did you mean forcing?)");
+}
+
 TEST_F(SceneLoaderTest, ModalAmplitudesAreRequiredAndChecked) {
     const std::string base = std::string(kGrid2d) + kBasis + "[initial]\nvelocity = \"modes\"\n";
     const SceneSpec scene = parseScene(base + "amplitudes = [[1, 0.5], [3, -0.2], [10, 2]]\n", "s.toml");

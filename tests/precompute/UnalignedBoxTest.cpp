@@ -45,8 +45,8 @@ double boxError(int dim, int n, const Vec3& lo, const Vec3& hi, int count) {
     const std::vector<double> exact = continuumBoxSpectrum(sides, count);
     double worst = 0.0;
     for (int i = 0; i < count; ++i)
-        worst = std::max(worst, std::abs(cache.velocity.eigenvalues[i] - exact[size_t(i)]) /
-                                    exact[size_t(i)]);
+        worst = std::max(
+            worst, std::abs(cache.velocity.eigenvalues[i] - exact[size_t(i)]) / exact[size_t(i)]);
     return worst;
 }
 

@@ -68,8 +68,8 @@ double turnDefect(const BasisCache& cache, int mode) {
         const auto [normal, i, j] = key;
         // (x, y) → (−y, x): an x-flux at (i, j) becomes a +y flux at (N−1−j, i); a y-flux at
         // (i, j) becomes a −x flux at (N−j, i).
-        const auto turned = normal == 0 ? std::tuple{1, kDiskCells - 1 - j, i}
-                                        : std::tuple{0, kDiskCells - j, i};
+        const auto turned =
+            normal == 0 ? std::tuple{1, kDiskCells - 1 - j, i} : std::tuple{0, kDiskCells - j, i};
         const double sign = normal == 0 ? 1.0 : -1.0;
         const auto it = u.find(turned);
         const double image = it == u.end() ? 0.0 : sign * it->second;
@@ -207,8 +207,11 @@ TEST(UniformField, IsUniformInsideDivergenceFreeAndTangentAtTheWall) {
         const Vec3 n{std::cos(angle), std::sin(angle), 0.0};
         // In the layer: divergence-free (central differences, to their truncation error).
         const double r = 0.85;
-        const auto at = [&](double dx, double dy) { return field({r * n[0] + dx, r * n[1] + dy, 0.0}); };
-        const double divergence = (at(h, 0)[0] - at(-h, 0)[0] + at(0, h)[1] - at(0, -h)[1]) / (2 * h);
+        const auto at = [&](double dx, double dy) {
+            return field({r * n[0] + dx, r * n[1] + dy, 0.0});
+        };
+        const double divergence =
+            (at(h, 0)[0] - at(-h, 0)[0] + at(0, h)[1] - at(0, -h)[1]) / (2 * h);
         EXPECT_NEAR(divergence, 0.0, 1e-4) << angle;
         // At the wall: no normal component; outside: no field.
         const Vec3 wall = field({0.999 * n[0], 0.999 * n[1], 0.0});
@@ -251,7 +254,8 @@ TEST(UniformField, ProjectionIsTheLeastSquaresFitAndDivergenceFree) {
     const CubicalComplex complex(cache.grid);
     Eigen::VectorXd full = Eigen::VectorXd::Zero(complex.count(1));
     const Eigen::VectorXd faces = cache.velocity.modes * f;
-    for (std::size_t i = 0; i < cache.faces.size(); ++i) full[cache.faces[i]] = faces[Eigen::Index(i)];
+    for (std::size_t i = 0; i < cache.faces.size(); ++i)
+        full[cache.faces[i]] = faces[Eigen::Index(i)];
     const Eigen::VectorXd divergence = complex.incidence(1) * full;
     EXPECT_LE(divergence.cwiseAbs().maxCoeff(), 1e-12 * full.cwiseAbs().maxCoeff());
 }
@@ -259,8 +263,9 @@ TEST(UniformField, ProjectionIsTheLeastSquaresFitAndDivergenceFree) {
 TEST(UniformField, OnlyTheWallLayerMakesAUniformFieldRepresentable) {
     const BasisCache& cache = disk40();
     // A plain uniform field is a gradient: ⋆-orthogonal to every tangential div-free mode.
-    const Eigen::VectorXd plain =
-        projectFluxes(cache, faceFluxes(cache, [](const Vec3&) { return Vec3{1.0, 0.0, 0.0}; }));
+    const Eigen::VectorXd plain = projectFluxes(cache, faceFluxes(cache, [](const Vec3&) {
+                                                    return Vec3{1.0, 0.0, 0.0};
+                                                }));
     const UniformField field(cache, kUnitDisk, {1.0, 0.0, 0.0}, 1.0, uniformFieldLayer(cache));
     const Eigen::VectorXd f = projectUniformField(cache, field);
     // Reconstructed, it points left to right inside, at about the given strength.
@@ -270,7 +275,8 @@ TEST(UniformField, OnlyTheWallLayerMakesAUniformFieldRepresentable) {
     int count = 0;
     for (const auto& [key, value] : u) {
         const auto [normal, i, j] = key;
-        const double x = -1.1 + (i + (normal == 0 ? 0.0 : 0.5)) * h, y = -1.1 + (j + (normal == 1 ? 0.0 : 0.5)) * h;
+        const double x = -1.1 + (i + (normal == 0 ? 0.0 : 0.5)) * h,
+                     y = -1.1 + (j + (normal == 1 ? 0.0 : 0.5)) * h;
         if (x * x + y * y > 0.4 * 0.4) continue;
         if (normal == 0) {
             sum += value;
@@ -281,9 +287,9 @@ TEST(UniformField, OnlyTheWallLayerMakesAUniformFieldRepresentable) {
         }
     }
     const double mean = sum / count, spread = std::sqrt(sumSquares / count - mean * mean);
-    std::cout << "uniform field, 40 modes, layer " << uniformFieldLayer(cache) << ": |plain projection| "
-              << plain.norm() << ", |F| " << f.norm() << ", interior Bx " << mean << " ± " << spread
-              << ", max |By| " << cross << "\n";
+    std::cout << "uniform field, 40 modes, layer " << uniformFieldLayer(cache)
+              << ": |plain projection| " << plain.norm() << ", |F| " << f.norm() << ", interior Bx "
+              << mean << " ± " << spread << ", max |By| " << cross << "\n";
     // Measured: 1.7e-14 against 1.87; interior Bx 0.97 ± 0.15, |By| ≤ 0.19 (40 modes resolve
     // the turn at the wall only roughly; 100 do better).
     EXPECT_LE(plain.norm(), 1e-10 * f.norm());

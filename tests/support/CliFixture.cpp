@@ -13,12 +13,14 @@ std::string slurp(const fs::path& p) {
     return std::string(std::istreambuf_iterator<char>(in), {});
 }
 
-std::string cliPath() { return MODEFLOW_CLI; }
+std::string cliPath() {
+    return MODEFLOW_CLI;
+}
 
 RunResult Cli::runProgram(const std::string& program, const std::string& args) const {
     const fs::path out = mDir / "stdout.txt", err = mDir / "stderr.txt";
-    const std::string cmd = "env -u MODEFLOW_CACHE_DIR " + program + " " + args + " >" + out.string() + " 2>" +
-                            err.string() + " </dev/null";
+    const std::string cmd = "env -u MODEFLOW_CACHE_DIR " + program + " " + args + " >" +
+                            out.string() + " 2>" + err.string() + " </dev/null";
     const int raw = std::system(cmd.c_str());
     return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(out), slurp(err)};
 }

@@ -2,8 +2,12 @@
 
 namespace modeflow::testing {
 
-std::vector<float> toFloat(std::span<const double> values) { return {values.begin(), values.end()}; }
-std::vector<float> toFloat(const Eigen::VectorXd& v) { return {v.begin(), v.end()}; }
+std::vector<float> toFloat(std::span<const double> values) {
+    return {values.begin(), values.end()};
+}
+std::vector<float> toFloat(const Eigen::VectorXd& v) {
+    return {v.begin(), v.end()};
+}
 
 BasisCache withDeviceModes(const BasisCache& cache, ModePrecision precision) {
     BasisCache rounded = cache;
@@ -11,7 +15,8 @@ BasisCache withDeviceModes(const BasisCache& cache, ModePrecision precision) {
     return rounded;
 }
 
-vulkan::DeviceBuffer stateBuffer(const vulkan::VulkanContext& context, const Eigen::VectorXd& v, std::string name) {
+vulkan::DeviceBuffer stateBuffer(const vulkan::VulkanContext& context, const Eigen::VectorXd& v,
+                                 std::string name) {
     std::vector<float> values = toFloat(v);
     values.resize((values.size() + 3) / 4 * 4, 0.0f);
     return vulkan::DeviceBuffer::fromValues<float>(context, values, std::move(name));

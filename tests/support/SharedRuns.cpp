@@ -4,6 +4,8 @@
 
 namespace modeflow::testing {
 
-RunInputs sharedRun(const SceneSpec& scene) { return prepareRun(scene, sharedBasis(scene)); }
+RunInputs sharedRun(const SceneSpec& scene) {
+    return prepareRun(scene, sharedBasis(scene));
+}
 
 }  // namespace modeflow::testing

@@ -19,7 +19,8 @@ MacGrid smokeTestGrid(int dim, int n) {
 }
 
 Vec3 cellCentre(const MacGrid& grid, int x, int y, int z) {
-    return {grid.cellCentre(0, x), grid.cellCentre(1, y), grid.dim == 3 ? grid.cellCentre(2, z) : 0.0};
+    return {grid.cellCentre(0, x), grid.cellCentre(1, y),
+            grid.dim == 3 ? grid.cellCentre(2, z) : 0.0};
 }
 
 std::vector<std::uint8_t> ballMask(const MacGrid& grid, double radius) {
@@ -56,7 +57,8 @@ std::vector<double> constantVelocity(const MacGrid& grid, const Vec3& u) {
     return faces;
 }
 
-std::vector<double> streamFunctionVelocity(const MacGrid& grid, const std::function<double(const Vec3&)>& psi) {
+std::vector<double> streamFunctionVelocity(const MacGrid& grid,
+                                           const std::function<double(const Vec3&)>& psi) {
     const auto at = [&](int i, int j, int k) {
         return psi({grid.origin[0] + i * grid.spacing[0], grid.origin[1] + j * grid.spacing[1],
                     grid.dim == 3 ? grid.cellCentre(2, k) : 0.0});
@@ -68,9 +70,11 @@ std::vector<double> streamFunctionVelocity(const MacGrid& grid, const std::funct
                 // Along a periodic axis the faces at n are those at 0 (ψ repeats, so the same
                 // value).
                 if (j < grid.cells[1] && i < grid.faceExtent(0)[0])
-                    faces[grid.faceIndex(0, i, j, k)] = (at(i, j + 1, k) - at(i, j, k)) / grid.spacing[1];
+                    faces[grid.faceIndex(0, i, j, k)] =
+                        (at(i, j + 1, k) - at(i, j, k)) / grid.spacing[1];
                 if (i < grid.cells[0] && j < grid.faceExtent(1)[1])
-                    faces[grid.faceIndex(1, i, j, k)] = -(at(i + 1, j, k) - at(i, j, k)) / grid.spacing[0];
+                    faces[grid.faceIndex(1, i, j, k)] =
+                        -(at(i + 1, j, k) - at(i, j, k)) / grid.spacing[0];
             }
     return faces;
 }
@@ -93,7 +97,9 @@ std::vector<double> randomSwirlVelocity(const MacGrid& grid, double radius, std:
         if (r2 >= radius * radius) return 0.0;
         double sum = 0.0;
         for (const auto& m : modes)
-            sum += m[0] * std::sin(3.0 * m[1] * p[0] + 3.0 * m[2] * p[1] + 2.0 * m[3] * p[2] + m[4]) * (1.0 + m[5]);
+            sum += m[0] *
+                   std::sin(3.0 * m[1] * p[0] + 3.0 * m[2] * p[1] + 2.0 * m[3] * p[2] + m[4]) *
+                   (1.0 + m[5]);
         const double envelope = (radius * radius - r2) / (radius * radius);
         return sum * envelope * envelope;
     });

@@ -28,7 +28,8 @@ std::vector<T> cellValues(const MacGrid& grid, const std::function<T(const Vec3&
     std::vector<T> values(std::size_t(grid.cellCount()));
     for (int z = 0; z < grid.cells[2]; ++z)
         for (int y = 0; y < grid.cells[1]; ++y)
-            for (int x = 0; x < grid.cells[0]; ++x) values[grid.cellIndex(x, y, z)] = f(cellCentre(grid, x, y, z));
+            for (int x = 0; x < grid.cells[0]; ++x)
+                values[grid.cellIndex(x, y, z)] = f(cellCentre(grid, x, y, z));
     return values;
 }
 
@@ -48,7 +49,8 @@ std::vector<double> constantVelocity(const MacGrid& grid, const Vec3& u);
 /// The discrete curl of ψ(x, y, z) sampled on z-edges (x_i, y_j, centre of layer k): exactly
 /// divergence-free; the walls get zero flux when ψ is constant along the box's boundary. Along a
 /// periodic axis ψ must repeat (the seam's faces are taken at position 0).
-std::vector<double> streamFunctionVelocity(const MacGrid& grid, const std::function<double(const Vec3&)>& psi);
+std::vector<double> streamFunctionVelocity(const MacGrid& grid,
+                                           const std::function<double(const Vec3&)>& psi);
 
 /// Rigid rotation at angular speed ω about the z axis inside radius R, at rest outside
 /// (ψ = −ω min(r, R)² / 2, r the distance to the z axis).
@@ -67,7 +69,8 @@ std::vector<SmokeEmitter> smokeTestEmitters();
 /// A mushroom cloud about the origin of [−1, 1]³: a wavy stem under a ring and a cap.
 std::vector<float> mushroomCloud(const MacGrid& grid);
 
-inline constexpr AdvectionScheme kAdvectionSchemes[] = {AdvectionScheme::SemiLagrangian, AdvectionScheme::MacCormack};
+inline constexpr AdvectionScheme kAdvectionSchemes[] = {AdvectionScheme::SemiLagrangian,
+                                                        AdvectionScheme::MacCormack};
 
 const char* schemeName(AdvectionScheme scheme);
 

@@ -11,7 +11,8 @@ namespace modeflow::testing {
 
 SceneSpec stirScene(int dim) {
     const int n = dim == 2 ? 40 : 16;
-    SceneSpec scene = gridScene({n, n, n}, {-1.0, -1.0, dim == 2 ? 0.0 : -1.0}, {1.0, 1.0, dim == 2 ? 0.0 : 1.0}, dim);
+    SceneSpec scene = gridScene({n, n, n}, {-1.0, -1.0, dim == 2 ? 0.0 : -1.0},
+                                {1.0, 1.0, dim == 2 ? 0.0 : 1.0}, dim);
     scene.name = dim == 2 ? "stir_test_2d" : "stir_test_3d";
     scene.basis.velocityModes =
         dim == 2 ? std::vector<ModeRange>{{1, 10}, {21, 30}} : std::vector<ModeRange>{{1, 12}};

@@ -32,13 +32,15 @@ void restorePermissions(const fs::path& root) {
     std::error_code ec;
     fs::permissions(root, fs::perms::owner_all, fs::perm_options::add, ec);
     for (fs::recursive_directory_iterator it(root, ec), end; !ec && it != end; it.increment(ec))
-        if (it->is_directory(ec)) fs::permissions(it->path(), fs::perms::owner_all, fs::perm_options::add, ec);
+        if (it->is_directory(ec))
+            fs::permissions(it->path(), fs::perms::owner_all, fs::perm_options::add, ec);
 }
 
 }  // namespace
 
 TestFolder::TestFolder() {
-    std::string pattern = (fs::temp_directory_path() / ("modeflow-" + runningTestName() + "-XXXXXX")).string();
+    std::string pattern =
+        (fs::temp_directory_path() / ("modeflow-" + runningTestName() + "-XXXXXX")).string();
     if (!::mkdtemp(pattern.data()))
         throw Error("cannot create a temporary folder " + pattern + ": " + std::strerror(errno));
     mPath = pattern;
@@ -52,7 +54,8 @@ TestFolder::~TestFolder() {
 
 fs::path artifactFolder() {
     const char* chosen = std::getenv("MODEFLOW_TEST_ARTIFACTS");
-    const fs::path folder = chosen && *chosen ? fs::path(chosen) : fs::path(MODEFLOW_TEST_ARTIFACTS);
+    const fs::path folder =
+        chosen && *chosen ? fs::path(chosen) : fs::path(MODEFLOW_TEST_ARTIFACTS);
     fs::create_directories(folder);
     return folder;
 }

@@ -19,7 +19,9 @@ public:
 
     const std::filesystem::path& path() const { return mPath; }
     operator const std::filesystem::path&() const { return mPath; }
-    std::filesystem::path operator/(const std::filesystem::path& name) const { return mPath / name; }
+    std::filesystem::path operator/(const std::filesystem::path& name) const {
+        return mPath / name;
+    }
 
 private:
     std::filesystem::path mPath;

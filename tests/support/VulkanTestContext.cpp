@@ -10,7 +10,8 @@ std::unique_ptr<vulkan::VulkanContext> makeVulkanContext(bool validation) {
         options.validation = validation;
         return std::make_unique<vulkan::VulkanContext>(options);
     } catch (const Error& e) {
-        ADD_FAILURE() << "no usable Vulkan device (tools/install-deps.sh installs lavapipe (mesa-vulkan-drivers) "
+        ADD_FAILURE() << "no usable Vulkan device (tools/install-deps.sh installs lavapipe "
+                         "(mesa-vulkan-drivers) "
                          "and the validation layers): "
                       << e.what();
         return nullptr;

@@ -20,7 +20,8 @@ namespace modeflow::testing {
 class WholeBoxReference {
 public:
     /// `cache` holds the grid and the face DOFs (fillWholeBoxDofs).
-    explicit WholeBoxReference(const BasisCache& cache) : mCache(cache), mMac(MacGrid::fromSpec(cache.grid)) {
+    explicit WholeBoxReference(const BasisCache& cache)
+        : mCache(cache), mMac(MacGrid::fromSpec(cache.grid)) {
         for (std::size_t f = 0; f < cache.faces.size(); ++f) mDof[cache.faces[f]] = Eigen::Index(f);
         buildOperators();
     }
@@ -35,8 +36,10 @@ public:
         const GridSpec& g = mCache.grid;
         for (int a = 0; a < g.dim; ++a) {
             const int n = g.resolution[a];
-            if (g.isPeriodic(a)) pos[a] = ((pos[a] % n) + n) % n;
-            else if (pos[a] < 0 || pos[a] > n - (a == axis ? 0 : 1)) return -1;
+            if (g.isPeriodic(a))
+                pos[a] = ((pos[a] % n) + n) % n;
+            else if (pos[a] < 0 || pos[a] > n - (a == axis ? 0 : 1))
+                return -1;
         }
         const auto it = mDof.find(mMac.faceIndex(axis, pos[0], pos[1], pos[2]));
         return it == mDof.end() ? -1 : it->second;
@@ -77,9 +80,10 @@ public:
             auto velocity = [&](Eigen::Index f, int axis) {
                 return modes.row(f).transpose() / mMac.faceArea(axis);
             };
-            const std::pair<Eigen::Index, double> circulation[4] = {
-                {face(cc, pos), 1.0 / hb}, {face(cc, minusB), -1.0 / hb},
-                {face(b, pos), -1.0 / hc}, {face(b, minusC), 1.0 / hc}};
+            const std::pair<Eigen::Index, double> circulation[4] = {{face(cc, pos), 1.0 / hb},
+                                                                    {face(cc, minusB), -1.0 / hb},
+                                                                    {face(b, pos), -1.0 / hc},
+                                                                    {face(b, minusC), 1.0 / hc}};
             for (int t = 0; t < 4; ++t)
                 if (circulation[t].first >= 0)
                     omega += circulation[t].second * velocity(circulation[t].first, t < 2 ? cc : b);
@@ -91,7 +95,8 @@ public:
                 for (Eigen::Index j = 0; j < n; ++j) {
                     const double r = weight * (ub[k] * uc[j] - uc[k] * ub[j]);
                     if (r == 0.0) continue;
-                    for (Eigen::Index i = 0; i < n; ++i) c[std::size_t((k * n + i) * n + j)] += omega[i] * r;
+                    for (Eigen::Index i = 0; i < n; ++i)
+                        c[std::size_t((k * n + i) * n + j)] += omega[i] * r;
                 }
         }
         return c;
@@ -123,16 +128,20 @@ private:
             std::array<int, 3> minusB = pos, minusC = pos;
             --minusB[b];
             --minusC[c];
-            const std::pair<Eigen::Index, double> sides[4] = {
-                {face(c, pos), 1.0}, {face(c, minusB), -1.0}, {face(b, pos), -1.0}, {face(b, minusC), 1.0}};
+            const std::pair<Eigen::Index, double> sides[4] = {{face(c, pos), 1.0},
+                                                              {face(c, minusB), -1.0},
+                                                              {face(b, pos), -1.0},
+                                                              {face(b, minusC), 1.0}};
             for (const auto& [f, s] : sides)
                 if (f >= 0) curl(Eigen::Index(e), f) += s;
-            starInverse[Eigen::Index(e)] = (g.dim == 3 ? g.spacing(a) : 1.0) / (g.spacing(b) * g.spacing(c));
+            starInverse[Eigen::Index(e)] =
+                (g.dim == 3 ? g.spacing(a) : 1.0) / (g.spacing(b) * g.spacing(c));
         }
         const Eigen::VectorXd& star2 = mCache.faceStar;
         const Eigen::VectorXd& star3 = mCache.cellStar;
-        mL2 = mDiv.transpose() * star3.asDiagonal() * mDiv +
-              star2.asDiagonal() * curl.transpose() * starInverse.asDiagonal() * curl * star2.asDiagonal();
+        mL2 = mDiv.transpose() * star3.asDiagonal() * mDiv + star2.asDiagonal() * curl.transpose() *
+                                                                 starInverse.asDiagonal() * curl *
+                                                                 star2.asDiagonal();
         mL3 = star3.asDiagonal() * mDiv * star2.cwiseInverse().asDiagonal() * mDiv.transpose() *
               star3.asDiagonal();
     }

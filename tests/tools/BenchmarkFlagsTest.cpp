@@ -20,7 +20,8 @@ TEST_F(BenchmarkFlags, UnknownFlagsAreRefusedWithTheirName) {
     for (const char* bench : {"bench_dynamics", "bench_contraction"}) {
         const RunResult r = runProgram(kBenchFolder + "/" + bench, "--only typo");
         EXPECT_EQ(r.status, 1) << bench;
-        EXPECT_NE(r.err.find("unrecognized command-line flag: --only"), std::string::npos) << bench << ": " << r.err;
+        EXPECT_NE(r.err.find("unrecognized command-line flag: --only"), std::string::npos)
+            << bench << ": " << r.err;
         EXPECT_EQ(r.out.find("Benchmark"), std::string::npos) << bench << " ran: " << r.out;
     }
 }

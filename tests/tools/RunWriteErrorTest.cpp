@@ -43,10 +43,10 @@ TEST_F(RunWriteError, StopsWithAMessageAndLeavesOnlyWholeFrames) {
     const fs::path out = mDir / "frames", err = mDir / "run-err.txt";
     // 40 KiB per file: the first two frames (little smoke yet) and the checkpoint fit, the third
     // frame does not (about 44 KiB).
-    const std::string command = "bash -c \"trap '' XFSZ; ulimit -f 40; exec env -u MODEFLOW_CACHE_DIR " +
-                                testing::cliPath() + " run " + scene.string() + " --out " +
-                                out.string() + " --cache-dir " + mCache.string() + "\" >/dev/null 2>" +
-                                err.string() + " </dev/null";
+    const std::string command =
+        "bash -c \"trap '' XFSZ; ulimit -f 40; exec env -u MODEFLOW_CACHE_DIR " +
+        testing::cliPath() + " run " + scene.string() + " --out " + out.string() + " --cache-dir " +
+        mCache.string() + "\" >/dev/null 2>" + err.string() + " </dev/null";
     const int raw = std::system(command.c_str());
     ASSERT_TRUE(WIFEXITED(raw));
     EXPECT_EQ(WEXITSTATUS(raw), 1);

@@ -5,8 +5,8 @@
 #include <cstdlib>
 #include <string>
 
-#include "tests/support/PngFile.h"
 #include "tests/support/CliFixture.h"
+#include "tests/support/PngFile.h"
 
 namespace modeflow::testing {
 namespace {

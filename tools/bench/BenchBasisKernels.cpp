@@ -30,11 +30,11 @@ void basisKernel(benchmark::State& state, Kernel kernel, ModePrecision precision
     const device::ModeBuffer modes(context, cache.velocity.modes, precision);
     const device::ReconstructionKernel reconstruction(context, cache);
     const device::ForceProjectionKernel projection(context, cache, FaceQuantity::Density);
-    const vulkan::DeviceBuffer v =
-        vulkan::DeviceBuffer::fromValues<float>(context, std::vector<float>(std::size_t((n + 3) / 4 * 4), 1.0f), "v");
+    const vulkan::DeviceBuffer v = vulkan::DeviceBuffer::fromValues<float>(
+        context, std::vector<float>(std::size_t((n + 3) / 4 * 4), 1.0f), "v");
     const vulkan::DeviceBuffer field = reconstruction.makeFaceField();
-    const vulkan::DeviceBuffer q =
-        vulkan::DeviceBuffer::fromValues<float>(context, std::vector<float>(cache.faces.size(), 1.0f), "q");
+    const vulkan::DeviceBuffer q = vulkan::DeviceBuffer::fromValues<float>(
+        context, std::vector<float>(cache.faces.size(), 1.0f), "q");
     const vulkan::DeviceBuffer f(context, std::size_t(n) * sizeof(float), "f");
     BasisGemv gemv(cache.velocity.modes, kernel == Kernel::Projection);
     DeviceAgainstEigen timing(gemv);
@@ -62,11 +62,17 @@ void basisKernel(benchmark::State& state, Kernel kernel, ModePrecision precision
 [[maybe_unused]] const bool registered = [] {
     using P = ModePrecision;
     registerOnGrids(
-        {{"reconstruction_float32", [](benchmark::State& s) { basisKernel(s, Kernel::Reconstruction, P::Float32); }},
-         {"reconstruction_float16", [](benchmark::State& s) { basisKernel(s, Kernel::Reconstruction, P::Float16); }},
-         {"projection_float32", [](benchmark::State& s) { basisKernel(s, Kernel::Projection, P::Float32); }},
-         {"projection_float16", [](benchmark::State& s) { basisKernel(s, Kernel::Projection, P::Float16); }}},
-        [](benchmark::internal::Benchmark* b) { b->Iterations(5)->UseManualTime()->Unit(benchmark::kMillisecond); });
+        {{"reconstruction_float32",
+          [](benchmark::State& s) { basisKernel(s, Kernel::Reconstruction, P::Float32); }},
+         {"reconstruction_float16",
+          [](benchmark::State& s) { basisKernel(s, Kernel::Reconstruction, P::Float16); }},
+         {"projection_float32",
+          [](benchmark::State& s) { basisKernel(s, Kernel::Projection, P::Float32); }},
+         {"projection_float16",
+          [](benchmark::State& s) { basisKernel(s, Kernel::Projection, P::Float16); }}},
+        [](benchmark::internal::Benchmark* b) {
+            b->Iterations(5)->UseManualTime()->Unit(benchmark::kMillisecond);
+        });
     return true;
 }();
 

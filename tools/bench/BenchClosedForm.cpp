@@ -1,7 +1,8 @@
 /// @file BenchClosedForm.cpp
-/// The shipped 64³ closed-form box (scenes/box_closed_form_3d.toml: a whole box with free-slip
-/// walls, buoyant smoke from a hot ball near the floor, MacCormack, midpoint) at N = 1000 and
-/// 2000 modes, stage by stage, on the CPU reference and on the Vulkan device (--device N):
+/// The shipped closed-form scenes stage by stage, on the CPU reference and on the Vulkan device
+/// (--device N): the 64³ box (scenes/box_closed_form_3d.toml: a whole box with free-slip walls,
+/// buoyant smoke from a hot ball near the floor, MacCormack, midpoint) at N = 1000 and 2000 modes,
+/// and the 256² torus (scenes/torus_closed_form_2d.toml, the real-time goal) at N = 500:
 ///   precompute        computeBasis (closed-form bases, sparse coefficients by selection rules)
 ///   cpu_step          one reference::Simulation step (wall ms, the reported time), and alone:
 ///                     contraction_ms (one C(v, v), SparseCoefficients, one thread),
@@ -17,6 +18,7 @@
 #include <chrono>
 #include <map>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include <benchmark/benchmark.h>
@@ -47,23 +49,23 @@ double msSince(Clock::time_point start) {
     return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
-SceneSpec boxScene(int modes) {
-    SceneSpec scene = loadScene(std::filesystem::path(MODEFLOW_SOURCE_DIR) / "scenes" / "box_closed_form_3d.toml");
+SceneSpec shippedScene(const char* file, int modes) {
+    SceneSpec scene = loadScene(std::filesystem::path(MODEFLOW_SOURCE_DIR) / "scenes" / file);
     scene.basis.velocityModes = {{1, modes}};
     return scene;
 }
 
-/// The run at `modes` modes, kept until another size is asked for.
-const RunInputs& boxRun(int modes) {
-    static std::map<int, std::unique_ptr<RunInputs>> runs;
-    auto& slot = runs[modes];
-    if (!slot) {
+/// The run of a scene at `modes` modes, kept until another is asked for.
+const RunInputs& sceneRun(const char* file, int modes) {
+    static std::map<std::pair<std::string, int>, std::unique_ptr<RunInputs>> runs;
+    const std::pair<std::string, int> key(file, modes);
+    if (!runs.count(key)) {
         runs.clear();
-        const SceneSpec scene = boxScene(modes);
+        const SceneSpec scene = shippedScene(file, modes);
         Progress quiet = Progress::silent();
-        runs[modes] = std::make_unique<RunInputs>(prepareRun(scene, computeBasis(scene, quiet)));
+        runs[key] = std::make_unique<RunInputs>(prepareRun(scene, computeBasis(scene, quiet)));
     }
-    return *runs[modes];
+    return *runs[key];
 }
 
 /// A swirl of a twentieth of a turnover per step.
@@ -73,8 +75,8 @@ Eigen::VectorXd swirl(const RunInputs& run) {
     return v * (0.05 / (run.settings.dt * r.norm() / v.norm()));
 }
 
-void precompute(benchmark::State& state) {
-    const SceneSpec scene = boxScene(int(state.range(0)));
+void precompute(benchmark::State& state, const char* file) {
+    const SceneSpec scene = shippedScene(file, int(state.range(0)));
     std::size_t nonZeros = 0;
     for (auto _ : state) {
         Progress quiet = Progress::silent();
@@ -83,8 +85,8 @@ void precompute(benchmark::State& state) {
     state.counters["nnz"] = double(nonZeros);
 }
 
-void cpuStep(benchmark::State& state) {
-    const RunInputs& run = boxRun(int(state.range(0)));
+void cpuStep(benchmark::State& state, const char* file) {
+    const RunInputs& run = sceneRun(file, int(state.range(0)));
     reference::Simulation simulation(run.cache, *run.coefficients, run.settings, run.smokeMask);
     simulation.setVelocity(swirl(run));
     simulation.advanceSteps(3);  // smoke to carry
@@ -102,11 +104,12 @@ void cpuStep(benchmark::State& state) {
         start = Clock::now();
         benchmark::DoNotOptimize(reference::projectFaceField(basis, field));
         proj.push_back(msSince(start));
-        reference::SmokeAdvection advection(MacGrid::fromSpec(run.cache.grid), run.settings.smokeScale,
-                                            run.smokeMask);
+        reference::SmokeAdvection advection(MacGrid::fromSpec(run.cache.grid),
+                                            run.settings.smokeScale, run.smokeMask);
         SmokeFields smoke = simulation.smoke();
         start = Clock::now();
-        advection.step(std::span<const double>(field), run.settings.dt, run.settings.advection, {}, smoke);
+        advection.step(std::span<const double>(field), run.settings.dt, run.settings.advection, {},
+                       smoke);
         advect.push_back(msSince(start));
         start = Clock::now();
         simulation.advanceSteps(1);
@@ -119,8 +122,8 @@ void cpuStep(benchmark::State& state) {
     state.counters["DOFs"] = double(run.cache.faces.size());
 }
 
-void deviceStep(benchmark::State& state) {
-    const RunInputs& run = boxRun(int(state.range(0)));
+void deviceStep(benchmark::State& state, const char* file) {
+    const RunInputs& run = sceneRun(file, int(state.range(0)));
     const vulkan::VulkanContext& context = benchContext();
     const std::unique_ptr<Simulator> simulation = benchBackend().makeSimulator(run, true);
     simulation->setVelocity(swirl(run));
@@ -138,7 +141,8 @@ void deviceStep(benchmark::State& state) {
     int iterations = 0;
     for (auto _ : state) {
         const FrameStats stats = simulation->advanceSteps(1);
-        const double total = stats.forcesMs + stats.modalMs + stats.reconstructionMs + stats.advectionMs;
+        const double total =
+            stats.forcesMs + stats.modalMs + stats.reconstructionMs + stats.advectionMs;
         state.SetIterationTime(total * 1e-3);
         forces.push_back(stats.forcesMs);
         modal.push_back(stats.modalMs);
@@ -165,10 +169,45 @@ void deviceStep(benchmark::State& state) {
     state.counters["iterations"] = iterations;
 }
 
-BENCHMARK(precompute)->ArgName("N")->Arg(1000)->Arg(2000)->Iterations(1)->Unit(benchmark::kMillisecond);
-BENCHMARK(cpuStep)->Name("cpu_step")->ArgName("N")->Arg(1000)->Arg(2000)->Iterations(5)->UseManualTime()
+constexpr const char* kBox = "box_closed_form_3d.toml";
+constexpr const char* kTorus = "torus_closed_form_2d.toml";
+
+BENCHMARK_CAPTURE(precompute, box_3d, kBox)
+    ->ArgName("N")
+    ->Arg(1000)
+    ->Arg(2000)
+    ->Iterations(1)
     ->Unit(benchmark::kMillisecond);
-BENCHMARK(deviceStep)->Name("device_step")->ArgName("N")->Arg(1000)->Arg(2000)->Iterations(5)->UseManualTime()
+BENCHMARK_CAPTURE(precompute, torus_2d, kTorus)
+    ->ArgName("N")
+    ->Arg(500)
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(cpuStep, box_3d, kBox)
+    ->ArgName("N")
+    ->Arg(1000)
+    ->Arg(2000)
+    ->Iterations(5)
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(cpuStep, torus_2d, kTorus)
+    ->ArgName("N")
+    ->Arg(500)
+    ->Iterations(20)
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(deviceStep, box_3d, kBox)
+    ->ArgName("N")
+    ->Arg(1000)
+    ->Arg(2000)
+    ->Iterations(5)
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(deviceStep, torus_2d, kTorus)
+    ->ArgName("N")
+    ->Arg(500)
+    ->Iterations(20)
+    ->UseManualTime()
     ->Unit(benchmark::kMillisecond);
 
 }  // namespace

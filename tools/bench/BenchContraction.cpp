@@ -26,7 +26,8 @@ namespace {
 void contraction(benchmark::State& state, bool sparse) {
     const vulkan::VulkanContext& context = benchContext();
     const int n = int(state.range(0));
-    const DenseCoefficients dense = testing::randomDense(n, std::uint64_t(n) * 7919, sparse ? 0.1 : 1.0);
+    const DenseCoefficients dense =
+        testing::randomDense(n, std::uint64_t(n) * 7919, sparse ? 0.1 : 1.0);
     std::unique_ptr<StructuralCoefficients> c;
     std::unique_ptr<EigenGemv> gemv;
     if (sparse) {
@@ -65,9 +66,20 @@ void contraction(benchmark::State& state, bool sparse) {
 }
 
 BENCHMARK_CAPTURE(contraction, dense, false)
-    ->ArgName("N")->Arg(50)->Arg(100)->Arg(200)->Iterations(20)->UseManualTime()->Unit(benchmark::kMillisecond);
+    ->ArgName("N")
+    ->Arg(50)
+    ->Arg(100)
+    ->Arg(200)
+    ->Iterations(20)
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(contraction, sparse, true)
-    ->ArgName("N")->Arg(100)->Arg(200)->Iterations(20)->UseManualTime()->Unit(benchmark::kMillisecond);
+    ->ArgName("N")
+    ->Arg(100)
+    ->Arg(200)
+    ->Iterations(20)
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace modeflow::bench

@@ -28,7 +28,8 @@ std::optional<std::string> takeDeviceFlag(int& argc, char** argv) {
     int kept = 1;
     for (int i = 1; i < argc; ++i) {
         if (!std::strcmp(argv[i], "--device")) {
-            if (i + 1 == argc) throw Error("--device needs a value: a Vulkan device index or vulkan");
+            if (i + 1 == argc)
+                throw Error("--device needs a value: a Vulkan device index or vulkan");
             value = argv[++i];
         } else if (!std::strncmp(argv[i], "--device=", 9)) {
             value = argv[i] + 9;
@@ -44,11 +45,14 @@ std::optional<std::string> takeDeviceFlag(int& argc, char** argv) {
 }  // namespace
 
 const Backend& benchBackend() {
-    if (!openedBackend()) throw Error("benchmark: the device is opened by main() before the benchmarks run");
+    if (!openedBackend())
+        throw Error("benchmark: the device is opened by main() before the benchmarks run");
     return *openedBackend();
 }
 
-const vulkan::VulkanContext& benchContext() { return *benchBackend().vulkanContext(); }
+const vulkan::VulkanContext& benchContext() {
+    return *benchBackend().vulkanContext();
+}
 
 }  // namespace modeflow::bench
 
@@ -59,12 +63,15 @@ int main(int argc, char** argv) {
         const std::optional<std::string> device = bench::takeDeviceFlag(argc, argv);
         const BackendChoice choice = parseDeviceOption(device.value_or("vulkan"));
         if (choice.kind != BackendKind::Vulkan)
-            throw Error("--device " + *device + ": the runtime benchmarks measure a Vulkan device; give its index");
+            throw Error("--device " + *device +
+                        ": the runtime benchmarks measure a Vulkan device; give its index");
         benchmark::Initialize(&argc, argv);
         if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
         bench::openedBackend() = std::make_unique<Backend>(choice);
         if (bench::benchContext().timestampValidBits() == 0)
-            throw Error("the device's queue writes no timestamps, and the runtime benchmarks report GPU times");
+            throw Error(
+                "the device's queue writes no timestamps, and the runtime benchmarks report GPU "
+                "times");
         std::fprintf(stderr, "%s", bench::benchBackend().describe().c_str());
         benchmark::AddCustomContext("device", bench::benchContext().deviceName());
         benchmark::RunSpecifiedBenchmarks();

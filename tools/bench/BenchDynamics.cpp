@@ -46,7 +46,9 @@ const StructuralCoefficients& coefficients(int n, Storage storage) {
     return *slot;
 }
 
-Eigen::VectorXd randomState(int n) { return testing::randomVector(n, 12345); }
+Eigen::VectorXd randomState(int n) {
+    return testing::randomVector(n, 12345);
+}
 
 void contraction(benchmark::State& state, Storage storage, bool withJacobian) {
     const ThreadCount threads(int(state.range(1)));
@@ -64,8 +66,8 @@ void contraction(benchmark::State& state, Storage storage, bool withJacobian) {
             benchmark::DoNotOptimize(out.data());
         }
     }
-    state.counters["GB/s"] = benchmark::Counter(
-        double(c.storedBytes()) * 1e-9, benchmark::Counter::kIsIterationInvariantRate);
+    state.counters["GB/s"] = benchmark::Counter(double(c.storedBytes()) * 1e-9,
+                                                benchmark::Counter::kIsIterationInvariantRate);
     state.counters["MB"] = double(c.storedBytes()) * 1e-6;
 }
 
@@ -87,8 +89,8 @@ void step(benchmark::State& state, Storage storage, Integrator scheme) {
         jacobians += report.jacobians;
         passes += scheme == Integrator::Midpoint ? report.iterations + 1 : 1;
     }
-    state.counters["GB/s"] = benchmark::Counter(passes * double(c.storedBytes()) * 1e-9,
-                                                benchmark::Counter::kIsRate);
+    state.counters["GB/s"] =
+        benchmark::Counter(passes * double(c.storedBytes()) * 1e-9, benchmark::Counter::kIsRate);
     state.counters["Newton"] = iterations / double(state.iterations());
     state.counters["Jacobians"] = jacobians / double(state.iterations());
 }
@@ -105,8 +107,7 @@ BENCHMARK_CAPTURE(contraction, apply_sparse, Storage::Sparse, false)->Apply(size
 BENCHMARK_CAPTURE(contraction, linearize_dense, Storage::Dense, true)->Apply(sizes);
 BENCHMARK_CAPTURE(contraction, linearize_sparse, Storage::Sparse, true)->Apply(sizes);
 BENCHMARK_CAPTURE(step, explicit_dense, Storage::Dense, Integrator::Explicit)->Apply(sizes);
-BENCHMARK_CAPTURE(step, explicit_sparse, Storage::Sparse, Integrator::Explicit)
-    ->Apply(sizes);
+BENCHMARK_CAPTURE(step, explicit_sparse, Storage::Sparse, Integrator::Explicit)->Apply(sizes);
 BENCHMARK_CAPTURE(step, midpoint_dense, Storage::Dense, Integrator::Midpoint)->Apply(sizes);
 BENCHMARK_CAPTURE(step, midpoint_sparse, Storage::Sparse, Integrator::Midpoint)->Apply(sizes);
 

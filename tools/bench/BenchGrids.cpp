@@ -12,7 +12,8 @@ const BasisCache& syntheticBasisFor(int dim, int cells, int modes) {
     static std::unique_ptr<BasisCache> cache;
     if (!cache || key != std::tuple{dim, cells, modes}) {
         cache.reset();  // one 64³ basis of 200 modes is 1.2 GB
-        cache = std::make_unique<BasisCache>(testing::syntheticBasis(testing::boxGrid(dim, cells), modes, 7));
+        cache = std::make_unique<BasisCache>(
+            testing::syntheticBasis(testing::boxGrid(dim, cells), modes, 7));
         key = {dim, cells, modes};
     }
     return *cache;

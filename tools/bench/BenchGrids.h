@@ -19,7 +19,8 @@ namespace modeflow::bench {
 struct BenchGrid {
     int dim, cells;
 };
-inline constexpr std::array<BenchGrid, 3> kBenchGrids{BenchGrid{2, 256}, BenchGrid{3, 48}, BenchGrid{3, 64}};
+inline constexpr std::array<BenchGrid, 3> kBenchGrids{BenchGrid{2, 256}, BenchGrid{3, 48},
+                                                      BenchGrid{3, 64}};
 inline constexpr std::array<int, 3> kBenchModes{50, 100, 200};
 
 /// The synthetic basis of `modes` modes on the box grid (SyntheticBases.h's boxGrid), kept

@@ -47,7 +47,8 @@ void modalStep(benchmark::State& state, Integrator scheme) {
 }
 
 void sizes(benchmark::internal::Benchmark* b) {
-    b->ArgName("N")->Arg(50)->Arg(100)->Arg(200)->Iterations(20)->UseManualTime()->Unit(benchmark::kMillisecond);
+    b->ArgName("N")->Arg(50)->Arg(100)->Arg(200)->Iterations(20)->UseManualTime()->Unit(
+        benchmark::kMillisecond);
 }
 
 BENCHMARK_CAPTURE(modalStep, explicit, Integrator::Explicit)->Apply(sizes);

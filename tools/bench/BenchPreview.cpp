@@ -42,7 +42,11 @@ void volumePreview(benchmark::State& state) {
     setMedian(state, "march_ms", marchMs);
 }
 
-BENCHMARK(volumePreview)->ArgNames({"cells", "pixels"})->Args({64, 512})->Iterations(5)->UseRealTime()
+BENCHMARK(volumePreview)
+    ->ArgNames({"cells", "pixels"})
+    ->Args({64, 512})
+    ->Iterations(5)
+    ->UseRealTime()
     ->Unit(benchmark::kMillisecond);
 
 }  // namespace

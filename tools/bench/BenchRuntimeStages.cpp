@@ -36,7 +36,8 @@ RunInputs syntheticRun(int dim, int cells, int modes) {
 }
 
 void runtimeStep(benchmark::State& state) {
-    const RunInputs run = syntheticRun(int(state.range(0)), int(state.range(1)), int(state.range(2)));
+    const RunInputs run =
+        syntheticRun(int(state.range(0)), int(state.range(1)), int(state.range(2)));
     const std::unique_ptr<Simulator> simulation = benchBackend().makeSimulator(run, true);
     // A twentieth of a turnover per step.
     Eigen::VectorXd v = testing::randomVector(run.modeCount(), 3), r;
@@ -50,7 +51,8 @@ void runtimeStep(benchmark::State& state) {
     int iterations = 0;
     for (auto _ : state) {
         const FrameStats stats = simulation->advanceFrame();
-        const double total = stats.forcesMs + stats.modalMs + stats.reconstructionMs + stats.advectionMs;
+        const double total =
+            stats.forcesMs + stats.modalMs + stats.reconstructionMs + stats.advectionMs;
         state.SetIterationTime(total * 1e-3);
         forces.push_back(stats.forcesMs);
         modal.push_back(stats.modalMs);
@@ -59,7 +61,8 @@ void runtimeStep(benchmark::State& state) {
         iterations = std::max(iterations, stats.maxIterations);
         reconstruction.add(stats.reconstructionMs);
     }
-    reconstruction.report(state, double(run.cache.faces.size()) * run.modeCount() * sizeof(float), "recon_ms");
+    reconstruction.report(state, double(run.cache.faces.size()) * run.modeCount() * sizeof(float),
+                          "recon_ms");
     setMedian(state, "forces_ms", forces);
     setMedian(state, "modal_ms", modal);
     setMedian(state, "advect_ms", advection);

@@ -23,7 +23,9 @@
 namespace modeflow::bench {
 namespace {
 
-std::vector<float> toFloat(const std::vector<double>& values) { return {values.begin(), values.end()}; }
+std::vector<float> toFloat(const std::vector<double>& values) {
+    return {values.begin(), values.end()};
+}
 
 void smokeStep(benchmark::State& state, AdvectionScheme scheme) {
     const vulkan::VulkanContext& context = benchContext();
@@ -57,7 +59,8 @@ void smokeStep(benchmark::State& state, AdvectionScheme scheme) {
 
 void grids(benchmark::internal::Benchmark* b) {
     b->ArgNames({"dim", "cells"});
-    for (const auto& [dim, cells] : {std::pair{2, 128}, {2, 256}, {3, 32}, {3, 48}, {3, 64}}) b->Args({dim, cells});
+    for (const auto& [dim, cells] : {std::pair{2, 128}, {2, 256}, {3, 32}, {3, 48}, {3, 64}})
+        b->Args({dim, cells});
     b->Iterations(8)->UseManualTime()->Unit(benchmark::kMillisecond);
 }
 

@@ -20,7 +20,8 @@ double median(std::vector<double> values) {
     return values.empty() ? 0.0 : values[values.size() / 2];
 }
 
-void setMedian(benchmark::State& state, const std::string& name, const std::vector<double>& values) {
+void setMedian(benchmark::State& state, const std::string& name,
+               const std::vector<double>& values) {
     state.counters[name] = median(values);
 }
 
@@ -31,8 +32,8 @@ PackedGemv::PackedGemv(const DenseCoefficients& c)
       mSums(mRows) {}
 
 double PackedGemv::seconds() {
-    const Eigen::Map<const Eigen::Matrix<float, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>> matrix(
-        mPacked.data(), mRows, mA.size());
+    const Eigen::Map<const Eigen::Matrix<float, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>
+        matrix(mPacked.data(), mRows, mA.size());
     const double s = secondsOf([&] { mSums.noalias() = matrix * mA; });
     benchmark::DoNotOptimize(mSums.data());
     return s;
@@ -42,7 +43,8 @@ SparseGemv::SparseGemv(const SparseCoefficients& c)
     : mMatrix(Eigen::Index(c.pairK().size()), c.size()), mA(Eigen::VectorXf::Random(c.size())) {
     std::vector<Eigen::Triplet<float>> entries;
     for (std::size_t r = 0; r < c.pairK().size(); ++r)
-        for (std::size_t e = std::size_t(c.rowStart()[r]); e < std::size_t(c.rowStart()[r + 1]); ++e)
+        for (std::size_t e = std::size_t(c.rowStart()[r]); e < std::size_t(c.rowStart()[r + 1]);
+             ++e)
             entries.emplace_back(int(r), int(c.columns()[e]), float(c.values()[e]));
     mMatrix.setFromTriplets(entries.begin(), entries.end());
     mSums.resize(mMatrix.rows());

@@ -12,9 +12,9 @@
 #include <string>
 #include <vector>
 
+#include <benchmark/benchmark.h>
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
-#include <benchmark/benchmark.h>
 
 #include "engine/dynamics/DenseCoefficients.h"
 #include "engine/dynamics/SparseCoefficients.h"

@@ -19,6 +19,7 @@ Command addInspect(CLI::App& app);
 Command addModes(CLI::App& app);
 Command addRun(CLI::App& app);
 Command addStir(CLI::App& app);
+Command addValidate(CLI::App& app);
 
 /// --cache-dir, else $MODEFLOW_CACHE_DIR, else $XDG_CACHE_HOME/modeflow, else ~/.cache/modeflow.
 std::filesystem::path resolveCacheDir(const std::optional<std::string>& option);

@@ -33,12 +33,14 @@ FramePreview::FramePreview(const MacGrid& smokeGrid, std::span<const std::uint8_
                            const vulkan::VulkanContext* context)
     : mGrid(smokeGrid), mMask(fluidMask.begin(), fluidMask.end()), mContext(context) {
     if (mGrid.dim == 3 && context)
-        mRenderer = std::make_unique<preview::VolumeRenderer>(*context, mGrid, mMask, kVolumeSize, kVolumeSize);
+        mRenderer = std::make_unique<preview::VolumeRenderer>(*context, mGrid, mMask, kVolumeSize,
+                                                              kVolumeSize);
 }
 
 FramePreview::~FramePreview() = default;
 
-void FramePreview::write(const std::filesystem::path& file, int frame, const SmokeFields& smoke, bool temperature) {
+void FramePreview::write(const std::filesystem::path& file, int frame, const SmokeFields& smoke,
+                         bool temperature) {
     // One exposure for the whole run, raised as the smoke thickens, so that pictures of one run
     // compare (a per-picture exposure would make every frame look alike).
     mExposure = std::max(mExposure, densityPercentile(smoke.density));
@@ -47,19 +49,21 @@ void FramePreview::write(const std::filesystem::path& file, int frame, const Smo
     if (mGrid.dim == 2) {
         preview::Smoke2DOptions options;
         options.densityScale = exposure;
-        picture = preview::renderSmoke2D(mGrid, std::span<const double>(smoke.density),
-                                         temperature ? std::span<const double>(smoke.temperature)
-                                                     : std::span<const double>(),
-                                         mMask, options);
+        picture = preview::renderSmoke2D(
+            mGrid, std::span<const double>(smoke.density),
+            temperature ? std::span<const double>(smoke.temperature) : std::span<const double>(),
+            mMask, options);
     } else {
         const std::vector<float> density(smoke.density.begin(), smoke.density.end());
         // Optical depth 6 across the box at the exposure density.
         const float scale = float(6.0 / exposure);
         if (mRenderer) {
-            const vulkan::DeviceBuffer buffer = vulkan::DeviceBuffer::fromValues<float>(*mContext, density, "preview density");
+            const vulkan::DeviceBuffer buffer =
+                vulkan::DeviceBuffer::fromValues<float>(*mContext, density, "preview density");
             picture = mRenderer->render(buffer, scale);
         } else {
-            picture = preview::renderVolumeReference(mGrid, density, mMask, kVolumeSize, kVolumeSize, scale);
+            picture = preview::renderVolumeReference(mGrid, density, mMask, kVolumeSize,
+                                                     kVolumeSize, scale);
         }
     }
     preview::writePng(file, picture);

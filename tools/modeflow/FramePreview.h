@@ -11,8 +11,8 @@
 #include <vector>
 
 #include "engine/core/MacGrid.h"
-#include "engine/reference/SmokeAdvection.h"
 #include "engine/preview/Image.h"
+#include "engine/reference/SmokeAdvection.h"
 #include "engine/vulkan/VulkanContext.h"
 
 namespace modeflow::preview {
@@ -29,7 +29,8 @@ public:
     ~FramePreview();
 
     /// Renders `smoke`, writes it to `file` and keeps a copy for the contact sheet.
-    void write(const std::filesystem::path& file, int frame, const SmokeFields& smoke, bool temperature);
+    void write(const std::filesystem::path& file, int frame, const SmokeFields& smoke,
+               bool temperature);
     /// Writes the contact sheet of every picture written so far (nothing when there is none).
     void writeContactSheet(const std::filesystem::path& file) const;
 

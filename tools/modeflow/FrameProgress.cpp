@@ -15,10 +15,14 @@ std::string duration(double seconds) {
 }  // namespace
 
 FrameProgress::FrameProgress(int firstFrame, int lastFrame, int stepsPerFrame)
-    : mFirst(firstFrame), mLast(lastFrame), mStepsPerFrame(stepsPerFrame), mTerminal(::isatty(STDERR_FILENO) != 0) {}
+    : mFirst(firstFrame),
+      mLast(lastFrame),
+      mStepsPerFrame(stepsPerFrame),
+      mTerminal(::isatty(STDERR_FILENO) != 0) {}
 
 void FrameProgress::frameDone(int frame, double time, const std::string& detail) {
-    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - mStart).count();
+    const double elapsed =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - mStart).count();
     const int done = frame - mFirst, total = mLast - mFirst;
     const double stepsPerSecond = elapsed > 0.0 ? done * mStepsPerFrame / elapsed : 0.0;
     const double eta = done > 0 ? elapsed / done * (mLast - frame) : 0.0;
@@ -27,11 +31,12 @@ void FrameProgress::frameDone(int frame, double time, const std::string& detail)
         const int filled = total > 0 ? width * done / total : width;
         std::string bar(std::size_t(filled), '#');
         bar.resize(width, '.');
-        std::fprintf(stderr, "\rframe %d/%d [%s] %.1f steps/s, ETA %s   ", frame, mLast, bar.c_str(), stepsPerSecond,
-                     duration(eta).c_str());
+        std::fprintf(stderr, "\rframe %d/%d [%s] %.1f steps/s, ETA %s   ", frame, mLast,
+                     bar.c_str(), stepsPerSecond, duration(eta).c_str());
     } else {
-        std::fprintf(stderr, "frame %d/%d  t=%.4g  %.1f steps/s  ETA %s%s%s\n", frame, mLast, time, stepsPerSecond,
-                     duration(eta).c_str(), detail.empty() ? "" : "  ", detail.c_str());
+        std::fprintf(stderr, "frame %d/%d  t=%.4g  %.1f steps/s  ETA %s%s%s\n", frame, mLast, time,
+                     stepsPerSecond, duration(eta).c_str(), detail.empty() ? "" : "  ",
+                     detail.c_str());
     }
     std::fflush(stderr);
 }

@@ -14,8 +14,9 @@ Command addPrecompute(CLI::App& app) {
     };
     auto opts = std::make_shared<Options>();
     CLI::App* sub = app.add_subcommand(
-        "precompute", "Compute the scene's eigenbases into a cache file (reused when unchanged); "
-                      "prints the cache file's path on the last line");
+        "precompute",
+        "Compute the scene's eigenbases into a cache file (reused when unchanged); "
+        "prints the cache file's path on the last line");
     sub->add_option("SCENE", opts->scene, "scene file (TOML)")->required();
     sub->add_option("--cache-dir", opts->cacheDir,
                     "cache folder (default: $MODEFLOW_CACHE_DIR, else $XDG_CACHE_HOME/modeflow, "

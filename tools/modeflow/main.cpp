@@ -8,15 +8,17 @@
 #include "tools/modeflow/Commands.h"
 
 int main(int argc, char** argv) {
-    CLI::App app("modeflow " MODEFLOW_VERSION
-                 ": model-reduced fluid simulation (precompute spectral bases, inspect caches, run the "
-                 "reduced dynamics, simulate scenes to OpenVDB frames, stir them in a window)");
+    CLI::App app(
+        "modeflow " MODEFLOW_VERSION
+        ": model-reduced fluid simulation (precompute spectral bases, inspect caches, run the "
+        "reduced dynamics, simulate scenes to OpenVDB frames, stir them in a window, reproduce the "
+        "seed's results)");
     app.set_version_flag("--version", std::string(MODEFLOW_VERSION));
     app.require_subcommand(1);
-    const modeflow::cli::Command commands[] = {modeflow::cli::addPrecompute(app),
-                                               modeflow::cli::addInspect(app),
-                                               modeflow::cli::addModes(app), modeflow::cli::addRun(app),
-                                               modeflow::cli::addStir(app)};
+    const modeflow::cli::Command commands[] = {
+        modeflow::cli::addPrecompute(app), modeflow::cli::addInspect(app),
+        modeflow::cli::addModes(app),      modeflow::cli::addRun(app),
+        modeflow::cli::addStir(app),       modeflow::cli::addValidate(app)};
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
