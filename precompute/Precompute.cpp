@@ -9,11 +9,11 @@
 
 #include <unistd.h>
 
-#include "engine/core/PackedLayout.h"
 #include "engine/core/AvailableMemory.h"
 #include "engine/format/CacheFile.h"
 #include "engine/core/Error.h"
 #include "engine/core/WritableDirectory.h"
+#include "precompute/CoefficientChoice.h"
 #include "precompute/PrecomputeMemory.h"
 #include "precompute/SurfaceStages.h"
 #include "precompute/closedform/ClosedFormBasis.h"
@@ -66,36 +66,6 @@ void reportSolver(Progress& progress, const std::string& what, const SolverStats
     progress.note(line.str());
     cache.timings.emplace_back(what + "_factorization", s.factorSeconds);
     cache.timings.emplace_back(what + "_solves", s.solveSeconds);
-}
-
-/// Dense unless most entries vanish (grid-aligned boxes: appendix C.2). A sparse entry costs
-/// 20 bytes against 8, so sparse pays below a density of about 0.25.
-BasisCache::Coefficients chooseStorage(std::vector<double> packed, int modes) {
-    BasisCache::Coefficients c;
-    double largest = 0.0;
-    for (double x : packed) largest = std::max(largest, std::abs(x));
-    const double drop = 1e-12 * largest;
-    std::size_t nonZero = 0;
-    for (double x : packed) nonZero += std::abs(x) > drop;
-    c.density = packed.empty() ? 0.0 : double(nonZero) / double(packed.size());
-    if (c.density >= 0.25) {
-        c.storage = BasisCache::Coefficients::Storage::Dense;
-        c.packed = std::move(packed);
-        return c;
-    }
-    c.storage = BasisCache::Coefficients::Storage::Sparse;
-    const auto n = std::size_t(modes);
-    for (std::size_t k = 0; k < n; ++k)
-        for (std::size_t j = k + 1; j < n; ++j)
-            for (std::size_t i = 0; i < n; ++i) {
-                const double x = packed[packedIndex(n, k, i, j)];
-                if (std::abs(x) <= drop) continue;
-                c.k.push_back(std::int32_t(k));
-                c.i.push_back(std::int32_t(i));
-                c.j.push_back(std::int32_t(j));
-                c.value.push_back(x);
-            }
-    return c;
 }
 
 }  // namespace
@@ -166,6 +136,10 @@ Error outOfMemory(const std::string& stage, const PrecomputeMemory& estimate) {
 /// selection rules; nothing is measured or solved.
 void closedFormStages(const SceneSpec& scene, BasisCache& cache, Progress& progress) {
     const BasisSpec& basis = scene.basis;
+    if (basis.coefficients == CoefficientStorage::TensorFree)
+        throw Error("[basis].coefficients = \"tensor-free\": a whole box with free-slip walls gets closed-form "
+                    "bases, whose coefficients are sparse by selection rules and which have no vorticity "
+                    "quadrature; use \"auto\" (or \"dense\", \"sparse\")");
     progress.begin("operators");
     fillWholeBoxDofs(cache);
     cache.timings.emplace_back("operators", progress.end());
@@ -275,9 +249,18 @@ BasisCache computeStages(const SceneSpec& scene, std::string key, Progress& prog
     cache.timings.emplace_back("velocity_eigensolve", progress.end());
 
     progress.begin("structural coefficients");
-    cache.coefficients = chooseStorage(
-        assembleStructuralCoefficients(complex, measures, dec, cache.velocity.modes),
-        int(cache.velocity.modes.cols()));
+    cache.quadrature = vorticityQuadrature(complex, measures, dec);
+    const int modes = int(cache.velocity.modes.cols());
+    const TensorChoice choice = chooseTensor(basis.coefficients, modes, std::int64_t(dec.faces.size()));
+    if (choice.assemble) {
+        cache.coefficients = storedCoefficients(
+            basis.coefficients, assembleStructuralCoefficients(cache.quadrature, cache.velocity.modes),
+            modes);
+    } else {
+        cache.coefficients.storage = BasisCache::Coefficients::Storage::None;
+        progress.note("  structural coefficients: none assembled, the advection is evaluated "
+                      "tensor-free (" + choice.reason + ")");
+    }
     cache.timings.emplace_back("coefficients", progress.end());
     return cache;
 }
@@ -288,8 +271,8 @@ BasisCache computeBasis(const SceneSpec& scene, std::string key, Progress& progr
     try {
         if (scene.isSurface()) {
             BasisCache cache = computeSurfaceStages(scene, std::move(key), progress);
-            cache.coefficients = chooseStorage(std::move(cache.coefficients.packed),
-                                               int(cache.velocity.modes.cols()));
+            cache.coefficients = storedCoefficients(scene.basis.coefficients, std::move(cache.coefficients.packed),
+                                                    int(cache.velocity.modes.cols()));
             return cache;
         }
         return computeStages(scene, std::move(key), progress, method);
@@ -314,14 +297,21 @@ CacheOutcome ensureCache(const SceneSpec& scene, const std::filesystem::path& ca
     if (!force && std::filesystem::exists(outcome.path)) {
         try {
             outcome.cache = readCache(outcome.path);
-            if (outcome.cache.key == key) {
-                outcome.reused = true;
-                return outcome;
-            }
-            progress.note("cache " + outcome.path.string() + " belongs to other inputs; rebuilding");
+            outcome.reused = outcome.cache.key == key;
+            if (!outcome.reused)
+                progress.note("cache " + outcome.path.string() + " belongs to other inputs; rebuilding");
         } catch (const Error& e) {
             progress.note(std::string(e.what()) + "; rebuilding");
         }
+    }
+    if (outcome.reused) {
+        // A cache made tensor-free gets the tensor a scene now asks for, once.
+        if (completeCoefficients(outcome.cache, scene.basis.coefficients, progress)) {
+            progress.begin("write cache");
+            writeCache(outcome.path, outcome.cache);
+            progress.end();
+        }
+        return outcome;
     }
     const PrecomputeMemory estimate = requirePrecomputeMemory(scene);
     outcome.cache = computeBasis(scene, key, progress, estimate, BasisMethod::Automatic);

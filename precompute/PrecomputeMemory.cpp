@@ -7,6 +7,7 @@
 
 #include "engine/core/AvailableMemory.h"
 #include "engine/core/Error.h"
+#include "precompute/CoefficientChoice.h"
 #include "precompute/closedform/ClosedFormBasis.h"
 #include "precompute/closedform/ClosedFormCoefficients.h"
 #include "precompute/geometry/Domain.h"
@@ -28,6 +29,7 @@ struct Counts {
     double kept = 0.0;           ///< velocity modes stored
     double scalarModes = 0.0;    ///< scalar modes stored
     double scalarRequest = 0.0;  ///< scalar eigenpairs computed (the first Neumann ones at least)
+    bool tensor = true;          ///< structural coefficients assembled (precompute/CoefficientChoice.h)
     bool closedForm = false;     ///< whole box, free slip: descriptors and sparse coefficients
 };
 
@@ -71,16 +73,18 @@ Peak peakOf(const Counts& c) {
     const double resident =
         three ? 310.0 * c.cells + 490.0 * c.velocity : 50.0 * c.cells + 300.0 * c.velocity;
     const double scalarModes = 3.0 * c.scalar * c.scalarModes * 8.0;
-    const double packed = c.kept * c.kept * (c.kept - 1.0) / 2.0 * 8.0;
-    const double elements = c.velocity / c.dim;  // vorticity elements of one type
+    const double packed = c.tensor ? c.kept * c.kept * (c.kept - 1.0) / 2.0 * 8.0 : 0.0;
+    const double elements = c.tensor ? c.velocity / c.dim : 0.0;  // vorticity elements of one type
+    // The quadrature: about one vorticity element per face, 8 entries of 12 bytes and 3 row starts.
+    const double quadrature = 120.0 * c.velocity;
     const double cache = c.velocity * c.kept * 8.0 + c.scalar * c.scalarModes * 8.0 + packed +
-                         8.0 * c.cells + 24.0 * c.velocity + 16.0 * c.scalar;
+                         quadrature + 8.0 * c.cells + 24.0 * c.velocity + 16.0 * c.scalar;
     const Peak stages[] = {
         {(three ? 430.0 : 280.0) * c.cells, "domain and cut-cell measures"},
         {resident + eigensolveBytes(c.dim, c.scalar, c.scalarRequest, false), "scalar eigensolve"},
         {resident + scalarModes + eigensolveBytes(c.dim, c.velocity, c.highest, true),
          "velocity eigensolve"},
-        {resident + scalarModes + 2.0 * c.velocity * c.kept * 8.0 + 1.6 * packed +
+        {resident + scalarModes + 2.0 * c.velocity * c.kept * 8.0 + 1.6 * packed + 2.0 * quadrature +
              elements * (3.0 * c.kept + 256.0) * 8.0,
          "structural coefficients"},
         {3.0 * cache, "write cache"}};
@@ -175,10 +179,12 @@ PrecomputeMemory estimatePrecomputeMemory(const SceneSpec& scene) {
     // One constant per component is computed and dropped; the first Neumann modes always are.
     c.scalarRequest = std::max(basis.scalarModes, 1) + 1;
     c.closedForm = hasClosedFormVelocity(scene);
+    c.tensor = c.closedForm || chooseTensor(basis.coefficients, basis.velocityCount(), std::int64_t(c.velocity)).assemble;
 
     PrecomputeMemory memory;
     memory.velocityDofs = std::int64_t(c.velocity);
     memory.scalarDofs = std::int64_t(c.scalar);
+    memory.tensor = c.tensor;
     const Peak peak = peakOf(c);
     memory.peakBytes = peak.bytes;
     memory.peakStage = peak.stage;

@@ -13,6 +13,8 @@
 ///                 nnz(L) ≈ 11·n^{4/3} (3D) or 4·n·log2(n) (2D) for the velocity operator,
 ///                 5.5·n^{4/3} or 2·n·log2(n) for the scalar one
 ///   coefficients  2·V·K·8 (modes) + 1.6·K²(K−1)/2·8 (packed, sparse copy) + (V/dim)·(3K+256)·8
+///                 + 2·120·V (the vorticity quadrature and its copy); without a tensor
+///                 (precompute/CoefficientChoice.h) the packed and element terms are 0
 ///   cache write   3 × the cache (serialized into a growing string)
 /// plus the scalar modes (3 copies of S·M·8) and 40 MiB for the program itself, the largest
 /// stage times 1.15. A closed-form precompute (whole box, free slip) solves and measures nothing:
@@ -33,6 +35,7 @@ struct PrecomputeMemory {
     std::int64_t scalarDofs = 0;    ///< estimated cells of Ω
     double peakBytes = 0.0;         ///< the largest stage
     std::string peakStage;
+    bool tensor = true;  ///< the structural coefficients are assembled (precompute/CoefficientChoice.h)
     /// The peak with one velocity mode and no scalar modes: what only a coarser grid can lower.
     double gridBytes = 0.0;
 };

@@ -42,35 +42,66 @@ struct CombineParams {
     uint pad2;
 };
 
+/* The Lie advection out_i = sum_kj C[k][i][j] u_k x_j of a stored tensor (MHD's induction term,
+   engine/device/DeviceCoefficients::recordAdvect). Dense: the pair weights w(k,j) = u_k x_j -
+   u_j x_k (modal_pair_weights.comp), then per chunk partial sums over groups of tiles
+   (modal_advect_dense.comp), then their sum (modal_advect_sum.comp). Sparse: one gather per i over
+   the entries of column i (modal_advect_sparse.comp). */
+struct AdvectDenseParams {
+    uint rowOctets;     /* as PairSumsParams */
+    uint firstPair;
+    uint pairCount;
+    uint firstGroup;    /* the chunk's first row of partial sums */
+    uint tilesPerGroup; /* tiles each group sums */
+    uint groupCount;    /* the chunk's groups */
+    uint pad0;
+    uint pad1;
+};
+
+struct AdvectSumParams {
+    uint n;
+    uint groupCount; /* rows of partial sums, over all chunks */
+    uint rowStride;  /* floats per row of partial sums (8 rowOctets) */
+    uint pad0;
+};
+
 /* What modal_update.comp does with r = R(y) from modal_combine.comp (formulas in the shader). */
 #define MODAL_OP_BEGIN 0u        /* half decay of x, y = x, arguments reset; no r */
 #define MODAL_OP_EXPLICIT 1u     /* x += h M^-1 (r + f), half decay */
 #define MODAL_OP_RK4_STAGE 2u    /* stage `stage` (0..3) of classical RK4 */
 #define MODAL_OP_MIDPOINT 3u     /* one fixed-point iteration of the midpoint rule */
 #define MODAL_OP_MIDPOINT_END 4u /* x = 2 y - x, half decay; no r */
+#define MODAL_OP_TRAPEZOIDAL_START 5u /* r0 = R(x) kept, y = x + h M^-1 (r0 + f) (explicit predictor) */
+#define MODAL_OP_TRAPEZOIDAL 6u       /* one fixed-point iteration of the trapezoidal rule */
+#define MODAL_OP_TRAPEZOIDAL_END 7u   /* x = y, half decay; no r */
 
 struct ModalUpdateParams {
     uint n;
     uint op;
     uint stage;          /* RK4 stage */
-    uint argumentCount;  /* indirect dispatches the midpoint iterations switch off */
+    uint argumentCount;  /* indirect dispatches the implicit iterations switch off */
     float h;             /* step */
-    float tolerance;     /* midpoint: relative max-norm change of y that counts as converged */
+    float tolerance;     /* implicit rules: relative max-norm change of y that counts as converged */
+    uint stride;         /* floats per part of the state (n padded) */
+    uint parts;          /* 1: the fluid's v; 2: MHD's [v; F], each part at a multiple of stride */
+    uint lorentz;        /* MHD: subtract r[2 stride + k] (C(F, F)) from the velocity part of r */
     uint pad0;
     uint pad1;
+    uint pad2;
 };
 
 /* The status block modal_update.comp keeps for the host. */
 struct ModalStatus {
-    uint iterations;   /* midpoint iterations of the current (last) step */
-    uint unconverged;  /* midpoint steps so far that hit the iteration limit */
+    uint iterations;   /* implicit (midpoint, trapezoidal) iterations of the current (last) step */
+    uint unconverged;  /* implicit steps so far that hit the iteration limit */
     float residual;    /* last relative change of y */
     uint converged;    /* 1 once the current step's iteration converged */
 };
 
 #ifdef __cplusplus
 static_assert(sizeof(PairSumsParams) == 16 && sizeof(SparsePairSumsParams) == 16 && sizeof(CombineParams) == 16 &&
-              sizeof(ModalUpdateParams) == 32 && sizeof(ModalStatus) == 16,
+              sizeof(AdvectDenseParams) == 32 && sizeof(AdvectSumParams) == 16 &&
+              sizeof(ModalUpdateParams) == 48 && sizeof(ModalStatus) == 16,
               "push constants are padded to 16 bytes");
 }  /* namespace modeflow::shaders */
 #endif

@@ -1,6 +1,7 @@
 #version 450
 // The state updates of the modal integrators (README.md "Reduced dynamics"), float32, one workgroup over the
-// N modes. x is the state, y the point where r = R(y) was evaluated (modal_combine.comp), a = M y
+// N modes, or over MHD's state [v; F] (two parts of N at 0 and `stride`; r then holds
+// [C(v, v); advect(v, F); C(F, F)] and the velocity part's R is the first minus the third). x is the state, y the point where r = R(y) was evaluated (modal_combine.comp), a = M y
 // the weighted point modal_pair_sums.comp contracts next, f the modal force (constant over the
 // step), M the diagonal mass (1 + alpha^2 kappa^2 for LANS-alpha), d the decay rates (nu kappa^2).
 // As in engine/dynamics/ModalIntegrator.h the decay is Strang-split: x_i <- exp(-d_i h/2) x_i
@@ -16,8 +17,12 @@
 //                 live indirect arguments are zeroed, so the remaining recorded iterations
 //                 dispatch no work (no host round trip).
 //   MIDPOINT_END  x <- exp(-d h/2) (2 y - x); an unconverged step keeps x (decay only)
+//   TRAPEZOIDAL_START  r = R(x) kept in acc; y = x + h M^-1 (r + f), the explicit predictor
+//   TRAPEZOIDAL   fixed point of seed eq. 6.9 in the end point y = x' (f constant over the step):
+//                 y <- x + h/2 M^-1 (R(x) + R(y)) + h M^-1 f, converged as MIDPOINT
+//   TRAPEZOIDAL_END  x <- exp(-d h/2) y; an unconverged step keeps x (decay only)
 //
-// The fixed point converges when h |dR/dy| / 2 < 1 (the step's CFL-like number); the status block
+// Both fixed points converge when h |dR/dy| / 2 < 1 (the step's CFL-like number); the status block
 // counts steps that reached the iteration limit so the host can report them.
 #extension GL_GOOGLE_include_directive : require
 #include "ModalStepParams.h"
@@ -52,21 +57,23 @@ void main() {
     const uint op = params.op;
 
     float change = 0.0, magnitude = 0.0;
-    for (uint k = lane; k < n; k += size) {
+    for (uint k = lane; k < params.parts * params.stride; k += size) {
+        if (k % params.stride >= n) continue;  // padding between the parts
         const float halfDecay = exp(-0.5 * h * decay[k]);
+        const float rk = params.lorentz != 0u && k < params.stride ? r[k] - r[2u * params.stride + k] : r[k];
         if (op == MODAL_OP_BEGIN) {
             x[k] *= halfDecay;
             setPoint(k, x[k]);
         } else if (op == MODAL_OP_EXPLICIT) {
-            x[k] = halfDecay * (x[k] + h * (r[k] + f[k]) / mass[k]);
+            x[k] = halfDecay * (x[k] + h * (rk + f[k]) / mass[k]);
         } else if (op == MODAL_OP_RK4_STAGE) {
-            const float slope = (r[k] + f[k]) / mass[k];
+            const float slope = (rk + f[k]) / mass[k];
             const uint s = params.stage;
             acc[k] = (s == 0 ? 0.0 : acc[k]) + (s == 0 || s == 3 ? 1.0 : 2.0) * slope;
             if (s < 3) setPoint(k, x[k] + (s == 2 ? 1.0 : 0.5) * h * slope);
             else x[k] = halfDecay * (x[k] + h / 6.0 * acc[k]);
         } else if (op == MODAL_OP_MIDPOINT) {
-            const float next = x[k] + 0.5 * h * (r[k] + f[k]) / mass[k];
+            const float next = x[k] + 0.5 * h * (rk + f[k]) / mass[k];
             change = max(change, abs(next - y[k]));
             magnitude = max(magnitude, abs(next));
             setPoint(k, next);
@@ -74,6 +81,16 @@ void main() {
             // An iteration that did not converge may be diverging (h |dR/dv| / 2 > 1): keep the
             // state rather than step to a wild iterate; the host then takes smaller substeps.
             x[k] = halfDecay * (status.converged != 0u ? 2.0 * y[k] - x[k] : x[k]);
+        } else if (op == MODAL_OP_TRAPEZOIDAL_START) {
+            acc[k] = rk;
+            setPoint(k, x[k] + h * (rk + f[k]) / mass[k]);
+        } else if (op == MODAL_OP_TRAPEZOIDAL) {
+            const float next = x[k] + (0.5 * h * (acc[k] + rk) + h * f[k]) / mass[k];
+            change = max(change, abs(next - y[k]));
+            magnitude = max(magnitude, abs(next));
+            setPoint(k, next);
+        } else if (op == MODAL_OP_TRAPEZOIDAL_END) {
+            x[k] = halfDecay * (status.converged != 0u ? y[k] : x[k]);  // as MIDPOINT_END
         }
     }
 
@@ -83,8 +100,9 @@ void main() {
         const uint words = 3 * params.argumentCount;
         for (uint e = 0; e < words; ++e) arguments[words + e] = arguments[e];
     }
-    if (op == MODAL_OP_MIDPOINT_END && lane == 0 && status.converged == 0) status.unconverged += 1;
-    if (op != MODAL_OP_MIDPOINT) return;
+    const bool ending = op == MODAL_OP_MIDPOINT_END || op == MODAL_OP_TRAPEZOIDAL_END;
+    if (ending && lane == 0 && status.converged == 0) status.unconverged += 1;
+    if (op != MODAL_OP_MIDPOINT && op != MODAL_OP_TRAPEZOIDAL) return;
 
     // Max-reduce the change and the size of y across the workgroup (any size, not only 2^k).
     changeMax[lane] = change;

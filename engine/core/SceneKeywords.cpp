@@ -20,6 +20,9 @@ std::string_view sceneKeyword(WallKind wall) {
 std::string_view sceneKeyword(BoundaryTreatment treatment) {
     return keywordOf(Choices<BoundaryTreatment>(keywords::kBoundaries), treatment);
 }
+std::string_view sceneKeyword(CoefficientStorage storage) {
+    return keywordOf(Choices<CoefficientStorage>(keywords::kCoefficientStorages), storage);
+}
 std::string_view sceneKeyword(Integrator integrator) {
     return keywordOf(Choices<Integrator>(keywords::kIntegrators), integrator);
 }

@@ -28,6 +28,11 @@ inline constexpr std::pair<std::string_view, WallKind> kWalls[] = {
     {"free-slip", WallKind::FreeSlip}, {"no-slip", WallKind::NoSlip}};
 inline constexpr std::pair<std::string_view, BoundaryTreatment> kBoundaries[] = {
     {"cut-cell", BoundaryTreatment::CutCell}, {"staircase", BoundaryTreatment::Staircase}};
+inline constexpr std::pair<std::string_view, CoefficientStorage> kCoefficientStorages[] = {
+    {"auto", CoefficientStorage::Auto},
+    {"dense", CoefficientStorage::Dense},
+    {"sparse", CoefficientStorage::Sparse},
+    {"tensor-free", CoefficientStorage::TensorFree}};
 inline constexpr std::pair<std::string_view, Integrator> kIntegrators[] = {
     {"explicit", Integrator::Explicit},
     {"rk4", Integrator::Rk4},
@@ -66,6 +71,7 @@ std::string_view sceneKeyword(CsgOp op);
 std::string_view sceneKeyword(ScalarBoundary boundary);
 std::string_view sceneKeyword(WallKind wall);
 std::string_view sceneKeyword(BoundaryTreatment treatment);
+std::string_view sceneKeyword(CoefficientStorage storage);
 std::string_view sceneKeyword(Integrator integrator);
 std::string_view sceneKeyword(InitialVelocity velocity);
 std::string_view sceneKeyword(AdvectionScheme scheme);

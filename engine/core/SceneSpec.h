@@ -40,6 +40,12 @@ enum class WallKind { FreeSlip, NoSlip };
 /// How primal measures see the domain: exact-for-piecewise-linear cut cells, or voxelized.
 enum class BoundaryTreatment { CutCell, Staircase };
 
+/// How the runtime evaluates the advection Σ_ij C[k][i][j] v_i v_j: from a stored tensor (dense,
+/// or sparse for bases where most entries vanish), or straight from the modes and the vorticity
+/// quadrature without any tensor (tensor-free; engine/dynamics/TensorFreeCoefficients.h). Auto
+/// lets the precompute choose by memory and cost (precompute/CoefficientChoice.h).
+enum class CoefficientStorage { Auto, Dense, Sparse, TensorFree };
+
 /// A 1-based, inclusive range of the divergence-free spectrum ("516-630").
 struct ModeRange {
     int first = 1;
@@ -54,6 +60,7 @@ struct BasisSpec {
     WallKind wall = WallKind::FreeSlip;
     BoundaryTreatment boundary = BoundaryTreatment::CutCell;
     int subsamples = 4;  ///< sub-cells per element edge when measuring cut fractions
+    CoefficientStorage coefficients = CoefficientStorage::Auto;
 
     int velocityCount() const {
         int n = 0;

@@ -9,6 +9,7 @@
 #include "engine/dynamics/DenseCoefficients.h"
 #include "engine/core/PackedLayout.h"
 #include "engine/dynamics/SparseCoefficients.h"
+#include "engine/dynamics/TensorFreeCoefficients.h"
 #include "engine/core/Error.h"
 #include "engine/device/ModalKernels.h"
 #include "engine/vulkan/CommandSequence.h"
@@ -36,12 +37,20 @@ std::uint32_t groupsFor(std::size_t items, std::size_t perGroup, std::uint32_t m
 }  // namespace
 
 DeviceCoefficients::DeviceCoefficients(const vulkan::VulkanContext& context,
-                                       const StructuralCoefficients& coefficients)
+                                       const StructuralCoefficients& coefficients, const BasisCache* cache,
+                                       const ModeBuffer* modes, bool advection)
     : mN(coefficients.size()),
       mSubgroupsPerGroup(std::max(1u, 64u / context.subgroupSize())),
       mMaxGroups(context.properties().limits.maxComputeWorkGroupCount[0]) {
     if (mN < 2) throw Error("modal contraction: needs at least 2 modes, got " + std::to_string(mN));
     const std::size_t n = std::size_t(mN);
+    if (dynamic_cast<const TensorFreeCoefficients*>(&coefficients)) {
+        if (!cache || cache->velocity.modes.cols() != mN)
+            throw Error("modal contraction: tensor-free coefficients on the device need their basis cache");
+        mTensorFree.emplace(context, *cache, modes);
+        mStreamedBytes = mTensorFree->streamedBytes();
+        return;
+    }
     // Zero first: sparse storage leaves the sums of pairs without entries untouched.
     mPairSums.emplace(vulkan::DeviceBuffer::fromValues<float>(
         context, std::vector<float>(pairCount(n), 0.0f), "pair sums"));
@@ -73,6 +82,7 @@ DeviceCoefficients::DeviceCoefficients(const vulkan::VulkanContext& context,
                                std::uint32_t(first), std::uint32_t(rows)});
         }
         mStreamedBytes = pairCount(n) * rowBytes;
+        if (advection) mDenseAdvection.emplace(denseAdvection(context));
     } else if (const auto* sparse = dynamic_cast<const SparseCoefficients*>(&coefficients)) {
         if (sparse->nonZeros() == 0)
             throw Error(
@@ -80,8 +90,9 @@ DeviceCoefficients::DeviceCoefficients(const vulkan::VulkanContext& context,
                 "interactions)");
         mSparse.emplace(slicedRows(context, *sparse));
         mStreamedBytes = (sparse->nonZeros() + sparse->pairK().size()) * 8;
+        if (advection) mSparseColumns.emplace(sparseColumns(context, *sparse));
     } else {
-        throw Error("modal contraction: the device takes dense or sparse coefficients only");
+        throw Error("modal contraction: the device takes dense, sparse or tensor-free coefficients only");
     }
 }
 
@@ -124,7 +135,97 @@ DeviceCoefficients::SparseRows DeviceCoefficients::slicedRows(const vulkan::Vulk
             std::uint32_t(rows)};
 }
 
-std::vector<std::uint32_t> DeviceCoefficients::dispatchGroups() const {
+DeviceCoefficients::SparseColumns DeviceCoefficients::sparseColumns(const vulkan::VulkanContext& context,
+                                                                   const SparseCoefficients& sparse) {
+    const std::size_t n = std::size_t(sparse.size());
+    std::vector<std::uint32_t> start(n + 1, 0u);
+    for (int i : sparse.columns()) ++start[std::size_t(i) + 1];
+    for (std::size_t i = 0; i < n; ++i) start[i + 1] += start[i];
+    std::vector<std::uint32_t> entries(4 * std::max<std::size_t>(sparse.nonZeros(), 1), 0u);
+    std::vector<std::uint32_t> next(start.begin(), start.end() - 1);
+    for (std::size_t r = 0; r < sparse.pairK().size(); ++r)
+        for (std::size_t t = sparse.rowStart()[r]; t < sparse.rowStart()[r + 1]; ++t) {
+            const std::size_t at = 4 * std::size_t(next[std::size_t(sparse.columns()[t])]++);
+            entries[at] = std::uint32_t(sparse.pairK()[r]);
+            entries[at + 1] = std::uint32_t(sparse.pairJ()[r]);
+            entries[at + 2] = std::bit_cast<std::uint32_t>(float(sparse.values()[t]));
+        }
+    return {vulkan::DeviceBuffer::fromValues<std::uint32_t>(context, start, "sparse column starts"),
+            vulkan::DeviceBuffer::fromValues<std::uint32_t>(context, entries, "sparse entries by column")};
+}
+
+DeviceCoefficients::DenseAdvection DeviceCoefficients::denseAdvection(const vulkan::VulkanContext& context) const {
+    // Up to kGroups groups of tiles per chunk: enough partial rows to keep a device busy, few
+    // enough that their sum is short.
+    constexpr std::uint32_t kGroups = 64;
+    std::vector<AdvectionGroups> chunks;
+    std::uint32_t rows = 0;
+    for (const Chunk& chunk : mChunks) {
+        const std::uint32_t tiles = (chunk.pairs + kPairTileRows - 1) / kPairTileRows;
+        const std::uint32_t perGroup = (tiles + kGroups - 1) / kGroups;
+        const std::uint32_t groups = (tiles + perGroup - 1) / perGroup;
+        chunks.push_back({rows, groups, perGroup});
+        rows += groups;
+    }
+    const std::size_t n = std::size_t(mN);
+    return {vulkan::DeviceBuffer::fromValues<float>(context, std::vector<float>(pairCount(n), 0.0f), "pair weights"),
+            vulkan::DeviceBuffer(context, VkDeviceSize(rows) * paddedSize(mN) * sizeof(float), "advection partial sums"),
+            std::move(chunks), rows};
+}
+
+std::vector<std::uint32_t> DeviceCoefficients::advectGroups() const {
+    if (mTensorFree) return mTensorFree->dispatchGroups();
+    if (mSparseColumns) return {groupsFor(std::size_t(mN), 64, mMaxGroups)};
+    if (!mDenseAdvection)
+        throw Error("modal advection: the coefficients were uploaded without what advect needs");
+    std::vector<std::uint32_t> groups{groupsFor(std::size_t(mN), 64, mMaxGroups)};
+    for (const AdvectionGroups& chunk : mDenseAdvection->chunks)
+        groups.push_back(groupsFor(std::size_t(chunk.groups) * (paddedSize(mN) / 8), 64, mMaxGroups));
+    groups.push_back(groupsFor(std::size_t(mN), 64, mMaxGroups));
+    return groups;
+}
+
+void DeviceCoefficients::recordAdvect(vulkan::CommandSequence& sequence, const ModalKernels& kernels,
+                                      const vulkan::DeviceBuffer& u, const vulkan::DeviceBuffer& x,
+                                      const vulkan::DeviceBuffer& out, IndirectArguments indirect) const {
+    requireFloats(u, int(paddedSize(mN)));
+    requireFloats(x, int(paddedSize(mN)));
+    requireFloats(out, mN);
+    if (mTensorFree) {
+        mTensorFree->recordAdvect(sequence, u, x, out, indirect);
+        return;
+    }
+    const std::vector<std::uint32_t> groups = advectGroups();
+    const auto n = std::uint32_t(mN);
+    if (mSparseColumns) {
+        const std::array<const vulkan::DeviceBuffer*, 5> buffers{&mSparseColumns->start, &mSparseColumns->entries, &u,
+                                                                 &x, &out};
+        indirect.dispatch(sequence, kernels.advectSparse, buffers, shaders::CombineParams{n, 0, 0, 0}, groups[0]);
+        return;
+    }
+    std::uint32_t d = 0;
+    const std::array<const vulkan::DeviceBuffer*, 3> weightBuffers{&u, &x, &mDenseAdvection->weights};
+    indirect.after(d).dispatch(sequence, kernels.pairWeights, weightBuffers, shaders::CombineParams{n, 0, 0, 0},
+                               groups[d]);
+    ++d;
+    const auto octets = std::uint32_t(paddedSize(mN) / 8);
+    for (std::size_t c = 0; c < mChunks.size(); ++c) {
+        const AdvectionGroups& g = mDenseAdvection->chunks[c];
+        const std::array<const vulkan::DeviceBuffer*, 3> buffers{&mChunks[c].values, &mDenseAdvection->weights,
+                                                                 &mDenseAdvection->partial};
+        indirect.after(d).dispatch(sequence, kernels.advectDense, buffers,
+                                   shaders::AdvectDenseParams{octets, mChunks[c].firstPair, mChunks[c].pairs,
+                                                              g.firstGroup, g.tilesPerGroup, g.groups, 0, 0},
+                                   groups[d]);
+        ++d;
+    }
+    const std::array<const vulkan::DeviceBuffer*, 2> sumBuffers{&mDenseAdvection->partial, &out};
+    indirect.after(d).dispatch(sequence, kernels.advectSum, sumBuffers,
+                               shaders::AdvectSumParams{n, mDenseAdvection->rows, 8 * octets, 0}, groups[d]);
+}
+
+std::vector<std::uint32_t> DeviceCoefficients::dispatchGroups(bool sameVectors) const {
+    if (mTensorFree) return mTensorFree->dispatchGroups(sameVectors);
     std::vector<std::uint32_t> groups;
     if (mSparse) groups.push_back(groupsFor(mSparse->rowCount, 64, mMaxGroups));
     for (const Chunk& chunk : mChunks)
@@ -140,16 +241,15 @@ void DeviceCoefficients::recordApply(vulkan::CommandSequence& sequence, const Mo
     requireFloats(a, int(paddedSize(mN)));
     requireFloats(b, mN);
     requireFloats(out, mN);
-    const std::vector<std::uint32_t> groups = dispatchGroups();
-    std::size_t d = 0;
+    if (mTensorFree) {
+        mTensorFree->recordApply(sequence, a, b, out, indirect);
+        return;
+    }
+    const std::vector<std::uint32_t> groups = dispatchGroups(&a == &b);
+    std::uint32_t d = 0;
     const auto dispatch = [&](const vulkan::ComputeKernel& kernel,
                               std::span<const vulkan::DeviceBuffer* const> buffers, const auto& params) {
-        if (indirect.buffer)
-            sequence.dispatchIndirect(
-                kernel, buffers, params, *indirect.buffer,
-                VkDeviceSize(indirect.first + d) * sizeof(VkDispatchIndirectCommand));
-        else
-            sequence.dispatch(kernel, buffers, params, groups[d]);
+        indirect.after(d).dispatch(sequence, kernel, buffers, params, groups[d]);
         ++d;
     };
     const auto n = std::uint32_t(mN);

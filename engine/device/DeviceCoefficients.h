@@ -9,11 +9,16 @@
 /// has the layout and why) and split into chunks of whole tiles when they exceed the device's
 /// buffer limit (VulkanContext::texelBufferLimit; lavapipe: 128 MiB, i.e. N ≳ 400); sparse ones
 /// are uploaded in slices of PAIR_TILE_LANES rows (shaders/modal_pair_sums_sparse.comp).
+/// Tensor-free coefficients store nothing: the contraction runs TensorFreeAdvection's kernels on
+/// the basis and the quadrature.
 
 #include <cstdint>
 #include <optional>
 #include <vector>
 
+#include "engine/device/IndirectArguments.h"
+#include "engine/device/TensorFreeAdvection.h"
+#include "engine/format/BasisCache.h"
 #include "engine/vulkan/DeviceBuffer.h"
 
 namespace modeflow {
@@ -30,13 +35,6 @@ namespace modeflow::device {
 
 struct ModalKernels;
 
-/// Where a contraction takes its group counts from: nullptr for fixed counts, or a buffer of
-/// VkDispatchIndirectCommand whose entry `first` (and the next ones) the device may have zeroed.
-struct IndirectArguments {
-    const vulkan::DeviceBuffer* buffer = nullptr;
-    std::uint32_t first = 0;
-};
-
 /// Floats of a modal vector buffer: N rounded up to a multiple of 8. The pair-sum kernel reads
 /// rows and the vector `a` eight floats per load (lavapipe turns each load into a per-lane
 /// access, so wider loads are what gets it near memory bandwidth); rows and vectors are
@@ -47,13 +45,20 @@ constexpr std::size_t paddedSize(int n) {
 
 class DeviceCoefficients {
 public:
-    /// Uploads `coefficients` (DenseCoefficients or SparseCoefficients) rounded to float32.
+    /// Uploads `coefficients` (DenseCoefficients or SparseCoefficients) rounded to float32; for
+    /// TensorFreeCoefficients, the tables of TensorFreeAdvection for `cache` (required then, and
+    /// `modes` as TensorFreeAdvection takes it). `advection`: also what recordAdvect needs (the
+    /// dense pair weights and partial sums, the sparse entries by column).
     /// @throw modeflow::Error for another storage, fewer than 2 modes, a single pair row or the
-    /// sparse arrays above the storage buffer limit, or a failed allocation.
-    DeviceCoefficients(const vulkan::VulkanContext& context, const StructuralCoefficients& coefficients);
+    /// sparse arrays above the storage buffer limit, tensor-free coefficients without their
+    /// cache, or a failed allocation.
+    DeviceCoefficients(const vulkan::VulkanContext& context, const StructuralCoefficients& coefficients,
+                       const BasisCache* cache = nullptr, const ModeBuffer* modes = nullptr,
+                       bool advection = false);
 
     int size() const { return mN; }
     bool isSparse() const { return mSparse.has_value(); }
+    bool isTensorFree() const { return mTensorFree.has_value(); }
     std::size_t chunkCount() const { return mChunks.size(); }
     /// Bytes of coefficient data (values and indices) one contraction reads; sparse: as CSR,
     /// 8 bytes per entry and per row (the slices' padding not counted).
@@ -61,7 +66,16 @@ public:
 
     /// Group counts of the dispatches recordApply makes, in order (pair-sum dispatches, then
     /// combine): what an IndirectArguments buffer must hold.
-    std::vector<std::uint32_t> dispatchGroups() const;
+    /// `sameVectors`: recordApply's a and b are one buffer (tensor-free: one reconstruction).
+    std::vector<std::uint32_t> dispatchGroups(bool sameVectors = false) const;
+
+    /// Group counts of the dispatches recordAdvect makes, in order.
+    std::vector<std::uint32_t> advectGroups() const;
+    /// Records out_k = Σ_ij C[j][k][i] x_i u_j (StructuralCoefficients::advect; MHD's induction).
+    /// @throw modeflow::Error unless constructed with `advection`, or for buffers too small.
+    void recordAdvect(vulkan::CommandSequence& sequence, const ModalKernels& kernels, const vulkan::DeviceBuffer& u,
+                      const vulkan::DeviceBuffer& x, const vulkan::DeviceBuffer& out,
+                      IndirectArguments indirect = {}) const;
 
     /// Records out = C(a, b) (dispatchGroups().size() dispatches).
     /// @throw modeflow::Error if `a` holds fewer than paddedSize(N) floats (zeros past N) or b, out
@@ -88,7 +102,29 @@ private:
     std::uint32_t mSubgroupsPerGroup = 1;
     std::uint32_t mMaxGroups = 1;
     std::vector<Chunk> mChunks;
+    /// The dense advection's partial sums: rows of 8·rowOctets floats, per chunk `groups` rows
+    /// of `tilesPerGroup` tiles each, from row `firstGroup`.
+    struct AdvectionGroups {
+        std::uint32_t firstGroup = 0, groups = 0, tilesPerGroup = 0;
+    };
+    struct DenseAdvection {
+        vulkan::DeviceBuffer weights;  ///< one per pair
+        vulkan::DeviceBuffer partial;
+        std::vector<AdvectionGroups> chunks;
+        std::uint32_t rows = 0;
+    };
+    /// The sparse entries by column i: (k, j, value bits, 0) from columnStart[i].
+    struct SparseColumns {
+        vulkan::DeviceBuffer start;
+        vulkan::DeviceBuffer entries;
+    };
+    static SparseColumns sparseColumns(const vulkan::VulkanContext& context, const SparseCoefficients& sparse);
+    DenseAdvection denseAdvection(const vulkan::VulkanContext& context) const;
+
     std::optional<SparseRows> mSparse;
+    std::optional<DenseAdvection> mDenseAdvection;
+    std::optional<SparseColumns> mSparseColumns;
+    std::optional<TensorFreeAdvection> mTensorFree;
     std::optional<vulkan::DeviceBuffer> mPairSums;
     std::size_t mStreamedBytes = 0;
 };

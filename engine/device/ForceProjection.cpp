@@ -102,8 +102,18 @@ ForceProjectionKernel::ForceProjectionKernel(const vulkan::VulkanContext& contex
                                             sizeof(shaders::ProjectForceSumParams),
                                             options.workgroupSize}) {}
 
+std::vector<std::uint32_t> ForceProjectionKernel::dispatchGroups(const ModeBuffer& modes) const {
+    std::vector<std::uint32_t> groups;
+    for (const ModeBuffer::Chunk& chunk : modes.chunks()) {
+        const std::uint32_t slots = slotsFor(chunk.modeCount);
+        groups.push_back((chunk.modeCount + slots - 1) / slots * mBlockCount);
+    }
+    groups.push_back(groupsFor(mContext, mModeCount, mWorkgroupSize));
+    return groups;
+}
+
 void ForceProjectionKernel::record(vulkan::CommandSequence& sequence, const ModeBuffer& modes, const vulkan::DeviceBuffer& q,
-                                   const vulkan::DeviceBuffer& f) const {
+                                   const vulkan::DeviceBuffer& f, IndirectArguments indirect) const {
     if (modes.dofCount() != mDofCount || modes.modeCount() != mModeCount)
         throw Error("project_force: the modes are " + std::to_string(modes.modeCount()) + " on " +
                     std::to_string(modes.dofCount()) + " DOFs, the kernel's basis " + std::to_string(mModeCount) +
@@ -116,6 +126,8 @@ void ForceProjectionKernel::record(vulkan::CommandSequence& sequence, const Mode
     params.tileCount = modes.tileCount();
     params.blockCount = mBlockCount;
     params.blockTiles = mBlockSize / (ModeBuffer::kTileVectors * modes.dofsPerVector());
+    const std::vector<std::uint32_t> groups = dispatchGroups(modes);
+    std::uint32_t d = 0;
     for (const ModeBuffer::Chunk& chunk : modes.chunks()) {
         params.firstMode = chunk.firstMode;
         params.modeCount = chunk.modeCount;
@@ -123,12 +135,12 @@ void ForceProjectionKernel::record(vulkan::CommandSequence& sequence, const Mode
         // q twice: its whole texels (binding 1) and one float at a time (binding 5).
         const std::array<const vulkan::DeviceBuffer*, 6> buffers{&chunk.buffer, &q,         &mWeights,
                                                          &mFaces,       &mPartials, &q};
-        sequence.dispatch(partialKernel(modes.precision(), slots), buffers, params,
-                          (chunk.modeCount + slots - 1) / slots * mBlockCount);
+        indirect.after(d).dispatch(sequence, partialKernel(modes.precision(), slots), buffers, params, groups[d]);
+        ++d;
     }
     const shaders::ProjectForceSumParams sum{mModeCount, mBlockCount, 0, 0};
     const std::array<const vulkan::DeviceBuffer*, 3> buffers{&mPartials, &modes.scales(), &f};
-    sequence.dispatch(mSumKernel, buffers, sum, groupsFor(mContext, mModeCount, mWorkgroupSize));
+    indirect.after(d).dispatch(sequence, mSumKernel, buffers, sum, groups[d]);
 }
 
 const vulkan::ComputeKernel& ForceProjectionKernel::partialKernel(ModePrecision precision, std::uint32_t slots) const {

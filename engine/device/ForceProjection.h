@@ -14,8 +14,10 @@
 #include <cstdint>
 #include <map>
 #include <utility>
+#include <vector>
 
 #include "engine/core/ModePrecision.h"
+#include "engine/device/IndirectArguments.h"
 #include "engine/simulation/ProjectionWeights.h"
 #include "engine/format/BasisCache.h"
 #include "engine/vulkan/ComputeKernel.h"
@@ -53,7 +55,10 @@ public:
     /// Records f = Ψᵀ (w ∘ q) (N floats) with the modes in `modes`.
     /// @throw modeflow::Error if `modes` is not a basis of this kernel's DOFs and mode count, or a
     /// buffer is too small.
-    void record(vulkan::CommandSequence& sequence, const ModeBuffer& modes, const vulkan::DeviceBuffer& q, const vulkan::DeviceBuffer& f) const;
+    void record(vulkan::CommandSequence& sequence, const ModeBuffer& modes, const vulkan::DeviceBuffer& q,
+                const vulkan::DeviceBuffer& f, IndirectArguments indirect = {}) const;
+    /// The group counts of record's dispatches (one per chunk of `modes`, then the sums).
+    std::vector<std::uint32_t> dispatchGroups(const ModeBuffer& modes) const;
 
     std::uint32_t blockCount() const { return mBlockCount; }
     std::uint32_t blockSize() const { return mBlockSize; }

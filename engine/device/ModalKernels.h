@@ -22,6 +22,10 @@ struct ModalKernels {
     vulkan::ComputeKernel sparsePairSums;  ///< sparse rows: one invocation per stored pair
     vulkan::ComputeKernel combine;         ///< out_k from the pair sums and b, one subgroup per k
     vulkan::ComputeKernel update;          ///< the integrators' state updates, one workgroup
+    vulkan::ComputeKernel pairWeights;     ///< dense advection: w(k,j) = u_k x_j − u_j x_k
+    vulkan::ComputeKernel advectDense;     ///< dense advection: partial sums over groups of tiles
+    vulkan::ComputeKernel advectSum;       ///< dense advection: the partial sums added
+    vulkan::ComputeKernel advectSparse;    ///< sparse advection: one gather per mode
 };
 
 }  // namespace modeflow::device

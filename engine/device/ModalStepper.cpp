@@ -12,23 +12,20 @@ namespace modeflow::device {
 namespace {
 
 DeviceStepSettings checked(DeviceStepSettings settings) {
-    if (settings.scheme == Integrator::Trapezoidal)
-        throw Error(
-            "the trapezoidal integrator runs on the CPU reference only (--device cpu); the device "
-            "offers explicit, rk4 and midpoint");
-    if (!(settings.tolerance > 0.0f)) throw Error("device midpoint tolerance must be positive");
-    if (settings.maxIterations < 1) throw Error("device midpoint iterations must be at least 1");
+    if (!(settings.tolerance > 0.0f)) throw Error("device implicit-step tolerance must be positive");
+    if (settings.maxIterations < 1) throw Error("device implicit-step iterations must be at least 1");
     return settings;
 }
 
-/// A zero modal vector, padded as the pair-sum kernel reads it.
-vulkan::DeviceBuffer floats(const vulkan::VulkanContext& context, int n, const char* name) {
-    return vulkan::DeviceBuffer::fromValues<float>(context, std::vector<float>(paddedSize(n), 0.0f), name);
+/// Floats per part of the state: N padded as the pair-sum kernel reads a vector, and for MHD's
+/// second part to where a buffer view may start (DeviceBuffer::kViewAlignment).
+std::uint32_t strideFor(int n, bool mhd) {
+    constexpr std::size_t viewFloats = vulkan::DeviceBuffer::kViewAlignment / sizeof(float);
+    return std::uint32_t(mhd ? (std::size_t(n) + viewFloats - 1) / viewFloats * viewFloats : paddedSize(n));
 }
 
-vulkan::DeviceBuffer floats(const vulkan::VulkanContext& context, const Eigen::VectorXd& values, const char* name) {
-    return vulkan::DeviceBuffer::fromValues<float>(context,
-                                           std::vector<float>(values.begin(), values.end()), name);
+vulkan::DeviceBuffer zeros(const vulkan::VulkanContext& context, std::size_t floats, const char* name) {
+    return vulkan::DeviceBuffer::fromValues<float>(context, std::vector<float>(floats, 0.0f), name);
 }
 
 /// The full indirect arguments (one VkDispatchIndirectCommand per dispatch of an iteration),
@@ -40,43 +37,100 @@ std::vector<std::uint32_t> indirectArguments(const std::vector<std::uint32_t>& g
     return words;
 }
 
-std::vector<std::uint32_t> iterationGroups(const DeviceCoefficients& coefficients) {
-    std::vector<std::uint32_t> groups = coefficients.dispatchGroups();
-    groups.push_back(1);  // modal_update
-    return groups;
-}
+bool modelIsMhd(const DeviceModel& model) { return std::holds_alternative<MhdParameters>(model); }
 
 }  // namespace
 
-ModalStepper::ModalStepper(const vulkan::VulkanContext& context, const StructuralCoefficients& coefficients,
-                           const FluidParameters& parameters, DeviceStepSettings settings)
-    : mContext(context),
-      mSettings(checked(settings)),
-      mKernels(context),
-      mCoefficients(context, coefficients),
-      mApplyDispatches(std::uint32_t(mCoefficients.dispatchGroups().size())),
-      mState(floats(context, coefficients.size(), "modal state")),
-      mPoint(floats(context, coefficients.size(), "modal evaluation point")),
-      mWeighted(floats(context, coefficients.size(), "modal weighted point")),
-      mRhs(floats(context, coefficients.size(), "modal right-hand side")),
-      mForce(floats(context, coefficients.size(), "modal force")),
-      mMass(floats(context, FluidSystem::massOf(parameters, coefficients.size()), "modal mass")),
-      mDecay(floats(context, FluidSystem::decayRatesOf(parameters, coefficients.size()),
-                    "modal decay rates")),
-      mAccumulator(floats(context, coefficients.size(), "modal RK4 accumulator")),
-      mStatus(vulkan::DeviceBuffer::fromValues<shaders::ModalStatus>(
-          context, std::vector<shaders::ModalStatus>(1), "modal status")),
-      mArguments(vulkan::DeviceBuffer::fromValues<std::uint32_t>(
-          context, indirectArguments(iterationGroups(mCoefficients)), "modal indirect arguments")) {
+DeviceModel modelOf(const SimulationSettings& settings) {
+    if (!settings.mhd) return settings.fluid;
+    return MhdParameters{settings.fluid.kappaSquared, settings.fluid.viscosity, settings.magneticDiffusivity};
 }
 
-void ModalStepper::upload(vulkan::DeviceBuffer& buffer, const Eigen::VectorXd& values,
+ModalStepper::ModalStepper(const vulkan::VulkanContext& context, const StructuralCoefficients& coefficients,
+                           const DeviceModel& model, DeviceStepSettings settings,
+                           const BasisCache* cache, const ModeBuffer* modes)
+    : mContext(context),
+      mSettings(checked(settings)),
+      mMhd(modelIsMhd(model)),
+      mLorentz(mMhd && std::get<MhdParameters>(model).lorentzForce),
+      mStride(strideFor(coefficients.size(), mMhd)),
+      mParts(mMhd ? 2 : 1),
+      mKernels(context),
+      mCoefficients(context, coefficients, cache, modes, mMhd),
+      mState(zeros(context, mParts * mStride, "modal state")),
+      mPoint(zeros(context, mParts * mStride, "modal evaluation point")),
+      mWeighted(zeros(context, mParts * mStride, "modal weighted point")),
+      mRhs(zeros(context, (mMhd ? 3 : 1) * mStride, "modal right-hand side")),
+      mForce(zeros(context, mParts * mStride, "modal force")),
+      mMass(zeros(context, mParts * mStride, "modal mass")),
+      mDecay(zeros(context, mParts * mStride, "modal decay rates")),
+      mAccumulator(zeros(context, mParts * mStride, "modal accumulator")),
+      mStatus(vulkan::DeviceBuffer::fromValues<shaders::ModalStatus>(
+          context, std::vector<shaders::ModalStatus>(1), "modal status")),
+      mArguments(context, 4, "modal indirect arguments") {
+    uploadModel(model);
+    if (mMhd) {
+        mField.emplace(part(mState, 1, "magnetic field"));
+        mPointField.emplace(part(mPoint, 1, "field evaluation point"));
+        mInduction.emplace(part(mRhs, 1, "induction"));
+        mLorentzForce.emplace(part(mRhs, 2, "Lorentz force"));
+    }
+    buildArguments();
+}
+
+void ModalStepper::buildArguments() {
+    std::vector<std::uint32_t> groups = evaluationGroups();
+    mEvaluationDispatches = std::uint32_t(groups.size());
+    groups.push_back(1);  // modal_update
+    mArguments = vulkan::DeviceBuffer::fromValues<std::uint32_t>(mContext, indirectArguments(groups),
+                                                                 "modal indirect arguments");
+}
+
+vulkan::DeviceBuffer ModalStepper::part(const vulkan::DeviceBuffer& whole, int index, const char* name) const {
+    return vulkan::DeviceBuffer(whole, VkDeviceSize(index) * mStride * sizeof(float),
+                                VkDeviceSize(mStride) * sizeof(float), name);
+}
+
+void ModalStepper::uploadModel(const DeviceModel& model) {
+    if (modelIsMhd(model) != mMhd)
+        throw Error(std::string("modal step: parameters of ") + (modelIsMhd(model) ? "MHD" : "a fluid") +
+                    " for a stepper of " + (mMhd ? "MHD" : "a fluid"));
+    const int n = size();
+    if (const auto* fluid = std::get_if<FluidParameters>(&model)) {
+        if (!fluid->held.empty())
+            throw Error("modal step: held modes ([forcing]) run on the CPU reference only; use --device cpu");
+        const Eigen::VectorXd mass = FluidSystem::massOf(*fluid, n);
+        mFiltered = (mass.array() != 1.0).any();
+        upload(mMass, mass, 0, "mass");
+        upload(mDecay, FluidSystem::decayRatesOf(*fluid, n), 0, "decay rates");
+        return;
+    }
+    const MhdParameters& mhd = std::get<MhdParameters>(model);
+    if (mhd.lorentzForce != mLorentz)
+        throw Error("modal step: the Lorentz force is set when the stepper is made");
+    // MhdSystem's rates, checked as FluidSystem checks its own: νκ² for v, ηκ² for F.
+    const auto rates = [&](double diffusivity) {
+        return FluidSystem::decayRatesOf({mhd.kappaSquared, diffusivity, 0.0}, n);
+    };
+    const Eigen::VectorXd velocityRates = rates(mhd.viscosity), fieldRates = rates(mhd.magneticDiffusivity);
+    for (int p = 0; p < 2; ++p) upload(mMass, Eigen::VectorXd::Ones(n), p, "mass");
+    upload(mDecay, velocityRates, 0, "decay rates");
+    upload(mDecay, fieldRates, 1, "decay rates");
+}
+
+void ModalStepper::upload(vulkan::DeviceBuffer& buffer, const Eigen::VectorXd& values, int part,
                           const char* what) const {
     if (values.size() != size())
         throw Error(std::string("modal ") + what + " has " + std::to_string(values.size()) +
                     " entries, the basis " + std::to_string(size()));
     const std::vector<float> rounded(values.begin(), values.end());
-    buffer.upload<float>(rounded);
+    buffer.upload<float>(rounded, VkDeviceSize(part) * mStride * sizeof(float));
+}
+
+Eigen::VectorXd ModalStepper::download(const vulkan::DeviceBuffer& buffer, int part) const {
+    std::vector<float> values(static_cast<std::size_t>(size()));
+    buffer.download<float>(values, VkDeviceSize(part) * mStride * sizeof(float));
+    return Eigen::Map<const Eigen::VectorXf>(values.data(), size()).template cast<double>();
 }
 
 void ModalStepper::setScheme(Integrator scheme) {
@@ -85,29 +139,79 @@ void ModalStepper::setScheme(Integrator scheme) {
     mSettings = checked(settings);
 }
 
-void ModalStepper::setParameters(const FluidParameters& parameters) {
-    upload(mMass, FluidSystem::massOf(parameters, size()), "mass");
-    upload(mDecay, FluidSystem::decayRatesOf(parameters, size()), "decay rates");
+void ModalStepper::setParameters(const DeviceModel& model) {
+    uploadModel(model);
+    buildArguments();  // the contraction's dispatches follow the mass (C(Mv, v) or C(v, v))
 }
 
-void ModalStepper::setState(const Eigen::VectorXd& v) {
-    upload(mState, v, "state");
-}
-void ModalStepper::setForce(const Eigen::VectorXd& f) {
-    upload(mForce, f, "force");
+void ModalStepper::setState(const Eigen::VectorXd& x) {
+    if (x.size() != dimension())
+        throw Error("modal state has " + std::to_string(x.size()) + " entries, the model " +
+                    std::to_string(dimension()));
+    upload(mState, x.head(size()), 0, "state");
+    if (mMhd) upload(mState, x.tail(size()), 1, "state");
 }
 
 Eigen::VectorXd ModalStepper::state() const {
-    std::vector<float> values(static_cast<std::size_t>(size()));
-    mState.download<float>(values);
-    return Eigen::Map<const Eigen::VectorXf>(values.data(), size()).template cast<double>();
+    if (!mMhd) return download(mState, 0);
+    Eigen::VectorXd x(dimension());
+    x << download(mState, 0), download(mState, 1);
+    return x;
+}
+
+void ModalStepper::setForce(const Eigen::VectorXd& f) { upload(mForce, f, 0, "force"); }
+
+Eigen::VectorXd ModalStepper::velocity() const { return download(mState, 0); }
+
+void ModalStepper::setVelocity(const Eigen::VectorXd& v) { upload(mState, v, 0, "velocity"); }
+
+Eigen::VectorXd ModalStepper::magneticField() const {
+    magneticFieldBuffer();
+    return download(mState, 1);
+}
+
+void ModalStepper::setMagneticField(const Eigen::VectorXd& f) {
+    magneticFieldBuffer();
+    upload(mState, f, 1, "magnetic field");
+}
+
+const vulkan::DeviceBuffer& ModalStepper::magneticFieldBuffer() const {
+    if (!mField) throw Error("simulation: this run simulates no magnetic field ([simulation].mhd)");
+    return *mField;
 }
 
 DeviceStepStatus ModalStepper::status() const {
     shaders::ModalStatus raw{};
     mStatus.download<shaders::ModalStatus>(std::span(&raw, 1));
-    if (mSettings.scheme != Integrator::Midpoint) return {0, 0.0, true, 0};
+    if (mSettings.scheme != Integrator::Midpoint && mSettings.scheme != Integrator::Trapezoidal)
+        return {0, 0.0, true, 0};
     return {int(raw.iterations), double(raw.residual), raw.converged != 0, int(raw.unconverged)};
+}
+
+std::vector<std::uint32_t> ModalStepper::evaluationGroups() const {
+    std::vector<std::uint32_t> groups = mCoefficients.dispatchGroups(!mFiltered);
+    if (!mMhd) return groups;
+    const std::vector<std::uint32_t> apply = groups, advect = mCoefficients.advectGroups();
+    if (mLorentz) groups.insert(groups.end(), apply.begin(), apply.end());
+    groups.insert(groups.end(), advect.begin(), advect.end());
+    return groups;
+}
+
+void ModalStepper::recordEvaluation(vulkan::CommandSequence& sequence, IndirectArguments indirect) const {
+    if (!mMhd) {
+        // C(My, y); with a mass of 1 both are y, which the tensor-free contraction reconstructs once.
+        mCoefficients.recordApply(sequence, mKernels, mFiltered ? mWeighted : mPoint, mPoint, mRhs, indirect);
+        return;
+    }
+    // r = [C(v, v); advect(v, F); C(F, F)] at y = [v; F] (the mass is 1).
+    const auto apply = std::uint32_t(mCoefficients.dispatchGroups(true).size());
+    mCoefficients.recordApply(sequence, mKernels, mPoint, mPoint, mRhs, indirect);
+    std::uint32_t d = apply;
+    if (mLorentz) {
+        mCoefficients.recordApply(sequence, mKernels, *mPointField, *mPointField, *mLorentzForce, indirect.after(d));
+        d += apply;
+    }
+    mCoefficients.recordAdvect(sequence, mKernels, mPoint, *mPointField, *mInduction, indirect.after(d));
 }
 
 void ModalStepper::recordUpdate(vulkan::CommandSequence& sequence, std::uint32_t op, std::uint32_t stage,
@@ -115,14 +219,23 @@ void ModalStepper::recordUpdate(vulkan::CommandSequence& sequence, std::uint32_t
     const std::array<const vulkan::DeviceBuffer*, 10> buffers{
         &mState, &mPoint, &mWeighted,    &mRhs,    &mForce,
         &mMass,  &mDecay, &mAccumulator, &mStatus, &mArguments};
-    const shaders::ModalUpdateParams params{
-        std::uint32_t(size()), op, stage, mApplyDispatches + 1, float(h),
-        mSettings.tolerance,   0,  0};
+    const shaders::ModalUpdateParams params{std::uint32_t(size()),
+                                            op,
+                                            stage,
+                                            mEvaluationDispatches + 1,
+                                            float(h),
+                                            mSettings.tolerance,
+                                            mStride,
+                                            mParts,
+                                            mLorentz ? 1u : 0u,
+                                            0,
+                                            0,
+                                            0};
     if (indirect)
         // The update is the last dispatch of an iteration; its live entry follows the full copy.
         sequence.dispatchIndirect(
             mKernels.update, buffers, params, mArguments,
-            VkDeviceSize(2 * mApplyDispatches + 1) * sizeof(VkDispatchIndirectCommand));
+            VkDeviceSize(2 * mEvaluationDispatches + 1) * sizeof(VkDispatchIndirectCommand));
     else
         sequence.dispatch(mKernels.update, buffers, params, 1);
 }
@@ -133,39 +246,51 @@ void ModalStepper::recordStep(vulkan::CommandSequence& sequence, double h, int s
         for (int s = 0; s < substeps; ++s) recordStep(sequence, h / substeps);
         return;
     }
+    const IndirectArguments live{&mArguments, mEvaluationDispatches + 1};
     recordUpdate(sequence, MODAL_OP_BEGIN, 0, h, false);
     switch (mSettings.scheme) {
         case Integrator::Explicit:
-            mCoefficients.recordApply(sequence, mKernels, mWeighted, mPoint, mRhs);
+            recordEvaluation(sequence, {});
             recordUpdate(sequence, MODAL_OP_EXPLICIT, 0, h, false);
             break;
         case Integrator::Rk4:
             for (std::uint32_t stage = 0; stage < 4; ++stage) {
-                mCoefficients.recordApply(sequence, mKernels, mWeighted, mPoint, mRhs);
+                recordEvaluation(sequence, {});
                 recordUpdate(sequence, MODAL_OP_RK4_STAGE, stage, h, false);
             }
             break;
-        default:  // midpoint (the constructor refused the trapezoidal rule)
+        case Integrator::Midpoint:
             for (int m = 0; m < mSettings.maxIterations; ++m) {
-                mCoefficients.recordApply(sequence, mKernels, mWeighted, mPoint, mRhs,
-                                          {&mArguments, mApplyDispatches + 1});
+                recordEvaluation(sequence, live);
                 recordUpdate(sequence, MODAL_OP_MIDPOINT, 0, h, true);
             }
             recordUpdate(sequence, MODAL_OP_MIDPOINT_END, 0, h, false);
+            break;
+        case Integrator::Trapezoidal:
+            recordEvaluation(sequence, {});  // R(x), and the explicit predictor
+            recordUpdate(sequence, MODAL_OP_TRAPEZOIDAL_START, 0, h, false);
+            for (int m = 0; m < mSettings.maxIterations; ++m) {
+                recordEvaluation(sequence, live);
+                recordUpdate(sequence, MODAL_OP_TRAPEZOIDAL, 0, h, true);
+            }
+            recordUpdate(sequence, MODAL_OP_TRAPEZOIDAL_END, 0, h, false);
             break;
     }
 }
 
 std::size_t ModalStepper::dispatchesPerStep() const {
-    const std::size_t iteration = mApplyDispatches + 1;
+    const std::size_t iteration = mEvaluationDispatches + 1;
     switch (mSettings.scheme) {
         case Integrator::Explicit:
             return 1 + iteration;
         case Integrator::Rk4:
             return 1 + 4 * iteration;
-        default:
+        case Integrator::Midpoint:
             return 2 + std::size_t(mSettings.maxIterations) * iteration;
+        case Integrator::Trapezoidal:
+            return 2 + std::size_t(mSettings.maxIterations + 1) * iteration;
     }
+    return 0;
 }
 
 StepReport ModalStepper::step(double h) {

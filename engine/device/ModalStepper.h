@@ -1,27 +1,35 @@
 #pragma once
 /// @file ModalStepper.h
-/// The reduced fluid (Euler, Navier–Stokes, LANS-α; README.md, "Reduced dynamics") advanced on the device in float32:
-/// the state, the modal force and the integrator's scratch vectors live in device buffers, and a
-/// step is recorded into a CommandSequence, so any number of steps (and the kernels that consume
-/// the velocity) go in one submission. CPU reference: ModalIntegrator over a FluidSystem with the
-/// same parameters and a force held constant over the step.
+/// The reduced dynamics (README.md, "Reduced dynamics") advanced on the device in float32: the
+/// fluid (Euler, Navier–Stokes, LANS-α) over v, or MHD over [v; F]. The state, the modal force
+/// and the integrator's scratch vectors live in device buffers, and a step is recorded into a
+/// CommandSequence, so any number of steps (and the kernels that consume the velocity) go in one
+/// submission. CPU reference: ModalIntegrator over a FluidSystem or MhdSystem with the same
+/// parameters and a force on v held constant over the step.
 ///
-/// Schemes: explicit Euler, classical RK4, and the implicit midpoint rule (seed eq. 6.8) solved by
-/// fixed-point iteration on the device until the midpoint state changes by at most `tolerance`
-/// (relative, max norm), with no host round trip: the iteration that converges switches the
-/// remaining recorded iterations off through their indirect dispatch arguments. The fixed point
-/// converges when h·|∂R/∂v|/2 < 1, the same bound that keeps an explicit step accurate; a step
-/// that reaches `maxIterations` keeps its state (a diverging iterate would blow up) and is counted
-/// in status(), so the caller can take smaller substeps. Viscosity is applied exactly,
-/// Strang-split as on the CPU. (The trapezoidal rule and MHD run on the CPU reference only.)
+/// Schemes: explicit Euler, classical RK4, and the implicit midpoint (seed eq. 6.8) and
+/// trapezoidal (eq. 6.9) rules solved by fixed-point iteration on the device until the iterate
+/// changes by at most `tolerance` (relative, max norm), with no host round trip: the iteration
+/// that converges switches the remaining recorded iterations off through their indirect dispatch
+/// arguments. The fixed point converges when h·|∂R/∂v|/2 < 1, the same bound that keeps an
+/// explicit step accurate; a step that reaches `maxIterations` keeps its state (a diverging
+/// iterate would blow up) and is counted in status(), so the caller can take smaller substeps.
+/// Viscosity (and the magnetic diffusivity) is applied exactly, Strang-split as on the CPU.
+///
+/// MHD's state is two parts of `stride` floats, v then F; its right-hand side is three
+/// contractions a step evaluation: C(v, v), advect(v, F) and, with the Lorentz force, C(F, F).
 
 #include <cstdint>
 #include <memory>
+#include <optional>
+#include <variant>
 
 #include <Eigen/Core>
 
 #include "engine/dynamics/FluidSystem.h"
+#include "engine/dynamics/MhdSystem.h"
 #include "engine/simulation/ModalStepping.h"
+#include "engine/simulation/SimulationSettings.h"
 #include "engine/device/DeviceCoefficients.h"
 #include "engine/device/ModalKernels.h"
 #include "engine/vulkan/CommandSequence.h"
@@ -31,51 +39,73 @@
 namespace modeflow::device {
 
 struct DeviceStepSettings {
-    Integrator scheme = Integrator::Midpoint;  ///< explicit, rk4 or midpoint
-    /// Midpoint: converged when max|Δ ybar| ≤ tolerance · max|ybar| between two iterations, or
+    Integrator scheme = Integrator::Midpoint;
+    /// Implicit rules: converged when max|Δy| ≤ tolerance · max|y| between two iterations, or
     /// when the change stops halving below 16 · tolerance (float32 round-off leaves changes of a
     /// few 1e-8 that no iteration removes). Each unconverged 1e-6 would leave an energy error of
     /// that order per step; 1e-7 keeps 1000 large steps within 1e-5 (ModalStepKernelTest).
     float tolerance = 1e-7f;
-    int maxIterations = 30;  ///< midpoint iterations recorded per step
+    int maxIterations = 30;  ///< implicit iterations recorded per step
 };
 
 struct DeviceStepStatus {
-    int iterations = 0;        ///< midpoint iterations of the last step (0 for explicit schemes)
-    double residual = 0.0;     ///< the last relative change of the midpoint state
+    int iterations = 0;        ///< implicit iterations of the last step (0 for explicit schemes)
+    double residual = 0.0;     ///< the last relative change of the implicit iterate
     bool converged = true;     ///< whether the last step met the tolerance
     int unconvergedSteps = 0;  ///< steps so far that reached maxIterations
 };
 
+/// What a ModalStepper advances: the fluid of FluidSystem, or MHD as MhdSystem over [v; F].
+using DeviceModel = std::variant<FluidParameters, MhdParameters>;
+
+/// The model of a run's settings, as reference::ModalStepper makes it.
+DeviceModel modelOf(const SimulationSettings& settings);
+
 class ModalStepper final : public ModalStepping {
 public:
-    /// The decay rates νκ² and mass 1 + α²κ² come from `parameters` as in FluidSystem. The
-    /// coefficients are uploaded; `coefficients` need not outlive the stepper.
-    /// @throw modeflow::Error for the trapezoidal scheme, bad settings or parameters, or a
-    /// device error.
+    /// The mass 1 + α²κ² and decay rates νκ² (MHD: [νκ²; ηκ²]) come from `model` as in
+    /// FluidSystem and MhdSystem. The coefficients are uploaded; `coefficients` need not outlive
+    /// the stepper. Tensor-free coefficients need their `cache` (and take `modes`, the basis
+    /// already on the device, as DeviceCoefficients says; both must outlive the stepper).
+    /// @throw modeflow::Error for bad settings or parameters, or a device error.
     ModalStepper(const vulkan::VulkanContext& context, const StructuralCoefficients& coefficients,
-                 const FluidParameters& parameters, DeviceStepSettings settings = {});
+                 const DeviceModel& model, DeviceStepSettings settings = {},
+                 const BasisCache* cache = nullptr, const ModeBuffer* modes = nullptr);
 
+    /// N, the velocity modes.
     int size() const { return mCoefficients.size(); }
+    /// The state's length: N, or 2N with MHD.
+    int dimension() const { return mMhd ? 2 * size() : size(); }
+    bool isMhd() const { return mMhd; }
     const DeviceStepSettings& settings() const { return mSettings; }
     const DeviceCoefficients& coefficients() const { return mCoefficients; }
 
     /// The scheme of the steps recorded from now on.
-    /// @throw modeflow::Error for the trapezoidal scheme.
+    /// @throw modeflow::Error for bad settings.
     void setScheme(Integrator scheme);
-    /// New viscosity and LANS-α (κ² as in the constructor) for the steps recorded from now on.
-    /// Between submissions only.
-    /// @throw modeflow::Error for parameters FluidSystem refuses, or held modes ([forcing]).
-    void setParameters(const FluidParameters& parameters);
-    /// Host ↔ device copies of the state v and the force f; call between submissions.
-    void setState(const Eigen::VectorXd& v) override;
+    /// New parameters (of the model kind the stepper was made with) for the steps recorded from
+    /// now on. Between submissions only.
+    /// @throw modeflow::Error for parameters FluidSystem or MhdSystem refuses, or another kind.
+    void setParameters(const DeviceModel& model);
+    /// Host ↔ device copies of the state (v, or [v; F]) and the force f on v (N values); call
+    /// between submissions.
+    void setState(const Eigen::VectorXd& x) override;
     Eigen::VectorXd state() const override;
     void setForce(const Eigen::VectorXd& f);
-    /// The device vectors (N floats), for kernels that read v or write f in the same submission.
+    /// The velocity part of the state, and MHD's field part.
+    Eigen::VectorXd velocity() const;
+    void setVelocity(const Eigen::VectorXd& v);
+    /// @throw modeflow::Error without MHD.
+    Eigen::VectorXd magneticField() const;
+    void setMagneticField(const Eigen::VectorXd& f);
+    /// The device vectors, for kernels that read v (or F) or write f in the same submission: the
+    /// state buffer begins with v (N floats, padded), the force buffer with f.
     const vulkan::DeviceBuffer& stateBuffer() const { return mState; }
     const vulkan::DeviceBuffer& forceBuffer() const { return mForce; }
+    /// MHD: F (N floats, padded). @throw modeflow::Error without MHD.
+    const vulkan::DeviceBuffer& magneticFieldBuffer() const;
 
-    /// Records one step of size h (h may be negative: the midpoint rule is then reversible) as
+    /// Records one step of size h (h may be negative: the implicit rules are then reversible) as
     /// `substeps` steps of h / substeps.
     void recordStep(vulkan::CommandSequence& sequence, double h, int substeps = 1) const;
     /// Dispatches recordStep records per substep (for sizing timed sequences).
@@ -87,21 +117,39 @@ public:
     StepReport step(double h) override;
 
 private:
-    /// Held modes ([forcing]) are the CPU reference's only (BackendCapabilities).
-    static void requireNoHeldModes(const FluidParameters& parameters);
+    /// Records r = R(y) (see the file comment), its dispatches taking their counts from
+    /// `indirect`.
+    void recordEvaluation(vulkan::CommandSequence& sequence, IndirectArguments indirect) const;
+    /// Group counts of recordEvaluation's dispatches.
+    std::vector<std::uint32_t> evaluationGroups() const;
     void recordUpdate(vulkan::CommandSequence& sequence, std::uint32_t op, std::uint32_t stage, double h,
                       bool indirect) const;
-    void upload(vulkan::DeviceBuffer& buffer, const Eigen::VectorXd& values, const char* what) const;
+    /// Uploads `values` to part `part` of a state-shaped buffer.
+    void upload(vulkan::DeviceBuffer& buffer, const Eigen::VectorXd& values, int part, const char* what) const;
+    Eigen::VectorXd download(const vulkan::DeviceBuffer& buffer, int part) const;
+    /// Mass and decay rates of `model` as state-shaped float vectors.
+    void uploadModel(const DeviceModel& model);
+    /// The indirect arguments of an implicit iteration (its dispatches' group counts, twice).
+    void buildArguments();
+    /// A part of `whole`, as the contractions bind it.
+    vulkan::DeviceBuffer part(const vulkan::DeviceBuffer& whole, int index, const char* name) const;
 
     const vulkan::VulkanContext& mContext;
     DeviceStepSettings mSettings;
+    bool mMhd = false;
+    bool mLorentz = false;
+    bool mFiltered = false;  ///< a fluid whose mass is not 1 (LANS-α): C(Mv, v), else C(v, v)
+    std::uint32_t mStride = 0;  ///< floats per part of the state
+    std::uint32_t mParts = 1;
     /// The submission of standalone steps, made by the first step().
     std::unique_ptr<vulkan::CommandSequence> mStandalone;
     ModalKernels mKernels;
     DeviceCoefficients mCoefficients;
-    std::uint32_t mApplyDispatches = 0;  ///< dispatches of one contraction
+    std::uint32_t mEvaluationDispatches = 0;  ///< dispatches of one evaluation of R
     vulkan::DeviceBuffer mState, mPoint, mWeighted, mRhs, mForce, mMass, mDecay, mAccumulator, mStatus,
         mArguments;
+    /// MHD: the field parts of the state and point, and the induction and Lorentz parts of r.
+    std::optional<vulkan::DeviceBuffer> mField, mPointField, mInduction, mLorentzForce;
 };
 
 }  // namespace modeflow::device

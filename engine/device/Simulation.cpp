@@ -6,17 +6,16 @@
 
 #include "engine/core/Error.h"
 #include "engine/dynamics/ModalDivergence.h"
-#include "engine/simulation/BackendCapabilities.h"
 
 namespace modeflow::device {
 namespace {
 
 constexpr int kMaxSubsteps = 16;
 
-/// The device's row of the capability table, checked before any upload.
+/// What the device cannot run, checked before any upload.
 SimulationSettings supported(SimulationSettings settings) {
-    if (settings.mhd && !capabilitiesOf(BackendKind::Vulkan).mhd)
-        throw Error("[simulation].mhd runs on the CPU reference only; use --device cpu");
+    if (settings.mhd && settings.fluid.alpha > 0.0)
+        throw Error("simulation: LANS-alpha and MHD cannot be combined");
     return settings;
 }
 
@@ -35,14 +34,14 @@ Simulation::Simulation(const vulkan::VulkanContext& context, const BasisCache& c
                        const StructuralCoefficients& coefficients, SimulationSettings settings,
                        std::span<const std::uint8_t> smokeMask, bool timestamps)
     : mSettings(supported(std::move(settings))),
-      mStepper(context, coefficients, mSettings.fluid,
-               DeviceStepSettings{mSettings.integrator}),
       mModes(cache.velocity.source == BasisSource::ClosedForm
                  ? nullptr
                  : std::make_unique<ModeBuffer>(context, cache.velocity.modes, mSettings.basisPrecision)),
       mSeparable(cache.velocity.source == BasisSource::ClosedForm
                      ? std::make_unique<SeparableTransformKernels>(context, cache)
                      : nullptr),
+      mStepper(context, coefficients, modelOf(mSettings), DeviceStepSettings{mSettings.integrator}, &cache,
+               mModes && mSettings.basisPrecision == ModePrecision::Float32 ? mModes.get() : nullptr),
       mReconstruction(context, cache),
       mFaceVelocity(mReconstruction.makeFaceField("grid velocity")),
       mForceField(context, cache, mSettings.smokeScale),
@@ -58,7 +57,7 @@ Simulation::Simulation(const vulkan::VulkanContext& context, const BasisCache& c
 }
 
 void Simulation::restore(double time, const Eigen::VectorXd& v, const SmokeFields& smoke) {
-    mStepper.setState(v);
+    mStepper.setVelocity(v);
     const std::vector<float> density(smoke.density.begin(), smoke.density.end()),
         temperature(smoke.temperature.begin(), smoke.temperature.end());
     mSmoke.upload(density, temperature);
@@ -82,7 +81,9 @@ void Simulation::setObstacles(std::vector<MovingObstacle> obstacles) {
 void Simulation::setViscosity(double viscosity) {
     FluidParameters fluid = mSettings.fluid;
     fluid.viscosity = viscosity;
-    mStepper.setParameters(fluid);
+    SimulationSettings settings = mSettings;
+    settings.fluid = fluid;
+    mStepper.setParameters(modelOf(settings));
     mSettings.fluid = std::move(fluid);
 }
 
@@ -128,11 +129,13 @@ void Simulation::recordStep(std::vector<std::size_t>& boundaries) {
     boundaries.push_back(mSequence.dispatchCount());
 }
 
-void Simulation::recordReconstruction() {
+void Simulation::recordReconstruction() { recordReconstruction(mStepper.stateBuffer(), mFaceVelocity); }
+
+void Simulation::recordReconstruction(const vulkan::DeviceBuffer& modal, const vulkan::DeviceBuffer& field) const {
     if (mSeparable)
-        mSeparable->recordReconstruction(mSequence, mStepper.stateBuffer(), mFaceVelocity);
+        mSeparable->recordReconstruction(mSequence, modal, field);
     else
-        mReconstruction.record(mSequence, *mModes, mStepper.stateBuffer(), mFaceVelocity);
+        mReconstruction.record(mSequence, *mModes, modal, field);
 }
 
 FrameStats Simulation::advanceSteps(int steps) {
@@ -171,6 +174,20 @@ FrameStats Simulation::advanceSteps(int steps) {
                 *stages[stage] += times[d];
     }
     return stats;
+}
+
+Eigen::VectorXd Simulation::magneticField() const {
+    return mSettings.mhd ? mStepper.magneticField() : Eigen::VectorXd();
+}
+
+std::vector<double> Simulation::faceMagneticField() const {
+    if (!mSettings.mhd) return {};
+    const vulkan::DeviceBuffer field = mReconstruction.makeFaceField("magnetic face field");
+    recordReconstruction(mStepper.magneticFieldBuffer(), field);
+    mSequence.submitAndWait();
+    std::vector<float> faces(std::size_t(mReconstruction.grid().faceTotal()));
+    field.download<float>(faces);
+    return widened(faces);
 }
 
 SmokeFields Simulation::smoke() const {

@@ -35,14 +35,16 @@ public:
     /// Uploads the basis and coefficients. `smokeMask`: one byte per cell of the smoke grid
     /// (basis grid refined by settings.smokeScale), non-zero inside Ω (precompute's fluidMask).
     /// `timestamps`: time each stage on the device (FrameStats), where the queue can.
-    /// @throw modeflow::Error for settings the device does not run (BackendCapabilities: MHD,
-    /// trapezoidal), a mask of the wrong size, or a device error.
+    /// @throw modeflow::Error for LANS-α with MHD, a mask of the wrong size, or a device error.
     Simulation(const vulkan::VulkanContext& context, const BasisCache& cache,
                const StructuralCoefficients& coefficients, SimulationSettings settings,
                std::span<const std::uint8_t> smokeMask, bool timestamps = false);
 
-    void setVelocity(const Eigen::VectorXd& v) override { mStepper.setState(v); }
-    Eigen::VectorXd velocity() const override { return mStepper.state(); }
+    void setVelocity(const Eigen::VectorXd& v) override { mStepper.setVelocity(v); }
+    Eigen::VectorXd velocity() const override { return mStepper.velocity(); }
+    Eigen::VectorXd magneticField() const override;
+    void setMagneticField(const Eigen::VectorXd& f) override { mStepper.setMagneticField(f); }
+    std::vector<double> faceMagneticField() const override;
     void restore(double time, const Eigen::VectorXd& v, const SmokeFields& smoke) override;
     void setSplats(std::span<const ForceSplat> splats) override;
     /// Each step is its own submission.
@@ -70,14 +72,16 @@ private:
     void recordStep(std::vector<std::size_t>& boundaries);
     /// The grid velocity of the modal state.
     void recordReconstruction();
+    /// The face field of the modal vector `modal` (v, or MHD's F) into `field`.
+    void recordReconstruction(const vulkan::DeviceBuffer& modal, const vulkan::DeviceBuffer& field) const;
     bool forcesActive() const { return mSettings.buoyancy != 0.0 || mForceField.splatCount() > 0; }
 
     SimulationSettings mSettings;
-    ModalStepper mStepper;
     /// The basis: its columns (an eigensolved basis), or the transforms of a closed-form one,
     /// whose columns are never formed.
     std::unique_ptr<ModeBuffer> mModes;
     std::unique_ptr<SeparableTransformKernels> mSeparable;
+    ModalStepper mStepper;
     ReconstructionKernel mReconstruction;
     vulkan::DeviceBuffer mFaceVelocity;
     ForceFieldKernel mForceField;
@@ -86,7 +90,7 @@ private:
     ObstacleCorrection mObstacles;
     SmokeState mSmoke;
     SmokeAdvectionKernels mAdvection;
-    vulkan::CommandSequence mSequence;
+    mutable vulkan::CommandSequence mSequence;  ///< also records faceMagneticField()'s reconstruction
     std::vector<bool> mActiveEmitters;  ///< what the device's emitter list holds now
     /// Modal substeps per step: doubled when an implicit solve fails to converge, halved again
     /// after a long run of easy steps (see advanceFrame()).

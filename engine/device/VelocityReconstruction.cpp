@@ -60,8 +60,17 @@ vulkan::DeviceBuffer ReconstructionKernel::makeFaceField(std::string name) const
     return vulkan::DeviceBuffer::fromValues<float>(mContext, zeros, std::move(name));
 }
 
+std::vector<std::uint32_t> ReconstructionKernel::dispatchGroups(const ModeBuffer& modes) const {
+    // Units: kTileRows vectors of a tile, one 32-byte word (ModeAccess.glsl).
+    const std::uint64_t units = std::uint64_t(modes.tileCount()) * ModeBuffer::kTileLanes;
+    const bool cpu = mContext.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
+    const std::uint32_t groups =
+        groupsFor(mContext, cpu ? (units + kCpuUnitsPerInvocation - 1) / kCpuUnitsPerInvocation : units, mWorkgroupSize);
+    return std::vector<std::uint32_t>(modes.chunks().size(), groups);
+}
+
 void ReconstructionKernel::record(vulkan::CommandSequence& sequence, const ModeBuffer& modes, const vulkan::DeviceBuffer& v,
-                                  const vulkan::DeviceBuffer& faceField) const {
+                                  const vulkan::DeviceBuffer& faceField, IndirectArguments indirect) const {
     if (modes.dofCount() != mDofCount)
         throw Error("reconstruct_velocity: the modes have " + std::to_string(modes.dofCount()) +
                     " DOFs, the kernel's basis " + std::to_string(mDofCount));
@@ -74,11 +83,8 @@ void ReconstructionKernel::record(vulkan::CommandSequence& sequence, const ModeB
     params.faceStart1 = std::uint32_t(mGrid.faceOffset(1));
     params.faceStart2 = std::uint32_t(mGrid.faceOffset(2));
     for (int a = 0; a < 3; ++a) params.inverseArea[a] = float(1.0 / mGrid.faceArea(a));
-    // Units: kTileRows vectors of a tile, one 32-byte word (ModeAccess.glsl).
-    const std::uint64_t units = std::uint64_t(modes.tileCount()) * ModeBuffer::kTileLanes;
-    const bool cpu = mContext.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
-    const std::uint32_t groups =
-        groupsFor(mContext, cpu ? (units + kCpuUnitsPerInvocation - 1) / kCpuUnitsPerInvocation : units, mWorkgroupSize);
+    const std::vector<std::uint32_t> groups = dispatchGroups(modes);
+    std::uint32_t d = 0;
     for (const ModeBuffer::Chunk& chunk : modes.chunks()) {
         params.firstMode = chunk.firstMode;
         const bool first = &chunk == &modes.chunks().front(), last = &chunk == &modes.chunks().back();
@@ -86,7 +92,8 @@ void ReconstructionKernel::record(vulkan::CommandSequence& sequence, const ModeB
                                                      chunk.modeCount, chunk.firstMode % 4};
         const std::array<const vulkan::DeviceBuffer*, 6> buffers{&chunk.buffer, &modes.scales(), &v,
                                                          &mFaces, &faceField, &mScratch};
-        sequence.dispatch(kernel(constants), buffers, params, groups);
+        indirect.after(d).dispatch(sequence, kernel(constants), buffers, params, groups[d]);
+        ++d;
     }
 }
 

@@ -11,8 +11,10 @@
 #include <cstdint>
 #include <map>
 #include <string>
+#include <vector>
 
 #include "engine/core/MacGrid.h"
+#include "engine/device/IndirectArguments.h"
 #include "engine/format/BasisCache.h"
 #include "engine/vulkan/ComputeKernel.h"
 #include "engine/vulkan/DeviceBuffer.h"
@@ -41,7 +43,9 @@ public:
     /// (N values, then anything: the kernel reads them four at a time but uses only the first N).
     /// @throw modeflow::Error if `modes` is not a basis on this kernel's DOFs, or a buffer is too small.
     void record(vulkan::CommandSequence& sequence, const ModeBuffer& modes, const vulkan::DeviceBuffer& v,
-                const vulkan::DeviceBuffer& faceField) const;
+                const vulkan::DeviceBuffer& faceField, IndirectArguments indirect = {}) const;
+    /// The group counts of record's dispatches (one per chunk of `modes`).
+    std::vector<std::uint32_t> dispatchGroups(const ModeBuffer& modes) const;
 
     const MacGrid& grid() const { return mGrid; }
     std::uint32_t dofCount() const { return mDofCount; }

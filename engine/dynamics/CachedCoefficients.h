@@ -1,16 +1,25 @@
 #pragma once
 /// @file CachedCoefficients.h
-/// The structural coefficients a cache file holds, as the storage it says (dense or sparse).
+/// The structural coefficients of a cache file, in the storage a scene asks for.
 
 #include <memory>
 
+#include "engine/core/SceneSpec.h"
 #include "engine/dynamics/StructuralCoefficients.h"
 #include "engine/format/BasisCache.h"
 
 namespace modeflow {
 
-/// DenseCoefficients or SparseCoefficients of `cache.coefficients` for its velocity modes.
-/// @throw modeflow::Error when the stored arrays do not fit the mode count.
-std::unique_ptr<StructuralCoefficients> coefficientsFromCache(const BasisCache& cache);
+/// The coefficients of `cache` for its velocity modes:
+///   auto         as stored: DenseCoefficients, SparseCoefficients, or TensorFreeCoefficients when
+///                the cache holds no tensor;
+///   dense/sparse the stored tensor in that storage (converted when stored the other way);
+///   tensor-free  TensorFreeCoefficients over the cache's modes and quadrature (a stored tensor
+///                is not used).
+/// Tensor-free coefficients keep references into `cache`, which must outlive them.
+/// @throw modeflow::Error when the stored arrays do not fit the mode count, or a tensor is asked
+///        for and the cache holds none (precompute/CoefficientChoice.h completes such caches).
+std::unique_ptr<StructuralCoefficients> coefficientsFromCache(
+    const BasisCache& cache, CoefficientStorage requested = CoefficientStorage::Auto);
 
 }  // namespace modeflow

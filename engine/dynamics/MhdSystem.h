@@ -46,6 +46,7 @@ public:
                    Eigen::MatrixXd& jac) const override;
     void jacobianProduct(const Eigen::VectorXd& x, const Eigen::VectorXd& u,
                          Eigen::VectorXd& out) const override;
+    bool formsJacobiansCheaply() const override { return mCoefficients.linearizesCheaply(); }
 
 private:
     const StructuralCoefficients& mCoefficients;

@@ -101,7 +101,7 @@ StepReport ModalIntegrator::newton(const Eigen::VectorXd& x, Eigen::VectorXd& w,
     const double c = atMidpoint ? h : 0.5 * h;
     const double momentum = mass.cwiseProduct(x).norm();
     const double nearSolution = std::sqrt(mSettings.relativeTolerance);
-    const bool dense = mSystem.dimension() <= mSettings.denseNewtonLimit;
+    const bool dense = mSystem.formsJacobiansCheaply() && mSystem.dimension() <= mSettings.denseNewtonLimit;
     Eigen::VectorXd y, r, residual;
     Eigen::MatrixXd jac;
     StepReport report;

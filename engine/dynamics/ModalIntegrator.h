@@ -10,7 +10,8 @@
 /// The implicit equations are solved by Newton until |residual| ≤ relativeTolerance ·
 /// max(|Mx|, |Mx'|), whichever linear solver takes the Newton updates, so that both conserve the
 /// energy alike. Up to denseNewtonLimit unknowns the system's analytic Jacobian is formed and
-/// factorized (LU, N³/3 flops and N² doubles). Above, nothing N² is formed: fixed-point
+/// factorized (LU, N³/3 flops and N² doubles). Above, or when the system forms Jacobians at a
+/// high cost (tensor-free coefficients, ModalSystem::formsJacobiansCheaply), nothing N² is formed: fixed-point
 /// iterations w ← x + M⁻¹(c·R(y) + f) (one contraction each) while each cuts the residual at
 /// least in half, which at the usual steps (h|∂R| ≲ 0.3) takes a handful; if one does not,
 /// Newton–Krylov from there: each update solved matrix-free by GMRES on Jacobian–vector products

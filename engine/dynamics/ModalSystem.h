@@ -31,6 +31,9 @@ public:
     /// quadratic, so this is a few contractions, O(stored coefficients).
     virtual void jacobianProduct(const Eigen::VectorXd& x, const Eigen::VectorXd& u,
                                  Eigen::VectorXd& out) const = 0;
+    /// Whether linearize costs about a contraction (stored coefficients); false when forming the
+    /// Jacobian costs far more (tensor-free: O(E·N²)), so that solvers use jacobianProduct.
+    virtual bool formsJacobiansCheaply() const { return true; }
 };
 
 }  // namespace modeflow

@@ -37,6 +37,9 @@ public:
     virtual void advect(const Eigen::VectorXd& u, const Eigen::VectorXd& x,
                         Eigen::VectorXd& out) const = 0;
 
+    /// Whether linearize costs about as much as apply (true for stored coefficients).
+    virtual bool linearizesCheaply() const { return true; }
+
     /// Jacobian of f(v)_k = vᵀC_k v, and f(v) itself, in one pass.
     void jacobian(const Eigen::VectorXd& v, Eigen::MatrixXd& jac, Eigen::VectorXd& f) const;
 

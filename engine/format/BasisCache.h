@@ -13,6 +13,7 @@
 #include "engine/core/SceneSpec.h"
 #include "engine/core/TriangleMesh.h"
 #include "engine/format/SeparableModes.h"
+#include "engine/format/SparseRows.h"
 
 namespace modeflow {
 
@@ -74,9 +75,20 @@ struct BasisCache {
         int omittedConstants = 0;
     } scalar;
 
+    /// The quadrature of the structural coefficients (precompute/coefficients/CoefficientAssembly.h):
+    /// one row per vorticity element e of positive weight w_e, one column per velocity DOF, the
+    /// linear maps from face fluxes to w_e·ω(e) and to the velocity components u_b(e), u_c(e).
+    /// Every eigensolved grid basis holds it: a tensor-free run evaluates the advection from it and
+    /// the modes (engine/dynamics/TensorFreeCoefficients.h), and a tensor can be assembled from it
+    /// later. A closed-form or surface basis has none (no rows): its coefficients are always stored.
+    struct Quadrature {
+        SparseRows curl, velocityB, velocityC;
+    } quadrature;
+
     /// Structural coefficients C[k][i][j] of the velocity modes (seed eq. 6.7), k < j only.
     struct Coefficients {
-        enum class Storage { Dense, Sparse };
+        /// None: not assembled (`[basis] coefficients = "tensor-free"`, or chosen by "auto").
+        enum class Storage { Dense, Sparse, None };
         Storage storage = Storage::Dense;
         /// Dense: packed as in engine/core/PackedLayout.h (pair (k,j) by pair, i fastest).
         std::vector<double> packed;

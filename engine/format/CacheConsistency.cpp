@@ -39,6 +39,7 @@ bool known(BasisCache::Coefficients::Storage storage) {
     switch (storage) {
         case BasisCache::Coefficients::Storage::Dense:
         case BasisCache::Coefficients::Storage::Sparse:
+        case BasisCache::Coefficients::Storage::None:
             return true;
     }
     return false;
@@ -62,6 +63,19 @@ bool separableWithinGrid(const std::vector<SeparableMode>& modes, const GridSpec
             if (m.wave[a] < 0 || m.wave[a] > limit || m.shift[a] > 1 || !std::isfinite(m.amplitude[a]))
                 return false;
         }
+    return true;
+}
+
+/// A sparse matrix whose row starts rise from 0 to its entry count and whose columns lie below
+/// `columns`.
+bool wellFormed(const SparseRows& m, std::int64_t columns) {
+    if (m.start.empty() || m.start.front() != 0 || m.start.back() != std::int64_t(m.column.size()) ||
+        m.column.size() != m.value.size())
+        return false;
+    for (std::size_t r = 1; r < m.start.size(); ++r)
+        if (m.start[r] < m.start[r - 1]) return false;
+    for (const std::int32_t col : m.column)
+        if (col < 0 || col >= columns) return false;
     return true;
 }
 
@@ -95,7 +109,10 @@ void requireConsistentSpectrum(const BasisCache& c, Eigen::Index n, const Requir
             "its velocity eigenvalues, mode numbers or harmonic count disagree with its modes");
     const auto& co = c.coefficients;
     require(known(co.storage), "its coefficient storage is out of range");
-    if (co.storage == BasisCache::Coefficients::Storage::Dense) {
+    if (co.storage == BasisCache::Coefficients::Storage::None) {
+        require(co.packed.empty() && co.value.empty() && co.k.empty() && co.i.empty() && co.j.empty(),
+                "it holds coefficients though its storage says none");
+    } else if (co.storage == BasisCache::Coefficients::Storage::Dense) {
         require(co.packed.size() == packedSize(std::size_t(n)) && co.value.empty() && co.k.empty(),
                 "its dense coefficients do not hold N²(N−1)/2 values for its N velocity modes");
     } else {
@@ -140,6 +157,12 @@ void requireConsistentSurface(const BasisCache& c, const Require& require) {
                 s.advection.cols() == n && s.vertexVelocity.rows() == 3 * vertices &&
                 s.vertexVelocity.cols() == n,
             "its surface advection or vertex velocities disagree with its modes");
+    // A surface's coefficients are always assembled (its advection is not evaluated tensor-free).
+    const auto& q = c.quadrature;
+    require(wellFormed(q.curl, 0) && wellFormed(q.velocityB, 0) && wellFormed(q.velocityC, 0) &&
+                q.curl.rows() == 0 && q.velocityB.rows() == 0 && q.velocityC.rows() == 0 &&
+                c.coefficients.storage != BasisCache::Coefficients::Storage::None,
+            "its surface basis holds a vorticity quadrature or no coefficients");
     requireConsistentSpectrum(c, n, require);
 }
 
@@ -178,6 +201,12 @@ void requireConsistentGrid(const BasisCache& c, const Require& require) {
                 s.eigenvalues.size() == scalarCount && allBelow(s.cells, cells) &&
                 s.omittedConstants >= 0 && (closedScalar ? s.modes.size() == 0 : s.separable.empty()),
             "its scalar modes disagree with their cells or eigenvalues");
+
+    const auto& q = c.quadrature;
+    const auto faces = std::int64_t(c.faces.size());
+    require(wellFormed(q.curl, faces) && wellFormed(q.velocityB, faces) && wellFormed(q.velocityC, faces) &&
+                q.velocityB.rows() == q.curl.rows() && q.velocityC.rows() == q.curl.rows(),
+            "its vorticity quadrature is not three maps of the same elements to its faces");
     requireConsistentSpectrum(c, n, require);
 }
 

@@ -110,6 +110,20 @@ private:
     std::vector<bool> mOrder;  ///< after the first small piece: true small, false view
 };
 
+void putRows(Payload& p, const SparseRows& m) {
+    p.array(m.start.data(), m.start.size());
+    p.array(m.column.data(), m.column.size());
+    p.array(m.value.data(), m.value.size());
+}
+
+SparseRows takeRows(ByteReader& r) {
+    SparseRows m;
+    m.start = r.vector<std::int64_t>();
+    m.column = r.vector<std::int32_t>();
+    m.value = r.vector<double>();
+    return m;
+}
+
 /// Rows, columns, then the values viewed in place.
 void putMatrix(Payload& p, const Eigen::MatrixXd& m) {
     p.small().pod<std::uint64_t>(std::uint64_t(m.rows()));
@@ -161,6 +175,9 @@ void serialize(const BasisCache& c, Payload& p) {
     putMatrix(p, c.scalar.modes);
     putSeparable(p.small(), c.scalar.separable);
     p.small().pod<std::int32_t>(c.scalar.omittedConstants);
+    putRows(p, c.quadrature.curl);
+    putRows(p, c.quadrature.velocityB);
+    putRows(p, c.quadrature.velocityC);
     p.small().pod<std::int32_t>(int(c.coefficients.storage));
     p.array(c.coefficients.packed.data(), c.coefficients.packed.size());
     p.array(c.coefficients.k.data(), c.coefficients.k.size());
@@ -235,6 +252,9 @@ BasisCache deserialize(std::string_view payload, const std::string& where) {
     c.scalar.modes = takeMatrix(r);
     c.scalar.separable = takeSeparable(r);
     c.scalar.omittedConstants = r.pod<std::int32_t>();
+    c.quadrature.curl = takeRows(r);
+    c.quadrature.velocityB = takeRows(r);
+    c.quadrature.velocityC = takeRows(r);
     c.coefficients.storage = BasisCache::Coefficients::Storage(r.pod<std::int32_t>());
     c.coefficients.packed = r.vector<double>();
     c.coefficients.k = r.vector<std::int32_t>();

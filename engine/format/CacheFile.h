@@ -15,7 +15,9 @@
 
 namespace modeflow {
 
-inline constexpr std::uint32_t kCacheFormatVersion = 5;  ///< 3: periodic axes; 4: closed-form bases; 5: surface bases
+/// 3: periodic axes; 4: closed-form bases; 5: surface bases; 6: the vorticity quadrature of every
+/// eigensolved grid basis and coefficient storage "none" (tensor-free advection).
+inline constexpr std::uint32_t kCacheFormatVersion = 6;
 
 /// Writes to a temporary file beside `path` (AtomicFile.h), then renames it over `path`, so
 /// readers see the old file or the whole new one.

@@ -56,12 +56,14 @@ std::unique_ptr<Simulator> Backend::makeSimulator(const RunInputs& run, bool sta
 }
 
 std::unique_ptr<ModalStepping> Backend::makeModalStepper(const RunInputs& run, Integrator scheme) const {
-    requireSupport(run.scene, mKind, scheme);
+    requireSupport(run.scene, mKind);
     std::unique_ptr<ModalStepping> stepper;
     if (mKind == BackendKind::Vulkan) {
-        stepper = std::make_unique<device::ModalStepper>(*mContext, *run.coefficients, run.settings.fluid,
-                                                         device::DeviceStepSettings{scheme});
-        stepper->setState(run.initialVelocity);
+        auto device = std::make_unique<device::ModalStepper>(*mContext, *run.coefficients, device::modelOf(run.settings),
+                                                             device::DeviceStepSettings{scheme}, &run.cache);
+        device->setVelocity(run.initialVelocity);
+        if (run.settings.mhd) device->setMagneticField(run.initialMagneticField);
+        stepper = std::move(device);
     } else {
         SimulationSettings settings = run.settings;
         settings.integrator = scheme;

@@ -54,7 +54,7 @@ public:
 
     /// A simulation of the prepared run, at its initial state. It keeps references into `run`,
     /// which must outlive it and stay where it is. `stageTimes`: time each stage (device only).
-    /// @throw modeflow::Error for what the backend does not simulate, or a device error.
+    /// @throw modeflow::Error for settings the model refuses, or a device error.
     std::unique_ptr<Simulator> makeSimulator(const RunInputs& run, bool stageTimes = false) const;
     /// The reduced dynamics of the prepared run alone, with `scheme`, at its initial state
     /// ([v; F] with MHD).

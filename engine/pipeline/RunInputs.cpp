@@ -7,6 +7,7 @@
 #include "engine/dynamics/CachedCoefficients.h"
 #include "engine/pipeline/InitialState.h"
 #include "engine/pipeline/SmokeMask.h"
+#include "precompute/CoefficientChoice.h"
 #include "precompute/Precompute.h"
 #include "precompute/geometry/FluidMask.h"
 
@@ -44,7 +45,13 @@ void requireFinite(const SceneSpec& scene, const Eigen::VectorXd& state, const c
 /// Everything after the cache.
 void complete(RunInputs& run, RunParts parts, Progress& progress) {
     const SceneSpec& scene = run.scene;
-    run.coefficients = coefficientsFromCache(run.cache);
+    completeCoefficients(run.cache, scene.basis.coefficients, progress);
+    if (scene.basis.coefficients == CoefficientStorage::TensorFree) {
+        // A tensor the cache holds is not used: free it.
+        run.cache.coefficients = BasisCache::Coefficients{};
+        run.cache.coefficients.storage = BasisCache::Coefficients::Storage::None;
+    }
+    run.coefficients = coefficientsFromCache(run.cache, scene.basis.coefficients);
     run.settings = SimulationSettings::fromScene(scene, run.cache);
     const int modes = run.coefficients->size();
     run.initialVelocity = initialVelocity(scene, run.cache, modes);

@@ -17,10 +17,13 @@ RunMemory requireRunMemory(const SceneSpec& scene, BackendKind backend) {
     // A closed-form basis (whole box, free slip) has sparse coefficients and no columns: its
     // transforms' buffers are a few face fields.
     const bool closedForm = hasClosedFormVelocity(scene);
-    const std::int64_t dofs = estimatePrecomputeMemory(scene).velocityDofs;
+    const PrecomputeMemory precompute = estimatePrecomputeMemory(scene);
+    const auto dofs = double(precompute.velocityDofs);
     const double coefficientBytes = closedForm ? kSparseEntryBytes * estimatedClosedFormNonZeros(grid.dim, modes)
-                                               : denseCoefficientBytes(modes);
-    const double columnBytes = closedForm ? 8.0 * 8.0 * double(dofs) : 8.0 * double(dofs) * modes;
+                                    : precompute.tensor ? denseCoefficientBytes(modes)
+                                                        : 0.0;  // tensor-free
+    // An eigensolved basis: its columns and its vorticity quadrature (120 bytes a face).
+    const double columnBytes = closedForm ? 8.0 * 8.0 * dofs : (8.0 * modes + 120.0) * dofs;
     const RunMemory memory = estimateRunMemory(smokeCells, columnBytes, coefficientBytes, device);
     const bool smoke = memory.smokeBytes > memory.basisBytes;
     requireMemory(memory.peakBytes,

@@ -1,10 +1,12 @@
 #pragma once
 /// @file BackendCapabilities.h
-/// The two backends a scene runs on, and what each of them simulates. Every command checks a
-/// scene against this one table before any precompute or device work, so a scene a backend
-/// cannot run is refused in a second, naming the key and the backend that runs it.
+/// The two backends a scene runs on, and what tells them apart. Both simulate every grid scene
+/// (MHD, every integrator, every coefficient storage); they differ in precision, in what they
+/// report, and in that surface scenes and held modes ([forcing]) run on the CPU reference only.
+/// Every command checks a scene against this one table before any precompute or device work, so
+/// a scene a backend cannot run is refused in a second, naming the key and the backend that runs
+/// it.
 
-#include <optional>
 #include <string_view>
 
 #include "engine/core/SceneSpec.h"
@@ -18,9 +20,7 @@ enum class BackendKind { CpuReference, Vulkan };
 struct BackendCapabilities {
     std::string_view name;    ///< "the CPU reference", "a Vulkan device"
     std::string_view option;  ///< the --device value that picks it ("cpu", "vulkan")
-    bool mhd = false;         ///< [simulation].mhd
-    bool trapezoidal = false;  ///< [simulation].integrator = "trapezoidal"
-    bool forcing = false;      ///< [forcing]: held modes
+    bool forcing = false;     ///< [forcing]: held modes
     bool stageTimes = false;  ///< per-stage times in FrameStats
     bool surfaces = false;    ///< surface scenes ([surface])
 };
@@ -28,12 +28,11 @@ struct BackendCapabilities {
 /// The row of the table for `kind`.
 const BackendCapabilities& capabilitiesOf(BackendKind kind);
 
-/// Refuses what `kind` does not simulate: the scene's [simulation] choices, or the integrator a
-/// command-line option puts in their place (`integratorOption`, e.g. "--integrator").
-/// @throw modeflow::Error naming the scene file and key (or the option), and the backend that
-///        runs it.
-void requireSupport(const SceneSpec& scene, BackendKind kind,
-                    std::optional<Integrator> integrator = std::nullopt,
-                    std::string_view integratorOption = "--integrator");
+/// Both backends, in the table's order.
+inline constexpr BackendKind kBackends[] = {BackendKind::CpuReference, BackendKind::Vulkan};
+
+/// Refuses what `kind` does not simulate (today: a [surface] scene or held modes on the device).
+/// @throw modeflow::Error naming the scene file and key, and the backend that runs it.
+void requireSupport(const SceneSpec& scene, BackendKind kind);
 
 }  // namespace modeflow

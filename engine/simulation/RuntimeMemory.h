@@ -6,9 +6,10 @@
 ///   program       48 MiB (CPU reference) or 150 MiB (a Vulkan device: lavapipe's driver; its
 ///                 device memory is host memory)
 ///   basis         3 × (column bytes + coefficient bytes): the cache, the dynamics' coefficients,
-///                 the device's copies; the columns V·K·8 (a closed-form basis has none: its
-///                 transforms' buffers, counted as 8 face fields, V·64), the coefficients
-///                 K²(K−1)/2·8 dense, 20 bytes per non-zero sparse
+///                 the device's copies; the columns V·K·8 and the vorticity quadrature 120·V (a
+///                 closed-form basis has neither: its transforms' buffers, counted as 8 face
+///                 fields, V·64), the coefficients K²(K−1)/2·8 dense, 20 bytes per non-zero
+///                 sparse, none tensor-free
 ///   smoke         150 (CPU reference: double fields, back-traces, MacCormack temporaries, frames)
 ///                 or 200 (device: float fields, their staging, frames) bytes per smoke cell
 /// times 1.15. Measured peaks of `modeflow run` (2D disk 128² with 40 and 200 modes, smoke scales

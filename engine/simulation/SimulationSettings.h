@@ -21,7 +21,7 @@ struct SimulationSettings {
     int stepsPerFrame = 1;
     Integrator integrator = Integrator::Midpoint;
     FluidParameters fluid;  ///< κ² of the basis, viscosity ν, LANS-α
-    /// MHD (seed §6.3.5, CPU reference only): a magnetic field F in the velocity basis, advected
+    /// MHD (seed §6.3.5): a magnetic field F in the velocity basis, advected
     /// by the flow and acting back on it, decaying at the magnetic diffusivity η.
     bool mhd = false;
     double magneticDiffusivity = 0.0;
@@ -36,8 +36,8 @@ struct SimulationSettings {
     /// carry a temperature grid and pictures tint hot smoke.
     bool simulatesTemperature() const;
 
-    /// The scene's [simulation], [smoke], [[source]] and [output] values on this basis. Whether a
-    /// backend runs them is BackendCapabilities' question, asked before any work.
+    /// The scene's [simulation], [smoke], [[source]] and [output] values on this basis (both
+    /// backends run every one of them).
     /// @throw modeflow::Error for more emitters or obstacles than the runtime takes.
     static SimulationSettings fromScene(const SceneSpec& scene, const BasisCache& cache);
 };

@@ -43,8 +43,7 @@ public:
 
     /// Interactive changes (`modeflow stir`), between steps: the moving obstacles of the
     /// following steps, the viscosity ν, and the integrator.
-    /// @throw modeflow::Error for more than maxObstacles, a negative ν, or an integrator the
-    /// backend does not run (BackendCapabilities).
+    /// @throw modeflow::Error for more than maxObstacles or a negative ν.
     virtual void setObstacles(std::vector<MovingObstacle> obstacles) = 0;
     virtual void setViscosity(double viscosity) = 0;
     virtual void setIntegrator(Integrator integrator) = 0;

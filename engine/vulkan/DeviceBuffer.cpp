@@ -38,18 +38,7 @@ DeviceBuffer::DeviceBuffer(const VulkanContext& context, VkDeviceSize bytes, std
                     " bytes) of " + context.deviceName() +
                     "; split the array over several buffers");
     const VkDevice device = context.device();
-
-    VkBufferCreateInfo info{};
-    info.sType = VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO;
-    info.size = bytes;
-    const bool texels = bytes >= kTexelBytes && bytes <= context.texelBufferLimit();
-    info.usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT |
-                 VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT |
-                 (texels ? VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT : 0);
-    info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
-    VkBuffer buffer = VK_NULL_HANDLE;
-    check(vkCreateBuffer(device, &info, nullptr, &buffer), "vkCreateBuffer");
-    mBuffer = DeviceHandle<VkBuffer>(device, buffer, vkDestroyBuffer);
+    const VkBuffer buffer = createBuffer(bytes);
 
     VkMemoryRequirements requirements;
     vkGetBufferMemoryRequirements(device, buffer, &requirements);
@@ -69,19 +58,54 @@ DeviceBuffer::DeviceBuffer(const VulkanContext& context, VkDeviceSize bytes, std
     VkDeviceMemory memory = VK_NULL_HANDLE;
     check(vkAllocateMemory(device, &allocate, nullptr, &memory), "vkAllocateMemory");
     mMemory = DeviceHandle<VkDeviceMemory>(device, memory, vkFreeMemory);
+    mMemoryHandle = memory;
     check(vkBindBufferMemory(device, buffer, memory, 0), "vkBindBufferMemory");
     if (mapped) check(vkMapMemory(device, memory, 0, VK_WHOLE_SIZE, 0, &mMapped), "vkMapMemory");
-    if (texels) {
-        // RGBA32UI texel buffers are mandatory in Vulkan; shaders reinterpret the bits.
-        VkBufferViewCreateInfo view{};
-        view.sType = VK_STRUCTURE_TYPE_BUFFER_VIEW_CREATE_INFO;
-        view.buffer = buffer;
-        view.format = VK_FORMAT_R32G32B32A32_UINT;
-        view.range = bytes / kTexelBytes * kTexelBytes;
-        VkBufferView texelView = VK_NULL_HANDLE;
-        check(vkCreateBufferView(device, &view, nullptr, &texelView), "vkCreateBufferView");
-        mTexelView = DeviceHandle<VkBufferView>(device, texelView, vkDestroyBufferView);
-    }
+    createTexelView(bytes);
+}
+
+DeviceBuffer::DeviceBuffer(const DeviceBuffer& whole, VkDeviceSize offset, VkDeviceSize bytes, std::string name)
+    : mContext(whole.mContext), mName(std::move(name)), mBytes(bytes) {
+    if (bytes == 0 || offset > whole.mBytes || bytes > whole.mBytes - offset)
+        throw Error("DeviceBuffer \"" + mName + "\": bytes " + std::to_string(offset) + " to " +
+                    std::to_string(offset + bytes) + " are not inside \"" + whole.mName + "\" (" +
+                    std::to_string(whole.mBytes) + " bytes)");
+    if (offset % kViewAlignment != 0)
+        throw Error("DeviceBuffer \"" + mName + "\": a view must start at a multiple of " +
+                    std::to_string(kViewAlignment) + " bytes, not " + std::to_string(offset));
+    const VkBuffer buffer = createBuffer(bytes);
+    mMemoryHandle = whole.mMemoryHandle;
+    check(vkBindBufferMemory(mContext->device(), buffer, mMemoryHandle, offset), "vkBindBufferMemory (view)");
+    if (whole.mMapped) mMapped = static_cast<std::byte*>(whole.mMapped) + offset;
+    createTexelView(bytes);
+}
+
+VkBuffer DeviceBuffer::createBuffer(VkDeviceSize bytes) {
+    VkBufferCreateInfo info{};
+    info.sType = VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO;
+    info.size = bytes;
+    const bool texels = bytes >= kTexelBytes && bytes <= mContext->texelBufferLimit();
+    info.usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT |
+                 VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT |
+                 (texels ? VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT : 0);
+    info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
+    VkBuffer buffer = VK_NULL_HANDLE;
+    check(vkCreateBuffer(mContext->device(), &info, nullptr, &buffer), "vkCreateBuffer");
+    mBuffer = DeviceHandle<VkBuffer>(mContext->device(), buffer, vkDestroyBuffer);
+    return buffer;
+}
+
+void DeviceBuffer::createTexelView(VkDeviceSize bytes) {
+    if (bytes < kTexelBytes || bytes > mContext->texelBufferLimit()) return;
+    // RGBA32UI texel buffers are mandatory in Vulkan; shaders reinterpret the bits.
+    VkBufferViewCreateInfo view{};
+    view.sType = VK_STRUCTURE_TYPE_BUFFER_VIEW_CREATE_INFO;
+    view.buffer = mBuffer.get();
+    view.format = VK_FORMAT_R32G32B32A32_UINT;
+    view.range = bytes / kTexelBytes * kTexelBytes;
+    VkBufferView texelView = VK_NULL_HANDLE;
+    check(vkCreateBufferView(mContext->device(), &view, nullptr, &texelView), "vkCreateBufferView");
+    mTexelView = DeviceHandle<VkBufferView>(mContext->device(), texelView, vkDestroyBufferView);
 }
 
 void DeviceBuffer::write(const void* source, VkDeviceSize offset, VkDeviceSize bytes) {

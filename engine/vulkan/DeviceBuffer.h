@@ -40,6 +40,17 @@ public:
     DeviceBuffer(const VulkanContext& context, VkDeviceSize bytes, std::string name = "buffer",
                  Placement placement = Placement::Automatic);
 
+    /// A view of `bytes` bytes of `whole` from byte `offset`: a buffer of its own over the same
+    /// memory, so that kernels may bind part of an array (e.g. one half of a modal state) while
+    /// others bind all of it. `whole` must outlive the view.
+    /// @throw modeflow::Error if the range does not fit in `whole`, `offset` is not a multiple of
+    /// 256 bytes (what every device's storage and texel offset alignments allow), or a creation
+    /// call fails.
+    DeviceBuffer(const DeviceBuffer& whole, VkDeviceSize offset, VkDeviceSize bytes, std::string name);
+
+    /// Offsets DeviceBuffer views must be multiples of.
+    static constexpr VkDeviceSize kViewAlignment = 256;
+
     /// A buffer holding a copy of `values`.
     template <typename T>
     static DeviceBuffer fromValues(const VulkanContext& context, std::span<const T> values,
@@ -78,6 +89,9 @@ public:
     }
 
 private:
+    /// The buffer object over `bytes`, its usage, and whether it gets a texel view.
+    VkBuffer createBuffer(VkDeviceSize bytes);
+    void createTexelView(VkDeviceSize bytes);
     void checkRange(const char* what, VkDeviceSize offset, VkDeviceSize bytes) const;
     void write(const void* source, VkDeviceSize offset, VkDeviceSize bytes);
     void read(void* destination, VkDeviceSize offset, VkDeviceSize bytes) const;
@@ -89,7 +103,8 @@ private:
     std::string mName;
     VkDeviceSize mBytes = 0;
     // Memory before buffer: the buffer is destroyed first, then its memory is freed (which unmaps).
-    DeviceHandle<VkDeviceMemory> mMemory;
+    DeviceHandle<VkDeviceMemory> mMemory;  ///< empty in a view: the whole buffer's memory
+    VkDeviceMemory mMemoryHandle = VK_NULL_HANDLE;
     DeviceHandle<VkBuffer> mBuffer;
     DeviceHandle<VkBufferView> mTexelView;  // destroyed before the buffer
     void* mMapped = nullptr;

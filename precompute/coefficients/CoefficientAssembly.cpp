@@ -82,10 +82,38 @@ ElementSampling sampleElements(const CubicalComplex& cx, const CutCellMeasures& 
     return s;
 }
 
+/// Appends the rows of `m` to `rows`.
+void appendRows(const ColSparse& m, SparseRows& rows) {
+    const Eigen::SparseMatrix<double, Eigen::RowMajor> byRow = m;
+    for (Eigen::Index r = 0; r < byRow.outerSize(); ++r) {
+        for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(byRow, r); it; ++it) {
+            rows.column.push_back(std::int32_t(it.col()));
+            rows.value.push_back(it.value());
+        }
+        rows.start.push_back(std::int64_t(rows.value.size()));
+    }
+}
+
+/// Rows [first, first + count) of `rows` as a column-major sparse matrix with `columns` columns.
+ColSparse rowBlock(const SparseRows& rows, std::int64_t first, std::int64_t count,
+                   Eigen::Index columns) {
+    std::vector<Triplet> entries;
+    entries.reserve(std::size_t(rows.start[first + count] - rows.start[first]));
+    for (std::int64_t r = 0; r < count; ++r)
+        for (std::int64_t t = rows.start[first + r]; t < rows.start[first + r + 1]; ++t)
+            entries.emplace_back(Eigen::Index(r), rows.column[t], rows.value[t]);
+    ColSparse m(Eigen::Index(count), columns);
+    m.setFromTriplets(entries.begin(), entries.end());
+    return m;
+}
+
+/// Elements whose samples are held at once: 3 × this × N doubles.
+constexpr std::int64_t kElementBlock = 1 << 16;
+
 }  // namespace
 
 void accumulateCrossProducts(const Eigen::MatrixXd& omega, const Eigen::MatrixXd& p, const Eigen::MatrixXd& q,
-                std::vector<double>& packed) {
+                             std::vector<double>& packed) {
     const int modes = int(p.cols());
     const Eigen::Index elements = p.rows();
     const std::size_t pairs = pairCount(std::size_t(modes));
@@ -107,24 +135,42 @@ void accumulateCrossProducts(const Eigen::MatrixXd& omega, const Eigen::MatrixXd
     }
 }
 
-std::vector<double> assembleStructuralCoefficients(const CubicalComplex& complex,
-                                                   const CutCellMeasures& measures,
-                                                   const CutCellDec& dec,
-                                                   const Eigen::MatrixXd& modes) {
+BasisCache::Quadrature vorticityQuadrature(const CubicalComplex& complex,
+                                           const CutCellMeasures& measures, const CutCellDec& dec) {
     const int n = complex.dim();
-    std::vector<double> packed(packedSize(std::size_t(modes.cols())), 0.0);
-    if (modes.cols() < 2) return packed;
+    BasisCache::Quadrature q;
     for (unsigned axes : complex.types(n - 2)) {
         // 3D: edge along a, (b, c) = (a+1, a+2) mod 3. 2D: vertices, (b, c) = (x, y).
         const int a = n == 3 ? __builtin_ctz(axes) : 2;
         const int b = (a + 1) % 3, c = (a + 2) % 3;
         const ElementSampling s = sampleElements(complex, measures, dec, axes, b, c);
-        const Eigen::MatrixXd omega = s.vorticity * modes;
-        const Eigen::MatrixXd p = s.velocityB * modes;
-        const Eigen::MatrixXd q = s.velocityC * modes;
+        appendRows(s.vorticity, q.curl);
+        appendRows(s.velocityB, q.velocityB);
+        appendRows(s.velocityC, q.velocityC);
+    }
+    return q;
+}
+
+std::vector<double> assembleStructuralCoefficients(const BasisCache::Quadrature& quadrature,
+                                                   const Eigen::MatrixXd& modes) {
+    std::vector<double> packed(packedSize(std::size_t(modes.cols())), 0.0);
+    if (modes.cols() < 2) return packed;
+    const std::int64_t elements = quadrature.curl.rows();
+    for (std::int64_t first = 0; first < elements; first += kElementBlock) {
+        const std::int64_t count = std::min(kElementBlock, elements - first);
+        const Eigen::MatrixXd omega = rowBlock(quadrature.curl, first, count, modes.rows()) * modes;
+        const Eigen::MatrixXd p = rowBlock(quadrature.velocityB, first, count, modes.rows()) * modes;
+        const Eigen::MatrixXd q = rowBlock(quadrature.velocityC, first, count, modes.rows()) * modes;
         accumulateCrossProducts(omega, p, q, packed);
     }
     return packed;
+}
+
+std::vector<double> assembleStructuralCoefficients(const CubicalComplex& complex,
+                                                   const CutCellMeasures& measures,
+                                                   const CutCellDec& dec,
+                                                   const Eigen::MatrixXd& modes) {
+    return assembleStructuralCoefficients(vorticityQuadrature(complex, measures, dec), modes);
 }
 
 }  // namespace modeflow

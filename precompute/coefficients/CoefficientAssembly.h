@@ -10,18 +10,32 @@
 ///   C[k][i][j] += w_e ω_i(e) (u_kb u_jc − u_kc u_jb),   w_e = |e ∩ Ω| · |dual of e|.
 /// The cross product makes C exactly antisymmetric in k ↔ j; only k < j is computed and stored,
 /// in the packed layout of engine/core/PackedLayout.h.
+///
+/// The three linear maps (face fluxes → w_e ω, u_b, u_c) are the quadrature a cache stores
+/// (BasisCache::Quadrature): the assembly runs on it, and so does the runtime's tensor-free
+/// advection, so both see the same numbers.
 
 #include <vector>
 
 #include <Eigen/Core>
 
+#include "engine/format/BasisCache.h"
 #include "precompute/dec/CutCellDec.h"
 #include "precompute/dec/CutCellMeasures.h"
 
 namespace modeflow {
 
-/// Packed k < j coefficients of the columns of `modes` (face fluxes on dec.faces).
+/// The quadrature of every vorticity element with a positive weight, element type by type;
+/// columns are the face DOFs of `dec`.
+BasisCache::Quadrature vorticityQuadrature(const CubicalComplex& complex,
+                                           const CutCellMeasures& measures, const CutCellDec& dec);
+
+/// Packed k < j coefficients of the columns of `modes` (face fluxes on the quadrature's columns).
 /// Cost: N²(N−1)/2 · E multiply-adds, run as blocked matrix products.
+std::vector<double> assembleStructuralCoefficients(const BasisCache::Quadrature& quadrature,
+                                                   const Eigen::MatrixXd& modes);
+
+/// The same, with the quadrature of `complex`, `measures` and `dec`.
 std::vector<double> assembleStructuralCoefficients(const CubicalComplex& complex,
                                                    const CutCellMeasures& measures,
                                                    const CutCellDec& dec,

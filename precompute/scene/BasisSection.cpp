@@ -1,6 +1,6 @@
 /// @file BasisSection.cpp
-/// `[basis]`: which velocity modes (a count or a mode list), scalar modes and how the boundary is
-/// treated.
+/// `[basis]`: which velocity modes (a count or a mode list), scalar modes, how the boundary is
+/// treated and how the structural coefficients are kept.
 
 #include "engine/core/PrintableText.h"
 #include "precompute/scene/ModeList.h"
@@ -37,6 +37,8 @@ BasisSpec readBasis(const TomlReader& reader, const Section& s) {
     basis.boundary = reader.readChoice(s, "boundary", BoundaryTreatment::CutCell,
                                        Choices<BoundaryTreatment>(kBoundaries));
     basis.subsamples = reader.readInt(s, "subsamples", 4, 1, 16);
+    basis.coefficients = reader.readChoice(s, "coefficients", CoefficientStorage::Auto,
+                                           Choices<CoefficientStorage>(kCoefficientStorages));
     return basis;
 }
 

@@ -1,8 +1,10 @@
-/// The cache file's reader: a real basis round-trips, and every file that is not a whole, sound
-/// cache is refused with a message, cheaply (the header is checked before the bulk is read).
+/// The cache file's reader: a real basis round-trips (its vorticity quadrature, and a cache
+/// without a tensor, too), and every file that is not a whole, sound cache is refused with a
+/// message, cheaply (the header is checked before the bulk is read).
 
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -129,6 +131,65 @@ TEST(CacheFileTest, AWellFormedButInconsistentBasisIsRefused) {
               }).find("grid bounds"),
               std::string::npos);
     EXPECT_EQ(errorOfDamaged([](BasisCache&) {}), "accepted") << "the undamaged basis";
+}
+
+TEST(CacheFileTest, AnEarlierFormatIsRefusedByItsVersion) {
+    // Format 6 added the vorticity quadrature: a format-5 file (same magic) must be rebuilt.
+    const TestFolder folder;
+    const fs::path file = folder / "old.mfbasis";
+    writeCache(file, smallBasis());
+    {
+        std::fstream f(file, std::ios::in | std::ios::out | std::ios::binary);
+        const std::uint32_t previous = kCacheFormatVersion - 1;
+        f.seekp(16);  // after the magic
+        f.write(reinterpret_cast<const char*>(&previous), sizeof previous);
+    }
+    const std::string message = readError(file);
+    EXPECT_NE(message.find("has format version " + std::to_string(kCacheFormatVersion - 1) +
+                           ", this modeflow reads version " + std::to_string(kCacheFormatVersion)),
+              std::string::npos)
+        << message;
+    EXPECT_NE(message.find("rerun precompute"), std::string::npos) << message;
+}
+
+TEST(CacheFileTest, TheQuadratureAndAMissingTensorRoundTrip) {
+    const TestFolder folder;
+    BasisCache cache = smallBasis();
+    ASSERT_GT(cache.quadrature.curl.rows(), 0);
+    cache.coefficients = BasisCache::Coefficients{};
+    cache.coefficients.storage = BasisCache::Coefficients::Storage::None;
+    writeCache(folder / "free.mfbasis", cache);
+    const BasisCache read = readCache(folder / "free.mfbasis");
+    EXPECT_EQ(read.coefficients.storage, BasisCache::Coefficients::Storage::None);
+    for (const auto& [got, want] : {std::pair{&read.quadrature.curl, &cache.quadrature.curl},
+                                    std::pair{&read.quadrature.velocityB, &cache.quadrature.velocityB},
+                                    std::pair{&read.quadrature.velocityC, &cache.quadrature.velocityC}}) {
+        EXPECT_EQ(got->start, want->start);
+        EXPECT_EQ(got->column, want->column);
+        EXPECT_EQ(got->value, want->value);
+    }
+}
+
+TEST(CacheFileTest, AQuadratureOrStorageThatDoesNotFitIsRefused) {
+    const auto quadrature = [](const std::function<void(BasisCache&)>& damage) {
+        return errorOfDamaged(damage).find("its vorticity quadrature is not three maps") != std::string::npos;
+    };
+    EXPECT_TRUE(quadrature([](BasisCache& c) { c.quadrature.velocityB.column.front() = std::int32_t(c.faces.size()); }));
+    EXPECT_TRUE(quadrature([](BasisCache& c) {
+        SparseRows& m = c.quadrature.velocityC;
+        m.start.pop_back();
+        m.column.resize(std::size_t(m.start.back()));
+        m.value.resize(m.column.size());
+    }));
+    EXPECT_TRUE(quadrature([](BasisCache& c) { c.quadrature.curl.start[1] = c.quadrature.curl.start[2] + 1; }));
+    EXPECT_NE(errorOfDamaged([](BasisCache& c) {
+                  c.coefficients.storage = BasisCache::Coefficients::Storage(7);
+              }).find("coefficient storage"),
+              std::string::npos);
+    EXPECT_NE(errorOfDamaged([](BasisCache& c) {
+                  c.coefficients.storage = BasisCache::Coefficients::Storage::None;
+              }).find("storage says none"),
+              std::string::npos);
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 /// @file ModalContractionKernelTest.cpp
 /// DeviceCoefficients::recordApply (shaders/modal_pair_sums*.comp + modal_combine.comp) against
-/// the CPU reference StructuralCoefficients::apply: dense, sparse, and dense split into chunks.
+/// the CPU reference StructuralCoefficients::apply: dense, sparse, and dense split into chunks;
+/// and recordAdvect (modal_pair_weights, modal_advect_*.comp) against StructuralCoefficients::advect.
 
 #include <array>
 #include <cmath>
@@ -68,7 +69,44 @@ double contractionError(const vulkan::VulkanContext& context, const StructuralCo
     return (got - reference).lpNorm<Eigen::Infinity>() / reference.lpNorm<Eigen::Infinity>();
 }
 
+/// The same for advect(u, x) (MHD's induction term).
+double advectionError(const vulkan::VulkanContext& context, const StructuralCoefficients& c) {
+    const int n = c.size();
+    const Eigen::VectorXd u = roundedToFloat(testing::randomVector(n, 17)),
+                          x = roundedToFloat(testing::randomVector(n, 18));
+    Eigen::VectorXd reference;
+    c.advect(u, x, reference);
+    const ModalKernels kernels(context);
+    const DeviceCoefficients device(context, c, nullptr, nullptr, true);
+    const DeviceBuffer uBuffer = DeviceBuffer::fromValues<float>(context, toFloat(u), "u");
+    const DeviceBuffer xBuffer = DeviceBuffer::fromValues<float>(context, toFloat(x), "x");
+    const std::vector<float> nan(n, std::numeric_limits<float>::quiet_NaN());
+    DeviceBuffer out = DeviceBuffer::fromValues<float>(context, nan, "out");
+    CommandSequence sequence(context);
+    device.recordAdvect(sequence, kernels, uBuffer, xBuffer, out);
+    sequence.submitAndWait();
+    std::vector<float> result(n);
+    out.download<float>(result);
+    const Eigen::VectorXd got = Eigen::Map<const Eigen::VectorXf>(result.data(), n).cast<double>();
+    if (got.hasNaN()) return std::numeric_limits<double>::infinity();
+    return (got - reference).lpNorm<Eigen::Infinity>() / reference.lpNorm<Eigen::Infinity>();
+}
+
 class ModalContractionKernelTest : public testing::VulkanTest {};
+
+TEST_P(ModalContractionKernelTest, AdvectionEqualsCpuAdvectInFloat32) {
+    for (const int n : {2, 20, 150}) {
+        const double dense = advectionError(context(), roundedDense(testing::randomDense(n, 2000 + n)));
+        const SparseCoefficients sparse =
+            SparseCoefficients::fromDense(roundedDense(testing::randomDense(n, 2100 + n, 0.1)));
+        const double sparseError = advectionError(context(), sparse);
+        std::cout << "advect N = " << n << ": dense relative error " << dense << ", sparse " << sparseError << "\n";
+        EXPECT_LE(dense, 1e-5) << "dense, N = " << n;
+        EXPECT_LE(sparseError, 1e-5) << "sparse, N = " << n;
+    }
+    const DeviceCoefficients withoutAdvection(context(), roundedDense(testing::randomDense(8, 3)));
+    EXPECT_THROW(withoutAdvection.advectGroups(), Error);
+}
 
 TEST_P(ModalContractionKernelTest, DenseEqualsCpuApplyInFloat32) {
     for (const int n : {2, 20, 64, 150}) {
@@ -104,6 +142,8 @@ TEST(ModalContractionSplit, ChunksAboveTheStorageLimitGiveTheSameResult) {
             contractionError(*context, roundedDense(testing::randomDense(64, 9)), &chunks);
         EXPECT_EQ(chunks, 6u);
         EXPECT_LE(error, 1e-5);
+        const double advection = advectionError(*context, roundedDense(testing::randomDense(64, 10)));
+        EXPECT_LE(advection, 1e-5) << "advect over 6 chunks";
     }
     EXPECT_EQ(context->validationMessageCount(), 0u);
 }

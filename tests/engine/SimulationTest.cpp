@@ -9,6 +9,7 @@
 
 #include "engine/device/Simulation.h"
 #include "engine/dynamics/InitialConditions.h"
+#include "engine/dynamics/TensorFreeCoefficients.h"
 #include "engine/reference/Simulation.h"
 #include "tests/support/SharedRuns.h"
 #include "tests/support/SmokeTestFields.h"
@@ -108,6 +109,67 @@ TEST_P(SimulationTest, DeviceRunFollowsTheCpuReference) {
         }
         expectNoValidationMessages();
     }
+}
+
+TEST_P(SimulationTest, TensorFreeRunFollowsTheCpuReference) {
+    const RunInputs& ball = hotBall();
+    const TensorFreeCoefficients coefficients(ball.cache.velocity.modes, ball.cache.quadrature);
+    {
+        device::Simulation device(context(), ball.cache, coefficients, ball.settings, ball.smokeMask);
+        reference::Simulation cpu(ball.cache, coefficients, ball.settings, ball.smokeMask);
+        RandomVelocitySpec swirl;
+        swirl.energy = 0.05;
+        const Eigen::VectorXd v0 = randomVelocity(coefficients.size(), swirl);
+        device.setVelocity(v0);
+        cpu.setVelocity(v0);
+        for (int frame = 0; frame < 4; ++frame) {
+            device.advanceFrame();
+            cpu.advanceFrame();
+        }
+        const Eigen::VectorXd v = device.velocity(), expected = cpu.velocity();
+        const double error = (v - expected).lpNorm<Eigen::Infinity>() / expected.lpNorm<Eigen::Infinity>();
+        std::cout << "3D tensor-free, 20 steps: relative max difference of the modes " << error << "\n";
+        EXPECT_LE(error, 1e-4);
+    }
+    expectNoValidationMessages();
+}
+
+TEST_P(SimulationTest, MhdRunFollowsTheCpuReference) {
+    SceneSpec scene = hotScene(2);
+    scene.simulation.mhd = true;
+    scene.simulation.magneticDiffusivity = 1e-3;
+    const RunInputs disk = testing::sharedRun(scene);
+    {
+        device::Simulation device(context(), disk.cache, *disk.coefficients, disk.settings, disk.smokeMask);
+        reference::Simulation cpu(disk.cache, *disk.coefficients, disk.settings, disk.smokeMask);
+        RandomVelocitySpec swirl;
+        swirl.energy = 0.05;
+        const Eigen::VectorXd v0 = randomVelocity(disk.coefficients->size(), swirl);
+        swirl.seed += 1;
+        const Eigen::VectorXd f0 = randomVelocity(disk.coefficients->size(), swirl);
+        for (Simulator* s : std::initializer_list<Simulator*>{&device, &cpu}) {
+            s->setVelocity(v0);
+            s->setMagneticField(f0);
+        }
+        for (int frame = 0; frame < 4; ++frame) {
+            device.advanceFrame();
+            cpu.advanceFrame();
+        }
+        const auto relative = [](const Eigen::VectorXd& got, const Eigen::VectorXd& want) {
+            return (got - want).lpNorm<Eigen::Infinity>() / want.lpNorm<Eigen::Infinity>();
+        };
+        const double velocityError = relative(device.velocity(), cpu.velocity());
+        const double fieldError = relative(device.magneticField(), cpu.magneticField());
+        const double faceError = maxDifference(device.faceMagneticField(), cpu.faceMagneticField()) /
+                                 maxAbs(cpu.faceMagneticField());
+        std::cout << "2D MHD, 20 steps: relative max differences: velocity " << velocityError << ", field "
+                  << fieldError << ", field on the faces " << faceError << "\n";
+        EXPECT_GT(relative(cpu.magneticField(), f0), 1e-3) << "the field hardly moved: a weak test";
+        EXPECT_LE(velocityError, 1e-4);
+        EXPECT_LE(fieldError, 1e-4);
+        EXPECT_LE(faceError, 1e-4);
+    }
+    expectNoValidationMessages();
 }
 
 TEST_P(SimulationTest, TimingSamplesOnlyTheStepsAskedFor) {

@@ -157,6 +157,25 @@ TEST_P(VulkanContextTest, BuffersOfWholeTexelsCanBeReadAsTexels) {
     expectNoValidationMessages();
 }
 
+TEST_P(VulkanContextTest, ViewsShareTheirBuffersMemory) {
+    std::vector<float> values(256);
+    std::iota(values.begin(), values.end(), 0.0f);
+    DeviceBuffer whole = DeviceBuffer::fromValues<float>(context(), values, "whole");
+    DeviceBuffer second(whole, DeviceBuffer::kViewAlignment, 128 * sizeof(float), "second half");
+    std::vector<float> read(2);
+    second.download<float>(read);
+    EXPECT_EQ(read[0], 64.0f);  // 256 bytes in
+    EXPECT_EQ(read[1], 65.0f);
+    const std::vector<float> patch{-1.0f};
+    second.upload<float>(patch, 4 * sizeof(float));
+    whole.download<float>(read, 68 * sizeof(float));
+    EXPECT_EQ(read[0], -1.0f) << "a write through the view reaches the whole buffer";
+    EXPECT_NE(second.texelView(), VK_NULL_HANDLE);
+    EXPECT_THROW(DeviceBuffer(whole, 16, 16, "misaligned"), Error);
+    EXPECT_THROW(DeviceBuffer(whole, DeviceBuffer::kViewAlignment, whole.bytes(), "past the end"), Error);
+    expectNoValidationMessages();
+}
+
 INSTANTIATE_TEST_SUITE_P(Vulkan, VulkanContextTest, ::testing::Bool(), testing::validationName);
 
 TEST(VulkanValidationTest, MisuseIsCountedSoZeroCountsMeanSomething) {

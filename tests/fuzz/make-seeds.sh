@@ -58,11 +58,14 @@ printf 'f %s\n' "1 12 6" "1 6 2" "1 2 8" "1 8 11" "1 11 12" "2 6 10" "6 12 5" "1
     >>"$work/icosahedron.obj"
 scene surface "[surface]
 mesh = \"icosahedron.obj\"" 4 ""
+# No tensor, only the vorticity quadrature (the extra line lands in [basis]).
+scene disk_tensor_free "$disk" 3 'coefficients = "tensor-free"'
 
 caches="$here/corpus/CacheReader" checkpoints="$here/corpus/CheckpointReader"
 mkdir -p "$caches" "$checkpoints"
-for name in disk box wholebox surface; do
-    cache=$("$modeflow" precompute "$work/$name.toml" --cache-dir "$work/cache" 2>/dev/null | tail -n 1)
+for name in disk box wholebox surface disk_tensor_free; do
+    # A folder per scene: disk and disk_tensor_free share their basis key.
+    cache=$("$modeflow" precompute "$work/$name.toml" --cache-dir "$work/cache_$name" 2>/dev/null | tail -n 1)
     cp "$cache" "$caches/$name.mfbasis"
     # The payload alone: the target wraps inputs without the magic in a valid header and checksum.
     size=$(stat -c %s "$cache")

@@ -136,6 +136,7 @@ scalar_boundary = "dirichlet"
 wall = "no-slip"
 boundary = "staircase"
 subsamples = 8
+coefficients = "tensor-free"
 
 [simulation]
 dt = 0.005
@@ -237,6 +238,7 @@ steps_per_frame = 5
     EXPECT_EQ(scene.basis.wall, WallKind::NoSlip);
     EXPECT_EQ(scene.basis.boundary, BoundaryTreatment::Staircase);
     EXPECT_EQ(scene.basis.subsamples, 8);
+    EXPECT_EQ(scene.basis.coefficients, CoefficientStorage::TensorFree);
 
     EXPECT_EQ(scene.simulation.dt, 0.005);
     EXPECT_EQ(scene.simulation.integrator, Integrator::Rk4);
@@ -324,6 +326,7 @@ TEST_F(SceneLoaderTest, MinimalSceneGetsDefaults) {
     EXPECT_EQ(scene.basis.wall, WallKind::FreeSlip);
     EXPECT_EQ(scene.basis.boundary, BoundaryTreatment::CutCell);
     EXPECT_EQ(scene.basis.subsamples, 4);
+    EXPECT_EQ(scene.basis.coefficients, CoefficientStorage::Auto);
 
     const SimulationSpec sim;
     EXPECT_EQ(scene.simulation.dt, sim.dt);
@@ -631,6 +634,9 @@ TEST_F(SceneLoaderTest, RangeChecksOnScalars) {
     EXPECT_CONTAINS(
         errorOf(std::string(kGrid2d) + "[basis]\nvelocity_modes = 4\nsubsamples = 17\n"),
         "[basis].subsamples: must be between 1 and 16");
+    EXPECT_CONTAINS(
+        errorOf(std::string(kGrid2d) + "[basis]\nvelocity_modes = 4\ncoefficients = \"packed\"\n"),
+        "[basis].coefficients");
     EXPECT_CONTAINS(errorOf(base + "[output]\nframes = 0\n"),
                     "[output].frames: must be at least 1");
     EXPECT_CONTAINS(errorOf(base + "[output]\nsteps_per_frame = 9999999999\n"),
@@ -1124,6 +1130,7 @@ TEST(SceneKeywords, MatchTheFileSpelling) {
     EXPECT_EQ(sceneKeyword(WallKind::FreeSlip), "free-slip");
     EXPECT_EQ(sceneKeyword(BoundaryTreatment::CutCell), "cut-cell");
     EXPECT_EQ(sceneKeyword(Integrator::Rk4), "rk4");
+    EXPECT_EQ(sceneKeyword(CoefficientStorage::TensorFree), "tensor-free");
     EXPECT_EQ(sceneKeyword(InitialVelocity::Vortices), "vortices");
 }
 

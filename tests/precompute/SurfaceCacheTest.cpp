@@ -1,5 +1,6 @@
-/// A surface basis in a cache file (format version 5): it reads back whole, and a surface block
-/// whose indices or sizes do not fit the rest is refused as corrupt, never misread.
+/// A surface basis in a cache file: it reads back whole, and a surface block whose indices or
+/// sizes do not fit the rest (or a grid's vorticity quadrature, or no coefficients) is refused as
+/// corrupt, never misread.
 
 #include <gtest/gtest.h>
 
@@ -61,6 +62,28 @@ TEST(SurfaceCache, RefusesASurfaceBlockThatDoesNotFit) {
     bad.surface.edges.pop_back();
     writeCache(folder / "edges.mfbasis", bad);
     EXPECT_NE(readError(folder / "edges.mfbasis").find("is corrupt"), std::string::npos);
+}
+
+TEST(SurfaceCache, RefusesAQuadratureOrMissingCoefficients) {
+    testing::TestFolder folder;
+    const BasisCache good = torusCache(folder);
+    ASSERT_EQ(good.quadrature.curl.rows(), 0);
+    ASSERT_NE(good.coefficients.storage, BasisCache::Coefficients::Storage::None);
+    BasisCache bad = good;
+    bad.quadrature.curl.start.push_back(0);  // one element without entries
+    bad.quadrature.velocityB.start.push_back(0);
+    bad.quadrature.velocityC.start.push_back(0);
+    writeCache(folder / "quadrature.mfbasis", bad);
+    EXPECT_NE(readError(folder / "quadrature.mfbasis").find("holds a vorticity quadrature or no coefficients"),
+              std::string::npos)
+        << readError(folder / "quadrature.mfbasis");
+    bad = good;
+    bad.coefficients = BasisCache::Coefficients{};
+    bad.coefficients.storage = BasisCache::Coefficients::Storage::None;
+    writeCache(folder / "none.mfbasis", bad);
+    EXPECT_NE(readError(folder / "none.mfbasis").find("holds a vorticity quadrature or no coefficients"),
+              std::string::npos)
+        << readError(folder / "none.mfbasis");
 }
 
 }  // namespace

@@ -2,6 +2,8 @@
 
 #include <random>
 
+#include "engine/core/PackedLayout.h"
+
 namespace modeflow::testing {
 
 std::vector<double> randomFullTensor(int n, std::uint64_t seed, double density) {
@@ -29,6 +31,14 @@ std::vector<double> randomFullTensor(int n, std::uint64_t seed, double density) 
 
 DenseCoefficients randomDense(int n, std::uint64_t seed, double density) {
     return DenseCoefficients::fromFull(n, randomFullTensor(n, seed, density));
+}
+
+DenseCoefficients randomPackedDense(int n, std::uint64_t seed) {
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> value(-1.0, 1.0);
+    std::vector<double> packed(packedSize(std::size_t(n)));
+    for (double& x : packed) x = value(rng);
+    return DenseCoefficients(n, std::move(packed));
 }
 
 Eigen::VectorXd roundedToFloat(const Eigen::VectorXd& v) { return v.cast<float>().cast<double>(); }

@@ -22,6 +22,10 @@ std::vector<double> randomFullTensor(int n, std::uint64_t seed, double density =
 /// randomFullTensor packed.
 DenseCoefficients randomDense(int n, std::uint64_t seed, double density = 1.0);
 
+/// Dense coefficients drawn straight into the packed k < j half, uniform in [−1, 1]: for sizes
+/// whose full N³ array would not fit (N = 1000: 8 GB full, 4 GB packed).
+DenseCoefficients randomPackedDense(int n, std::uint64_t seed);
+
 /// The vector rounded to float32 and back: what a device run starts from.
 Eigen::VectorXd roundedToFloat(const Eigen::VectorXd& v);
 

@@ -27,6 +27,15 @@ const BasisCache& ball3d() {
     return cache;
 }
 
+const BasisCache& disk2dHundredModes() {
+    static const BasisCache cache = [] {
+        SceneSpec scene = unitBallScene(2, 40, 100, 0);
+        scene.basis.coefficients = CoefficientStorage::Dense;  // compared with, whatever auto chooses
+        return sharedBasis(scene);
+    }();
+    return cache;
+}
+
 namespace {
 
 SceneSpec withModes(SceneSpec scene, int velocityModes) {

@@ -19,6 +19,9 @@ BasisCache sharedBasis(const SceneSpec& scene);
 /// modes), once per process.
 const BasisCache& disk2d();
 const BasisCache& ball3d();
+/// The unit disk at 40² with 100 velocity modes (no scalar modes) and their dense coefficients,
+/// once per process.
+const BasisCache& disk2dHundredModes();
 
 /// Periodic bases, once per process: TestScenes' channel around a disk at 32 × 16 cells,
 /// periodic along x (periodicChannel2d) and along both axes, a torus around a disk, whose up

@@ -195,6 +195,13 @@ inline SceneUnderTest sceneUnderTest(const fs::path& relative, const fs::path& f
     return chosen;
 }
 
+/// The --device values of the backends, every one of which runs every grid scene.
+inline std::vector<std::string> backendOptions() {
+    std::vector<std::string> options;
+    for (BackendKind kind : kBackends) options.emplace_back(capabilitiesOf(kind).option);
+    return options;
+}
+
 /// The backends that run `scene`, and for each the refusal of the others (empty when it runs).
 struct BackendVerdict {
     BackendKind kind;
@@ -204,7 +211,7 @@ struct BackendVerdict {
 
 inline std::vector<BackendVerdict> backendVerdicts(const SceneSpec& scene) {
     std::vector<BackendVerdict> verdicts;
-    for (BackendKind kind : {BackendKind::CpuReference, BackendKind::Vulkan}) {
+    for (BackendKind kind : kBackends) {
         BackendVerdict v{kind, std::string(capabilitiesOf(kind).option), std::nullopt};
         try {
             requireSupport(scene, kind);

@@ -21,6 +21,14 @@ GridSpec boxGrid(int dim, int cells) {
 }
 
 BasisCache syntheticBasis(const GridSpec& grid, int modes, unsigned seed) {
+    BasisCache cache = syntheticModes(grid, modes, seed);
+    cache.coefficients.storage = BasisCache::Coefficients::Storage::Dense;
+    cache.coefficients.packed = randomDense(modes, seed).packed();
+    cache.coefficients.density = 1.0;
+    return cache;
+}
+
+BasisCache syntheticModes(const GridSpec& grid, int modes, unsigned seed) {
     BasisCache cache;
     cache.grid = grid;
     const MacGrid mac = MacGrid::fromSpec(grid);
@@ -52,9 +60,7 @@ BasisCache syntheticBasis(const GridSpec& grid, int modes, unsigned seed) {
     cholesky.matrixU().solveInPlace<Eigen::OnTheRight>(x);
     x.array().colwise() /= root.array();
     cache.velocity.eigenvalues = Eigen::VectorXd::LinSpaced(modes, 1.0, double(modes));
-
-    cache.coefficients.packed = randomDense(modes, seed).packed();
-    cache.coefficients.density = 1.0;
+    cache.coefficients.storage = BasisCache::Coefficients::Storage::None;
     return cache;
 }
 

@@ -19,4 +19,8 @@ GridSpec boxGrid(int dim, int cells);
 /// prepareRun takes it as a real basis.
 BasisCache syntheticBasis(const GridSpec& grid, int modes, unsigned seed);
 
+/// The same without coefficients (storage None, no quadrature): the modes of a size whose full
+/// random tensor would not fit.
+BasisCache syntheticModes(const GridSpec& grid, int modes, unsigned seed);
+
 }  // namespace modeflow::testing

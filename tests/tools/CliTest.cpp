@@ -115,6 +115,82 @@ TEST_F(Cli, InspectJsonReportsTheContractKeys) {
     EXPECT_EQ(nlohmann::json::parse(direct.out)["velocity"]["eigenvalues"], ev);
 }
 
+TEST_F(Cli, TensorFreeScenesStoreNoTensorAndRunLikeDenseOnes) {
+    const std::string initial = "[initial]\nvelocity = \"random\"\nenergy = 2.0\n";
+    const fs::path free = scene("free.toml", replaced(kSmallDisk, "scalar_modes = 4",
+                                                      "scalar_modes = 4\ncoefficients = \"tensor-free\"") +
+                                                 initial);
+    const fs::path dense = scene("dense.toml", replaced(kSmallDisk, "scalar_modes = 4",
+                                                        "scalar_modes = 4\ncoefficients = \"dense\"") +
+                                                   initial);
+    const std::string freeCache = " --cache-dir " + (mDir / "free").string();
+    const RunResult inspect = run("inspect " + free.string() + freeCache + " --json");
+    ASSERT_EQ(inspect.status, 0) << inspect.err;
+    const auto j = nlohmann::json::parse(inspect.out);
+    EXPECT_EQ(j["coefficients"]["storage"], "none");
+    EXPECT_EQ(j["coefficients"]["stored"], 0);
+    EXPECT_GT(j["coefficients"]["quadrature_elements"].get<int>(), 0);
+
+    const std::string steps = " --steps 50 --dt 0.05 --integrator midpoint --csv";
+    const RunResult a = run("modes " + free.string() + freeCache + steps);
+    const RunResult b = run("modes " + dense.string() + " --cache-dir " + mCache.string() + steps);
+    ASSERT_EQ(a.status, 0) << a.err;
+    ASSERT_EQ(b.status, 0) << b.err;
+    const Csv got = parseCsv(a.out), want = parseCsv(b.out);
+    ASSERT_EQ(got.rows.size(), want.rows.size());
+    // The state's figures, not the solver's: without a cheap Jacobian the tensor-free midpoint
+    // rule iterates fixed points where the dense one runs Newton (iterations, residual).
+    const std::size_t stateColumns = 5;  // step, time, energy, enstrophy, cross_helicity
+    ASSERT_EQ(want.header.rfind("step,time,energy,enstrophy,cross_helicity,", 0), 0u) << want.header;
+    double worst = 0.0;
+    for (std::size_t r = 0; r < got.rows.size(); ++r)
+        for (std::size_t c = 0; c < stateColumns; ++c)
+            worst = std::max(worst, std::abs(got.rows[r][c] - want.rows[r][c]) /
+                                        std::max(1.0, std::abs(want.rows[r][c])));
+    EXPECT_LT(worst, 1e-10) << "largest difference in the modes table's state columns";
+
+    const RunResult device = run("modes " + free.string() + freeCache + steps + " --device vulkan");
+    ASSERT_EQ(device.status, 0) << device.err;
+    const std::vector<double> expected = csvEnergies(a.out), energies = csvEnergies(device.out);
+    ASSERT_EQ(energies.size(), expected.size());
+    for (std::size_t step = 0; step < energies.size(); ++step)
+        EXPECT_NEAR(energies[step] / expected[step], 1.0, 1e-5) << "step " << step << " on the device";
+}
+
+TEST_F(Cli, TensorFreeIsRefusedForClosedFormAndSurfaceBases) {
+    // A whole box with free-slip walls has closed-form bases: no columns, no vorticity quadrature.
+    const std::string box = "[grid]\nresolution = [4, 3, 3]\nbounds_min = [0.0, 0.0, 0.0]\n"
+                            "bounds_max = [1.0, 1.0, 1.0]\n[basis]\nvelocity_modes = 6\nscalar_modes = 1\n";
+    const fs::path free = scene("box_free.toml", box + "coefficients = \"tensor-free\"\n");
+    const std::string closedForm = "a whole box with free-slip walls gets closed-form bases";
+    expectRejected("precompute " + free.string() + " --cache-dir " + mCache.string(), closedForm);
+    // Its cache made by auto (sparse coefficients), then the scene asks for tensor-free: refused
+    // when the run loads the cache, on either backend.
+    const fs::path automatic = scene("box_auto.toml", box);
+    const RunResult made = run("precompute " + automatic.string() + " --cache-dir " + mCache.string());
+    ASSERT_EQ(made.status, 0) << made.err;
+    for (const char* device : {"cpu", "vulkan"}) {
+        const RunResult r = run("modes " + free.string() + " --steps 2 --csv --device " + device +
+                                " --cache-dir " + mCache.string());
+        EXPECT_NE(r.status, 0) << device;
+        EXPECT_NE(r.err.find("modeflow: error: [basis].coefficients = \"tensor-free\": a closed-form basis"),
+                  std::string::npos)
+            << device << ": " << r.err;
+    }
+
+    // A surface's coefficients are always assembled: refused when the scene is read.
+    std::ofstream(mDir / "tetrahedron.obj") << "v 1 1 1\nv 1 -1 -1\nv -1 1 -1\nv -1 -1 1\n"
+                                               "f 1 2 3\nf 1 4 2\nf 1 3 4\nf 2 4 3\n";
+    const fs::path surface = scene("surface_free.toml",
+                                   "[surface]\nmesh = \"tetrahedron.obj\"\n[basis]\nvelocity_modes = 2\n"
+                                   "scalar_modes = 1\ncoefficients = \"tensor-free\"\n");
+    fs::remove_all(mCache);
+    expectRejected("precompute " + surface.string() + " --cache-dir " + mCache.string(),
+                   "[basis].coefficients");
+    expectRejected("modes " + surface.string() + " --cache-dir " + mCache.string(),
+                   "always assembled (tensor-free advection runs on grid bases only)");
+}
+
 TEST_F(Cli, InspectSaysWhichAxesArePeriodic) {
     // A channel periodic along x: one harmonic field, the uniform flow along it.
     const fs::path s = scene("channel.toml", R"(
@@ -411,10 +487,15 @@ TEST_F(Cli, ModesRunsOnTheVulkanDeviceLikeTheCpuReference) {
     for (std::size_t step = 0; step < got.size(); ++step)
         EXPECT_NEAR(got[step] / expected[step], 1.0, 1e-5) << "step " << step;
 
-    const RunResult trapezoidal = run("modes " + s.string() + " --cache-dir " + mCache.string() +
-                                      " --steps 2 --integrator trapezoidal --device vulkan");
-    EXPECT_NE(trapezoidal.status, 0);
-    EXPECT_NE(trapezoidal.err.find("CPU reference only"), std::string::npos) << trapezoidal.err;
+    const std::string trapezoidal = " --cache-dir " + mCache.string() + " --steps 50 --dt 0.02 --integrator trapezoidal --csv";
+    const RunResult cpuTrapezoidal = run("modes " + s.string() + trapezoidal);
+    const RunResult gpuTrapezoidal = run("modes " + s.string() + trapezoidal + " --device vulkan");
+    ASSERT_EQ(cpuTrapezoidal.status, 0) << cpuTrapezoidal.err;
+    ASSERT_EQ(gpuTrapezoidal.status, 0) << gpuTrapezoidal.err;
+    const std::vector<double> wanted = csvEnergies(cpuTrapezoidal.out), energies = csvEnergies(gpuTrapezoidal.out);
+    ASSERT_EQ(energies.size(), wanted.size());
+    for (std::size_t step = 0; step < energies.size(); ++step)
+        EXPECT_NEAR(energies[step] / wanted[step], 1.0, 1e-5) << "trapezoidal, step " << step;
 }
 
 TEST_F(Cli, ModesStartsFromVorticesAndFromModalAmplitudes) {
@@ -486,6 +567,15 @@ TEST_F(Cli, ModesRunsMhdConservingEnergyAndCrossHelicity) {
     for (const auto& row : rows) {
         EXPECT_NEAR(row[2], rows[0][2], 1e-12);
         EXPECT_NEAR(row[4], rows[0][4], 1e-12) << "cross helicity";
+    }
+    const RunResult device = run("modes " + s.string() + " --cache-dir " + mCache.string() +
+                                 " --steps 100 --dt 0.05 --integrator midpoint --csv --device vulkan");
+    ASSERT_EQ(device.status, 0) << device.err;
+    const Csv onDevice = parseCsv(device.out);
+    ASSERT_EQ(onDevice.rows.size(), rows.size());
+    for (std::size_t step = 0; step < rows.size(); ++step) {
+        EXPECT_NEAR(onDevice.rows[step][2], rows[step][2], 1e-5) << "energy on the device, step " << step;
+        EXPECT_NEAR(onDevice.rows[step][4], rows[step][4], 1e-5) << "cross helicity on the device, step " << step;
     }
 }
 

@@ -38,27 +38,18 @@ protected:
 TEST_P(ShippedStirScene, StirsAFewFrames) {
     const SceneUnderTest s = sceneUnderTest(GetParam(), mDir / "reduced");
     std::cout << s.description << "\n";
-    int backends = 0;
-    for (const BackendVerdict& v : backendVerdicts(s.scene)) {
-        const fs::path shot = mDir / ("shot_" + v.option + ".png");
-        const std::string args = "stir " + s.file.string() + " --device " + v.option + " --frames " +
+    for (const std::string& backend : backendOptions()) {
+        const fs::path shot = mDir / ("shot_" + backend + ".png");
+        const std::string args = "stir " + s.file.string() + " --device " + backend + " --frames " +
                                  std::to_string(kFrames) + " --screenshot " + shot.string() + " --cache-dir " +
                                  mCache.string();
-        if (v.refusal) {
-            const RunResult r = run(args);
-            EXPECT_NE(r.status, 0) << args;
-            EXPECT_NE(r.err.find(*v.refusal), std::string::npos) << r.err;
-            continue;
-        }
-        ++backends;
         const RunResult r = run(args);
-        ASSERT_EQ(r.status, 0) << "stir --device " << v.option << ": " << r.err;
+        ASSERT_EQ(r.status, 0) << "stir --device " << backend << ": " << r.err;
         EXPECT_NE(r.err.find(std::to_string(kFrames) + " frames ("), std::string::npos) << r.err;
         const std::optional<PngPixels> png = readPng(shot);
         ASSERT_TRUE(png) << "no screenshot at " << shot;
         EXPECT_GT(png->width * png->height, 0);
     }
-    EXPECT_GT(backends, 0) << "no backend stirs " << GetParam();
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, ShippedStirScene, ::testing::ValuesIn(stirScenes()),

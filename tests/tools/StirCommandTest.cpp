@@ -32,8 +32,6 @@ TEST_F(StirCommand, BadScriptsAreRefusedBeforeAnyWork) {
                    (mDir / "missing.txt").string() + ": no such input script");
     expectRejected("stir " + s.string() + " --device gpu --cache-dir " + mCache.string(),
                    "--device gpu");
-    const fs::path mhd = scene("mhd.toml", std::string(kSmallDisk) + "[simulation]\nmhd = true\n");
-    expectRejected("stir " + mhd.string() + " --cache-dir " + mCache.string(), "[simulation].mhd");
 }
 
 }  // namespace

@@ -58,11 +58,15 @@ nlohmann::ordered_json summarize(const BasisCache& c, const std::filesystem::pat
                    {"orthonormality_error", checks.scalarOrthonormality},
                    {"checked_modes", checks.scalarChecked}};
     const auto& co = c.coefficients;
-    const bool dense = co.storage == BasisCache::Coefficients::Storage::Dense;
+    using Storage = BasisCache::Coefficients::Storage;
+    const char* storage = co.storage == Storage::Dense    ? "dense"
+                          : co.storage == Storage::Sparse ? "sparse"
+                                                          : "none";
     j["coefficients"] = {
-        {"storage", dense ? "dense" : "sparse"},
+        {"storage", storage},
         {"modes", c.velocity.eigenvalues.size()},
-        {"stored", dense ? co.packed.size() : co.value.size()},
+        {"stored", co.storage == Storage::Dense ? co.packed.size() : co.value.size()},
+        {"quadrature_elements", c.quadrature.curl.rows()},
         {"density", co.density},
         // Only k < j is stored; C[j][i][k] = −C[k][i][j] is implied, so exactly antisymmetric.
         {"antisymmetry_error", 0.0}};
@@ -151,8 +155,12 @@ void printText(const nlohmann::ordered_json& j) {
     std::cout << "scalar     " << s["count"] << " " << s["boundary"].get<std::string>() << " modes, "
               << s["source"].get<std::string>() << ", μ² = " << list(s["eigenvalues"]) << "\n";
     const auto& co = j["coefficients"];
-    std::cout << "C          " << co["storage"].get<std::string>() << ", " << co["stored"]
-              << " stored entries (density " << co["density"].get<double>() << ")\n";
+    if (co["storage"] == "none")
+        std::cout << "C          none stored (tensor-free), quadrature of "
+                  << co["quadrature_elements"] << " vorticity elements\n";
+    else
+        std::cout << "C          " << co["storage"].get<std::string>() << ", " << co["stored"]
+                  << " stored entries (density " << co["density"].get<double>() << ")\n";
     std::cout << "timings   ";
     for (const auto& [stage, seconds] : j["timings"].items())
         std::cout << " " << stage << " " << std::fixed << std::setprecision(2)

@@ -47,10 +47,9 @@ Command addModes(CLI::App& app) {
         // Checked before any precompute work.
         const BackendChoice choice = parseDeviceOption(opts->device);
         const SceneSpec scene = loadScene(opts->scene);
-        std::optional<Integrator> integratorOption;
-        if (opts->integrator) integratorOption = parseIntegrator(*opts->integrator, "--integrator");
-        const Integrator scheme = integratorOption.value_or(scene.simulation.integrator);
-        requireSupport(scene, choice.kind, integratorOption);
+        requireSupport(scene, choice.kind);
+        const Integrator scheme = opts->integrator ? parseIntegrator(*opts->integrator, "--integrator")
+                                                   : scene.simulation.integrator;
         const Backend backend(choice);
         std::cerr << backend.describe();
         Progress progress = Progress::toStderr();
