@@ -17,14 +17,16 @@ double orthonormalityError(const Eigen::MatrixXd& modes, const Eigen::VectorXd& 
 
 /// The columns a check reads: the stored ones, or the sampled closed-form modes materialized.
 template <typename Materialize>
-Eigen::MatrixXd checkedColumns(const Eigen::MatrixXd& stored, const std::vector<SeparableMode>& separable,
-                               std::int64_t dofs, Materialize&& materialize, int& checked) {
+Eigen::MatrixXd checkedColumns(const Eigen::MatrixXd& stored,
+                               const std::vector<SeparableMode>& separable, std::int64_t dofs,
+                               Materialize&& materialize, int& checked) {
     if (separable.empty() || stored.cols() == Eigen::Index(separable.size())) {
         checked = int(stored.cols());
         return stored;
     }
     std::vector<SeparableMode> picked;
-    for (int m : checkedModes(dofs, int(separable.size()))) picked.push_back(separable[std::size_t(m)]);
+    for (int m : checkedModes(dofs, int(separable.size())))
+        picked.push_back(separable[std::size_t(m)]);
     checked = int(picked.size());
     return materialize(picked);
 }
@@ -50,11 +52,15 @@ BasisChecks checkBasis(const BasisCache& cache) {
     BasisChecks checks;
     const Eigen::MatrixXd velocity = checkedColumns(
         cache.velocity.modes, cache.velocity.separable, std::int64_t(cache.faces.size()),
-        [&](const std::vector<SeparableMode>& m) { return velocityModeFluxes(cache.grid, cache.faces, m); },
+        [&](const std::vector<SeparableMode>& m) {
+            return velocityModeFluxes(cache.grid, cache.faces, m);
+        },
         checks.velocityChecked);
     const Eigen::MatrixXd scalar = checkedColumns(
         cache.scalar.modes, cache.scalar.separable, std::int64_t(cache.scalar.cells.size()),
-        [&](const std::vector<SeparableMode>& m) { return scalarModeValues(cache.grid, cache.scalar.cells, m); },
+        [&](const std::vector<SeparableMode>& m) {
+            return scalarModeValues(cache.grid, cache.scalar.cells, m);
+        },
         checks.scalarChecked);
     checks.velocityOrthonormality = orthonormalityError(velocity, cache.faceStar);
     checks.scalarOrthonormality = orthonormalityError(scalar, cache.scalar.cellStar);
@@ -62,13 +68,15 @@ BasisChecks checkBasis(const BasisCache& cache) {
         // The net flux into every triangle, through d1 rebuilt from the stored mesh.
         const SurfaceTopology topology = checkClosedSurface(cache.surface.mesh, "cached surface");
         if (topology.edges != cache.surface.edges)
-            throw Error("the cached surface's edges do not match its triangles; rerun precompute with --force");
+            throw Error(
+                "the cached surface's edges do not match its triangles; rerun precompute with "
+                "--force");
         const SurfaceDec dec = buildSurfaceDec(cache.surface.mesh, topology);
         for (Eigen::Index m = 0; m < velocity.cols(); ++m) {
             const double size = velocity.col(m).cwiseAbs().maxCoeff();
             if (size > 0.0)
-                checks.maxDivergence =
-                    std::max(checks.maxDivergence, (dec.d1 * velocity.col(m)).cwiseAbs().maxCoeff() / size);
+                checks.maxDivergence = std::max(
+                    checks.maxDivergence, (dec.d1 * velocity.col(m)).cwiseAbs().maxCoeff() / size);
         }
         return checks;
     }

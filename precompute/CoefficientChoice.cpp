@@ -14,27 +14,31 @@ namespace modeflow {
 TensorChoice chooseTensor(CoefficientStorage requested, int modes, std::int64_t velocityDofs) {
     if (requested != CoefficientStorage::Auto) {
         const bool assemble = requested != CoefficientStorage::TensorFree;
-        return {assemble, "[basis].coefficients = \"" + std::string(sceneKeyword(requested)) + "\""};
+        return {assemble,
+                "[basis].coefficients = \"" + std::string(sceneKeyword(requested)) + "\""};
     }
     const double n = modes;
     const double tensorBytes = n * n * (n - 1.0) / 2.0 * 8.0;
-    if (const auto available = availableMemory(); available && tensorBytes > 0.25 * double(*available))
-        return {false, "auto: the tensor's " + memoryText(tensorBytes) + " exceed a quarter of the " +
-                           memoryText(double(*available)) + " available (a run holds it up to three times)"};
+    if (const auto available = availableMemory();
+        available && tensorBytes > 0.25 * double(*available))
+        return {false, "auto: the tensor's " + memoryText(tensorBytes) +
+                           " exceed a quarter of the " + memoryText(double(*available)) +
+                           " available (a run holds it up to three times)"};
     // Values streamed per evaluation, weighted by their measured cost: N²(N−1)/2 coefficients
     // against 2·V·N basis values.
-    const double tensorCost = n * n * (n - 1.0) / 2.0, freeCost = kTensorFreeValueCost * 2.0 * double(velocityDofs) * n;
+    const double tensorCost = n * n * (n - 1.0) / 2.0,
+                 freeCost = kTensorFreeValueCost * 2.0 * double(velocityDofs) * n;
     std::ostringstream why;
     why.precision(3);
     const bool assemble = tensorCost <= freeCost;
-    why << "auto: the " << (assemble ? "tensor" : "tensor-free advection") << " streams fewer values per step ("
-        << tensorCost << " coefficients against " << freeCost << " weighted basis values for " << modes
-        << " modes on " << velocityDofs << " faces)";
+    why << "auto: the " << (assemble ? "tensor" : "tensor-free advection")
+        << " streams fewer values per step (" << tensorCost << " coefficients against " << freeCost
+        << " weighted basis values for " << modes << " modes on " << velocityDofs << " faces)";
     return {assemble, why.str()};
 }
 
-BasisCache::Coefficients storedCoefficients(CoefficientStorage requested, std::vector<double> packed,
-                                            int modes) {
+BasisCache::Coefficients storedCoefficients(CoefficientStorage requested,
+                                            std::vector<double> packed, int modes) {
     BasisCache::Coefficients c;
     double largest = 0.0;
     for (double x : packed) largest = std::max(largest, std::abs(x));
@@ -68,7 +72,8 @@ BasisCache::Coefficients storedCoefficients(CoefficientStorage requested, std::v
 bool completeCoefficients(BasisCache& cache, CoefficientStorage requested, Progress& progress) {
     const bool wanted =
         requested == CoefficientStorage::Dense || requested == CoefficientStorage::Sparse;
-    if (!wanted || cache.coefficients.storage != BasisCache::Coefficients::Storage::None) return false;
+    if (!wanted || cache.coefficients.storage != BasisCache::Coefficients::Storage::None)
+        return false;
     progress.begin("structural coefficients");
     const int modes = int(cache.velocity.modes.cols());
     cache.coefficients = storedCoefficients(

@@ -31,7 +31,8 @@ inline constexpr double kTensorFreeValueCost = 1.5;
 /// Whether a precompute assembles a tensor, and why, in words for its output.
 struct TensorChoice {
     bool assemble = true;
-    std::string reason;  ///< e.g. "auto: the tensor-free advection streams fewer values per step (…)"
+    std::string
+        reason;  ///< e.g. "auto: the tensor-free advection streams fewer values per step (…)"
 };
 
 /// The choice of a precompute with `requested` storage for `modes` velocity modes on
@@ -40,8 +41,8 @@ TensorChoice chooseTensor(CoefficientStorage requested, int modes, std::int64_t 
 
 /// The coefficients a cache stores for `requested` from the packed k < j tensor: dense or
 /// sparse as requested, or by density for auto (entries below 1e-12 · max |C| count as zero).
-BasisCache::Coefficients storedCoefficients(CoefficientStorage requested, std::vector<double> packed,
-                                            int modes);
+BasisCache::Coefficients storedCoefficients(CoefficientStorage requested,
+                                            std::vector<double> packed, int modes);
 
 /// A cache assembled without a tensor that is now wanted dense or sparse gets one, assembled from
 /// its quadrature and modes (a "structural coefficients" stage on `progress`); true when it did.

@@ -29,8 +29,8 @@ struct Counts {
     double kept = 0.0;           ///< velocity modes stored
     double scalarModes = 0.0;    ///< scalar modes stored
     double scalarRequest = 0.0;  ///< scalar eigenpairs computed (the first Neumann ones at least)
-    bool tensor = true;          ///< structural coefficients assembled (precompute/CoefficientChoice.h)
-    bool closedForm = false;     ///< whole box, free slip: descriptors and sparse coefficients
+    bool tensor = true;  ///< structural coefficients assembled (precompute/CoefficientChoice.h)
+    bool closedForm = false;  ///< whole box, free slip: descriptors and sparse coefficients
 };
 
 /// Spectra's Krylov dimension (precompute/solve/ShiftInvertEigensolver.cpp).
@@ -84,8 +84,8 @@ Peak peakOf(const Counts& c) {
         {resident + eigensolveBytes(c.dim, c.scalar, c.scalarRequest, false), "scalar eigensolve"},
         {resident + scalarModes + eigensolveBytes(c.dim, c.velocity, c.highest, true),
          "velocity eigensolve"},
-        {resident + scalarModes + 2.0 * c.velocity * c.kept * 8.0 + 1.6 * packed + 2.0 * quadrature +
-             elements * (3.0 * c.kept + 256.0) * 8.0,
+        {resident + scalarModes + 2.0 * c.velocity * c.kept * 8.0 + 1.6 * packed +
+             2.0 * quadrature + elements * (3.0 * c.kept + 256.0) * 8.0,
          "structural coefficients"},
         {3.0 * cache, "write cache"}};
     Peak peak = *std::max_element(std::begin(stages), std::end(stages),
@@ -155,7 +155,8 @@ PrecomputeMemory estimateSurfaceMemory(const SceneSpec& scene) {
     memory.scalarDofs = std::int64_t(v);
     const bool solveIsLarger = eigensolve > coefficients;
     memory.peakStage = solveIsLarger ? "surface eigensolve" : "structural coefficients";
-    memory.peakBytes = 1.15 * (40.0 * 1024 * 1024 + std::max(eigensolve, coefficients) + 3.0 * v * m * 8.0);
+    memory.peakBytes =
+        1.15 * (40.0 * 1024 * 1024 + std::max(eigensolve, coefficients) + 3.0 * v * m * 8.0);
     memory.gridBytes = memory.peakBytes;
     return memory;
 }
@@ -179,7 +180,9 @@ PrecomputeMemory estimatePrecomputeMemory(const SceneSpec& scene) {
     // One constant per component is computed and dropped; the first Neumann modes always are.
     c.scalarRequest = std::max(basis.scalarModes, 1) + 1;
     c.closedForm = hasClosedFormVelocity(scene);
-    c.tensor = c.closedForm || chooseTensor(basis.coefficients, basis.velocityCount(), std::int64_t(c.velocity)).assemble;
+    c.tensor =
+        c.closedForm ||
+        chooseTensor(basis.coefficients, basis.velocityCount(), std::int64_t(c.velocity)).assemble;
 
     PrecomputeMemory memory;
     memory.velocityDofs = std::int64_t(c.velocity);
@@ -201,9 +204,11 @@ PrecomputeMemory requirePrecomputeMemory(const SceneSpec& scene) {
     const std::optional<std::uint64_t> available = availableMemory();
     if (scene.isSurface()) {
         requireMemory(memory.peakBytes,
-                      "[surface].mesh with " + std::to_string(memory.scalarDofs) + " vertices and velocity modes up to " +
+                      "[surface].mesh with " + std::to_string(memory.scalarDofs) +
+                          " vertices and velocity modes up to " +
                           std::to_string(scene.basis.highestVelocityMode()),
-                      "the precompute (" + memory.peakStage + ")", "use a coarser mesh or fewer modes in [basis]");
+                      "the precompute (" + memory.peakStage + ")",
+                      "use a coarser mesh or fewer modes in [basis]");
         return memory;
     }
     std::string subject = gridResolutionText(scene.grid);

@@ -19,9 +19,10 @@
 /// plus the scalar modes (3 copies of S·M·8) and 40 MiB for the program itself, the largest
 /// stage times 1.15. A closed-form precompute (whole box, free slip) solves and measures nothing:
 /// its peak is the DOF arrays and the sparse coefficients, 20 bytes per estimated non-zero
-/// (estimatedClosedFormNonZeros), assembled in place and streamed to the cache. Against measured peaks (VmHWM; 2D disks 128²–512² with 50–200 modes, 3D
-/// balls 32³–64³ with 100–200 modes, a 32³ box) the model with the exact DOF counts is 0.92–1.17
-/// of the peak; the estimate, with sampled DOF counts and the margin, 1.07–1.40.
+/// (estimatedClosedFormNonZeros), assembled in place and streamed to the cache. Against measured
+/// peaks (VmHWM; 2D disks 128²–512² with 50–200 modes, 3D balls 32³–64³ with 100–200 modes, a 32³
+/// box) the model with the exact DOF counts is 0.92–1.17 of the peak; the estimate, with sampled
+/// DOF counts and the margin, 1.07–1.40.
 
 #include <cstdint>
 #include <string>
@@ -35,7 +36,8 @@ struct PrecomputeMemory {
     std::int64_t scalarDofs = 0;    ///< estimated cells of Ω
     double peakBytes = 0.0;         ///< the largest stage
     std::string peakStage;
-    bool tensor = true;  ///< the structural coefficients are assembled (precompute/CoefficientChoice.h)
+    bool tensor =
+        true;  ///< the structural coefficients are assembled (precompute/CoefficientChoice.h)
     /// The peak with one velocity mode and no scalar modes: what only a coarser grid can lower.
     double gridBytes = 0.0;
 };

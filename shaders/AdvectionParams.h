@@ -35,7 +35,7 @@ struct AdvectionGatherParams {
 #ifdef __cplusplus
 static_assert(sizeof(AdvectionSampleParams) == 16 && sizeof(AdvectionGatherParams) == 16,
               "push constants are padded to 16 bytes");
-}  /* namespace modeflow::shaders */
+} /* namespace modeflow::shaders */
 #endif
 
 #endif

@@ -1,7 +1,7 @@
 /* ModalStepParams.h: push constants of the modal step kernels (modal_pair_sums.comp,
-   modal_pair_sums_sparse.comp, modal_combine.comp, modal_update.comp), shared by C++ and GLSL (ASCII, no C++-only
-   syntax outside the __cplusplus blocks, so glslang reads it too). Each is padded to a multiple of
-   16 bytes so the std430 push-constant layout and the C++ layout agree. */
+   modal_pair_sums_sparse.comp, modal_combine.comp, modal_update.comp), shared by C++ and GLSL
+   (ASCII, no C++-only syntax outside the __cplusplus blocks, so glslang reads it too). Each is
+   padded to a multiple of 16 bytes so the std430 push-constant layout and the C++ layout agree. */
 #ifndef MODEFLOW_SHADERS_MODAL_STEP_PARAMS_H
 #define MODEFLOW_SHADERS_MODAL_STEP_PARAMS_H
 
@@ -19,7 +19,8 @@ using uint = std::uint32_t;
 /* One chunk of the dense packed coefficients: rows (pairs k < j) firstPair ... firstPair +
    pairCount - 1, each N floats (engine/core/PackedLayout.h), in tiles of PAIR_TILE_ROWS rows. */
 struct PairSumsParams {
-    uint rowOctets;  /* 8-float octets per row: N rounded up to a multiple of 8, over 8 (zero-padded) */
+    uint rowOctets; /* 8-float octets per row: N rounded up to a multiple of 8, over 8 (zero-padded)
+                     */
     uint firstPair;
     uint pairCount;
     uint pad0;
@@ -48,7 +49,7 @@ struct CombineParams {
    (modal_advect_dense.comp), then their sum (modal_advect_sum.comp). Sparse: one gather per i over
    the entries of column i (modal_advect_sparse.comp). */
 struct AdvectDenseParams {
-    uint rowOctets;     /* as PairSumsParams */
+    uint rowOctets; /* as PairSumsParams */
     uint firstPair;
     uint pairCount;
     uint firstGroup;    /* the chunk's first row of partial sums */
@@ -71,20 +72,21 @@ struct AdvectSumParams {
 #define MODAL_OP_RK4_STAGE 2u    /* stage `stage` (0..3) of classical RK4 */
 #define MODAL_OP_MIDPOINT 3u     /* one fixed-point iteration of the midpoint rule */
 #define MODAL_OP_MIDPOINT_END 4u /* x = 2 y - x, half decay; no r */
-#define MODAL_OP_TRAPEZOIDAL_START 5u /* r0 = R(x) kept, y = x + h M^-1 (r0 + f) (explicit predictor) */
-#define MODAL_OP_TRAPEZOIDAL 6u       /* one fixed-point iteration of the trapezoidal rule */
-#define MODAL_OP_TRAPEZOIDAL_END 7u   /* x = y, half decay; no r */
+#define MODAL_OP_TRAPEZOIDAL_START \
+    5u                          /* r0 = R(x) kept, y = x + h M^-1 (r0 + f) (explicit predictor) */
+#define MODAL_OP_TRAPEZOIDAL 6u /* one fixed-point iteration of the trapezoidal rule */
+#define MODAL_OP_TRAPEZOIDAL_END 7u /* x = y, half decay; no r */
 
 struct ModalUpdateParams {
     uint n;
     uint op;
-    uint stage;          /* RK4 stage */
-    uint argumentCount;  /* indirect dispatches the implicit iterations switch off */
-    float h;             /* step */
-    float tolerance;     /* implicit rules: relative max-norm change of y that counts as converged */
-    uint stride;         /* floats per part of the state (n padded) */
-    uint parts;          /* 1: the fluid's v; 2: MHD's [v; F], each part at a multiple of stride */
-    uint lorentz;        /* MHD: subtract r[2 stride + k] (C(F, F)) from the velocity part of r */
+    uint stage;         /* RK4 stage */
+    uint argumentCount; /* indirect dispatches the implicit iterations switch off */
+    float h;            /* step */
+    float tolerance;    /* implicit rules: relative max-norm change of y that counts as converged */
+    uint stride;        /* floats per part of the state (n padded) */
+    uint parts;         /* 1: the fluid's v; 2: MHD's [v; F], each part at a multiple of stride */
+    uint lorentz;       /* MHD: subtract r[2 stride + k] (C(F, F)) from the velocity part of r */
     uint pad0;
     uint pad1;
     uint pad2;
@@ -92,18 +94,19 @@ struct ModalUpdateParams {
 
 /* The status block modal_update.comp keeps for the host. */
 struct ModalStatus {
-    uint iterations;   /* implicit (midpoint, trapezoidal) iterations of the current (last) step */
-    uint unconverged;  /* implicit steps so far that hit the iteration limit */
-    float residual;    /* last relative change of y */
-    uint converged;    /* 1 once the current step's iteration converged */
+    uint iterations;  /* implicit (midpoint, trapezoidal) iterations of the current (last) step */
+    uint unconverged; /* implicit steps so far that hit the iteration limit */
+    float residual;   /* last relative change of y */
+    uint converged;   /* 1 once the current step's iteration converged */
 };
 
 #ifdef __cplusplus
-static_assert(sizeof(PairSumsParams) == 16 && sizeof(SparsePairSumsParams) == 16 && sizeof(CombineParams) == 16 &&
-              sizeof(AdvectDenseParams) == 32 && sizeof(AdvectSumParams) == 16 &&
-              sizeof(ModalUpdateParams) == 48 && sizeof(ModalStatus) == 16,
+static_assert(sizeof(PairSumsParams) == 16 && sizeof(SparsePairSumsParams) == 16 &&
+                  sizeof(CombineParams) == 16 && sizeof(AdvectDenseParams) == 32 &&
+                  sizeof(AdvectSumParams) == 16 && sizeof(ModalUpdateParams) == 48 &&
+                  sizeof(ModalStatus) == 16,
               "push constants are padded to 16 bytes");
-}  /* namespace modeflow::shaders */
+} /* namespace modeflow::shaders */
 #endif
 
 #endif

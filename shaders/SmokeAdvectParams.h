@@ -15,8 +15,9 @@ using uint = std::uint32_t;
 /* What one smoke_advect kernel computes (SMOKE_STAGE, fixed at compile time). */
 #define SMOKE_STAGE_SEMI_LAGRANGIAN 0    /* out = SL(in) + emitters */
 #define SMOKE_STAGE_MACCORMACK_FORWARD 1 /* hat = SL(in), and the record of the cell */
-#define SMOKE_STAGE_MACCORMACK_CORRECT 2 /* out = clamp(hat + (in - SL_-dt(hat)) / 2) + emitters \
-                                          */
+#define SMOKE_STAGE_MACCORMACK_CORRECT                        \
+    2 /* out = clamp(hat + (in - SL_-dt(hat)) / 2) + emitters \
+       */
 
 /* A fluid cell of the list the advection runs over: one 16-byte texel, x | y << 16 (so at most
    65535 cells along x and y), z, and the cell's emitters' density and temperature rates (floats).

@@ -6,12 +6,12 @@
 #include <numeric>
 #include <string>
 
-#include "engine/dynamics/DenseCoefficients.h"
+#include "engine/core/Error.h"
 #include "engine/core/PackedLayout.h"
+#include "engine/device/ModalKernels.h"
+#include "engine/dynamics/DenseCoefficients.h"
 #include "engine/dynamics/SparseCoefficients.h"
 #include "engine/dynamics/TensorFreeCoefficients.h"
-#include "engine/core/Error.h"
-#include "engine/device/ModalKernels.h"
 #include "engine/vulkan/CommandSequence.h"
 #include "engine/vulkan/VulkanContext.h"
 #include "shaders/ModalStepParams.h"
@@ -37,8 +37,9 @@ std::uint32_t groupsFor(std::size_t items, std::size_t perGroup, std::uint32_t m
 }  // namespace
 
 DeviceCoefficients::DeviceCoefficients(const vulkan::VulkanContext& context,
-                                       const StructuralCoefficients& coefficients, const BasisCache* cache,
-                                       const ModeBuffer* modes, bool advection)
+                                       const StructuralCoefficients& coefficients,
+                                       const BasisCache* cache, const ModeBuffer* modes,
+                                       bool advection)
     : mN(coefficients.size()),
       mSubgroupsPerGroup(std::max(1u, 64u / context.subgroupSize())),
       mMaxGroups(context.properties().limits.maxComputeWorkGroupCount[0]) {
@@ -46,7 +47,8 @@ DeviceCoefficients::DeviceCoefficients(const vulkan::VulkanContext& context,
     const std::size_t n = std::size_t(mN);
     if (dynamic_cast<const TensorFreeCoefficients*>(&coefficients)) {
         if (!cache || cache->velocity.modes.cols() != mN)
-            throw Error("modal contraction: tensor-free coefficients on the device need their basis cache");
+            throw Error(
+                "modal contraction: tensor-free coefficients on the device need their basis cache");
         mTensorFree.emplace(context, *cache, modes);
         mStreamedBytes = mTensorFree->streamedBytes();
         return;
@@ -78,8 +80,9 @@ DeviceCoefficients::DeviceCoefficients(const vulkan::VulkanContext& context,
                     values[((tile * rowOctets + i / 8) * kPairTileRows + j) * 8 + i % 8] =
                         float(packed[(first + r) * n + i]);
             }
-            mChunks.push_back({vulkan::DeviceBuffer::fromValues<float>(context, values, "coefficients"),
-                               std::uint32_t(first), std::uint32_t(rows)});
+            mChunks.push_back(
+                {vulkan::DeviceBuffer::fromValues<float>(context, values, "coefficients"),
+                 std::uint32_t(first), std::uint32_t(rows)});
         }
         mStreamedBytes = pairCount(n) * rowBytes;
         if (advection) mDenseAdvection.emplace(denseAdvection(context));
@@ -92,7 +95,8 @@ DeviceCoefficients::DeviceCoefficients(const vulkan::VulkanContext& context,
         mStreamedBytes = (sparse->nonZeros() + sparse->pairK().size()) * 8;
         if (advection) mSparseColumns.emplace(sparseColumns(context, *sparse));
     } else {
-        throw Error("modal contraction: the device takes dense, sparse or tensor-free coefficients only");
+        throw Error(
+            "modal contraction: the device takes dense, sparse or tensor-free coefficients only");
     }
 }
 
@@ -135,8 +139,8 @@ DeviceCoefficients::SparseRows DeviceCoefficients::slicedRows(const vulkan::Vulk
             std::uint32_t(rows)};
 }
 
-DeviceCoefficients::SparseColumns DeviceCoefficients::sparseColumns(const vulkan::VulkanContext& context,
-                                                                   const SparseCoefficients& sparse) {
+DeviceCoefficients::SparseColumns DeviceCoefficients::sparseColumns(
+    const vulkan::VulkanContext& context, const SparseCoefficients& sparse) {
     const std::size_t n = std::size_t(sparse.size());
     std::vector<std::uint32_t> start(n + 1, 0u);
     for (int i : sparse.columns()) ++start[std::size_t(i) + 1];
@@ -151,10 +155,12 @@ DeviceCoefficients::SparseColumns DeviceCoefficients::sparseColumns(const vulkan
             entries[at + 2] = std::bit_cast<std::uint32_t>(float(sparse.values()[t]));
         }
     return {vulkan::DeviceBuffer::fromValues<std::uint32_t>(context, start, "sparse column starts"),
-            vulkan::DeviceBuffer::fromValues<std::uint32_t>(context, entries, "sparse entries by column")};
+            vulkan::DeviceBuffer::fromValues<std::uint32_t>(context, entries,
+                                                            "sparse entries by column")};
 }
 
-DeviceCoefficients::DenseAdvection DeviceCoefficients::denseAdvection(const vulkan::VulkanContext& context) const {
+DeviceCoefficients::DenseAdvection DeviceCoefficients::denseAdvection(
+    const vulkan::VulkanContext& context) const {
     // Up to kGroups groups of tiles per chunk: enough partial rows to keep a device busy, few
     // enough that their sum is short.
     constexpr std::uint32_t kGroups = 64;
@@ -168,8 +174,10 @@ DeviceCoefficients::DenseAdvection DeviceCoefficients::denseAdvection(const vulk
         rows += groups;
     }
     const std::size_t n = std::size_t(mN);
-    return {vulkan::DeviceBuffer::fromValues<float>(context, std::vector<float>(pairCount(n), 0.0f), "pair weights"),
-            vulkan::DeviceBuffer(context, VkDeviceSize(rows) * paddedSize(mN) * sizeof(float), "advection partial sums"),
+    return {vulkan::DeviceBuffer::fromValues<float>(context, std::vector<float>(pairCount(n), 0.0f),
+                                                    "pair weights"),
+            vulkan::DeviceBuffer(context, VkDeviceSize(rows) * paddedSize(mN) * sizeof(float),
+                                 "advection partial sums"),
             std::move(chunks), rows};
 }
 
@@ -180,14 +188,17 @@ std::vector<std::uint32_t> DeviceCoefficients::advectGroups() const {
         throw Error("modal advection: the coefficients were uploaded without what advect needs");
     std::vector<std::uint32_t> groups{groupsFor(std::size_t(mN), 64, mMaxGroups)};
     for (const AdvectionGroups& chunk : mDenseAdvection->chunks)
-        groups.push_back(groupsFor(std::size_t(chunk.groups) * (paddedSize(mN) / 8), 64, mMaxGroups));
+        groups.push_back(
+            groupsFor(std::size_t(chunk.groups) * (paddedSize(mN) / 8), 64, mMaxGroups));
     groups.push_back(groupsFor(std::size_t(mN), 64, mMaxGroups));
     return groups;
 }
 
-void DeviceCoefficients::recordAdvect(vulkan::CommandSequence& sequence, const ModalKernels& kernels,
-                                      const vulkan::DeviceBuffer& u, const vulkan::DeviceBuffer& x,
-                                      const vulkan::DeviceBuffer& out, IndirectArguments indirect) const {
+void DeviceCoefficients::recordAdvect(vulkan::CommandSequence& sequence,
+                                      const ModalKernels& kernels, const vulkan::DeviceBuffer& u,
+                                      const vulkan::DeviceBuffer& x,
+                                      const vulkan::DeviceBuffer& out,
+                                      IndirectArguments indirect) const {
     requireFloats(u, int(paddedSize(mN)));
     requireFloats(x, int(paddedSize(mN)));
     requireFloats(out, mN);
@@ -198,30 +209,34 @@ void DeviceCoefficients::recordAdvect(vulkan::CommandSequence& sequence, const M
     const std::vector<std::uint32_t> groups = advectGroups();
     const auto n = std::uint32_t(mN);
     if (mSparseColumns) {
-        const std::array<const vulkan::DeviceBuffer*, 5> buffers{&mSparseColumns->start, &mSparseColumns->entries, &u,
-                                                                 &x, &out};
-        indirect.dispatch(sequence, kernels.advectSparse, buffers, shaders::CombineParams{n, 0, 0, 0}, groups[0]);
+        const std::array<const vulkan::DeviceBuffer*, 5> buffers{
+            &mSparseColumns->start, &mSparseColumns->entries, &u, &x, &out};
+        indirect.dispatch(sequence, kernels.advectSparse, buffers,
+                          shaders::CombineParams{n, 0, 0, 0}, groups[0]);
         return;
     }
     std::uint32_t d = 0;
-    const std::array<const vulkan::DeviceBuffer*, 3> weightBuffers{&u, &x, &mDenseAdvection->weights};
-    indirect.after(d).dispatch(sequence, kernels.pairWeights, weightBuffers, shaders::CombineParams{n, 0, 0, 0},
-                               groups[d]);
+    const std::array<const vulkan::DeviceBuffer*, 3> weightBuffers{&u, &x,
+                                                                   &mDenseAdvection->weights};
+    indirect.after(d).dispatch(sequence, kernels.pairWeights, weightBuffers,
+                               shaders::CombineParams{n, 0, 0, 0}, groups[d]);
     ++d;
     const auto octets = std::uint32_t(paddedSize(mN) / 8);
     for (std::size_t c = 0; c < mChunks.size(); ++c) {
         const AdvectionGroups& g = mDenseAdvection->chunks[c];
-        const std::array<const vulkan::DeviceBuffer*, 3> buffers{&mChunks[c].values, &mDenseAdvection->weights,
-                                                                 &mDenseAdvection->partial};
-        indirect.after(d).dispatch(sequence, kernels.advectDense, buffers,
-                                   shaders::AdvectDenseParams{octets, mChunks[c].firstPair, mChunks[c].pairs,
-                                                              g.firstGroup, g.tilesPerGroup, g.groups, 0, 0},
-                                   groups[d]);
+        const std::array<const vulkan::DeviceBuffer*, 3> buffers{
+            &mChunks[c].values, &mDenseAdvection->weights, &mDenseAdvection->partial};
+        indirect.after(d).dispatch(
+            sequence, kernels.advectDense, buffers,
+            shaders::AdvectDenseParams{octets, mChunks[c].firstPair, mChunks[c].pairs, g.firstGroup,
+                                       g.tilesPerGroup, g.groups, 0, 0},
+            groups[d]);
         ++d;
     }
     const std::array<const vulkan::DeviceBuffer*, 2> sumBuffers{&mDenseAdvection->partial, &out};
     indirect.after(d).dispatch(sequence, kernels.advectSum, sumBuffers,
-                               shaders::AdvectSumParams{n, mDenseAdvection->rows, 8 * octets, 0}, groups[d]);
+                               shaders::AdvectSumParams{n, mDenseAdvection->rows, 8 * octets, 0},
+                               groups[d]);
 }
 
 std::vector<std::uint32_t> DeviceCoefficients::dispatchGroups(bool sameVectors) const {
@@ -237,7 +252,8 @@ std::vector<std::uint32_t> DeviceCoefficients::dispatchGroups(bool sameVectors) 
 
 void DeviceCoefficients::recordApply(vulkan::CommandSequence& sequence, const ModalKernels& kernels,
                                      const vulkan::DeviceBuffer& a, const vulkan::DeviceBuffer& b,
-                                     const vulkan::DeviceBuffer& out, IndirectArguments indirect) const {
+                                     const vulkan::DeviceBuffer& out,
+                                     IndirectArguments indirect) const {
     requireFloats(a, int(paddedSize(mN)));
     requireFloats(b, mN);
     requireFloats(out, mN);
@@ -248,14 +264,15 @@ void DeviceCoefficients::recordApply(vulkan::CommandSequence& sequence, const Mo
     const std::vector<std::uint32_t> groups = dispatchGroups(&a == &b);
     std::uint32_t d = 0;
     const auto dispatch = [&](const vulkan::ComputeKernel& kernel,
-                              std::span<const vulkan::DeviceBuffer* const> buffers, const auto& params) {
+                              std::span<const vulkan::DeviceBuffer* const> buffers,
+                              const auto& params) {
         indirect.after(d).dispatch(sequence, kernel, buffers, params, groups[d]);
         ++d;
     };
     const auto n = std::uint32_t(mN);
     if (mSparse) {
-        const std::array<const vulkan::DeviceBuffer*, 4> buffers{&mSparse->rows, &mSparse->entries, &a,
-                                                         &*mPairSums};
+        const std::array<const vulkan::DeviceBuffer*, 4> buffers{&mSparse->rows, &mSparse->entries,
+                                                                 &a, &*mPairSums};
         dispatch(kernels.sparsePairSums, buffers,
                  shaders::SparsePairSumsParams{n, mSparse->rowCount, 0, 0});
     }

@@ -24,7 +24,7 @@
 namespace modeflow {
 class SparseCoefficients;
 class StructuralCoefficients;
-}
+}  // namespace modeflow
 
 namespace modeflow::vulkan {
 class CommandSequence;
@@ -52,7 +52,8 @@ public:
     /// @throw modeflow::Error for another storage, fewer than 2 modes, a single pair row or the
     /// sparse arrays above the storage buffer limit, tensor-free coefficients without their
     /// cache, or a failed allocation.
-    DeviceCoefficients(const vulkan::VulkanContext& context, const StructuralCoefficients& coefficients,
+    DeviceCoefficients(const vulkan::VulkanContext& context,
+                       const StructuralCoefficients& coefficients,
                        const BasisCache* cache = nullptr, const ModeBuffer* modes = nullptr,
                        bool advection = false);
 
@@ -73,16 +74,16 @@ public:
     std::vector<std::uint32_t> advectGroups() const;
     /// Records out_k = Σ_ij C[j][k][i] x_i u_j (StructuralCoefficients::advect; MHD's induction).
     /// @throw modeflow::Error unless constructed with `advection`, or for buffers too small.
-    void recordAdvect(vulkan::CommandSequence& sequence, const ModalKernels& kernels, const vulkan::DeviceBuffer& u,
-                      const vulkan::DeviceBuffer& x, const vulkan::DeviceBuffer& out,
-                      IndirectArguments indirect = {}) const;
+    void recordAdvect(vulkan::CommandSequence& sequence, const ModalKernels& kernels,
+                      const vulkan::DeviceBuffer& u, const vulkan::DeviceBuffer& x,
+                      const vulkan::DeviceBuffer& out, IndirectArguments indirect = {}) const;
 
     /// Records out = C(a, b) (dispatchGroups().size() dispatches).
     /// @throw modeflow::Error if `a` holds fewer than paddedSize(N) floats (zeros past N) or b, out
     /// fewer than N.
-    void recordApply(vulkan::CommandSequence& sequence, const ModalKernels& kernels, const vulkan::DeviceBuffer& a,
-                     const vulkan::DeviceBuffer& b, const vulkan::DeviceBuffer& out,
-                     IndirectArguments indirect = {}) const;
+    void recordApply(vulkan::CommandSequence& sequence, const ModalKernels& kernels,
+                     const vulkan::DeviceBuffer& a, const vulkan::DeviceBuffer& b,
+                     const vulkan::DeviceBuffer& out, IndirectArguments indirect = {}) const;
 
 private:
     struct Chunk {
@@ -91,12 +92,15 @@ private:
         std::uint32_t pairs = 0;
     };
     struct SparseRows {
-        vulkan::DeviceBuffer rows;     ///< per row: pair index, first texel of its slice, texels per row, 0
-        vulkan::DeviceBuffer entries;  ///< texels of two (column, value bits) entries, slice-interleaved
+        vulkan::DeviceBuffer
+            rows;  ///< per row: pair index, first texel of its slice, texels per row, 0
+        vulkan::DeviceBuffer
+            entries;  ///< texels of two (column, value bits) entries, slice-interleaved
         std::uint32_t rowCount = 0;
     };
     /// `sparse` in slices of PAIR_TILE_LANES rows (DeviceCoefficients.cpp).
-    static SparseRows slicedRows(const vulkan::VulkanContext& context, const SparseCoefficients& sparse);
+    static SparseRows slicedRows(const vulkan::VulkanContext& context,
+                                 const SparseCoefficients& sparse);
 
     int mN = 0;
     std::uint32_t mSubgroupsPerGroup = 1;
@@ -118,7 +122,8 @@ private:
         vulkan::DeviceBuffer start;
         vulkan::DeviceBuffer entries;
     };
-    static SparseColumns sparseColumns(const vulkan::VulkanContext& context, const SparseCoefficients& sparse);
+    static SparseColumns sparseColumns(const vulkan::VulkanContext& context,
+                                       const SparseCoefficients& sparse);
     DenseAdvection denseAdvection(const vulkan::VulkanContext& context) const;
 
     std::optional<SparseRows> mSparse;

@@ -6,8 +6,8 @@
 #include <numeric>
 #include <vector>
 
-#include "engine/core/MacGrid.h"
 #include "engine/core/Error.h"
+#include "engine/core/MacGrid.h"
 #include "engine/device/DofFaces.h"
 #include "engine/device/ModeBuffer.h"
 #include "engine/vulkan/CommandSequence.h"
@@ -31,7 +31,9 @@ constexpr std::uint32_t kCpuMinDofsPerGroup = 4096, kCpuMaxDofsPerGroup = 32768,
 /// DOFs of a tile of float16 modes: blocks are whole tiles of either precision.
 constexpr std::uint32_t kTileDofs = ModeBuffer::kTileVectors * 8;
 
-std::uint32_t modeGroups(std::uint32_t modes) { return (modes + kModesPerGroup - 1) / kModesPerGroup; }
+std::uint32_t modeGroups(std::uint32_t modes) {
+    return (modes + kModesPerGroup - 1) / kModesPerGroup;
+}
 
 /// Mode slots of a workgroup (the shader's MODES) for a chunk of `modes`: the chunk split into
 /// equal groups of at most kModesPerGroup, rounded up to 4, so that few slots go unused (lavapipe
@@ -45,8 +47,8 @@ std::uint32_t slotsFor(std::uint32_t modes) {
 /// DOFs per block: the wish rounded up to whole float16 tiles, and to a whole number of units
 /// (16 float16 DOFs) per invocation, raised until every chunk's dispatch (at most all modes) stays
 /// within the device's group count limit.
-std::uint32_t blockSizeFor(const vulkan::VulkanContext& context, std::uint32_t dofs, std::uint32_t modes,
-                           const ForceProjectionOptions& options) {
+std::uint32_t blockSizeFor(const vulkan::VulkanContext& context, std::uint32_t dofs,
+                           std::uint32_t modes, const ForceProjectionOptions& options) {
     const VkPhysicalDeviceLimits& limits = context.properties().limits;
     const std::uint64_t maxGroups = limits.maxComputeWorkGroupCount[0];
     if (modes == 0) throw Error("project_force: the basis has no modes");
@@ -58,22 +60,25 @@ std::uint32_t blockSizeFor(const vulkan::VulkanContext& context, std::uint32_t d
     // project_force.comp keeps kModesPerGroup sums per invocation in shared memory.
     const std::uint64_t shared = std::uint64_t(size) * kModesPerGroup * sizeof(float);
     if (shared > limits.maxComputeSharedMemorySize)
-        throw Error("project_force: workgroups of " + std::to_string(size) + " need " + std::to_string(shared) +
-                    " bytes of shared memory, more than the " + std::to_string(limits.maxComputeSharedMemorySize) +
-                    " of " + context.deviceName());
+        throw Error("project_force: workgroups of " + std::to_string(size) + " need " +
+                    std::to_string(shared) + " bytes of shared memory, more than the " +
+                    std::to_string(limits.maxComputeSharedMemorySize) + " of " +
+                    context.deviceName());
     std::uint64_t wanted = options.dofsPerGroup > 0 ? options.dofsPerGroup : kGpuDofsPerGroup;
     if (options.dofsPerGroup == 0 && context.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU)
-        wanted = std::clamp<std::uint64_t>(std::uint64_t(dofs) * modeGroups(modes) / kCpuGroups, kCpuMinDofsPerGroup,
-                                           kCpuMaxDofsPerGroup);
+        wanted = std::clamp<std::uint64_t>(std::uint64_t(dofs) * modeGroups(modes) / kCpuGroups,
+                                           kCpuMinDofsPerGroup, kCpuMaxDofsPerGroup);
     const std::uint64_t maxBlocks = std::max<std::uint64_t>(1, maxGroups / modeGroups(modes));
     const std::uint64_t block = std::max(wanted, (std::uint64_t(dofs) + maxBlocks - 1) / maxBlocks);
-    const std::uint64_t unit = std::lcm<std::uint64_t>(kTileDofs, std::uint64_t(size) * kTileDofs / ModeBuffer::kTileLanes);
+    const std::uint64_t unit = std::lcm<std::uint64_t>(
+        kTileDofs, std::uint64_t(size) * kTileDofs / ModeBuffer::kTileLanes);
     return std::uint32_t((block + unit - 1) / unit * unit);
 }
 
 /// The weights, zero-padded to whole float16 tiles like the modes (read eight at a time; a padded
 /// DOF adds 0).
-vulkan::DeviceBuffer weightBuffer(const vulkan::VulkanContext& context, const BasisCache& cache, FaceQuantity quantity) {
+vulkan::DeviceBuffer weightBuffer(const vulkan::VulkanContext& context, const BasisCache& cache,
+                                  FaceQuantity quantity) {
     const Eigen::VectorXd w = projectionWeights(cache, quantity);
     std::vector<float> values(w.begin(), w.end());
     values.resize((values.size() + kTileDofs - 1) / kTileDofs * kTileDofs, 0.0f);
@@ -82,8 +87,8 @@ vulkan::DeviceBuffer weightBuffer(const vulkan::VulkanContext& context, const Ba
 
 }  // namespace
 
-ForceProjectionKernel::ForceProjectionKernel(const vulkan::VulkanContext& context, const BasisCache& cache,
-                                             FaceQuantity quantity,
+ForceProjectionKernel::ForceProjectionKernel(const vulkan::VulkanContext& context,
+                                             const BasisCache& cache, FaceQuantity quantity,
                                              const ForceProjectionOptions& options)
     : mQuantity(quantity),
       mDofCount(std::uint32_t(cache.faces.size())),
@@ -99,8 +104,8 @@ ForceProjectionKernel::ForceProjectionKernel(const vulkan::VulkanContext& contex
       mContext(context),
       mWorkgroupSize(options.workgroupSize),
       mSumKernel(context, vulkan::ComputeKernelSpec{"project_force_sum", project_force_sum_spv, 3,
-                                            sizeof(shaders::ProjectForceSumParams),
-                                            options.workgroupSize}) {}
+                                                    sizeof(shaders::ProjectForceSumParams),
+                                                    options.workgroupSize}) {}
 
 std::vector<std::uint32_t> ForceProjectionKernel::dispatchGroups(const ModeBuffer& modes) const {
     std::vector<std::uint32_t> groups;
@@ -112,12 +117,13 @@ std::vector<std::uint32_t> ForceProjectionKernel::dispatchGroups(const ModeBuffe
     return groups;
 }
 
-void ForceProjectionKernel::record(vulkan::CommandSequence& sequence, const ModeBuffer& modes, const vulkan::DeviceBuffer& q,
-                                   const vulkan::DeviceBuffer& f, IndirectArguments indirect) const {
+void ForceProjectionKernel::record(vulkan::CommandSequence& sequence, const ModeBuffer& modes,
+                                   const vulkan::DeviceBuffer& q, const vulkan::DeviceBuffer& f,
+                                   IndirectArguments indirect) const {
     if (modes.dofCount() != mDofCount || modes.modeCount() != mModeCount)
         throw Error("project_force: the modes are " + std::to_string(modes.modeCount()) + " on " +
-                    std::to_string(modes.dofCount()) + " DOFs, the kernel's basis " + std::to_string(mModeCount) +
-                    " on " + std::to_string(mDofCount));
+                    std::to_string(modes.dofCount()) + " DOFs, the kernel's basis " +
+                    std::to_string(mModeCount) + " on " + std::to_string(mDofCount));
     requireWords("project_force", q, mQuantity == FaceQuantity::FaceField ? mFaceTotal : mDofCount);
     requireWords("project_force", f, mModeCount);
 
@@ -133,9 +139,10 @@ void ForceProjectionKernel::record(vulkan::CommandSequence& sequence, const Mode
         params.modeCount = chunk.modeCount;
         const std::uint32_t slots = slotsFor(chunk.modeCount);
         // q twice: its whole texels (binding 1) and one float at a time (binding 5).
-        const std::array<const vulkan::DeviceBuffer*, 6> buffers{&chunk.buffer, &q,         &mWeights,
-                                                         &mFaces,       &mPartials, &q};
-        indirect.after(d).dispatch(sequence, partialKernel(modes.precision(), slots), buffers, params, groups[d]);
+        const std::array<const vulkan::DeviceBuffer*, 6> buffers{
+            &chunk.buffer, &q, &mWeights, &mFaces, &mPartials, &q};
+        indirect.after(d).dispatch(sequence, partialKernel(modes.precision(), slots), buffers,
+                                   params, groups[d]);
         ++d;
     }
     const shaders::ProjectForceSumParams sum{mModeCount, mBlockCount, 0, 0};
@@ -143,7 +150,8 @@ void ForceProjectionKernel::record(vulkan::CommandSequence& sequence, const Mode
     indirect.after(d).dispatch(sequence, mSumKernel, buffers, sum, groups[d]);
 }
 
-const vulkan::ComputeKernel& ForceProjectionKernel::partialKernel(ModePrecision precision, std::uint32_t slots) const {
+const vulkan::ComputeKernel& ForceProjectionKernel::partialKernel(ModePrecision precision,
+                                                                  std::uint32_t slots) const {
     const bool half = precision == ModePrecision::Float16;
     auto found = mPartialKernels.find({half, slots});
     if (found == mPartialKernels.end()) {
@@ -151,12 +159,12 @@ const vulkan::ComputeKernel& ForceProjectionKernel::partialKernel(ModePrecision 
         found = mPartialKernels
                     .try_emplace({half, slots}, mContext,
                                  vulkan::ComputeKernelSpec{"project_force",
-                                                   project_force_spv,
-                                                   6,
-                                                   sizeof(shaders::ProjectForceParams),
-                                                   mWorkgroupSize,
-                                                   {std::uint32_t(half), gather, slots},
-                                                   {0, 1, 2}})
+                                                           project_force_spv,
+                                                           6,
+                                                           sizeof(shaders::ProjectForceParams),
+                                                           mWorkgroupSize,
+                                                           {std::uint32_t(half), gather, slots},
+                                                           {0, 1, 2}})
                     .first;
     }
     return found->second;

@@ -18,8 +18,8 @@
 
 #include "engine/core/ModePrecision.h"
 #include "engine/device/IndirectArguments.h"
-#include "engine/simulation/ProjectionWeights.h"
 #include "engine/format/BasisCache.h"
+#include "engine/simulation/ProjectionWeights.h"
 #include "engine/vulkan/ComputeKernel.h"
 #include "engine/vulkan/DeviceBuffer.h"
 
@@ -49,14 +49,15 @@ public:
     /// @throw modeflow::Error if there are more modes than the
     /// device's group count limit, the workgroup needs more shared memory than the device has
     /// (64 floats per invocation), or a creation call fails.
-    ForceProjectionKernel(const vulkan::VulkanContext& context, const BasisCache& cache, FaceQuantity quantity,
-                          const ForceProjectionOptions& options = {});
+    ForceProjectionKernel(const vulkan::VulkanContext& context, const BasisCache& cache,
+                          FaceQuantity quantity, const ForceProjectionOptions& options = {});
 
     /// Records f = Ψᵀ (w ∘ q) (N floats) with the modes in `modes`.
     /// @throw modeflow::Error if `modes` is not a basis of this kernel's DOFs and mode count, or a
     /// buffer is too small.
-    void record(vulkan::CommandSequence& sequence, const ModeBuffer& modes, const vulkan::DeviceBuffer& q,
-                const vulkan::DeviceBuffer& f, IndirectArguments indirect = {}) const;
+    void record(vulkan::CommandSequence& sequence, const ModeBuffer& modes,
+                const vulkan::DeviceBuffer& q, const vulkan::DeviceBuffer& f,
+                IndirectArguments indirect = {}) const;
     /// The group counts of record's dispatches (one per chunk of `modes`, then the sums).
     std::vector<std::uint32_t> dispatchGroups(const ModeBuffer& modes) const;
 

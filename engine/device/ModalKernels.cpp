@@ -46,11 +46,18 @@ ModalKernels::ModalKernels(const vulkan::VulkanContext& context)
       combine(context, {"modal_combine", modal_combine_spv, 3, sizeof(shaders::CombineParams), 64}),
       update(context,
              {"modal_update", modal_update_spv, 10, sizeof(shaders::ModalUpdateParams), 256}),
-      pairWeights(context, {"modal_pair_weights", modal_pair_weights_spv, 3, sizeof(shaders::CombineParams), 64}),
-      advectDense(context, {"modal_advect_dense", modal_advect_dense_spv, 3, sizeof(shaders::AdvectDenseParams), 64,
-                            {}, {0}}),
-      advectSum(context, {"modal_advect_sum", modal_advect_sum_spv, 2, sizeof(shaders::AdvectSumParams), 64}),
-      advectSparse(context,
-                   {"modal_advect_sparse", modal_advect_sparse_spv, 5, sizeof(shaders::CombineParams), 64}) {}
+      pairWeights(context, {"modal_pair_weights", modal_pair_weights_spv, 3,
+                            sizeof(shaders::CombineParams), 64}),
+      advectDense(context, {"modal_advect_dense",
+                            modal_advect_dense_spv,
+                            3,
+                            sizeof(shaders::AdvectDenseParams),
+                            64,
+                            {},
+                            {0}}),
+      advectSum(context, {"modal_advect_sum", modal_advect_sum_spv, 2,
+                          sizeof(shaders::AdvectSumParams), 64}),
+      advectSparse(context, {"modal_advect_sparse", modal_advect_sparse_spv, 5,
+                             sizeof(shaders::CombineParams), 64}) {}
 
 }  // namespace modeflow::device

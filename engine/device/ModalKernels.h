@@ -12,13 +12,13 @@ class VulkanContext;
 
 namespace modeflow::device {
 
-
 struct ModalKernels {
     /// @throw modeflow::Error if the device lacks subgroup arithmetic in compute shaders or a
     /// pipeline cannot be created.
     explicit ModalKernels(const vulkan::VulkanContext& context);
 
-    vulkan::ComputeKernel pairSums;        ///< dense: sums[p] = Σ_i C_p[i] a_i, a tile of pairs per 8 invocations
+    vulkan::ComputeKernel
+        pairSums;  ///< dense: sums[p] = Σ_i C_p[i] a_i, a tile of pairs per 8 invocations
     vulkan::ComputeKernel sparsePairSums;  ///< sparse rows: one invocation per stored pair
     vulkan::ComputeKernel combine;         ///< out_k from the pair sums and b, one subgroup per k
     vulkan::ComputeKernel update;          ///< the integrators' state updates, one workgroup

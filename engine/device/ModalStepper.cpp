@@ -12,8 +12,10 @@ namespace modeflow::device {
 namespace {
 
 DeviceStepSettings checked(DeviceStepSettings settings) {
-    if (!(settings.tolerance > 0.0f)) throw Error("device implicit-step tolerance must be positive");
-    if (settings.maxIterations < 1) throw Error("device implicit-step iterations must be at least 1");
+    if (!(settings.tolerance > 0.0f))
+        throw Error("device implicit-step tolerance must be positive");
+    if (settings.maxIterations < 1)
+        throw Error("device implicit-step iterations must be at least 1");
     return settings;
 }
 
@@ -21,10 +23,12 @@ DeviceStepSettings checked(DeviceStepSettings settings) {
 /// second part to where a buffer view may start (DeviceBuffer::kViewAlignment).
 std::uint32_t strideFor(int n, bool mhd) {
     constexpr std::size_t viewFloats = vulkan::DeviceBuffer::kViewAlignment / sizeof(float);
-    return std::uint32_t(mhd ? (std::size_t(n) + viewFloats - 1) / viewFloats * viewFloats : paddedSize(n));
+    return std::uint32_t(mhd ? (std::size_t(n) + viewFloats - 1) / viewFloats * viewFloats
+                             : paddedSize(n));
 }
 
-vulkan::DeviceBuffer zeros(const vulkan::VulkanContext& context, std::size_t floats, const char* name) {
+vulkan::DeviceBuffer zeros(const vulkan::VulkanContext& context, std::size_t floats,
+                           const char* name) {
     return vulkan::DeviceBuffer::fromValues<float>(context, std::vector<float>(floats, 0.0f), name);
 }
 
@@ -37,18 +41,22 @@ std::vector<std::uint32_t> indirectArguments(const std::vector<std::uint32_t>& g
     return words;
 }
 
-bool modelIsMhd(const DeviceModel& model) { return std::holds_alternative<MhdParameters>(model); }
+bool modelIsMhd(const DeviceModel& model) {
+    return std::holds_alternative<MhdParameters>(model);
+}
 
 }  // namespace
 
 DeviceModel modelOf(const SimulationSettings& settings) {
     if (!settings.mhd) return settings.fluid;
-    return MhdParameters{settings.fluid.kappaSquared, settings.fluid.viscosity, settings.magneticDiffusivity};
+    return MhdParameters{settings.fluid.kappaSquared, settings.fluid.viscosity,
+                         settings.magneticDiffusivity};
 }
 
-ModalStepper::ModalStepper(const vulkan::VulkanContext& context, const StructuralCoefficients& coefficients,
-                           const DeviceModel& model, DeviceStepSettings settings,
-                           const BasisCache* cache, const ModeBuffer* modes)
+ModalStepper::ModalStepper(const vulkan::VulkanContext& context,
+                           const StructuralCoefficients& coefficients, const DeviceModel& model,
+                           DeviceStepSettings settings, const BasisCache* cache,
+                           const ModeBuffer* modes)
     : mContext(context),
       mSettings(checked(settings)),
       mMhd(modelIsMhd(model)),
@@ -82,23 +90,27 @@ void ModalStepper::buildArguments() {
     std::vector<std::uint32_t> groups = evaluationGroups();
     mEvaluationDispatches = std::uint32_t(groups.size());
     groups.push_back(1);  // modal_update
-    mArguments = vulkan::DeviceBuffer::fromValues<std::uint32_t>(mContext, indirectArguments(groups),
-                                                                 "modal indirect arguments");
+    mArguments = vulkan::DeviceBuffer::fromValues<std::uint32_t>(
+        mContext, indirectArguments(groups), "modal indirect arguments");
 }
 
-vulkan::DeviceBuffer ModalStepper::part(const vulkan::DeviceBuffer& whole, int index, const char* name) const {
+vulkan::DeviceBuffer ModalStepper::part(const vulkan::DeviceBuffer& whole, int index,
+                                        const char* name) const {
     return vulkan::DeviceBuffer(whole, VkDeviceSize(index) * mStride * sizeof(float),
                                 VkDeviceSize(mStride) * sizeof(float), name);
 }
 
 void ModalStepper::uploadModel(const DeviceModel& model) {
     if (modelIsMhd(model) != mMhd)
-        throw Error(std::string("modal step: parameters of ") + (modelIsMhd(model) ? "MHD" : "a fluid") +
-                    " for a stepper of " + (mMhd ? "MHD" : "a fluid"));
+        throw Error(std::string("modal step: parameters of ") +
+                    (modelIsMhd(model) ? "MHD" : "a fluid") + " for a stepper of " +
+                    (mMhd ? "MHD" : "a fluid"));
     const int n = size();
     if (const auto* fluid = std::get_if<FluidParameters>(&model)) {
         if (!fluid->held.empty())
-            throw Error("modal step: held modes ([forcing]) run on the CPU reference only; use --device cpu");
+            throw Error(
+                "modal step: held modes ([forcing]) run on the CPU reference only; use --device "
+                "cpu");
         const Eigen::VectorXd mass = FluidSystem::massOf(*fluid, n);
         mFiltered = (mass.array() != 1.0).any();
         upload(mMass, mass, 0, "mass");
@@ -112,7 +124,8 @@ void ModalStepper::uploadModel(const DeviceModel& model) {
     const auto rates = [&](double diffusivity) {
         return FluidSystem::decayRatesOf({mhd.kappaSquared, diffusivity, 0.0}, n);
     };
-    const Eigen::VectorXd velocityRates = rates(mhd.viscosity), fieldRates = rates(mhd.magneticDiffusivity);
+    const Eigen::VectorXd velocityRates = rates(mhd.viscosity),
+                          fieldRates = rates(mhd.magneticDiffusivity);
     for (int p = 0; p < 2; ++p) upload(mMass, Eigen::VectorXd::Ones(n), p, "mass");
     upload(mDecay, velocityRates, 0, "decay rates");
     upload(mDecay, fieldRates, 1, "decay rates");
@@ -159,11 +172,17 @@ Eigen::VectorXd ModalStepper::state() const {
     return x;
 }
 
-void ModalStepper::setForce(const Eigen::VectorXd& f) { upload(mForce, f, 0, "force"); }
+void ModalStepper::setForce(const Eigen::VectorXd& f) {
+    upload(mForce, f, 0, "force");
+}
 
-Eigen::VectorXd ModalStepper::velocity() const { return download(mState, 0); }
+Eigen::VectorXd ModalStepper::velocity() const {
+    return download(mState, 0);
+}
 
-void ModalStepper::setVelocity(const Eigen::VectorXd& v) { upload(mState, v, 0, "velocity"); }
+void ModalStepper::setVelocity(const Eigen::VectorXd& v) {
+    upload(mState, v, 0, "velocity");
+}
 
 Eigen::VectorXd ModalStepper::magneticField() const {
     magneticFieldBuffer();
@@ -197,10 +216,13 @@ std::vector<std::uint32_t> ModalStepper::evaluationGroups() const {
     return groups;
 }
 
-void ModalStepper::recordEvaluation(vulkan::CommandSequence& sequence, IndirectArguments indirect) const {
+void ModalStepper::recordEvaluation(vulkan::CommandSequence& sequence,
+                                    IndirectArguments indirect) const {
     if (!mMhd) {
-        // C(My, y); with a mass of 1 both are y, which the tensor-free contraction reconstructs once.
-        mCoefficients.recordApply(sequence, mKernels, mFiltered ? mWeighted : mPoint, mPoint, mRhs, indirect);
+        // C(My, y); with a mass of 1 both are y, which the tensor-free contraction reconstructs
+        // once.
+        mCoefficients.recordApply(sequence, mKernels, mFiltered ? mWeighted : mPoint, mPoint, mRhs,
+                                  indirect);
         return;
     }
     // r = [C(v, v); advect(v, F); C(F, F)] at y = [v; F] (the mass is 1).
@@ -208,14 +230,16 @@ void ModalStepper::recordEvaluation(vulkan::CommandSequence& sequence, IndirectA
     mCoefficients.recordApply(sequence, mKernels, mPoint, mPoint, mRhs, indirect);
     std::uint32_t d = apply;
     if (mLorentz) {
-        mCoefficients.recordApply(sequence, mKernels, *mPointField, *mPointField, *mLorentzForce, indirect.after(d));
+        mCoefficients.recordApply(sequence, mKernels, *mPointField, *mPointField, *mLorentzForce,
+                                  indirect.after(d));
         d += apply;
     }
-    mCoefficients.recordAdvect(sequence, mKernels, mPoint, *mPointField, *mInduction, indirect.after(d));
+    mCoefficients.recordAdvect(sequence, mKernels, mPoint, *mPointField, *mInduction,
+                               indirect.after(d));
 }
 
-void ModalStepper::recordUpdate(vulkan::CommandSequence& sequence, std::uint32_t op, std::uint32_t stage,
-                                double h, bool indirect) const {
+void ModalStepper::recordUpdate(vulkan::CommandSequence& sequence, std::uint32_t op,
+                                std::uint32_t stage, double h, bool indirect) const {
     const std::array<const vulkan::DeviceBuffer*, 10> buffers{
         &mState, &mPoint, &mWeighted,    &mRhs,    &mForce,
         &mMass,  &mDecay, &mAccumulator, &mStatus, &mArguments};
@@ -241,7 +265,8 @@ void ModalStepper::recordUpdate(vulkan::CommandSequence& sequence, std::uint32_t
 }
 
 void ModalStepper::recordStep(vulkan::CommandSequence& sequence, double h, int substeps) const {
-    if (substeps < 1) throw Error("modal step: substeps must be at least 1, got " + std::to_string(substeps));
+    if (substeps < 1)
+        throw Error("modal step: substeps must be at least 1, got " + std::to_string(substeps));
     if (substeps > 1) {
         for (int s = 0; s < substeps; ++s) recordStep(sequence, h / substeps);
         return;

@@ -26,15 +26,15 @@
 
 #include <Eigen/Core>
 
+#include "engine/core/SceneSpec.h"
+#include "engine/device/DeviceCoefficients.h"
+#include "engine/device/ModalKernels.h"
 #include "engine/dynamics/FluidSystem.h"
 #include "engine/dynamics/MhdSystem.h"
 #include "engine/simulation/ModalStepping.h"
 #include "engine/simulation/SimulationSettings.h"
-#include "engine/device/DeviceCoefficients.h"
-#include "engine/device/ModalKernels.h"
 #include "engine/vulkan/CommandSequence.h"
 #include "engine/vulkan/DeviceBuffer.h"
-#include "engine/core/SceneSpec.h"
 
 namespace modeflow::device {
 
@@ -122,10 +122,11 @@ private:
     void recordEvaluation(vulkan::CommandSequence& sequence, IndirectArguments indirect) const;
     /// Group counts of recordEvaluation's dispatches.
     std::vector<std::uint32_t> evaluationGroups() const;
-    void recordUpdate(vulkan::CommandSequence& sequence, std::uint32_t op, std::uint32_t stage, double h,
-                      bool indirect) const;
+    void recordUpdate(vulkan::CommandSequence& sequence, std::uint32_t op, std::uint32_t stage,
+                      double h, bool indirect) const;
     /// Uploads `values` to part `part` of a state-shaped buffer.
-    void upload(vulkan::DeviceBuffer& buffer, const Eigen::VectorXd& values, int part, const char* what) const;
+    void upload(vulkan::DeviceBuffer& buffer, const Eigen::VectorXd& values, int part,
+                const char* what) const;
     Eigen::VectorXd download(const vulkan::DeviceBuffer& buffer, int part) const;
     /// Mass and decay rates of `model` as state-shaped float vectors.
     void uploadModel(const DeviceModel& model);
@@ -138,7 +139,7 @@ private:
     DeviceStepSettings mSettings;
     bool mMhd = false;
     bool mLorentz = false;
-    bool mFiltered = false;  ///< a fluid whose mass is not 1 (LANS-α): C(Mv, v), else C(v, v)
+    bool mFiltered = false;     ///< a fluid whose mass is not 1 (LANS-α): C(Mv, v), else C(v, v)
     std::uint32_t mStride = 0;  ///< floats per part of the state
     std::uint32_t mParts = 1;
     /// The submission of standalone steps, made by the first step().
@@ -146,8 +147,8 @@ private:
     ModalKernels mKernels;
     DeviceCoefficients mCoefficients;
     std::uint32_t mEvaluationDispatches = 0;  ///< dispatches of one evaluation of R
-    vulkan::DeviceBuffer mState, mPoint, mWeighted, mRhs, mForce, mMass, mDecay, mAccumulator, mStatus,
-        mArguments;
+    vulkan::DeviceBuffer mState, mPoint, mWeighted, mRhs, mForce, mMass, mDecay, mAccumulator,
+        mStatus, mArguments;
     /// MHD: the field parts of the state and point, and the induction and Lorentz parts of r.
     std::optional<vulkan::DeviceBuffer> mField, mPointField, mInduction, mLorentzForce;
 };

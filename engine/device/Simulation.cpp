@@ -36,12 +36,15 @@ Simulation::Simulation(const vulkan::VulkanContext& context, const BasisCache& c
     : mSettings(supported(std::move(settings))),
       mModes(cache.velocity.source == BasisSource::ClosedForm
                  ? nullptr
-                 : std::make_unique<ModeBuffer>(context, cache.velocity.modes, mSettings.basisPrecision)),
+                 : std::make_unique<ModeBuffer>(context, cache.velocity.modes,
+                                                mSettings.basisPrecision)),
       mSeparable(cache.velocity.source == BasisSource::ClosedForm
                      ? std::make_unique<SeparableTransformKernels>(context, cache)
                      : nullptr),
-      mStepper(context, coefficients, modelOf(mSettings), DeviceStepSettings{mSettings.integrator}, &cache,
-               mModes && mSettings.basisPrecision == ModePrecision::Float32 ? mModes.get() : nullptr),
+      mStepper(
+          context, coefficients, modelOf(mSettings), DeviceStepSettings{mSettings.integrator},
+          &cache,
+          mModes && mSettings.basisPrecision == ModePrecision::Float32 ? mModes.get() : nullptr),
       mReconstruction(context, cache),
       mFaceVelocity(mReconstruction.makeFaceField("grid velocity")),
       mForceField(context, cache, mSettings.smokeScale),
@@ -96,7 +99,8 @@ void Simulation::recordStep(std::vector<std::size_t>& boundaries) {
     const double dt = mSettings.dt;
     // Emitters switch on and off at step boundaries; the device list changes only when they do.
     std::vector<bool> active(mSettings.emitters.size());
-    for (std::size_t e = 0; e < active.size(); ++e) active[e] = mSettings.emitters[e].activeAt(mTime);
+    for (std::size_t e = 0; e < active.size(); ++e)
+        active[e] = mSettings.emitters[e].activeAt(mTime);
     if (active != mActiveEmitters) {
         mSmoke.setEmitters(activeEmitters(mSettings.emitters, mTime));
         mActiveEmitters = std::move(active);
@@ -129,9 +133,12 @@ void Simulation::recordStep(std::vector<std::size_t>& boundaries) {
     boundaries.push_back(mSequence.dispatchCount());
 }
 
-void Simulation::recordReconstruction() { recordReconstruction(mStepper.stateBuffer(), mFaceVelocity); }
+void Simulation::recordReconstruction() {
+    recordReconstruction(mStepper.stateBuffer(), mFaceVelocity);
+}
 
-void Simulation::recordReconstruction(const vulkan::DeviceBuffer& modal, const vulkan::DeviceBuffer& field) const {
+void Simulation::recordReconstruction(const vulkan::DeviceBuffer& modal,
+                                      const vulkan::DeviceBuffer& field) const {
     if (mSeparable)
         mSeparable->recordReconstruction(mSequence, modal, field);
     else
@@ -167,8 +174,9 @@ FrameStats Simulation::advanceSteps(int steps) {
         const std::vector<double>& times = mSequence.dispatchTimesMs();
         if (times.empty()) continue;
         ++stats.timedSteps;
-        const std::array<double*, 5> stages{&stats.forcesMs, &stats.modalMs, &stats.reconstructionMs,
-                                            &stats.obstaclesMs, &stats.advectionMs};
+        const std::array<double*, 5> stages{&stats.forcesMs, &stats.modalMs,
+                                            &stats.reconstructionMs, &stats.obstaclesMs,
+                                            &stats.advectionMs};
         for (std::size_t stage = 0; stage < stages.size(); ++stage)
             for (std::size_t d = boundaries[stage]; d < boundaries[stage + 1]; ++d)
                 *stages[stage] += times[d];

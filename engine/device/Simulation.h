@@ -73,7 +73,8 @@ private:
     /// The grid velocity of the modal state.
     void recordReconstruction();
     /// The face field of the modal vector `modal` (v, or MHD's F) into `field`.
-    void recordReconstruction(const vulkan::DeviceBuffer& modal, const vulkan::DeviceBuffer& field) const;
+    void recordReconstruction(const vulkan::DeviceBuffer& modal,
+                              const vulkan::DeviceBuffer& field) const;
     bool forcesActive() const { return mSettings.buoyancy != 0.0 || mForceField.splatCount() > 0; }
 
     SimulationSettings mSettings;
@@ -90,7 +91,8 @@ private:
     ObstacleCorrection mObstacles;
     SmokeState mSmoke;
     SmokeAdvectionKernels mAdvection;
-    mutable vulkan::CommandSequence mSequence;  ///< also records faceMagneticField()'s reconstruction
+    mutable vulkan::CommandSequence
+        mSequence;                      ///< also records faceMagneticField()'s reconstruction
     std::vector<bool> mActiveEmitters;  ///< what the device's emitter list holds now
     /// Modal substeps per step: doubled when an implicit solve fails to converge, halved again
     /// after a long run of easy steps (see advanceFrame()).

@@ -33,12 +33,14 @@ vulkan::DeviceBuffer paddedDofFaces(const vulkan::VulkanContext& context, const 
     if (faceTotal > std::int64_t(std::numeric_limits<std::uint32_t>::max()))
         throw Error("velocity DOFs: " + std::to_string(faceTotal) +
                     " grid faces do not fit the kernels' 32-bit face numbers");
-    const std::size_t perTile = std::size_t(ModeBuffer::kTileVectors) * ModeBuffer::dofsPerVector(ModePrecision::Float16);
+    const std::size_t perTile =
+        std::size_t(ModeBuffer::kTileVectors) * ModeBuffer::dofsPerVector(ModePrecision::Float16);
     std::vector<std::uint32_t> faces((cache.faces.size() + perTile - 1) / perTile * perTile, 0u);
     for (std::size_t d = 0; d < cache.faces.size(); ++d) {
         if (cache.faces[d] < 0 || cache.faces[d] >= faceTotal)
-            throw Error("velocity DOFs: DOF " + std::to_string(d) + " names face " + std::to_string(cache.faces[d]) +
-                        ", outside the grid's " + std::to_string(faceTotal) + " faces");
+            throw Error("velocity DOFs: DOF " + std::to_string(d) + " names face " +
+                        std::to_string(cache.faces[d]) + ", outside the grid's " +
+                        std::to_string(faceTotal) + " faces");
         faces[d] = std::uint32_t(cache.faces[d]);
     }
     return vulkan::DeviceBuffer::fromValues<std::uint32_t>(context, faces, "DOF faces (padded)");
@@ -46,8 +48,8 @@ vulkan::DeviceBuffer paddedDofFaces(const vulkan::VulkanContext& context, const 
 
 }  // namespace
 
-ReconstructionKernel::ReconstructionKernel(const vulkan::VulkanContext& context, const BasisCache& cache,
-                                           std::uint32_t workgroupSize)
+ReconstructionKernel::ReconstructionKernel(const vulkan::VulkanContext& context,
+                                           const BasisCache& cache, std::uint32_t workgroupSize)
     : mContext(context.requireShaderInt64("the velocity reconstruction")),
       mGrid(MacGrid::fromSpec(cache.grid)),
       mDofCount(std::uint32_t(cache.faces.size())),
@@ -64,13 +66,16 @@ std::vector<std::uint32_t> ReconstructionKernel::dispatchGroups(const ModeBuffer
     // Units: kTileRows vectors of a tile, one 32-byte word (ModeAccess.glsl).
     const std::uint64_t units = std::uint64_t(modes.tileCount()) * ModeBuffer::kTileLanes;
     const bool cpu = mContext.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
-    const std::uint32_t groups =
-        groupsFor(mContext, cpu ? (units + kCpuUnitsPerInvocation - 1) / kCpuUnitsPerInvocation : units, mWorkgroupSize);
+    const std::uint32_t groups = groupsFor(
+        mContext, cpu ? (units + kCpuUnitsPerInvocation - 1) / kCpuUnitsPerInvocation : units,
+        mWorkgroupSize);
     return std::vector<std::uint32_t>(modes.chunks().size(), groups);
 }
 
-void ReconstructionKernel::record(vulkan::CommandSequence& sequence, const ModeBuffer& modes, const vulkan::DeviceBuffer& v,
-                                  const vulkan::DeviceBuffer& faceField, IndirectArguments indirect) const {
+void ReconstructionKernel::record(vulkan::CommandSequence& sequence, const ModeBuffer& modes,
+                                  const vulkan::DeviceBuffer& v,
+                                  const vulkan::DeviceBuffer& faceField,
+                                  IndirectArguments indirect) const {
     if (modes.dofCount() != mDofCount)
         throw Error("reconstruct_velocity: the modes have " + std::to_string(modes.dofCount()) +
                     " DOFs, the kernel's basis " + std::to_string(mDofCount));
@@ -87,29 +92,33 @@ void ReconstructionKernel::record(vulkan::CommandSequence& sequence, const ModeB
     std::uint32_t d = 0;
     for (const ModeBuffer::Chunk& chunk : modes.chunks()) {
         params.firstMode = chunk.firstMode;
-        const bool first = &chunk == &modes.chunks().front(), last = &chunk == &modes.chunks().back();
-        const std::array<std::uint32_t, 5> constants{modes.precision() == ModePrecision::Float16, !first, last,
-                                                     chunk.modeCount, chunk.firstMode % 4};
-        const std::array<const vulkan::DeviceBuffer*, 6> buffers{&chunk.buffer, &modes.scales(), &v,
-                                                         &mFaces, &faceField, &mScratch};
+        const bool first = &chunk == &modes.chunks().front(),
+                   last = &chunk == &modes.chunks().back();
+        const std::array<std::uint32_t, 5> constants{modes.precision() == ModePrecision::Float16,
+                                                     !first, last, chunk.modeCount,
+                                                     chunk.firstMode % 4};
+        const std::array<const vulkan::DeviceBuffer*, 6> buffers{
+            &chunk.buffer, &modes.scales(), &v, &mFaces, &faceField, &mScratch};
         indirect.after(d).dispatch(sequence, kernel(constants), buffers, params, groups[d]);
         ++d;
     }
 }
 
-const vulkan::ComputeKernel& ReconstructionKernel::kernel(const std::array<std::uint32_t, 5>& key) const {
+const vulkan::ComputeKernel& ReconstructionKernel::kernel(
+    const std::array<std::uint32_t, 5>& key) const {
     auto found = mKernels.find(key);
     if (found == mKernels.end())
-        found = mKernels
-                    .try_emplace(key, mContext,
-                                 vulkan::ComputeKernelSpec{"reconstruct_velocity",
-                                                   reconstruct_velocity_spv,
-                                                   6,
-                                                   sizeof(shaders::ReconstructVelocityParams),
-                                                   mWorkgroupSize,
-                                                   {key.begin(), key.end()},
-                                                   {0, 3}})
-                    .first;
+        found =
+            mKernels
+                .try_emplace(key, mContext,
+                             vulkan::ComputeKernelSpec{"reconstruct_velocity",
+                                                       reconstruct_velocity_spv,
+                                                       6,
+                                                       sizeof(shaders::ReconstructVelocityParams),
+                                                       mWorkgroupSize,
+                                                       {key.begin(), key.end()},
+                                                       {0, 3}})
+                .first;
     return found->second;
 }
 

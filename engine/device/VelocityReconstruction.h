@@ -33,7 +33,8 @@ public:
     /// For the DOFs and grid of `cache` (uploads the DOF → face table).
     /// @throw modeflow::Error if the device lacks shaderInt64, the grid has 2^32 faces or more, or
     /// a creation call fails.
-    ReconstructionKernel(const vulkan::VulkanContext& context, const BasisCache& cache, std::uint32_t workgroupSize = 64);
+    ReconstructionKernel(const vulkan::VulkanContext& context, const BasisCache& cache,
+                         std::uint32_t workgroupSize = 64);
 
     /// A face field for this grid (one float per face), zero-filled: the kernel writes only the
     /// DOF faces, so the others stay 0 as the face-field convention wants.
@@ -41,9 +42,11 @@ public:
 
     /// Records faceField = the face field of Σ v_i Ψ_i. v holds modes.paddedModeCount() floats
     /// (N values, then anything: the kernel reads them four at a time but uses only the first N).
-    /// @throw modeflow::Error if `modes` is not a basis on this kernel's DOFs, or a buffer is too small.
-    void record(vulkan::CommandSequence& sequence, const ModeBuffer& modes, const vulkan::DeviceBuffer& v,
-                const vulkan::DeviceBuffer& faceField, IndirectArguments indirect = {}) const;
+    /// @throw modeflow::Error if `modes` is not a basis on this kernel's DOFs, or a buffer is too
+    /// small.
+    void record(vulkan::CommandSequence& sequence, const ModeBuffer& modes,
+                const vulkan::DeviceBuffer& v, const vulkan::DeviceBuffer& faceField,
+                IndirectArguments indirect = {}) const;
     /// The group counts of record's dispatches (one per chunk of `modes`).
     std::vector<std::uint32_t> dispatchGroups(const ModeBuffer& modes) const;
 
@@ -59,9 +62,11 @@ private:
     MacGrid mGrid;
     std::uint32_t mDofCount = 0;
     vulkan::DeviceBuffer mFaces;
-    vulkan::DeviceBuffer mScratch;  ///< the sums of the chunks so far, in DOF order (as many floats as mFaces)
+    vulkan::DeviceBuffer
+        mScratch;  ///< the sums of the chunks so far, in DOF order (as many floats as mFaces)
     std::uint32_t mWorkgroupSize = 64;
-    /// By the specialization constants; recording, like CommandSequence, is for one thread at a time.
+    /// By the specialization constants; recording, like CommandSequence, is for one thread at a
+    /// time.
     mutable std::map<std::array<std::uint32_t, 5>, vulkan::ComputeKernel> mKernels;
 };
 

@@ -14,7 +14,9 @@ namespace modeflow {
 namespace {
 
 /// Uniform in (0, 1]: 53 random bits, never 0 so that the logarithm below is finite.
-double uniform(std::mt19937_64& rng) { return double((rng() >> 11) + 1) * 0x1p-53; }
+double uniform(std::mt19937_64& rng) {
+    return double((rng() >> 11) + 1) * 0x1p-53;
+}
 
 double standardNormal(std::mt19937_64& rng) {
     const double radius = std::sqrt(-2.0 * std::log(uniform(rng)));

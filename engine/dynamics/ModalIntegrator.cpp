@@ -4,9 +4,9 @@
 #include <cmath>
 #include <string>
 
+#include "engine/core/Error.h"
 #include "engine/dynamics/Gmres.h"
 #include "engine/dynamics/ThreadCount.h"
-#include "engine/core/Error.h"
 
 namespace modeflow {
 
@@ -17,8 +17,9 @@ ModalIntegrator::ModalIntegrator(const ModalSystem& system, IntegratorSettings s
     }
     if (!(settings.jacobianReuseBelow >= 0.0) || settings.threads < 0 ||
         settings.denseNewtonLimit < 0) {
-        throw Error("integrator: the Jacobian reuse threshold, thread count and dense Newton limit "
-                    "must not be negative");
+        throw Error(
+            "integrator: the Jacobian reuse threshold, thread count and dense Newton limit "
+            "must not be negative");
     }
     if (settings.krylovRestart < 1) throw Error("integrator: the GMRES restart must be positive");
 }
@@ -48,10 +49,18 @@ StepReport ModalIntegrator::advance(Eigen::VectorXd& x, double t, double h,
     decay(x, 0.5 * h);
     StepReport report;
     switch (mSettings.scheme) {
-        case Integrator::Explicit: explicitEuler(x, t, h, force); break;
-        case Integrator::Rk4: rungeKutta4(x, t, h, force); break;
-        case Integrator::Midpoint: report = midpoint(x, t, h, force); break;
-        case Integrator::Trapezoidal: report = trapezoidal(x, t, h, force); break;
+        case Integrator::Explicit:
+            explicitEuler(x, t, h, force);
+            break;
+        case Integrator::Rk4:
+            rungeKutta4(x, t, h, force);
+            break;
+        case Integrator::Midpoint:
+            report = midpoint(x, t, h, force);
+            break;
+        case Integrator::Trapezoidal:
+            report = trapezoidal(x, t, h, force);
+            break;
     }
     decay(x, 0.5 * h);
     return report;
@@ -101,7 +110,8 @@ StepReport ModalIntegrator::newton(const Eigen::VectorXd& x, Eigen::VectorXd& w,
     const double c = atMidpoint ? h : 0.5 * h;
     const double momentum = mass.cwiseProduct(x).norm();
     const double nearSolution = std::sqrt(mSettings.relativeTolerance);
-    const bool dense = mSystem.formsJacobiansCheaply() && mSystem.dimension() <= mSettings.denseNewtonLimit;
+    const bool dense =
+        mSystem.formsJacobiansCheaply() && mSystem.dimension() <= mSettings.denseNewtonLimit;
     Eigen::VectorXd y, r, residual;
     Eigen::MatrixXd jac;
     StepReport report;

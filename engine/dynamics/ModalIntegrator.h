@@ -11,27 +11,27 @@
 /// max(|Mx|, |Mx'|), whichever linear solver takes the Newton updates, so that both conserve the
 /// energy alike. Up to denseNewtonLimit unknowns the system's analytic Jacobian is formed and
 /// factorized (LU, N³/3 flops and N² doubles). Above, or when the system forms Jacobians at a
-/// high cost (tensor-free coefficients, ModalSystem::formsJacobiansCheaply), nothing N² is formed: fixed-point
-/// iterations w ← x + M⁻¹(c·R(y) + f) (one contraction each) while each cuts the residual at
-/// least in half, which at the usual steps (h|∂R| ≲ 0.3) takes a handful; if one does not,
-/// Newton–Krylov from there: each update solved matrix-free by GMRES on Jacobian–vector products
-/// (two contractions each), preconditioned by the diagonal mass. With the dense Jacobian: once the residual is below
-/// jacobianReuseBelow, the iterates move so little that the last factorized Jacobian is as good as
-/// a fresh one (the error it adds is that residual times a factor of order h|C||v|), so the next
-/// evaluation computes the residual alone: a lighter pass over the coefficients and no new LU.
-/// A step whose reused Jacobian stops paying off goes back to fresh ones.
-/// The decay rates (viscosity) are applied exactly, x_i ← e^{−r_i h/2} x_i before and after the
-/// step (Strang splitting, which keeps the second order of the implicit rules; a mode with R = 0
-/// decays exactly as e^{−r h}).
-/// A negative h runs the step backwards; the implicit rules are then exactly reversible.
+/// high cost (tensor-free coefficients, ModalSystem::formsJacobiansCheaply), nothing N² is formed:
+/// fixed-point iterations w ← x + M⁻¹(c·R(y) + f) (one contraction each) while each cuts the
+/// residual at least in half, which at the usual steps (h|∂R| ≲ 0.3) takes a handful; if one does
+/// not, Newton–Krylov from there: each update solved matrix-free by GMRES on Jacobian–vector
+/// products (two contractions each), preconditioned by the diagonal mass. With the dense Jacobian:
+/// once the residual is below jacobianReuseBelow, the iterates move so little that the last
+/// factorized Jacobian is as good as a fresh one (the error it adds is that residual times a factor
+/// of order h|C||v|), so the next evaluation computes the residual alone: a lighter pass over the
+/// coefficients and no new LU. A step whose reused Jacobian stops paying off goes back to fresh
+/// ones. The decay rates (viscosity) are applied exactly, x_i ← e^{−r_i h/2} x_i before and after
+/// the step (Strang splitting, which keeps the second order of the implicit rules; a mode with R =
+/// 0 decays exactly as e^{−r h}). A negative h runs the step backwards; the implicit rules are then
+/// exactly reversible.
 
 #include <Eigen/Core>
 #include <Eigen/LU>
 
+#include "engine/core/SceneSpec.h"
 #include "engine/dynamics/ModalForce.h"
 #include "engine/dynamics/ModalSystem.h"
 #include "engine/dynamics/StepReport.h"
-#include "engine/core/SceneSpec.h"
 
 namespace modeflow {
 
@@ -82,8 +82,9 @@ private:
                       const Eigen::VectorXd& constantPart);
     /// The Newton update of a matrix-free step: (M − (h/2)∂R/∂y(y)) δ = residual, by GMRES to
     /// `relativeTolerance` of |residual|.
-    Eigen::VectorXd krylovUpdate(const Eigen::VectorXd& y, double h, const Eigen::VectorXd& residual,
-                                 double relativeTolerance, StepReport& report) const;
+    Eigen::VectorXd krylovUpdate(const Eigen::VectorXd& y, double h,
+                                 const Eigen::VectorXd& residual, double relativeTolerance,
+                                 StepReport& report) const;
     /// M⁻¹(R(x) + f(t)).
     Eigen::VectorXd velocity(const Eigen::VectorXd& x, double t, const ForceFunction* force) const;
     /// f(t) checked for size, or zero without a force.

@@ -29,8 +29,8 @@ public:
     ///   byI(k,j) = Σ_i C[k][i][j] a_i   (= ∂apply(a,b)/∂b, antisymmetric),
     ///   byJ(k,i) = Σ_j C[k][i][j] b_j   (= ∂apply(a,b)/∂a).
     /// apply(a, b) = byI·b = byJ·a, and the Jacobian of v ↦ vᵀC_k v is byI + byJ at a = b = v.
-    virtual void linearize(const Eigen::VectorXd& a, const Eigen::VectorXd& b,
-                           Eigen::MatrixXd& byI, Eigen::MatrixXd& byJ) const = 0;
+    virtual void linearize(const Eigen::VectorXd& a, const Eigen::VectorXd& b, Eigen::MatrixXd& byI,
+                           Eigen::MatrixXd& byJ) const = 0;
 
     /// out_k = Σ_ij C[j][k][i] x_i u_j: the Lie advection of a field x (a magnetic field, a
     /// spectral Kelvin loop) by the velocity u (seed §6.3.5 MHD, appendix C.3).

@@ -28,7 +28,8 @@ Eigen::VectorXd sample(const SparseRows& m, const Eigen::Ref<const Eigen::Vector
 /// g += Mᵀ·w.
 void addTransposed(const SparseRows& m, const Eigen::VectorXd& w, Eigen::VectorXd& g) {
     for (std::int64_t r = 0; r < m.rows(); ++r)
-        for (std::int64_t t = m.start[r]; t < m.start[r + 1]; ++t) g[m.column[t]] += m.value[t] * w[r];
+        for (std::int64_t t = m.start[r]; t < m.start[r + 1]; ++t)
+            g[m.column[t]] += m.value[t] * w[r];
 }
 
 /// Rows [first, first + count) of M·Ψ, column by column (each column of Ψ is contiguous).
@@ -81,8 +82,10 @@ Eigen::MatrixXd TensorFreeCoefficients::fluxes(const Eigen::VectorXd& a,
 double TensorFreeCoefficients::entry(int k, int i, int j) const {
     const auto& q = mQuadrature;
     const Eigen::VectorXd omega = sample(q.curl, mModes.col(i));
-    const Eigen::VectorXd pk = sample(q.velocityB, mModes.col(k)), qk = sample(q.velocityC, mModes.col(k));
-    const Eigen::VectorXd pj = sample(q.velocityB, mModes.col(j)), qj = sample(q.velocityC, mModes.col(j));
+    const Eigen::VectorXd pk = sample(q.velocityB, mModes.col(k)),
+                          qk = sample(q.velocityC, mModes.col(k));
+    const Eigen::VectorXd pj = sample(q.velocityB, mModes.col(j)),
+                          qj = sample(q.velocityC, mModes.col(j));
     return omega.dot(pk.cwiseProduct(qj) - qk.cwiseProduct(pj));
 }
 
@@ -131,16 +134,16 @@ void TensorFreeCoefficients::linearize(const Eigen::VectorXd& a, const Eigen::Ve
     Eigen::MatrixXd x = Eigen::MatrixXd::Zero(n, n);
     byJ.setZero(n, n);
     const std::int64_t elements = q.curl.rows();
-    const std::int64_t block =
-        std::max<std::int64_t>(1, std::int64_t(kBlockBytes / (3 * sizeof(double) * std::size_t(n))));
+    const std::int64_t block = std::max<std::int64_t>(
+        1, std::int64_t(kBlockBytes / (3 * sizeof(double) * std::size_t(n))));
     for (std::int64_t first = 0; first < elements; first += block) {
         const std::int64_t count = std::min(block, elements - first);
         const Eigen::MatrixXd p = sampleModes(q.velocityB, first, count, mModes);
         const Eigen::MatrixXd c = sampleModes(q.velocityC, first, count, mModes);
         const Eigen::MatrixXd w = sampleModes(q.curl, first, count, mModes);
         x.noalias() += p.transpose() * (omega.segment(first, count).asDiagonal() * c);
-        const Eigen::MatrixXd mixed = qb.segment(first, count).asDiagonal() * p -
-                                      pb.segment(first, count).asDiagonal() * c;
+        const Eigen::MatrixXd mixed =
+            qb.segment(first, count).asDiagonal() * p - pb.segment(first, count).asDiagonal() * c;
         byJ.noalias() += mixed.transpose() * w;
     }
     byI = x - x.transpose();

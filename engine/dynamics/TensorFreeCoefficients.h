@@ -3,7 +3,8 @@
 /// The structural coefficients (seed eq. 6.7) evaluated without storing them: every contraction
 /// reconstructs the fluxes of its vectors from the modes Ψ (V faces × N), samples the weighted
 /// vorticity and the velocity at the vorticity elements with the quadrature of the assembly
-/// (BasisCache::Quadrature: Ω = w∘curl, B = u_b, Q = u_c, each elements × faces), and projects back:
+/// (BasisCache::Quadrature: Ω = w∘curl, B = u_b, Q = u_c, each elements × faces), and projects
+/// back:
 ///
 ///     C[k][i][j] = Σ_e (ΩΨ)_ei ((BΨ)_ek (QΨ)_ej − (QΨ)_ek (BΨ)_ej)
 ///     apply(a, b) = Ψᵀ (Bᵀ(ω_a ∘ q_b) − Qᵀ(ω_a ∘ p_b)),  ω_a = ΩΨa, p_b = BΨb, q_b = QΨb

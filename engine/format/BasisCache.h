@@ -1,7 +1,8 @@
 #pragma once
 /// @file BasisCache.h
-/// What a precompute produces and the runtime reads (README.md, "How the precompute works", step 6): the grid, the
-/// degrees of freedom with their Hodge stars, and the eigenbases. Plain values, no solver types.
+/// What a precompute produces and the runtime reads (README.md, "How the precompute works", step
+/// 6): the grid, the degrees of freedom with their Hodge stars, and the eigenbases. Plain values,
+/// no solver types.
 
 #include <cstdint>
 #include <string>
@@ -54,14 +55,14 @@ struct BasisCache {
 
     struct Velocity {
         BasisSource source = BasisSource::Eigensolve;
-        Eigen::VectorXd eigenvalues;   ///< κ², ascending within each range
+        Eigen::VectorXd eigenvalues;  ///< κ², ascending within each range
         /// faces × count, ⋆(n-1)-orthonormal fluxes. A closed-form basis stores `separable`
         /// instead and leaves this empty (runs go through its transforms, VelocityBasis.h).
         Eigen::MatrixXd modes;
         std::vector<SeparableMode> separable;  ///< closed form: one descriptor per mode
-        std::vector<int> modeNumbers;  ///< 1-based index in the div-free spectrum
+        std::vector<int> modeNumbers;          ///< 1-based index in the div-free spectrum
         int harmonic = 0;
-        double penalty = 0.0;          ///< grad-div penalty used by the solve
+        double penalty = 0.0;  ///< grad-div penalty used by the solve
     } velocity;
 
     struct Scalar {
@@ -69,18 +70,19 @@ struct BasisCache {
         std::vector<std::int64_t> cells;  ///< scalar DOFs (Dirichlet: cells with centre inside)
         Eigen::VectorXd cellStar;
         BasisSource source = BasisSource::Eigensolve;
-        Eigen::VectorXd eigenvalues;      ///< μ², ascending
-        Eigen::MatrixXd modes;            ///< cells × count, ⋆n-orthonormal (as for velocity)
+        Eigen::VectorXd eigenvalues;  ///< μ², ascending
+        Eigen::MatrixXd modes;        ///< cells × count, ⋆n-orthonormal (as for velocity)
         std::vector<SeparableMode> separable;
         int omittedConstants = 0;
     } scalar;
 
-    /// The quadrature of the structural coefficients (precompute/coefficients/CoefficientAssembly.h):
-    /// one row per vorticity element e of positive weight w_e, one column per velocity DOF, the
-    /// linear maps from face fluxes to w_e·ω(e) and to the velocity components u_b(e), u_c(e).
-    /// Every eigensolved grid basis holds it: a tensor-free run evaluates the advection from it and
-    /// the modes (engine/dynamics/TensorFreeCoefficients.h), and a tensor can be assembled from it
-    /// later. A closed-form or surface basis has none (no rows): its coefficients are always stored.
+    /// The quadrature of the structural coefficients
+    /// (precompute/coefficients/CoefficientAssembly.h): one row per vorticity element e of positive
+    /// weight w_e, one column per velocity DOF, the linear maps from face fluxes to w_e·ω(e) and to
+    /// the velocity components u_b(e), u_c(e). Every eigensolved grid basis holds it: a tensor-free
+    /// run evaluates the advection from it and the modes
+    /// (engine/dynamics/TensorFreeCoefficients.h), and a tensor can be assembled from it later. A
+    /// closed-form or surface basis has none (no rows): its coefficients are always stored.
     struct Quadrature {
         SparseRows curl, velocityB, velocityC;
     } quadrature;

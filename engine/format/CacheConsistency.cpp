@@ -60,7 +60,8 @@ bool separableWithinGrid(const std::vector<SeparableMode>& modes, const GridSpec
     for (const SeparableMode& m : modes)
         for (int a = 0; a < 3; ++a) {
             const int limit = a < grid.dim ? grid.resolution[a] : 0;
-            if (m.wave[a] < 0 || m.wave[a] > limit || m.shift[a] > 1 || !std::isfinite(m.amplitude[a]))
+            if (m.wave[a] < 0 || m.wave[a] > limit || m.shift[a] > 1 ||
+                !std::isfinite(m.amplitude[a]))
                 return false;
         }
     return true;
@@ -69,8 +70,8 @@ bool separableWithinGrid(const std::vector<SeparableMode>& modes, const GridSpec
 /// A sparse matrix whose row starts rise from 0 to its entry count and whose columns lie below
 /// `columns`.
 bool wellFormed(const SparseRows& m, std::int64_t columns) {
-    if (m.start.empty() || m.start.front() != 0 || m.start.back() != std::int64_t(m.column.size()) ||
-        m.column.size() != m.value.size())
+    if (m.start.empty() || m.start.front() != 0 ||
+        m.start.back() != std::int64_t(m.column.size()) || m.column.size() != m.value.size())
         return false;
     for (std::size_t r = 1; r < m.start.size(); ++r)
         if (m.start[r] < m.start[r - 1]) return false;
@@ -110,8 +111,9 @@ void requireConsistentSpectrum(const BasisCache& c, Eigen::Index n, const Requir
     const auto& co = c.coefficients;
     require(known(co.storage), "its coefficient storage is out of range");
     if (co.storage == BasisCache::Coefficients::Storage::None) {
-        require(co.packed.empty() && co.value.empty() && co.k.empty() && co.i.empty() && co.j.empty(),
-                "it holds coefficients though its storage says none");
+        require(
+            co.packed.empty() && co.value.empty() && co.k.empty() && co.i.empty() && co.j.empty(),
+            "it holds coefficients though its storage says none");
     } else if (co.storage == BasisCache::Coefficients::Storage::Dense) {
         require(co.packed.size() == packedSize(std::size_t(n)) && co.value.empty() && co.k.empty(),
                 "its dense coefficients do not hold N²(N−1)/2 values for its N velocity modes");
@@ -130,7 +132,8 @@ void requireConsistentSpectrum(const BasisCache& c, Eigen::Index n, const Requir
 void requireConsistentSurface(const BasisCache& c, const Require& require) {
     const auto& s = c.surface;
     const auto vertices = std::int64_t(s.mesh.vertices.size());
-    const auto edges = Eigen::Index(s.edges.size()), triangles = Eigen::Index(s.mesh.triangles.size());
+    const auto edges = Eigen::Index(s.edges.size()),
+               triangles = Eigen::Index(s.mesh.triangles.size());
     bool onMesh = true;
     for (const auto& t : s.mesh.triangles)
         for (const int v : t) onMesh = onMesh && v >= 0 && v < vertices;
@@ -181,7 +184,8 @@ void requireConsistentGrid(const BasisCache& c, const Require& require) {
 
     const auto& v = c.velocity;
     // A closed-form basis stores descriptors instead of columns.
-    const bool closed = v.source == BasisSource::ClosedForm, closedScalar = c.scalar.source == BasisSource::ClosedForm;
+    const bool closed = v.source == BasisSource::ClosedForm,
+               closedScalar = c.scalar.source == BasisSource::ClosedForm;
     require(known(v.source) && known(c.scalar.source), "a basis source is out of range");
     const Eigen::Index n = closed ? Eigen::Index(v.separable.size()) : v.modes.cols();
     const Eigen::Index faceRows = closed ? Eigen::Index(c.faces.size()) : v.modes.rows();
@@ -189,23 +193,27 @@ void requireConsistentGrid(const BasisCache& c, const Require& require) {
                 allBelow(c.faces, MacGrid::fromSpec(c.grid).faceTotal()) &&
                 (closed ? v.modes.size() == 0 : v.separable.empty()),
             "its face degrees of freedom disagree with the grid or the velocity modes");
-    require(separableWithinGrid(v.separable, c.grid) && separableWithinGrid(c.scalar.separable, c.grid),
-            "a closed-form mode's wave numbers or phases lie outside its grid");
+    require(
+        separableWithinGrid(v.separable, c.grid) && separableWithinGrid(c.scalar.separable, c.grid),
+        "a closed-form mode's wave numbers or phases lie outside its grid");
     require(Eigen::Index(c.cells.size()) == c.cellStar.size() && allBelow(c.cells, cells),
             "its cell degrees of freedom disagree with the grid");
 
     const auto& s = c.scalar;
     const Eigen::Index cellRows = closedScalar ? Eigen::Index(s.cells.size()) : s.modes.rows();
-    const Eigen::Index scalarCount = closedScalar ? Eigen::Index(s.separable.size()) : s.modes.cols();
+    const Eigen::Index scalarCount =
+        closedScalar ? Eigen::Index(s.separable.size()) : s.modes.cols();
     require(Eigen::Index(s.cells.size()) == cellRows && s.cellStar.size() == cellRows &&
                 s.eigenvalues.size() == scalarCount && allBelow(s.cells, cells) &&
-                s.omittedConstants >= 0 && (closedScalar ? s.modes.size() == 0 : s.separable.empty()),
+                s.omittedConstants >= 0 &&
+                (closedScalar ? s.modes.size() == 0 : s.separable.empty()),
             "its scalar modes disagree with their cells or eigenvalues");
 
     const auto& q = c.quadrature;
     const auto faces = std::int64_t(c.faces.size());
-    require(wellFormed(q.curl, faces) && wellFormed(q.velocityB, faces) && wellFormed(q.velocityC, faces) &&
-                q.velocityB.rows() == q.curl.rows() && q.velocityC.rows() == q.curl.rows(),
+    require(wellFormed(q.curl, faces) && wellFormed(q.velocityB, faces) &&
+                wellFormed(q.velocityC, faces) && q.velocityB.rows() == q.curl.rows() &&
+                q.velocityC.rows() == q.curl.rows(),
             "its vorticity quadrature is not three maps of the same elements to its faces");
     requireConsistentSpectrum(c, n, require);
 }

@@ -16,7 +16,8 @@
 namespace modeflow {
 namespace {
 
-constexpr char kMagic[16] = {'M', 'O', 'D', 'E', 'F', 'L', 'O', 'W', '-', 'B', 'A', 'S', 'I', 'S', 0, 0};
+constexpr char kMagic[16] = {'M', 'O', 'D', 'E', 'F', 'L', 'O', 'W',
+                             '-', 'B', 'A', 'S', 'I', 'S', 0,   0};
 constexpr size_t kHeaderSize = 16 + 4 + 4 + 8 + 8;
 /// The largest cache file read (64 GiB): far above any basis a precompute finishes, low enough that
 /// a damaged or hostile file cannot make the reader ask for terabytes.
@@ -37,7 +38,8 @@ void putSeparable(ByteWriter& w, const std::vector<SeparableMode>& modes) {
 }
 
 std::vector<SeparableMode> takeSeparable(ByteReader& r) {
-    constexpr std::size_t kBytes = 3 * (sizeof(std::int32_t) + sizeof(std::uint8_t) + sizeof(double));
+    constexpr std::size_t kBytes =
+        3 * (sizeof(std::int32_t) + sizeof(std::uint8_t) + sizeof(double));
     std::vector<SeparableMode> modes(r.count(kBytes));
     for (SeparableMode& m : modes) {
         for (std::int32_t& l : m.wave) l = r.pod<std::int32_t>();

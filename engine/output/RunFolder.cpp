@@ -25,10 +25,12 @@ bool allDigits(std::string_view text) {
 bool isRunFile(const std::string& file, const std::string& scene) {
     if (file == scene + ".resume" || file == scene + "_contact.png") return true;
     const std::string prefix = scene + "_";
-    if (file.size() <= prefix.size() + 4 || file.compare(0, prefix.size(), prefix) != 0) return false;
+    if (file.size() <= prefix.size() + 4 || file.compare(0, prefix.size(), prefix) != 0)
+        return false;
     const std::string_view rest = std::string_view(file).substr(prefix.size());
     const std::string_view extension = rest.substr(rest.size() - 4);
-    return (extension == ".vdb" || extension == ".ply" || extension == ".png") && allDigits(rest.substr(0, rest.size() - 4));
+    return (extension == ".vdb" || extension == ".ply" || extension == ".png") &&
+           allDigits(rest.substr(0, rest.size() - 4));
 }
 
 }  // namespace
@@ -37,13 +39,17 @@ fs::path RunFolder::lockPath(const fs::path& folder, const std::string& sceneNam
     return folder / ("." + sceneName + ".lock");
 }
 
-RunFolder::RunFolder(fs::path folder, std::string sceneName) : mFolder(std::move(folder)), mScene(std::move(sceneName)) {
+RunFolder::RunFolder(fs::path folder, std::string sceneName)
+    : mFolder(std::move(folder)), mScene(std::move(sceneName)) {
     std::error_code ec;
     fs::create_directories(mFolder, ec);
-    if (ec) throw Error("output folder " + mFolder.string() + " cannot be created: " + ec.message());
+    if (ec)
+        throw Error("output folder " + mFolder.string() + " cannot be created: " + ec.message());
     const fs::path lock = lockPath(mFolder, mScene);
     mLock = ::open(lock.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
-    if (mLock < 0) throw Error("output folder " + mFolder.string() + " cannot be locked: " + std::strerror(errno));
+    if (mLock < 0)
+        throw Error("output folder " + mFolder.string() +
+                    " cannot be locked: " + std::strerror(errno));
     if (::flock(mLock, LOCK_EX | LOCK_NB) != 0) {
         const int error = errno;
         char pid[32] = {};
@@ -51,14 +57,19 @@ RunFolder::RunFolder(fs::path folder, std::string sceneName) : mFolder(std::move
         ::close(mLock);
         mLock = -1;
         if (error != EWOULDBLOCK)
-            throw Error("output folder " + mFolder.string() + " cannot be locked: " + std::strerror(error));
-        const std::string holder = n > 0 && allDigits(std::string_view(pid, std::size_t(n))) ? " (process " + std::string(pid, std::size_t(n)) + ")" : "";
-        throw Error("another modeflow run" + holder + " is writing " + mScene + " frames into " + mFolder.string() +
-                    "; wait for it to finish or choose another --out");
+            throw Error("output folder " + mFolder.string() +
+                        " cannot be locked: " + std::strerror(error));
+        const std::string holder = n > 0 && allDigits(std::string_view(pid, std::size_t(n)))
+                                       ? " (process " + std::string(pid, std::size_t(n)) + ")"
+                                       : "";
+        throw Error("another modeflow run" + holder + " is writing " + mScene + " frames into " +
+                    mFolder.string() + "; wait for it to finish or choose another --out");
     }
     const std::string self = std::to_string(::getpid());
-    if (::ftruncate(mLock, 0) != 0 || ::pwrite(mLock, self.data(), self.size(), 0) != ssize_t(self.size()))
-        throw Error("output folder " + mFolder.string() + " cannot be locked: " + std::strerror(errno));
+    if (::ftruncate(mLock, 0) != 0 ||
+        ::pwrite(mLock, self.data(), self.size(), 0) != ssize_t(self.size()))
+        throw Error("output folder " + mFolder.string() +
+                    " cannot be locked: " + std::strerror(errno));
     mStaleRemoved = removeStaleTemporaries(mFolder);
 }
 
@@ -66,7 +77,9 @@ RunFolder::~RunFolder() {
     if (mLock >= 0) ::close(mLock);  // releases the lock
 }
 
-fs::path RunFolder::checkpointPath() const { return mFolder / (mScene + ".resume"); }
+fs::path RunFolder::checkpointPath() const {
+    return mFolder / (mScene + ".resume");
+}
 
 int RunFolder::removeEarlierRun() const {
     int removed = 0;
@@ -77,7 +90,8 @@ int RunFolder::removeEarlierRun() const {
         if (fs::remove(it->path(), removeError)) {
             ++removed;
         } else if (removeError) {
-            throw Error("cannot remove " + it->path().string() + " of an earlier run: " + removeError.message());
+            throw Error("cannot remove " + it->path().string() +
+                        " of an earlier run: " + removeError.message());
         }
     }
     return removed;

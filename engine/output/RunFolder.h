@@ -29,12 +29,14 @@ public:
     /// OUT/NAME.resume.
     std::filesystem::path checkpointPath() const;
     /// OUT/.NAME.lock, the file the lock is held on.
-    static std::filesystem::path lockPath(const std::filesystem::path& folder, const std::string& sceneName);
+    static std::filesystem::path lockPath(const std::filesystem::path& folder,
+                                          const std::string& sceneName);
 
     /// Temporaries of gone processes removed when the folder was taken.
     int staleTemporariesRemoved() const { return mStaleRemoved; }
-    /// Removes the files an earlier run of this scene left here (NAME_0001.vdb or .ply, NAME_0001.png,
-    /// NAME_contact.png, NAME.resume; other scenes' files stay) and returns how many.
+    /// Removes the files an earlier run of this scene left here (NAME_0001.vdb or .ply,
+    /// NAME_0001.png, NAME_contact.png, NAME.resume; other scenes' files stay) and returns how
+    /// many.
     int removeEarlierRun() const;
 
 private:

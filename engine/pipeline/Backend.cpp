@@ -19,10 +19,12 @@ BackendChoice parseDeviceOption(std::string_view value) {
         return choice;
     }
     if (value == "vulkan") return choice;
-    const bool digits = !value.empty() && value.size() < 6 &&
-                        std::all_of(value.begin(), value.end(), [](unsigned char c) { return std::isdigit(c); });
+    const bool digits =
+        !value.empty() && value.size() < 6 &&
+        std::all_of(value.begin(), value.end(), [](unsigned char c) { return std::isdigit(c); });
     if (!digits)
-        throw Error("--device " + std::string(value) + ": expected cpu, vulkan or a Vulkan device index (0, 1, ...)");
+        throw Error("--device " + std::string(value) +
+                    ": expected cpu, vulkan or a Vulkan device index (0, 1, ...)");
     choice.vulkan.deviceIndex = std::uint32_t(std::stoul(std::string(value)));
     return choice;
 }
@@ -34,7 +36,8 @@ Backend::Backend(const BackendChoice& choice) : mKind(choice.kind) {
     }
 }
 
-Backend::Backend(BackendKind kind, const vulkan::VulkanContext& context) : mKind(kind), mContext(&context) {}
+Backend::Backend(BackendKind kind, const vulkan::VulkanContext& context)
+    : mKind(kind), mContext(&context) {}
 
 Backend::~Backend() = default;
 
@@ -46,21 +49,24 @@ std::unique_ptr<Simulator> Backend::makeSimulator(const RunInputs& run, bool sta
     requireSupport(run.scene, mKind);
     std::unique_ptr<Simulator> simulator;
     if (mKind == BackendKind::Vulkan)
-        simulator = std::make_unique<device::Simulation>(*mContext, run.cache, *run.coefficients, run.settings,
-                                                         run.smokeMask, stageTimes);
+        simulator = std::make_unique<device::Simulation>(*mContext, run.cache, *run.coefficients,
+                                                         run.settings, run.smokeMask, stageTimes);
     else
-        simulator = std::make_unique<reference::Simulation>(run.cache, *run.coefficients, run.settings, run.smokeMask);
+        simulator = std::make_unique<reference::Simulation>(run.cache, *run.coefficients,
+                                                            run.settings, run.smokeMask);
     simulator->setVelocity(run.initialVelocity);
     if (run.settings.mhd) simulator->setMagneticField(run.initialMagneticField);
     return simulator;
 }
 
-std::unique_ptr<ModalStepping> Backend::makeModalStepper(const RunInputs& run, Integrator scheme) const {
+std::unique_ptr<ModalStepping> Backend::makeModalStepper(const RunInputs& run,
+                                                         Integrator scheme) const {
     requireSupport(run.scene, mKind);
     std::unique_ptr<ModalStepping> stepper;
     if (mKind == BackendKind::Vulkan) {
-        auto device = std::make_unique<device::ModalStepper>(*mContext, *run.coefficients, device::modelOf(run.settings),
-                                                             device::DeviceStepSettings{scheme}, &run.cache);
+        auto device = std::make_unique<device::ModalStepper>(
+            *mContext, *run.coefficients, device::modelOf(run.settings),
+            device::DeviceStepSettings{scheme}, &run.cache);
         device->setVelocity(run.initialVelocity);
         if (run.settings.mhd) device->setMagneticField(run.initialMagneticField);
         stepper = std::move(device);
@@ -77,7 +83,8 @@ std::unique_ptr<ModalStepping> Backend::makeModalStepper(const RunInputs& run, I
 
 void Backend::requireCleanValidation() const {
     if (mContext && mContext->validationMessageCount() > 0)
-        throw Error("the Vulkan validation layer reported " + std::to_string(mContext->validationMessageCount()) +
+        throw Error("the Vulkan validation layer reported " +
+                    std::to_string(mContext->validationMessageCount()) +
                     " problems; the first: " + mContext->validationMessages().front());
 }
 

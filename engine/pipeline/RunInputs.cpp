@@ -31,7 +31,8 @@ void requireSourcesInFluid(const SceneSpec& scene, const RunInputs& run) {
                 }
         if (!covers)
             throw Error(scene.sourceFile.string() + ": [[source]] #" + std::to_string(e + 1) +
-                        " covers no fluid cell of the smoke grid: it lies outside the domain or is smaller than "
+                        " covers no fluid cell of the smoke grid: it lies outside the domain or is "
+                        "smaller than "
                         "a smoke cell; move it into Ω or enlarge it");
     }
 }
@@ -39,7 +40,8 @@ void requireSourcesInFluid(const SceneSpec& scene, const RunInputs& run) {
 void requireFinite(const SceneSpec& scene, const Eigen::VectorXd& state, const char* key) {
     if (!state.allFinite())
         throw Error(scene.sourceFile.string() + ": [initial]." + key +
-                    ": the initial state is not finite (too large to represent); lower its energy or strength");
+                    ": the initial state is not finite (too large to represent); lower its energy "
+                    "or strength");
 }
 
 /// Everything after the cache.
@@ -61,16 +63,17 @@ void complete(RunInputs& run, RunParts parts, Progress& progress) {
         requireFinite(scene, run.initialMagneticField, "magnetic");
     }
     if (parts == RunParts::DynamicsAndSmoke) {
-        run.smokeMask = run.cachePath.empty() ? fluidMask(scene, run.cache, scene.smoke.resolutionScale)
-                                              : smokeMaskOf(scene, run.cache, run.cachePath, progress);
+        run.smokeMask = run.cachePath.empty()
+                            ? fluidMask(scene, run.cache, scene.smoke.resolutionScale)
+                            : smokeMaskOf(scene, run.cache, run.cachePath, progress);
         requireSourcesInFluid(scene, run);
     }
 }
 
 }  // namespace
 
-RunInputs prepareRun(const SceneSpec& scene, const std::filesystem::path& cacheDir, Progress& progress,
-                     RunParts parts) {
+RunInputs prepareRun(const SceneSpec& scene, const std::filesystem::path& cacheDir,
+                     Progress& progress, RunParts parts) {
     RunInputs run;
     run.scene = scene;
     CacheOutcome outcome = ensureCache(scene, cacheDir, false, progress);

@@ -10,13 +10,14 @@ namespace modeflow::reference {
 namespace {
 
 std::string sizeMismatch(const char* what, Eigen::Index given, Eigen::Index expected) {
-    return std::string("simulation: ") + what + " of " + std::to_string(given) + " values, expected " +
-           std::to_string(expected);
+    return std::string("simulation: ") + what + " of " + std::to_string(given) +
+           " values, expected " + std::to_string(expected);
 }
 
 }  // namespace
 
-ModalStepper::ModalStepper(const StructuralCoefficients& coefficients, const SimulationSettings& settings)
+ModalStepper::ModalStepper(const StructuralCoefficients& coefficients,
+                           const SimulationSettings& settings)
     : mCoefficients(coefficients), mModes(coefficients.size()) {
     if (settings.mhd && settings.fluid.alpha > 0.0)
         throw Error("simulation: LANS-alpha and MHD cannot be combined");
@@ -33,7 +34,8 @@ void ModalStepper::rebuild(const SimulationSettings& settings) {
                                          settings.magneticDiffusivity});
     else
         system = std::make_unique<FluidSystem>(mCoefficients, settings.fluid);
-    auto integrator = std::make_unique<ModalIntegrator>(*system, IntegratorSettings{settings.integrator});
+    auto integrator =
+        std::make_unique<ModalIntegrator>(*system, IntegratorSettings{settings.integrator});
     // Nothing changes until both are built; the integrator refers to the system it was made with.
     mIntegrator = std::move(integrator);
     mSystem = std::move(system);
@@ -41,7 +43,8 @@ void ModalStepper::rebuild(const SimulationSettings& settings) {
 }
 
 void ModalStepper::setState(const Eigen::VectorXd& x) {
-    if (x.size() != mState.size()) throw Error(sizeMismatch("modal state", x.size(), mState.size()));
+    if (x.size() != mState.size())
+        throw Error(sizeMismatch("modal state", x.size(), mState.size()));
     mState = x;
 }
 
@@ -52,7 +55,9 @@ void ModalStepper::setForce(const Eigen::VectorXd& f) {
     for (const int k : mSettings.fluid.held) mForce[k] = 0.0;
 }
 
-StepReport ModalStepper::step(double h) { return mIntegrator->step(mState, h, mForce); }
+StepReport ModalStepper::step(double h) {
+    return mIntegrator->step(mState, h, mForce);
+}
 
 void ModalStepper::setScheme(Integrator scheme) {
     SimulationSettings settings = mSettings;
@@ -76,7 +81,8 @@ Eigen::VectorXd ModalStepper::magneticField() const {
 }
 
 void ModalStepper::setMagneticField(const Eigen::VectorXd& f) {
-    if (!mSettings.mhd) throw Error("simulation: this run simulates no magnetic field ([simulation].mhd)");
+    if (!mSettings.mhd)
+        throw Error("simulation: this run simulates no magnetic field ([simulation].mhd)");
     if (f.size() != mModes) throw Error(sizeMismatch("magnetic field", f.size(), mModes));
     mState.tail(mModes) = f;
 }

@@ -21,7 +21,8 @@ void requireSupport(const SceneSpec& scene, BackendKind kind) {
     if (scene.isSurface() && !capabilitiesOf(kind).surfaces)
         throw Error(file + ": [surface] scenes run on the CPU reference only; use --device cpu");
     if (scene.forcing.holds() && !capabilitiesOf(kind).forcing)
-        throw Error(file + ": [forcing] (held modes) runs on the CPU reference only; use --device cpu");
+        throw Error(file +
+                    ": [forcing] (held modes) runs on the CPU reference only; use --device cpu");
 }
 
 }  // namespace modeflow

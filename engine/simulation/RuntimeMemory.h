@@ -26,7 +26,8 @@ struct RunMemory {
 };
 
 /// `device`: a Vulkan device runs it (else the CPU reference).
-RunMemory estimateRunMemory(std::int64_t smokeCells, double columnBytes, double coefficientBytes, bool device);
+RunMemory estimateRunMemory(std::int64_t smokeCells, double columnBytes, double coefficientBytes,
+                            bool device);
 
 /// The bytes of dense packed coefficients of `modes` modes, K²(K−1)/2·8.
 double denseCoefficientBytes(int modes);

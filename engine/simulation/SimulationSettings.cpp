@@ -31,7 +31,8 @@ SimulationSettings SimulationSettings::fromScene(const SceneSpec& scene, const B
         settings.emitters.push_back(emitterFromSource(source));
     if (scene.obstacles.size() > std::size_t(maxObstacles))
         throw Error(scene.sourceFile.string() + ": " + std::to_string(scene.obstacles.size()) +
-                    " [[obstacle]] entries; the runtime takes at most " + std::to_string(maxObstacles));
+                    " [[obstacle]] entries; the runtime takes at most " +
+                    std::to_string(maxObstacles));
     for (const ObstacleSpec& obstacle : scene.obstacles) settings.obstacles.push_back({obstacle});
     return settings;
 }

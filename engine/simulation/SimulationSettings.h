@@ -6,13 +6,13 @@
 
 #include <vector>
 
-#include "engine/dynamics/FluidSystem.h"
-#include "engine/simulation/MovingObstacle.h"
-#include "engine/simulation/SmokeEmitter.h"
-#include "engine/format/BasisCache.h"
 #include "engine/core/ModePrecision.h"
 #include "engine/core/SceneSpec.h"
+#include "engine/dynamics/FluidSystem.h"
+#include "engine/format/BasisCache.h"
 #include "engine/simulation/FrameStats.h"
+#include "engine/simulation/MovingObstacle.h"
+#include "engine/simulation/SmokeEmitter.h"
 
 namespace modeflow {
 

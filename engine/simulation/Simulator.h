@@ -11,12 +11,12 @@
 
 #include <Eigen/Core>
 
+#include "engine/core/Error.h"
+#include "engine/core/MacGrid.h"
 #include "engine/simulation/ForceSplat.h"
 #include "engine/simulation/MovingObstacle.h"
-#include "engine/core/MacGrid.h"
-#include "engine/simulation/SmokeFields.h"
-#include "engine/core/Error.h"
 #include "engine/simulation/SimulationSettings.h"
+#include "engine/simulation/SmokeFields.h"
 
 namespace modeflow {
 

@@ -18,9 +18,10 @@ bool SmokeEmitter::contains(const Vec3& point, int dim) const {
 }
 
 bool SmokeEmitter::contains(const Vec3& worldPoint, const MacGrid& grid) const {
-    const Vec3 middle = shape == EmitterShape::Box
-                            ? Vec3{0.5 * (min[0] + max[0]), 0.5 * (min[1] + max[1]), 0.5 * (min[2] + max[2])}
-                            : centre;
+    const Vec3 middle =
+        shape == EmitterShape::Box
+            ? Vec3{0.5 * (min[0] + max[0]), 0.5 * (min[1] + max[1]), 0.5 * (min[2] + max[2])}
+            : centre;
     return contains(grid.nearestImage(worldPoint, middle), grid.dim);
 }
 
@@ -66,7 +67,8 @@ void applyEmitters(const MacGrid& smokeGrid, std::span<const std::uint8_t> fluid
             for (int x = 0; x < smokeGrid.cells[0]; ++x) {
                 const std::int64_t c = smokeGrid.cellIndex(x, y, z);
                 if (!fluidMask[c]) continue;
-                const Vec3 centre{smokeGrid.cellCentre(0, x), smokeGrid.cellCentre(1, y), smokeGrid.cellCentre(2, z)};
+                const Vec3 centre{smokeGrid.cellCentre(0, x), smokeGrid.cellCentre(1, y),
+                                  smokeGrid.cellCentre(2, z)};
                 for (const SmokeEmitter& emitter : emitters)
                     if (emitter.contains(centre, smokeGrid)) {
                         density[c] += emitter.densityRate * dt;

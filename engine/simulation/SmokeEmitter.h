@@ -19,10 +19,10 @@ enum class EmitterShape { Ball, Box };
 
 struct SmokeEmitter {
     EmitterShape shape = EmitterShape::Ball;
-    Vec3 centre{0.0, 0.0, 0.0};  ///< ball
-    double radius = 0.0;         ///< ball
-    Vec3 min{0.0, 0.0, 0.0};     ///< box
-    Vec3 max{0.0, 0.0, 0.0};     ///< box
+    Vec3 centre{0.0, 0.0, 0.0};    ///< ball
+    double radius = 0.0;           ///< ball
+    Vec3 min{0.0, 0.0, 0.0};       ///< box
+    Vec3 max{0.0, 0.0, 0.0};       ///< box
     double densityRate = 0.0;      ///< concentration added per unit time
     double temperatureRate = 0.0;  ///< temperature added per unit time
     double start = 0.0;            ///< emits while start ≤ t < end (simulated time)

@@ -64,7 +64,8 @@ DeviceBuffer::DeviceBuffer(const VulkanContext& context, VkDeviceSize bytes, std
     createTexelView(bytes);
 }
 
-DeviceBuffer::DeviceBuffer(const DeviceBuffer& whole, VkDeviceSize offset, VkDeviceSize bytes, std::string name)
+DeviceBuffer::DeviceBuffer(const DeviceBuffer& whole, VkDeviceSize offset, VkDeviceSize bytes,
+                           std::string name)
     : mContext(whole.mContext), mName(std::move(name)), mBytes(bytes) {
     if (bytes == 0 || offset > whole.mBytes || bytes > whole.mBytes - offset)
         throw Error("DeviceBuffer \"" + mName + "\": bytes " + std::to_string(offset) + " to " +
@@ -75,7 +76,8 @@ DeviceBuffer::DeviceBuffer(const DeviceBuffer& whole, VkDeviceSize offset, VkDev
                     std::to_string(kViewAlignment) + " bytes, not " + std::to_string(offset));
     const VkBuffer buffer = createBuffer(bytes);
     mMemoryHandle = whole.mMemoryHandle;
-    check(vkBindBufferMemory(mContext->device(), buffer, mMemoryHandle, offset), "vkBindBufferMemory (view)");
+    check(vkBindBufferMemory(mContext->device(), buffer, mMemoryHandle, offset),
+          "vkBindBufferMemory (view)");
     if (whole.mMapped) mMapped = static_cast<std::byte*>(whole.mMapped) + offset;
     createTexelView(bytes);
 }

@@ -46,7 +46,8 @@ public:
     /// @throw modeflow::Error if the range does not fit in `whole`, `offset` is not a multiple of
     /// 256 bytes (what every device's storage and texel offset alignments allow), or a creation
     /// call fails.
-    DeviceBuffer(const DeviceBuffer& whole, VkDeviceSize offset, VkDeviceSize bytes, std::string name);
+    DeviceBuffer(const DeviceBuffer& whole, VkDeviceSize offset, VkDeviceSize bytes,
+                 std::string name);
 
     /// Offsets DeviceBuffer views must be multiples of.
     static constexpr VkDeviceSize kViewAlignment = 256;

@@ -60,11 +60,13 @@ ElementSampling sampleElements(const CubicalComplex& cx, const CutCellMeasures& 
                 --minusC[c];
                 // ∂_b u_c: c-normal faces on the +b side (at pos) and -b side (pos - e_b).
                 // −∂_c u_b: b-normal faces on the +c side (at pos) and -c side (pos - e_c).
-                const std::pair<std::int64_t, double> circulation[4] = {
-                    {faceDof(e.pos, c), 1.0}, {faceDof(minusB, c), -1.0},
-                    {faceDof(e.pos, b), -1.0}, {faceDof(minusC, b), 1.0}};
+                const std::pair<std::int64_t, double> circulation[4] = {{faceDof(e.pos, c), 1.0},
+                                                                        {faceDof(minusB, c), -1.0},
+                                                                        {faceDof(e.pos, b), -1.0},
+                                                                        {faceDof(minusC, b), 1.0}};
                 for (const auto& [dof, sign] : circulation)
-                    if (dof >= 0) omega.emplace_back(rows, dof, weight * sign * faceStar(dof) / dualArea);
+                    if (dof >= 0)
+                        omega.emplace_back(rows, dof, weight * sign * faceStar(dof) / dualArea);
                 for (std::int64_t dof : {faceDof(e.pos, b), faceDof(minusC, b)})
                     if (dof >= 0) ub.emplace_back(rows, dof, 0.5 * faceVelocity(dof));
                 for (std::int64_t dof : {faceDof(e.pos, c), faceDof(minusB, c)})
@@ -112,8 +114,8 @@ constexpr std::int64_t kElementBlock = 1 << 16;
 
 }  // namespace
 
-void accumulateCrossProducts(const Eigen::MatrixXd& omega, const Eigen::MatrixXd& p, const Eigen::MatrixXd& q,
-                             std::vector<double>& packed) {
+void accumulateCrossProducts(const Eigen::MatrixXd& omega, const Eigen::MatrixXd& p,
+                             const Eigen::MatrixXd& q, std::vector<double>& packed) {
     const int modes = int(p.cols());
     const Eigen::Index elements = p.rows();
     const std::size_t pairs = pairCount(std::size_t(modes));
@@ -159,8 +161,10 @@ std::vector<double> assembleStructuralCoefficients(const BasisCache::Quadrature&
     for (std::int64_t first = 0; first < elements; first += kElementBlock) {
         const std::int64_t count = std::min(kElementBlock, elements - first);
         const Eigen::MatrixXd omega = rowBlock(quadrature.curl, first, count, modes.rows()) * modes;
-        const Eigen::MatrixXd p = rowBlock(quadrature.velocityB, first, count, modes.rows()) * modes;
-        const Eigen::MatrixXd q = rowBlock(quadrature.velocityC, first, count, modes.rows()) * modes;
+        const Eigen::MatrixXd p =
+            rowBlock(quadrature.velocityB, first, count, modes.rows()) * modes;
+        const Eigen::MatrixXd q =
+            rowBlock(quadrature.velocityC, first, count, modes.rows()) * modes;
         accumulateCrossProducts(omega, p, q, packed);
     }
     return packed;

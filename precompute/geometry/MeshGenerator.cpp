@@ -113,10 +113,12 @@ TriangleMesh makeBlobMesh(int subdivisions, unsigned seed) {
     return mesh;
 }
 
-TriangleMesh makeTorus(int around, int across, double majorRadius, double minorRadius, const Vec3& center) {
+TriangleMesh makeTorus(int around, int across, double majorRadius, double minorRadius,
+                       const Vec3& center) {
     if (around < 4 || around % 2 != 0 || across < 3)
-        throw Error("torus: an even number of at least 4 vertices around and at least 3 across (got " +
-                    std::to_string(around) + " and " + std::to_string(across) + ")");
+        throw Error(
+            "torus: an even number of at least 4 vertices around and at least 3 across (got " +
+            std::to_string(around) + " and " + std::to_string(across) + ")");
     // Each ring turns half a step further than the one before, so that the triangles are nearly
     // equilateral: on an untwisted lattice the quads are isosceles trapezoids, whose diagonals
     // get cotan weights of exactly 0.
@@ -143,13 +145,15 @@ TriangleMesh makeTorus(int around, int across, double majorRadius, double minorR
     return mesh;
 }
 
-TriangleMesh makeVoxelSurface(const std::vector<std::array<int, 3>>& voxels, int subdivisions, double scale) {
+TriangleMesh makeVoxelSurface(const std::vector<std::array<int, 3>>& voxels, int subdivisions,
+                              double scale) {
     const int s = subdivisions;
     std::map<std::array<int, 3>, int> index;  // lattice point (in 1/s units) → vertex
     TriangleMesh mesh;
     std::array<int, 3> lo = voxels.front(), hi = voxels.front();
     for (const auto& v : voxels)
-        for (int a = 0; a < 3; ++a) lo[a] = std::min(lo[a], v[a]), hi[a] = std::max(hi[a], v[a] + 1);
+        for (int a = 0; a < 3; ++a)
+            lo[a] = std::min(lo[a], v[a]), hi[a] = std::max(hi[a], v[a] + 1);
     const auto vertex = [&](const std::array<int, 3>& p) {
         const auto [it, added] = index.emplace(p, int(mesh.vertices.size()));
         if (added) {

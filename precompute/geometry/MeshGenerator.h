@@ -31,7 +31,8 @@ TriangleMesh makeTorus(int around, int across, double majorRadius, double minorR
 /// two touching along an edge or a corner only), each cube face split into `subdivisions`²
 /// squares of two right triangles, scaled by `scale` and centred on the origin. A 5×3×1 slab
 /// with two cubes removed (makeDoubleTorus) has genus 2.
-TriangleMesh makeVoxelSurface(const std::vector<std::array<int, 3>>& voxels, int subdivisions, double scale);
+TriangleMesh makeVoxelSurface(const std::vector<std::array<int, 3>>& voxels, int subdivisions,
+                              double scale);
 
 /// makeVoxelSurface of a 5×3×1 slab of cubes with two holes through it: genus 2, four harmonic
 /// 1-forms, 2.5 × 1.5 × 0.5 scene units.

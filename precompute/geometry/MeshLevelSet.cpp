@@ -72,7 +72,8 @@ RawMesh readObj(const fs::path& file) {
         mesh.triangles.emplace_back(std::uint32_t(a), std::uint32_t(b), std::uint32_t(c));
     }
     if (mesh.triangles.empty())
-        throw Error("mesh file " + file.string() + " has only degenerate faces (repeated vertices)");
+        throw Error("mesh file " + file.string() +
+                    " has only degenerate faces (repeated vertices)");
     return mesh;
 }
 

@@ -21,7 +21,8 @@ ShapeSpec readShape(const TomlReader& reader, const toml::table& table, const st
                     int index, bool isDomain);
 
 /// An OBJ file named by `key` of `s`: resolved against the scene's folder, a regular file.
-std::filesystem::path readMeshFile(const TomlReader& reader, const Section& s, std::string_view key);
+std::filesystem::path readMeshFile(const TomlReader& reader, const Section& s,
+                                   std::string_view key);
 
 /// `[surface]` (a surface scene); sets the reader's dimension to 3.
 SurfaceSpec readSurface(TomlReader& reader, const Section& s);
@@ -31,7 +32,8 @@ void checkSurfaceSceneTables(const TomlReader& reader, const toml::table& root);
 /// `[basis]` (`s`) of a surface scene: no grid-only keys (wall, boundary, ...).
 void checkSurfaceBasis(const TomlReader& reader, const Section& s);
 /// `[simulation]` (`s`) of a surface scene: no MHD.
-void checkSurfaceSimulation(const TomlReader& reader, const Section& s, const SimulationSpec& simulation);
+void checkSurfaceSimulation(const TomlReader& reader, const Section& s,
+                            const SimulationSpec& simulation);
 /// `[initial]` (`s`) of a surface scene: no vortices (they are projected on a grid).
 void checkSurfaceInitial(const TomlReader& reader, const Section& s);
 

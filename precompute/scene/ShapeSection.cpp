@@ -70,8 +70,7 @@ fs::path readMeshFile(const TomlReader& reader, const Section& s, std::string_vi
     std::transform(extension.begin(), extension.end(), extension.begin(),
                    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
     if (extension != ".obj") {
-        reader.fail(s, key,
-                    "only OBJ meshes are supported, got \"" + printableText(*file) + "\"",
+        reader.fail(s, key, "only OBJ meshes are supported, got \"" + printableText(*file) + "\"",
                     s.table.get(key));
     }
     if (auto why = whyNotARegularFile(path)) {

@@ -48,11 +48,13 @@ void checkSurfaceBasis(const TomlReader& reader, const Section& s) {
     }
     // The tensor-free advection evaluates the grid's vorticity quadrature; a surface's
     // coefficients are always assembled from its mesh.
-    if (const toml::node* node = s.table.get("coefficients"); node && node->value<std::string>() == "tensor-free")
-        reader.fail(s, "coefficients",
-                    "a surface's structural coefficients are always assembled (tensor-free advection "
-                    "runs on grid bases only); use auto, dense or sparse",
-                    node);
+    if (const toml::node* node = s.table.get("coefficients");
+        node && node->value<std::string>() == "tensor-free")
+        reader.fail(
+            s, "coefficients",
+            "a surface's structural coefficients are always assembled (tensor-free advection "
+            "runs on grid bases only); use auto, dense or sparse",
+            node);
 }
 
 void checkSurfaceSimulation(const TomlReader& reader, const Section& s,

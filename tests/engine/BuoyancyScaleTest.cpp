@@ -52,16 +52,17 @@ SceneSpec completeBoxScene(int dim, bool eigensolved) {
 
 /// The four complete boxes: 2D and 3D, closed form and eigensolved.
 const std::vector<const RunInputs*>& completeBoxes() {
-    static const RunInputs runs[] = {
-        testing::sharedRun(completeBoxScene(2, false)), testing::sharedRun(completeBoxScene(3, false)),
-        testing::sharedRun(completeBoxScene(2, true)), testing::sharedRun(completeBoxScene(3, true))};
+    static const RunInputs runs[] = {testing::sharedRun(completeBoxScene(2, false)),
+                                     testing::sharedRun(completeBoxScene(3, false)),
+                                     testing::sharedRun(completeBoxScene(2, true)),
+                                     testing::sharedRun(completeBoxScene(3, true))};
     static const std::vector<const RunInputs*> all = {&runs[0], &runs[1], &runs[2], &runs[3]};
     return all;
 }
 
 std::string describe(const RunInputs& run) {
-    return std::to_string(run.cache.grid.dim) + "D, " + std::to_string(run.modeCount()) + " modes, " +
-           (run.cache.velocity.modes.cols() > 0 ? "eigensolved" : "closed form");
+    return std::to_string(run.cache.grid.dim) + "D, " + std::to_string(run.modeCount()) +
+           " modes, " + (run.cache.velocity.modes.cols() > 0 ? "eigensolved" : "closed form");
 }
 
 /// A warm blob off-centre plus a gentle tilt: a temperature with a large div-free part.
@@ -121,7 +122,8 @@ Comparison stepFromRest(Simulator& simulation, const MacGrid& grid) {
     const std::vector<double> t = warmBlob(grid);
     simulation.restore(0.0, Eigen::VectorXd::Zero(simulation.velocity().size()), SmokeFields{t, t});
     simulation.advanceSteps(1);
-    return compare(simulation.faceVelocity(), validate::pressureProjection(grid, buoyancyDensity(grid, t)));
+    return compare(simulation.faceVelocity(),
+                   validate::pressureProjection(grid, buoyancyDensity(grid, t)));
 }
 
 TEST(BuoyancyScale, ProjectionIsNotTrivial) {
@@ -140,9 +142,11 @@ TEST(BuoyancyScale, ProjectionIsNotTrivial) {
 
 TEST(BuoyancyScale, CompleteBasisStepIsThePressureProjectionOnTheCpuReference) {
     for (const RunInputs* run : completeBoxes()) {
-        reference::Simulation simulation(run->cache, *run->coefficients, run->settings, run->smokeMask);
+        reference::Simulation simulation(run->cache, *run->coefficients, run->settings,
+                                         run->smokeMask);
         const Comparison c = stepFromRest(simulation, MacGrid::fromSpec(run->cache.grid));
-        std::cout << describe(*run) << ": u / (dt P g) = " << c.ratio << ", max error " << c.error << "\n";
+        std::cout << describe(*run) << ": u / (dt P g) = " << c.ratio << ", max error " << c.error
+                  << "\n";
         EXPECT_NEAR(c.ratio, 1.0, 1e-9) << describe(*run);
         EXPECT_LE(c.error, 1e-9) << describe(*run);
     }

@@ -161,9 +161,10 @@ TEST(CacheFileTest, TheQuadratureAndAMissingTensorRoundTrip) {
     writeCache(folder / "free.mfbasis", cache);
     const BasisCache read = readCache(folder / "free.mfbasis");
     EXPECT_EQ(read.coefficients.storage, BasisCache::Coefficients::Storage::None);
-    for (const auto& [got, want] : {std::pair{&read.quadrature.curl, &cache.quadrature.curl},
-                                    std::pair{&read.quadrature.velocityB, &cache.quadrature.velocityB},
-                                    std::pair{&read.quadrature.velocityC, &cache.quadrature.velocityC}}) {
+    for (const auto& [got, want] :
+         {std::pair{&read.quadrature.curl, &cache.quadrature.curl},
+          std::pair{&read.quadrature.velocityB, &cache.quadrature.velocityB},
+          std::pair{&read.quadrature.velocityC, &cache.quadrature.velocityC}}) {
         EXPECT_EQ(got->start, want->start);
         EXPECT_EQ(got->column, want->column);
         EXPECT_EQ(got->value, want->value);
@@ -172,16 +173,20 @@ TEST(CacheFileTest, TheQuadratureAndAMissingTensorRoundTrip) {
 
 TEST(CacheFileTest, AQuadratureOrStorageThatDoesNotFitIsRefused) {
     const auto quadrature = [](const std::function<void(BasisCache&)>& damage) {
-        return errorOfDamaged(damage).find("its vorticity quadrature is not three maps") != std::string::npos;
+        return errorOfDamaged(damage).find("its vorticity quadrature is not three maps") !=
+               std::string::npos;
     };
-    EXPECT_TRUE(quadrature([](BasisCache& c) { c.quadrature.velocityB.column.front() = std::int32_t(c.faces.size()); }));
+    EXPECT_TRUE(quadrature([](BasisCache& c) {
+        c.quadrature.velocityB.column.front() = std::int32_t(c.faces.size());
+    }));
     EXPECT_TRUE(quadrature([](BasisCache& c) {
         SparseRows& m = c.quadrature.velocityC;
         m.start.pop_back();
         m.column.resize(std::size_t(m.start.back()));
         m.value.resize(m.column.size());
     }));
-    EXPECT_TRUE(quadrature([](BasisCache& c) { c.quadrature.curl.start[1] = c.quadrature.curl.start[2] + 1; }));
+    EXPECT_TRUE(quadrature(
+        [](BasisCache& c) { c.quadrature.curl.start[1] = c.quadrature.curl.start[2] + 1; }));
     EXPECT_NE(errorOfDamaged([](BasisCache& c) {
                   c.coefficients.storage = BasisCache::Coefficients::Storage(7);
               }).find("coefficient storage"),

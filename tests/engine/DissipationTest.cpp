@@ -11,12 +11,12 @@
 
 #include <Eigen/Core>
 
+#include "engine/core/Error.h"
 #include "engine/dynamics/DenseCoefficients.h"
 #include "engine/dynamics/Diagnostics.h"
 #include "engine/dynamics/FluidSystem.h"
 #include "engine/dynamics/ModalIntegrator.h"
 #include "precompute/scene/SceneLoader.h"
-#include "engine/core/Error.h"
 #include "tests/support/RandomCoefficients.h"
 
 namespace modeflow {
@@ -38,8 +38,8 @@ TEST(Viscosity, LoneModeDecaysExactlyForAnyStep) {
     const Eigen::VectorXd k2 = shapedKappaSquared(n);
     const FluidSystem system(c, {k2, nu, 0.0});
     const double time = 10.0, amplitude = 1.7;
-    for (Integrator scheme : {Integrator::Explicit, Integrator::Rk4,
-                              Integrator::Midpoint, Integrator::Trapezoidal}) {
+    for (Integrator scheme :
+         {Integrator::Explicit, Integrator::Rk4, Integrator::Midpoint, Integrator::Trapezoidal}) {
         for (int steps : {1, 3, 100, 10000}) {
             ModalIntegrator integrator(system, {scheme});
             Eigen::VectorXd v = Eigen::VectorXd::Zero(n);

@@ -13,17 +13,17 @@
 
 #include <Eigen/Core>
 
+#include "engine/core/Error.h"
+#include "engine/core/PackedLayout.h"
 #include "engine/dynamics/DenseCoefficients.h"
 #include "engine/dynamics/Diagnostics.h"
 #include "engine/dynamics/FluidSystem.h"
 #include "engine/dynamics/MhdSystem.h"
 #include "engine/dynamics/ModalIntegrator.h"
-#include "precompute/scene/SceneLoader.h"
-#include "engine/core/PackedLayout.h"
 #include "engine/dynamics/SparseCoefficients.h"
-#include "engine/reference/VelocityReconstruction.h"
-#include "engine/core/Error.h"
 #include "engine/reference/Simulation.h"
+#include "engine/reference/VelocityReconstruction.h"
+#include "precompute/scene/SceneLoader.h"
 #include "tests/support/RandomCoefficients.h"
 #include "tests/support/SharedRuns.h"
 #include "tests/support/TestScenes.h"
@@ -94,8 +94,8 @@ TEST(Lans, ForcesActOnTheMomentum) {
     const Eigen::VectorXd k2 = shapedKappaSquared(n);
     const FluidSystem system(zero, {k2, 0.0, 0.1});
     const Eigen::VectorXd v0 = randomVector(n, 505), f = randomVector(n, 506);
-    for (Integrator scheme : {Integrator::Explicit, Integrator::Rk4,
-                              Integrator::Midpoint, Integrator::Trapezoidal}) {
+    for (Integrator scheme :
+         {Integrator::Explicit, Integrator::Rk4, Integrator::Midpoint, Integrator::Trapezoidal}) {
         ModalIntegrator integrator(system, {scheme});
         Eigen::VectorXd v = v0;
         for (int s = 0; s < 20; ++s) integrator.step(v, 0.1, f);
@@ -143,7 +143,8 @@ TEST(Kelvin, MidpointConservesTheSpectralCirculationOfAnAdvectedLoop) {
     MhdParameters passive;
     passive.lorentzForce = false;
     const MhdSystem system(c, passive);
-    EXPECT_LT(jacobianError(system, system.state(randomVector(n, 608), randomVector(n, 609))), 1e-8);
+    EXPECT_LT(jacobianError(system, system.state(randomVector(n, 608), randomVector(n, 609))),
+              1e-8);
     ModalIntegrator midpoint(system, {Integrator::Midpoint});
     Eigen::VectorXd x = system.state(randomVector(n, 610), randomVector(n, 611));
     const Eigen::VectorXd v0 = x.head(n), loop0 = x.tail(n);

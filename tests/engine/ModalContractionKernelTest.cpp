@@ -1,7 +1,8 @@
 /// @file ModalContractionKernelTest.cpp
 /// DeviceCoefficients::recordApply (shaders/modal_pair_sums*.comp + modal_combine.comp) against
 /// the CPU reference StructuralCoefficients::apply: dense, sparse, and dense split into chunks;
-/// and recordAdvect (modal_pair_weights, modal_advect_*.comp) against StructuralCoefficients::advect.
+/// and recordAdvect (modal_pair_weights, modal_advect_*.comp) against
+/// StructuralCoefficients::advect.
 
 #include <array>
 #include <cmath>
@@ -12,9 +13,9 @@
 
 #include <gtest/gtest.h>
 
-#include "engine/dynamics/SparseCoefficients.h"
 #include "engine/device/DeviceCoefficients.h"
 #include "engine/device/ModalKernels.h"
+#include "engine/dynamics/SparseCoefficients.h"
 #include "engine/vulkan/CommandSequence.h"
 #include "engine/vulkan/DeviceBuffer.h"
 #include "shaders/ModalStepParams.h"
@@ -27,10 +28,10 @@ namespace {
 using testing::roundedDense;
 using testing::roundedToFloat;
 
-using vulkan::CommandSequence;
-using vulkan::DeviceBuffer;
 using device::DeviceCoefficients;
 using device::ModalKernels;
+using vulkan::CommandSequence;
+using vulkan::DeviceBuffer;
 
 /// The vector in float32, zero-padded as the kernels read it.
 std::vector<float> toFloat(const Eigen::VectorXd& v) {
@@ -38,7 +39,6 @@ std::vector<float> toFloat(const Eigen::VectorXd& v) {
     std::copy(v.begin(), v.end(), values.begin());
     return values;
 }
-
 
 /// max_k |device − reference| / max_k |reference| for out = C(a, b), a and b random.
 double contractionError(const vulkan::VulkanContext& context, const StructuralCoefficients& c,
@@ -96,11 +96,13 @@ class ModalContractionKernelTest : public testing::VulkanTest {};
 
 TEST_P(ModalContractionKernelTest, AdvectionEqualsCpuAdvectInFloat32) {
     for (const int n : {2, 20, 150}) {
-        const double dense = advectionError(context(), roundedDense(testing::randomDense(n, 2000 + n)));
+        const double dense =
+            advectionError(context(), roundedDense(testing::randomDense(n, 2000 + n)));
         const SparseCoefficients sparse =
             SparseCoefficients::fromDense(roundedDense(testing::randomDense(n, 2100 + n, 0.1)));
         const double sparseError = advectionError(context(), sparse);
-        std::cout << "advect N = " << n << ": dense relative error " << dense << ", sparse " << sparseError << "\n";
+        std::cout << "advect N = " << n << ": dense relative error " << dense << ", sparse "
+                  << sparseError << "\n";
         EXPECT_LE(dense, 1e-5) << "dense, N = " << n;
         EXPECT_LE(sparseError, 1e-5) << "sparse, N = " << n;
     }
@@ -142,7 +144,8 @@ TEST(ModalContractionSplit, ChunksAboveTheStorageLimitGiveTheSameResult) {
             contractionError(*context, roundedDense(testing::randomDense(64, 9)), &chunks);
         EXPECT_EQ(chunks, 6u);
         EXPECT_LE(error, 1e-5);
-        const double advection = advectionError(*context, roundedDense(testing::randomDense(64, 10)));
+        const double advection =
+            advectionError(*context, roundedDense(testing::randomDense(64, 10)));
         EXPECT_LE(advection, 1e-5) << "advect over 6 chunks";
     }
     EXPECT_EQ(context->validationMessageCount(), 0u);

@@ -10,13 +10,13 @@
 
 #include <gtest/gtest.h>
 
+#include "engine/core/Error.h"
+#include "engine/device/ModalStepper.h"
 #include "engine/dynamics/Diagnostics.h"
 #include "engine/dynamics/MhdSystem.h"
 #include "engine/dynamics/ModalIntegrator.h"
 #include "engine/dynamics/SparseCoefficients.h"
 #include "engine/dynamics/TensorFreeCoefficients.h"
-#include "engine/core/Error.h"
-#include "engine/device/ModalStepper.h"
 #include "engine/vulkan/CommandSequence.h"
 #include "precompute/scene/SceneLoader.h"
 #include "tests/support/KernelTestSupport.h"
@@ -30,13 +30,11 @@ namespace {
 using testing::roundedDense;
 using testing::roundedToFloat;
 
-using vulkan::CommandSequence;
 using device::DeviceStepSettings;
 using device::ModalStepper;
+using vulkan::CommandSequence;
 
 constexpr int kModes = 40;
-
-
 
 double relativeDifference(const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
     return (a - b).lpNorm<Eigen::Infinity>() / b.lpNorm<Eigen::Infinity>();
@@ -74,8 +72,8 @@ TEST_P(ModalStepKernelTest, OneStepOfEverySchemeEqualsTheCpuReference) {
     const Eigen::VectorXd force = roundedToFloat(0.3 * testing::randomVector(kModes, 13));
     for (const FluidParameters& parameters : {FluidParameters{}, viscousLans}) {
         const FluidSystem system(mC, parameters);
-        for (const Integrator scheme :
-             {Integrator::Explicit, Integrator::Rk4, Integrator::Midpoint, Integrator::Trapezoidal}) {
+        for (const Integrator scheme : {Integrator::Explicit, Integrator::Rk4, Integrator::Midpoint,
+                                        Integrator::Trapezoidal}) {
             ModalIntegrator cpu(system, {scheme});
             Eigen::VectorXd expected = mV0;
             cpu.step(expected, mH, force);
@@ -124,8 +122,8 @@ TEST_P(ModalStepKernelTest, TensorFreeCoefficientsStepLikeTheCpuReference) {
     const double h = stepFor(c, v0, 0.05);
     for (const FluidParameters& parameters : {FluidParameters{}, lans}) {
         const FluidSystem system(c, parameters);
-        for (const Integrator scheme :
-             {Integrator::Explicit, Integrator::Rk4, Integrator::Midpoint, Integrator::Trapezoidal}) {
+        for (const Integrator scheme : {Integrator::Explicit, Integrator::Rk4, Integrator::Midpoint,
+                                        Integrator::Trapezoidal}) {
             ModalIntegrator cpu(system, {scheme});
             Eigen::VectorXd expected = v0;
             for (int s = 0; s < 20; ++s) cpu.step(expected, h);
@@ -136,7 +134,8 @@ TEST_P(ModalStepKernelTest, TensorFreeCoefficientsStepLikeTheCpuReference) {
                 stepper.setForce(Eigen::VectorXd::Zero(n));
                 runDevice(context(), stepper, h, 20);
                 const double error = relativeDifference(stepper.state(), expected);
-                std::cout << sceneKeyword(scheme) << (parameters.alpha > 0 ? " viscous LANS" : " Euler")
+                std::cout << sceneKeyword(scheme)
+                          << (parameters.alpha > 0 ? " viscous LANS" : " Euler")
                           << ", tensor-free, 20 steps: relative error " << error << "\n";
                 EXPECT_LE(error, 1e-5) << sceneKeyword(scheme);
             }
@@ -229,12 +228,13 @@ TEST_P(ModalStepKernelTest, RefusesStatesAndParametersOfTheWrongShape) {
 
 /// `steps` steps of MHD on the device and the CPU from [v; F] (random, F half the size), with
 /// the Lorentz force, viscosity and magnetic diffusivity: the largest relative difference.
-double mhdDifference(const vulkan::VulkanContext& context, const StructuralCoefficients& c, Integrator scheme,
-                     int steps, const BasisCache* cache = nullptr) {
+double mhdDifference(const vulkan::VulkanContext& context, const StructuralCoefficients& c,
+                     Integrator scheme, int steps, const BasisCache* cache = nullptr) {
     const int n = c.size();
     const MhdParameters parameters{testing::shapedKappaSquared(n) / 100.0, 0.02, 0.03};
     const MhdSystem system(c, parameters);
-    const Eigen::VectorXd x0 = roundedToFloat(system.state(testing::randomVector(n, 61), 0.5 * testing::randomVector(n, 62)));
+    const Eigen::VectorXd x0 = roundedToFloat(
+        system.state(testing::randomVector(n, 61), 0.5 * testing::randomVector(n, 62)));
     const double h = stepFor(c, x0.head(n), 0.02);
     ModalIntegrator cpu(system, {scheme});
     Eigen::VectorXd expected = x0;
@@ -248,7 +248,8 @@ double mhdDifference(const vulkan::VulkanContext& context, const StructuralCoeff
 }
 
 TEST_P(ModalStepKernelTest, MhdStepsLikeTheCpuReferenceForEveryStorage) {
-    const SparseCoefficients sparse = SparseCoefficients::fromDense(roundedDense(testing::randomDense(kModes, 63, 0.1)));
+    const SparseCoefficients sparse =
+        SparseCoefficients::fromDense(roundedDense(testing::randomDense(kModes, 63, 0.1)));
     const BasisCache cache = testing::withDeviceModes(testing::disk2d(), ModePrecision::Float32);
     const TensorFreeCoefficients free(cache.velocity.modes, cache.quadrature);
     for (const Integrator scheme :
@@ -256,8 +257,8 @@ TEST_P(ModalStepKernelTest, MhdStepsLikeTheCpuReferenceForEveryStorage) {
         const double dense = mhdDifference(context(), mC, scheme, 20);
         const double sparseError = mhdDifference(context(), sparse, scheme, 20);
         const double freeError = mhdDifference(context(), free, scheme, 20, &cache);
-        std::cout << "MHD " << sceneKeyword(scheme) << ", 20 steps: relative error dense " << dense << ", sparse "
-                  << sparseError << ", tensor-free " << freeError << "\n";
+        std::cout << "MHD " << sceneKeyword(scheme) << ", 20 steps: relative error dense " << dense
+                  << ", sparse " << sparseError << ", tensor-free " << freeError << "\n";
         EXPECT_LE(dense, 1e-5) << sceneKeyword(scheme);
         EXPECT_LE(sparseError, 1e-5) << sceneKeyword(scheme);
         EXPECT_LE(freeError, 1e-5) << sceneKeyword(scheme);
@@ -267,7 +268,8 @@ TEST_P(ModalStepKernelTest, MhdStepsLikeTheCpuReferenceForEveryStorage) {
 
 TEST_P(ModalStepKernelTest, MhdMidpointKeepsEnergyAndCrossHelicity) {
     const MhdSystem system(mC);
-    const Eigen::VectorXd x0 = roundedToFloat(system.state(mV0, 0.5 * testing::randomVector(kModes, 64)));
+    const Eigen::VectorXd x0 =
+        roundedToFloat(system.state(mV0, 0.5 * testing::randomVector(kModes, 64)));
     const double h = stepFor(mC, mV0, 0.3);
     ModalStepper stepper(context(), mC, MhdParameters{});
     stepper.setState(x0);
@@ -277,10 +279,11 @@ TEST_P(ModalStepKernelTest, MhdMidpointKeepsEnergyAndCrossHelicity) {
         runDevice(context(), stepper, h, 50);
         const Eigen::VectorXd x = stepper.state();
         energyDrift = std::max(energyDrift, std::abs(energy(x) - e0) / e0);
-        helicityDrift = std::max(helicityDrift, std::abs(crossHelicity(x.head(kModes), x.tail(kModes)) - h0) / e0);
+        helicityDrift = std::max(helicityDrift,
+                                 std::abs(crossHelicity(x.head(kModes), x.tail(kModes)) - h0) / e0);
     }
-    std::cout << "MHD midpoint, 300 steps: energy drift " << energyDrift << ", cross helicity drift "
-              << helicityDrift << " (relative to the energy)\n";
+    std::cout << "MHD midpoint, 300 steps: energy drift " << energyDrift
+              << ", cross helicity drift " << helicityDrift << " (relative to the energy)\n";
     EXPECT_LE(energyDrift, 1e-5);
     EXPECT_LE(helicityDrift, 1e-5);
     EXPECT_EQ(stepper.status().unconvergedSteps, 0);
@@ -289,8 +292,9 @@ TEST_P(ModalStepKernelTest, MhdMidpointKeepsEnergyAndCrossHelicity) {
 TEST(ModalStepSplit, SplitStagedCoefficientsStepLikeWholeMappedOnes) {
     vulkan::VulkanContextOptions options;
     options.validation = true;
-    options.forceStaging = true;          // device-local buffers, as on a discrete GPU
-    options.storageBufferLimit = 20'000;  // 40 modes: 780 pairs of 160 bytes, 13 chunks of one 64-pair tile
+    options.forceStaging = true;  // device-local buffers, as on a discrete GPU
+    options.storageBufferLimit =
+        20'000;  // 40 modes: 780 pairs of 160 bytes, 13 chunks of one 64-pair tile
     std::unique_ptr<vulkan::VulkanContext> split;
     ASSERT_NO_THROW(split = std::make_unique<vulkan::VulkanContext>(options));
     const vulkan::VulkanContext whole{vulkan::VulkanContextOptions{}};

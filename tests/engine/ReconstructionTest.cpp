@@ -8,9 +8,9 @@
 
 #include <gtest/gtest.h>
 
+#include "engine/core/Error.h"
 #include "engine/core/FaceLocation.h"
 #include "engine/reference/VelocityReconstruction.h"
-#include "engine/core/Error.h"
 #include "tests/support/RandomCoefficients.h"
 #include "tests/support/RealBases.h"
 #include "tests/support/SyntheticBases.h"
@@ -29,7 +29,8 @@ double relativeDivergence(const BasisCache& cache, const std::vector<double>& fi
     const MacGrid grid = MacGrid::fromSpec(cache.grid);
     double largestFlux = 0.0;
     for (std::int64_t f = 0; f < grid.faceTotal(); ++f)
-        largestFlux = std::max(largestFlux, std::abs(field[std::size_t(f)]) * grid.faceArea(locateFace(grid, f).axis));
+        largestFlux = std::max(
+            largestFlux, std::abs(field[std::size_t(f)]) * grid.faceArea(locateFace(grid, f).axis));
     return maxAbs(reference::faceFieldDivergence(grid, field)) / largestFlux;
 }
 
@@ -50,7 +51,8 @@ TEST(Reconstruction, RealBasesGiveDivergenceFreeFaceFieldsOnTheWholeGrid) {
         EXPECT_LE(divergence, 1e-12);
         // Each mode alone, too.
         for (Eigen::Index i = 0; i < modes; ++i)
-            EXPECT_LE(relativeDivergence(*cache, reference::reconstructFaceField(*cache, Eigen::VectorXd::Unit(v.size(), i))),
+            EXPECT_LE(relativeDivergence(*cache, reference::reconstructFaceField(
+                                                     *cache, Eigen::VectorXd::Unit(v.size(), i))),
                       1e-11)
                 << "mode " << i;
     }
@@ -58,7 +60,8 @@ TEST(Reconstruction, RealBasesGiveDivergenceFreeFaceFieldsOnTheWholeGrid) {
 
 TEST(Reconstruction, ScattersFluxOverWholeFaceAreaAndLeavesOtherFacesZero) {
     for (const int dim : {2, 3}) {
-        const BasisCache cache = testing::syntheticBasis(testing::boxGrid(dim, dim == 2 ? 9 : 5), 6, 11);
+        const BasisCache cache =
+            testing::syntheticBasis(testing::boxGrid(dim, dim == 2 ? 9 : 5), 6, 11);
         const MacGrid grid = MacGrid::fromSpec(cache.grid);
         const Eigen::VectorXd v = testing::randomVector(6, 4);
         const Eigen::VectorXd fluxes = cache.velocity.modes * v;
@@ -69,7 +72,8 @@ TEST(Reconstruction, ScattersFluxOverWholeFaceAreaAndLeavesOtherFacesZero) {
             const std::int64_t f = cache.faces[d];
             isDof[std::size_t(f)] = true;
             const double area = grid.faceArea(locateFace(grid, f).axis);
-            EXPECT_NEAR(field[std::size_t(f)] * area, fluxes[Eigen::Index(d)], 1e-14 * std::abs(fluxes[Eigen::Index(d)]));
+            EXPECT_NEAR(field[std::size_t(f)] * area, fluxes[Eigen::Index(d)],
+                        1e-14 * std::abs(fluxes[Eigen::Index(d)]));
         }
         for (std::size_t f = 0; f < field.size(); ++f)
             if (!isDof[f]) {
@@ -98,7 +102,9 @@ TEST(Reconstruction, CellCentreVelocityAveragesTheTwoFacesPerAxis) {
     const MacGrid grid = MacGrid::fromSpec(testing::boxGrid(3, 4));
     // u_a = a linear function of the face centre: the cell-centre mean is its value at the centre.
     std::vector<double> field(std::size_t(grid.faceTotal()));
-    auto linear = [](int axis, const Vec3& x) { return 1.0 + axis + 2.0 * x[0] - 3.0 * x[1] + 0.5 * x[2] * axis; };
+    auto linear = [](int axis, const Vec3& x) {
+        return 1.0 + axis + 2.0 * x[0] - 3.0 * x[1] + 0.5 * x[2] * axis;
+    };
     for (std::int64_t f = 0; f < grid.faceTotal(); ++f) {
         const FaceLocation face = locateFace(grid, f);
         field[std::size_t(f)] = linear(face.axis, faceCentre(grid, face));
@@ -107,13 +113,15 @@ TEST(Reconstruction, CellCentreVelocityAveragesTheTwoFacesPerAxis) {
     for (int z = 0; z < grid.cells[2]; ++z)
         for (int y = 0; y < grid.cells[1]; ++y)
             for (int x = 0; x < grid.cells[0]; ++x) {
-                const Vec3 centre{grid.cellCentre(0, x), grid.cellCentre(1, y), grid.cellCentre(2, z)};
+                const Vec3 centre{grid.cellCentre(0, x), grid.cellCentre(1, y),
+                                  grid.cellCentre(2, z)};
                 const Vec3& u = cells[std::size_t(grid.cellIndex(x, y, z))];
                 for (int a = 0; a < 3; ++a) EXPECT_NEAR(u[a], linear(a, centre), 1e-13);
             }
     // 2D: the third component is 0.
     const MacGrid flat = MacGrid::fromSpec(testing::boxGrid(2, 5));
-    const std::vector<Vec3> flatCells = reference::cellCentreVelocity(flat, std::vector<double>(std::size_t(flat.faceTotal()), 2.0));
+    const std::vector<Vec3> flatCells = reference::cellCentreVelocity(
+        flat, std::vector<double>(std::size_t(flat.faceTotal()), 2.0));
     for (const Vec3& u : flatCells) EXPECT_EQ(u, (Vec3{2.0, 2.0, 0.0}));
 }
 

@@ -29,7 +29,8 @@ SceneSpec hotScene(int dim) {
     scene.smoke.buoyancy = 2.0;
     scene.smoke.resolutionScale = 2;
     SourceSpec source;
-    source.shape = testing::ball(dim == 2 ? Vec3{0.0, -0.55, 0.0} : Vec3{0.0, 0.0, -0.55}, dim == 2 ? 0.2 : 0.3);
+    source.shape = testing::ball(dim == 2 ? Vec3{0.0, -0.55, 0.0} : Vec3{0.0, 0.0, -0.55},
+                                 dim == 2 ? 0.2 : 0.3);
     source.density = 2.0;
     source.temperature = 1.0;
     scene.sources = {source};
@@ -67,8 +68,8 @@ TEST_P(SimulationTest, DeviceRunFollowsTheCpuReference) {
         SimulationSettings settings = disk->settings;
         settings.advection = scheme;
         {
-            device::Simulation device(context(), disk->cache, *disk->coefficients, settings, disk->smokeMask,
-                              true);
+            device::Simulation device(context(), disk->cache, *disk->coefficients, settings,
+                                      disk->smokeMask, true);
             reference::Simulation cpu(disk->cache, *disk->coefficients, settings, disk->smokeMask);
             RandomVelocitySpec swirl;
             swirl.energy = 0.05;
@@ -115,7 +116,8 @@ TEST_P(SimulationTest, TensorFreeRunFollowsTheCpuReference) {
     const RunInputs& ball = hotBall();
     const TensorFreeCoefficients coefficients(ball.cache.velocity.modes, ball.cache.quadrature);
     {
-        device::Simulation device(context(), ball.cache, coefficients, ball.settings, ball.smokeMask);
+        device::Simulation device(context(), ball.cache, coefficients, ball.settings,
+                                  ball.smokeMask);
         reference::Simulation cpu(ball.cache, coefficients, ball.settings, ball.smokeMask);
         RandomVelocitySpec swirl;
         swirl.energy = 0.05;
@@ -127,8 +129,10 @@ TEST_P(SimulationTest, TensorFreeRunFollowsTheCpuReference) {
             cpu.advanceFrame();
         }
         const Eigen::VectorXd v = device.velocity(), expected = cpu.velocity();
-        const double error = (v - expected).lpNorm<Eigen::Infinity>() / expected.lpNorm<Eigen::Infinity>();
-        std::cout << "3D tensor-free, 20 steps: relative max difference of the modes " << error << "\n";
+        const double error =
+            (v - expected).lpNorm<Eigen::Infinity>() / expected.lpNorm<Eigen::Infinity>();
+        std::cout << "3D tensor-free, 20 steps: relative max difference of the modes " << error
+                  << "\n";
         EXPECT_LE(error, 1e-4);
     }
     expectNoValidationMessages();
@@ -140,7 +144,8 @@ TEST_P(SimulationTest, MhdRunFollowsTheCpuReference) {
     scene.simulation.magneticDiffusivity = 1e-3;
     const RunInputs disk = testing::sharedRun(scene);
     {
-        device::Simulation device(context(), disk.cache, *disk.coefficients, disk.settings, disk.smokeMask);
+        device::Simulation device(context(), disk.cache, *disk.coefficients, disk.settings,
+                                  disk.smokeMask);
         reference::Simulation cpu(disk.cache, *disk.coefficients, disk.settings, disk.smokeMask);
         RandomVelocitySpec swirl;
         swirl.energy = 0.05;
@@ -160,10 +165,11 @@ TEST_P(SimulationTest, MhdRunFollowsTheCpuReference) {
         };
         const double velocityError = relative(device.velocity(), cpu.velocity());
         const double fieldError = relative(device.magneticField(), cpu.magneticField());
-        const double faceError = maxDifference(device.faceMagneticField(), cpu.faceMagneticField()) /
-                                 maxAbs(cpu.faceMagneticField());
-        std::cout << "2D MHD, 20 steps: relative max differences: velocity " << velocityError << ", field "
-                  << fieldError << ", field on the faces " << faceError << "\n";
+        const double faceError =
+            maxDifference(device.faceMagneticField(), cpu.faceMagneticField()) /
+            maxAbs(cpu.faceMagneticField());
+        std::cout << "2D MHD, 20 steps: relative max differences: velocity " << velocityError
+                  << ", field " << fieldError << ", field on the faces " << faceError << "\n";
         EXPECT_GT(relative(cpu.magneticField(), f0), 1e-3) << "the field hardly moved: a weak test";
         EXPECT_LE(velocityError, 1e-4);
         EXPECT_LE(fieldError, 1e-4);
@@ -175,7 +181,8 @@ TEST_P(SimulationTest, MhdRunFollowsTheCpuReference) {
 TEST_P(SimulationTest, TimingSamplesOnlyTheStepsAskedFor) {
     const auto& disk = hotDisk();
     const SimulationSettings settings = disk.settings;
-    device::Simulation device(context(), disk.cache, *disk.coefficients, settings, disk.smokeMask, true);
+    device::Simulation device(context(), disk.cache, *disk.coefficients, settings, disk.smokeMask,
+                              true);
     if (context().timestampValidBits() == 0) GTEST_SKIP() << "the queue writes no timestamps";
     const FrameStats timed = device.advanceSteps(2);
     EXPECT_EQ(timed.timedSteps, 2);
@@ -195,7 +202,8 @@ TEST_P(SimulationTest, HotSmokeRisesAndStaysInsideTheDomain) {
     const RunInputs& disk = hotDisk();
     const SimulationSettings settings = disk.settings;
     {
-        device::Simulation device(context(), disk.cache, *disk.coefficients, settings, disk.smokeMask);
+        device::Simulation device(context(), disk.cache, *disk.coefficients, settings,
+                                  disk.smokeMask);
         device.advanceFrame();
         const double start = testing::centroid(device.smokeGrid(), device.smoke().density)[1];
         for (int frame = 0; frame < 8; ++frame) device.advanceFrame();
@@ -220,7 +228,8 @@ TEST_P(SimulationTest, SplatsStirTheFluidOnlyWhileSet) {
     settings.buoyancy = 0.0;
     settings.emitters.clear();
     {
-        device::Simulation device(context(), disk.cache, *disk.coefficients, settings, disk.smokeMask);
+        device::Simulation device(context(), disk.cache, *disk.coefficients, settings,
+                                  disk.smokeMask);
         device.advanceFrame();
         EXPECT_EQ(device.velocity().norm(), 0.0) << "no force, no motion";
         const ForceSplat push{{0.0, 0.0, 0.0}, {5.0, 0.0, 0.0}, 0.3};
@@ -248,7 +257,8 @@ TEST_P(SimulationTest, MovingObstaclesMatchTheCpuReference) {
     paddle.path = {{0.0, {-0.5, 0.0, 0.0}}, {1.0, {0.5, 0.0, 0.0}}};
     settings.obstacles = {MovingObstacle{paddle}};
     {
-        device::Simulation device(context(), disk.cache, *disk.coefficients, settings, disk.smokeMask, true);
+        device::Simulation device(context(), disk.cache, *disk.coefficients, settings,
+                                  disk.smokeMask, true);
         reference::Simulation cpu(disk.cache, *disk.coefficients, settings, disk.smokeMask);
         FrameStats stats;
         for (int frame = 0; frame < 2; ++frame) {
@@ -257,11 +267,13 @@ TEST_P(SimulationTest, MovingObstaclesMatchTheCpuReference) {
         }
         const Eigen::VectorXd v = device.velocity(), expected = cpu.velocity();
         ASSERT_GT(expected.norm(), 0.0) << "the paddle must stir the fluid";
-        const double error = (v - expected).lpNorm<Eigen::Infinity>() / expected.lpNorm<Eigen::Infinity>();
-        std::cout << "moving capsule, 10 steps: modes relative difference " << error << ", obstacle stage "
-                  << stats.obstaclesMs << " ms per frame\n";
+        const double error =
+            (v - expected).lpNorm<Eigen::Infinity>() / expected.lpNorm<Eigen::Infinity>();
+        std::cout << "moving capsule, 10 steps: modes relative difference " << error
+                  << ", obstacle stage " << stats.obstaclesMs << " ms per frame\n";
         EXPECT_LE(error, 1e-4);
-        EXPECT_LE(maxDifference(device.smoke().density, cpu.smoke().density), 1e-4 * maxAbs(cpu.smoke().density));
+        EXPECT_LE(maxDifference(device.smoke().density, cpu.smoke().density),
+                  1e-4 * maxAbs(cpu.smoke().density));
     }
     expectNoValidationMessages();
 }
@@ -289,7 +301,8 @@ TEST_P(SimulationTest, AClosedFormBoxRunsOnItsTransformsAndFollowsTheCpuReferenc
     ball.path = {{0.0, {0.3, 0.5, 0.5}}, {1.0, {0.9, 0.5, 0.5}}};
     settings.obstacles = {MovingObstacle{ball}};
     {
-        device::Simulation device(context(), run.cache, *run.coefficients, settings, run.smokeMask, true);
+        device::Simulation device(context(), run.cache, *run.coefficients, settings, run.smokeMask,
+                                  true);
         reference::Simulation cpu(run.cache, *run.coefficients, settings, run.smokeMask);
         FrameStats stats;
         for (int frame = 0; frame < 2; ++frame) {
@@ -298,13 +311,16 @@ TEST_P(SimulationTest, AClosedFormBoxRunsOnItsTransformsAndFollowsTheCpuReferenc
         }
         const Eigen::VectorXd v = device.velocity(), expected = cpu.velocity();
         ASSERT_GT(expected.norm(), 0.0);
-        const double error = (v - expected).lpNorm<Eigen::Infinity>() / expected.lpNorm<Eigen::Infinity>();
-        const double faceError = maxDifference(device.faceVelocity(), cpu.faceVelocity()) / maxAbs(cpu.faceVelocity());
-        const double densityError =
-            maxDifference(device.smoke().density, cpu.smoke().density) / maxAbs(cpu.smoke().density);
-        std::cout << "closed-form box, 10 steps: relative max differences: modes " << error << ", grid velocity "
-                  << faceError << ", density " << densityError << "; device ms per frame: forces " << stats.forcesMs
-                  << ", reconstruction " << stats.reconstructionMs << ", obstacles " << stats.obstaclesMs << "\n";
+        const double error =
+            (v - expected).lpNorm<Eigen::Infinity>() / expected.lpNorm<Eigen::Infinity>();
+        const double faceError =
+            maxDifference(device.faceVelocity(), cpu.faceVelocity()) / maxAbs(cpu.faceVelocity());
+        const double densityError = maxDifference(device.smoke().density, cpu.smoke().density) /
+                                    maxAbs(cpu.smoke().density);
+        std::cout << "closed-form box, 10 steps: relative max differences: modes " << error
+                  << ", grid velocity " << faceError << ", density " << densityError
+                  << "; device ms per frame: forces " << stats.forcesMs << ", reconstruction "
+                  << stats.reconstructionMs << ", obstacles " << stats.obstaclesMs << "\n";
         EXPECT_LE(error, 1e-4);
         EXPECT_LE(faceError, 1e-4);
         EXPECT_LE(densityError, 1e-4);
@@ -320,7 +336,8 @@ TEST_P(SimulationTest, EmittersFollowTheirTimeWindows) {
     settings.emitters[0].start = 0.05;  // steps 3 and 4 of 0.02 (t = 0.06, 0.08) emit
     settings.emitters[0].end = 0.09;
     {
-        device::Simulation device(context(), disk.cache, *disk.coefficients, settings, disk.smokeMask);
+        device::Simulation device(context(), disk.cache, *disk.coefficients, settings,
+                                  disk.smokeMask);
         reference::Simulation cpu(disk.cache, *disk.coefficients, settings, disk.smokeMask);
         std::vector<double> masses;
         for (int step = 0; step < 6; ++step) {
@@ -329,7 +346,8 @@ TEST_P(SimulationTest, EmittersFollowTheirTimeWindows) {
             double mass = 0.0;
             for (double d : device.smoke().density) mass += d;
             masses.push_back(mass);
-            EXPECT_LE(maxDifference(device.smoke().density, cpu.smoke().density), 1e-6) << "step " << step;
+            EXPECT_LE(maxDifference(device.smoke().density, cpu.smoke().density), 1e-6)
+                << "step " << step;
         }
         EXPECT_EQ(masses[2], 0.0) << "before the window";
         EXPECT_GT(masses[3], 0.0);

@@ -30,7 +30,9 @@ double relative(const Eigen::MatrixXd& got, const Eigen::MatrixXd& want) {
 
 class TensorFree : public ::testing::TestWithParam<int> {
 protected:
-    const BasisCache& cache() const { return GetParam() == 2 ? testing::disk2d() : testing::ball3d(); }
+    const BasisCache& cache() const {
+        return GetParam() == 2 ? testing::disk2d() : testing::ball3d();
+    }
 };
 
 TEST_P(TensorFree, EveryEntryIsTheAssembledOne) {
@@ -97,7 +99,8 @@ TEST(CachedCoefficients, ATensorIsRefusedFromACacheWithoutOne) {
     BasisCache cache = testing::disk2d();
     cache.coefficients = BasisCache::Coefficients{};
     cache.coefficients.storage = BasisCache::Coefficients::Storage::None;
-    EXPECT_NE(dynamic_cast<const TensorFreeCoefficients*>(coefficientsFromCache(cache).get()), nullptr);
+    EXPECT_NE(dynamic_cast<const TensorFreeCoefficients*>(coefficientsFromCache(cache).get()),
+              nullptr);
     try {
         coefficientsFromCache(cache, CoefficientStorage::Dense);
         FAIL() << "dense coefficients from a cache without a tensor";

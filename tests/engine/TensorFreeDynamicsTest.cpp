@@ -30,7 +30,8 @@ using testing::randomVector;
 /// Both storages of the shared 100-mode basis.
 struct Storages {
     const BasisCache& cache = testing::disk2dHundredModes();
-    std::unique_ptr<StructuralCoefficients> dense = coefficientsFromCache(cache, CoefficientStorage::Dense);
+    std::unique_ptr<StructuralCoefficients> dense =
+        coefficientsFromCache(cache, CoefficientStorage::Dense);
     std::unique_ptr<StructuralCoefficients> free =
         coefficientsFromCache(cache, CoefficientStorage::TensorFree);
 };
@@ -90,7 +91,8 @@ INSTANTIATE_TEST_SUITE_P(Integrators, TensorFreeTrajectory,
                          [](const auto& info) { return std::string(sceneKeyword(info.param)); });
 
 /// |J_free·u − J_dense·u| / |J_dense·u| for the product without a Jacobian.
-double productDifference(const ModalSystem& dense, const ModalSystem& free, const Eigen::VectorXd& x) {
+double productDifference(const ModalSystem& dense, const ModalSystem& free,
+                         const Eigen::VectorXd& x) {
     const Eigen::VectorXd u = randomVector(x.size(), 41);
     Eigen::VectorXd r, want, got;
     Eigen::MatrixXd jac;
@@ -107,8 +109,8 @@ TEST(TensorFreeJacobian, ProductsAreTheAssembledJacobians) {
     const double fluid = productDifference(denseFluid, freeFluid, randomVector(100, 42));
     EXPECT_LT(fluid, 1e-12) << "LANS-α";
     const MhdSystem denseMhd(*s.dense), freeMhd(*s.free);
-    const double mhd =
-        productDifference(denseMhd, freeMhd, denseMhd.state(randomVector(100, 43), randomVector(100, 44)));
+    const double mhd = productDifference(
+        denseMhd, freeMhd, denseMhd.state(randomVector(100, 43), randomVector(100, 44)));
     EXPECT_LT(mhd, 1e-12) << "MHD";
 }
 
@@ -121,7 +123,8 @@ TEST(TensorFreeMidpoint, KeepsTheEnergyOver1000Steps) {
     double drift = 0.0;
     for (int step = 0; step < 1000; ++step) {
         const StepReport report = midpoint.step(v, h);
-        ASSERT_NE(report.solver, NewtonSolver::DenseLu) << "a tensor-free Jacobian costs O(E·N²): no LU";
+        ASSERT_NE(report.solver, NewtonSolver::DenseLu)
+            << "a tensor-free Jacobian costs O(E·N²): no LU";
         drift = std::max(drift, std::abs(energy(v) - e0) / e0);
     }
     EXPECT_LE(drift, 1e-9) << "largest relative energy change " << drift;

@@ -34,24 +34,31 @@ enum class Operation { Apply, Advect };
 
 /// max |device − reference| / max |reference| of the operation on random float32 vectors; the
 /// reference sees the modes as the device holds them.
-double deviceError(const vulkan::VulkanContext& context, const BasisCache& basis, Operation operation,
-                   const ModeBuffer* shared = nullptr, std::size_t* chunks = nullptr) {
+double deviceError(const vulkan::VulkanContext& context, const BasisCache& basis,
+                   Operation operation, const ModeBuffer* shared = nullptr,
+                   std::size_t* chunks = nullptr) {
     const BasisCache cache = testing::withDeviceModes(basis, ModePrecision::Float32);
     const int n = int(cache.velocity.modes.cols());
     const Eigen::VectorXd a = testing::roundedToFloat(testing::randomVector(n, 51)),
                           b = testing::roundedToFloat(testing::randomVector(n, 52));
     const TensorFreeCoefficients cpu(cache.velocity.modes, cache.quadrature);
     Eigen::VectorXd reference;
-    if (operation == Operation::Apply) cpu.apply(a, b, reference);
-    else cpu.advect(a, b, reference);
+    if (operation == Operation::Apply)
+        cpu.apply(a, b, reference);
+    else
+        cpu.advect(a, b, reference);
 
     const TensorFreeAdvection advection(context, basis, shared);
-    const DeviceBuffer aBuffer = testing::stateBuffer(context, a, "a"), bBuffer = testing::stateBuffer(context, b, "b");
+    const DeviceBuffer aBuffer = testing::stateBuffer(context, a, "a"),
+                       bBuffer = testing::stateBuffer(context, b, "b");
     DeviceBuffer out = DeviceBuffer::fromValues<float>(
-        context, std::vector<float>(std::size_t(n), std::numeric_limits<float>::quiet_NaN()), "out");
+        context, std::vector<float>(std::size_t(n), std::numeric_limits<float>::quiet_NaN()),
+        "out");
     CommandSequence sequence(context);
-    if (operation == Operation::Apply) advection.recordApply(sequence, aBuffer, bBuffer, out);
-    else advection.recordAdvect(sequence, aBuffer, bBuffer, out);
+    if (operation == Operation::Apply)
+        advection.recordApply(sequence, aBuffer, bBuffer, out);
+    else
+        advection.recordAdvect(sequence, aBuffer, bBuffer, out);
     if (chunks) *chunks = sequence.dispatchCount();
     sequence.submitAndWait();
     const Eigen::VectorXd got = testing::downloadFloats(out, std::size_t(n));
@@ -62,9 +69,9 @@ double deviceError(const vulkan::VulkanContext& context, const BasisCache& basis
 class TensorFreeKernelTest : public testing::VulkanTest {};
 
 TEST_P(TensorFreeKernelTest, ContractionsEqualTheCpuReferenceInFloat32) {
-    for (const auto& [name, cache] : {std::pair{"disk 32^2", &testing::disk2d()},
-                                      std::pair{"ball 12^3", &testing::ball3d()},
-                                      std::pair{"disk 40^2, 100 modes", &testing::disk2dHundredModes()}}) {
+    for (const auto& [name, cache] :
+         {std::pair{"disk 32^2", &testing::disk2d()}, std::pair{"ball 12^3", &testing::ball3d()},
+          std::pair{"disk 40^2, 100 modes", &testing::disk2dHundredModes()}}) {
         const double apply = deviceError(context(), *cache, Operation::Apply);
         const double advect = deviceError(context(), *cache, Operation::Advect);
         std::cout << name << ": C(a, b) relative error " << apply << ", advect " << advect << "\n";
@@ -85,7 +92,8 @@ TEST_P(TensorFreeKernelTest, ASharedBasisGivesTheSameResult) {
 TEST_P(TensorFreeKernelTest, ABasisSplitOverBuffersGivesTheSameResult) {
     const BasisCache& cache = testing::disk2dHundredModes();
     // Room for about 16 modes per buffer: several reconstruction and projection dispatches.
-    const auto limited = testing::makeLimitedContext(GetParam(), VkDeviceSize(cache.velocity.modes.rows()) * 4 * 16 + 4096);
+    const auto limited = testing::makeLimitedContext(
+        GetParam(), VkDeviceSize(cache.velocity.modes.rows()) * 4 * 16 + 4096);
     std::size_t dispatches = 0, single = 0;
     const double error = deviceError(*limited, cache, Operation::Apply, nullptr, &dispatches);
     deviceError(context(), cache, Operation::Apply, nullptr, &single);

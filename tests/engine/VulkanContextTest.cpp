@@ -54,7 +54,8 @@ TEST_P(VulkanContextTest, UnknownDeviceNameIsRefusedWithReasons) {
         const std::string message = e.what();
         EXPECT_NE(message.find("no suitable Vulkan device"), std::string::npos) << message;
         EXPECT_NE(message.find("rejected #0"), std::string::npos) << message;
-        EXPECT_NE(message.find("name does not contain \"no-such-gpu-xyz\""), std::string::npos) << message;
+        EXPECT_NE(message.find("name does not contain \"no-such-gpu-xyz\""), std::string::npos)
+            << message;
     }
 }
 
@@ -66,7 +67,8 @@ TEST_P(VulkanContextTest, DeviceIndexOutOfRangeIsRefusedWithReasons) {
         const VulkanContext indexed(options);
         FAIL() << "a context was made on " << indexed.deviceName();
     } catch (const Error& e) {
-        EXPECT_NE(std::string(e.what()).find("not the requested device index 99"), std::string::npos)
+        EXPECT_NE(std::string(e.what()).find("not the requested device index 99"),
+                  std::string::npos)
             << e.what();
     }
 }
@@ -172,7 +174,8 @@ TEST_P(VulkanContextTest, ViewsShareTheirBuffersMemory) {
     EXPECT_EQ(read[0], -1.0f) << "a write through the view reaches the whole buffer";
     EXPECT_NE(second.texelView(), VK_NULL_HANDLE);
     EXPECT_THROW(DeviceBuffer(whole, 16, 16, "misaligned"), Error);
-    EXPECT_THROW(DeviceBuffer(whole, DeviceBuffer::kViewAlignment, whole.bytes(), "past the end"), Error);
+    EXPECT_THROW(DeviceBuffer(whole, DeviceBuffer::kViewAlignment, whole.bytes(), "past the end"),
+                 Error);
     expectNoValidationMessages();
 }
 
@@ -190,7 +193,8 @@ TEST(VulkanValidationTest, MisuseIsCountedSoZeroCountsMeanSomething) {
     info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
     VkBuffer buffer = VK_NULL_HANDLE;
     const VkResult result = vkCreateBuffer(context->device(), &info, nullptr, &buffer);
-    if (result == VK_SUCCESS && buffer != VK_NULL_HANDLE) vkDestroyBuffer(context->device(), buffer, nullptr);
+    if (result == VK_SUCCESS && buffer != VK_NULL_HANDLE)
+        vkDestroyBuffer(context->device(), buffer, nullptr);
     EXPECT_GE(context->validationMessageCount(), 1u);
     const auto messages = context->validationMessages();
     ASSERT_FALSE(messages.empty());

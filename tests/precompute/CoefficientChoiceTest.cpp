@@ -29,14 +29,16 @@ SceneSpec diskScene(CoefficientStorage storage) {
 TEST(CoefficientChoice, TensorFreeAssemblesNothingAndALaterTensorIsTheDirectOne) {
     const testing::TestFolder folder;
     Progress quiet = Progress::silent();
-    const CacheOutcome free = ensureCache(diskScene(CoefficientStorage::TensorFree), folder, false, quiet);
+    const CacheOutcome free =
+        ensureCache(diskScene(CoefficientStorage::TensorFree), folder, false, quiet);
     EXPECT_EQ(free.cache.coefficients.storage, Storage::None);
     EXPECT_TRUE(free.cache.coefficients.packed.empty());
     EXPECT_GT(free.cache.quadrature.curl.rows(), 0);
 
     // The same basis (the key does not depend on the storage), now wanted dense: assembled once
     // into the cache file, without a new eigensolve.
-    const CacheOutcome dense = ensureCache(diskScene(CoefficientStorage::Dense), folder, false, quiet);
+    const CacheOutcome dense =
+        ensureCache(diskScene(CoefficientStorage::Dense), folder, false, quiet);
     EXPECT_TRUE(dense.reused);
     EXPECT_EQ(dense.path, free.path);
     ASSERT_EQ(dense.cache.coefficients.storage, Storage::Dense);
@@ -64,7 +66,8 @@ TEST(CoefficientChoice, AutoLeavesTheTensorOutWhenItCostsMorePerStep) {
     EXPECT_TRUE(chooseTensor(CoefficientStorage::Auto, crossover - 5, faces).assemble);
     const TensorChoice beyond = chooseTensor(CoefficientStorage::Auto, crossover + 5, faces);
     EXPECT_FALSE(beyond.assemble);
-    EXPECT_NE(beyond.reason.find("auto: the tensor-free advection streams fewer values per step"), std::string::npos)
+    EXPECT_NE(beyond.reason.find("auto: the tensor-free advection streams fewer values per step"),
+              std::string::npos)
         << beyond.reason;
     EXPECT_TRUE(chooseTensor(CoefficientStorage::Dense, 10 * crossover, faces).assemble);
     EXPECT_TRUE(chooseTensor(CoefficientStorage::Sparse, 10 * crossover, faces).assemble);

@@ -74,15 +74,17 @@ TEST(SurfaceCache, RefusesAQuadratureOrMissingCoefficients) {
     bad.quadrature.velocityB.start.push_back(0);
     bad.quadrature.velocityC.start.push_back(0);
     writeCache(folder / "quadrature.mfbasis", bad);
-    EXPECT_NE(readError(folder / "quadrature.mfbasis").find("holds a vorticity quadrature or no coefficients"),
+    EXPECT_NE(readError(folder / "quadrature.mfbasis")
+                  .find("holds a vorticity quadrature or no coefficients"),
               std::string::npos)
         << readError(folder / "quadrature.mfbasis");
     bad = good;
     bad.coefficients = BasisCache::Coefficients{};
     bad.coefficients.storage = BasisCache::Coefficients::Storage::None;
     writeCache(folder / "none.mfbasis", bad);
-    EXPECT_NE(readError(folder / "none.mfbasis").find("holds a vorticity quadrature or no coefficients"),
-              std::string::npos)
+    EXPECT_NE(
+        readError(folder / "none.mfbasis").find("holds a vorticity quadrature or no coefficients"),
+        std::string::npos)
         << readError(folder / "none.mfbasis");
 }
 

@@ -41,7 +41,9 @@ DenseCoefficients randomPackedDense(int n, std::uint64_t seed) {
     return DenseCoefficients(n, std::move(packed));
 }
 
-Eigen::VectorXd roundedToFloat(const Eigen::VectorXd& v) { return v.cast<float>().cast<double>(); }
+Eigen::VectorXd roundedToFloat(const Eigen::VectorXd& v) {
+    return v.cast<float>().cast<double>();
+}
 
 DenseCoefficients roundedDense(const DenseCoefficients& c) {
     std::vector<double> packed(c.packed().size());
@@ -63,7 +65,8 @@ Eigen::VectorXd shapedKappaSquared(int n) {
     return k2;
 }
 
-Eigen::VectorXd bruteApply(const StructuralCoefficients& c, const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
+Eigen::VectorXd bruteApply(const StructuralCoefficients& c, const Eigen::VectorXd& a,
+                           const Eigen::VectorXd& b) {
     const int n = c.size();
     Eigen::VectorXd out = Eigen::VectorXd::Zero(n);
     for (int k = 0; k < n; ++k)

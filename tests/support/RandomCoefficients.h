@@ -40,6 +40,7 @@ Eigen::VectorXd randomVector(Eigen::Index n, std::uint64_t seed);
 Eigen::VectorXd shapedKappaSquared(int n);
 
 /// Σ_ij C[k][i][j] a_i b_j from entry().
-Eigen::VectorXd bruteApply(const StructuralCoefficients& c, const Eigen::VectorXd& a, const Eigen::VectorXd& b);
+Eigen::VectorXd bruteApply(const StructuralCoefficients& c, const Eigen::VectorXd& a,
+                           const Eigen::VectorXd& b);
 
 }  // namespace modeflow::testing

@@ -30,7 +30,8 @@ const BasisCache& ball3d() {
 const BasisCache& disk2dHundredModes() {
     static const BasisCache cache = [] {
         SceneSpec scene = unitBallScene(2, 40, 100, 0);
-        scene.basis.coefficients = CoefficientStorage::Dense;  // compared with, whatever auto chooses
+        scene.basis.coefficients =
+            CoefficientStorage::Dense;  // compared with, whatever auto chooses
         return sharedBasis(scene);
     }();
     return cache;

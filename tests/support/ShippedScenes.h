@@ -25,7 +25,9 @@
 
 namespace modeflow::testing {
 
-inline fs::path scenesFolder() { return fs::path(MODEFLOW_SOURCE_DIR) / "scenes"; }
+inline fs::path scenesFolder() {
+    return fs::path(MODEFLOW_SOURCE_DIR) / "scenes";
+}
 
 /// Every *.toml under scenes/, relative to it, sorted.
 inline std::vector<fs::path> shippedScenes() {
@@ -71,7 +73,8 @@ inline constexpr int kMinReducedCells = 8;
 /// length, so a frequency-shaped basis keeps its low band, gap and high band.
 inline SceneSpec reducedScene(SceneSpec scene, double factor) {
     for (int a = 0; a < scene.grid.dim; ++a)
-        scene.grid.resolution[a] = std::max(kMinReducedCells, int(std::lround(scene.grid.resolution[a] * factor)));
+        scene.grid.resolution[a] =
+            std::max(kMinReducedCells, int(std::lround(scene.grid.resolution[a] * factor)));
     std::vector<ModeRange> ranges;
     int previous = 0;
     for (const ModeRange& r : scene.basis.velocityModes) {
@@ -109,7 +112,8 @@ inline std::string sizeText(const SceneSpec& scene) {
 /// [[domain]] mesh files rewritten for `reduced`; mesh files become absolute paths so that they
 /// still resolve from the copy's folder. One key per line, as scene files are written; the
 /// caller reads the copy back to check it says what was meant.
-inline std::string reducedSceneText(const std::string& text, const SceneSpec& original, const SceneSpec& reduced) {
+inline std::string reducedSceneText(const std::string& text, const SceneSpec& original,
+                                    const SceneSpec& reduced) {
     static const std::regex keyLine(R"(^\s*([A-Za-z_]+)\s*=.*$)");
     std::istringstream in(text);
     std::ostringstream out;
@@ -135,9 +139,11 @@ inline std::string reducedSceneText(const std::string& text, const SceneSpec& or
             line = "modes = \"" + modeListText(reduced.basis.velocityModes) + "\"";
         } else if (table == "[basis]" && key == "scalar_modes") {
             line = "scalar_modes = " + std::to_string(reduced.basis.scalarModes);
-        } else if (table == "[[domain]]" && key == "file" && domain >= 0 && domain < int(original.domain.size())) {
+        } else if (table == "[[domain]]" && key == "file" && domain >= 0 &&
+                   domain < int(original.domain.size())) {
             // A TOML literal string: no escapes to get wrong.
-            line = "file = '" + fs::absolute(original.domain[domain].meshFile).lexically_normal().string() + "'";
+            line = "file = '" +
+                   fs::absolute(original.domain[domain].meshFile).lexically_normal().string() + "'";
         }
     }
     return out.str();
@@ -148,7 +154,8 @@ struct SceneUnderTest {
     SceneSpec original;
     fs::path file;            ///< the scene itself, or its reduced copy
     SceneSpec scene;          ///< what `file` holds
-    std::string description;  ///< "NAME: ... full size (...)" or "NAME: ... reduced copy ... from ... to ..."
+    std::string description;  ///< "NAME: ... full size (...)" or "NAME: ... reduced copy ... from
+                              ///< ... to ..."
 };
 
 /// The scene at `relative` (under scenes/), or, when its precompute costs more than
@@ -175,22 +182,26 @@ inline SceneUnderTest sceneUnderTest(const fs::path& relative, const fs::path& f
         factor *= 0.9;
         reduced = reducedScene(chosen.original, factor);
     }
-    EXPECT_LE(precomputeCost(reduced), kReducedSceneCost) << "no reduced copy of " << relative << " is cheap enough";
+    EXPECT_LE(precomputeCost(reduced), kReducedSceneCost)
+        << "no reduced copy of " << relative << " is cheap enough";
     fs::create_directories(folder);
     chosen.file = folder / relative.filename();
     std::ofstream(chosen.file) << reducedSceneText(slurp(file), chosen.original, reduced);
     chosen.scene = loadScene(chosen.file);
     const SceneSpec& copy = chosen.scene;
-    EXPECT_EQ(copy.grid, reduced.grid) << "the reduced copy's [grid] reads back otherwise: " << chosen.file;
-    EXPECT_EQ(copy.basis, reduced.basis) << "the reduced copy's [basis] reads back otherwise: " << chosen.file;
+    EXPECT_EQ(copy.grid, reduced.grid)
+        << "the reduced copy's [grid] reads back otherwise: " << chosen.file;
+    EXPECT_EQ(copy.basis, reduced.basis)
+        << "the reduced copy's [basis] reads back otherwise: " << chosen.file;
     EXPECT_EQ(copy.domain.size(), chosen.original.domain.size());
     for (std::size_t d = 0; d < std::min(copy.domain.size(), chosen.original.domain.size()); ++d)
         if (copy.domain[d].kind == ShapeKind::Mesh) {
-            EXPECT_TRUE(fs::equivalent(copy.domain[d].meshFile, chosen.original.domain[d].meshFile)) << d;
+            EXPECT_TRUE(fs::equivalent(copy.domain[d].meshFile, chosen.original.domain[d].meshFile))
+                << d;
         }
-    description << " > " << kFullSceneCost << ": reduced copy at " << factor << " of the size, from "
-                << sizeText(chosen.original) << " to " << sizeText(reduced) << " (cost "
-                << precomputeCost(reduced) << ")";
+    description << " > " << kFullSceneCost << ": reduced copy at " << factor
+                << " of the size, from " << sizeText(chosen.original) << " to " << sizeText(reduced)
+                << " (cost " << precomputeCost(reduced) << ")";
     chosen.description = description.str();
     return chosen;
 }
@@ -205,7 +216,7 @@ inline std::vector<std::string> backendOptions() {
 /// The backends that run `scene`, and for each the refusal of the others (empty when it runs).
 struct BackendVerdict {
     BackendKind kind;
-    std::string option;                 ///< "cpu", "vulkan"
+    std::string option;                  ///< "cpu", "vulkan"
     std::optional<std::string> refusal;  ///< requireSupport's message
 };
 

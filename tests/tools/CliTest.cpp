@@ -26,8 +26,10 @@ using modeflow::testing::kSmallDisk;
 
 std::string replaced(std::string text, const std::string& from, const std::string& to) {
     const auto at = text.find(from);
-    if (at == std::string::npos) ADD_FAILURE() << "no '" << from << "' in the scene";
-    else text.replace(at, from.size(), to);
+    if (at == std::string::npos)
+        ADD_FAILURE() << "no '" << from << "' in the scene";
+    else
+        text.replace(at, from.size(), to);
     return text;
 }
 
@@ -73,10 +75,12 @@ TEST_F(Cli, PrecomputePrintsTheCachePathLastAndReusesIt) {
     EXPECT_EQ(fs::last_write_time(last), written);
 
     // Simulation settings do not shape the basis: same cache.
-    const fs::path sameBasis = scene("disk2.toml", std::string(kSmallDisk) + "[simulation]\ndt = 0.5\n");
+    const fs::path sameBasis =
+        scene("disk2.toml", std::string(kSmallDisk) + "[simulation]\ndt = 0.5\n");
     EXPECT_NE(run(precompute(sameBasis)).err.find("up to date"), std::string::npos);
     // A change that matters gives another cache file.
-    const fs::path other = scene("disk3.toml", replaced(kSmallDisk, "radius = 1.0", "radius = 0.9"));
+    const fs::path other =
+        scene("disk3.toml", replaced(kSmallDisk, "radius = 1.0", "radius = 0.9"));
     ASSERT_EQ(run(precompute(other)).status, 0);
     EXPECT_EQ(cacheFiles(), 2);
 
@@ -87,7 +91,8 @@ TEST_F(Cli, PrecomputePrintsTheCachePathLastAndReusesIt) {
 
 TEST_F(Cli, InspectJsonReportsTheContractKeys) {
     const fs::path s = scene("disk.toml", kSmallDisk);
-    const RunResult r = run("inspect " + s.string() + " --cache-dir " + mCache.string() + " --json");
+    const RunResult r =
+        run("inspect " + s.string() + " --cache-dir " + mCache.string() + " --json");
     ASSERT_EQ(r.status, 0) << r.err;
     const auto j = nlohmann::json::parse(r.out);
     EXPECT_EQ(j["dim"], 2);
@@ -117,12 +122,14 @@ TEST_F(Cli, InspectJsonReportsTheContractKeys) {
 
 TEST_F(Cli, TensorFreeScenesStoreNoTensorAndRunLikeDenseOnes) {
     const std::string initial = "[initial]\nvelocity = \"random\"\nenergy = 2.0\n";
-    const fs::path free = scene("free.toml", replaced(kSmallDisk, "scalar_modes = 4",
-                                                      "scalar_modes = 4\ncoefficients = \"tensor-free\"") +
-                                                 initial);
-    const fs::path dense = scene("dense.toml", replaced(kSmallDisk, "scalar_modes = 4",
-                                                        "scalar_modes = 4\ncoefficients = \"dense\"") +
-                                                   initial);
+    const fs::path free =
+        scene("free.toml", replaced(kSmallDisk, "scalar_modes = 4",
+                                    "scalar_modes = 4\ncoefficients = \"tensor-free\"") +
+                               initial);
+    const fs::path dense = scene(
+        "dense.toml",
+        replaced(kSmallDisk, "scalar_modes = 4", "scalar_modes = 4\ncoefficients = \"dense\"") +
+            initial);
     const std::string freeCache = " --cache-dir " + (mDir / "free").string();
     const RunResult inspect = run("inspect " + free.string() + freeCache + " --json");
     ASSERT_EQ(inspect.status, 0) << inspect.err;
@@ -141,7 +148,8 @@ TEST_F(Cli, TensorFreeScenesStoreNoTensorAndRunLikeDenseOnes) {
     // The state's figures, not the solver's: without a cheap Jacobian the tensor-free midpoint
     // rule iterates fixed points where the dense one runs Newton (iterations, residual).
     const std::size_t stateColumns = 5;  // step, time, energy, enstrophy, cross_helicity
-    ASSERT_EQ(want.header.rfind("step,time,energy,enstrophy,cross_helicity,", 0), 0u) << want.header;
+    ASSERT_EQ(want.header.rfind("step,time,energy,enstrophy,cross_helicity,", 0), 0u)
+        << want.header;
     double worst = 0.0;
     for (std::size_t r = 0; r < got.rows.size(); ++r)
         for (std::size_t c = 0; c < stateColumns; ++c)
@@ -154,36 +162,42 @@ TEST_F(Cli, TensorFreeScenesStoreNoTensorAndRunLikeDenseOnes) {
     const std::vector<double> expected = csvEnergies(a.out), energies = csvEnergies(device.out);
     ASSERT_EQ(energies.size(), expected.size());
     for (std::size_t step = 0; step < energies.size(); ++step)
-        EXPECT_NEAR(energies[step] / expected[step], 1.0, 1e-5) << "step " << step << " on the device";
+        EXPECT_NEAR(energies[step] / expected[step], 1.0, 1e-5)
+            << "step " << step << " on the device";
 }
 
 TEST_F(Cli, TensorFreeIsRefusedForClosedFormAndSurfaceBases) {
     // A whole box with free-slip walls has closed-form bases: no columns, no vorticity quadrature.
-    const std::string box = "[grid]\nresolution = [4, 3, 3]\nbounds_min = [0.0, 0.0, 0.0]\n"
-                            "bounds_max = [1.0, 1.0, 1.0]\n[basis]\nvelocity_modes = 6\nscalar_modes = 1\n";
+    const std::string box =
+        "[grid]\nresolution = [4, 3, 3]\nbounds_min = [0.0, 0.0, 0.0]\n"
+        "bounds_max = [1.0, 1.0, 1.0]\n[basis]\nvelocity_modes = 6\nscalar_modes = 1\n";
     const fs::path free = scene("box_free.toml", box + "coefficients = \"tensor-free\"\n");
     const std::string closedForm = "a whole box with free-slip walls gets closed-form bases";
     expectRejected("precompute " + free.string() + " --cache-dir " + mCache.string(), closedForm);
     // Its cache made by auto (sparse coefficients), then the scene asks for tensor-free: refused
     // when the run loads the cache, on either backend.
     const fs::path automatic = scene("box_auto.toml", box);
-    const RunResult made = run("precompute " + automatic.string() + " --cache-dir " + mCache.string());
+    const RunResult made =
+        run("precompute " + automatic.string() + " --cache-dir " + mCache.string());
     ASSERT_EQ(made.status, 0) << made.err;
     for (const char* device : {"cpu", "vulkan"}) {
         const RunResult r = run("modes " + free.string() + " --steps 2 --csv --device " + device +
                                 " --cache-dir " + mCache.string());
         EXPECT_NE(r.status, 0) << device;
-        EXPECT_NE(r.err.find("modeflow: error: [basis].coefficients = \"tensor-free\": a closed-form basis"),
-                  std::string::npos)
+        EXPECT_NE(
+            r.err.find(
+                "modeflow: error: [basis].coefficients = \"tensor-free\": a closed-form basis"),
+            std::string::npos)
             << device << ": " << r.err;
     }
 
     // A surface's coefficients are always assembled: refused when the scene is read.
     std::ofstream(mDir / "tetrahedron.obj") << "v 1 1 1\nv 1 -1 -1\nv -1 1 -1\nv -1 -1 1\n"
                                                "f 1 2 3\nf 1 4 2\nf 1 3 4\nf 2 4 3\n";
-    const fs::path surface = scene("surface_free.toml",
-                                   "[surface]\nmesh = \"tetrahedron.obj\"\n[basis]\nvelocity_modes = 2\n"
-                                   "scalar_modes = 1\ncoefficients = \"tensor-free\"\n");
+    const fs::path surface =
+        scene("surface_free.toml",
+              "[surface]\nmesh = \"tetrahedron.obj\"\n[basis]\nvelocity_modes = 2\n"
+              "scalar_modes = 1\ncoefficients = \"tensor-free\"\n");
     fs::remove_all(mCache);
     expectRejected("precompute " + surface.string() + " --cache-dir " + mCache.string(),
                    "[basis].coefficients");
@@ -218,9 +232,10 @@ scalar_modes = 2
 
 TEST_F(Cli, InspectNamesTheClosedFormBasesOfAWholeBox) {
     // No [[domain]] and free-slip walls: both bases in closed form, sparse coefficients.
-    const fs::path s = scene("box.toml", "[grid]\nresolution = [10, 8, 6]\nbounds_min = [0, 0, 0]\n"
-                                         "bounds_max = [1, 1, 1]\n[basis]\nvelocity_modes = 30\n"
-                                         "scalar_modes = 5\n");
+    const fs::path s = scene("box.toml",
+                             "[grid]\nresolution = [10, 8, 6]\nbounds_min = [0, 0, 0]\n"
+                             "bounds_max = [1, 1, 1]\n[basis]\nvelocity_modes = 30\n"
+                             "scalar_modes = 5\n");
     RunResult r = run("inspect " + s.string() + " --cache-dir " + mCache.string() + " --json");
     ASSERT_EQ(r.status, 0) << r.err;
     const auto j = nlohmann::json::parse(r.out);
@@ -256,12 +271,14 @@ TEST_F(Cli, HelpDescribesEverySubcommand) {
 TEST_F(Cli, BadScenesAreRejectedWithTheKeyNamed) {
     expectRejected(precompute(scene("a.toml", replaced(kSmallDisk, "scalar_modes", "scalar_mode"))),
                    "scalar_mode");
-    expectRejected(precompute(scene("b.toml", replaced(kSmallDisk, "radius = 1.0", "radius = \"big\""))),
-                   "radius");
+    expectRejected(
+        precompute(scene("b.toml", replaced(kSmallDisk, "radius = 1.0", "radius = \"big\""))),
+        "radius");
     expectRejected(precompute(scene("c.toml", replaced(kSmallDisk, "[24, 24]", "[1, 24]"))),
                    "resolution");
-    expectRejected(precompute(scene("d.toml", replaced(kSmallDisk, "[24, 24]", "[4000, 4000, 4000]"))),
-                   "resolution");
+    expectRejected(
+        precompute(scene("d.toml", replaced(kSmallDisk, "[24, 24]", "[4000, 4000, 4000]"))),
+        "resolution");
     expectRejected(precompute(scene("e.toml", replaced(kSmallDisk, "bounds_max = [1.1, 1.1]",
                                                        "bounds_max = [-2.0, 1.1]"))),
                    "bounds");
@@ -274,7 +291,8 @@ TEST_F(Cli, EmptyOrMissingDomainsAreRejected) {
                                                           "center = [5.0, 5.0]"))),
                    "[[domain]]");
     // Two disjoint balls intersected: nothing left.
-    const std::string empty = std::string(kSmallDisk) +
+    const std::string empty =
+        std::string(kSmallDisk) +
         "[[domain]]\nshape = \"ball\"\ncenter = [0.0, 0.0]\nradius = 0.05\nop = \"subtract\"\n"
         "[[domain]]\nshape = \"ball\"\ncenter = [0.0, 0.0]\nradius = 0.04\nop = \"intersect\"\n";
     expectRejected(precompute(scene("empty.toml", empty)), "[[domain]]");
@@ -282,10 +300,12 @@ TEST_F(Cli, EmptyOrMissingDomainsAreRejected) {
 
 TEST_F(Cli, TooManyModesAreRejected) {
     const std::string tiny = replaced(kSmallDisk, "[24, 24]", "[6, 6]");
-    expectRejected(precompute(scene("v.toml", replaced(tiny, "velocity_modes = 8", "velocity_modes = 100"))),
-                   "[basis]");
-    expectRejected(precompute(scene("s.toml", replaced(tiny, "scalar_modes = 4", "scalar_modes = 100"))),
-                   "scalar_modes");
+    expectRejected(
+        precompute(scene("v.toml", replaced(tiny, "velocity_modes = 8", "velocity_modes = 100"))),
+        "[basis]");
+    expectRejected(
+        precompute(scene("s.toml", replaced(tiny, "scalar_modes = 4", "scalar_modes = 100"))),
+        "scalar_modes");
 }
 
 TEST_F(Cli, BadMeshesAreRejected) {
@@ -309,13 +329,15 @@ velocity_modes = 4
     std::ofstream(mDir / "open.obj") << "v -.5 -.5 -.5\nv .5 -.5 -.5\nv .5 .5 -.5\nv -.5 .5 -.5\n"
                                         "v -.5 -.5 .5\nv .5 -.5 .5\nv .5 .5 .5\nv -.5 .5 .5\n"
                                         "f 1 4 3 2\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\n";
-    expectRejected(precompute(scene("m3.toml", replaced(meshScene, "MESH", "open.obj"))), "open.obj");
+    expectRejected(precompute(scene("m3.toml", replaced(meshScene, "MESH", "open.obj"))),
+                   "open.obj");
 }
 
 TEST_F(Cli, UnwritableCacheDirectoryIsRejectedBeforeAnyWork) {
     const fs::path s = scene("disk.toml", kSmallDisk);
     std::ofstream(mDir / "plainfile") << "x";
-    const RunResult r = run("precompute " + s.string() + " --cache-dir " + (mDir / "plainfile" / "sub").string());
+    const RunResult r =
+        run("precompute " + s.string() + " --cache-dir " + (mDir / "plainfile" / "sub").string());
     EXPECT_NE(r.status, 0);
     EXPECT_NE(r.err.find("cache directory"), std::string::npos) << r.err;
     EXPECT_EQ(r.err.find("eigensolve"), std::string::npos) << "work started: " << r.err;
@@ -450,8 +472,8 @@ TEST_F(Cli, NumericOptionsRefuseNonsenseNamingTheOption) {
 }
 
 TEST_F(Cli, ModesRunsTheReducedDynamicsAsCsv) {
-    const fs::path s = scene("modes.toml", std::string(kSmallDisk) +
-                                               "[initial]\nvelocity = \"random\"\nenergy = 2.0\n");
+    const fs::path s = scene(
+        "modes.toml", std::string(kSmallDisk) + "[initial]\nvelocity = \"random\"\nenergy = 2.0\n");
     const RunResult r = run("modes " + s.string() + " --cache-dir " + mCache.string() +
                             " --steps 200 --dt 0.05 --integrator midpoint --csv");
     ASSERT_EQ(r.status, 0) << r.err;
@@ -468,31 +490,36 @@ TEST_F(Cli, ModesRunsTheReducedDynamicsAsCsv) {
     EXPECT_NE(bad.status, 0);
     EXPECT_NE(bad.err.find("leapfrog"), std::string::npos) << bad.err;
     EXPECT_FALSE(fs::exists(mDir / "c2")) << "work started before the option was checked";
-    const RunResult badDevice = run("modes " + s.string() + " --cache-dir " + mCache.string() + " --device gpu0");
+    const RunResult badDevice =
+        run("modes " + s.string() + " --cache-dir " + mCache.string() + " --device gpu0");
     EXPECT_NE(badDevice.status, 0);
     EXPECT_NE(badDevice.err.find("--device gpu0"), std::string::npos) << badDevice.err;
 }
 
 TEST_F(Cli, ModesRunsOnTheVulkanDeviceLikeTheCpuReference) {
-    const fs::path s = scene("modes.toml", std::string(kSmallDisk) +
-                                               "[initial]\nvelocity = \"random\"\nenergy = 2.0\n");
-    const std::string args = " --cache-dir " + mCache.string() + " --steps 100 --dt 0.02 --integrator midpoint --csv";
+    const fs::path s = scene(
+        "modes.toml", std::string(kSmallDisk) + "[initial]\nvelocity = \"random\"\nenergy = 2.0\n");
+    const std::string args =
+        " --cache-dir " + mCache.string() + " --steps 100 --dt 0.02 --integrator midpoint --csv";
     const RunResult cpu = run("modes " + s.string() + args);
     const RunResult gpu = run("modes " + s.string() + args + " --device vulkan");
     ASSERT_EQ(cpu.status, 0) << cpu.err;
     ASSERT_EQ(gpu.status, 0) << gpu.err;
-    EXPECT_NE(gpu.err.find("Vulkan device:"), std::string::npos) << "the run must say which device runs";
+    EXPECT_NE(gpu.err.find("Vulkan device:"), std::string::npos)
+        << "the run must say which device runs";
     const std::vector<double> expected = csvEnergies(cpu.out), got = csvEnergies(gpu.out);
     ASSERT_EQ(got.size(), expected.size());
     for (std::size_t step = 0; step < got.size(); ++step)
         EXPECT_NEAR(got[step] / expected[step], 1.0, 1e-5) << "step " << step;
 
-    const std::string trapezoidal = " --cache-dir " + mCache.string() + " --steps 50 --dt 0.02 --integrator trapezoidal --csv";
+    const std::string trapezoidal =
+        " --cache-dir " + mCache.string() + " --steps 50 --dt 0.02 --integrator trapezoidal --csv";
     const RunResult cpuTrapezoidal = run("modes " + s.string() + trapezoidal);
     const RunResult gpuTrapezoidal = run("modes " + s.string() + trapezoidal + " --device vulkan");
     ASSERT_EQ(cpuTrapezoidal.status, 0) << cpuTrapezoidal.err;
     ASSERT_EQ(gpuTrapezoidal.status, 0) << gpuTrapezoidal.err;
-    const std::vector<double> wanted = csvEnergies(cpuTrapezoidal.out), energies = csvEnergies(gpuTrapezoidal.out);
+    const std::vector<double> wanted = csvEnergies(cpuTrapezoidal.out),
+                              energies = csvEnergies(gpuTrapezoidal.out);
     ASSERT_EQ(energies.size(), wanted.size());
     for (std::size_t step = 0; step < energies.size(); ++step)
         EXPECT_NEAR(energies[step] / wanted[step], 1.0, 1e-5) << "trapezoidal, step " << step;
@@ -520,16 +547,17 @@ radius = 0.2
     EXPECT_NEAR(e.front(), 0.8, 1e-12) << "the projected state is rescaled to [initial].energy";
     EXPECT_NEAR(e.back() / e.front(), 1.0, 1e-10) << "midpoint conserves it";
 
-    const std::string modes = std::string(kSmallDisk) +
-                              "[initial]\nvelocity = \"modes\"\namplitudes = [[1, 1.0], [3, -0.5]]\n";
+    const std::string modes =
+        std::string(kSmallDisk) +
+        "[initial]\nvelocity = \"modes\"\namplitudes = [[1, 1.0], [3, -0.5]]\n";
     r = run("modes " + scene("modes.toml", modes).string() + args);
     ASSERT_EQ(r.status, 0) << r.err;
     e = csvEnergies(r.out);
     ASSERT_FALSE(e.empty());
     EXPECT_NEAR(e.front(), 0.5 * (1.0 + 0.25), 1e-12) << "energy = ½Σa²";
 
-    const std::string band = std::string(kSmallDisk) +
-                             "[initial]\nvelocity = \"random\"\nenergy = 0.3\nband = [2, 5]\n";
+    const std::string band =
+        std::string(kSmallDisk) + "[initial]\nvelocity = \"random\"\nenergy = 0.3\nband = [2, 5]\n";
     r = run("modes " + scene("band.toml", band).string() + args);
     ASSERT_EQ(r.status, 0) << r.err;
     e = csvEnergies(r.out);
@@ -539,15 +567,14 @@ radius = 0.2
     r = run("modes " + scene("beyond.toml", replaced(modes, "[3, -0.5]", "[9, -0.5]")).string() +
             " --cache-dir " + (mDir / "c3").string());
     EXPECT_NE(r.status, 0);
-    EXPECT_NE(r.err.find("[initial].amplitudes[1]: mode 9 is outside the basis"),
-              std::string::npos)
+    EXPECT_NE(r.err.find("[initial].amplitudes[1]: mode 9 is outside the basis"), std::string::npos)
         << r.err;
     EXPECT_FALSE(fs::exists(mDir / "c3")) << "the scene is checked before any precompute";
 }
 
 TEST_F(Cli, ModesRunsMhdConservingEnergyAndCrossHelicity) {
-    expectRejected(precompute(scene("m1.toml", std::string(kSmallDisk) +
-                                                   "[initial]\nmagnetic_energy = 1.0\n")),
+    expectRejected(precompute(scene(
+                       "m1.toml", std::string(kSmallDisk) + "[initial]\nmagnetic_energy = 1.0\n")),
                    "mhd = true");
     expectRejected(precompute(scene("m2.toml", std::string(kSmallDisk) +
                                                    "[simulation]\nmhd = true\nalpha = 0.1\n")),
@@ -568,14 +595,17 @@ TEST_F(Cli, ModesRunsMhdConservingEnergyAndCrossHelicity) {
         EXPECT_NEAR(row[2], rows[0][2], 1e-12);
         EXPECT_NEAR(row[4], rows[0][4], 1e-12) << "cross helicity";
     }
-    const RunResult device = run("modes " + s.string() + " --cache-dir " + mCache.string() +
-                                 " --steps 100 --dt 0.05 --integrator midpoint --csv --device vulkan");
+    const RunResult device =
+        run("modes " + s.string() + " --cache-dir " + mCache.string() +
+            " --steps 100 --dt 0.05 --integrator midpoint --csv --device vulkan");
     ASSERT_EQ(device.status, 0) << device.err;
     const Csv onDevice = parseCsv(device.out);
     ASSERT_EQ(onDevice.rows.size(), rows.size());
     for (std::size_t step = 0; step < rows.size(); ++step) {
-        EXPECT_NEAR(onDevice.rows[step][2], rows[step][2], 1e-5) << "energy on the device, step " << step;
-        EXPECT_NEAR(onDevice.rows[step][4], rows[step][4], 1e-5) << "cross helicity on the device, step " << step;
+        EXPECT_NEAR(onDevice.rows[step][2], rows[step][2], 1e-5)
+            << "energy on the device, step " << step;
+        EXPECT_NEAR(onDevice.rows[step][4], rows[step][4], 1e-5)
+            << "cross helicity on the device, step " << step;
     }
 }
 

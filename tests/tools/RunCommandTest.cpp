@@ -85,14 +85,17 @@ std::vector<Vec3> smokeCentres() {
     const MacGrid grid = MacGrid::fromSpec(spec).refined(2);
     std::vector<Vec3> centres;
     for (int y = 0; y < grid.cells[1]; ++y)
-        for (int x = 0; x < grid.cells[0]; ++x) centres.push_back({grid.cellCentre(0, x), grid.cellCentre(1, y), 0.0});
+        for (int x = 0; x < grid.cells[0]; ++x)
+            centres.push_back({grid.cellCentre(0, x), grid.cellCentre(1, y), 0.0});
     return centres;
 }
 
 class RunCommand : public Cli {
 protected:
-    RunResult simulate(const fs::path& scene, const fs::path& out, const std::string& extra = "") const {
-        return run("run " + scene.string() + " --out " + out.string() + " --cache-dir " + mCache.string() + " " + extra);
+    RunResult simulate(const fs::path& scene, const fs::path& out,
+                       const std::string& extra = "") const {
+        return run("run " + scene.string() + " --out " + out.string() + " --cache-dir " +
+                   mCache.string() + " " + extra);
     }
 };
 
@@ -100,9 +103,11 @@ TEST_F(RunCommand, WritesVdbFramesThatReadBack) {
     const fs::path s = scene("hot.toml", kHotDisk), out = mDir / "frames";
     const RunResult r = simulate(s, out);
     ASSERT_EQ(r.status, 0) << r.err;
-    EXPECT_NE(r.err.find("Vulkan device:"), std::string::npos) << "the run must say which device runs";
+    EXPECT_NE(r.err.find("Vulkan device:"), std::string::npos)
+        << "the run must say which device runs";
     EXPECT_EQ(r.out, out.string() + "\n") << "stdout's last line is the output folder";
-    for (int frame = 1; frame <= 4; ++frame) EXPECT_TRUE(fs::exists(out / frameFileName("hot", frame))) << frame;
+    for (int frame = 1; frame <= 4; ++frame)
+        EXPECT_TRUE(fs::exists(out / frameFileName("hot", frame))) << frame;
 
     const VdbFrameInfo info = readVdbFrameInfo(out / "hot_0003.vdb");
     ASSERT_NE(info.grid("density"), nullptr);
@@ -161,7 +166,8 @@ TEST_F(RunCommand, CpuReferenceRunGivesTheSameSmoke) {
     const std::vector<Vec3> centres = smokeCentres();
     const auto a = sampleVdbGrid(mDir / "gpu" / "hot_0002.vdb", "density", centres);
     const auto b = sampleVdbGrid(mDir / "cpu" / "hot_0002.vdb", "density", centres);
-    for (std::size_t c = 0; c < centres.size(); ++c) EXPECT_NEAR(a[c].value[0], b[c].value[0], 1e-5) << c;
+    for (std::size_t c = 0; c < centres.size(); ++c)
+        EXPECT_NEAR(a[c].value[0], b[c].value[0], 1e-5) << c;
 }
 
 TEST_F(RunCommand, MhdRunsOnTheCpuReferenceWithAMagneticGridAndResumes) {
@@ -202,7 +208,8 @@ TEST_F(RunCommand, MhdRunsOnAVulkanDeviceLikeOnTheCpuReference) {
         const auto a = sampleVdbGrid(mDir / "gpu" / "rotor_0002.vdb", grid, centres);
         const auto b = sampleVdbGrid(mDir / "cpu" / "rotor_0002.vdb", grid, centres);
         for (std::size_t c = 0; c < centres.size(); ++c)
-            for (int k = 0; k < 3; ++k) EXPECT_NEAR(a[c].value[k], b[c].value[k], 1e-4) << grid << " cell " << c;
+            for (int k = 0; k < 3; ++k)
+                EXPECT_NEAR(a[c].value[k], b[c].value[k], 1e-4) << grid << " cell " << c;
     }
 }
 
@@ -210,12 +217,13 @@ TEST_F(RunCommand, BadInputIsRefusedBeforeAnyWork) {
     const fs::path s = scene("hot.toml", kHotDisk);
     EXPECT_NE(simulate(s, mDir / "f", "--frames 0").status, 0);
     std::ofstream(mDir / "file") << "x";
-    expectRejected("run " + s.string() + " --out " + (mDir / "file" / "sub").string() + " --cache-dir " +
-                       mCache.string(),
-                   "output folder");
-    expectRejected("run " + scene("dt.toml", std::string(kHotDisk) + "[simulation]\ndt = -1\n").string() +
+    expectRejected("run " + s.string() + " --out " + (mDir / "file" / "sub").string() +
                        " --cache-dir " + mCache.string(),
-                   "dt");
+                   "output folder");
+    expectRejected(
+        "run " + scene("dt.toml", std::string(kHotDisk) + "[simulation]\ndt = -1\n").string() +
+            " --cache-dir " + mCache.string(),
+        "dt");
     const std::string cone = R"(
 [grid]
 resolution = [24, 24]
@@ -226,19 +234,20 @@ velocity_modes = 8
 [[source]]
 shape = "cone"
 )";
-    expectRejected("run " + scene("cone.toml", cone).string() + " --cache-dir " + mCache.string(), "[[source]]");
-    expectRejected("run " + s.string() + " --out " + (mDir / "g").string() + " --device gpu0 --cache-dir " +
-                       mCache.string(),
+    expectRejected("run " + scene("cone.toml", cone).string() + " --cache-dir " + mCache.string(),
+                   "[[source]]");
+    expectRejected("run " + s.string() + " --out " + (mDir / "g").string() +
+                       " --device gpu0 --cache-dir " + mCache.string(),
                    "--device gpu0");
-    EXPECT_FALSE(fs::exists(mDir / "g")) << "the output folder was made before the device was checked";
+    EXPECT_FALSE(fs::exists(mDir / "g"))
+        << "the output folder was made before the device was checked";
 }
-
 
 TEST_F(RunCommand, WhatTheBackendCannotDoIsRefusedBeforeThePrecompute) {
     const fs::path s = scene("hot.toml", kHotDisk);
     // A device index that is not there: the device is opened before any precompute.
-    expectRejected("run " + s.string() + " --out " + (mDir / "f").string() + " --device 7 --cache-dir " +
-                       mCache.string(),
+    expectRejected("run " + s.string() + " --out " + (mDir / "f").string() +
+                       " --device 7 --cache-dir " + mCache.string(),
                    "device");
     EXPECT_FALSE(fs::exists(mCache)) << "the precompute ran before the device was opened";
     // Held modes run on the CPU reference only (the capability table).

@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "tests/support/PngFile.h"
 #include "tests/support/CliFixture.h"
+#include "tests/support/PngFile.h"
 #include "tests/support/ShippedScenes.h"
 
 namespace modeflow::testing {
@@ -23,7 +23,8 @@ constexpr int kFrames = 3;
 std::vector<fs::path> stirScenes() {
     std::vector<fs::path> found;
     for (const fs::path& relative : shippedScenes())
-        if (slurp(scenesFolder() / relative).find("modeflow stir") != std::string::npos) found.push_back(relative);
+        if (slurp(scenesFolder() / relative).find("modeflow stir") != std::string::npos)
+            found.push_back(relative);
     return found;
 }
 
@@ -41,8 +42,8 @@ TEST_P(ShippedStirScene, StirsAFewFrames) {
     for (const std::string& backend : backendOptions()) {
         const fs::path shot = mDir / ("shot_" + backend + ".png");
         const std::string args = "stir " + s.file.string() + " --device " + backend + " --frames " +
-                                 std::to_string(kFrames) + " --screenshot " + shot.string() + " --cache-dir " +
-                                 mCache.string();
+                                 std::to_string(kFrames) + " --screenshot " + shot.string() +
+                                 " --cache-dir " + mCache.string();
         const RunResult r = run(args);
         ASSERT_EQ(r.status, 0) << "stir --device " << backend << ": " << r.err;
         EXPECT_NE(r.err.find(std::to_string(kFrames) + " frames ("), std::string::npos) << r.err;
@@ -53,7 +54,9 @@ TEST_P(ShippedStirScene, StirsAFewFrames) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, ShippedStirScene, ::testing::ValuesIn(stirScenes()),
-                         [](const ::testing::TestParamInfo<fs::path>& info) { return sceneTestName(info.param); });
+                         [](const ::testing::TestParamInfo<fs::path>& info) {
+                             return sceneTestName(info.param);
+                         });
 
 TEST(ShippedStirScenes, IncludeTheStirDemos) {
     const std::vector<fs::path> scenes = stirScenes();

@@ -8,8 +8,8 @@
 /// list follows scenes/.
 ///
 /// A scene whose precompute is long (velocity DOFs × highest mode above 4e6, see
-/// tests/support/ShippedScenes.h) runs on a reduced copy, and the test prints what it ran. When this
-/// was written (factor of the resolution per axis and of the modes):
+/// tests/support/ShippedScenes.h) runs on a reduced copy, and the test prints what it ran. When
+/// this was written (factor of the resolution per axis and of the modes):
 ///   bench/ball_48                    [48³], 100 modes         → [23³], 48 modes          (0.48)
 ///   bench/ball_64                    [64³], 200 modes         → [20³], 63 modes          (0.31)
 ///   bench/disk_256                   [256²], 100 + 50 scalar  → [122²], 48 + 24 scalar   (0.48)
@@ -17,8 +17,8 @@
 ///   seed/hot_blob_mesh_3d            [40³], 120 modes         → [24³], 71 modes          (0.59)
 ///   seed/smoke_past_sphere_3d        [32,32,48], 230 modes    → [12,12,19], 89 modes     (0.39)
 ///   seed/smoke_past_sphere_shaped_3d [32,32,48], 1-115,516-630 → [10,10,15], 1-36,163-198 (0.31)
-///   sphere_obstacle_3d               [32,32,48], 60 + 20 scalar → [17,17,26], 32 + 11 scalar (0.53)
-///   stir_3d                          [32³], 100 modes         → [21³], 66 modes          (0.66)
+///   sphere_obstacle_3d               [32,32,48], 60 + 20 scalar → [17,17,26], 32 + 11 scalar
+///   (0.53) stir_3d                          [32³], 100 modes         → [21³], 66 modes (0.66)
 /// The other scenes (all 2D ones but disk_256, and torus_3d) run as shipped.
 
 #include <cmath>
@@ -41,7 +41,9 @@ namespace {
 constexpr int kFrames = 2;
 constexpr int kModeSteps = 4;
 
-bool allFinite(const Eigen::VectorXd& v) { return v.allFinite(); }
+bool allFinite(const Eigen::VectorXd& v) {
+    return v.allFinite();
+}
 
 bool allFinite(const std::vector<double>& values) {
     for (double x : values)
@@ -54,16 +56,19 @@ protected:
     /// `run` on `backend`: the frames exist and read back, the checkpoint is finite and moving.
     void runs(const SceneUnderTest& s, const std::string& backend) {
         const fs::path out = mDir / ("frames_" + backend);
-        const RunResult r = run("run " + s.file.string() + " --frames " + std::to_string(kFrames) + " --device " +
-                                backend + " --out " + out.string() + " --cache-dir " + mCache.string());
+        const RunResult r =
+            run("run " + s.file.string() + " --frames " + std::to_string(kFrames) + " --device " +
+                backend + " --out " + out.string() + " --cache-dir " + mCache.string());
         ASSERT_EQ(r.status, 0) << "run --device " << backend << ": " << r.err;
         for (int frame = 1; frame <= kFrames && s.scene.isSurface(); ++frame) {
-            // A surface scene's frames are PLY files: a header for its mesh, the binary data after it.
+            // A surface scene's frames are PLY files: a header for its mesh, the binary data after
+            // it.
             const fs::path ply = out / plyFrameFileName(s.scene.name, frame);
             ASSERT_TRUE(fs::exists(ply)) << ply;
             const std::string text = slurp(ply);
             EXPECT_EQ(text.rfind("ply\nformat binary_little_endian 1.0\n", 0), 0u) << ply;
-            EXPECT_NE(text.find("comment frame " + std::to_string(frame) + "\n"), std::string::npos) << ply;
+            EXPECT_NE(text.find("comment frame " + std::to_string(frame) + "\n"), std::string::npos)
+                << ply;
             EXPECT_NE(text.find("property float density\n"), std::string::npos) << ply;
         }
         for (int frame = 1; frame <= kFrames && !s.scene.isSurface(); ++frame) {
@@ -83,8 +88,8 @@ protected:
         EXPECT_TRUE(allFinite(c.smoke.temperature)) << "temperature on " << backend;
         // What the scene sets going shows: the fluid moves, or smoke is there. (The precompute
         // benchmarks in scenes/bench/ set nothing going and stay still.)
-        const bool setsGoing = s.scene.initial.velocity != InitialVelocity::Zero || !s.scene.sources.empty() ||
-                               !s.scene.obstacles.empty();
+        const bool setsGoing = s.scene.initial.velocity != InitialVelocity::Zero ||
+                               !s.scene.sources.empty() || !s.scene.obstacles.empty();
         double smoke = 0.0;
         for (double d : c.smoke.density) smoke += d;
         if (setsGoing) {
@@ -95,8 +100,9 @@ protected:
 
     /// `modes` on `backend` for a few steps: every energy of the CSV is finite.
     void stepsModes(const SceneUnderTest& s, const std::string& backend) {
-        const RunResult r = run("modes " + s.file.string() + " --csv --steps " + std::to_string(kModeSteps) +
-                                " --device " + backend + " --cache-dir " + mCache.string());
+        const RunResult r =
+            run("modes " + s.file.string() + " --csv --steps " + std::to_string(kModeSteps) +
+                " --device " + backend + " --cache-dir " + mCache.string());
         ASSERT_EQ(r.status, 0) << "modes --device " << backend << ": " << r.err;
         std::istringstream csv(r.out);
         std::string row;
@@ -109,7 +115,8 @@ protected:
             std::getline(fields, step, ',');
             std::getline(fields, time, ',');
             std::getline(fields, energy, ',');
-            EXPECT_TRUE(std::isfinite(std::stod(energy))) << "modes --device " << backend << ": " << row;
+            EXPECT_TRUE(std::isfinite(std::stod(energy)))
+                << "modes --device " << backend << ": " << row;
             ++rows;
         }
         EXPECT_EQ(rows, kModeSteps + 1) << r.out;
@@ -121,8 +128,8 @@ protected:
         const fs::path out = mDir / ("refused_" + v.option);
         for (const std::string command : {"run", "modes"}) {
             const std::string args = command + " " + s.file.string() + " --device " + v.option +
-                                     (command == "run" ? " --out " + out.string() : "") + " --cache-dir " +
-                                     mCache.string();
+                                     (command == "run" ? " --out " + out.string() : "") +
+                                     " --cache-dir " + mCache.string();
             expectRejected(args, "modeflow: error: " + *v.refusal);
         }
         EXPECT_FALSE(fs::exists(out)) << "the output folder was made before the refusal";
@@ -148,12 +155,15 @@ TEST_P(ShippedScene, RunsEndToEnd) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, ShippedScene, ::testing::ValuesIn(shippedScenes()),
-                         [](const ::testing::TestParamInfo<fs::path>& info) { return sceneTestName(info.param); });
+                         [](const ::testing::TestParamInfo<fs::path>& info) {
+                             return sceneTestName(info.param);
+                         });
 
 TEST(ShippedScenes, AreFoundUnderScenes) {
     const std::vector<fs::path> scenes = shippedScenes();
     EXPECT_NE(std::find(scenes.begin(), scenes.end(), fs::path("default.toml")), scenes.end());
-    EXPECT_NE(std::find(scenes.begin(), scenes.end(), fs::path("seed/smoke_past_sphere_3d.toml")), scenes.end());
+    EXPECT_NE(std::find(scenes.begin(), scenes.end(), fs::path("seed/smoke_past_sphere_3d.toml")),
+              scenes.end());
 }
 
 }  // namespace

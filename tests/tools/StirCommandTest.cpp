@@ -16,7 +16,8 @@ TEST_F(StirCommand, WithoutADisplaySaysSoAndHowToRunHeadless) {
     unsetenv("DISPLAY");
     unsetenv("WAYLAND_DISPLAY");
     const fs::path s = scene("disk.toml", kSmallDisk);
-    expectRejected("stir " + s.string() + " --frames 1 --cache-dir " + mCache.string(), "no display");
+    expectRejected("stir " + s.string() + " --frames 1 --cache-dir " + mCache.string(),
+                   "no display");
     const RunResult r = run("stir " + s.string() + " --frames 1 --cache-dir " + mCache.string());
     EXPECT_NE(r.err.find("xvfb-run"), std::string::npos) << r.err;
 }
@@ -25,8 +26,9 @@ TEST_F(StirCommand, BadScriptsAreRefusedBeforeAnyWork) {
     const fs::path s = scene("disk.toml", kSmallDisk);
     const fs::path script = mDir / "drag.txt";
     std::ofstream(script) << "0.1 down 0.2 0.2\n0.2 wiggle 0.3 0.3\n";
-    expectRejected("stir " + s.string() + " --script " + script.string() + " --cache-dir " + mCache.string(),
-                   "drag.txt:2: unknown event \"wiggle\"");
+    expectRejected(
+        "stir " + s.string() + " --script " + script.string() + " --cache-dir " + mCache.string(),
+        "drag.txt:2: unknown event \"wiggle\"");
     expectRejected("stir " + s.string() + " --script " + (mDir / "missing.txt").string() +
                        " --cache-dir " + mCache.string(),
                    (mDir / "missing.txt").string() + ": no such input script");

@@ -47,7 +47,8 @@ BasisCache::Quadrature boxQuadrature(const GridSpec& grid, const std::vector<std
     const Domain box({}, grid.dim, grid.spacing(0));
     const CutCellMeasures measures = measureCutCells(complex, box, BoundaryTreatment::CutCell, 1);
     const CutCellDec dec = buildCutCellDec(complex, measures, WallKind::FreeSlip);
-    if (dec.faces.toGlobal != faces) throw Error("bench_tensor_free: the box's face DOFs are not the synthetic basis's");
+    if (dec.faces.toGlobal != faces)
+        throw Error("bench_tensor_free: the box's face DOFs are not the synthetic basis's");
     return vorticityQuadrature(complex, measures, dec);
 }
 
@@ -71,7 +72,8 @@ enum class Storage { Dense, TensorFree };
 std::unique_ptr<StructuralCoefficients> coefficientsFor(const BasisCache& cache, Storage storage) {
     const int n = int(cache.velocity.modes.cols());
     if (storage == Storage::Dense)
-        return std::make_unique<DenseCoefficients>(testing::randomPackedDense(n, std::uint64_t(n) * 7919));
+        return std::make_unique<DenseCoefficients>(
+            testing::randomPackedDense(n, std::uint64_t(n) * 7919));
     return std::make_unique<TensorFreeCoefficients>(cache.velocity.modes, cache.quadrature);
 }
 
@@ -91,7 +93,8 @@ void cpuStep(benchmark::State& state, Storage storage) {
     for (auto _ : state) {
         const auto start = std::chrono::steady_clock::now();
         rk4.step(v, 1e-3);
-        const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        const double seconds =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         state.SetIterationTime(seconds);
         stepMs.push_back(seconds * 1e3);
     }
@@ -106,8 +109,8 @@ void deviceStep(benchmark::State& state, Storage storage) {
     {
         // The host's tensor is only needed for the upload.
         const std::unique_ptr<StructuralCoefficients> c = coefficientsFor(cache, storage);
-        stepper = std::make_unique<device::ModalStepper>(context, *c, FluidParameters{},
-                                                         device::DeviceStepSettings{Integrator::Rk4}, &cache);
+        stepper = std::make_unique<device::ModalStepper>(
+            context, *c, FluidParameters{}, device::DeviceStepSettings{Integrator::Rk4}, &cache);
     }
     stepper->setState(testing::randomVector(n, 5));
     stepper->setForce(Eigen::VectorXd::Zero(n));
@@ -119,7 +122,8 @@ void deviceStep(benchmark::State& state, Storage storage) {
     step(warmUp);
     std::vector<double> stepMs;
     for (auto _ : state) {
-        vulkan::CommandSequence sequence(context, true, std::uint32_t(stepper->dispatchesPerStep()));
+        vulkan::CommandSequence sequence(context, true,
+                                         std::uint32_t(stepper->dispatchesPerStep()));
         step(sequence);
         double total = 0.0;
         for (const double t : sequence.dispatchTimesMs()) total += t;
@@ -135,9 +139,18 @@ void deviceStep(benchmark::State& state, Storage storage) {
         for (const auto& [name, storage] :
              {std::pair{"dense", Storage::Dense}, std::pair{"tensor_free", Storage::TensorFree}}) {
             benchmark::RegisterBenchmark((std::string("cpu_") + name).c_str(), cpuStep, storage)
-                ->ArgName("N")->Arg(n)->Iterations(3)->UseManualTime()->Unit(benchmark::kMillisecond);
-            benchmark::RegisterBenchmark((std::string("vulkan_") + name).c_str(), deviceStep, storage)
-                ->ArgName("N")->Arg(n)->Iterations(3)->UseManualTime()->Unit(benchmark::kMillisecond);
+                ->ArgName("N")
+                ->Arg(n)
+                ->Iterations(3)
+                ->UseManualTime()
+                ->Unit(benchmark::kMillisecond);
+            benchmark::RegisterBenchmark((std::string("vulkan_") + name).c_str(), deviceStep,
+                                         storage)
+                ->ArgName("N")
+                ->Arg(n)
+                ->Iterations(3)
+                ->UseManualTime()
+                ->Unit(benchmark::kMillisecond);
         }
     }
     return true;

@@ -15,9 +15,13 @@
 namespace modeflow::cli {
 namespace {
 
-std::vector<double> toStd(const Eigen::VectorXd& v) { return {v.data(), v.data() + v.size()}; }
+std::vector<double> toStd(const Eigen::VectorXd& v) {
+    return {v.data(), v.data() + v.size()};
+}
 
-const char* sourceName(BasisSource s) { return s == BasisSource::ClosedForm ? "closed-form" : "eigensolve"; }
+const char* sourceName(BasisSource s) {
+    return s == BasisSource::ClosedForm ? "closed-form" : "eigensolve";
+}
 
 nlohmann::ordered_json summarize(const BasisCache& c, const std::filesystem::path& path) {
     const BasisChecks checks = checkBasis(c);
@@ -32,9 +36,12 @@ nlohmann::ordered_json summarize(const BasisCache& c, const std::filesystem::pat
     } else {
         j["kind"] = "grid";
         j["dim"] = n;
-        j["resolution"] = std::vector<int>(c.grid.resolution.begin(), c.grid.resolution.begin() + n);
-        j["bounds_min"] = std::vector<double>(c.grid.boundsMin.begin(), c.grid.boundsMin.begin() + n);
-        j["bounds_max"] = std::vector<double>(c.grid.boundsMax.begin(), c.grid.boundsMax.begin() + n);
+        j["resolution"] =
+            std::vector<int>(c.grid.resolution.begin(), c.grid.resolution.begin() + n);
+        j["bounds_min"] =
+            std::vector<double>(c.grid.boundsMin.begin(), c.grid.boundsMin.begin() + n);
+        j["bounds_max"] =
+            std::vector<double>(c.grid.boundsMax.begin(), c.grid.boundsMax.begin() + n);
         j["periodic"] = std::vector<bool>(c.grid.periodic.begin(), c.grid.periodic.begin() + n);
         j["wall"] = sceneKeyword(c.wall);
         j["boundary"] = sceneKeyword(c.boundary);
@@ -52,7 +59,8 @@ nlohmann::ordered_json summarize(const BasisCache& c, const std::filesystem::pat
                      {"gradient_penalty", c.velocity.penalty}};
     j["scalar"] = {{"count", c.scalar.eigenvalues.size()},
                    {"source", sourceName(c.scalar.source)},
-                   {"boundary", c.kind == BasisKind::Surface ? "closed surface" : sceneKeyword(c.scalar.boundary)},
+                   {"boundary", c.kind == BasisKind::Surface ? "closed surface"
+                                                             : sceneKeyword(c.scalar.boundary)},
                    {"eigenvalues", toStd(c.scalar.eigenvalues)},
                    {"omitted_constants", c.scalar.omittedConstants},
                    {"orthonormality_error", checks.scalarOrthonormality},
@@ -118,8 +126,8 @@ void printText(const nlohmann::ordered_json& j) {
         const auto& m = j["surface"];
         std::cout << "surface    " << m["vertices"] << " vertices, " << m["edges"] << " edges, "
                   << m["triangles"] << " triangles\n"
-                  << "dofs       " << j["dofs"]["edges"] << " edge fluxes, " << j["dofs"]["triangles"]
-                  << " triangles\n";
+                  << "dofs       " << j["dofs"]["edges"] << " edge fluxes, "
+                  << j["dofs"]["triangles"] << " triangles\n";
     } else {
         std::cout << "grid       " << j["dim"] << "D " << j["resolution"].dump()
                   << periodicAxes(j["periodic"]) << ", " << j["boundary"].get<std::string>() << ", "
@@ -152,8 +160,9 @@ void printText(const nlohmann::ordered_json& j) {
               << ", orthonormality error " << v["orthonormality_error"].get<double>() << checked(v)
               << "\n";
     const auto& s = j["scalar"];
-    std::cout << "scalar     " << s["count"] << " " << s["boundary"].get<std::string>() << " modes, "
-              << s["source"].get<std::string>() << ", μ² = " << list(s["eigenvalues"]) << "\n";
+    std::cout << "scalar     " << s["count"] << " " << s["boundary"].get<std::string>()
+              << " modes, " << s["source"].get<std::string>() << ", μ² = " << list(s["eigenvalues"])
+              << "\n";
     const auto& co = j["coefficients"];
     if (co["storage"] == "none")
         std::cout << "C          none stored (tensor-free), quadrature of "
@@ -194,8 +203,10 @@ Command addInspect(CLI::App& app) {
             path = ensureCache(scene, resolveCacheDir(opts->cacheDir), false, progress).path;
         }
         const nlohmann::ordered_json j = summarize(readCache(path), path);
-        if (opts->json) std::cout << j.dump() << std::endl;
-        else printText(j);
+        if (opts->json)
+            std::cout << j.dump() << std::endl;
+        else
+            printText(j);
         return 0;
     };
 }

@@ -1,15 +1,15 @@
 #include <cmath>
-#include <functional>
 #include <cstdio>
+#include <functional>
 #include <iostream>
 #include <memory>
 #include <string>
 #include <utility>
 #include <vector>
 
-#include "engine/dynamics/Diagnostics.h"
 #include "engine/core/Error.h"
 #include "engine/core/KappaSquared.h"
+#include "engine/dynamics/Diagnostics.h"
 #include "engine/dynamics/ModalDivergence.h"
 #include "engine/pipeline/Backend.h"
 #include "engine/pipeline/RunInputs.h"
@@ -48,12 +48,14 @@ Command addModes(CLI::App& app) {
         const BackendChoice choice = parseDeviceOption(opts->device);
         const SceneSpec scene = loadScene(opts->scene);
         requireSupport(scene, choice.kind);
-        const Integrator scheme = opts->integrator ? parseIntegrator(*opts->integrator, "--integrator")
-                                                   : scene.simulation.integrator;
+        const Integrator scheme = opts->integrator
+                                      ? parseIntegrator(*opts->integrator, "--integrator")
+                                      : scene.simulation.integrator;
         const Backend backend(choice);
         std::cerr << backend.describe();
         Progress progress = Progress::toStderr();
-        const RunInputs run = prepareRun(scene, resolveCacheDir(opts->cacheDir), progress, RunParts::Dynamics);
+        const RunInputs run =
+            prepareRun(scene, resolveCacheDir(opts->cacheDir), progress, RunParts::Dynamics);
         const int n = run.modeCount();
         const SimulationSpec& sim = scene.simulation;
         const Eigen::VectorXd k2 = checkedKappaSquared(run.cache.velocity.eigenvalues, "modes");
@@ -65,9 +67,7 @@ Command addModes(CLI::App& app) {
         // Surfaces carry 2D flows: their vorticity is a scalar too.
         const bool twoD = run.cache.kind == BasisKind::Surface || run.cache.grid.dim == 2;
         // Conserved by the midpoint rule: ½Σ(1+α²κ²)v² (Euler, LANS-α) or ½(|v|²+|F|²) (MHD).
-        auto totalEnergy = [&]() {
-            return sim.mhd ? energy(x) : lansEnergy(x, k2, sim.alpha);
-        };
+        auto totalEnergy = [&]() { return sim.mhd ? energy(x) : lansEnergy(x, k2, sim.alpha); };
         const double e0 = totalEnergy();
 
         auto row = [&](int step, const StepReport& r) {
@@ -106,8 +106,10 @@ Command addModes(CLI::App& app) {
         std::fflush(stdout);
         backend.requireCleanValidation();
         if (unconverged)
-            std::cerr << "warning: the " << (backend.kind() == BackendKind::Vulkan ? "fixed-point" : "Newton")
-                      << " iteration did not converge in " << unconverged << " steps; try a smaller --dt\n";
+            std::cerr << "warning: the "
+                      << (backend.kind() == BackendKind::Vulkan ? "fixed-point" : "Newton")
+                      << " iteration did not converge in " << unconverged
+                      << " steps; try a smaller --dt\n";
         return 0;
     };
 }

@@ -9,11 +9,15 @@
 #include <sstream>
 #include <string>
 
-#include "engine/format/CacheFile.h"
 #include "engine/core/Error.h"
 #include "engine/core/WritableDirectory.h"
+#include "engine/dynamics/ModalDivergence.h"
+#include "engine/format/CacheFile.h"
 #include "engine/output/RunFolder.h"
 #include "engine/output/VdbFrame.h"
+#include "engine/pipeline/Backend.h"
+#include "engine/pipeline/RunInputs.h"
+#include "engine/pipeline/RunMemory.h"
 #include "engine/simulation/Checkpoint.h"
 #include "precompute/Precompute.h"
 #include "precompute/scene/SceneLoader.h"
@@ -22,10 +26,6 @@
 #include "tools/modeflow/FrameProgress.h"
 #include "tools/modeflow/NumberOptions.h"
 #include "tools/modeflow/SurfaceRun.h"
-#include "engine/pipeline/Backend.h"
-#include "engine/pipeline/RunInputs.h"
-#include "engine/pipeline/RunMemory.h"
-#include "engine/dynamics/ModalDivergence.h"
 
 namespace modeflow::cli {
 namespace {
@@ -56,18 +56,23 @@ Command addRun(CLI::App& app) {
         std::optional<int> previewEvery;
     };
     auto opts = std::make_shared<Options>();
-    CLI::App* sub = app.add_subcommand("run", "Simulate a scene and write one OpenVDB file per frame");
+    CLI::App* sub =
+        app.add_subcommand("run", "Simulate a scene and write one OpenVDB file per frame");
     sub->add_option("SCENE", opts->scene, "scene file (TOML)")->required();
     sub->add_option("--frames", opts->frames, "frames to write (default: [output].frames)")
         ->check(countUpTo(kMaxFrames));
-    sub->add_option("--out", opts->out, "output folder (default: NAME_frames beside the current folder)");
+    sub->add_option("--out", opts->out,
+                    "output folder (default: NAME_frames beside the current folder)");
     sub->add_option("--device", opts->device, kDeviceOptionHelp);
-    sub->add_flag("--resume", opts->resume, "continue an interrupted run from its last complete frame");
+    sub->add_flag("--resume", opts->resume,
+                  "continue an interrupted run from its last complete frame");
     sub->add_flag("--half", opts->half, "store VDB values as 16-bit floats");
-    sub->add_flag("--preview", opts->preview,
-                  "also write PNG pictures (NAME_0001.png; 3D scenes ray-marched) and a contact sheet");
-    sub->add_option("--preview-every", opts->previewEvery,
-                    "picture every K frames (default: about 24 pictures per run); implies --preview")
+    sub->add_flag(
+        "--preview", opts->preview,
+        "also write PNG pictures (NAME_0001.png; 3D scenes ray-marched) and a contact sheet");
+    sub->add_option(
+           "--preview-every", opts->previewEvery,
+           "picture every K frames (default: about 24 pictures per run); implies --preview")
         ->check(countUpTo(kMaxFrames));
     sub->add_option("--cache-dir", opts->cacheDir, "cache folder");
     return [sub, opts]() {
@@ -83,10 +88,10 @@ Command addRun(CLI::App& app) {
         // One run at a time per scene in a folder; taken before any work.
         const RunFolder folder(out, scene.name);
         if (folder.staleTemporariesRemoved() > 0)
-            std::cerr << "removed " << folder.staleTemporariesRemoved() << " partial files of killed runs from "
-                      << out.string() << "\n";
-        // The checkpoint belongs to this scene text, the basis it makes (mesh files included) and the
-        // device kind; the frame count does not change results.
+            std::cerr << "removed " << folder.staleTemporariesRemoved()
+                      << " partial files of killed runs from " << out.string() << "\n";
+        // The checkpoint belongs to this scene text, the basis it makes (mesh files included) and
+        // the device kind; the frame count does not change results.
         const std::string sceneHash = hex(fnv1a64(fileBytes(scene.sourceFile)));
         const std::uint64_t runHash = fnv1a64(sceneHash + "|" + basisKey(scene) + "|" +
                                               std::string(capabilitiesOf(choice.kind).option));
@@ -94,26 +99,30 @@ Command addRun(CLI::App& app) {
         if (opts->resume && std::filesystem::exists(folder.checkpointPath())) {
             resumeFrom = readCheckpoint(folder.checkpointPath());
             if (resumeFrom->runHash != runHash)
-                throw Error("checkpoint " + folder.checkpointPath().string() +
-                            " was written for another scene text, basis (mesh file) or device; run without "
-                            "--resume to start afresh");
+                throw Error(
+                    "checkpoint " + folder.checkpointPath().string() +
+                    " was written for another scene text, basis (mesh file) or device; run without "
+                    "--resume to start afresh");
         }
         const bool previews = opts->preview || opts->previewEvery.has_value();
         const int previewEvery = opts->previewEvery.value_or(std::max(1, frames / 24));
         if (scene.isSurface()) {
-            if (opts->half) throw Error("--half: surface scenes write PLY frames, in 32-bit floats");
+            if (opts->half)
+                throw Error("--half: surface scenes write PLY frames, in 32-bit floats");
             return runSurface({scene, frames, folder, sceneHash, runHash, resumeFrom,
-                               resolveCacheDir(opts->cacheDir), memory, previews ? previewEvery : 0});
+                               resolveCacheDir(opts->cacheDir), memory,
+                               previews ? previewEvery : 0});
         }
         const Backend backend(choice);
         std::cerr << backend.describe();
 
         Progress progress = Progress::toStderr();
-        const RunInputs run = inRunStage("preparing the run (cache, smoke mask, initial state)", memory,
-                                         [&] { return prepareRun(scene, resolveCacheDir(opts->cacheDir), progress); });
+        const RunInputs run = inRunStage(
+            "preparing the run (cache, smoke mask, initial state)", memory,
+            [&] { return prepareRun(scene, resolveCacheDir(opts->cacheDir), progress); });
         const SimulationSettings& settings = run.settings;
-        const std::unique_ptr<Simulator> simulator =
-            inRunStage("setting up the simulation", memory, [&] { return backend.makeSimulator(run); });
+        const std::unique_ptr<Simulator> simulator = inRunStage(
+            "setting up the simulation", memory, [&] { return backend.makeSimulator(run); });
 
         int first = 0;
         if (resumeFrom) {
@@ -122,15 +131,16 @@ Command addRun(CLI::App& app) {
             first = resumeFrom->frame;
             std::cerr << "resuming after frame " << first << " (t = " << resumeFrom->time << ")\n";
         } else if (const int removed = folder.removeEarlierRun(); removed > 0) {
-            std::cerr << "removed " << removed << " files of an earlier " << scene.name << " run from " << out.string()
-                      << "\n";
+            std::cerr << "removed " << removed << " files of an earlier " << scene.name
+                      << " run from " << out.string() << "\n";
         }
 
         const MacGrid basisGrid = MacGrid::fromSpec(run.cache.grid);
         const bool temperature = settings.simulatesTemperature();
         std::unique_ptr<FramePreview> preview;
         if (previews)
-            preview = std::make_unique<FramePreview>(simulator->smokeGrid(), run.smokeMask, backend.vulkanContext());
+            preview = std::make_unique<FramePreview>(simulator->smokeGrid(), run.smokeMask,
+                                                     backend.vulkanContext());
         FrameProgress bar(first, frames, settings.stepsPerFrame);
         for (int frame = first + 1; frame <= frames; ++frame) {
             const std::string stage = "frame " + std::to_string(frame);
@@ -158,15 +168,17 @@ Command addRun(CLI::App& app) {
             vdb.modeflowVersion = MODEFLOW_VERSION;
             vdb.options.halfFloat = opts->half;
             inRunStage(stage, memory,
-                    [&] { writeVdbFrame(out / frameFileName(scene.name, frame), vdb); });
+                       [&] { writeVdbFrame(out / frameFileName(scene.name, frame), vdb); });
             if (preview && (frame % previewEvery == 0 || frame == frames)) {
                 std::filesystem::path png = out / frameFileName(scene.name, frame);
                 preview->write(png.replace_extension(".png"), frame, smoke, temperature);
             }
-            writeCheckpoint(folder.checkpointPath(), {frame, simulator->time(), runHash, simulator->velocity(),
-                                             simulator->magneticField(), smoke});
+            writeCheckpoint(folder.checkpointPath(),
+                            {frame, simulator->time(), runHash, simulator->velocity(),
+                             simulator->magneticField(), smoke});
             std::string detail;
-            if (stats.unconvergedSteps) detail += std::to_string(stats.unconvergedSteps) + " unconverged steps ";
+            if (stats.unconvergedSteps)
+                detail += std::to_string(stats.unconvergedSteps) + " unconverged steps ";
             if (stats.substeps > 1) detail += std::to_string(stats.substeps) + " modal substeps";
             bar.frameDone(frame, simulator->time(), detail);
         }

@@ -23,7 +23,8 @@ Command addStir(CLI::App& app) {
     };
     auto opts = std::make_shared<Options>();
     CLI::App* sub = app.add_subcommand(
-        "stir", "Stir a scene's smoke in a window in real time (press h in the window for the keys)");
+        "stir",
+        "Stir a scene's smoke in a window in real time (press h in the window for the keys)");
     sub->add_option("SCENE", opts->scene, "scene file (TOML)")->required();
     sub->add_option("--frames", opts->frames,
                     "close after N frames; the clock is then the scene's frame clock "
@@ -51,7 +52,8 @@ Command addStir(CLI::App& app) {
         const SceneSpec scene = loadScene(opts->scene);
         if (scene.isSurface())
             throw Error(scene.sourceFile.string() +
-                        ": [surface] scenes are not stirred in a window yet; simulate them with run or modes");
+                        ": [surface] scenes are not stirred in a window yet; simulate them with "
+                        "run or modes");
         requireSupport(scene, choice.kind);
         stir::StirOptions options;
         options.backend = choice;

@@ -13,7 +13,9 @@ namespace modeflow::validate {
 std::vector<double> pressureProjection(const MacGrid& grid, std::span<const double> g) {
     requireFaceField(grid, g.size(), "pressure projection");
     for (int a = 0; a < grid.dim; ++a)
-        if (grid.periodic[a]) throw Error("pressure projection: closed boxes only (axis " + std::to_string(a) + " is periodic)");
+        if (grid.periodic[a])
+            throw Error("pressure projection: closed boxes only (axis " + std::to_string(a) +
+                        " is periodic)");
     // D: cells × faces, the net outflow through each cell's faces (box faces carry nothing).
     std::vector<Eigen::Triplet<double>> entries;
     for (int z = 0; z < grid.cells[2]; ++z)
@@ -22,7 +24,8 @@ std::vector<double> pressureProjection(const MacGrid& grid, std::span<const doub
                 for (int a = 0; a < grid.dim; ++a) {
                     const std::array<int, 3> p{x, y, z};
                     const auto c = Eigen::Index(grid.cellIndex(x, y, z));
-                    if (p[a] > 0) entries.emplace_back(c, grid.faceIndex(a, x, y, z), -grid.faceArea(a));
+                    if (p[a] > 0)
+                        entries.emplace_back(c, grid.faceIndex(a, x, y, z), -grid.faceArea(a));
                     if (p[a] + 1 < grid.cells[a])
                         entries.emplace_back(c, grid.upperFaceIndex(a, x, y, z), grid.faceArea(a));
                 }
@@ -39,7 +42,8 @@ std::vector<double> pressureProjection(const MacGrid& grid, std::span<const doub
     const Eigen::VectorXd p = cg.solve(d * gv);
     if (cg.info() != Eigen::Success)
         throw Error("pressure projection: conjugate gradients did not converge (residual " +
-                    std::to_string(cg.error()) + " after " + std::to_string(cg.iterations()) + " iterations)");
+                    std::to_string(cg.error()) + " after " + std::to_string(cg.iterations()) +
+                    " iterations)");
     const Eigen::VectorXd u = gv - d.transpose() * p;
     return {u.data(), u.data() + u.size()};
 }

@@ -93,7 +93,8 @@ double maxAbs(const std::vector<double>& values) {
 std::string ballScene(int cells, int modes, int frames) {
     const std::string n = std::to_string(cells);
     return "[grid]\nresolution = [" + n + ", " + n + ", " + n +
-           "]\nbounds_min = [0.0, 0.0, 0.0]\nbounds_max = [1.0, 1.0, 1.0]\n[basis]\nvelocity_modes = " +
+           "]\nbounds_min = [0.0, 0.0, 0.0]\nbounds_max = [1.0, 1.0, 1.0]\n[basis]\nvelocity_modes "
+           "= " +
            std::to_string(modes) +
            "\nscalar_modes = 0\n[simulation]\ndt = 0.02\nintegrator = \"midpoint\"\n"
            "[[source]]\nshape = \"ball\"\ncenter = [0.5, 0.5, 0.1]\nradius = 0.08\ndensity = 1.0\n"
@@ -109,19 +110,22 @@ std::vector<double> ballTemperature(const MacGrid& grid) {
             for (int x = 0; x < grid.cells[0]; ++x) {
                 const double dx = grid.cellCentre(0, x) - 0.5, dy = grid.cellCentre(1, y) - 0.5,
                              dz = grid.cellCentre(2, z) - 0.1;
-                if (dx * dx + dy * dy + dz * dz <= 0.08 * 0.08) t[std::size_t(grid.cellIndex(x, y, z))] = 1.0;
+                if (dx * dx + dy * dy + dz * dz <= 0.08 * 0.08)
+                    t[std::size_t(grid.cellIndex(x, y, z))] = 1.0;
             }
     return t;
 }
 
 /// The peak upward speed and the mean upward speed weighted by the temperature of the two cells
 /// each up face separates (the ball's rise), of a face field.
-std::pair<double, double> riseOf(const MacGrid& grid, std::span<const double> u, const std::vector<double>& t) {
+std::pair<double, double> riseOf(const MacGrid& grid, std::span<const double> u,
+                                 const std::vector<double>& t) {
     double peak = 0.0, weighted = 0.0, weight = 0.0;
     for (int z = 1; z < grid.cells[2]; ++z)
         for (int y = 0; y < grid.cells[1]; ++y)
             for (int x = 0; x < grid.cells[0]; ++x) {
-                const double w = 0.5 * (t[std::size_t(grid.cellIndex(x, y, z))] + t[std::size_t(grid.cellIndex(x, y, z - 1))]);
+                const double w = 0.5 * (t[std::size_t(grid.cellIndex(x, y, z))] +
+                                        t[std::size_t(grid.cellIndex(x, y, z - 1))]);
                 const double uz = u[std::size_t(grid.faceIndex(2, x, y, z))];
                 peak = std::max(peak, uz);
                 weighted += w * uz, weight += w;
@@ -132,24 +136,27 @@ std::pair<double, double> riseOf(const MacGrid& grid, std::span<const double> u,
 /// The 3D experiment (see the file's comment).
 nlohmann::json ballPlume(const StudyOptions& options) {
     const int cells = options.quick ? 24 : 64, frames = options.quick ? 15 : 60;
-    const std::vector<int> counts =
-        options.quick ? std::vector<int>{50, 200, 500} : std::vector<int>{50, 100, 200, 500, 1000, 2000};
+    const std::vector<int> counts = options.quick ? std::vector<int>{50, 200, 500}
+                                                  : std::vector<int>{50, 100, 200, 500, 1000, 2000};
     const Backend backend(BackendChoice{BackendKind::CpuReference, {}});
-    nlohmann::json result = {{"resolution", cells},
-                             {"source", "hot ball r = 0.08 at (0.5, 0.5, 0.1), buoyancy 1, closed unit box"},
-                             {"dt", 0.02},
-                             {"runs", nlohmann::json::array()}};
+    nlohmann::json result = {
+        {"resolution", cells},
+        {"source", "hot ball r = 0.08 at (0.5, 0.5, 0.1), buoyancy 1, closed unit box"},
+        {"dt", 0.02},
+        {"runs", nlohmann::json::array()}};
     std::pair<double, double> full{0.0, 0.0};
     for (const int n : counts) {
         options.note("3D plume, " + std::to_string(n) + " modes");
-        const RunInputs run = prepareStudyRun(sceneFromText(ballScene(cells, n, frames), "reduced_vs_full_ball"), options);
+        const RunInputs run = prepareStudyRun(
+            sceneFromText(ballScene(cells, n, frames), "reduced_vs_full_ball"), options);
         const MacGrid grid = MacGrid::fromSpec(run.cache.grid);
         const std::vector<double> t = ballTemperature(grid);
         if (n == counts.front()) {
             // The full grid's response: P(g) for the ball's buoyancy g (one value per DOF).
             const Eigen::VectorXd g = reference::forceDensity(run.cache, {1.0, 1, t, {}}, {});
             std::vector<double> field(std::size_t(grid.faceTotal()), 0.0);
-            for (std::size_t d = 0; d < run.cache.faces.size(); ++d) field[std::size_t(run.cache.faces[d])] = g[Eigen::Index(d)];
+            for (std::size_t d = 0; d < run.cache.faces.size(); ++d)
+                field[std::size_t(run.cache.faces[d])] = g[Eigen::Index(d)];
             full = riseOf(grid, pressureProjection(grid, field), t);
             result["full_response"] = {{"peak", full.first}, {"mean_rise", full.second}};
         }
