@@ -49,20 +49,15 @@ void writeVec(std::ostream& s, const Vec3& v, int dim) {
     s << "]";
 }
 
-double domainMeasure(const CutCellDec& dec) {
-    double m = 0.0;
-    for (Eigen::Index i = 0; i < dec.cellStar.size(); ++i) m += 1.0 / dec.cellStar[i];
-    return m;
-}
-
 /// One line per eigensolve, and its factorization/solve split in the cache's timings.
 void reportSolver(Progress& progress, const std::string& what, const SolverStats& s,
                   BasisCache& cache) {
     if (s.operations == 0) return;  // dense path: nothing worth reporting
     std::ostringstream line;
     line << std::fixed << std::setprecision(2) << "  " << what << ": " << s.operations
-         << " shift-invert solves, " << s.restarts << " Lanczos restarts, factorization "
-         << s.factorSeconds << " s, solves " << s.solveSeconds << " s";
+         << " shift-invert solves, " << s.restarts << " Krylov restarts, " << s.factorizations
+         << (s.factorizations == 1 ? " factorization " : " factorizations ") << s.factorSeconds
+         << " s, solves " << s.solveSeconds << " s";
     progress.note(line.str());
     cache.timings.emplace_back(what + "_factorization", s.factorSeconds);
     cache.timings.emplace_back(what + "_solves", s.solveSeconds);
@@ -242,7 +237,8 @@ BasisCache computeStages(const SceneSpec& scene, std::string key, Progress& prog
     cache.scalar.boundary = basis.scalarBoundary;
     const bool neumannBasis = basis.scalarBoundary == ScalarBoundary::Neumann;
     const ScalarBasisResult firstNeumann =
-        solveNeumannScalarBasis(dec, neumannBasis ? std::max(1, basis.scalarModes) : 1, counter);
+        solveNeumannScalarBasis(dec, neumannBasis ? std::max(1, basis.scalarModes) : 1, counter,
+                                basis.eigensolver);
     ScalarBasisResult scalar;
     if (neumannBasis) {
         scalar = firstNeumann;
@@ -250,7 +246,7 @@ BasisCache computeStages(const SceneSpec& scene, std::string key, Progress& prog
         cache.scalar.cellStar = dec.cellStar;
     } else if (basis.scalarModes > 0) {
         const DirichletScalarDec ddec = buildDirichletScalarDec(complex, domain, basis.boundary);
-        scalar = solveDirichletScalarBasis(ddec, basis.scalarModes, counter);
+        scalar = solveDirichletScalarBasis(ddec, basis.scalarModes, counter, basis.eigensolver);
         cache.scalar.cells = ddec.cells.toGlobal;
         cache.scalar.cellStar = ddec.cellStar;
     }
@@ -265,7 +261,8 @@ BasisCache computeStages(const SceneSpec& scene, std::string key, Progress& prog
 
     progress.begin("velocity eigensolve");
     const VelocityBasisResult velocity = solveVelocityBasis(
-        dec, basis.velocityModes, firstNeumann.eigenvalues[0], domainMeasure(dec), counter);
+        dec, basis.velocityModes, firstNeumann.eigenvalues[0], domainMeasure(dec.cellStar), counter,
+        basis.eigensolver);
     cache.velocity.eigenvalues = velocity.eigenvalues;
     cache.velocity.modes = velocity.modes;
     cache.velocity.modeNumbers = velocity.modeNumbers;

@@ -28,6 +28,10 @@ inline constexpr std::pair<std::string_view, WallKind> kWalls[] = {
     {"free-slip", WallKind::FreeSlip}, {"no-slip", WallKind::NoSlip}};
 inline constexpr std::pair<std::string_view, BoundaryTreatment> kBoundaries[] = {
     {"cut-cell", BoundaryTreatment::CutCell}, {"staircase", BoundaryTreatment::Staircase}};
+inline constexpr std::pair<std::string_view, EigensolverChoice> kEigensolvers[] = {
+    {"auto", EigensolverChoice::Automatic},
+    {"spectra", EigensolverChoice::Spectra},
+    {"slepc", EigensolverChoice::Slepc}};
 inline constexpr std::pair<std::string_view, Integrator> kIntegrators[] = {
     {"explicit", Integrator::Explicit},
     {"rk4", Integrator::Rk4},

@@ -39,6 +39,10 @@ enum class ScalarBoundary { Neumann, Dirichlet };
 enum class WallKind { FreeSlip, NoSlip };
 /// How primal measures see the domain: exact-for-piecewise-linear cut cells, or voxelized.
 enum class BoundaryTreatment { CutCell, Staircase };
+/// How the eigenbases are solved (precompute/solve): one shift-invert Lanczos run (Spectra), or
+/// spectrum slicing (SLEPc), or chosen by the mode count and the number of MPI ranks. The bases
+/// are the same either way, so the choice is no part of the cache key.
+enum class EigensolverChoice { Automatic, Spectra, Slepc };
 
 /// A 1-based, inclusive range of the divergence-free spectrum ("516-630").
 struct ModeRange {
@@ -54,6 +58,7 @@ struct BasisSpec {
     WallKind wall = WallKind::FreeSlip;
     BoundaryTreatment boundary = BoundaryTreatment::CutCell;
     int subsamples = 4;  ///< sub-cells per element edge when measuring cut fractions
+    EigensolverChoice eigensolver = EigensolverChoice::Automatic;
 
     int velocityCount() const {
         int n = 0;

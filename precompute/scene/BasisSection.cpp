@@ -37,6 +37,8 @@ BasisSpec readBasis(const TomlReader& reader, const Section& s) {
     basis.boundary = reader.readChoice(s, "boundary", BoundaryTreatment::CutCell,
                                        Choices<BoundaryTreatment>(kBoundaries));
     basis.subsamples = reader.readInt(s, "subsamples", 4, 1, 16);
+    basis.eigensolver = reader.readChoice(s, "eigensolver", EigensolverChoice::Automatic,
+                                          Choices<EigensolverChoice>(kEigensolvers));
     return basis;
 }
 
