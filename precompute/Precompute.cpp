@@ -25,6 +25,7 @@
 #include "precompute/dec/CutCellMeasures.h"
 #include "precompute/dec/DirichletScalarDec.h"
 #include "precompute/geometry/Domain.h"
+#include "precompute/solve/ProcessGroup.h"
 #include "precompute/solve/SpectralBasis.h"
 
 namespace modeflow {
@@ -198,8 +199,10 @@ BasisCache computeStages(const SceneSpec& scene, std::string key, Progress& prog
     cache.grid = scene.grid;
     cache.wall = scene.basis.wall;
     cache.boundary = scene.basis.boundary;
+    // Under mpirun only the eigensolves are shared by the ranks; rank 0 alone does the rest.
+    const bool primary = currentProcessGroup().primary();
     if (method == BasisMethod::Automatic && hasClosedFormVelocity(scene)) {
-        closedFormStages(scene, cache, progress);
+        if (primary) closedFormStages(scene, cache, progress);
         return cache;
     }
     const GridSpec& grid = scene.grid;
@@ -271,6 +274,7 @@ BasisCache computeStages(const SceneSpec& scene, std::string key, Progress& prog
     reportSolver(progress, "velocity", velocity.stats, cache);
     cache.timings.emplace_back("velocity_eigensolve", progress.end());
 
+    if (!primary) return cache;
     progress.begin("structural coefficients");
     cache.coefficients = chooseStorage(
         assembleStructuralCoefficients(complex, measures, dec, cache.velocity.modes),
@@ -322,6 +326,7 @@ CacheOutcome ensureCache(const SceneSpec& scene, const std::filesystem::path& ca
     }
     const PrecomputeMemory estimate = requirePrecomputeMemory(scene);
     outcome.cache = computeBasis(scene, key, progress, estimate, BasisMethod::Automatic);
+    if (!currentProcessGroup().primary()) return outcome;
     progress.begin("write cache");
     try {
         writeCache(outcome.path, outcome.cache);

@@ -123,16 +123,16 @@ private:
     OwnedMat mStiffness, mMass;
 };
 
-struct MonitorContext {
+/// Counts the shift-invert solves of the slicing's inner eigensolver for the progress line (its
+/// restarts are not reported to the outer solver's monitors).
+struct SolveCounter {
     const EigenRequest* request = nullptr;
-    long restarts = 0;
+    long solves = 0;
 };
 
-PetscErrorCode monitor(EPS, PetscInt, PetscInt, PetscScalar*, PetscScalar*, PetscReal*, PetscInt,
-                       void* context) {
-    auto& c = *static_cast<MonitorContext*>(context);
-    ++c.restarts;
-    if (c.request->progress && c.restarts % 4 == 0) c.request->progress(Tallies().solve.count);
+PetscErrorCode afterSolve(KSP, Vec, Vec, void* context) {
+    auto& c = *static_cast<SolveCounter*>(context);
+    if (++c.solves % 16 == 0) c.request->progress(c.solves);
     return 0;
 }
 
@@ -182,14 +182,24 @@ std::optional<EigenPairs> solveInterval(const DistributedProblem& problem, doubl
     check(EPSKrylovSchurSetDetectZeros(e, PETSC_TRUE), request, "EPSKrylovSchurSetDetectZeros");
     check(EPSKrylovSchurSetDimensions(e, kPairsPerShift, PETSC_DEFAULT, PETSC_DEFAULT), request,
           "EPSKrylovSchurSetDimensions");
-    MonitorContext context{&request, 0};
-    check(EPSMonitorSet(e, monitor, &context, nullptr), request, "EPSMonitorSet");
+    // The set-up factorizes at the interval's ends (their inertia), the solve at its shifts.
+    const PetscErrorCode setUp = EPSSetUp(e);
+    if (setUp == PETSC_ERR_MAT_LU_ZRPVT) return std::nullopt;
+    check(setUp, request, "EPSSetUp");
+    SolveCounter counter{&request, stats.operations};
+    if (request.progress) {
+        KSP inner = nullptr;
+        check(EPSKrylovSchurGetKSP(e, &inner), request, "EPSKrylovSchurGetKSP");
+        check(KSPSetPostSolve(inner, afterSolve, &counter), request, "KSPSetPostSolve");
+    }
     const PetscErrorCode solved = EPSSolve(e);
     if (solved == PETSC_ERR_MAT_LU_ZRPVT) return std::nullopt;
     check(solved, request, "the sliced eigensolve (EPSSolve)");
 
-    PetscInt converged = 0;
+    PetscInt converged = 0, restarts = 0;
     check(EPSGetConverged(e, &converged), request, "EPSGetConverged");
+    check(EPSGetIterationNumber(e, &restarts), request, "EPSGetIterationNumber");
+    stats.restarts += restarts;
     PetscInt rows = 0;
     check(MatGetSize(problem.stiffness(), &rows, nullptr), request, "MatGetSize");
     EigenPairs out;
@@ -218,7 +228,6 @@ std::optional<EigenPairs> solveInterval(const DistributedProblem& problem, doubl
     stats.factorSeconds += after.factor.seconds - before.factor.seconds;
     stats.operations += after.solve.count - before.solve.count;
     stats.solveSeconds += after.solve.seconds - before.solve.seconds;
-    stats.restarts += context.restarts;
     return out;
 }
 

@@ -35,7 +35,9 @@ double chainEigenvalue(int n, int j) {
 TEST(SlicedEigensolver, ChainSpectrumExact) {
     const int n = 3000, count = 120;
     const double h = 1.0 / (n + 1);
-    EigenRequest request{count, -1.0, 1e-12, "test eigensolve", {}, false};
+    long reported = 0;
+    EigenRequest request{count, -1.0, 1e-12, "test eigensolve",
+                         [&reported](long solves) { reported = solves; }, false};
     request.spectralDimension = 1;
     request.estimate = 0.5 * chainEigenvalue(n, count);  // too low on purpose: a second interval
     const EigenPairs pairs = slicedEigenpairs(chain(n), Eigen::VectorXd::Constant(n, h), request);
@@ -47,6 +49,8 @@ TEST(SlicedEigensolver, ChainSpectrumExact) {
     const Eigen::MatrixXd gram = pairs.vectors.transpose() * h * pairs.vectors;
     EXPECT_LE((gram - Eigen::MatrixXd::Identity(count, count)).cwiseAbs().maxCoeff(), 1e-9);
     EXPECT_GE(pairs.stats.factorizations, 2);
+    EXPECT_GT(reported, 0) << "no progress reported";
+    EXPECT_LE(reported, pairs.stats.operations);
 }
 
 /// 1, 2, … with `copies` equal eigenvalues `cluster` in place of as many integers above it.
