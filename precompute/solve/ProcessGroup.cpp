@@ -18,6 +18,19 @@ bool launchedByMpi() {
     return false;
 }
 
+/// The innermost message of the error PETSc is returning (where it was raised: later frames of
+/// the same error add none), for our own error line.
+std::string& petscMessage() {
+    static std::string message;
+    return message;
+}
+
+PetscErrorCode keepMessage(MPI_Comm, int, const char*, const char*, PetscErrorCode code,
+                           PetscErrorType type, const char* message, void*) {
+    if (type == PETSC_ERROR_INITIAL) petscMessage() = message != nullptr ? message : "";
+    return code;
+}
+
 void finalizePetsc() {
     PetscBool finalized = PETSC_FALSE;
     if (PetscFinalized(&finalized) == 0 && !finalized) SlepcFinalize();
@@ -36,8 +49,12 @@ void ensurePetsc() {
         throw Error(
             "precompute: MPI and PETSc could not be initialized (SLEPc's eigensolver needs "
             "them; under mpirun, check the launcher's own messages)");
-    PetscPushErrorHandler(PetscReturnErrorHandler, nullptr);
+    PetscPushErrorHandler(keepMessage, nullptr);
     std::atexit(finalizePetsc);
+}
+
+std::string lastPetscErrorMessage() {
+    return petscMessage();
 }
 
 ProcessGroup joinProcessGroup() {

@@ -1,4 +1,6 @@
 #pragma once
+
+#include <string>
 /// @file ProcessGroup.h
 /// The processes one precompute runs on: this one alone, or the K ranks `mpirun -n K` started.
 /// MPI and PETSc are initialized only when needed (SlicedEigensolver.h, or joinProcessGroup()
@@ -25,5 +27,9 @@ ProcessGroup currentProcessGroup();
 /// SLEPc, once per process; finalized at exit.
 /// @throw Error when they cannot be initialized.
 void ensurePetsc();
+
+/// What PETSc said where its last error was raised ("-mat_mumps_icntl_24 must be set …"), for
+/// error messages; PETSc itself prints nothing.
+std::string lastPetscErrorMessage();
 
 }  // namespace modeflow
