@@ -25,6 +25,7 @@
 #include "precompute/dec/CutCellMeasures.h"
 #include "precompute/dec/DirichletScalarDec.h"
 #include "precompute/geometry/Domain.h"
+#include "precompute/solve/ProcessGroup.h"
 #include "precompute/solve/SpectralBasis.h"
 
 namespace modeflow {
@@ -49,20 +50,15 @@ void writeVec(std::ostream& s, const Vec3& v, int dim) {
     s << "]";
 }
 
-double domainMeasure(const CutCellDec& dec) {
-    double m = 0.0;
-    for (Eigen::Index i = 0; i < dec.cellStar.size(); ++i) m += 1.0 / dec.cellStar[i];
-    return m;
-}
-
 /// One line per eigensolve, and its factorization/solve split in the cache's timings.
 void reportSolver(Progress& progress, const std::string& what, const SolverStats& s,
                   BasisCache& cache) {
     if (s.operations == 0) return;  // dense path: nothing worth reporting
     std::ostringstream line;
     line << std::fixed << std::setprecision(2) << "  " << what << ": " << s.operations
-         << " shift-invert solves, " << s.restarts << " Lanczos restarts, factorization "
-         << s.factorSeconds << " s, solves " << s.solveSeconds << " s";
+         << " shift-invert solves, " << s.restarts << " Krylov restarts, " << s.factorizations
+         << (s.factorizations == 1 ? " factorization " : " factorizations ") << s.factorSeconds
+         << " s, solves " << s.solveSeconds << " s";
     progress.note(line.str());
     cache.timings.emplace_back(what + "_factorization", s.factorSeconds);
     cache.timings.emplace_back(what + "_solves", s.solveSeconds);
@@ -177,8 +173,10 @@ BasisCache computeStages(const SceneSpec& scene, std::string key, Progress& prog
     cache.grid = scene.grid;
     cache.wall = scene.basis.wall;
     cache.boundary = scene.basis.boundary;
+    // Under mpirun only the eigensolves are shared by the ranks; rank 0 alone does the rest.
+    const bool primary = currentProcessGroup().primary();
     if (method == BasisMethod::Automatic && hasClosedFormVelocity(scene)) {
-        closedFormStages(scene, cache, progress);
+        if (primary) closedFormStages(scene, cache, progress);
         return cache;
     }
     const GridSpec& grid = scene.grid;
@@ -216,7 +214,8 @@ BasisCache computeStages(const SceneSpec& scene, std::string key, Progress& prog
     cache.scalar.boundary = basis.scalarBoundary;
     const bool neumannBasis = basis.scalarBoundary == ScalarBoundary::Neumann;
     const ScalarBasisResult firstNeumann =
-        solveNeumannScalarBasis(dec, neumannBasis ? std::max(1, basis.scalarModes) : 1, counter);
+        solveNeumannScalarBasis(dec, neumannBasis ? std::max(1, basis.scalarModes) : 1, counter,
+                                basis.eigensolver);
     ScalarBasisResult scalar;
     if (neumannBasis) {
         scalar = firstNeumann;
@@ -224,7 +223,7 @@ BasisCache computeStages(const SceneSpec& scene, std::string key, Progress& prog
         cache.scalar.cellStar = dec.cellStar;
     } else if (basis.scalarModes > 0) {
         const DirichletScalarDec ddec = buildDirichletScalarDec(complex, domain, basis.boundary);
-        scalar = solveDirichletScalarBasis(ddec, basis.scalarModes, counter);
+        scalar = solveDirichletScalarBasis(ddec, basis.scalarModes, counter, basis.eigensolver);
         cache.scalar.cells = ddec.cells.toGlobal;
         cache.scalar.cellStar = ddec.cellStar;
     }
@@ -239,7 +238,8 @@ BasisCache computeStages(const SceneSpec& scene, std::string key, Progress& prog
 
     progress.begin("velocity eigensolve");
     const VelocityBasisResult velocity = solveVelocityBasis(
-        dec, basis.velocityModes, firstNeumann.eigenvalues[0], domainMeasure(dec), counter);
+        dec, basis.velocityModes, firstNeumann.eigenvalues[0], domainMeasure(dec.cellStar), counter,
+        basis.eigensolver);
     cache.velocity.eigenvalues = velocity.eigenvalues;
     cache.velocity.modes = velocity.modes;
     cache.velocity.modeNumbers = velocity.modeNumbers;
@@ -248,6 +248,7 @@ BasisCache computeStages(const SceneSpec& scene, std::string key, Progress& prog
     reportSolver(progress, "velocity", velocity.stats, cache);
     cache.timings.emplace_back("velocity_eigensolve", progress.end());
 
+    if (!primary) return cache;
     progress.begin("structural coefficients");
     cache.quadrature = vorticityQuadrature(complex, measures, dec);
     const int modes = int(cache.velocity.modes.cols());
@@ -315,6 +316,7 @@ CacheOutcome ensureCache(const SceneSpec& scene, const std::filesystem::path& ca
     }
     const PrecomputeMemory estimate = requirePrecomputeMemory(scene);
     outcome.cache = computeBasis(scene, key, progress, estimate, BasisMethod::Automatic);
+    if (!currentProcessGroup().primary()) return outcome;
     progress.begin("write cache");
     try {
         writeCache(outcome.path, outcome.cache);

@@ -40,6 +40,9 @@ struct CacheOutcome {
 /// Returns the scene's cache, computing and writing it on a miss, or always when `force`.
 /// The cache folder is created and checked for writing before any work starts. A damaged or
 /// stale file under the scene's name is reported on the progress stream and rebuilt.
+/// Under mpirun (precompute/solve/ProcessGroup.h) every rank takes part in the eigensolves and
+/// rank 0 alone assembles the coefficients and writes the file: the other ranks' outcome holds
+/// the path and the bases only.
 CacheOutcome ensureCache(const SceneSpec& scene, const std::filesystem::path& cacheDir, bool force,
                          Progress& progress);
 

@@ -6,6 +6,7 @@ set -euo pipefail
 packages=(
     build-essential cmake ninja-build pkg-config
     libeigen3-dev libspectra-dev libsuitesparse-dev libopenblas0-pthread libfftw3-dev
+    slepc-dev petsc-dev         # sliced eigensolves: SLEPc, PETSc with MUMPS, Open MPI (mpirun)
     libopenvdb-dev libboost-iostreams-dev libtbb-dev
     libtomlplusplus-dev libcli11-dev nlohmann-json3-dev libtinyobjloader-dev
     libvulkan-dev mesa-vulkan-drivers vulkan-tools glslang-tools spirv-tools vulkan-validationlayers

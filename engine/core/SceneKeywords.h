@@ -33,6 +33,10 @@ inline constexpr std::pair<std::string_view, CoefficientStorage> kCoefficientSto
     {"dense", CoefficientStorage::Dense},
     {"sparse", CoefficientStorage::Sparse},
     {"tensor-free", CoefficientStorage::TensorFree}};
+inline constexpr std::pair<std::string_view, EigensolverChoice> kEigensolvers[] = {
+    {"auto", EigensolverChoice::Automatic},
+    {"spectra", EigensolverChoice::Spectra},
+    {"slepc", EigensolverChoice::Slepc}};
 inline constexpr std::pair<std::string_view, Integrator> kIntegrators[] = {
     {"explicit", Integrator::Explicit},
     {"rk4", Integrator::Rk4},

@@ -39,6 +39,10 @@ enum class ScalarBoundary { Neumann, Dirichlet };
 enum class WallKind { FreeSlip, NoSlip };
 /// How primal measures see the domain: exact-for-piecewise-linear cut cells, or voxelized.
 enum class BoundaryTreatment { CutCell, Staircase };
+/// How the eigenbases are solved (precompute/solve): one shift-invert Lanczos run (Spectra), or
+/// spectrum slicing (SLEPc), or chosen by the mode count and the number of MPI ranks. The bases
+/// are the same either way, so the choice is no part of the cache key.
+enum class EigensolverChoice { Automatic, Spectra, Slepc };
 
 /// How the runtime evaluates the advection Σ_ij C[k][i][j] v_i v_j: from a stored tensor (dense,
 /// or sparse for bases where most entries vanish), or straight from the modes and the vorticity
@@ -61,6 +65,7 @@ struct BasisSpec {
     BoundaryTreatment boundary = BoundaryTreatment::CutCell;
     int subsamples = 4;  ///< sub-cells per element edge when measuring cut fractions
     CoefficientStorage coefficients = CoefficientStorage::Auto;
+    EigensolverChoice eigensolver = EigensolverChoice::Automatic;
 
     int velocityCount() const {
         int n = 0;

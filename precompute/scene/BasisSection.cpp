@@ -39,6 +39,8 @@ BasisSpec readBasis(const TomlReader& reader, const Section& s) {
     basis.subsamples = reader.readInt(s, "subsamples", 4, 1, 16);
     basis.coefficients = reader.readChoice(s, "coefficients", CoefficientStorage::Auto,
                                            Choices<CoefficientStorage>(kCoefficientStorages));
+    basis.eigensolver = reader.readChoice(s, "eigensolver", EigensolverChoice::Automatic,
+                                          Choices<EigensolverChoice>(kEigensolvers));
     return basis;
 }
 

@@ -58,6 +58,7 @@ public:
         Eigen::SparseMatrix<double> shifted = k;
         for (Eigen::Index i = 0; i < m.size(); ++i) shifted.coeffRef(i, i) -= sigma * m[i];
         const auto start = std::chrono::steady_clock::now();
+        ++mStats.factorizations;
         mSolver.analyzePattern(shifted);
         // A failed analysis leaves no factor, which Eigen's factorize() would dereference.
         requireCholmodSuccess(mSolver.cholmod(), request.what, k.rows());

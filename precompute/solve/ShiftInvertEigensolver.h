@@ -16,12 +16,14 @@ namespace modeflow {
 struct SolverStats {
     long operations = 0;  ///< shift-invert solves performed
     long restarts = 0;    ///< Lanczos restarts
+    long factorizations = 0;
     double factorSeconds = 0.0;
     double solveSeconds = 0.0;
 
     SolverStats& operator+=(const SolverStats& o) {
         operations += o.operations;
         restarts += o.restarts;
+        factorizations += o.factorizations;
         factorSeconds += o.factorSeconds;
         solveSeconds += o.solveSeconds;
         return *this;
@@ -52,6 +54,10 @@ struct EigenRequest {
     /// set, further Lanczos runs on the operator deflated by the pairs found so far look for
     /// eigenvalues below the highest one kept, until a run finds none.
     bool findMissedCopies = false;
+    /// Where the `count`-th eigenvalue is expected (Weyl's law) and the d of N(λ) ∝ λ^{d/2}: the
+    /// sliced solver's first interval ends there, and intervals grow by that law (SlicedEigensolver.h).
+    double estimate = 0.0;
+    int spectralDimension = 3;
 };
 
 /// @throw Error naming `what` when the factorization fails or Lanczos does not converge.

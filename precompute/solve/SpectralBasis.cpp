@@ -10,6 +10,8 @@
 #include "engine/core/Error.h"
 #include "engine/core/KappaSquared.h"
 #include "precompute/solve/Laplacians.h"
+#include "precompute/solve/ProcessGroup.h"
+#include "precompute/solve/SlicedEigensolver.h"
 
 namespace modeflow {
 namespace {
@@ -29,8 +31,13 @@ std::string plural(std::int64_t n, const char* word) {
 }  // namespace
 
 EigenPairs lowestEigenpairs(const Eigen::SparseMatrix<double>& k, const Eigen::VectorXd& m,
-                            const EigenRequest& request) {
-    if (k.rows() > kDenseLimit) return smallestEigenpairs(k, m, request);
+                            const EigenRequest& request, EigensolverChoice choice) {
+    if (k.rows() > kDenseLimit) {
+        const bool slice = choice == EigensolverChoice::Slepc ||
+                           (choice == EigensolverChoice::Automatic &&
+                            (request.count >= kSlicingFromCount || currentProcessGroup().size > 1));
+        return slice ? slicedEigenpairs(k, m, request) : smallestEigenpairs(k, m, request);
+    }
     const Eigen::VectorXd s = m.cwiseSqrt().cwiseInverse();
     const Eigen::MatrixXd a = s.asDiagonal() * Eigen::MatrixXd(k) * s.asDiagonal();
     Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(a);
@@ -39,6 +46,8 @@ EigenPairs lowestEigenpairs(const Eigen::SparseMatrix<double>& k, const Eigen::V
     out.vectors = s.asDiagonal() * eig.eigenvectors().leftCols(request.count);
     return out;
 }
+
+double domainMeasure(const Eigen::VectorXd& cellStar) { return cellStar.cwiseInverse().sum(); }
 
 double referenceEigenvalue(const GridSpec& grid) {
     double l = 0.0;
@@ -79,10 +88,25 @@ ScalarBasisResult fromPairs(EigenPairs pairs, int skip) {
 }
 
 /// λ_N of the div-free spectrum by Weyl's law (2D: N ≈ |Ω|λ/4π; 3D, two polarizations:
-/// N ≈ |Ω|λ^{3/2}/3π²), used only to pick a first penalty.
+/// N ≈ |Ω|λ^{3/2}/3π²), used to pick a first penalty and where slicing's first interval ends.
 double weylEstimate(int dim, int n, double measure) {
     if (dim == 2) return 4.0 * M_PI * n / measure;
     return std::pow(3.0 * M_PI * M_PI * n / measure, 2.0 / 3.0);
+}
+
+/// λ_N of a scalar Laplacian by Weyl's law (2D: N ≈ |Ω|λ/4π; 3D: N ≈ |Ω|λ^{3/2}/6π²).
+double scalarWeylEstimate(int dim, int n, double measure) {
+    if (dim == 2) return 4.0 * M_PI * n / measure;
+    return std::pow(6.0 * M_PI * M_PI * n / measure, 2.0 / 3.0);
+}
+
+EigenRequest scalarRequest(int count, const GridSpec& grid, const Eigen::VectorXd& cellStar,
+                           const char* what, const SolveProgress& progress) {
+    EigenRequest request{count, -1e-2 * referenceEigenvalue(grid), 1e-12, what, progress,
+                         grid.anyPeriodic()};
+    request.estimate = scalarWeylEstimate(grid.dim, count, domainMeasure(cellStar));
+    request.spectralDimension = grid.dim;
+    return request;
 }
 
 /// Replaces the columns of `pairs` by exactly divergence-free Ritz vectors of the unpenalized L2
@@ -116,35 +140,34 @@ void projectAndRefine(const CutCellDec& dec, EigenPairs& pairs) {
 }  // namespace
 
 ScalarBasisResult solveNeumannScalarBasis(const CutCellDec& dec, int count,
-                                          const SolveProgress& progress) {
+                                          const SolveProgress& progress,
+                                          EigensolverChoice choice) {
     const int constants = connectedComponents(dec);
     const std::int64_t available = dec.cells.size() - constants;
     if (count > available)
         throw Error("[basis].scalar_modes = " + std::to_string(count) + ": the domain holds only " +
                     plural(available, "non-constant Neumann scalar mode"));
-    const EigenRequest request{count + constants,
-                               -1e-2 * referenceEigenvalue(dec.grid),
-                               1e-12,
-                               "scalar (Neumann) eigensolve",
-                               progress,
-                               dec.grid.anyPeriodic()};
-    return fromPairs(lowestEigenpairs(neumannScalarLaplacian(dec), dec.cellStar, request), constants);
+    const EigenRequest request = scalarRequest(count + constants, dec.grid, dec.cellStar,
+                                               "scalar (Neumann) eigensolve", progress);
+    return fromPairs(lowestEigenpairs(neumannScalarLaplacian(dec), dec.cellStar, request, choice),
+                     constants);
 }
 
 ScalarBasisResult solveDirichletScalarBasis(const DirichletScalarDec& dec, int count,
-                                            const SolveProgress& progress) {
+                                            const SolveProgress& progress,
+                                            EigensolverChoice choice) {
     if (count > dec.cells.size())
         throw Error("[basis].scalar_modes = " + std::to_string(count) + ": the domain holds only " +
                     plural(dec.cells.size(), "Dirichlet scalar mode"));
-    const EigenRequest request{count,    -1e-2 * referenceEigenvalue(dec.grid),
-                               1e-12,    "scalar (Dirichlet) eigensolve",
-                               progress, dec.grid.anyPeriodic()};
-    return fromPairs(lowestEigenpairs(dirichletScalarLaplacian(dec), dec.cellStar, request), 0);
+    const EigenRequest request =
+        scalarRequest(count, dec.grid, dec.cellStar, "scalar (Dirichlet) eigensolve", progress);
+    return fromPairs(lowestEigenpairs(dirichletScalarLaplacian(dec), dec.cellStar, request, choice),
+                     0);
 }
 
 VelocityBasisResult solveVelocityBasis(const CutCellDec& dec, const std::vector<ModeRange>& ranges,
                                        double firstNeumannEigenvalue, double domainMeasure,
-                                       const SolveProgress& progress) {
+                                       const SolveProgress& progress, EigensolverChoice choice) {
     int highest = 0;
     for (const ModeRange& r : ranges) highest = std::max(highest, r.last);
     const std::int64_t available = divergenceFreeDimension(dec);
@@ -160,13 +183,15 @@ VelocityBasisResult solveVelocityBasis(const CutCellDec& dec, const std::vector<
     // with an exact projection and a Rayleigh–Ritz step.
     double penalty = std::max(1.0, 2.0 * weylEstimate(dec.grid.dim, highest, domainMeasure) / mu1) *
                      (noSlip ? 1e4 : 1.0);
-    const EigenRequest request{highest,  -1e-2 * referenceEigenvalue(dec.grid),
-                               1e-12,    "velocity eigensolve",
-                               progress, dec.grid.anyPeriodic()};
+    EigenRequest request{highest,  -1e-2 * referenceEigenvalue(dec.grid),
+                         1e-12,    "velocity eigensolve",
+                         progress, dec.grid.anyPeriodic()};
+    request.estimate = weylEstimate(dec.grid.dim, highest, domainMeasure);
+    request.spectralDimension = dec.grid.dim;
     EigenPairs pairs;
     SolverStats stats;
     for (int attempt = 0;; ++attempt) {
-        pairs = lowestEigenpairs(velocityLaplacian(dec, penalty), dec.faceStar, request);
+        pairs = lowestEigenpairs(velocityLaplacian(dec, penalty), dec.faceStar, request, choice);
         stats += pairs.stats;
         const double top = pairs.values[highest - 1];
         // Every gradient eigenvalue of the penalized operator is at least (1+s)μ₁², so when the

@@ -29,9 +29,17 @@ struct ScalarBasisResult {
 };
 
 /// The lowest `request.count` eigenpairs of K x = λ M x (M diagonal, positive): a dense solve
-/// below 1200 unknowns (exact for any count), shift-invert Lanczos above.
+/// below 1200 unknowns (exact for any count), above it shift-invert Lanczos (Spectra) or spectrum
+/// slicing (SLEPc) as `choice` says; Automatic slices from kSlicingFromCount eigenpairs on, or
+/// whenever the precompute runs on several MPI ranks. Slicing needs `request.estimate`.
 EigenPairs lowestEigenpairs(const Eigen::SparseMatrix<double>& k, const Eigen::VectorXd& m,
-                            const EigenRequest& request);
+                            const EigenRequest& request, EigensolverChoice choice);
+
+/// From this many eigenpairs on, Automatic slices the spectrum (measured: tools/bench-eigensolvers.sh).
+inline constexpr int kSlicingFromCount = 200;
+
+/// |Ω| as the DOF cells measure it (Σ 1/⋆n).
+double domainMeasure(const Eigen::VectorXd& cellStar);
 
 /// Number of connected components of the DOF cells, linked through DOF faces.
 int connectedComponents(const CutCellDec& dec);
@@ -42,9 +50,11 @@ std::int64_t divergenceFreeDimension(const CutCellDec& dec);
 
 /// The first `count` non-constant Neumann scalar modes.
 ScalarBasisResult solveNeumannScalarBasis(const CutCellDec& dec, int count,
-                                          const SolveProgress& progress);
+                                          const SolveProgress& progress,
+                                          EigensolverChoice choice);
 ScalarBasisResult solveDirichletScalarBasis(const DirichletScalarDec& dec, int count,
-                                            const SolveProgress& progress);
+                                            const SolveProgress& progress,
+                                          EigensolverChoice choice);
 
 /// The div-free modes in `ranges` (1-based, of the div-free spectrum, harmonic ones first).
 /// Gradient eigenfields are pushed above the wanted range with a grad-div penalty chosen from
@@ -53,7 +63,7 @@ ScalarBasisResult solveDirichletScalarBasis(const DirichletScalarDec& dec, int c
 /// @throw Error when the ranges ask for more modes than the div-free space holds.
 VelocityBasisResult solveVelocityBasis(const CutCellDec& dec, const std::vector<ModeRange>& ranges,
                                        double firstNeumannEigenvalue, double domainMeasure,
-                                       const SolveProgress& progress);
+                                       const SolveProgress& progress, EigensolverChoice choice);
 
 /// Reference eigenvalue scale (π/L)², L the largest extent of the grid box: shifts are relative to
 /// it, and it anchors the search for the first non-zero κ² that decides which modes are harmonic.

@@ -137,6 +137,7 @@ wall = "no-slip"
 boundary = "staircase"
 subsamples = 8
 coefficients = "tensor-free"
+eigensolver = "slepc"
 
 [simulation]
 dt = 0.005
@@ -239,6 +240,7 @@ steps_per_frame = 5
     EXPECT_EQ(scene.basis.boundary, BoundaryTreatment::Staircase);
     EXPECT_EQ(scene.basis.subsamples, 8);
     EXPECT_EQ(scene.basis.coefficients, CoefficientStorage::TensorFree);
+    EXPECT_EQ(scene.basis.eigensolver, EigensolverChoice::Slepc);
 
     EXPECT_EQ(scene.simulation.dt, 0.005);
     EXPECT_EQ(scene.simulation.integrator, Integrator::Rk4);
@@ -327,6 +329,7 @@ TEST_F(SceneLoaderTest, MinimalSceneGetsDefaults) {
     EXPECT_EQ(scene.basis.boundary, BoundaryTreatment::CutCell);
     EXPECT_EQ(scene.basis.subsamples, 4);
     EXPECT_EQ(scene.basis.coefficients, CoefficientStorage::Auto);
+    EXPECT_EQ(scene.basis.eigensolver, EigensolverChoice::Automatic);
 
     const SimulationSpec sim;
     EXPECT_EQ(scene.simulation.dt, sim.dt);
@@ -439,6 +442,10 @@ TEST_F(SceneLoaderTest, WrongTypeNamesKeyAndExpectedType) {
     message = errorOf(std::string(kGrid2d) + kBasis + "[simulation]\nintegrator = \"rk5\"\n");
     EXPECT_CONTAINS(message, "[simulation].integrator: unknown value \"rk5\"");
     EXPECT_CONTAINS(message, "did you mean rk4?");
+
+    message = errorOf(std::string(kGrid2d) + "[basis]\nvelocity_modes = 4\neigensolver = \"arpack\"\n");
+    EXPECT_CONTAINS(message, "[basis].eigensolver: unknown value \"arpack\"");
+    EXPECT_CONTAINS(message, "expected auto, spectra or slepc");
 }
 
 TEST_F(SceneLoaderTest, ResolutionBelowTwoIsRejected) {

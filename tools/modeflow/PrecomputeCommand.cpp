@@ -1,6 +1,7 @@
 #include <iostream>
 
 #include "precompute/Precompute.h"
+#include "precompute/solve/ProcessGroup.h"
 #include "precompute/scene/SceneLoader.h"
 #include "tools/modeflow/Commands.h"
 
@@ -24,10 +25,16 @@ Command addPrecompute(CLI::App& app) {
     sub->add_flag("--force", opts->force, "recompute even when a valid cache exists");
     return [sub, opts]() {
         if (!*sub) return -1;
+        // `mpirun -n K modeflow precompute`: K ranks share the eigensolves, rank 0 reports and
+        // writes the cache.
+        const ProcessGroup group = joinProcessGroup();
         const SceneSpec scene = loadScene(opts->scene);
-        Progress progress = Progress::toStderr();
+        Progress progress = group.primary() ? Progress::toStderr() : Progress::silent();
+        if (group.size > 1)
+            progress.note("precompute on " + std::to_string(group.size) + " MPI ranks");
         const CacheOutcome outcome =
             ensureCache(scene, resolveCacheDir(opts->cacheDir), opts->force, progress);
+        if (!group.primary()) return 0;
         if (outcome.reused) std::cerr << "cache is up to date\n";
         std::cout << outcome.path.string() << std::endl;
         return 0;

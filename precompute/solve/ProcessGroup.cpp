@@ -1,0 +1,75 @@
+#include "precompute/solve/ProcessGroup.h"
+
+#include <cstdlib>
+#include <string>
+
+#include <slepcsys.h>
+
+#include "engine/core/Error.h"
+
+namespace modeflow {
+namespace {
+
+/// Open MPI's mpirun, MPICH's hydra and PMIx launchers (Slurm's srun among them) tell their
+/// processes so through these.
+bool launchedByMpi() {
+    for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_RANK"})
+        if (std::getenv(name) != nullptr) return true;
+    return false;
+}
+
+/// The innermost message of the error PETSc is returning (where it was raised: later frames of
+/// the same error add none), for our own error line.
+std::string& petscMessage() {
+    static std::string message;
+    return message;
+}
+
+PetscErrorCode keepMessage(MPI_Comm, int, const char*, const char*, PetscErrorCode code,
+                           PetscErrorType type, const char* message, void*) {
+    if (type == PETSC_ERROR_INITIAL) petscMessage() = message != nullptr ? message : "";
+    return code;
+}
+
+void finalizePetsc() {
+    PetscBool finalized = PETSC_FALSE;
+    if (PetscFinalized(&finalized) == 0 && !finalized) SlepcFinalize();
+}
+
+}  // namespace
+
+void ensurePetsc() {
+    PetscBool initialized = PETSC_FALSE;
+    SlepcInitialized(&initialized);
+    if (initialized) return;
+    // Our own signal handlers and error messages stay in charge: PETSc's would print tracebacks
+    // and catch Ctrl-C.
+    PetscOptionsSetValue(nullptr, "-no_signal_handler", nullptr);
+    if (SlepcInitializeNoArguments() != 0)
+        throw Error(
+            "precompute: MPI and PETSc could not be initialized (SLEPc's eigensolver needs "
+            "them; under mpirun, check the launcher's own messages)");
+    PetscPushErrorHandler(keepMessage, nullptr);
+    std::atexit(finalizePetsc);
+}
+
+std::string lastPetscErrorMessage() {
+    return petscMessage();
+}
+
+ProcessGroup joinProcessGroup() {
+    if (launchedByMpi()) ensurePetsc();
+    return currentProcessGroup();
+}
+
+ProcessGroup currentProcessGroup() {
+    PetscBool initialized = PETSC_FALSE;
+    SlepcInitialized(&initialized);
+    if (!initialized) return {};
+    ProcessGroup group;
+    MPI_Comm_rank(PETSC_COMM_WORLD, &group.rank);
+    MPI_Comm_size(PETSC_COMM_WORLD, &group.size);
+    return group;
+}
+
+}  // namespace modeflow

@@ -1,0 +1,71 @@
+// `mpirun -n 2 modeflow precompute` (README.md, "Large bases"): the ranks share the sliced
+// eigensolves, rank 0 alone writes the cache, and the basis is the one a single process computes.
+
+#include <gtest/gtest.h>
+
+#include "engine/format/CacheFile.h"
+#include "tests/support/BasisComparison.h"
+#include "tests/support/CliFixture.h"
+
+namespace modeflow {
+namespace {
+
+using testing::Cli;
+using testing::RunResult;
+namespace fs = std::filesystem;
+
+/// An off-centre ball with a hole through it (a harmonic field): no exact symmetry, so every
+/// eigenspace is one-dimensional or nearly so.
+const char* kHollowBall = R"(
+[grid]
+resolution = [14, 14, 14]
+bounds_min = [-1.1, -1.1, -1.1]
+bounds_max = [1.1, 1.1, 1.1]
+[[domain]]
+shape = "ball"
+center = [0.03, 0.02, 0.01]
+radius = 1.0
+[[domain]]
+shape = "cylinder"
+center = [0.0, 0.0, 0.0]
+radius = 0.3
+half_height = 2.0
+op = "subtract"
+[basis]
+velocity_modes = 20
+scalar_modes = 6
+)";
+
+TEST_F(Cli, TwoRanksComputeTheSingleProcessBasis) {
+    const std::string file = scene("hollow.toml", kHollowBall).string();
+    const RunResult alone = run("precompute " + file + " --cache-dir " + (mDir / "alone").string());
+    ASSERT_EQ(alone.status, 0) << alone.err;
+    const RunResult two = runProgram(
+        MODEFLOW_MPIRUN, "--allow-run-as-root --oversubscribe -n 2 " + testing::cliPath() +
+                             " precompute " + file + " --cache-dir " + (mDir / "two").string());
+    ASSERT_EQ(two.status, 0) << two.err;
+    EXPECT_NE(two.err.find("precompute on 2 MPI ranks"), std::string::npos) << two.err;
+    EXPECT_EQ(std::count(two.out.begin(), two.out.end(), '\n'), 1)
+        << "only rank 0 prints the cache path: " << two.out;
+
+    const BasisCache a = readCache(alone.out.substr(0, alone.out.find('\n')));
+    const BasisCache b = readCache(two.out.substr(0, two.out.find('\n')));
+    EXPECT_EQ(b.velocity.harmonic, 1);
+    EXPECT_EQ(b.velocity.harmonic, a.velocity.harmonic);
+    EXPECT_LE(testing::eigenvalueDifference(b.velocity.eigenvalues, a.velocity.eigenvalues), 1e-9)
+        << "velocity eigenvalues";
+    EXPECT_LE(testing::spanDifference(a.velocity.eigenvalues, a.velocity.modes, b.velocity.modes,
+                                      a.faceStar),
+              1e-7)
+        << "velocity spans";
+    EXPECT_LE(testing::eigenvalueDifference(b.scalar.eigenvalues, a.scalar.eigenvalues), 1e-9)
+        << "scalar eigenvalues";
+    EXPECT_LE(testing::spanDifference(a.scalar.eigenvalues, a.scalar.modes, b.scalar.modes,
+                                      a.scalar.cellStar),
+              1e-7)
+        << "scalar spans";
+    EXPECT_EQ(b.coefficients.packed.size(), a.coefficients.packed.size());
+}
+
+}  // namespace
+}  // namespace modeflow
