@@ -10,9 +10,9 @@
 #include <unistd.h>
 
 #include "engine/core/AvailableMemory.h"
-#include "engine/format/CacheFile.h"
 #include "engine/core/Error.h"
 #include "engine/core/WritableDirectory.h"
+#include "engine/format/CacheFile.h"
 #include "precompute/CoefficientChoice.h"
 #include "precompute/PrecomputeMemory.h"
 #include "precompute/SurfaceStages.h"
@@ -102,7 +102,8 @@ std::string basisKey(const SceneSpec& scene) {
         s << " half_height=" << d.halfHeight << " major=" << d.majorRadius
           << " minor=" << d.minorRadius;
         if (d.kind == ShapeKind::Mesh)
-            s << " mesh=" << fileDigest(d.meshFile, "[[domain]] #" + std::to_string(index) + " (mesh).file");
+            s << " mesh="
+              << fileDigest(d.meshFile, "[[domain]] #" + std::to_string(index) + " (mesh).file");
         s << "\n";
     }
     const BasisSpec& b = scene.basis;
@@ -133,9 +134,11 @@ Error outOfMemory(const std::string& stage, const PrecomputeMemory& estimate) {
 void closedFormStages(const SceneSpec& scene, BasisCache& cache, Progress& progress) {
     const BasisSpec& basis = scene.basis;
     if (basis.coefficients == CoefficientStorage::TensorFree)
-        throw Error("[basis].coefficients = \"tensor-free\": a whole box with free-slip walls gets closed-form "
-                    "bases, whose coefficients are sparse by selection rules and which have no vorticity "
-                    "quadrature; use \"auto\" (or \"dense\", \"sparse\")");
+        throw Error(
+            "[basis].coefficients = \"tensor-free\": a whole box with free-slip walls gets "
+            "closed-form "
+            "bases, whose coefficients are sparse by selection rules and which have no vorticity "
+            "quadrature; use \"auto\" (or \"dense\", \"sparse\")");
     progress.begin("operators");
     fillWholeBoxDofs(cache);
     cache.timings.emplace_back("operators", progress.end());
@@ -145,7 +148,8 @@ void closedFormStages(const SceneSpec& scene, BasisCache& cache, Progress& progr
     cache.scalar.boundary = basis.scalarBoundary;
     cache.scalar.cells = cache.cells;
     cache.scalar.cellStar = cache.cellStar;
-    ClosedFormScalar scalar = closedFormScalarBasis(scene.grid, basis.scalarModes, basis.scalarBoundary);
+    ClosedFormScalar scalar =
+        closedFormScalarBasis(scene.grid, basis.scalarModes, basis.scalarBoundary);
     cache.scalar.eigenvalues = scalar.eigenvalues;
     cache.scalar.separable = std::move(scalar.modes);
     cache.scalar.omittedConstants = scalar.omittedConstants;
@@ -194,11 +198,13 @@ BasisCache computeStages(const SceneSpec& scene, std::string key, Progress& prog
     progress.begin("operators");
     const CutCellDec dec = buildCutCellDec(complex, measures, scene.basis.wall);
     if (dec.cells.size() == 0)
-        throw Error("[[domain]]: no part of the domain lies inside the grid box; check the "
-                    "shapes against [grid].bounds_min/bounds_max");
+        throw Error(
+            "[[domain]]: no part of the domain lies inside the grid box; check the "
+            "shapes against [grid].bounds_min/bounds_max");
     if (dec.faces.size() == 0)
-        throw Error("[[domain]]: the domain is thinner than one grid cell everywhere; refine "
-                    "[grid].resolution");
+        throw Error(
+            "[[domain]]: the domain is thinner than one grid cell everywhere; refine "
+            "[grid].resolution");
     cache.cellFraction = measures.fraction[n];
     cache.faces = dec.faces.toGlobal;
     cache.faceStar = dec.faceStar;
@@ -213,9 +219,8 @@ BasisCache computeStages(const SceneSpec& scene, std::string key, Progress& prog
     const BasisSpec& basis = scene.basis;
     cache.scalar.boundary = basis.scalarBoundary;
     const bool neumannBasis = basis.scalarBoundary == ScalarBoundary::Neumann;
-    const ScalarBasisResult firstNeumann =
-        solveNeumannScalarBasis(dec, neumannBasis ? std::max(1, basis.scalarModes) : 1, counter,
-                                basis.eigensolver);
+    const ScalarBasisResult firstNeumann = solveNeumannScalarBasis(
+        dec, neumannBasis ? std::max(1, basis.scalarModes) : 1, counter, basis.eigensolver);
     ScalarBasisResult scalar;
     if (neumannBasis) {
         scalar = firstNeumann;
@@ -228,7 +233,8 @@ BasisCache computeStages(const SceneSpec& scene, std::string key, Progress& prog
         cache.scalar.cellStar = ddec.cellStar;
     }
     const int keep = basis.scalarModes;
-    cache.scalar.eigenvalues = scalar.eigenvalues.head(std::min<Eigen::Index>(keep, scalar.eigenvalues.size()));
+    cache.scalar.eigenvalues =
+        scalar.eigenvalues.head(std::min<Eigen::Index>(keep, scalar.eigenvalues.size()));
     cache.scalar.modes = scalar.modes.leftCols(cache.scalar.eigenvalues.size());
     cache.scalar.omittedConstants = scalar.omittedConstants;
     SolverStats scalarStats = firstNeumann.stats;
@@ -237,9 +243,9 @@ BasisCache computeStages(const SceneSpec& scene, std::string key, Progress& prog
     cache.timings.emplace_back("scalar_eigensolve", progress.end());
 
     progress.begin("velocity eigensolve");
-    const VelocityBasisResult velocity = solveVelocityBasis(
-        dec, basis.velocityModes, firstNeumann.eigenvalues[0], domainMeasure(dec.cellStar), counter,
-        basis.eigensolver);
+    const VelocityBasisResult velocity =
+        solveVelocityBasis(dec, basis.velocityModes, firstNeumann.eigenvalues[0],
+                           domainMeasure(dec.cellStar), counter, basis.eigensolver);
     cache.velocity.eigenvalues = velocity.eigenvalues;
     cache.velocity.modes = velocity.modes;
     cache.velocity.modeNumbers = velocity.modeNumbers;
@@ -252,15 +258,18 @@ BasisCache computeStages(const SceneSpec& scene, std::string key, Progress& prog
     progress.begin("structural coefficients");
     cache.quadrature = vorticityQuadrature(complex, measures, dec);
     const int modes = int(cache.velocity.modes.cols());
-    const TensorChoice choice = chooseTensor(basis.coefficients, modes, std::int64_t(dec.faces.size()));
+    const TensorChoice choice =
+        chooseTensor(basis.coefficients, modes, std::int64_t(dec.faces.size()));
     if (choice.assemble) {
         cache.coefficients = storedCoefficients(
-            basis.coefficients, assembleStructuralCoefficients(cache.quadrature, cache.velocity.modes),
-            modes);
+            basis.coefficients,
+            assembleStructuralCoefficients(cache.quadrature, cache.velocity.modes), modes);
     } else {
         cache.coefficients.storage = BasisCache::Coefficients::Storage::None;
-        progress.note("  structural coefficients: none assembled, the advection is evaluated "
-                      "tensor-free (" + choice.reason + ")");
+        progress.note(
+            "  structural coefficients: none assembled, the advection is evaluated "
+            "tensor-free (" +
+            choice.reason + ")");
     }
     cache.timings.emplace_back("coefficients", progress.end());
     return cache;
@@ -272,8 +281,9 @@ BasisCache computeBasis(const SceneSpec& scene, std::string key, Progress& progr
     try {
         if (scene.isSurface()) {
             BasisCache cache = computeSurfaceStages(scene, std::move(key), progress);
-            cache.coefficients = storedCoefficients(scene.basis.coefficients, std::move(cache.coefficients.packed),
-                                                    int(cache.velocity.modes.cols()));
+            cache.coefficients =
+                storedCoefficients(scene.basis.coefficients, std::move(cache.coefficients.packed),
+                                   int(cache.velocity.modes.cols()));
             return cache;
         }
         return computeStages(scene, std::move(key), progress, method);
@@ -291,7 +301,8 @@ BasisCache computeBasis(const SceneSpec& scene, Progress& progress, BasisMethod 
 
 CacheOutcome ensureCache(const SceneSpec& scene, const std::filesystem::path& cacheDir, bool force,
                          Progress& progress) {
-    ensureWritableDirectory(cacheDir, "cache directory", "; choose another with --cache-dir or MODEFLOW_CACHE_DIR");
+    ensureWritableDirectory(cacheDir, "cache directory",
+                            "; choose another with --cache-dir or MODEFLOW_CACHE_DIR");
 
     const std::string key = basisKey(scene);
     CacheOutcome outcome{cachePath(key, cacheDir), false, {}};
@@ -300,7 +311,8 @@ CacheOutcome ensureCache(const SceneSpec& scene, const std::filesystem::path& ca
             outcome.cache = readCache(outcome.path);
             outcome.reused = outcome.cache.key == key;
             if (!outcome.reused)
-                progress.note("cache " + outcome.path.string() + " belongs to other inputs; rebuilding");
+                progress.note("cache " + outcome.path.string() +
+                              " belongs to other inputs; rebuilding");
         } catch (const Error& e) {
             progress.note(std::string(e.what()) + "; rebuilding");
         }

@@ -1,7 +1,7 @@
 #pragma once
 /// @file SceneSpec.h
-/// The validated content of a scene file (README.md, "Scene files"). Plain values only: parsing and validation
-/// live in SceneLoader, so every other module can use a scene without pulling in TOML.
+/// The validated content of a scene file (README.md, "Scene files"). Plain values only: parsing and
+/// validation live in SceneLoader, so every other module can use a scene without pulling in TOML.
 
 #include <array>
 #include <cstdint>
@@ -23,14 +23,14 @@ enum class CsgOp { Union, Subtract, Intersect };
 struct ShapeSpec {
     ShapeKind kind = ShapeKind::Ball;
     Vec3 center{0.0, 0.0, 0.0};
-    double radius = 0.0;              ///< ball, cylinder
-    Vec3 radii{0.0, 0.0, 0.0};        ///< ellipsoid
-    Vec3 min{0.0, 0.0, 0.0};          ///< box
-    Vec3 max{0.0, 0.0, 0.0};          ///< box
-    double halfHeight = 0.0;          ///< cylinder (axis z)
-    double majorRadius = 0.0;         ///< torus (axis z)
-    double minorRadius = 0.0;         ///< torus
-    std::filesystem::path meshFile;   ///< mesh (OBJ, 3D), resolved against the scene's folder
+    double radius = 0.0;             ///< ball, cylinder
+    Vec3 radii{0.0, 0.0, 0.0};       ///< ellipsoid
+    Vec3 min{0.0, 0.0, 0.0};         ///< box
+    Vec3 max{0.0, 0.0, 0.0};         ///< box
+    double halfHeight = 0.0;         ///< cylinder (axis z)
+    double majorRadius = 0.0;        ///< torus (axis z)
+    double minorRadius = 0.0;        ///< torus
+    std::filesystem::path meshFile;  ///< mesh (OBJ, 3D), resolved against the scene's folder
     CsgOp op = CsgOp::Union;
     bool operator==(const ShapeSpec&) const = default;
 };
@@ -103,10 +103,10 @@ enum class InitialMagnetic { Random, Uniform };
 /// One `[[initial.vortex]]`: a Gaussian-cored point vortex in 2D, a vortex ring in 3D.
 struct VortexSpec {
     Vec3 center{0.0, 0.0, 0.0};
-    double strength = 0.0;    ///< circulation Γ (counter-clockwise / right-handed about normal)
-    double radius = 0.0;      ///< Gaussian core σ > 0
+    double strength = 0.0;       ///< circulation Γ (counter-clockwise / right-handed about normal)
+    double radius = 0.0;         ///< Gaussian core σ > 0
     Vec3 normal{0.0, 0.0, 1.0};  ///< 3D: the ring's axis (not normalized by the loader)
-    double ringRadius = 0.0;  ///< 3D: radius of the ring's centre line
+    double ringRadius = 0.0;     ///< 3D: radius of the ring's centre line
     bool operator==(const VortexSpec&) const = default;
 };
 
@@ -155,7 +155,7 @@ enum class ObstacleShape { Ball, Box, Capsule };
 
 struct ObstacleSpec {
     ObstacleShape shape = ObstacleShape::Ball;
-    double radius = 0.0;         ///< ball, capsule
+    double radius = 0.0;           ///< ball, capsule
     Vec3 halfSize{0.0, 0.0, 0.0};  ///< box: half its extent per axis
     Vec3 axis{0.0, 0.0, 0.0};      ///< capsule: from its centre to one end of its segment
     /// Key frames (time, centre), times increasing; the centre moves linearly between them and
@@ -195,8 +195,8 @@ struct SurfaceSpec {
 struct SceneSpec {
     std::filesystem::path sourceFile;  ///< the TOML file it came from (empty if built in code)
     std::string name;                  ///< file stem, used to name outputs
-    GridSpec grid;                  ///< grid scenes only
-    std::vector<ShapeSpec> domain;  ///< empty: the whole grid box is fluid
+    GridSpec grid;                     ///< grid scenes only
+    std::vector<ShapeSpec> domain;     ///< empty: the whole grid box is fluid
     /// Set in a surface scene, which has no [grid] and no [[domain]] (`grid` keeps its defaults
     /// and means nothing there).
     std::optional<SurfaceSpec> surface;

@@ -20,14 +20,15 @@ using namespace keywords;
 inline constexpr std::string_view kTopLevelTables[] = {
     "grid",   "domain",   "surface", "basis",   "simulation", "initial",
     "source", "obstacle", "smoke",   "forcing", "output"};
-inline constexpr std::string_view kGridKeys[] = {"resolution", "bounds_min", "bounds_max", "periodic"};
+inline constexpr std::string_view kGridKeys[] = {"resolution", "bounds_min", "bounds_max",
+                                                 "periodic"};
 inline constexpr std::string_view kSurfaceKeys[] = {"mesh"};
 /// [basis] keys that only a grid scene takes.
-inline constexpr std::string_view kGridBasisKeys[] = {"scalar_boundary", "wall", "boundary", "subsamples",
-                                                     "eigensolver"};
-inline constexpr std::string_view kBasisKeys[] = {
-    "velocity_modes", "modes", "scalar_modes", "scalar_boundary", "wall", "boundary", "subsamples",
-    "coefficients", "eigensolver"};
+inline constexpr std::string_view kGridBasisKeys[] = {"scalar_boundary", "wall", "boundary",
+                                                      "subsamples", "eigensolver"};
+inline constexpr std::string_view kBasisKeys[] = {"velocity_modes",  "modes",        "scalar_modes",
+                                                  "scalar_boundary", "wall",         "boundary",
+                                                  "subsamples",      "coefficients", "eigensolver"};
 inline constexpr std::string_view kSimulationKeys[] = {
     "dt", "integrator", "viscosity", "alpha", "mhd", "magnetic_diffusivity", "basis_precision"};
 inline constexpr std::string_view kInitialKeys[] = {"velocity",

@@ -55,7 +55,8 @@ struct EigenRequest {
     /// eigenvalues below the highest one kept, until a run finds none.
     bool findMissedCopies = false;
     /// Where the `count`-th eigenvalue is expected (Weyl's law) and the d of N(λ) ∝ λ^{d/2}: the
-    /// sliced solver's first interval ends there, and intervals grow by that law (SlicedEigensolver.h).
+    /// sliced solver's first interval ends there, and intervals grow by that law
+    /// (SlicedEigensolver.h).
     double estimate = 0.0;
     int spectralDimension = 3;
 };

@@ -47,7 +47,9 @@ EigenPairs lowestEigenpairs(const Eigen::SparseMatrix<double>& k, const Eigen::V
     return out;
 }
 
-double domainMeasure(const Eigen::VectorXd& cellStar) { return cellStar.cwiseInverse().sum(); }
+double domainMeasure(const Eigen::VectorXd& cellStar) {
+    return cellStar.cwiseInverse().sum();
+}
 
 double referenceEigenvalue(const GridSpec& grid) {
     double l = 0.0;
@@ -62,8 +64,10 @@ int connectedComponents(const CutCellDec& dec) {
     for (std::int64_t f = 0; f < faceRows.outerSize(); ++f) {
         int first = -1;
         for (SparseMatrix::InnerIterator it(faceRows, f); it; ++it) {
-            if (first < 0) first = int(it.col());
-            else parent[find(parent, int(it.col()))] = find(parent, first);
+            if (first < 0)
+                first = int(it.col());
+            else
+                parent[find(parent, int(it.col()))] = find(parent, first);
         }
     }
     int count = 0;
@@ -102,8 +106,8 @@ double scalarWeylEstimate(int dim, int n, double measure) {
 
 EigenRequest scalarRequest(int count, const GridSpec& grid, const Eigen::VectorXd& cellStar,
                            const char* what, const SolveProgress& progress) {
-    EigenRequest request{count, -1e-2 * referenceEigenvalue(grid), 1e-12, what, progress,
-                         grid.anyPeriodic()};
+    EigenRequest request{
+        count, -1e-2 * referenceEigenvalue(grid), 1e-12, what, progress, grid.anyPeriodic()};
     request.estimate = scalarWeylEstimate(grid.dim, count, domainMeasure(cellStar));
     request.spectralDimension = grid.dim;
     return request;
@@ -140,8 +144,7 @@ void projectAndRefine(const CutCellDec& dec, EigenPairs& pairs) {
 }  // namespace
 
 ScalarBasisResult solveNeumannScalarBasis(const CutCellDec& dec, int count,
-                                          const SolveProgress& progress,
-                                          EigensolverChoice choice) {
+                                          const SolveProgress& progress, EigensolverChoice choice) {
     const int constants = connectedComponents(dec);
     const std::int64_t available = dec.cells.size() - constants;
     if (count > available)
@@ -173,8 +176,8 @@ VelocityBasisResult solveVelocityBasis(const CutCellDec& dec, const std::vector<
     const std::int64_t available = divergenceFreeDimension(dec);
     if (highest > available)
         throw Error("[basis]: asked for divergence-free mode " + std::to_string(highest) +
-                    " but the domain holds only " +
-                    plural(available, "divergence-free field") + " at this resolution");
+                    " but the domain holds only " + plural(available, "divergence-free field") +
+                    " at this resolution");
 
     const double mu1 = firstNeumannEigenvalue;
     const bool noSlip = dec.wall == WallKind::NoSlip;
@@ -198,8 +201,10 @@ VelocityBasisResult solveVelocityBasis(const CutCellDec& dec, const std::vector<
         // top computed value is below it, all computed modes are divergence-free.
         if (noSlip || top < 0.999 * (1.0 + penalty) * mu1) break;
         if (attempt == 3)
-            throw Error("velocity eigensolve: gradient fields stayed in the low spectrum after "
-                        "raising the grad-div penalty to " + std::to_string(penalty));
+            throw Error(
+                "velocity eigensolve: gradient fields stayed in the low spectrum after "
+                "raising the grad-div penalty to " +
+                std::to_string(penalty));
         penalty = 4.0 * top / mu1;
     }
 

@@ -1,6 +1,7 @@
 #pragma once
 /// @file SpectralBasis.h
-/// The velocity and scalar eigenbases of a domain (seed §6.3.1, appendix C.1; precompute/README.md).
+/// The velocity and scalar eigenbases of a domain (seed §6.3.1, appendix C.1;
+/// precompute/README.md).
 
 #include <vector>
 
@@ -35,7 +36,8 @@ struct ScalarBasisResult {
 EigenPairs lowestEigenpairs(const Eigen::SparseMatrix<double>& k, const Eigen::VectorXd& m,
                             const EigenRequest& request, EigensolverChoice choice);
 
-/// From this many eigenpairs on, Automatic slices the spectrum (measured: tools/bench-eigensolvers.sh).
+/// From this many eigenpairs on, Automatic slices the spectrum (measured:
+/// tools/bench-eigensolvers.sh).
 inline constexpr int kSlicingFromCount = 200;
 
 /// |Ω| as the DOF cells measure it (Σ 1/⋆n).
@@ -50,11 +52,10 @@ std::int64_t divergenceFreeDimension(const CutCellDec& dec);
 
 /// The first `count` non-constant Neumann scalar modes.
 ScalarBasisResult solveNeumannScalarBasis(const CutCellDec& dec, int count,
-                                          const SolveProgress& progress,
-                                          EigensolverChoice choice);
+                                          const SolveProgress& progress, EigensolverChoice choice);
 ScalarBasisResult solveDirichletScalarBasis(const DirichletScalarDec& dec, int count,
                                             const SolveProgress& progress,
-                                          EigensolverChoice choice);
+                                            EigensolverChoice choice);
 
 /// The div-free modes in `ranges` (1-based, of the div-free spectrum, harmonic ones first).
 /// Gradient eigenfields are pushed above the wanted range with a grad-div penalty chosen from

@@ -192,7 +192,8 @@ SurfaceBasisResult solveSurfaceBasis(const SurfaceDec& dec, const std::vector<Mo
         const double scale = 8.0 * M_PI / dec.totalArea();
         const EigenRequest request{wanted + components, -1e-2 * scale, 1e-12,
                                    "Laplace–Beltrami eigensolve", progress};
-        EigenPairs pairs = lowestEigenpairs(dec.laplacian(), dec.star0, request, EigensolverChoice::Spectra);
+        EigenPairs pairs =
+            lowestEigenpairs(dec.laplacian(), dec.star0, request, EigensolverChoice::Spectra);
         r.stats = pairs.stats;
         lambda = pairs.values.tail(wanted);
         psi = pairs.vectors.rightCols(wanted);

@@ -291,7 +291,8 @@ path = [[0.0, -0.5, 0.0], [1.0, 0.5, 0.0], [2.0, 0.5, 0.5]]
 shape = "box"
 half_size = [0.1, 0.2]
 path = [[0.0, 0.0, -0.5]]
-)", "obstacles.toml");
+)",
+                                       "obstacles.toml");
     ASSERT_EQ(scene.obstacles.size(), 2u);
     EXPECT_EQ(scene.obstacles[0].shape, ObstacleShape::Capsule);
     EXPECT_EQ(scene.obstacles[0].axis, (Vec3{0.0, 0.3, 0.0}));
@@ -305,9 +306,11 @@ path = [[0.0, 0.0, -0.5]]
                     "key frame times must increase");
     EXPECT_CONTAINS(errorOf(base + "radius = 0.1\npath = [[1.0, 0.0]]\n"), "[t, position]");
     EXPECT_CONTAINS(errorOf(base + "path = [[0.0, 0.0, 0.0]]\n"), "radius");
-    EXPECT_CONTAINS(errorOf(base + "radius = 0.1\nhalf_size = [0.1, 0.1]\npath = [[0.0, 0.0, 0.0]]\n"),
-                    "half_size: not used by a ball");
-    EXPECT_CONTAINS(errorOf(std::string(kGrid2d) + kBasis + "[[obstacle]]\nshape = \"cone\"\n"), "cone");
+    EXPECT_CONTAINS(
+        errorOf(base + "radius = 0.1\nhalf_size = [0.1, 0.1]\npath = [[0.0, 0.0, 0.0]]\n"),
+        "half_size: not used by a ball");
+    EXPECT_CONTAINS(errorOf(std::string(kGrid2d) + kBasis + "[[obstacle]]\nshape = \"cone\"\n"),
+                    "cone");
 }
 
 TEST_F(SceneLoaderTest, MinimalSceneGetsDefaults) {
@@ -443,7 +446,8 @@ TEST_F(SceneLoaderTest, WrongTypeNamesKeyAndExpectedType) {
     EXPECT_CONTAINS(message, "[simulation].integrator: unknown value \"rk5\"");
     EXPECT_CONTAINS(message, "did you mean rk4?");
 
-    message = errorOf(std::string(kGrid2d) + "[basis]\nvelocity_modes = 4\neigensolver = \"arpack\"\n");
+    message =
+        errorOf(std::string(kGrid2d) + "[basis]\nvelocity_modes = 4\neigensolver = \"arpack\"\n");
     EXPECT_CONTAINS(message, "[basis].eigensolver: unknown value \"arpack\"");
     EXPECT_CONTAINS(message, "expected auto, spectra or slepc");
 }
@@ -635,9 +639,11 @@ TEST_F(SceneLoaderTest, RangeChecksOnScalars) {
     EXPECT_CONTAINS(errorOf(base + "[smoke]\nresolution_scale = 9\n"),
                     "[smoke].resolution_scale: must be between 1 and 8");
     EXPECT_CONTAINS(errorOf(base + "[smoke]\nadvection = \"bfecc\"\n"), "[smoke].advection");
-    EXPECT_CONTAINS(errorOf(base + "[[source]]\nshape = \"ball\"\ncenter = [0, 0]\nradius = 0.1\nstart = 2.0\nend = 1.0\n"),
+    EXPECT_CONTAINS(errorOf(base + "[[source]]\nshape = \"ball\"\ncenter = [0, 0]\nradius = "
+                                   "0.1\nstart = 2.0\nend = 1.0\n"),
                     "end: must be later than start");
-    EXPECT_CONTAINS(errorOf(base + "[simulation]\nbasis_precision = \"float8\"\n"), "[simulation].basis_precision");
+    EXPECT_CONTAINS(errorOf(base + "[simulation]\nbasis_precision = \"float8\"\n"),
+                    "[simulation].basis_precision");
     EXPECT_CONTAINS(
         errorOf(std::string(kGrid2d) + "[basis]\nvelocity_modes = 4\nsubsamples = 17\n"),
         "[basis].subsamples: must be between 1 and 16");
@@ -815,8 +821,10 @@ TEST_F(SceneLoaderTest, AbsurdInitialSpeedsAreRefused) {
 }
 
 TEST_F(SceneLoaderTest, MagneticFieldIsRandomOrUniformAndChecked) {
-    const std::string base = std::string(kGrid2d) + kBasis + "[simulation]\nmhd = true\n[initial]\n";
-    const SceneSpec random = parseScene(base + "magnetic_energy = 0.5\nmagnetic_seed = 7\n", "s.toml");
+    const std::string base =
+        std::string(kGrid2d) + kBasis + "[simulation]\nmhd = true\n[initial]\n";
+    const SceneSpec random =
+        parseScene(base + "magnetic_energy = 0.5\nmagnetic_seed = 7\n", "s.toml");
     EXPECT_EQ(random.initial.magnetic, InitialMagnetic::Random);
     EXPECT_EQ(random.initial.magneticEnergy, 0.5);
     EXPECT_EQ(random.initial.magneticSeed, 7u);
@@ -827,7 +835,8 @@ TEST_F(SceneLoaderTest, MagneticFieldIsRandomOrUniformAndChecked) {
     EXPECT_EQ(scene.initial.magneticDirection, (Vec3{1.0, 0.5, 0.0}));
     EXPECT_EQ(scene.initial.magneticStrength, 2.5);
     EXPECT_EQ(scene.initial.magneticWallLayer, 0.0) << "0: the basis's own wavelength";
-    const SceneSpec defaults = parseScene(uniform + "magnetic_direction = [0, 1]\nmagnetic_wall_layer = 0.4\n", "s.toml");
+    const SceneSpec defaults =
+        parseScene(uniform + "magnetic_direction = [0, 1]\nmagnetic_wall_layer = 0.4\n", "s.toml");
     EXPECT_EQ(defaults.initial.magneticStrength, 1.0);
     EXPECT_EQ(defaults.initial.magneticWallLayer, 0.4);
 
@@ -887,12 +896,15 @@ TEST_F(SceneLoaderTest, ForcingHoldsModesByPositionOrWaveNumber) {
 
 TEST_F(SceneLoaderTest, ModalAmplitudesAreRequiredAndChecked) {
     const std::string base = std::string(kGrid2d) + kBasis + "[initial]\nvelocity = \"modes\"\n";
-    const SceneSpec scene = parseScene(base + "amplitudes = [[1, 0.5], [3, -0.2], [10, 2]]\n", "s.toml");
+    const SceneSpec scene =
+        parseScene(base + "amplitudes = [[1, 0.5], [3, -0.2], [10, 2]]\n", "s.toml");
     const std::vector<std::pair<int, double>> expected{{1, 0.5}, {3, -0.2}, {10, 2.0}};
     EXPECT_EQ(scene.initial.amplitudes, expected);
 
-    EXPECT_CONTAINS(errorOf(base), "[initial].amplitudes: missing required key for velocity = \"modes\"");
-    EXPECT_CONTAINS(errorOf(base + "amplitudes = []\n"), "[initial].amplitudes: expected a non-empty array");
+    EXPECT_CONTAINS(errorOf(base),
+                    "[initial].amplitudes: missing required key for velocity = \"modes\"");
+    EXPECT_CONTAINS(errorOf(base + "amplitudes = []\n"),
+                    "[initial].amplitudes: expected a non-empty array");
     EXPECT_CONTAINS(errorOf(base + "amplitudes = [1, 0.5]\n"),
                     "[initial].amplitudes[0]: expected a [mode, amplitude] pair, got an integer");
     EXPECT_CONTAINS(errorOf(base + "amplitudes = [[1, 0.5, 2]]\n"),
@@ -936,15 +948,19 @@ radius = 0.2
 
     const std::string vortex = "[[initial.vortex]]\ncenter = [0, 0]\nstrength = 1\nradius = 0.1\n";
     EXPECT_CONTAINS(errorOf(base2), "[[initial.vortex]]: missing");
-    EXPECT_CONTAINS(errorOf(base2 + "vortex = 3\n"), "[[initial.vortex]]: expected an array of tables");
-    EXPECT_CONTAINS(errorOf(base2 + "energy = 2\nseed = 1\n" + vortex),
-                    "[initial].seed: not used with velocity = \"vortices\" (it takes vortex and energy)");
+    EXPECT_CONTAINS(errorOf(base2 + "vortex = 3\n"),
+                    "[[initial.vortex]]: expected an array of tables");
+    EXPECT_CONTAINS(
+        errorOf(base2 + "energy = 2\nseed = 1\n" + vortex),
+        "[initial].seed: not used with velocity = \"vortices\" (it takes vortex and energy)");
     EXPECT_CONTAINS(errorOf(base2 + "[[initial.vortex]]\ncenter = [0, 0]\nradius = 0.1\n"),
                     "[[initial.vortex]] #1.strength: missing required key");
-    EXPECT_CONTAINS(errorOf(base2 + vortex + "[[initial.vortex]]\ncenter = [0, 0]\nstrength = 1\nradius = 0\n"),
-                    "[[initial.vortex]] #2.radius: must be > 0");
-    EXPECT_CONTAINS(errorOf(base2 + "[[initial.vortex]]\ncenter = [0, 0, 0]\nstrength = 1\nradius = 0.1\n"),
-                    "[[initial.vortex]] #1.center: expected 2 numbers (the scene is 2D)");
+    EXPECT_CONTAINS(
+        errorOf(base2 + vortex + "[[initial.vortex]]\ncenter = [0, 0]\nstrength = 1\nradius = 0\n"),
+        "[[initial.vortex]] #2.radius: must be > 0");
+    EXPECT_CONTAINS(
+        errorOf(base2 + "[[initial.vortex]]\ncenter = [0, 0, 0]\nstrength = 1\nradius = 0.1\n"),
+        "[[initial.vortex]] #1.center: expected 2 numbers (the scene is 2D)");
     EXPECT_CONTAINS(errorOf(base2 + vortex + "strenght = 2\n"),
                     "[[initial.vortex]] #1.strenght: unknown key (did you mean strength?)");
     EXPECT_CONTAINS(errorOf(base2 + vortex + "ring_radius = 0.5\n"),
@@ -955,7 +971,8 @@ radius = 0.2
 
     const std::string base3 =
         std::string(kGrid3d) + kBasis + "[initial]\nvelocity = \"vortices\"\nenergy = 0.7\n";
-    const std::string ring = "[[initial.vortex]]\ncenter = [0, 0, 0]\nring_radius = 0.4\nradius = 0.1\nstrength = 3\n";
+    const std::string ring =
+        "[[initial.vortex]]\ncenter = [0, 0, 0]\nring_radius = 0.4\nradius = 0.1\nstrength = 3\n";
     const SceneSpec three = parseScene(base3 + ring + "normal = [1, 0, 0]\n", "s.toml");
     EXPECT_EQ(three.initial.energy, 0.7);
     ASSERT_EQ(three.initial.vortices.size(), 1u);
@@ -964,7 +981,8 @@ radius = 0.2
     EXPECT_CONTAINS(errorOf(base3 + ring), "[[initial.vortex]] #1.normal: missing required key");
     EXPECT_CONTAINS(errorOf(base3 + ring + "normal = [0, 0, 0]\n"),
                     "[[initial.vortex]] #1.normal: must be a non-zero vector");
-    EXPECT_CONTAINS(errorOf(base3 + "[[initial.vortex]]\ncenter = [0, 0, 0]\nnormal = [0, 0, 1]\nradius = 0.1\nstrength = 3\n"),
+    EXPECT_CONTAINS(errorOf(base3 + "[[initial.vortex]]\ncenter = [0, 0, 0]\nnormal = [0, 0, "
+                                    "1]\nradius = 0.1\nstrength = 3\n"),
                     "[[initial.vortex]] #1.ring_radius: missing required key");
 }
 
@@ -1175,7 +1193,8 @@ namespace modeflow {
 namespace {
 
 TEST(SceneLoaderPeriodic, PeriodicFlagsAreOnePerAxisAndDefaultToWalls) {
-    const std::string grid = "[grid]\nresolution = [8, 8]\nbounds_min = [0, 0]\nbounds_max = [1, 1]\n";
+    const std::string grid =
+        "[grid]\nresolution = [8, 8]\nbounds_min = [0, 0]\nbounds_max = [1, 1]\n";
     const SceneSpec walls = parseScene(grid + "[basis]\nvelocity_modes = 4\n", "walls.toml");
     EXPECT_FALSE(walls.grid.anyPeriodic());
     const SceneSpec explicitWalls =
@@ -1259,27 +1278,36 @@ TEST_F(SceneLoaderTest, SurfaceSceneRefusesTheGridsTablesAndKeys) {
     write("meshes/ball.obj", "v 0 0 0\n");
     const fs::path origin = mDir / "s.toml";
     const std::string surface = std::string(kSurface) + kBasis;
-    EXPECT_CONTAINS(errorOf(std::string(kGrid3d) + surface, origin),
-                    "[grid]: a scene is either a grid scene ([grid], [[domain]]) or a surface scene "
-                    "([surface]), not both");
-    EXPECT_CONTAINS(errorOf(surface + "[[domain]]\nshape = \"ball\"\ncenter = [0, 0, 0]\nradius = 1\n", origin),
-                    "[[domain]]: a scene is either a grid scene");
-    EXPECT_CONTAINS(errorOf(surface + "[[obstacle]]\nshape = \"ball\"\nradius = 0.1\npath = [[0, 0, 0, 0]]\n",
-                            origin),
-                    "[[obstacle]]: moving obstacles push on a grid's faces");
-    EXPECT_CONTAINS(errorOf(surface + "[smoke]\nbuoyancy = 1.0\n", origin), "[smoke]: buoyancy and the smoke grid");
-    EXPECT_CONTAINS(errorOf(std::string(kSurface) + "[basis]\nvelocity_modes = 4\nwall = \"no-slip\"\n", origin),
-                    "[basis].wall: only for grid scenes");
+    EXPECT_CONTAINS(
+        errorOf(std::string(kGrid3d) + surface, origin),
+        "[grid]: a scene is either a grid scene ([grid], [[domain]]) or a surface scene "
+        "([surface]), not both");
+    EXPECT_CONTAINS(
+        errorOf(surface + "[[domain]]\nshape = \"ball\"\ncenter = [0, 0, 0]\nradius = 1\n", origin),
+        "[[domain]]: a scene is either a grid scene");
+    EXPECT_CONTAINS(
+        errorOf(surface + "[[obstacle]]\nshape = \"ball\"\nradius = 0.1\npath = [[0, 0, 0, 0]]\n",
+                origin),
+        "[[obstacle]]: moving obstacles push on a grid's faces");
+    EXPECT_CONTAINS(errorOf(surface + "[smoke]\nbuoyancy = 1.0\n", origin),
+                    "[smoke]: buoyancy and the smoke grid");
+    EXPECT_CONTAINS(
+        errorOf(std::string(kSurface) + "[basis]\nvelocity_modes = 4\nwall = \"no-slip\"\n",
+                origin),
+        "[basis].wall: only for grid scenes");
     EXPECT_CONTAINS(errorOf(surface + "[simulation]\nmhd = true\n", origin),
                     "[simulation].mhd: MHD is simulated in grid scenes only");
     EXPECT_CONTAINS(errorOf(surface + "[initial]\nvelocity = \"vortices\"\n", origin),
                     "[initial].velocity: vortices are projected on a grid");
-    EXPECT_CONTAINS(errorOf("[surface]\nmesh = \"meshes/ball.obj\"\nfile = \"x\"\n" + std::string(kBasis), origin),
-                    "[surface].file: unknown key");
+    EXPECT_CONTAINS(
+        errorOf("[surface]\nmesh = \"meshes/ball.obj\"\nfile = \"x\"\n" + std::string(kBasis),
+                origin),
+        "[surface].file: unknown key");
     EXPECT_CONTAINS(errorOf("[surface]\nmesh = \"missing.obj\"\n" + std::string(kBasis), origin),
                     "[surface].mesh: no such file");
-    EXPECT_CONTAINS(errorOf("[surface]\nmesh = \"meshes/ball.stl\"\n" + std::string(kBasis), origin),
-                    "[surface].mesh: only OBJ meshes are supported");
+    EXPECT_CONTAINS(
+        errorOf("[surface]\nmesh = \"meshes/ball.stl\"\n" + std::string(kBasis), origin),
+        "[surface].mesh: only OBJ meshes are supported");
 }
 
 }  // namespace

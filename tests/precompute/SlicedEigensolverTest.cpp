@@ -36,8 +36,9 @@ TEST(SlicedEigensolver, ChainSpectrumExact) {
     const int n = 3000, count = 120;
     const double h = 1.0 / (n + 1);
     long reported = 0;
-    EigenRequest request{count, -1.0, 1e-12, "test eigensolve",
-                         [&reported](long solves) { reported = solves; }, false};
+    EigenRequest request{
+        count, -1.0, 1e-12, "test eigensolve", [&reported](long solves) { reported = solves; },
+        false};
     request.spectralDimension = 1;
     request.estimate = 0.5 * chainEigenvalue(n, count);  // too low on purpose: a second interval
     const EigenPairs pairs = slicedEigenpairs(chain(n), Eigen::VectorXd::Constant(n, h), request);

@@ -1,8 +1,8 @@
 #include <iostream>
 
 #include "precompute/Precompute.h"
-#include "precompute/solve/ProcessGroup.h"
 #include "precompute/scene/SceneLoader.h"
+#include "precompute/solve/ProcessGroup.h"
 #include "tools/modeflow/Commands.h"
 
 namespace modeflow::cli {
