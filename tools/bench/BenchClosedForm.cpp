@@ -172,43 +172,20 @@ void deviceStep(benchmark::State& state, const char* file) {
 constexpr const char* kBox = "box_closed_form_3d.toml";
 constexpr const char* kTorus = "torus_closed_form_2d.toml";
 
-BENCHMARK_CAPTURE(precompute, box_3d, kBox)
-    ->ArgName("N")
-    ->Arg(1000)
-    ->Arg(2000)
-    ->Iterations(1)
-    ->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(precompute, torus_2d, kTorus)
-    ->ArgName("N")
-    ->Arg(500)
-    ->Iterations(1)
-    ->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(cpuStep, box_3d, kBox)
-    ->ArgName("N")
-    ->Arg(1000)
-    ->Arg(2000)
-    ->Iterations(5)
-    ->UseManualTime()
-    ->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(cpuStep, torus_2d, kTorus)
-    ->ArgName("N")
-    ->Arg(500)
-    ->Iterations(20)
-    ->UseManualTime()
-    ->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(deviceStep, box_3d, kBox)
-    ->ArgName("N")
-    ->Arg(1000)
-    ->Arg(2000)
-    ->Iterations(5)
-    ->UseManualTime()
-    ->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(deviceStep, torus_2d, kTorus)
-    ->ArgName("N")
-    ->Arg(500)
-    ->Iterations(20)
-    ->UseManualTime()
-    ->Unit(benchmark::kMillisecond);
+/// The mode counts each scene is measured at, in milliseconds.
+void boxSizes(benchmark::internal::Benchmark* b) {
+    b->ArgName("N")->Arg(1000)->Arg(2000)->Unit(benchmark::kMillisecond);
+}
+void torusSizes(benchmark::internal::Benchmark* b) {
+    b->ArgName("N")->Arg(500)->Unit(benchmark::kMillisecond);
+}
+
+BENCHMARK_CAPTURE(precompute, box_3d, kBox)->Apply(boxSizes)->Iterations(1);
+BENCHMARK_CAPTURE(precompute, torus_2d, kTorus)->Apply(torusSizes)->Iterations(1);
+BENCHMARK_CAPTURE(cpuStep, box_3d, kBox)->Apply(boxSizes)->Iterations(5)->UseManualTime();
+BENCHMARK_CAPTURE(cpuStep, torus_2d, kTorus)->Apply(torusSizes)->Iterations(20)->UseManualTime();
+BENCHMARK_CAPTURE(deviceStep, box_3d, kBox)->Apply(boxSizes)->Iterations(5)->UseManualTime();
+BENCHMARK_CAPTURE(deviceStep, torus_2d, kTorus)->Apply(torusSizes)->Iterations(20)->UseManualTime();
 
 }  // namespace
 }  // namespace modeflow::bench
