@@ -7,8 +7,28 @@
 
 #include "engine/core/Error.h"
 
+#if defined(__SANITIZE_ADDRESS__)
+#define MODEFLOW_LEAK_SANITIZER 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define MODEFLOW_LEAK_SANITIZER 1
+#endif
+#endif
+#ifdef MODEFLOW_LEAK_SANITIZER
+#include <sanitizer/lsan_interface.h>
+#endif
+
 namespace modeflow {
 namespace {
+
+/// Open MPI keeps what it allocates while starting and stopping (about 120 KB in 3000 blocks,
+/// in MPI_Init, MPI_Finalize and its progress thread) and never frees it; in a sanitized build
+/// the leak checker is told to ignore those blocks, so that it reports our own leaks only.
+struct IgnoreMpiLeaks {
+#ifdef MODEFLOW_LEAK_SANITIZER
+    __lsan::ScopedDisabler disabler;
+#endif
+};
 
 /// Open MPI's mpirun, MPICH's hydra and PMIx launchers (Slurm's srun among them) tell their
 /// processes so through these.
@@ -33,7 +53,10 @@ PetscErrorCode keepMessage(MPI_Comm, int, const char*, const char*, PetscErrorCo
 
 void finalizePetsc() {
     PetscBool finalized = PETSC_FALSE;
-    if (PetscFinalized(&finalized) == 0 && !finalized) SlepcFinalize();
+    if (PetscFinalized(&finalized) == 0 && !finalized) {
+        [[maybe_unused]] const IgnoreMpiLeaks ignore;
+        SlepcFinalize();
+    }
 }
 
 }  // namespace
@@ -45,7 +68,11 @@ void ensurePetsc() {
     // Our own signal handlers and error messages stay in charge: PETSc's would print tracebacks
     // and catch Ctrl-C.
     PetscOptionsSetValue(nullptr, "-no_signal_handler", nullptr);
-    if (SlepcInitializeNoArguments() != 0)
+    const PetscErrorCode started = [] {
+        [[maybe_unused]] const IgnoreMpiLeaks ignore;
+        return SlepcInitializeNoArguments();
+    }();
+    if (started != 0)
         throw Error(
             "precompute: MPI and PETSc could not be initialized (SLEPc's eigensolver needs "
             "them; under mpirun, check the launcher's own messages)");
