@@ -22,4 +22,9 @@ namespace modeflow {
 std::unique_ptr<StructuralCoefficients> coefficientsFromCache(
     const BasisCache& cache, CoefficientStorage requested = CoefficientStorage::Auto);
 
+/// As coefficientsFromCache, moving the stored tensor out of `cache` (which then holds none)
+/// instead of copying it: a run holds its gigabytes of coefficients once.
+std::unique_ptr<StructuralCoefficients> takeCoefficientsFromCache(
+    BasisCache& cache, CoefficientStorage requested = CoefficientStorage::Auto);
+
 }  // namespace modeflow

@@ -49,17 +49,10 @@ std::vector<SeparableMode> takeSeparable(ByteReader& r) {
     return modes;
 }
 
-/// The next `count` doubles into `to`, which may be null when count is 0 (an empty vector's
-/// data()).
-void takeDoubles(ByteReader& r, double* to, std::size_t count) {
-    const std::string_view bytes = r.bytes(count * sizeof(double));
-    if (count != 0) std::memcpy(to, bytes.data(), bytes.size());
-}
-
 Eigen::VectorXd takeVector(ByteReader& r) {
     const auto n = r.count(sizeof(double));
     Eigen::VectorXd v(static_cast<Eigen::Index>(n));
-    takeDoubles(r, v.data(), n);
+    r.read(v.data(), n * sizeof(double));
     return v;
 }
 
@@ -73,7 +66,7 @@ Eigen::MatrixXd takeMatrix(ByteReader& r) {
         (cols != 0 && rows > r.remaining() / sizeof(double) / cols))
         r.fail("a matrix runs past the end");
     Eigen::MatrixXd m(static_cast<Eigen::Index>(rows), static_cast<Eigen::Index>(cols));
-    takeDoubles(r, m.data(), rows * cols);
+    r.read(m.data(), rows * cols * sizeof(double));
     return m;
 }
 
@@ -220,11 +213,9 @@ void takeSurface(ByteReader& r, BasisCache::Surface& s) {
     for (std::size_t i = 0; i < ends.size(); i += 2) s.edges.push_back({ends[i], ends[i + 1]});
 }
 
-BasisCache deserialize(std::string_view payload, const std::string& where) {
-    ByteReader r(payload, [&](std::string_view why) {
-        return where + " is corrupt (" + std::string(why) +
-               "); delete it or rerun precompute with --force";
-    });
+/// The records of a payload, in the order serialize writes them; whether they fit together is
+/// requireConsistentCache's to check, once the checksum has been.
+BasisCache deserialize(ByteReader& r) {
     BasisCache c;
     c.key = r.string();
     c.grid.dim = r.pod<std::int32_t>();
@@ -275,7 +266,6 @@ BasisCache deserialize(std::string_view payload, const std::string& where) {
     c.kind = BasisKind(kind);
     if (c.kind == BasisKind::Surface) takeSurface(r, c.surface);
     if (!r.atEnd()) r.fail("bytes follow its last record");
-    requireConsistentCache(c, where);
     return c;
 }
 
@@ -288,7 +278,7 @@ Header parseHeader(std::string_view bytes, const std::string& where) {
     if (!hasCacheMagic(bytes)) throw Error(where + " is not a modeflow basis cache (bad magic)");
     ByteReader r(bytes,
                  [&](std::string_view) { return where + " is truncated (incomplete header)"; });
-    r.bytes(sizeof kMagic);
+    r.skip(sizeof kMagic);
     const auto version = r.pod<std::uint32_t>();
     if (version != kCacheFormatVersion)
         throw Error(where + " has format version " + std::to_string(version) +
@@ -362,20 +352,24 @@ BasisCache readCache(const std::filesystem::path& path) {
     if (file.size != kHeaderSize + h.payloadSize + 8)
         throw Error(where + " is truncated or has trailing bytes (" + std::to_string(file.size) +
                     " bytes, expected " + std::to_string(kHeaderSize + h.payloadSize + 8) + ")");
-    std::string payload;
+    // Decoded as it is read (a cache of gigabytes is never held twice); the checksum is compared
+    // before anything decoded is trusted.
+    ByteReader r(file.in, h.payloadSize, [&](std::string_view why) {
+        return where + " is corrupt (" + std::string(why) +
+               "); delete it or rerun precompute with --force";
+    });
+    BasisCache c;
     try {
-        payload.resize(size_t(h.payloadSize));
+        c = deserialize(r);
     } catch (const std::bad_alloc&) {
         throw Error("not enough memory to read " + where + " (" + std::to_string(file.size) +
                     " bytes)");
     }
     std::uint64_t checksum = 0;
-    file.in.read(payload.data(), std::streamsize(payload.size()));
-    file.in.read(reinterpret_cast<char*>(&checksum), sizeof checksum);
-    if (!file.in)
+    if (!file.in.read(reinterpret_cast<char*>(&checksum), sizeof checksum))
         throw Error(where + " could not be read to its end (it changed while it was read?)");
-    if (checksum != fnv1a64(payload)) throw Error(where + " is corrupt (checksum mismatch)");
-    BasisCache c = deserialize(payload, where);
+    if (checksum != r.hash()) throw Error(where + " is corrupt (checksum mismatch)");
+    requireConsistentCache(c, where);
     if (fnv1a64(c.key) != h.keyHash)
         throw Error(where + " is corrupt (key does not match its hash)");
     return c;

@@ -1,5 +1,6 @@
 #include "engine/format/SmokeMaskFile.h"
 
+#include <cstring>
 #include <fstream>
 #include <iterator>
 #include <string>
@@ -54,16 +55,16 @@ std::vector<std::uint8_t> readSmokeMask(const std::filesystem::path& path, std::
     const std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
     if (bytes.size() != expected) throw Error(where + " cannot be read");
     ByteReader r(bytes, [&](std::string_view why) { return where + " is " + std::string(why); });
-    if (r.bytes(sizeof kMagic) != std::string_view(kMagic, sizeof kMagic))
-        r.fail("not a smoke mask (bad magic)");
+    char magic[sizeof kMagic];
+    r.read(magic, sizeof magic);
+    if (std::memcmp(magic, kMagic, sizeof kMagic) != 0) r.fail("not a smoke mask (bad magic)");
     if (r.pod<std::uint32_t>() != kVersion) r.fail("of another format version");
     if (r.pod<std::uint32_t>() != std::uint32_t(scale) || r.pod<std::uint64_t>() != keyHash ||
         r.pod<std::uint64_t>() != cells)
         r.fail("made for another basis or smoke scale");
     const std::vector<std::uint8_t> bits = r.vector<std::uint8_t>();
-    const std::size_t body = bytes.size() - r.remaining();
-    if (r.pod<std::uint64_t>() != fnv1a64(std::string_view(bytes.data(), body)))
-        r.fail("damaged (checksum mismatch)");
+    const std::uint64_t body = r.hash();
+    if (r.pod<std::uint64_t>() != body) r.fail("damaged (checksum mismatch)");
     if (bits.size() != (cells + 7) / 8) r.fail("damaged (wrong bit count)");
     std::vector<std::uint8_t> mask(cells);
     for (std::size_t c = 0; c < cells; ++c) mask[c] = (bits[c / 8] >> (c % 8)) & 1u;

@@ -48,12 +48,7 @@ void requireFinite(const SceneSpec& scene, const Eigen::VectorXd& state, const c
 void complete(RunInputs& run, RunParts parts, Progress& progress) {
     const SceneSpec& scene = run.scene;
     completeCoefficients(run.cache, scene.basis.coefficients, progress);
-    if (scene.basis.coefficients == CoefficientStorage::TensorFree) {
-        // A tensor the cache holds is not used: free it.
-        run.cache.coefficients = BasisCache::Coefficients{};
-        run.cache.coefficients.storage = BasisCache::Coefficients::Storage::None;
-    }
-    run.coefficients = coefficientsFromCache(run.cache, scene.basis.coefficients);
+    run.coefficients = takeCoefficientsFromCache(run.cache, scene.basis.coefficients);
     run.settings = SimulationSettings::fromScene(scene, run.cache);
     const int modes = run.coefficients->size();
     run.initialVelocity = initialVelocity(scene, run.cache, modes);

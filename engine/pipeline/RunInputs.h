@@ -23,7 +23,7 @@ namespace modeflow {
 struct RunInputs {
     SceneSpec scene;
     std::filesystem::path cachePath;  ///< the cache file the basis came from (empty: in memory)
-    BasisCache cache;
+    BasisCache cache;                 ///< without its tensor, which moved into `coefficients`
     std::unique_ptr<StructuralCoefficients> coefficients;
     SimulationSettings settings;
     std::vector<std::uint8_t> smokeMask;  ///< one byte per smoke cell; empty without smoke

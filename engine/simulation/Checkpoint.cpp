@@ -92,7 +92,7 @@ Checkpoint readCheckpoint(const std::filesystem::path& path) {
     if (checksum != fnv1a64(body)) fail(path, "checksum mismatch (damaged)");
 
     ByteReader reader(body, [&](std::string_view why) { return refusal(path, why); });
-    reader.bytes(sizeof kMagic + sizeof kVersion);  // checked by readCheckpointBytes
+    reader.skip(sizeof kMagic + sizeof kVersion);  // checked by readCheckpointBytes
     Checkpoint checkpoint;
     const auto frame = reader.pod<std::uint32_t>();
     if (frame > std::uint32_t(std::numeric_limits<int>::max()))

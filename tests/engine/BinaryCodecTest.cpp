@@ -1,8 +1,9 @@
-/// BinaryCodec: what is written reads back the same, and damaged bytes are refused with the
-/// caller's message before anything is allocated for them.
+/// BinaryCodec: what is written reads back the same, from memory or streamed from a file, and
+/// damaged bytes are refused with the caller's message before anything is allocated for them.
 
 #include <gtest/gtest.h>
 
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -12,9 +13,35 @@
 namespace modeflow {
 namespace {
 
+std::string describe(std::string_view why) {
+    return "test record is " + std::string(why);
+}
+
 ByteReader readerOf(const std::string& bytes) {
-    return ByteReader(bytes,
-                      [](std::string_view why) { return "test record is " + std::string(why); });
+    return ByteReader(bytes, describe);
+}
+
+/// A reader of `bytes` that reads them from a stream, as the cache reader does.
+struct StreamedReader {
+    explicit StreamedReader(const std::string& bytes, std::uint64_t declared)
+        : in(bytes), reader(in, declared, describe) {}
+    explicit StreamedReader(const std::string& bytes) : StreamedReader(bytes, bytes.size()) {}
+    std::istringstream in;
+    ByteReader reader;
+};
+
+/// Reads back what ValuesStringsAndArraysRoundTrip writes.
+void expectRoundTrip(ByteReader& r, const double (&block)[2]) {
+    EXPECT_EQ(r.pod<std::int32_t>(), -7);
+    EXPECT_EQ(r.pod<double>(), 2.5);
+    EXPECT_EQ(r.string(), "key text");
+    EXPECT_EQ(r.vector<std::int64_t>(), (std::vector<std::int64_t>{1, -2, 3}));
+    EXPECT_TRUE(r.vector<double>().empty());
+    double values[2];
+    r.read(values, sizeof values);
+    EXPECT_EQ(values[0], block[0]);
+    EXPECT_EQ(values[1], block[1]);
+    EXPECT_TRUE(r.atEnd());
 }
 
 TEST(BinaryCodec, ValuesStringsAndArraysRoundTrip) {
@@ -28,14 +55,37 @@ TEST(BinaryCodec, ValuesStringsAndArraysRoundTrip) {
     w.values(block, 2);
     const std::string bytes = w.bytes();
     ByteReader r = readerOf(bytes);
-    EXPECT_EQ(r.pod<std::int32_t>(), -7);
-    EXPECT_EQ(r.pod<double>(), 2.5);
-    EXPECT_EQ(r.string(), "key text");
-    EXPECT_EQ(r.vector<std::int64_t>(), (std::vector<std::int64_t>{1, -2, 3}));
-    EXPECT_TRUE(r.vector<double>().empty());
-    EXPECT_EQ(r.bytes(2 * sizeof(double)),
-              std::string_view(reinterpret_cast<const char*>(block), sizeof block));
-    EXPECT_TRUE(r.atEnd());
+    expectRoundTrip(r, block);
+    StreamedReader streamed(bytes);
+    expectRoundTrip(streamed.reader, block);
+}
+
+TEST(BinaryCodec, TheHashCoversTheBytesReadSoFar) {
+    ByteWriter w;
+    w.string("checked part");
+    w.pod(std::uint64_t(99));
+    const std::string bytes = w.bytes();
+    const std::uint64_t expected = fnv1a64(std::string_view(bytes).substr(0, bytes.size() - 8));
+    ByteReader r = readerOf(bytes);
+    StreamedReader streamed(bytes);
+    for (ByteReader* reader : {&r, &streamed.reader}) {
+        reader->string();
+        EXPECT_EQ(reader->hash(), expected);
+    }
+}
+
+TEST(BinaryCodec, AStreamEndingBeforeItsDeclaredSizeIsRefused) {
+    ByteWriter w;
+    w.vector(std::vector<double>{1.0, 2.0, 3.0});
+    StreamedReader streamed(w.bytes(), w.bytes().size() + 64);
+    try {
+        streamed.reader.vector<double>();
+        streamed.reader.pod<double>();
+        FAIL() << "a stream shorter than declared was read";
+    } catch (const Error& e) {
+        EXPECT_EQ(std::string(e.what()).rfind("test record is unreadable to its end", 0), 0u)
+            << e.what();
+    }
 }
 
 TEST(BinaryCodec, TruncatedBytesAreRefusedWithTheCallersMessage) {
@@ -59,6 +109,8 @@ TEST(BinaryCodec, AHugeCountIsRefusedBeforeAnyAllocation) {
     EXPECT_THROW(r.vector<double>(), Error);
     ByteReader again = readerOf(bytes);
     EXPECT_THROW(again.string(), Error);
+    StreamedReader streamed(bytes);
+    EXPECT_THROW(streamed.reader.vector<double>(), Error);
 }
 
 TEST(BinaryCodec, Fnv1aMatchesItsPublishedValues) {
