@@ -210,6 +210,14 @@ void findMissedCopies(const ShiftedFactor& factor, EigenPairs& pairs, const Eige
     }
 }
 
+/// Whether two of the ascending `values` are equal to round-off: the operator has symmetries, and
+/// a Lanczos run may have missed copies of their eigenvalues.
+bool hasEqualEigenvalues(const Eigen::VectorXd& values) {
+    for (Eigen::Index i = 1; i < values.size(); ++i)
+        if (values[i] - values[i - 1] <= 1e-9 * std::abs(values[i])) return true;
+    return false;
+}
+
 }  // namespace
 
 EigenPairs smallestEigenpairs(const Eigen::SparseMatrix<double>& stiffness,
@@ -222,7 +230,8 @@ EigenPairs smallestEigenpairs(const Eigen::SparseMatrix<double>& stiffness,
     const ShiftedFactor factor(stiffness, massDiagonal, request.shift, request, stats);
     long restarts = 0;
     EigenPairs out = lanczos(factor, Eigen::MatrixXd(n, 0), request.count, request, restarts);
-    if (request.findMissedCopies) findMissedCopies(factor, out, request, restarts);
+    if (request.findMissedCopies || hasEqualEigenvalues(out.values))
+        findMissedCopies(factor, out, request, restarts);
     out.vectors = factor.scale().cwiseInverse().asDiagonal() * out.vectors;
     out.stats = stats;
     out.stats.restarts = restarts;

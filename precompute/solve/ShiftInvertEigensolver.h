@@ -52,7 +52,9 @@ struct EigenRequest {
     /// vector per eigenspace in exact arithmetic and the other copies only through round-off,
     /// so it can miss some (3D torus 10×8×12, 70 modes: 8 of the 16 copies of one κ²). With this
     /// set, further Lanczos runs on the operator deflated by the pairs found so far look for
-    /// eigenvalues below the highest one kept, until a run finds none.
+    /// eigenvalues below the highest one kept, until a run finds none. They also run whenever
+    /// the first run finds two eigenvalues equal to round-off: a domain with symmetries (a ball
+    /// centred in the grid: 16³, 20 scalar modes missed one of two copies of a κ²).
     bool findMissedCopies = false;
     /// Where the `count`-th eigenvalue is expected (Weyl's law) and the d of N(λ) ∝ λ^{d/2}: the
     /// sliced solver's first interval ends there, and intervals grow by that law
