@@ -36,32 +36,16 @@ constexpr Rgba kSurface{196, 202, 214, 255};
 }  // namespace
 
 Image surfaceImage(const TriangleMesh& mesh, std::span<const double> dye, double dyeScale,
-                   int width, int height) {
+                   int width, int height, const SurfaceCamera& camera) {
     if (dye.size() != mesh.vertices.size())
         throw Error("surface picture: " + std::to_string(dye.size()) + " dye values for " +
                     std::to_string(mesh.vertices.size()) + " vertices");
     if (width < 8 || height < 8) throw Error("surface picture: at least 8 × 8 pixels");
-    // The camera looks along −view from the upper right front; right and up span the picture.
-    const V3 view = unit({1.0, -1.4, 0.9});
-    const V3 right = unit(cross({0.0, 0.0, 1.0}, view));
-    const V3 up = cross(view, right);
-    const V3 light = unit({-0.4, -0.8, 1.0});
-    V3 lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
-    for (const V3& p : mesh.vertices)
-        for (int a = 0; a < 3; ++a) lo[a] = std::min(lo[a], p[a]), hi[a] = std::max(hi[a], p[a]);
-    const V3 centre{0.5 * (lo[0] + hi[0]), 0.5 * (lo[1] + hi[1]), 0.5 * (lo[2] + hi[2])};
-    double radius = 0.0;
-    for (const V3& p : mesh.vertices)
-        radius = std::max(radius, std::sqrt(dot(sub(p, centre), sub(p, centre))));
-    // The sphere around the bounding box's centre through the farthest vertex fills 90% of the
-    // shorter side.
-    const double scale = 0.45 * std::min(width, height) / radius;
+    const SurfaceProjection projection(mesh, camera, width, height);
     std::vector<std::array<double, 3>> screen(mesh.vertices.size());  // x, y (pixels), depth
-    for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
-        const V3 d = sub(mesh.vertices[v], centre);
-        screen[v] = {0.5 * width + scale * dot(d, right), 0.5 * height - scale * dot(d, up),
-                     dot(d, view)};
-    }
+    for (std::size_t v = 0; v < mesh.vertices.size(); ++v)
+        screen[v] = projection.toPicture(mesh.vertices[v]);
+    const V3 light = projection.light();
     Image image(width, height, palette::kBackground);
     std::vector<double> depth(std::size_t(width) * std::size_t(height),
                               -std::numeric_limits<double>::infinity());

@@ -7,7 +7,7 @@
 ///     0.5     down    0.30 0.50          left button pressed at window fractions x, y (y down)
 ///     0.6     move    0.40 0.50          pointer moved
 ///     0.8     up      0.50 0.50          left button released
-///     0.2     rdown / rup  x y           the right button (orbit the camera in 3D)
+///     0.2     rdown / rup  x y           the right button (orbit the camera: 3D, surfaces)
 ///     1.0     key     space              a key by name (StirKeys.h: space, ], [, escape, a letter)
 ///     1.2     scroll  1                  the wheel, notches
 ///     1.5     resize  800 600            the window's new size in screen units

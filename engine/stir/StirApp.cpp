@@ -9,9 +9,8 @@
 #include "engine/display/WindowScreen.h"
 #include "engine/stir/RealTimeClock.h"
 #include "engine/stir/StirKeys.h"
-#include "engine/stir/StirRenderer.h"
+#include "engine/stir/StirScene.h"
 #include "engine/stir/StirStatistics.h"
-#include "engine/stir/StirView.h"
 
 namespace modeflow::stir {
 namespace {
@@ -37,14 +36,12 @@ class StirLoop {
 public:
     StirLoop(const StirOptions& options, const RunInputs& run, display::Screen& screen)
         : mOptions(options),
-          mScene(run.scene),
+          mSceneSpec(run.scene),
           mScreen(screen),
           mContext(screen.context()),
           mBackend(options.backend.kind, mContext),
-          mSession(mBackend, run, options.stir),
-          mView(mSession.simulation().smokeGrid()),
-          mRenderer(mContext, run),
-          mClock(mSession.settings().dt, kStepBudgetSeconds),
+          mScene(makeStirScene(mBackend, run, options.stir, mContext)),
+          mClock(mScene->settings().dt, kStepBudgetSeconds),
           mStatistics(run.scene.name, mBackend.capabilities().stageTimes),
           mScript(options.script) {}
     /// The screen may still be copying the last picture out of the renderer's buffer (when the
@@ -58,18 +55,15 @@ public:
 private:
     void handle(const InputEvent& event);
     void act(StirAction action);
-    std::optional<Vec3> scenePoint(const InputEvent& event) const;
     /// PAUSED, SLOW MOTION ×…, or empty.
     std::string state(bool frameClock) const;
 
     const StirOptions& mOptions;
-    const SceneSpec& mScene;
+    const SceneSpec& mSceneSpec;
     display::Screen& mScreen;
     const vulkan::VulkanContext& mContext;
     Backend mBackend;
-    StirSession mSession;
-    StirView mView;
-    StirRenderer mRenderer;
+    std::unique_ptr<StirScene> mScene;
     RealTimeClock mClock;
     StirStatistics mStatistics;
     std::vector<TimedEvent> mScript;
@@ -82,11 +76,6 @@ private:
     int mScreenshots = 0;
 };
 
-std::optional<Vec3> StirLoop::scenePoint(const InputEvent& event) const {
-    const VkExtent2D size = mScreen.extent();
-    return mView.scenePoint(event.x, event.y, int(size.width), int(size.height));
-}
-
 void StirLoop::handle(const InputEvent& event) {
     switch (event.kind) {
         case InputKind::Key:
@@ -94,7 +83,7 @@ void StirLoop::handle(const InputEvent& event) {
             break;
         case InputKind::ButtonDown:
             if (event.button == MouseButton::Left) {
-                if (const auto p = scenePoint(event)) mSession.press(*p);
+                mScene->press(event.x, event.y, mScreen.extent());
             } else {
                 mOrbiting = true;
             }
@@ -103,21 +92,20 @@ void StirLoop::handle(const InputEvent& event) {
             break;
         case InputKind::ButtonUp:
             if (event.button == MouseButton::Left) {
-                if (const auto p = scenePoint(event)) mSession.moveTo(*p);
-                mSession.release();
+                mScene->moveTo(event.x, event.y, mScreen.extent());
+                mScene->release();
             } else {
                 mOrbiting = false;
             }
             break;
         case InputKind::Move:
-            if (const auto p = scenePoint(event)) mSession.moveTo(*p);
-            if (mOrbiting && mView.grid().dim == 3)
-                mView.orbit(event.x - mOrbitX, event.y - mOrbitY);
+            mScene->moveTo(event.x, event.y, mScreen.extent());
+            if (mOrbiting) mScene->orbit(event.x - mOrbitX, event.y - mOrbitY);
             mOrbitX = event.x;
             mOrbitY = event.y;
             break;
         case InputKind::Scroll:
-            if (mView.grid().dim == 3) mView.zoom(event.y);
+            mScene->zoom(event.y);
             break;
         case InputKind::Resize:
             mScreen.resize(event.width, event.height);
@@ -135,22 +123,22 @@ void StirLoop::act(StirAction action) {
             mStepOnce = mPaused;
             break;
         case StirAction::Reset:
-            mSession.reset();
+            mScene->reset();
             break;
         case StirAction::Integrator:
-            mSession.toggleIntegrator();
+            mScene->toggleIntegrator();
             break;
         case StirAction::ViscosityUp:
-            mSession.scaleViscosity(true);
+            mScene->scaleViscosity(true);
             break;
         case StirAction::ViscosityDown:
-            mSession.scaleViscosity(false);
+            mScene->scaleViscosity(false);
             break;
         case StirAction::NextBasis:
-            mSession.nextBasis();
+            mScene->nextBasis();
             break;
         case StirAction::Paddle:
-            mSession.togglePaddle();
+            mScene->togglePaddle();
             break;
         case StirAction::Arrows:
             mArrows = !mArrows;
@@ -179,7 +167,7 @@ StirReport StirLoop::run(std::ostream& log) {
     log << mContext.describe();
     StirReport report;
     const bool frameClock = mOptions.frames.has_value();
-    const SimulationSettings& settings = mSession.settings();
+    const SimulationSettings& settings = mScene->settings();
     double screenClock = 0.0;
     const Clock::time_point start = Clock::now();
     Clock::time_point last = start;
@@ -202,10 +190,11 @@ StirReport StirLoop::run(std::ostream& log) {
             steps = frameClock ? settings.stepsPerFrame
                                : mClock.stepsFor(wallElapsed, mStatistics.stepSeconds());
         const Clock::time_point stepStart = Clock::now();
-        mSession.setTiming(mStatistics.timesNextSteps());
-        const FrameStats stats = mSession.advance(steps, elapsed);
+        mScene->setTiming(mStatistics.timesNextSteps());
+        const FrameStats stats = mScene->advance(steps, elapsed);
         mStatistics.addSteps(steps, seconds(Clock::now() - stepStart), stats);
-        mStatistics.countFrame(mSession, state(frameClock));
+        mStatistics.countFrame(mScene->energy(), mScene->time(), mScene->status(),
+                               state(frameClock));
 
         const Clock::time_point drawStart = Clock::now();
         const VkExtent2D size = mScreen.nextPictureSize();
@@ -217,16 +206,16 @@ StirReport StirLoop::run(std::ostream& log) {
         // The arrows scale with the energy now, not at the last refresh of the statistics (a
         // wall-clock time), so a scripted run draws the same arrows on any machine.
         const PictureExtras extras{mOptions.statistics ? mStatistics.text() : std::string(), mHelp,
-                                   mArrows, mArrows ? mSession.energy() : 0.0};
-        mRenderer.draw(mSession, mView, extras, size, mScreen.blueFirst());
+                                   mArrows, mArrows ? mScene->energy() : 0.0};
+        mScene->draw(extras, size, mScreen.blueFirst());
         if (std::exchange(mScreenshot, false)) {
             char name[64];
             std::snprintf(name, sizeof name, "_stir_%04d.png", ++mScreenshots);
-            const std::filesystem::path file = mOptions.screenshotFolder / (mScene.name + name);
-            mRenderer.saveScreenshot(file);
+            const std::filesystem::path file = mOptions.screenshotFolder / (mSceneSpec.name + name);
+            mScene->picture().saveScreenshot(file);
             log << "screenshot: " << file.string() << "\n";
         }
-        mScreen.present(mRenderer.pixels());
+        mScreen.present(mScene->picture().pixels());
         mStatistics.addPicture(seconds(Clock::now() - drawStart));
         ++report.frames;
     }
@@ -234,14 +223,14 @@ StirReport StirLoop::run(std::ostream& log) {
     report.steps = mStatistics.steps();
     report.stepMs = mStatistics.stepMs();
     report.drawMs = mStatistics.pictureMs();
-    if (!mOptions.screenshot.empty()) mRenderer.saveScreenshot(mOptions.screenshot);
+    if (!mOptions.screenshot.empty()) mScene->picture().saveScreenshot(mOptions.screenshot);
     mContext.waitIdle();
-    report.width = int(mRenderer.extent().width);
-    report.height = int(mRenderer.extent().height);
-    report.smoke = mSession.simulation().smoke();
-    report.simulatedTime = mSession.simulation().time();
-    report.modes = mSession.modeCount();
-    report.status = mSession.status();
+    report.width = int(mScene->picture().extent().width);
+    report.height = int(mScene->picture().extent().height);
+    report.smoke = mScene->smoke();
+    report.simulatedTime = mScene->time();
+    report.modes = mScene->modeCount();
+    report.status = mScene->status();
     report.validationMessages = mContext.validationMessageCount();
     char summary[200];
     std::snprintf(

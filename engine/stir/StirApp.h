@@ -2,11 +2,11 @@
 /// @file StirApp.h
 /// `modeflow stir`: the interactive loop. Each frame reads the input (the screen's, and a
 /// script's events when their time comes), takes the simulation steps the clock calls for
-/// (RealTimeClock: real time, or slow motion that says so), draws the smoke on the device
-/// (StirRenderer, with the StirStatistics and the key help over it) and presents it on a
-/// display::Screen: a window, or in tests a NullScreen. With a frame count the clock is the
-/// scene's frame clock instead (steps_per_frame steps a frame), so a scripted run is the same on
-/// any machine, and the loop ends after the last frame.
+/// (RealTimeClock: real time, or slow motion that says so), draws the scene (StirScene: a grid's
+/// smoke on the device, or a surface's dye, with the StirStatistics and the key help over it)
+/// and presents it on a display::Screen: a window, or in tests a NullScreen. With a frame count the
+/// clock is the scene's frame clock instead (steps_per_frame steps a frame), so a scripted run is
+/// the same on any machine, and the loop ends after the last frame.
 
 #include <cstdint>
 #include <filesystem>
@@ -51,7 +51,7 @@ struct StirReport {
     double stepMs = 0.0;         ///< mean wall time per simulation step
     double drawMs = 0.0;         ///< mean wall time per frame to draw and present
     int width = 0, height = 0;   ///< the last picture's size, pixels
-    SmokeFields smoke;           ///< at the end
+    SmokeFields smoke;           ///< at the end (a surface's: the dye per vertex, StirScene.h)
     double simulatedTime = 0.0;  ///< at the end
     int modes = 0;               ///< of the basis shown at the end
     std::string status;          ///< StirSession::status() at the end

@@ -52,7 +52,8 @@ HelpColumns helpColumns() {
         help.actions += std::string(b.help) + "\n";
     }
     help.keys += "\nmouse\nleft drag\nright drag\nwheel";
-    help.actions += "\n\nstir (or move the paddle)\norbit the camera (3D)\nzoom (3D)";
+    help.actions +=
+        "\n\nstir (or move the paddle)\norbit the camera (3D, surfaces)\nzoom (3D, surfaces)";
     return help;
 }
 

@@ -2,12 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <vector>
 
-#include "engine/core/Error.h"
 #include "engine/pipeline/RunInputs.h"
-#include "engine/preview/PngWriter.h"
-#include "engine/stir/StirKeys.h"
 #include "engine/stir/StirSession.h"
 #include "engine/stir/StirView.h"
 
@@ -16,20 +12,6 @@ namespace {
 
 /// 3D: optical depth across the box at density 1.
 constexpr float kOpticalDepth = 6.0f;
-
-std::vector<display::TextBlock> overlayText(const PictureExtras& extras, int scale) {
-    std::vector<display::TextBlock> blocks;
-    if (!extras.statistics.empty()) blocks.push_back({8, 8, extras.statistics, false});
-    if (extras.help) {
-        // Bottom right, clear of the statistics: actions flush right, keys in a column before.
-        const HelpColumns help = helpColumns();
-        const int margin = 8 * scale;
-        blocks.push_back({-margin, -margin, help.actions, true});
-        blocks.push_back({-(margin + display::textWidth(help.actions, scale) + 6 * scale), -margin,
-                          help.keys, true});
-    }
-    return blocks;
-}
 
 /// The paddle in the picture's source units, when paddle mode is on.
 display::PaddleOverlay paddleOverlay(const StirSession& session, const StirView& view) {
@@ -64,11 +46,7 @@ display::PaddleOverlay paddleOverlay(const StirSession& session, const StirView&
 }  // namespace
 
 StirRenderer::StirRenderer(const vulkan::VulkanContext& context, const RunInputs& run)
-    : mContext(context),
-      mFields(context, run),
-      mKernels(context),
-      mOverlay(context),
-      mSequence(context) {
+    : mFields(context, run), mPicture(context) {
     const MacGrid grid = MacGrid::fromSpec(run.cache.grid).refined(run.settings.smokeScale);
     if (grid.dim == 3)
         mVolume = std::make_unique<preview::VolumeRenderer>(
@@ -77,23 +55,15 @@ StirRenderer::StirRenderer(const vulkan::VulkanContext& context, const RunInputs
 
 void StirRenderer::draw(const StirSession& session, const StirView& view,
                         const PictureExtras& extras, VkExtent2D size, bool blueFirst) {
-    if (!mPixels || size.width != mExtent.width || size.height != mExtent.height) {
-        mPixels = std::make_unique<vulkan::DeviceBuffer>(
-            mContext, VkDeviceSize(size.width) * size.height * 4, "window picture");
-        mExtent = size;
-    }
-    mBlueFirst = blueFirst;
-    const int width = int(size.width), height = int(size.height);
-    const int scale = height >= 600 ? 2 : 1;
-    mOverlay.update(width, height, overlayText(extras, scale), scale);
-    const display::DisplayTarget target{width, height, view.viewport(width, height), blueFirst};
+    const display::DisplayTarget target =
+        mPicture.begin(extras, size, view.viewport(int(size.width), int(size.height)), blueFirst);
     const display::FieldBuffers fields =
         mFields.of(session.simulation(), !mVolume && extras.arrows);
     if (mVolume) {
-        mVolume->record(mSequence, fields.smoke, kOpticalDepth, 2, view.camera());
-        mKernels.recordPicture(mSequence, mVolume->pictureBuffer(), mVolume->width(),
-                               mVolume->height(), paddleOverlay(session, view), mOverlay.buffer(),
-                               target, *mPixels);
+        mVolume->record(mPicture.sequence(), fields.smoke, kOpticalDepth, 2, view.camera());
+        mPicture.kernels().recordPicture(
+            mPicture.sequence(), mVolume->pictureBuffer(), mVolume->width(), mVolume->height(),
+            paddleOverlay(session, view), mPicture.overlay(), target, mPicture.pixels());
     } else {
         display::Smoke2DLook look;
         look.hotScale = session.settings().simulatesTemperature() ? 1.0f : 0.0f;
@@ -107,21 +77,10 @@ void StirRenderer::draw(const StirSession& session, const StirView& view,
             look.arrowSpacing = float(std::max(16, target.viewport.width / 24));
             look.arrowScale = float(0.5 * look.arrowSpacing / std::max(rms, 1e-6));
         }
-        mKernels.recordSmoke2D(mSequence, fields, look, mOverlay.buffer(), target, *mPixels);
+        mPicture.kernels().recordSmoke2D(mPicture.sequence(), fields, look, mPicture.overlay(),
+                                         target, mPicture.pixels());
     }
-    mSequence.submitAndWait();
-}
-
-preview::Image StirRenderer::picture() const {
-    const int width = int(mExtent.width), height = int(mExtent.height);
-    std::vector<std::uint32_t> words(std::size_t(width) * std::size_t(height));
-    mPixels->download<std::uint32_t>(words);
-    return preview::unpackImage(words, width, height, mBlueFirst);
-}
-
-void StirRenderer::saveScreenshot(const std::filesystem::path& file) const {
-    if (!mPixels) throw Error("no frame was drawn, so there is no screenshot for " + file.string());
-    preview::writePng(file, picture());
+    mPicture.finish();
 }
 
 }  // namespace modeflow::stir

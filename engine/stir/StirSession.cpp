@@ -1,22 +1,25 @@
 #include "engine/stir/StirSession.h"
 
 #include <algorithm>
-#include <cmath>
 #include <cstdio>
 
 #include "engine/core/Error.h"
 #include "engine/core/SceneKeywords.h"
 #include "engine/dynamics/Diagnostics.h"
+#include "engine/stir/StrokeSplats.h"
 
 namespace modeflow::stir {
-namespace {
 
-double distance(const Vec3& a, const Vec3& b) {
-    return std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) +
-                     (a[2] - b[2]) * (a[2] - b[2]));
+Integrator otherIntegrator(Integrator integrator) {
+    return integrator == Integrator::Midpoint ? Integrator::Explicit : Integrator::Midpoint;
 }
 
-}  // namespace
+double scaledViscosity(double viscosity, bool up, double highestKappaSquared, double dt) {
+    // The first step: ν that damps the highest mode by 1/e in about 100 steps.
+    const double first = highestKappaSquared > 0.0 ? 0.01 / (dt * highestKappaSquared) : 1e-4;
+    return up ? (viscosity > 0.0 ? 2.0 * viscosity : first)
+              : (viscosity > first ? 0.5 * viscosity : 0.0);
+}
 
 StirSession::StirSession(const Backend& backend, const RunInputs& run, StirSettings settings)
     : mBackend(backend),
@@ -85,19 +88,15 @@ void StirSession::reset() {
 }
 
 void StirSession::toggleIntegrator() {
-    const Integrator next =
-        settings().integrator == Integrator::Midpoint ? Integrator::Explicit : Integrator::Midpoint;
+    const Integrator next = otherIntegrator(settings().integrator);
     for (auto& simulation : mSimulations)
         if (simulation) simulation->setIntegrator(next);
     mSceneSettings.integrator = next;
 }
 
 void StirSession::scaleViscosity(bool up) {
-    // The first step: ν that damps the highest mode by 1/e in about 100 steps.
-    const double highest = mRun.cache.velocity.eigenvalues.maxCoeff();
-    const double first = highest > 0.0 ? 0.01 / (settings().dt * highest) : 1e-4;
-    double nu = settings().fluid.viscosity;
-    nu = up ? (nu > 0.0 ? 2.0 * nu : first) : (nu > first ? 0.5 * nu : 0.0);
+    const double nu = scaledViscosity(settings().fluid.viscosity, up,
+                                      mRun.cache.velocity.eigenvalues.maxCoeff(), settings().dt);
     for (auto& simulation : mSimulations)
         if (simulation) simulation->setViscosity(nu);
     mSceneSettings.fluid.viscosity = nu;
@@ -135,24 +134,9 @@ std::optional<PaddlePose> StirSession::paddle() const {
 }
 
 std::vector<ForceSplat> StirSession::strokeSplats(double elapsed) const {
-    const double length = distance(mStrokeFrom, mPointer);
-    if (!mDragging || mPaddleMode || length == 0.0 || !(elapsed > 0.0)) return {};
-    const double radius = mStir.splatRadius * mBoxSize;
-    // Splats two radii apart along the path, at most 8, each pushing along the motion with
-    // the pointer's speed.
-    const int count = std::clamp(int(std::ceil(length / (2.0 * radius))), 1, 8);
-    std::vector<ForceSplat> splats;
-    for (int s = 1; s <= count; ++s) {
-        const double t = double(s) / count;
-        ForceSplat splat;
-        splat.radius = radius;
-        for (int a = 0; a < 3; ++a) {
-            splat.centre[a] = mStrokeFrom[a] + t * (mPointer[a] - mStrokeFrom[a]);
-            splat.force[a] = mStir.force * (mPointer[a] - mStrokeFrom[a]) / elapsed;
-        }
-        splats.push_back(splat);
-    }
-    return splats;
+    if (!mDragging || mPaddleMode) return {};
+    return stir::strokeSplats(mStrokeFrom, mPointer, elapsed, mStir.splatRadius * mBoxSize,
+                              mStir.force);
 }
 
 MovingObstacle StirSession::paddleObstacle(int steps) const {

@@ -36,6 +36,12 @@ struct PaddlePose {
     double radius = 0.0;
 };
 
+/// The integrator the integrator key switches to: implicit midpoint ↔ explicit Euler.
+Integrator otherIntegrator(Integrator integrator);
+/// The viscosity keys: ν × 2 (`up`), or ÷ 2; the first step up from 0 damps the highest mode
+/// (κ² = highestKappaSquared) by 1/e in about 100 steps of dt, and a step down from there gives 0.
+double scaledViscosity(double viscosity, bool up, double highestKappaSquared, double dt);
+
 class StirSession {
 public:
     /// Starts the prepared run at its initial state with no smoke, on `backend`; both must

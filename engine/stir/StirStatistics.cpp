@@ -2,8 +2,6 @@
 
 #include <cstdio>
 
-#include "engine/stir/StirSession.h"
-
 namespace modeflow::stir {
 
 void StirStatistics::StageTimes::add(const FrameStats& s) {
@@ -38,16 +36,17 @@ void StirStatistics::addSteps(int steps, double wallSeconds, const FrameStats& s
     mStepSeconds = mStepSeconds > 0.0 ? 0.8 * mStepSeconds + 0.2 * perStep : perStep;
 }
 
-void StirStatistics::countFrame(const StirSession& session, const std::string& state) {
+void StirStatistics::countFrame(double energy, double time, const std::string& status,
+                                const std::string& state) {
     ++mSampleFrames;
     const double sampled = std::chrono::duration<double>(Clock::now() - mSampleStart).count();
     if (sampled < 0.25 && !mText.empty()) return;
     char line[256];
     std::snprintf(line, sizeof line, "%s   %.1f fps   step %.1f ms   energy %.4g   t %.2f s   %s",
                   mSceneName.c_str(), sampled > 0.0 ? mSampleFrames / sampled : 0.0,
-                  1e3 * mStepSeconds, session.energy(), session.simulation().time(), state.c_str());
-    mText = std::string(line) + "\n" + (mStageTimes ? mStages.line() + "\n" : "") +
-            session.status() + "\nh: help";
+                  1e3 * mStepSeconds, energy, time, state.c_str());
+    mText = std::string(line) + "\n" + (mStageTimes ? mStages.line() + "\n" : "") + status +
+            "\nh: help";
     mStages = {};
     mSampleFrames = 0;
     mSampleStart = Clock::now();

@@ -13,8 +13,6 @@
 
 namespace modeflow::stir {
 
-class StirSession;
-
 class StirStatistics {
 public:
     /// `stageTimes`: whether the backend measures them (BackendCapabilities::stageTimes).
@@ -29,9 +27,11 @@ public:
     /// Wall seconds per step, smoothed over the last few frames (0 before the first step).
     double stepSeconds() const { return mStepSeconds; }
 
-    /// Counts a frame; remakes the text before the first picture and every 0.25 s after it.
-    /// `state`: PAUSED, SLOW MOTION ×…, or empty.
-    void countFrame(const StirSession& session, const std::string& state);
+    /// Counts a frame; remakes the text before the first picture and every 0.25 s after it, of
+    /// the scene's ½|v|², simulated time and status line (StirScene.h) and `state`: PAUSED,
+    /// SLOW MOTION ×…, or empty.
+    void countFrame(double energy, double time, const std::string& status,
+                    const std::string& state);
     /// The lines over the picture: scene, frame rate, step time, energy, time and state; the
     /// stage times (where measured); the session's status; the help key.
     const std::string& text() const { return mText; }

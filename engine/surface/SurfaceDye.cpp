@@ -2,6 +2,7 @@
 
 #include "engine/surface/SurfaceDye.h"
 
+#include <algorithm>
 #include <string>
 
 #include "engine/core/Error.h"
@@ -63,6 +64,12 @@ std::vector<double> SurfaceDye::vertexValues() const {
         Eigen::VectorXd::Constant(mCache.scalar.modes.rows(), mState[0]) +
         mCache.scalar.modes * mState.tail(mScalars);
     return {values.data(), values.data() + values.size()};
+}
+
+double dyeColourScale(const SimulationSettings& settings) {
+    double rate = 0.0;
+    for (const SmokeEmitter& e : settings.emitters) rate = std::max(rate, e.densityRate);
+    return rate > 0.0 ? rate * settings.dt * settings.stepsPerFrame * 4.0 : 1.0;
 }
 
 }  // namespace modeflow

@@ -13,6 +13,7 @@
 #include <Eigen/LU>
 
 #include "engine/format/BasisCache.h"
+#include "engine/simulation/SimulationSettings.h"
 #include "engine/simulation/SmokeEmitter.h"
 
 namespace modeflow {
@@ -44,5 +45,9 @@ private:
     std::vector<Source> mSources;
     Eigen::VectorXd mState;
 };
+
+/// The dye shown in full colour: four frames' worth of the strongest source's rate (1 without
+/// sources), one scale for a whole run so that its pictures compare.
+double dyeColourScale(const SimulationSettings& settings);
 
 }  // namespace modeflow

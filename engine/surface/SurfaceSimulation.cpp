@@ -15,34 +15,36 @@ SurfaceSimulation::SurfaceSimulation(const BasisCache& cache,
                                      const Eigen::VectorXd& velocity)
     : mCache(cache),
       mSettings(settings),
-      mSystem(coefficients, settings.fluid),
-      mIntegrator(mSystem, IntegratorSettings{settings.integrator}),
-      mDye(cache, settings.emitters),
-      mVelocity(velocity) {}
+      mStepper(coefficients, settings),
+      mDye(cache, settings.emitters) {
+    mStepper.setVelocity(velocity);
+}
 
-void SurfaceSimulation::advanceFrame() {
-    for (int s = 0; s < mSettings.stepsPerFrame; ++s) {
-        const Eigen::VectorXd before = mVelocity;
-        mIntegrator.step(mVelocity, mSettings.dt);
+void SurfaceSimulation::advanceSteps(int steps) {
+    for (int s = 0; s < steps; ++s) {
+        const Eigen::VectorXd before = mStepper.velocity();
+        mStepper.step(mSettings.dt);
         ++mStep;
-        requireFiniteModalState(mVelocity, mStep, mTime + mSettings.dt);
-        mDye.step(before, mVelocity, mTime, mSettings.dt);
+        const Eigen::VectorXd after = mStepper.velocity();
+        requireFiniteModalState(after, mStep, mTime + mSettings.dt);
+        mDye.step(before, after, mTime, mSettings.dt);
         mTime += mSettings.dt;
     }
 }
 
 void SurfaceSimulation::restore(double time, const Eigen::VectorXd& velocity,
                                 const Eigen::VectorXd& dye) {
-    if (velocity.size() != mVelocity.size())
+    const Eigen::Index modes = mStepper.modeCount();
+    if (velocity.size() != modes)
         throw Error("surface simulation: a velocity of " + std::to_string(velocity.size()) +
-                    " modes, expected " + std::to_string(mVelocity.size()));
+                    " modes, expected " + std::to_string(modes));
     mDye.setState(dye);
-    mVelocity = velocity;
+    mStepper.setVelocity(velocity);
     mTime = time;
 }
 
 std::vector<double> SurfaceSimulation::vertexVelocity() const {
-    const Eigen::VectorXd u = mCache.surface.vertexVelocity * mVelocity;
+    const Eigen::VectorXd u = mCache.surface.vertexVelocity * mStepper.velocity();
     return {u.data(), u.data() + u.size()};
 }
 

@@ -161,8 +161,9 @@ TEST(StirStatisticsTest, LinesSayTheStateAndStageTimesOnlyWhereMeasured) {
     EXPECT_NEAR(measured.stepSeconds(), 0.005, 1e-12);
     measured.addSteps(1, 0.010, {});
     EXPECT_NEAR(measured.stepSeconds(), 0.8 * 0.005 + 0.2 * 0.010, 1e-12) << "smoothed";
-    measured.countFrame(session, "PAUSED");
-    unmeasured.countFrame(session, "");
+    const double t = session.simulation().time();
+    measured.countFrame(session.energy(), t, session.status(), "PAUSED");
+    unmeasured.countFrame(session.energy(), t, session.status(), "");
     EXPECT_NE(measured.text().find("scene"), std::string::npos) << measured.text();
     EXPECT_NE(measured.text().find("PAUSED"), std::string::npos) << measured.text();
     EXPECT_NE(measured.text().find("modal 1.5"), std::string::npos) << measured.text();

@@ -69,8 +69,15 @@ TEST_F(SurfaceScene, WhatSurfacesDoNotDoIsRefusedBeforeAnyWork) {
     expectRejected("run " + s.string() + " --device vulkan --out " + (mDir / "o").string() +
                        " --cache-dir " + mCache.string(),
                    "[surface] scenes run on the CPU reference only; use --device cpu");
-    expectRejected("stir " + s.string() + " --cache-dir " + mCache.string(),
-                   "[surface] scenes are not stirred");
+    // The window shows on a Vulkan device, but the surface's flow runs on the CPU: a device to
+    // simulate on is refused through the backends' table, before the precompute.
+    for (const std::string device : {"0", "vulkan"})
+        expectRejected("stir " + s.string() + " --device " + device + " --frames 1 --cache-dir " +
+                           mCache.string(),
+                       s.string() +
+                           ": [surface] scenes run on the CPU reference only; use "
+                           "--device cpu");
+    EXPECT_FALSE(fs::exists(mCache) && !fs::is_empty(mCache)) << "a cache was written first";
 }
 
 }  // namespace

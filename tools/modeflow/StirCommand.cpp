@@ -24,7 +24,8 @@ Command addStir(CLI::App& app) {
     auto opts = std::make_shared<Options>();
     CLI::App* sub = app.add_subcommand(
         "stir",
-        "Stir a scene's smoke in a window in real time (press h in the window for the keys)");
+        "Stir a scene's smoke (a surface's dye) in a window in real time (press h in the window "
+        "for the keys)");
     sub->add_option("SCENE", opts->scene, "scene file (TOML)")->required();
     sub->add_option("--frames", opts->frames,
                     "close after N frames; the clock is then the scene's frame clock "
@@ -50,10 +51,6 @@ Command addStir(CLI::App& app) {
         // Everything that can be refused is checked before the precompute or the window.
         const BackendChoice choice = parseDeviceOption(opts->device);
         const SceneSpec scene = loadScene(opts->scene);
-        if (scene.isSurface())
-            throw Error(scene.sourceFile.string() +
-                        ": [surface] scenes are not stirred in a window yet; simulate them with "
-                        "run or modes");
         requireSupport(scene, choice.kind);
         stir::StirOptions options;
         options.backend = choice;
@@ -66,7 +63,10 @@ Command addStir(CLI::App& app) {
         display::Window::requireDisplay();
 
         Progress progress = Progress::toStderr();
-        const RunInputs run = prepareRun(scene, resolveCacheDir(opts->cacheDir), progress);
+        // A surface's dye lives in its scalar basis: it has no smoke grid.
+        const RunInputs run =
+            prepareRun(scene, resolveCacheDir(opts->cacheDir), progress,
+                       scene.isSurface() ? RunParts::Dynamics : RunParts::DynamicsAndSmoke);
         stir::runStir(options, run, std::cerr);
         return 0;
     };

@@ -36,12 +36,7 @@ int runSurface(const SurfaceRunOptions& o) {
         std::cerr << "removed " << removed << " files of an earlier " << o.scene.name
                   << " run from " << o.folder.path().string() << "\n";
     }
-    // Colours saturate at four frames' worth of the strongest source's rate (1 without sources):
-    // one scale for the whole run, so that frames compare.
-    double dyeScale = 0.0;
-    for (const SmokeEmitter& e : run.settings.emitters)
-        dyeScale = std::max(dyeScale, e.densityRate);
-    dyeScale = dyeScale > 0.0 ? dyeScale * run.settings.dt * run.settings.stepsPerFrame * 4.0 : 1.0;
+    const double dyeScale = dyeColourScale(run.settings);
 
     std::vector<preview::Image> pictures;
     std::vector<int> pictured;

@@ -1,0 +1,21 @@
+/// @file StirScene.cpp
+
+#include "engine/stir/StirScene.h"
+
+#include "engine/pipeline/Backend.h"
+#include "engine/pipeline/RunInputs.h"
+#include "engine/stir/GridStirScene.h"
+#include "engine/stir/SurfaceStirScene.h"
+
+namespace modeflow::stir {
+
+std::unique_ptr<StirScene> makeStirScene(const Backend& backend, const RunInputs& run,
+                                         const StirSettings& settings,
+                                         const vulkan::VulkanContext& context) {
+    requireSupport(run.scene, backend.kind());
+    if (run.cache.kind == BasisKind::Surface)
+        return std::make_unique<SurfaceStirScene>(run, settings, context);
+    return std::make_unique<GridStirScene>(backend, run, settings, context);
+}
+
+}  // namespace modeflow::stir
