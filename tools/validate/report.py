@@ -259,7 +259,8 @@ def draw_reduced_vs_full(data, folder):
              f'converges to the full run as N grows; with few modes the buoyancy is spread over large modes and '
              f'the smoke rises slowly (the projection of a force narrower than the modes).')]
     ball = data["plume_3d"]
-    fig, axes = plt.subplots(1, 3, figsize=(16, 4))
+    manta = ball.get("mantaflow", {"not_run": "this results.json has no outside check"})
+    fig, axes = plt.subplots(1, 4, figsize=(20, 4))
     modes = [r["modes"] for r in ball["runs"]]
     axes[0].semilogx(modes, [r["response_peak_fraction"] for r in ball["runs"]], "o-", label="peak upward speed")
     axes[0].semilogx(modes, [r["response_rise_fraction"] for r in ball["runs"]], "s-",
@@ -272,12 +273,40 @@ def draw_reduced_vs_full(data, folder):
         colour = cmap(index / max(1, len(ball["runs"]) - 1))
         axes[1].plot(run["time"], run["centroid_height"], color=colour, label=f'{run["modes"]} modes')
         axes[2].plot(run["time"], run["peak_speed"], color=colour, label=f'{run["modes"]} modes')
+    if "not_run" in manta:
+        axes[3].text(0.5, 0.5, "Blender's Mantaflow was not run:\n" + manta["not_run"], ha="center",
+                     va="center", wrap=True, fontsize=9, transform=axes[3].transAxes)
+        axes[3].set_xticks([])
+        axes[3].set_yticks([])
+        outside = f'Blender’s Mantaflow, the outside check, was not run: {manta["not_run"]}.'
+    else:
+        tag = f'Mantaflow {manta["resolution"]}³ (full grid)'
+        axes[1].plot(manta["time"], manta["centroid_height"], "k--", lw=2, label=tag)
+        axes[2].plot(manta["time"], manta["peak_speed"], "k--", lw=2, label=tag)
+        manta_rise = manta["centroid_height"][-1] - manta["centroid_height"][0]
+        rise = [(r["centroid_height"][-1] - r["centroid_height"][0]) / manta_rise for r in ball["runs"]]
+        peak = [r["peak_speed"][-1] / manta["peak_speed"][-1] for r in ball["runs"]]
+        axes[3].semilogx(modes, rise, "o-", label="centroid rise")
+        axes[3].semilogx(modes, peak, "s-", label="peak speed")
+        axes[3].axhline(1.0, color="black", lw=1, ls="--")
+        axes[3].set_xlabel("modes")
+        axes[3].legend(fontsize=7)
+        last = ball["runs"][-1]
+        outside = (f'Dashed: {manta["solver"]} on the same scene ({manta["resolution"]}³, one step of '
+                   f'{ball["dt"]:g} per frame, vorticity confinement, dissolve and noise off; its heat is set '
+                   f'inside the ball rather than added, see tools/validate/mantaflow_plume.py): centroid '
+                   f'{manta["centroid_height"][0]:.3f} → {manta["centroid_height"][-1]:.3f}, peak speed '
+                   f'{manta["peak_speed"][-1]:.3f} at t = {manta["time"][-1]:g}; {last["modes"]} modes '
+                   f'{last["centroid_height"][0]:.3f} → {last["centroid_height"][-1]:.3f}, '
+                   f'{last["peak_speed"][-1]:.3f} (right: each run at t = {manta["time"][-1]:g} as a fraction '
+                   f'of Mantaflow’s).')
+    axes[3].set_title("at the end, / Mantaflow's", fontsize=10)
     axes[1].set_title("smoke centroid height", fontsize=10)
     axes[2].set_title("peak speed", fontsize=10)
     axes[1].legend(fontsize=7)
     for ax in axes:
         ax.grid(True, which="both", alpha=0.3)
-    for ax in axes[1:]:
+    for ax in axes[1:3]:
         ax.set_xlabel("time")
     full = ball["full_response"]
     figures.append((save(fig, folder, "reduced_vs_full_ball"),
@@ -285,8 +314,8 @@ def draw_reduced_vs_full(data, folder):
                     f'closed-form bases of {modes[0]} … {modes[-1]} modes. Left: one step’s response to the ball’s '
                     f'buoyancy, dt·P_N(g), as a fraction of the full grid’s dt·P(g) (a pressure solve; peak '
                     f'{full["peak"]:.3f}, mean {full["mean_rise"]:.3f} per unit force): few modes spread the force '
-                    f'over large modes, hence the slow rise of a 200-mode run. Middle and right: the runs, the '
-                    f'source heating from t = 0.'))
+                    f'over large modes, hence the slow rise of a 200-mode run. Middle: the runs, the '
+                    f'source heating from t = 0. ' + outside))
     figures += draw_periodic(data["periodic"], folder)
     return figures
 
