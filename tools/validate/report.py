@@ -11,6 +11,7 @@ python3-matplotlib. Every figure is drawn from results.json alone.
 import base64
 import html
 import json
+import math
 import os
 import sys
 
@@ -348,21 +349,38 @@ def draw_periodic(periodic, folder):
                 f'A band-limited flow on the torus [0, 2π)², {periodic["resolution"]}² cells ({periodic["initial"]}, RMS face velocity {periodic["rms_speed"]:g}), '
                 f'advanced by reduced runs of N closed-form torus modes and by the {periodic["full"]} (seed Fig. 6.12). '
                 f'The runs leave the full one as energy reaches scales they do not hold; the error falls as N grows.')]
-    pictures = [(f'{r["modes"]} modes', r["vorticity"]) for r in runs] + [("full spectrum", periodic["full_vorticity"])]
+    pictures = [(f'{r["modes"]} modes', r["vorticity"], r.get("markers")) for r in runs]
+    pictures.append(("full spectrum", periodic["full_vorticity"], periodic.get("full_markers")))
     side = int(round(len(periodic["full_vorticity"]) ** 0.5))
     limit = max(abs(v) for v in periodic["full_vorticity"])
+    length = 2 * math.pi
     fig, axes = plt.subplots(1, len(pictures), figsize=(2.6 * len(pictures), 2.8))
-    for ax, (title, values) in zip(axes, pictures):
+    for ax, (title, values, markers) in zip(axes, pictures):
         grid = [values[row * side:(row + 1) * side] for row in range(side)]
-        ax.imshow(grid, origin="lower", cmap="RdBu_r", vmin=-limit, vmax=limit)
+        ax.imshow(grid, origin="lower", cmap="gray", vmin=-limit, vmax=limit, extent=[0, length, 0, length])
+        for points, colour in zip(markers or [], ("tab:blue", "tab:red")):
+            ax.scatter([p[0] for p in points], [p[1] for p in points], s=0.4, color=colour, linewidths=0)
+        ax.set_xlim(0, length)
+        ax.set_ylim(0, length)
         ax.set_title(title, fontsize=9)
         ax.set_xticks([])
         ax.set_yticks([])
+    start = periodic.get("markers_start")
+    markers = (f' The seed’s fluid markers, two disks of radius {marker_radius(start):.2g} left and right of the '
+               f'centre at t = 0, carried by each run’s flow, are drawn in blue and red.' if start else '')
     figures.append((save(fig, folder, "reduced_vs_full_periodic_vorticity"),
-                    f'Vorticity at t = {periodic["time"][-1]:g} of the same runs (one colour scale, the full '
-                    f'run\'s extremes): the fewest modes miss the thin filaments and place the vortices '
-                    f'differently.'))
+                    f'Vorticity at t = {periodic["time"][-1]:g} of the same runs (grey scale, light positive, '
+                    f'one scale for all, the full run\'s extremes): the fewest modes miss the thin filaments and '
+                    f'place the vortices differently.' + markers))
     return figures
+
+
+def marker_radius(disks):
+    """The radius of the first marker disk at the start (its points' largest distance from their mean)."""
+    points = disks[0]
+    cx = sum(p[0] for p in points) / len(points)
+    cy = sum(p[1] for p in points) / len(points)
+    return max(math.hypot(p[0] - cx, p[1] - cy) for p in points)
 
 
 def draw_lans_alpha(data, folder):
