@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <map>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -178,6 +179,31 @@ void checkReducedVsFull(const json& results) {
     const json& energy = periodic["full_energy"];
     EXPECT_NEAR(energy.back().get<double>() / energy[0].get<double>(), 1.0, 1e-3)
         << "the full spectrum's energy";
+    // The seed's fluid markers: the most modes carry them nearer to where the full run does.
+    const auto markerDistance = [&](const json& markers) {
+        double sum = 0.0;
+        int count = 0;
+        for (int disk = 0; disk < 2; ++disk) {
+            const json& full = periodic["full_markers"][disk];
+            EXPECT_EQ(markers[disk].size(), periodic["markers_start"][disk].size());
+            for (std::size_t i = 0; i < full.size(); ++i, ++count)
+                for (int axis = 0; axis < 2; ++axis) {
+                    const double period = 2.0 * std::numbers::pi,
+                                 d = markers[disk][i][axis].get<double>() -
+                                     full[i][axis].get<double>();
+                    sum += std::abs(d - period * std::round(d / period));
+                }
+        }
+        return sum / count;
+    };
+    const double fewest = markerDistance(periodic["runs"].front()["markers"]),
+                 most = markerDistance(periodic["runs"].back()["markers"]);
+    EXPECT_LT(most, fewest) << "mean marker distance from the full run's";
+    // The outside check (Blender's Mantaflow) is the full report's alone, and says so.
+    EXPECT_NE(study(results, "reduced_vs_full")["plume_3d"]["mantaflow"]["not_run"]
+                  .get<std::string>()
+                  .find("--quick"),
+              std::string::npos);
 }
 
 /// Held low modes drive both models; LANS-α's spectrum falls off more steeply at high κ.
@@ -201,7 +227,9 @@ TEST_F(ValidateQuick, EveryStudyMeetsTheSeedsClaims) {
         run("validate --quick --out " + out.string() + " --cache-dir " + mCache.string());
     ASSERT_EQ(r.status, 0) << r.err;
     const json results = json::parse(testing::slurp(out / "results.json"));
-    checkProgressAndReport(results, r.err, testing::slurp(out / "report.html"));
+    const std::string html = testing::slurp(out / "report.html");
+    checkProgressAndReport(results, r.err, html);
+    EXPECT_NE(html.find("Mantaflow, the outside check, was not run: --quick"), std::string::npos);
     checkConvergence(results);
     checkIntegrators(results);
     checkMhd(results);

@@ -1,6 +1,7 @@
 /// @file ValidateCommandTest.cpp
 /// `modeflow validate`: what it refuses before any study runs — a Python that cannot draw the
-/// report (no interpreter, no matplotlib), an unknown study, an --out that cannot be written.
+/// report (no interpreter, no matplotlib), an unknown study, an --out that cannot be written, a
+/// --blender that is no program.
 /// The quick report itself: ValidateCommandSlowTest.
 
 #include <fstream>
@@ -59,6 +60,15 @@ TEST_F(ValidateCommand, AnUnknownStudyIsNamedWithTheStudiesThereAre) {
     EXPECT_EQ(r.status, 1) << r.err;
     EXPECT_NE(r.err.find("--only: no study named \"turbulence\""), std::string::npos) << r.err;
     EXPECT_NE(r.err.find("convergence, integrators"), std::string::npos) << r.err;
+}
+
+TEST_F(ValidateCommand, ABlenderThatIsNoProgramIsRefusedBeforeAnyStudy) {
+    const RunResult r =
+        validate("/usr/bin/python3", "--blender " + (mDir / "no-such-blender").string());
+    EXPECT_EQ(r.status, 1) << r.err;
+    EXPECT_NE(r.err.find("--blender: "), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("is not an executable file"), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find("[1/"), std::string::npos) << "a study ran: " << r.err;
 }
 
 TEST_F(ValidateCommand, AnOutputFolderThatCannotBeWrittenIsRefused) {

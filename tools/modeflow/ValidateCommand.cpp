@@ -7,6 +7,7 @@
 #include "engine/core/Error.h"
 #include "engine/core/WritableDirectory.h"
 #include "tools/modeflow/Commands.h"
+#include "tools/validate/MantaflowPlume.h"
 #include "tools/validate/Report.h"
 #include "tools/validate/Study.h"
 
@@ -54,6 +55,7 @@ Command addValidate(CLI::App& app) {
         bool quick = false;
         std::optional<std::string> only;
         std::optional<std::string> cacheDir;
+        std::optional<std::string> blender;
     };
     auto opts = std::make_shared<Options>();
     CLI::App* sub = app.add_subcommand(
@@ -66,14 +68,25 @@ Command addValidate(CLI::App& app) {
                   "small grids and short runs (about a minute; what the tests run)");
     sub->add_option("--only", opts->only, "comma-separated studies to run (default: all)");
     sub->add_option("--cache-dir", opts->cacheDir, "cache folder for the studies' bases");
+    sub->add_option("--blender", opts->blender,
+                    "Blender for the outside check of the 3D plume (default: `blender` on the "
+                    "PATH; the full report only)");
     return [sub, opts]() {
         if (!*sub) return -1;
         const std::vector<validate::Study> studies = chosenStudies(opts->only);
         const std::filesystem::path out = opts->out;
         ensureWritableDirectory(out, "--out", "choose another folder with --out");
         validate::requirePlotting();
+        const validate::BlenderChoice blender = validate::findBlender(opts->blender);
         validate::StudyOptions options;
         options.quick = opts->quick;
+        options.blender = blender.program;
+        options.noBlender = blender.absence;
+        if (!opts->quick)
+            std::cerr << "validate: outside check (Blender's Mantaflow): "
+                      << (blender.program.empty() ? "none, " + blender.absence
+                                                  : blender.program.string())
+                      << std::endl;
         options.cacheDir = resolveCacheDir(opts->cacheDir);
         options.note = [](const std::string& line) {
             std::cerr << "validate:     " << line << std::endl;

@@ -3,15 +3,18 @@
 /// [0, 2π)², every amplitude on the basis's first modes, advanced by reduced runs of more and more
 /// modes (closed-form torus bases, their sparse coefficients, the midpoint rule) and by the full
 /// spectrum of the same grid (PseudoSpectralEuler.h); the relative L2 and L∞ errors of each run's
-/// face velocity against the full run over time, and the vorticity at the end.
+/// face velocity against the full run over time, and the vorticity at the end with the seed's
+/// fluid markers: two disks near the centre, carried by each run's flow.
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <random>
 #include <string>
 #include <vector>
 
+#include "engine/core/MacSampling.h"
 #include "engine/pipeline/Backend.h"
 #include "engine/reference/VelocityReconstruction.h"
 #include "tools/validate/PseudoSpectralEuler.h"
@@ -57,7 +60,7 @@ double rms(const std::vector<double>& u) {
 }
 
 /// The discrete vorticity (circulation per cell area around each grid vertex), every `stride`-th
-/// vertex per axis, rows by y.
+/// vertex per axis, rows by y, to 4 significant digits.
 std::vector<double> vorticityPicture(const std::vector<double>& faces, int n, int stride) {
     const double h = kLength / n;
     const auto at = [&](int axis, int x, int y) {
@@ -67,9 +70,58 @@ std::vector<double> vorticityPicture(const std::vector<double>& faces, int n, in
     std::vector<double> picture;
     for (int y = 0; y < n; y += stride)
         for (int x = 0; x < n; x += stride)
-            picture.push_back((at(1, x, y) - at(1, x - 1, y) - at(0, x, y) + at(0, x, y - 1)) / h);
+            picture.push_back(significant(
+                (at(1, x, y) - at(1, x - 1, y) - at(0, x, y) + at(0, x, y - 1)) / h, 4));
     return picture;
 }
+
+/// The seed's fluid markers (Fig. 6.12): points on a lattice filling two disks near the centre.
+constexpr double kMarkerRadius = 0.5, kMarkerOffset = 0.7, kMarkerSpacing = 0.04;
+
+/// Marker points, carried by a run's face velocity sampled every kSampleEvery (Heun's rule on
+/// the fields at the two ends of each interval, the same for every run).
+struct Markers {
+    std::array<std::vector<Vec3>, 2> disks;
+    std::vector<double> previous;  ///< the face field at the last sample
+
+    Markers() {
+        const double centre = 0.5 * kLength;
+        for (int side = 0; side < 2; ++side)
+            for (double y = -kMarkerRadius; y <= kMarkerRadius; y += kMarkerSpacing)
+                for (double x = -kMarkerRadius; x <= kMarkerRadius; x += kMarkerSpacing)
+                    if (x * x + y * y <= kMarkerRadius * kMarkerRadius)
+                        disks[side].push_back({centre + (side ? kMarkerOffset : -kMarkerOffset) + x,
+                                               centre + y, 0.0});
+    }
+
+    void advance(const MacGrid& grid, std::vector<double> field, double dt) {
+        if (!previous.empty())
+            for (std::vector<Vec3>& points : disks)
+                for (Vec3& p : points) {
+                    const Vec3 u0 = sampleVelocity<double>(grid, previous, p);
+                    const Vec3 ahead{p[0] + dt * u0[0], p[1] + dt * u0[1], 0.0};
+                    const Vec3 u1 = sampleVelocity<double>(grid, field, ahead);
+                    p[0] += 0.5 * dt * (u0[0] + u1[0]), p[1] += 0.5 * dt * (u0[1] + u1[1]);
+                }
+        previous = std::move(field);
+    }
+
+    /// Each disk's points, wrapped into the torus, as [[x, y], ...] rounded to 1e-4.
+    nlohmann::json json() const {
+        nlohmann::json out = nlohmann::json::array();
+        for (const std::vector<Vec3>& points : disks) {
+            nlohmann::json list = nlohmann::json::array();
+            for (const Vec3& p : points) {
+                const auto wrap = [](double v) {
+                    return std::round(1e4 * (v - kLength * std::floor(v / kLength))) / 1e4;
+                };
+                list.push_back({wrap(p[0]), wrap(p[1])});
+            }
+            out.push_back(list);
+        }
+        return out;
+    }
+};
 
 struct Errors {
     double l2, linf;
@@ -90,6 +142,7 @@ struct ReducedRun {
     std::unique_ptr<VelocityBasis> basis;
     std::unique_ptr<ModalStepping> stepper;
     std::vector<double> l2, linf, energy;
+    Markers markers;
 };
 
 }  // namespace
@@ -122,6 +175,8 @@ nlohmann::json periodicBandLimited(const StudyOptions& options) {
     }
     PseudoSpectralEuler full(cells, kLength);
     full.setFaceVelocity(reference::reconstructFaceField(*runs.front().basis, amplitudes));
+    const MacGrid grid = MacGrid::fromSpec(runs.front().inputs.cache.grid);
+    Markers fullMarkers;
 
     std::vector<double> time, fullEnergy;
     const int steps = int(std::lround(duration / kStep)),
@@ -135,12 +190,14 @@ nlohmann::json periodicBandLimited(const StudyOptions& options) {
         time.push_back(s * kStep);
         fullEnergy.push_back(full.energy());
         const std::vector<double> reference = full.faceVelocity();
+        fullMarkers.advance(grid, reference, kSampleEvery);
         for (ReducedRun& run : runs) {
             const Eigen::VectorXd v = run.stepper->state();
-            const Errors e =
-                errorsAgainst(reference::reconstructFaceField(*run.basis, v), reference);
+            std::vector<double> u = reference::reconstructFaceField(*run.basis, v);
+            const Errors e = errorsAgainst(u, reference);
             run.l2.push_back(e.l2), run.linf.push_back(e.linf),
                 run.energy.push_back(0.5 * v.squaredNorm());
+            run.markers.advance(grid, std::move(u), kSampleEvery);
         }
         if (s % (10 * sampleEvery) == 0) options.note("periodic: t = " + std::to_string(s * kStep));
     }
@@ -158,6 +215,8 @@ nlohmann::json periodicBandLimited(const StudyOptions& options) {
         {"full_energy", fullEnergy},
         {"picture_stride", stride},
         {"full_vorticity", vorticityPicture(full.faceVelocity(), cells, stride)},
+        {"markers_start", Markers().json()},
+        {"full_markers", fullMarkers.json()},
         {"runs", nlohmann::json::array()}};
     for (const ReducedRun& run : runs)
         result["runs"].push_back(
@@ -165,6 +224,7 @@ nlohmann::json periodicBandLimited(const StudyOptions& options) {
              {"relative_l2", run.l2},
              {"relative_linf", run.linf},
              {"energy", run.energy},
+             {"markers", run.markers.json()},
              {"vorticity",
               vorticityPicture(reference::reconstructFaceField(*run.basis, run.stepper->state()),
                                cells, stride)}});

@@ -9,7 +9,9 @@
 /// - `plume_3d`: the hot ball of a closed 64³ box (r = 0.08 at the floor, buoyancy 1, the job of
 ///   tools/validate/README.md "The slow plume") with closed-form bases of 50 … 2000 modes: the
 ///   first step's response to the ball's buoyancy, dt·P_N(g), against the full grid's dt·P(g)
-///   (a pressure solve, PressureProjection.h), and each run's rise over time.
+///   (a pressure solve, PressureProjection.h), and each run's rise over time; in the full report,
+///   with Blender found, Blender's Mantaflow on the same scene as the outside reference
+///   (MantaflowPlume.h).
 /// - `periodic`: the seed's band-limited flow on a torus against a full-spectrum run
 ///   (PeriodicReducedVsFull.cpp); its final errors are the study's headline.
 
@@ -23,6 +25,7 @@
 #include "engine/reference/ForceField.h"
 #include "engine/reference/VelocityReconstruction.h"
 #include "engine/stir/ShapedBases.h"
+#include "tools/validate/MantaflowPlume.h"
 #include "tools/validate/PressureProjection.h"
 #include "tools/validate/Studies.h"
 #include "tools/validate/StudyRuns.h"
@@ -133,6 +136,31 @@ std::pair<double, double> riseOf(const MacGrid& grid, std::span<const double> u,
     return {peak, weighted / weight};
 }
 
+/// Blender's Mantaflow on the 3D experiment's scene: its series, or `not_run` saying why.
+nlohmann::json mantaflowReference(const StudyOptions& options, int cells, int frames) {
+    if (options.quick)
+        return {{"not_run", "--quick runs no outside check (the full report does, with Blender)"}};
+    if (options.blender.empty()) return {{"not_run", options.noBlender}};
+    options.note("3D plume: Blender's Mantaflow, " + std::to_string(cells) + "³, " +
+                 std::to_string(frames) + " frames (" + options.blender.string() + ")");
+    try {
+        const nlohmann::json run = runMantaflowPlume(options.blender, cells, frames);
+        nlohmann::json series = {{"solver", run.at("solver")},
+                                 {"resolution", run.at("resolution")},
+                                 {"scene", run.at("scene")}};
+        for (const char* key : {"time", "centroid_height", "peak_speed", "smoke_mass"}) {
+            std::vector<double> values;
+            for (const nlohmann::json& frame : run.at("frames")) values.push_back(frame.at(key));
+            series[key] = values;
+        }
+        return series;
+    } catch (const std::exception& e) {
+        // Recorded, and drawn in the report, rather than losing the study's other runs.
+        options.note(std::string("Mantaflow failed: ") + e.what());
+        return {{"not_run", std::string("Blender's run failed: ") + e.what()}};
+    }
+}
+
 /// The 3D experiment (see the file's comment).
 nlohmann::json ballPlume(const StudyOptions& options) {
     const int cells = options.quick ? 24 : 64, frames = options.quick ? 15 : 60;
@@ -182,6 +210,7 @@ nlohmann::json ballPlume(const StudyOptions& options) {
                                   {"centroid_height", height},
                                   {"peak_speed", peak}});
     }
+    result["mantaflow"] = mantaflowReference(options, cells, frames);
     return result;
 }
 

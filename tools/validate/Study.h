@@ -17,6 +17,10 @@ struct StudyOptions {
     bool quick = false;              ///< small grids and short runs (the test suite's size)
     std::filesystem::path cacheDir;  ///< where the bases are cached (reused across runs)
     std::function<void(const std::string&)> note;  ///< a line of progress within the study
+    /// Blender for the outside check of the 3D plume (MantaflowPlume.h); empty: none, and
+    /// `noBlender` says why (the report says so).
+    std::filesystem::path blender;
+    std::string noBlender;
 };
 
 /// The number a reader looks at first, and what it should be.

@@ -1,6 +1,7 @@
 #include "tools/validate/StudyRuns.h"
 
 #include <cstdio>
+#include <cstdlib>
 
 #include "precompute/scene/SceneLoader.h"
 
@@ -20,6 +21,12 @@ std::vector<double> thinned(const std::vector<double>& values, std::size_t strid
     for (std::size_t i = 0; i < values.size(); i += stride) kept.push_back(values[i]);
     if (!values.empty() && (values.size() - 1) % stride != 0) kept.push_back(values.back());
     return kept;
+}
+
+double significant(double value, int digits) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.*g", digits, value);
+    return std::strtod(text, nullptr);
 }
 
 std::string scientific(double value) {

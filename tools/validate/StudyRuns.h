@@ -23,6 +23,10 @@ RunInputs prepareStudyRun(const SceneSpec& scene, const StudyOptions& options,
 /// Every `stride`-th value of a series and its last one: figures need a few hundred points.
 std::vector<double> thinned(const std::vector<double>& values, std::size_t stride);
 
+/// `value` rounded to `digits` significant digits: for pictures, whose colours need no more and
+/// whose numbers are most of results.json.
+double significant(double value, int digits);
+
 /// `value` in scientific notation with 2 significant digits ("3.1e-15").
 std::string scientific(double value);
 

@@ -11,6 +11,7 @@ python3-matplotlib. Every figure is drawn from results.json alone.
 import base64
 import html
 import json
+import math
 import os
 import sys
 
@@ -259,7 +260,8 @@ def draw_reduced_vs_full(data, folder):
              f'converges to the full run as N grows; with few modes the buoyancy is spread over large modes and '
              f'the smoke rises slowly (the projection of a force narrower than the modes).')]
     ball = data["plume_3d"]
-    fig, axes = plt.subplots(1, 3, figsize=(16, 4))
+    manta = ball.get("mantaflow", {"not_run": "this results.json has no outside check"})
+    fig, axes = plt.subplots(1, 4, figsize=(20, 4))
     modes = [r["modes"] for r in ball["runs"]]
     axes[0].semilogx(modes, [r["response_peak_fraction"] for r in ball["runs"]], "o-", label="peak upward speed")
     axes[0].semilogx(modes, [r["response_rise_fraction"] for r in ball["runs"]], "s-",
@@ -272,12 +274,40 @@ def draw_reduced_vs_full(data, folder):
         colour = cmap(index / max(1, len(ball["runs"]) - 1))
         axes[1].plot(run["time"], run["centroid_height"], color=colour, label=f'{run["modes"]} modes')
         axes[2].plot(run["time"], run["peak_speed"], color=colour, label=f'{run["modes"]} modes')
+    if "not_run" in manta:
+        axes[3].text(0.5, 0.5, "Blender's Mantaflow was not run:\n" + manta["not_run"], ha="center",
+                     va="center", wrap=True, fontsize=9, transform=axes[3].transAxes)
+        axes[3].set_xticks([])
+        axes[3].set_yticks([])
+        outside = f'Blender’s Mantaflow, the outside check, was not run: {manta["not_run"]}.'
+    else:
+        tag = f'Mantaflow {manta["resolution"]}³ (full grid)'
+        axes[1].plot(manta["time"], manta["centroid_height"], "k--", lw=2, label=tag)
+        axes[2].plot(manta["time"], manta["peak_speed"], "k--", lw=2, label=tag)
+        manta_rise = manta["centroid_height"][-1] - manta["centroid_height"][0]
+        rise = [(r["centroid_height"][-1] - r["centroid_height"][0]) / manta_rise for r in ball["runs"]]
+        peak = [r["peak_speed"][-1] / manta["peak_speed"][-1] for r in ball["runs"]]
+        axes[3].semilogx(modes, rise, "o-", label="centroid rise")
+        axes[3].semilogx(modes, peak, "s-", label="peak speed")
+        axes[3].axhline(1.0, color="black", lw=1, ls="--")
+        axes[3].set_xlabel("modes")
+        axes[3].legend(fontsize=7)
+        last = ball["runs"][-1]
+        outside = (f'Dashed: {manta["solver"]} on the same scene ({manta["resolution"]}³, one step of '
+                   f'{ball["dt"]:g} per frame, vorticity confinement, dissolve and noise off; its heat is set '
+                   f'inside the ball rather than added, see tools/validate/mantaflow_plume.py): centroid '
+                   f'{manta["centroid_height"][0]:.3f} → {manta["centroid_height"][-1]:.3f}, peak speed '
+                   f'{manta["peak_speed"][-1]:.3f} at t = {manta["time"][-1]:g}; {last["modes"]} modes '
+                   f'{last["centroid_height"][0]:.3f} → {last["centroid_height"][-1]:.3f}, '
+                   f'{last["peak_speed"][-1]:.3f} (right: each run at t = {manta["time"][-1]:g} as a fraction '
+                   f'of Mantaflow’s).')
+    axes[3].set_title("at the end, / Mantaflow's", fontsize=10)
     axes[1].set_title("smoke centroid height", fontsize=10)
     axes[2].set_title("peak speed", fontsize=10)
     axes[1].legend(fontsize=7)
     for ax in axes:
         ax.grid(True, which="both", alpha=0.3)
-    for ax in axes[1:]:
+    for ax in axes[1:3]:
         ax.set_xlabel("time")
     full = ball["full_response"]
     figures.append((save(fig, folder, "reduced_vs_full_ball"),
@@ -285,8 +315,8 @@ def draw_reduced_vs_full(data, folder):
                     f'closed-form bases of {modes[0]} … {modes[-1]} modes. Left: one step’s response to the ball’s '
                     f'buoyancy, dt·P_N(g), as a fraction of the full grid’s dt·P(g) (a pressure solve; peak '
                     f'{full["peak"]:.3f}, mean {full["mean_rise"]:.3f} per unit force): few modes spread the force '
-                    f'over large modes, hence the slow rise of a 200-mode run. Middle and right: the runs, the '
-                    f'source heating from t = 0.'))
+                    f'over large modes, hence the slow rise of a 200-mode run. Middle: the runs, the '
+                    f'source heating from t = 0. ' + outside))
     figures += draw_periodic(data["periodic"], folder)
     return figures
 
@@ -319,21 +349,38 @@ def draw_periodic(periodic, folder):
                 f'A band-limited flow on the torus [0, 2π)², {periodic["resolution"]}² cells ({periodic["initial"]}, RMS face velocity {periodic["rms_speed"]:g}), '
                 f'advanced by reduced runs of N closed-form torus modes and by the {periodic["full"]} (seed Fig. 6.12). '
                 f'The runs leave the full one as energy reaches scales they do not hold; the error falls as N grows.')]
-    pictures = [(f'{r["modes"]} modes', r["vorticity"]) for r in runs] + [("full spectrum", periodic["full_vorticity"])]
+    pictures = [(f'{r["modes"]} modes', r["vorticity"], r.get("markers")) for r in runs]
+    pictures.append(("full spectrum", periodic["full_vorticity"], periodic.get("full_markers")))
     side = int(round(len(periodic["full_vorticity"]) ** 0.5))
     limit = max(abs(v) for v in periodic["full_vorticity"])
+    length = 2 * math.pi
     fig, axes = plt.subplots(1, len(pictures), figsize=(2.6 * len(pictures), 2.8))
-    for ax, (title, values) in zip(axes, pictures):
+    for ax, (title, values, markers) in zip(axes, pictures):
         grid = [values[row * side:(row + 1) * side] for row in range(side)]
-        ax.imshow(grid, origin="lower", cmap="RdBu_r", vmin=-limit, vmax=limit)
+        ax.imshow(grid, origin="lower", cmap="gray", vmin=-limit, vmax=limit, extent=[0, length, 0, length])
+        for points, colour in zip(markers or [], ("tab:blue", "tab:red")):
+            ax.scatter([p[0] for p in points], [p[1] for p in points], s=0.4, color=colour, linewidths=0)
+        ax.set_xlim(0, length)
+        ax.set_ylim(0, length)
         ax.set_title(title, fontsize=9)
         ax.set_xticks([])
         ax.set_yticks([])
+    start = periodic.get("markers_start")
+    markers = (f' The seed’s fluid markers, two disks of radius {marker_radius(start):.2g} left and right of the '
+               f'centre at t = 0, carried by each run’s flow, are drawn in blue and red.' if start else '')
     figures.append((save(fig, folder, "reduced_vs_full_periodic_vorticity"),
-                    f'Vorticity at t = {periodic["time"][-1]:g} of the same runs (one colour scale, the full '
-                    f'run\'s extremes): the fewest modes miss the thin filaments and place the vortices '
-                    f'differently.'))
+                    f'Vorticity at t = {periodic["time"][-1]:g} of the same runs (grey scale, light positive, '
+                    f'one scale for all, the full run\'s extremes): the fewest modes miss the thin filaments and '
+                    f'place the vortices differently.' + markers))
     return figures
+
+
+def marker_radius(disks):
+    """The radius of the first marker disk at the start (its points' largest distance from their mean)."""
+    points = disks[0]
+    cx = sum(p[0] for p in points) / len(points)
+    cy = sum(p[1] for p in points) / len(points)
+    return max(math.hypot(p[0] - cx, p[1] - cy) for p in points)
 
 
 def draw_lans_alpha(data, folder):
