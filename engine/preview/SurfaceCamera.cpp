@@ -5,31 +5,16 @@
 #include <algorithm>
 #include <cmath>
 
+#include "engine/core/Vec3Math.h"
+
 namespace modeflow::preview {
-namespace {
-
-Vec3 sub(const Vec3& a, const Vec3& b) {
-    return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
-}
-double dot(const Vec3& a, const Vec3& b) {
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-Vec3 cross(const Vec3& a, const Vec3& b) {
-    return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-Vec3 unit(const Vec3& a) {
-    const double n = std::sqrt(dot(a, a));
-    return {a[0] / n, a[1] / n, a[2] / n};
-}
-
-}  // namespace
 
 SurfaceProjection::SurfaceProjection(const TriangleMesh& mesh, const SurfaceCamera& camera,
                                      int width, int height)
-    : mView(unit(camera.view)),
-      mRight(unit(cross({0.0, 0.0, 1.0}, mView))),
+    : mView(normalized(camera.view)),
+      mRight(normalized(cross({0.0, 0.0, 1.0}, mView))),
       mUp(cross(mView, mRight)),
-      mLight(unit(camera.light)),
+      mLight(normalized(camera.light)),
       mWidth(width),
       mHeight(height) {
     Vec3 lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};

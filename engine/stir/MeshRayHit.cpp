@@ -4,20 +4,9 @@
 
 #include <cmath>
 
+#include "engine/core/Vec3Math.h"
+
 namespace modeflow::stir {
-namespace {
-
-Vec3 sub(const Vec3& a, const Vec3& b) {
-    return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
-}
-double dot(const Vec3& a, const Vec3& b) {
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-Vec3 cross(const Vec3& a, const Vec3& b) {
-    return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-
-}  // namespace
 
 std::optional<MeshHit> nearestHit(const TriangleMesh& mesh, const Vec3& origin,
                                   const Vec3& direction) {

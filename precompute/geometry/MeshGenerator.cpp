@@ -13,14 +13,10 @@
 #include <utility>
 
 #include "engine/core/Error.h"
+#include "engine/core/Vec3Math.h"
 
 namespace modeflow {
 namespace {
-
-Vec3 normalized(const Vec3& v) {
-    const double n = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-    return {v[0] / n, v[1] / n, v[2] / n};
-}
 
 /// Uniform in [lo, hi) straight from the engine's bits: std::uniform_real_distribution is not
 /// specified exactly, and the shipped blob must not depend on the standard library.

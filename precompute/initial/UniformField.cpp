@@ -8,6 +8,7 @@
 
 #include "engine/core/Error.h"
 #include "engine/core/MacGrid.h"
+#include "engine/core/Vec3Math.h"
 #include "precompute/initial/VortexProjection.h"
 
 namespace modeflow {
@@ -41,10 +42,6 @@ Vec3 centroid(const BasisCache& cache) {
     for (int a = 0; a < cache.grid.dim; ++a)
         centre[a] = 0.5 * (cache.grid.boundsMin[a] + cache.grid.boundsMax[a]);
     return centre;
-}
-
-Vec3 cross(const Vec3& a, const Vec3& b) {
-    return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
 }
 
 }  // namespace

@@ -6,20 +6,13 @@
 #include <string>
 
 #include "engine/core/Error.h"
+#include "engine/core/Vec3Math.h"
 #include "engine/format/VelocityBasis.h"
 #include "precompute/dec/CubicalComplex.h"
 #include "precompute/dec/CutCellDec.h"
 
 namespace modeflow {
 namespace {
-
-Vec3 cross(const Vec3& a, const Vec3& b) {
-    return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-
-double norm(const Vec3& a) {
-    return std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
-}
 
 Vec3 lambOseen(const VortexSpec& v, const Vec3& x) {
     const double dx = x[0] - v.center[0], dy = x[1] - v.center[1];

@@ -9,6 +9,7 @@
 #include <unordered_map>
 
 #include "engine/core/Error.h"
+#include "engine/core/Vec3Math.h"
 
 namespace modeflow {
 namespace {
@@ -20,25 +21,15 @@ std::string triangleText(const TriangleMesh& mesh, std::size_t t) {
            std::to_string(b + 1) + ", " + std::to_string(c + 1) + ")";
 }
 
-Vec3 minus(const Vec3& a, const Vec3& b) {
-    return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
-}
-Vec3 cross(const Vec3& a, const Vec3& b) {
-    return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-double dot(const Vec3& a, const Vec3& b) {
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-
 void requireNonDegenerate(const TriangleMesh& mesh, const std::string& name) {
     for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
         const auto& [a, b, c] = mesh.triangles[t];
         if (a == b || b == c || c == a)
             throw Error(name + ": " + triangleText(mesh, t) +
                         " repeats a vertex; a surface's triangles need three distinct corners");
-        const Vec3 u = minus(mesh.vertices[b], mesh.vertices[a]);
-        const Vec3 v = minus(mesh.vertices[c], mesh.vertices[a]);
-        const Vec3 w = minus(mesh.vertices[c], mesh.vertices[b]);
+        const Vec3 u = sub(mesh.vertices[b], mesh.vertices[a]);
+        const Vec3 v = sub(mesh.vertices[c], mesh.vertices[a]);
+        const Vec3 w = sub(mesh.vertices[c], mesh.vertices[b]);
         const double longest = std::max({dot(u, u), dot(v, v), dot(w, w)});
         // Twice the area against the longest side squared: 1e-12 is an angle of about 1e-12
         // radians, far below anything a mesh means on purpose, far above round-off of zero.

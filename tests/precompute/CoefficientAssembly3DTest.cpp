@@ -8,6 +8,7 @@
 #include <cstdio>
 
 #include "engine/core/PackedLayout.h"
+#include "engine/core/Vec3Math.h"
 #include "precompute/coefficients/CoefficientAssembly.h"
 #include "tests/support/TestScenes.h"
 
@@ -66,10 +67,6 @@ const double kNode[] = {-0.8611363115940526, -0.3399810435848563, 0.339981043584
                         0.8611363115940526};
 const double kWeight[] = {0.3478548451374538, 0.6521451548625461, 0.6521451548625461,
                           0.3478548451374538};
-
-Vec3 cross(const Vec3& a, const Vec3& b) {
-    return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
 
 double continuumCoefficient(const CurlField& k, const CurlField& i, const CurlField& j) {
     const int panels = 6;

@@ -75,7 +75,7 @@ Command addValidate(CLI::App& app) {
         if (!*sub) return -1;
         const std::vector<validate::Study> studies = chosenStudies(opts->only);
         const std::filesystem::path out = opts->out;
-        ensureWritableDirectory(out, "--out", "choose another folder with --out");
+        ensureWritableDirectory(out, "--out", "; choose another folder with --out");
         validate::requirePlotting();
         const validate::BlenderChoice blender = validate::findBlender(opts->blender);
         validate::StudyOptions options;

@@ -54,7 +54,8 @@ int runToStderr(const std::vector<std::string>& args) {
     for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
     argv.push_back(nullptr);
     const pid_t pid = fork();
-    if (pid < 0) throw Error(std::string("mantaflow: cannot start Blender: ") + std::strerror(errno));
+    if (pid < 0)
+        throw Error(std::string("mantaflow: cannot start Blender: ") + std::strerror(errno));
     if (pid == 0) {
         dup2(STDERR_FILENO, STDOUT_FILENO);
         execv(argv[0], argv.data());
@@ -86,13 +87,12 @@ BlenderChoice findBlender(const std::optional<std::string>& requested) {
 nlohmann::json runMantaflowPlume(const fs::path& blender, int resolution, int frames) {
     const ScratchFolder scratch;
     const fs::path out = scratch.path() / "plume.json";
-    const int status = runToStderr(
-        {blender.string(), "-b", "--factory-startup", "--python-exit-code", "1", "--python-expr",
-         kMantaflowPlumeScript, "--", "--out", out.string(), "--resolution",
-         std::to_string(resolution), "--frames", std::to_string(frames), "--cache",
-         (scratch.path() / "cache").string()});
-    if (status == 127)
-        throw Error("mantaflow: cannot start " + blender.string());
+    const int status =
+        runToStderr({blender.string(), "-b", "--factory-startup", "--python-exit-code", "1",
+                     "--python-expr", kMantaflowPlumeScript, "--", "--out", out.string(),
+                     "--resolution", std::to_string(resolution), "--frames", std::to_string(frames),
+                     "--cache", (scratch.path() / "cache").string()});
+    if (status == 127) throw Error("mantaflow: cannot start " + blender.string());
     if (status != 0)
         throw Error("mantaflow: " + blender.string() + " exited with status " +
                     std::to_string(status) + " running mantaflow_plume.py (its messages above)");

@@ -25,7 +25,6 @@ BlenderChoice findBlender(const std::optional<std::string>& requested);
 /// frames of 0.02 s (Blender's messages go to stderr) and returns the JSON it writes: per frame
 /// the smoke centroid height and the peak face speed.
 /// @throw modeflow::Error when Blender cannot be started, fails, or writes no result.
-nlohmann::json runMantaflowPlume(const std::filesystem::path& blender, int resolution,
-                                 int frames);
+nlohmann::json runMantaflowPlume(const std::filesystem::path& blender, int resolution, int frames);
 
 }  // namespace modeflow::validate
