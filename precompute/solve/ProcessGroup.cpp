@@ -6,29 +6,10 @@
 #include <slepcsys.h>
 
 #include "engine/core/Error.h"
-
-#if defined(__SANITIZE_ADDRESS__)
-#define MODEFLOW_LEAK_SANITIZER 1
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define MODEFLOW_LEAK_SANITIZER 1
-#endif
-#endif
-#ifdef MODEFLOW_LEAK_SANITIZER
-#include <sanitizer/lsan_interface.h>
-#endif
+#include "precompute/solve/LibraryLeaks.h"
 
 namespace modeflow {
 namespace {
-
-/// Open MPI keeps what it allocates while starting and stopping (about 120 KB in 3000 blocks,
-/// in MPI_Init, MPI_Finalize and its progress thread) and never frees it; in a sanitized build
-/// the leak checker is told to ignore those blocks, so that it reports our own leaks only.
-struct IgnoreMpiLeaks {
-#ifdef MODEFLOW_LEAK_SANITIZER
-    __lsan::ScopedDisabler disabler;
-#endif
-};
 
 /// Open MPI's mpirun, MPICH's hydra and PMIx launchers (Slurm's srun among them) tell their
 /// processes so through these.
@@ -54,7 +35,7 @@ PetscErrorCode keepMessage(MPI_Comm, int, const char*, const char*, PetscErrorCo
 void finalizePetsc() {
     PetscBool finalized = PETSC_FALSE;
     if (PetscFinalized(&finalized) == 0 && !finalized) {
-        [[maybe_unused]] const IgnoreMpiLeaks ignore;
+        [[maybe_unused]] const IgnoreLibraryLeaks ignore;  // Open MPI keeps ~120 KB
         SlepcFinalize();
     }
 }
@@ -69,7 +50,7 @@ void ensurePetsc() {
     // and catch Ctrl-C.
     PetscOptionsSetValue(nullptr, "-no_signal_handler", nullptr);
     const PetscErrorCode started = [] {
-        [[maybe_unused]] const IgnoreMpiLeaks ignore;
+        [[maybe_unused]] const IgnoreLibraryLeaks ignore;  // Open MPI keeps ~120 KB
         return SlepcInitializeNoArguments();
     }();
     if (started != 0)
