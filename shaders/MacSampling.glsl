@@ -20,36 +20,7 @@
 #ifndef MODEFLOW_SHADERS_MAC_SAMPLING_GLSL
 #define MODEFLOW_SHADERS_MAC_SAMPLING_GLSL
 
-/* Linear interpolation along one axis between positions lo and hi = lo + 1, or a single position
-   (hi == lo, f = 0) on a one-point axis. */
-struct AxisStencil {
-    int lo;
-    int hi;
-    float f;
-};
-
-/* Along an axis with n samples at grid coordinates offset + 0, 1, ..., n - 1, clamped to them,
-   or on a periodic axis repeating every n (n - 1 interpolates with 0). The index is clamped as an
-   integer too: a diverged run's NaN coordinate makes floor() some undefined value, which must
-   still address the buffer (the reference samples it as 0). */
-AxisStencil axisStencil(float coordinate, float offset, int n, bool periodic) {
-    AxisStencil a;
-    if (periodic) {
-        const float s = mod(coordinate - offset, float(n));  // [0, n], n only by round-off
-        const float below = floor(s);
-        a.lo = clamp(int(below), 0, n) % n;
-        a.hi = (a.lo + 1) % n;
-        a.f = s - below;
-        return a;
-    }
-    const float s = clamp(coordinate - offset, 0.0, float(n - 1));
-    a.lo = clamp(int(floor(s)), 0, max(n - 2, 0));
-    a.hi = min(a.lo + 1, n - 1);
-    a.f = s - float(a.lo);
-    return a;
-}
-
-bool isPeriodic(uint periodic, int axis) { return (periodic & (1u << uint(axis))) != 0u; }
+#include "AxisStencil.glsl"
 
 /* The normal-`axis` component at gridPoint on a grid of `cells`, whose normal-`axis` faces start
    at number `faceOffset`. */

@@ -79,11 +79,15 @@ struct RenderVolumeParams {
     float cellsPerTX;   /* cells per unit t along each axis: L / spacing */
     float cellsPerTY;
     float cellsPerTZ;
-    float glassT; /* the glass adds its colour per this much t of wall crossed (half a cell) */
+    float glassT;  /* the glass adds its colour per this much t of wall crossed (half a cell) */
+    uint periodic; /* bit a: axis a wraps (MacGrid::periodic), so sampling wraps across it */
+    uint padding0;
+    uint padding1;
+    uint padding2;
 };
 
 #ifdef __cplusplus
-static_assert(sizeof(RenderVolumeParams) == 112, "push constants are scalars in 16-byte rows");
+static_assert(sizeof(RenderVolumeParams) == 128, "push constants are scalars in 16-byte rows");
 }  // namespace modeflow::shaders
 #endif
 

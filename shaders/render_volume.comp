@@ -12,9 +12,11 @@
 //   between 0 and 1 (within a cell of the domain's wall) a faint glass 4 w (1 - w) glows, more
 //   where the ray grazes the wall, so the domain and its obstacles show. Box edges are drawn
 //   faintly behind the volume and in front of it.
-// Fields are sampled trilinearly between cell centres, clamped at the box like MacSampling.glsl.
+// Fields are sampled trilinearly between cell centres, clamped at the box's walls and wrapping
+// across its periodic axes, like MacSampling.glsl.
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_control_flow_attributes : require
+#include "AxisStencil.glsl"
 #include "RenderVolumeParams.h"
 
 layout(local_size_x = 64, local_size_x_id = 0) in;
@@ -53,10 +55,10 @@ Stencil stencilAt(vec3 p) {
     ivec3 lo, hi;
     vec3 f;
     for (int a = 0; a < 3; ++a) {
-        const float s = clamp(p[a] - 0.5, 0.0, float(n[a] - 1));
-        lo[a] = min(int(floor(s)), max(n[a] - 2, 0));
-        hi[a] = min(lo[a] + 1, n[a] - 1);
-        f[a] = s - float(lo[a]);
+        const AxisStencil s = axisStencil(p[a], 0.5, n[a], isPeriodic(params.periodic, a));
+        lo[a] = s.lo;
+        hi[a] = s.hi;
+        f[a] = s.f;
     }
     Stencil st;
     [[unroll]] for (int k = 0; k < 8; ++k) {

@@ -62,6 +62,16 @@ Stencil stencilAt(const RenderVolumeParams& p, V3 point) {
     std::array<int, 3> lo{}, hi{};
     V3 f{};
     for (int a = 0; a < 3; ++a) {
+        if ((p.periodic >> a) & 1u) {
+            // GLSL's mod(x, y) = x - y floor(x / y), whose result may round to y.
+            const float s =
+                (point[a] - 0.5f) - float(n[a]) * std::floor((point[a] - 0.5f) / float(n[a]));
+            const float below = std::floor(s);
+            lo[a] = std::clamp(int(below), 0, n[a]) % n[a];
+            hi[a] = (lo[a] + 1) % n[a];
+            f[a] = s - below;
+            continue;
+        }
         const float s = std::clamp(point[a] - 0.5f, 0.0f, float(n[a] - 1));
         lo[a] = std::min(int(std::floor(s)), std::max(n[a] - 2, 0));
         hi[a] = std::min(lo[a] + 1, n[a] - 1);

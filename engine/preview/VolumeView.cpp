@@ -70,6 +70,8 @@ shaders::RenderVolumeParams volumeViewParams(const MacGrid& grid, int width, int
     p.cellsZ = std::uint32_t(grid.cells[2]);
     p.densityScale = densityScale;
     p.densityStride = densityStride;
+    for (int a = 0; a < 3; ++a)
+        if (grid.periodic[a]) p.periodic |= 1u << a;
     std::array<float*, 3> eye{&p.eyeX, &p.eyeY, &p.eyeZ}, base{&p.baseX, &p.baseY, &p.baseZ},
         dx{&p.dxX, &p.dxY, &p.dxZ}, dy{&p.dyX, &p.dyY, &p.dyZ},
         cellsPerT{&p.cellsPerTX, &p.cellsPerTY, &p.cellsPerTZ};

@@ -290,6 +290,28 @@ TEST_P(VolumePreviewTest, DeviceEqualsTheCpuReference) {
     }
 }
 
+TEST_P(VolumePreviewTest, PeriodicAxesWrapOnTheDeviceAsOnTheCpuReference) {
+    // Smoke in the first layer of cells along x and y only: on periodic axes the half cell beyond
+    // the last cell centre interpolates towards it, so it shows at the far faces too.
+    MacGrid g = grid(3, 20);
+    const std::vector<std::uint8_t> mask(std::size_t(g.cellCount()), 1);
+    const std::vector<float> layer = cellField(g, [&](double x, double y, double) {
+        return x < g.origin[0] + g.spacing[0] || y < g.origin[1] + g.spacing[1] ? 3.0 : 0.0;
+    });
+    const Image walled = preview::renderVolumeReference(g, layer, mask, 120, 90, 12.0f);
+    g.periodic = {true, true, false};
+    const Image reference = preview::renderVolumeReference(g, layer, mask, 120, 90, 12.0f);
+    const Image device = render(g, layer, mask, 120, 90, 12.0f);
+    const PixelDifference d = compare(device, reference);
+    std::cout << "periodic x, y: max channel difference " << d.maxAbs
+              << ", pixels over 2: " << 100 * d.overTwo << "%\n";
+    EXPECT_LE(d.overTwo, 0.005);
+    EXPECT_LE(d.maxAbs, 16);
+    const PixelDifference wrapped = compare(reference, walled);
+    std::cout << "periodic against walled: pixels over 2: " << 100 * wrapped.overTwo << "%\n";
+    EXPECT_GT(wrapped.overTwo, 0.01) << "the periodic picture does not wrap";
+}
+
 TEST_P(VolumePreviewTest, BlobHighInTheBoxAppearsHigherInThePicture) {
     const MacGrid g = grid(3, 24);
     const std::vector<std::uint8_t> mask(std::size_t(g.cellCount()), 1);
