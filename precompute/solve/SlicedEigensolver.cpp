@@ -52,9 +52,11 @@ struct EventTally {
 };
 
 EventTally tally(const char* event) {
-    PetscLogEvent id = 0;
+    PetscLogEvent id = -1;
     PetscEventPerfInfo info{};
-    if (PetscLogEventGetId(event, &id) != 0 || PetscLogEventGetPerfInfo(0, id, &info) != 0)
+    // An event not registered yet (KSPSolve before the first KSP) has id −1, without an error.
+    if (PetscLogEventGetId(event, &id) != 0 || id < 0 ||
+        PetscLogEventGetPerfInfo(0, id, &info) != 0)
         return {};
     return {long(info.count), info.time};
 }
