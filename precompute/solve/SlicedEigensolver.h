@@ -10,7 +10,9 @@
 ///
 /// The intervals: the first runs from `request.shift` to a little above `request.estimate`;
 /// while fewer than `count` eigenvalues are found, the next one starts where the last ended and
-/// reaches where N(λ) ∝ λ^{d/2} (Weyl), fitted to the count so far, puts the rest.
+/// reaches where N(λ) ∝ λ^{d/2} (Weyl), fitted to the count so far, puts the rest. With
+/// `request.checkpoints` set, every finished interval is kept beside the cache (SliceCheckpoint.h)
+/// and the intervals an interrupted run kept are read instead of solved.
 
 #include <vector>
 
