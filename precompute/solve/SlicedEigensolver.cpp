@@ -173,7 +173,7 @@ bool onEigenvalue(PetscErrorCode code) {
 std::optional<EigenPairs> solveInterval(const DistributedProblem& problem, double lo, double hi,
                                         const EigenRequest& request, SolverStats& stats) {
     const Tallies before;
-    const int parts = currentProcessGroup().size;
+    const int parts = currentProcessGroup().partitions;
     OwnedEps eps;
     check(EPSCreate(PETSC_COMM_WORLD, eps.out()), request, "EPSCreate");
     EPS e = eps.get();

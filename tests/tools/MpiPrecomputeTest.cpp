@@ -36,15 +36,24 @@ velocity_modes = 20
 scalar_modes = 6
 )";
 
-TEST_F(Cli, TwoRanksComputeTheSingleProcessBasis) {
+class MpiPrecompute : public Cli {
+protected:
+    /// `mpirun MPIRUN_ARGS -n 2 modeflow precompute` of the hollow ball: its log says `line`,
+    /// rank 0 alone prints the cache path, and the basis is the one a single process computes.
+    void expectSingleProcessBasis(const std::string& mpirunArgs, const std::string& line) const;
+};
+
+void MpiPrecompute::expectSingleProcessBasis(const std::string& mpirunArgs,
+                                             const std::string& line) const {
     const std::string file = scene("hollow.toml", kHollowBall).string();
     const RunResult alone = run("precompute " + file + " --cache-dir " + (mDir / "alone").string());
     ASSERT_EQ(alone.status, 0) << alone.err;
-    const RunResult two = runProgram(
-        MODEFLOW_MPIRUN, "--allow-run-as-root --oversubscribe -n 2 " + testing::cliPath() +
-                             " precompute " + file + " --cache-dir " + (mDir / "two").string());
+    const RunResult two =
+        runProgram(MODEFLOW_MPIRUN, "--allow-run-as-root --oversubscribe " + mpirunArgs + " -n 2 " +
+                                        testing::cliPath() + " precompute " + file +
+                                        " --cache-dir " + (mDir / "two").string());
     ASSERT_EQ(two.status, 0) << two.err;
-    EXPECT_NE(two.err.find("precompute on 2 MPI ranks"), std::string::npos) << two.err;
+    EXPECT_NE(two.err.find(line), std::string::npos) << two.err;
     EXPECT_EQ(std::count(two.out.begin(), two.out.end(), '\n'), 1)
         << "only rank 0 prints the cache path: " << two.out;
 
@@ -65,6 +74,18 @@ TEST_F(Cli, TwoRanksComputeTheSingleProcessBasis) {
               1e-7)
         << "scalar spans";
     EXPECT_EQ(b.coefficients.packed.size(), a.coefficients.packed.size());
+}
+
+TEST_F(MpiPrecompute, TwoRanksComputeTheSingleProcessBasis) {
+    // One partition per rank: each rank solves its own subintervals.
+    expectSingleProcessBasis("", "precompute on 2 MPI ranks\n");
+}
+
+TEST_F(MpiPrecompute, OneFactorizationOverTwoRanksComputesTheSingleProcessBasis) {
+    // One partition: every factorization (MUMPS) spans both ranks.
+    expectSingleProcessBasis("-x PETSC_OPTIONS='-eps_krylovschur_partitions 1'",
+                             "precompute on 2 MPI ranks in 1 partition (each factorization on 2 "
+                             "ranks)");
 }
 
 }  // namespace
