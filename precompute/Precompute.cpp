@@ -332,7 +332,8 @@ CacheOutcome ensureCache(const SceneSpec& scene, const std::filesystem::path& ca
     }
     const PrecomputeMemory estimate = requirePrecomputeMemory(scene);
     // Sliced eigensolves keep their finished intervals beside the cache until it is written, so
-    // that an interrupted precompute resumes from them.
+    // that an interrupted precompute resumes from them; unless it is asked to solve afresh.
+    if (force && currentProcessGroup().primary()) removeSliceCheckpoints(outcome.path);
     const IntervalCheckpoints checkpoints{
         outcome.path, [&progress](const std::string& message) { progress.note(message); }};
     outcome.cache =

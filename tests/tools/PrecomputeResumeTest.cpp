@@ -111,5 +111,13 @@ TEST_F(PrecomputeResume, DamagedCheckpointsAreSolvedAgain) {
     expectSameBasis(uninterrupted(), readCache(resumed.out.substr(0, resumed.out.find('\n'))));
 }
 
+TEST_F(PrecomputeResume, ForcedPrecomputeSolvesEveryIntervalAgain) {
+    ASSERT_NE(interrupted(4).status, 0);
+    const RunResult forced = run(precompute(mScene, "--force"));
+    ASSERT_EQ(forced.status, 0) << forced.err;
+    EXPECT_EQ(forced.err.find("from an interrupted run"), std::string::npos) << forced.err;
+    EXPECT_TRUE(checkpoints(mCache).empty());
+}
+
 }  // namespace
 }  // namespace modeflow
