@@ -26,6 +26,7 @@
 #include "precompute/dec/DirichletScalarDec.h"
 #include "precompute/geometry/Domain.h"
 #include "precompute/solve/ProcessGroup.h"
+#include "precompute/solve/SliceCheckpoint.h"
 #include "precompute/solve/SpectralBasis.h"
 
 namespace modeflow {
@@ -171,7 +172,7 @@ void closedFormStages(const SceneSpec& scene, BasisCache& cache, Progress& progr
 
 /// The stages of the pipeline for a key already computed (hashing mesh files once per run).
 BasisCache computeStages(const SceneSpec& scene, std::string key, Progress& progress,
-                         BasisMethod method) {
+                         BasisMethod method, const IntervalCheckpoints& checkpoints) {
     BasisCache cache;
     cache.key = std::move(key);
     cache.grid = scene.grid;
@@ -219,8 +220,9 @@ BasisCache computeStages(const SceneSpec& scene, std::string key, Progress& prog
     const BasisSpec& basis = scene.basis;
     cache.scalar.boundary = basis.scalarBoundary;
     const bool neumannBasis = basis.scalarBoundary == ScalarBoundary::Neumann;
-    const ScalarBasisResult firstNeumann = solveNeumannScalarBasis(
-        dec, neumannBasis ? std::max(1, basis.scalarModes) : 1, counter, basis.eigensolver);
+    const ScalarBasisResult firstNeumann =
+        solveNeumannScalarBasis(dec, neumannBasis ? std::max(1, basis.scalarModes) : 1, counter,
+                                basis.eigensolver, checkpoints);
     ScalarBasisResult scalar;
     if (neumannBasis) {
         scalar = firstNeumann;
@@ -228,7 +230,8 @@ BasisCache computeStages(const SceneSpec& scene, std::string key, Progress& prog
         cache.scalar.cellStar = dec.cellStar;
     } else if (basis.scalarModes > 0) {
         const DirichletScalarDec ddec = buildDirichletScalarDec(complex, domain, basis.boundary);
-        scalar = solveDirichletScalarBasis(ddec, basis.scalarModes, counter, basis.eigensolver);
+        scalar = solveDirichletScalarBasis(ddec, basis.scalarModes, counter, basis.eigensolver,
+                                           checkpoints);
         cache.scalar.cells = ddec.cells.toGlobal;
         cache.scalar.cellStar = ddec.cellStar;
     }
@@ -245,7 +248,7 @@ BasisCache computeStages(const SceneSpec& scene, std::string key, Progress& prog
     progress.begin("velocity eigensolve");
     const VelocityBasisResult velocity =
         solveVelocityBasis(dec, basis.velocityModes, firstNeumann.eigenvalues[0],
-                           domainMeasure(dec.cellStar), counter, basis.eigensolver);
+                           domainMeasure(dec.cellStar), counter, basis.eigensolver, checkpoints);
     cache.velocity.eigenvalues = velocity.eigenvalues;
     cache.velocity.modes = velocity.modes;
     cache.velocity.modeNumbers = velocity.modeNumbers;
@@ -277,7 +280,8 @@ BasisCache computeStages(const SceneSpec& scene, std::string key, Progress& prog
 
 /// The pipeline, refused before any work when the estimate does not fit in memory.
 BasisCache computeBasis(const SceneSpec& scene, std::string key, Progress& progress,
-                        const PrecomputeMemory& estimate, BasisMethod method) {
+                        const PrecomputeMemory& estimate, BasisMethod method,
+                        const IntervalCheckpoints& checkpoints) {
     try {
         if (scene.isSurface()) {
             BasisCache cache = computeSurfaceStages(scene, std::move(key), progress);
@@ -286,7 +290,7 @@ BasisCache computeBasis(const SceneSpec& scene, std::string key, Progress& progr
                                    int(cache.velocity.modes.cols()));
             return cache;
         }
-        return computeStages(scene, std::move(key), progress, method);
+        return computeStages(scene, std::move(key), progress, method, checkpoints);
     } catch (const std::bad_alloc&) {
         throw outOfMemory(progress.stage(), estimate);
     }
@@ -296,7 +300,7 @@ BasisCache computeBasis(const SceneSpec& scene, std::string key, Progress& progr
 
 BasisCache computeBasis(const SceneSpec& scene, Progress& progress, BasisMethod method) {
     const PrecomputeMemory estimate = requirePrecomputeMemory(scene);
-    return computeBasis(scene, basisKey(scene), progress, estimate, method);
+    return computeBasis(scene, basisKey(scene), progress, estimate, method, {});
 }
 
 CacheOutcome ensureCache(const SceneSpec& scene, const std::filesystem::path& cacheDir, bool force,
@@ -327,7 +331,13 @@ CacheOutcome ensureCache(const SceneSpec& scene, const std::filesystem::path& ca
         return outcome;
     }
     const PrecomputeMemory estimate = requirePrecomputeMemory(scene);
-    outcome.cache = computeBasis(scene, key, progress, estimate, BasisMethod::Automatic);
+    // Sliced eigensolves keep their finished intervals beside the cache until it is written, so
+    // that an interrupted precompute resumes from them; unless it is asked to solve afresh.
+    if (force && currentProcessGroup().primary()) removeSliceCheckpoints(outcome.path);
+    const IntervalCheckpoints checkpoints{
+        outcome.path, [&progress](const std::string& message) { progress.note(message); }};
+    outcome.cache =
+        computeBasis(scene, key, progress, estimate, BasisMethod::Automatic, checkpoints);
     if (!currentProcessGroup().primary()) return outcome;
     progress.begin("write cache");
     try {
@@ -335,6 +345,7 @@ CacheOutcome ensureCache(const SceneSpec& scene, const std::filesystem::path& ca
     } catch (const std::bad_alloc&) {
         throw outOfMemory(progress.stage(), estimate);
     }
+    removeSliceCheckpoints(outcome.path);
     progress.end();
     return outcome;
 }

@@ -39,7 +39,9 @@ struct CacheOutcome {
 
 /// Returns the scene's cache, computing and writing it on a miss, or always when `force`.
 /// The cache folder is created and checked for writing before any work starts. A damaged or
-/// stale file under the scene's name is reported on the progress stream and rebuilt.
+/// stale file under the scene's name is reported on the progress stream and rebuilt. Sliced
+/// eigensolves keep their finished intervals beside the cache until it is written, and resume
+/// from those an interrupted run kept (precompute/solve/SliceCheckpoint.h); `force` discards them.
 /// Under mpirun (precompute/solve/ProcessGroup.h) every rank takes part in the eigensolves and
 /// rank 0 alone assembles the coefficients and writes the file: the other ranks' outcome holds
 /// the path and the bases only.

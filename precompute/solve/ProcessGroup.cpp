@@ -77,6 +77,14 @@ ProcessGroup currentProcessGroup() {
     ProcessGroup group;
     MPI_Comm_rank(PETSC_COMM_WORLD, &group.rank);
     MPI_Comm_size(PETSC_COMM_WORLD, &group.size);
+    PetscInt partitions = group.size;
+    PetscBool set = PETSC_FALSE;
+    PetscOptionsGetInt(nullptr, nullptr, "-eps_krylovschur_partitions", &partitions, &set);
+    if (set && (partitions < 1 || partitions > group.size))
+        throw Error("PETSC_OPTIONS: -eps_krylovschur_partitions " + std::to_string(partitions) +
+                    " must lie between 1 and the number of MPI ranks, " +
+                    std::to_string(group.size));
+    group.partitions = int(partitions);
     return group;
 }
 

@@ -11,16 +11,22 @@ namespace modeflow {
 struct ProcessGroup {
     int rank = 0;
     int size = 1;
+    /// Groups of ranks that solve spectrum subintervals side by side (SlicedEigensolver.h), each
+    /// factorizing with MUMPS on its size / partitions ranks: PETSc's option
+    /// -eps_krylovschur_partitions (PETSC_OPTIONS) where a user set it, else one per rank.
+    int partitions = 1;
     bool primary() const { return rank == 0; }
 };
 
 /// Called once at the start of `modeflow precompute`: under an MPI launcher (mpirun, srun:
 /// recognized by the environment it gives its processes) initializes MPI and PETSc so that every
-/// rank knows its place before any work; alone, initializes nothing and returns {0, 1}.
-/// @throw Error when MPI or PETSc cannot be initialized.
+/// rank knows its place before any work; alone, initializes nothing and returns {0, 1, 1}.
+/// @throw Error when MPI or PETSc cannot be initialized, or -eps_krylovschur_partitions is not
+///        between 1 and the number of ranks.
 ProcessGroup joinProcessGroup();
 
-/// The group as it stands: {0, 1} while MPI was never initialized.
+/// The group as it stands: {0, 1, 1} while MPI was never initialized.
+/// @throw Error as joinProcessGroup() for the partitions.
 ProcessGroup currentProcessGroup();
 
 /// Initializes MPI (a singleton group when no launcher started this process) and PETSc with

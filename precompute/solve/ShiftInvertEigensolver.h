@@ -4,6 +4,7 @@
 /// positive) by shift-invert Lanczos (Spectra) around a sparse Cholesky factorization (CHOLMOD).
 /// Spectra and CHOLMOD headers stay inside the .cpp.
 
+#include <filesystem>
 #include <functional>
 #include <string>
 
@@ -39,6 +40,13 @@ struct EigenPairs {
 /// Called with the number of solves done so far (for progress on a terminal).
 using SolveProgress = std::function<void(long operations)>;
 
+/// Where the sliced solver keeps its finished intervals, so that an interrupted precompute
+/// resumes from them (SliceCheckpoint.h), and how it says what it reused or refused.
+struct IntervalCheckpoints {
+    std::filesystem::path cachePath;  ///< the cache they are for; empty: none are kept
+    std::function<void(const std::string& message)> note;
+};
+
 struct EigenRequest {
     int count = 0;
     /// Shift σ < 0 below the spectrum: K − σM stays positive definite even when K has a
@@ -61,6 +69,7 @@ struct EigenRequest {
     /// (SlicedEigensolver.h).
     double estimate = 0.0;
     int spectralDimension = 3;
+    IntervalCheckpoints checkpoints{};  ///< used by the sliced solver only
 };
 
 /// @throw Error naming `what` when the factorization fails or Lanczos does not converge.

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <numeric>
 #include <optional>
 #include <string>
@@ -11,6 +12,7 @@
 #include "engine/core/Error.h"
 #include "precompute/solve/LibraryLeaks.h"
 #include "precompute/solve/ProcessGroup.h"
+#include "precompute/solve/SliceCheckpoint.h"
 
 namespace modeflow {
 namespace {
@@ -53,9 +55,11 @@ struct EventTally {
 };
 
 EventTally tally(const char* event) {
-    PetscLogEvent id = 0;
+    PetscLogEvent id = -1;
     PetscEventPerfInfo info{};
-    if (PetscLogEventGetId(event, &id) != 0 || PetscLogEventGetPerfInfo(0, id, &info) != 0)
+    // An event not registered yet (KSPSolve before the first KSP) has id −1, without an error.
+    if (PetscLogEventGetId(event, &id) != 0 || id < 0 ||
+        PetscLogEventGetPerfInfo(0, id, &info) != 0)
         return {};
     return {long(info.count), info.time};
 }
@@ -170,7 +174,7 @@ bool onEigenvalue(PetscErrorCode code) {
 std::optional<EigenPairs> solveInterval(const DistributedProblem& problem, double lo, double hi,
                                         const EigenRequest& request, SolverStats& stats) {
     const Tallies before;
-    const int parts = currentProcessGroup().size;
+    const int parts = currentProcessGroup().partitions;
     OwnedEps eps;
     check(EPSCreate(PETSC_COMM_WORLD, eps.out()), request, "EPSCreate");
     EPS e = eps.get();
@@ -276,6 +280,67 @@ double nextEnd(double end, long found, long wanted, int dimension) {
     return end * std::max(1.1, std::pow(ratio, 2.0 / dimension));
 }
 
+/// Interval `index` of the solve, starting at `lo`, as an interrupted run kept it: read by rank 0
+/// and sent to every rank, so that all resume the same intervals. Nothing when there is none, or
+/// when it cannot be trusted (damaged, foreign: said through the request's note).
+std::optional<SliceCheckpoint> resumedInterval(const EigenRequest& request, std::uint64_t problem,
+                                               int index, double lo, Eigen::Index rows) {
+    const IntervalCheckpoints& place = request.checkpoints;
+    if (place.cachePath.empty()) return std::nullopt;
+    std::optional<SliceCheckpoint> stored;
+    if (currentProcessGroup().primary()) {
+        const std::filesystem::path path = sliceCheckpointPath(place.cachePath, problem, index);
+        std::error_code ec;
+        if (std::filesystem::exists(path, ec)) try {
+                stored = readSliceCheckpoint(path, problem, index, lo, rows);
+            } catch (const Error& e) {
+                if (place.note) place.note(request.what + ": " + e.what() + "; solving it again");
+            }
+    }
+    if (currentProcessGroup().size == 1) return stored;
+    long count = stored ? long(stored->values.size()) : -1;
+    MPI_Bcast(&count, 1, MPI_LONG, 0, PETSC_COMM_WORLD);
+    if (count < 0) return std::nullopt;
+    if (!stored) {
+        stored.emplace();
+        stored->problem = problem;
+        stored->interval = index;
+        stored->lo = lo;
+        stored->values.resize(count);
+        stored->vectors.resize(rows, count);
+    }
+    MPI_Bcast(&stored->hi, 1, MPI_DOUBLE, 0, PETSC_COMM_WORLD);
+    MPI_Bcast(stored->values.data(), int(count), MPI_DOUBLE, 0, PETSC_COMM_WORLD);
+    // Column by column: a whole interval's vectors can exceed MPI's int count.
+    for (Eigen::Index c = 0; c < count; ++c)
+        MPI_Bcast(stored->vectors.col(c).data(), int(rows), MPI_DOUBLE, 0, PETSC_COMM_WORLD);
+    return stored;
+}
+
+/// Keeps a solved interval for a rerun (rank 0 writes it). A checkpoint that cannot be written
+/// costs only the resumption: the solve goes on, and says so.
+void keepInterval(const EigenRequest& request, const SliceCheckpoint& interval) {
+    const IntervalCheckpoints& place = request.checkpoints;
+    if (place.cachePath.empty() || !currentProcessGroup().primary()) return;
+    try {
+        writeSliceCheckpoint(
+            sliceCheckpointPath(place.cachePath, interval.problem, interval.interval), interval);
+    } catch (const Error& e) {
+        if (place.note) place.note(request.what + ": " + e.what() + "; going on without it");
+    }
+}
+
+/// A test hook (tests/tools/PrecomputeResumeTest.cpp): with MODEFLOW_TEST_STOP_AFTER_INTERVALS=k
+/// the process fails once it has solved and kept k intervals, as a precompute killed there.
+void stopWhereATestAsks(const EigenRequest& request) {
+    static long solved = 0;
+    ++solved;
+    const char* limit = std::getenv("MODEFLOW_TEST_STOP_AFTER_INTERVALS");
+    if (limit != nullptr && solved >= std::atol(limit))
+        throw Error(request.what + ": stopped after " + std::to_string(solved) +
+                    " intervals, as MODEFLOW_TEST_STOP_AFTER_INTERVALS asks");
+}
+
 }  // namespace
 
 std::vector<double> weylSubintervals(double lo, double hi, int parts, int dimension) {
@@ -307,8 +372,11 @@ EigenPairs slicedEigenpairs(const Eigen::SparseMatrix<double>& stiffness,
     k.makeCompressed();
     const DistributedProblem problem(k, massDiagonal, request);
 
-    std::vector<EigenPairs> intervals;
+    const std::uint64_t problemHash =
+        request.checkpoints.cachePath.empty() ? 0 : sliceProblemHash(k, massDiagonal, request);
+    std::vector<SliceCheckpoint> intervals;
     long found = 0;
+    int resumed = 0;
     double lo = request.shift, hi = 1.02 * request.estimate;
     EigenPairs out;
     constexpr int kMaxIntervals = 64;
@@ -317,27 +385,42 @@ EigenPairs slicedEigenpairs(const Eigen::SparseMatrix<double>& stiffness,
             throw Error(request.what + ": " + std::to_string(kMaxIntervals) +
                         " intervals of the spectrum held only " + std::to_string(found) + " of " +
                         std::to_string(request.count) + " eigenvalues");
-        std::optional<EigenPairs> pairs = solveInterval(problem, lo, hi, request, out.stats);
-        // An eigenvalue on the upper end (the lower one is the last interval's end, which was
-        // not singular) or on a shift: a slightly higher end, the next attempt.
-        for (int attempt = 0; !pairs; ++attempt) {
-            if (attempt == 3)
-                throw Error(request.what +
-                            ": the factorizations stayed singular or miscounted with every "
-                            "interval end tried near " +
-                            std::to_string(hi) + " (" + lastPetscErrorMessage() + ")");
-            hi += 1e-6 * (hi - lo);
-            pairs = solveInterval(problem, lo, hi, request, out.stats);
+        if (std::optional<SliceCheckpoint> stored =
+                resumedInterval(request, problemHash, interval, lo, n)) {
+            // Its end may be one moved off an eigenvalue (below): the sequence goes on from it.
+            hi = stored->hi;
+            intervals.push_back(std::move(*stored));
+            ++resumed;
+        } else {
+            std::optional<EigenPairs> pairs = solveInterval(problem, lo, hi, request, out.stats);
+            // An eigenvalue on the upper end (the lower one is the last interval's end, which was
+            // not singular) or on a shift: a slightly higher end, the next attempt.
+            for (int attempt = 0; !pairs; ++attempt) {
+                if (attempt == 3)
+                    throw Error(request.what +
+                                ": the factorizations stayed singular or miscounted with every "
+                                "interval end tried near " +
+                                std::to_string(hi) + " (" + lastPetscErrorMessage() + ")");
+                hi += 1e-6 * (hi - lo);
+                pairs = solveInterval(problem, lo, hi, request, out.stats);
+            }
+            intervals.push_back({problemHash, interval, lo, hi, std::move(pairs->values),
+                                 std::move(pairs->vectors)});
+            keepInterval(request, intervals.back());
+            stopWhereATestAsks(request);
         }
-        intervals.push_back(std::move(*pairs));
         found += long(intervals.back().values.size());
         lo = hi;
         hi = nextEnd(hi, found, request.count, request.spectralDimension);
     }
+    if (resumed > 0 && request.checkpoints.note)
+        request.checkpoints.note(request.what + ": " + std::to_string(resumed) + " of " +
+                                 std::to_string(intervals.size()) +
+                                 " intervals from an interrupted run");
     out.values.resize(found);
     out.vectors.resize(n, found);
     Eigen::Index column = 0;
-    for (const EigenPairs& pairs : intervals) {
+    for (const SliceCheckpoint& pairs : intervals) {
         const Eigen::Index c = pairs.values.size();
         out.values.segment(column, c) = pairs.values;
         out.vectors.middleCols(column, c) = pairs.vectors;

@@ -6,11 +6,15 @@
 /// counts the eigenvalues below every shift, so none is lost or found twice. Per mode the cost
 /// stays about flat as the count grows, where one shift-invert Lanczos run around one shift
 /// (ShiftInvertEigensolver.h) slows down. Under `mpirun -n K` the subintervals run on the K ranks
-/// (SLEPc's partitions) and every rank receives every pair. PETSc and SLEPc stay inside the .cpp.
+/// (SLEPc's partitions: one per rank, or as many as PETSc's option -eps_krylovschur_partitions
+/// says, each factorizing with MUMPS on its K / partitions ranks) and every rank receives every
+/// pair. PETSc and SLEPc stay inside the .cpp.
 ///
 /// The intervals: the first runs from `request.shift` to a little above `request.estimate`;
 /// while fewer than `count` eigenvalues are found, the next one starts where the last ended and
-/// reaches where N(λ) ∝ λ^{d/2} (Weyl), fitted to the count so far, puts the rest.
+/// reaches where N(λ) ∝ λ^{d/2} (Weyl), fitted to the count so far, puts the rest. With
+/// `request.checkpoints` set, every finished interval is kept beside the cache (SliceCheckpoint.h)
+/// and the intervals an interrupted run kept are read instead of solved.
 
 #include <vector>
 

@@ -105,11 +105,13 @@ double scalarWeylEstimate(int dim, int n, double measure) {
 }
 
 EigenRequest scalarRequest(int count, const GridSpec& grid, const Eigen::VectorXd& cellStar,
-                           const char* what, const SolveProgress& progress) {
+                           const char* what, const SolveProgress& progress,
+                           const IntervalCheckpoints& checkpoints) {
     EigenRequest request{
         count, -1e-2 * referenceEigenvalue(grid), 1e-12, what, progress, grid.anyPeriodic()};
     request.estimate = scalarWeylEstimate(grid.dim, count, domainMeasure(cellStar));
     request.spectralDimension = grid.dim;
+    request.checkpoints = checkpoints;
     return request;
 }
 
@@ -144,33 +146,36 @@ void projectAndRefine(const CutCellDec& dec, EigenPairs& pairs) {
 }  // namespace
 
 ScalarBasisResult solveNeumannScalarBasis(const CutCellDec& dec, int count,
-                                          const SolveProgress& progress, EigensolverChoice choice) {
+                                          const SolveProgress& progress, EigensolverChoice choice,
+                                          const IntervalCheckpoints& checkpoints) {
     const int constants = connectedComponents(dec);
     const std::int64_t available = dec.cells.size() - constants;
     if (count > available)
         throw Error("[basis].scalar_modes = " + std::to_string(count) + ": the domain holds only " +
                     plural(available, "non-constant Neumann scalar mode"));
-    const EigenRequest request = scalarRequest(count + constants, dec.grid, dec.cellStar,
-                                               "scalar (Neumann) eigensolve", progress);
+    const EigenRequest request =
+        scalarRequest(count + constants, dec.grid, dec.cellStar, "scalar (Neumann) eigensolve",
+                      progress, checkpoints);
     return fromPairs(lowestEigenpairs(neumannScalarLaplacian(dec), dec.cellStar, request, choice),
                      constants);
 }
 
 ScalarBasisResult solveDirichletScalarBasis(const DirichletScalarDec& dec, int count,
-                                            const SolveProgress& progress,
-                                            EigensolverChoice choice) {
+                                            const SolveProgress& progress, EigensolverChoice choice,
+                                            const IntervalCheckpoints& checkpoints) {
     if (count > dec.cells.size())
         throw Error("[basis].scalar_modes = " + std::to_string(count) + ": the domain holds only " +
                     plural(dec.cells.size(), "Dirichlet scalar mode"));
-    const EigenRequest request =
-        scalarRequest(count, dec.grid, dec.cellStar, "scalar (Dirichlet) eigensolve", progress);
+    const EigenRequest request = scalarRequest(
+        count, dec.grid, dec.cellStar, "scalar (Dirichlet) eigensolve", progress, checkpoints);
     return fromPairs(lowestEigenpairs(dirichletScalarLaplacian(dec), dec.cellStar, request, choice),
                      0);
 }
 
 VelocityBasisResult solveVelocityBasis(const CutCellDec& dec, const std::vector<ModeRange>& ranges,
                                        double firstNeumannEigenvalue, double domainMeasure,
-                                       const SolveProgress& progress, EigensolverChoice choice) {
+                                       const SolveProgress& progress, EigensolverChoice choice,
+                                       const IntervalCheckpoints& checkpoints) {
     int highest = 0;
     for (const ModeRange& r : ranges) highest = std::max(highest, r.last);
     const std::int64_t available = divergenceFreeDimension(dec);
@@ -191,6 +196,7 @@ VelocityBasisResult solveVelocityBasis(const CutCellDec& dec, const std::vector<
                          progress, dec.grid.anyPeriodic()};
     request.estimate = weylEstimate(dec.grid.dim, highest, domainMeasure);
     request.spectralDimension = dec.grid.dim;
+    request.checkpoints = checkpoints;
     EigenPairs pairs;
     SolverStats stats;
     for (int attempt = 0;; ++attempt) {

@@ -50,12 +50,14 @@ int connectedComponents(const CutCellDec& dec);
 /// cells − components because walls carry no flux).
 std::int64_t divergenceFreeDimension(const CutCellDec& dec);
 
-/// The first `count` non-constant Neumann scalar modes.
+/// The first `count` non-constant Neumann scalar modes. `checkpoints`: where sliced solves keep
+/// their finished intervals (SliceCheckpoint.h; empty: nowhere).
 ScalarBasisResult solveNeumannScalarBasis(const CutCellDec& dec, int count,
-                                          const SolveProgress& progress, EigensolverChoice choice);
+                                          const SolveProgress& progress, EigensolverChoice choice,
+                                          const IntervalCheckpoints& checkpoints);
 ScalarBasisResult solveDirichletScalarBasis(const DirichletScalarDec& dec, int count,
-                                            const SolveProgress& progress,
-                                            EigensolverChoice choice);
+                                            const SolveProgress& progress, EigensolverChoice choice,
+                                            const IntervalCheckpoints& checkpoints);
 
 /// The div-free modes in `ranges` (1-based, of the div-free spectrum, harmonic ones first).
 /// Gradient eigenfields are pushed above the wanted range with a grad-div penalty chosen from
@@ -64,7 +66,8 @@ ScalarBasisResult solveDirichletScalarBasis(const DirichletScalarDec& dec, int c
 /// @throw Error when the ranges ask for more modes than the div-free space holds.
 VelocityBasisResult solveVelocityBasis(const CutCellDec& dec, const std::vector<ModeRange>& ranges,
                                        double firstNeumannEigenvalue, double domainMeasure,
-                                       const SolveProgress& progress, EigensolverChoice choice);
+                                       const SolveProgress& progress, EigensolverChoice choice,
+                                       const IntervalCheckpoints& checkpoints);
 
 /// Reference eigenvalue scale (π/L)², L the largest extent of the grid box: shifts are relative to
 /// it, and it anchors the search for the first non-zero κ² that decides which modes are harmonic.

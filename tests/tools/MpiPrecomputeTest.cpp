@@ -36,15 +36,30 @@ velocity_modes = 20
 scalar_modes = 6
 )";
 
-TEST_F(Cli, TwoRanksComputeTheSingleProcessBasis) {
-    const std::string file = scene("hollow.toml", kHollowBall).string();
-    const RunResult alone = run("precompute " + file + " --cache-dir " + (mDir / "alone").string());
+class MpiPrecompute : public Cli {
+protected:
+    /// `mpirun MPIRUN_ARGS -n 2 modeflow precompute` of the hollow ball into the folder "two".
+    RunResult runTwoRanks(const std::string& mpirunArgs) const {
+        return runProgram(MODEFLOW_MPIRUN, "--allow-run-as-root --oversubscribe " + mpirunArgs +
+                                               " -n 2 " + testing::cliPath() + " precompute " +
+                                               mScene.string() + " --cache-dir " +
+                                               (mDir / "two").string());
+    }
+    /// runTwoRanks(mpirunArgs): its log says `line`, rank 0 alone prints the cache path, and the
+    /// basis is the one a single process computes.
+    void expectSingleProcessBasis(const std::string& mpirunArgs, const std::string& line) const;
+
+    const fs::path mScene = scene("hollow.toml", kHollowBall);
+};
+
+void MpiPrecompute::expectSingleProcessBasis(const std::string& mpirunArgs,
+                                             const std::string& line) const {
+    const RunResult alone =
+        run("precompute " + mScene.string() + " --cache-dir " + (mDir / "alone").string());
     ASSERT_EQ(alone.status, 0) << alone.err;
-    const RunResult two = runProgram(
-        MODEFLOW_MPIRUN, "--allow-run-as-root --oversubscribe -n 2 " + testing::cliPath() +
-                             " precompute " + file + " --cache-dir " + (mDir / "two").string());
+    const RunResult two = runTwoRanks(mpirunArgs);
     ASSERT_EQ(two.status, 0) << two.err;
-    EXPECT_NE(two.err.find("precompute on 2 MPI ranks"), std::string::npos) << two.err;
+    EXPECT_NE(two.err.find(line), std::string::npos) << two.err;
     EXPECT_EQ(std::count(two.out.begin(), two.out.end(), '\n'), 1)
         << "only rank 0 prints the cache path: " << two.out;
 
@@ -65,6 +80,31 @@ TEST_F(Cli, TwoRanksComputeTheSingleProcessBasis) {
               1e-7)
         << "scalar spans";
     EXPECT_EQ(b.coefficients.packed.size(), a.coefficients.packed.size());
+}
+
+TEST_F(MpiPrecompute, TwoRanksComputeTheSingleProcessBasis) {
+    // One partition per rank: each rank solves its own subintervals.
+    expectSingleProcessBasis("", "precompute on 2 MPI ranks\n");
+}
+
+TEST_F(MpiPrecompute, OneFactorizationOverTwoRanksComputesTheSingleProcessBasis) {
+    // One partition: every factorization (MUMPS) spans both ranks.
+    expectSingleProcessBasis("-x PETSC_OPTIONS='-eps_krylovschur_partitions 1'",
+                             "precompute on 2 MPI ranks in 1 partition (each factorization on 2 "
+                             "ranks)");
+}
+
+TEST_F(MpiPrecompute, InterruptedPrecomputeResumesOnEveryRank) {
+    // Stopped (a test hook) once the first interval, the Neumann scalar solve's only one, is kept.
+    const RunResult stopped = runTwoRanks("-x MODEFLOW_TEST_STOP_AFTER_INTERVALS=1");
+    ASSERT_NE(stopped.status, 0);
+    EXPECT_NE(stopped.err.find("stopped after 1 intervals"), std::string::npos) << stopped.err;
+    // Every rank reads rank 0's checkpoint, or the ranks would disagree and hang or differ.
+    expectSingleProcessBasis("",
+                             "scalar (Neumann) eigensolve: 1 of 1 intervals from an "
+                             "interrupted run");
+    for (const auto& e : fs::directory_iterator(mDir / "two"))
+        EXPECT_NE(e.path().extension(), ".mfslice") << "left after the cache was written";
 }
 
 }  // namespace

@@ -6,6 +6,21 @@
 #include "tools/modeflow/Commands.h"
 
 namespace modeflow::cli {
+namespace {
+
+/// "precompute on 4 MPI ranks", and when partitions are fewer than ranks "in 2 partitions
+/// (each factorization on 2 ranks)".
+std::string rankLine(const ProcessGroup& group) {
+    std::string line = "precompute on " + std::to_string(group.size) + " MPI ranks";
+    if (group.partitions == group.size) return line;
+    const int least = group.size / group.partitions;
+    return line + " in " + std::to_string(group.partitions) +
+           (group.partitions == 1 ? " partition" : " partitions") + " (each factorization on " +
+           (group.size % group.partitions == 0 ? "" : "at least ") + std::to_string(least) +
+           " ranks)";
+}
+
+}  // namespace
 
 Command addPrecompute(CLI::App& app) {
     struct Options {
@@ -30,8 +45,7 @@ Command addPrecompute(CLI::App& app) {
         const ProcessGroup group = joinProcessGroup();
         const SceneSpec scene = loadScene(opts->scene);
         Progress progress = group.primary() ? Progress::toStderr() : Progress::silent();
-        if (group.size > 1)
-            progress.note("precompute on " + std::to_string(group.size) + " MPI ranks");
+        if (group.size > 1) progress.note(rankLine(group));
         const CacheOutcome outcome =
             ensureCache(scene, resolveCacheDir(opts->cacheDir), opts->force, progress);
         if (!group.primary()) return 0;
