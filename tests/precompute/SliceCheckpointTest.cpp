@@ -11,29 +11,13 @@
 
 #include "precompute/solve/SliceCheckpoint.h"
 #include "precompute/solve/SlicedEigensolver.h"
+#include "tests/support/ChainLaplacian.h"
 #include "tests/support/TestFolder.h"
 
 namespace modeflow {
 namespace {
 
 namespace fs = std::filesystem;
-
-/// 1D Dirichlet Laplacian on n interior points of [0, 1] (K = tridiag(−1, 2, −1)/h, M = h): simple
-/// eigenvalues 4 sin²(jπh/2)/h².
-Eigen::SparseMatrix<double> chain(int n) {
-    const double h = 1.0 / (n + 1);
-    std::vector<Eigen::Triplet<double>> t;
-    for (int i = 0; i < n; ++i) {
-        t.emplace_back(i, i, 2.0 / h);
-        if (i + 1 < n) {
-            t.emplace_back(i, i + 1, -1.0 / h);
-            t.emplace_back(i + 1, i, -1.0 / h);
-        }
-    }
-    Eigen::SparseMatrix<double> k(n, n);
-    k.setFromTriplets(t.begin(), t.end());
-    return k;
-}
 
 constexpr int kRows = 2000, kCount = 90;
 const double kMass = 1.0 / (kRows + 1);
@@ -46,7 +30,8 @@ EigenPairs solve(const fs::path& cache, std::vector<std::string>& notes) {
     const double s = std::sin(kCount * M_PI * kMass / 2.0);
     request.estimate = 0.3 * 4.0 * s * s / (kMass * kMass);
     request.checkpoints = {cache, [&notes](const std::string& m) { notes.push_back(m); }};
-    return slicedEigenpairs(chain(kRows), Eigen::VectorXd::Constant(kRows, kMass), request);
+    return slicedEigenpairs(testing::chainLaplacian(kRows), Eigen::VectorXd::Constant(kRows, kMass),
+                            request);
 }
 
 std::vector<fs::path> checkpointFiles(const fs::path& folder) {

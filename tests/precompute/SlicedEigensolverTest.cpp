@@ -6,26 +6,10 @@
 
 #include "precompute/solve/ShiftInvertEigensolver.h"
 #include "precompute/solve/SlicedEigensolver.h"
+#include "tests/support/ChainLaplacian.h"
 
 namespace modeflow {
 namespace {
-
-/// 1D Dirichlet Laplacian on n interior points of [0, 1] (h = 1/(n+1)), mass h:
-/// λ_j = (2/h)² sin²(jπh/2) / … scaled by the mass: K x = λ M x with K = tridiag(−1, 2, −1)/h.
-Eigen::SparseMatrix<double> chain(int n) {
-    const double h = 1.0 / (n + 1);
-    std::vector<Eigen::Triplet<double>> t;
-    for (int i = 0; i < n; ++i) {
-        t.emplace_back(i, i, 2.0 / h);
-        if (i + 1 < n) {
-            t.emplace_back(i, i + 1, -1.0 / h);
-            t.emplace_back(i + 1, i, -1.0 / h);
-        }
-    }
-    Eigen::SparseMatrix<double> k(n, n);
-    k.setFromTriplets(t.begin(), t.end());
-    return k;
-}
 
 double chainEigenvalue(int n, int j) {
     const double h = 1.0 / (n + 1), s = std::sin(j * M_PI * h / 2.0);
@@ -41,7 +25,8 @@ TEST(SlicedEigensolver, ChainSpectrumExact) {
         false};
     request.spectralDimension = 1;
     request.estimate = 0.5 * chainEigenvalue(n, count);  // too low on purpose: a second interval
-    const EigenPairs pairs = slicedEigenpairs(chain(n), Eigen::VectorXd::Constant(n, h), request);
+    const EigenPairs pairs =
+        slicedEigenpairs(testing::chainLaplacian(n), Eigen::VectorXd::Constant(n, h), request);
     ASSERT_EQ(pairs.values.size(), count);
     double worst = 0.0;
     for (int j = 1; j <= count; ++j)
