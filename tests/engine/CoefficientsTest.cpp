@@ -11,9 +11,11 @@
 
 #include "engine/core/Error.h"
 #include "engine/core/PackedLayout.h"
+#include "engine/dynamics/CachedCoefficients.h"
 #include "engine/dynamics/DenseCoefficients.h"
 #include "engine/dynamics/SparseCoefficients.h"
 #include "tests/support/RandomCoefficients.h"
+#include "tests/support/SyntheticBases.h"
 
 namespace modeflow {
 namespace {
@@ -201,6 +203,21 @@ TEST(Coefficients, MismatchedVectorsThrow) {
                      Error);
         EXPECT_THROW(c->advect(Eigen::VectorXd::Ones(4), Eigen::VectorXd::Ones(5), out), Error);
     }
+}
+
+TEST(Coefficients, ARunTakesTheCachesTensorInsteadOfCopyingIt) {
+    // A run keeps its coefficients once: the cache is left without them, and they are the ones
+    // a copy would have given.
+    BasisCache cache = testing::syntheticBasis(testing::boxGrid(2, 8), 6, 3);
+    ASSERT_EQ(cache.coefficients.storage, BasisCache::Coefficients::Storage::Dense);
+    const auto copied = coefficientsFromCache(cache);
+    const auto taken = takeCoefficientsFromCache(cache);
+    EXPECT_EQ(cache.coefficients.storage, BasisCache::Coefficients::Storage::None);
+    EXPECT_TRUE(cache.coefficients.packed.empty());
+    for (int k = 0; k < 6; ++k)
+        for (int i = 0; i < 6; ++i)
+            for (int j = 0; j < 6; ++j)
+                ASSERT_EQ(taken->entry(k, i, j), copied->entry(k, i, j)) << k << i << j;
 }
 
 }  // namespace
