@@ -23,7 +23,7 @@ struct PairSumsParams {
                      */
     uint firstPair;
     uint pairCount;
-    uint pad0;
+    uint n;
 };
 
 /* The sparse rows: rowCount rows of entries, each row one pair k < j (sliced:
@@ -31,16 +31,17 @@ struct PairSumsParams {
 struct SparsePairSumsParams {
     uint n;
     uint rowCount;
+    uint rowFloats; /* floats per row of the pair-sum matrix (modal_combine.comp) */
     uint pad0;
-    uint pad1;
 };
 
-/* modal_combine.comp: N outputs. */
+/* modal_combine.comp: N outputs; modal_pair_sums*.comp write the N x N matrix of pair sums, rows
+   of rowTexels texels (4 floats each: N padded as a modal vector). */
 struct CombineParams {
     uint n;
+    uint rowTexels;
     uint pad0;
     uint pad1;
-    uint pad2;
 };
 
 /* The Lie advection out_i = sum_kj C[k][i][j] u_k x_j of a stored tensor (MHD's induction term,
@@ -76,6 +77,9 @@ struct AdvectSumParams {
     5u                          /* r0 = R(x) kept, y = x + h M^-1 (r0 + f) (explicit predictor) */
 #define MODAL_OP_TRAPEZOIDAL 6u /* one fixed-point iteration of the trapezoidal rule */
 #define MODAL_OP_TRAPEZOIDAL_END 7u /* x = y, half decay; no r */
+/* Directions of the implicit iterations' Anderson acceleration (modal_update.comp): its history
+   holds 2 ANDERSON_DEPTH + 2 state-sized vectors. */
+#define ANDERSON_DEPTH 5
 
 struct ModalUpdateParams {
     uint n;
@@ -87,9 +91,9 @@ struct ModalUpdateParams {
     uint stride;        /* floats per part of the state (n padded) */
     uint parts;         /* 1: the fluid's v; 2: MHD's [v; F], each part at a multiple of stride */
     uint lorentz;       /* MHD: subtract r[2 stride + k] (C(F, F)) from the velocity part of r */
+    uint anderson;      /* implicit rules: 1 accelerates the fixed-point iteration */
     uint pad0;
     uint pad1;
-    uint pad2;
 };
 
 /* The status block modal_update.comp keeps for the host. */

@@ -14,16 +14,16 @@ using uint = std::uint32_t;
 #define SEPARABLE_NONE 0xFFFFFFFFu
 
 /* One pass along one axis: lines of inLength values (fastest) in d1 x d2 of them, each taken
-   through the outLength x inLength table; the output has the axes rotated (d1 fastest, d2, then
-   outLength). */
+   through the outLength x inLength table (stored j-major in texels: separable_pass.comp); the
+   output has the axes rotated (d1 fastest, d2, then outLength). */
 struct SeparablePassParams {
     uint d1;
     uint d2;
     uint inLength;
     uint outLength;
-    uint inOffset;    /* first value of the input tensor in its buffer */
-    uint outOffset;   /* first value of the output tensor in its buffer */
-    uint tableOffset; /* first entry of the table in the tables buffer */
+    uint inOffset;   /* first value of the input tensor in its buffer */
+    uint outOffset;  /* first value of the output tensor in its buffer */
+    uint tableTexel; /* first texel of the table in the tables buffer */
     uint pad0;
 };
 

@@ -59,7 +59,11 @@ float dualCellTemperature(uvec3 pos) {
                 const int step = UP == 1u ? j : k;  // position along up within the dual cell
                 float w = step == 0 || step == ALONG - 1 ? END_WEIGHT : 1.0;
                 if ((params.periodic & (1u << UP)) != 0u) {
-                    c[UP] = (c[UP] + smokeCells[UP]) % smokeCells[UP];  // REACH < one period
+                    // REACH < one period; selects, not %: lavapipe divides lane by lane, and
+                    // runs both sides of this `if` (with the mask also left out where no smoke
+                    // cell is solid, the 3D box at 64^3: 7.2 -> 4.6 ms a buoyancy pass).
+                    const int n = smokeCells[UP];
+                    c[UP] += c[UP] < 0 ? n : (c[UP] >= n ? -n : 0);
                 } else {
                     if (c[UP] < 0 || c[UP] >= smokeCells[UP]) w = 0.0;
                     c[UP] = clamp(c[UP], 0, smokeCells[UP] - 1);  // read in bounds, weigh 0

@@ -2,9 +2,9 @@
 // First half of the dense structural-coefficient contraction (README.md "Reduced dynamics", seed eq. 6.6),
 // float32. For every stored pair p = (k, j), k < j, of one chunk of the packed coefficients:
 //
-//     sums[p] = sum_i C[k][i][j] a_i
+//     sums(k, j) = sum_i C[k][i][j] a_i,   stored as U[k][j] (modal_combine.comp)
 //
-// modal_update.comp then forms out_k = sum_{j>k} sums(k,j) b_j - sum_{j<k} sums(j,k) b_j, using
+// modal_combine.comp then forms out_k = sum_{j>k} U[k][j] b_j - sum_{j<k} U[j][k] b_j, using
 // C[j][i][k] = -C[k][i][j]. Each coefficient is read exactly once per contraction: the kernel is a
 // GEMV over the (pairs x N) matrix of the chunk, and bandwidth-bound.
 //
@@ -39,6 +39,21 @@ layout(std430, set = 0, binding = 2) buffer Sums { float sums[]; };
 layout(push_constant) uniform Push { PairSumsParams params; };
 
 const uint LANES = PAIR_TILE_LANES;
+
+uint pairIndex(uint n, uint k, uint j) { return k * n - k * (k + 1u) / 2u + (j - k - 1u); }
+
+// Pair p = (k, j) of the packed order (engine/core/PackedLayout.h) into U (modal_combine.comp):
+// k from the quadratic formula in float, then corrected to the exact row.
+void storePairSum(uint p, float value) {
+    const uint n = params.n;
+    const float b = float(2u * n - 1u);
+    uint k = uint(max(0.0, floor(0.5 * (b - sqrt(max(0.0, b * b - 8.0 * float(p)))))));
+    k = min(k, n - 2u);
+    while (k > 0u && pairIndex(n, k, k + 1u) > p) --k;
+    while (k + 2u < n && pairIndex(n, k + 1u, k + 2u) <= p) ++k;
+    const uint j = p - pairIndex(n, k, k + 1u) + k + 1u;
+    sums[k * 8u * params.rowOctets + j] = value;
+}
 const uint ROWS = PAIR_TILE_ROWS / PAIR_TILE_LANES;  // rows per invocation
 
 void main() {
@@ -59,7 +74,7 @@ void main() {
         }
         [[unroll]] for (uint r = 0; r < ROWS; ++r) {
             const uint row = tile * PAIR_TILE_ROWS + r * LANES + lane;
-            if (row < params.pairCount) sums[params.firstPair + row] = sum[r];
+            if (row < params.pairCount) storePairSum(params.firstPair + row, sum[r]);
         }
     }
 }

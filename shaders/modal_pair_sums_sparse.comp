@@ -2,7 +2,8 @@
 // modal_pair_sums.comp for sparse coefficients (engine/dynamics/SparseCoefficients.h): rows are
 // the pairs k < j with any non-zero, each a run of (i, value) entries, and
 //
-//     sums[pairIndex(k, j)] = sum over the row's entries of value * a_i.
+//     sums(k, j) = sum over the row's entries of value * a_i,  stored as U[k][j]
+//     (modal_combine.comp).
 //
 // Pairs without a row keep the zero their sum was initialized with. One invocation per row,
 // grid-stride. Layout (engine/device/DeviceCoefficients::slicedRows), sliced ELLPACK: the rows,
@@ -18,7 +19,7 @@
 
 layout(local_size_x = 64, local_size_x_id = 0) in;
 
-// Per row: pair index, first texel of its slice, texels per row of the slice, 0.
+// Per row: k, first texel of its slice, texels per row of the slice, j.
 layout(set = 0, binding = 0) uniform usamplerBuffer rows;
 // Two (column, value bits) entries a texel.
 layout(set = 0, binding = 1) uniform usamplerBuffer entries;
@@ -38,6 +39,6 @@ void main() {
             const uvec4 pair = texelFetch(entries, int(record.y + t * PAIR_TILE_LANES + lane));
             sum += uintBitsToFloat(pair.y) * aAt(pair.x) + uintBitsToFloat(pair.w) * aAt(pair.z);
         }
-        sums[record.x] = sum;
+        sums[record.x * params.rowFloats + record.w] = sum;
     }
 }

@@ -12,7 +12,8 @@
 //   RK4_STAGE s   k_s = M^-1 (r + f);  acc += w_s k_s (w = 1 2 2 1);  y = x + c_s h k_s (c = 1/2 1/2 1),
 //                 after stage 3: x <- exp(-d h/2) (x + h/6 acc)
 //   MIDPOINT      fixed point of seed eq. 6.8 in the midpoint ybar = (x + x')/2:
-//                 y <- x + h/2 M^-1 (R(y) + f); when max|change| <= tolerance max|y| (or the change
+//                 y <- x + h/2 M^-1 (R(y) + f), Anderson-accelerated (iterate() below); when
+//                 max|change| <= tolerance max|y| (or the change
 //                 stalls at the round-off floor below 16 tolerance) the step has converged and the
 //                 live indirect arguments are zeroed, so the remaining recorded iterations
 //                 dispatch no work (no host round trip).
@@ -25,6 +26,8 @@
 // Both fixed points converge when h |dR/dy| / 2 < 1 (the step's CFL-like number); the status block
 // counts steps that reached the iteration limit so the host can report them.
 #extension GL_GOOGLE_include_directive : require
+#extension GL_KHR_shader_subgroup_basic : require
+#extension GL_KHR_shader_subgroup_arithmetic : require
 #include "ModalStepParams.h"
 
 layout(local_size_x = 256, local_size_x_id = 0) in;
@@ -39,14 +42,155 @@ layout(std430, set = 0, binding = 6) readonly buffer Decay { float decay[]; };
 layout(std430, set = 0, binding = 7) buffer Accumulator { float acc[]; };
 layout(std430, set = 0, binding = 8) buffer Status { ModalStatus status; };
 layout(std430, set = 0, binding = 9) buffer Arguments { uint arguments[]; };
+// The implicit iterations' history (Anderson acceleration, see iterate).
+layout(std430, set = 0, binding = 10) buffer History { float history[]; };
 layout(push_constant) uniform Push { ModalUpdateParams params; };
 
-shared float changeMax[gl_WorkGroupSize.x];
-shared float sizeMax[gl_WorkGroupSize.x];
+// Subgroup partial sums, then their sums: SUMS values per iteration (see iterate).
+#define MAX_SUBGROUPS 64
+#define SUMS (2 + ANDERSON_DEPTH * (ANDERSON_DEPTH + 1) / 2 + ANDERSON_DEPTH)
+shared float partial[MAX_SUBGROUPS][SUMS];
+shared float solution[ANDERSON_DEPTH];
 
 void setPoint(uint k, float value) {
     y[k] = value;
     a[k] = mass[k] * value;
+}
+
+bool inState(uint k) { return k % params.stride < params.n; }  // not padding between the parts
+
+// R(y)_k from r (MHD with the Lorentz force: the velocity part less C(F, F)).
+float rhs(uint k) {
+    return params.lorentz != 0u && k < params.stride ? r[k] - r[2u * params.stride + k] : r[k];
+}
+
+// The fixed-point map g(y)_k of the implicit rules (see the header).
+float fixedPointMap(uint k) {
+    if (params.op == MODAL_OP_MIDPOINT) return x[k] + 0.5 * params.h * (rhs(k) + f[k]) / mass[k];
+    return x[k] + (0.5 * params.h * (acc[k] + rhs(k)) + params.h * f[k]) / mass[k];
+}
+
+// Entry k of history vector `slot` (history layout: see iterate).
+uint at(uint slot, uint k) { return slot * params.parts * params.stride + k; }
+
+// The workgroup's sums of `values` (max for the first two), in partial[0] after the call.
+void reduceWorkgroup(float values[SUMS]) {
+    float reduced[SUMS];
+    reduced[0] = subgroupMax(values[0]);
+    reduced[1] = subgroupMax(values[1]);
+    for (int v = 2; v < SUMS; ++v) reduced[v] = subgroupAdd(values[v]);
+    if (subgroupElect())
+        for (int v = 0; v < SUMS; ++v) partial[gl_SubgroupID][v] = reduced[v];
+    barrier();
+    if (gl_LocalInvocationID.x == 0) {
+        for (uint g = 1; g < gl_NumSubgroups; ++g) {
+            partial[0][0] = max(partial[0][0], partial[g][0]);
+            partial[0][1] = max(partial[0][1], partial[g][1]);
+            for (int v = 2; v < SUMS; ++v) partial[0][v] += partial[g][v];
+        }
+    }
+    barrier();
+}
+
+// Solves (D^T D) c = D^T F for the `used` columns of the history (Gram entries and right-hand
+// side from partial[0]) by Cholesky, into solution[]; a column whose pivot falls below 1e-6 of
+// its diagonal (nearly dependent on the later ones) is dropped (its coefficient 0).
+void solveLeastSquares(uint used) {
+    float l[ANDERSON_DEPTH][ANDERSON_DEPTH];
+    float z[ANDERSON_DEPTH];
+    bool kept[ANDERSON_DEPTH];
+    int e = 2;
+    for (int i = 0; i < ANDERSON_DEPTH; ++i)
+        for (int j = 0; j <= i; ++j) l[i][j] = partial[0][e++];
+    for (int i = 0; i < ANDERSON_DEPTH; ++i) z[i] = partial[0][e++];
+    for (int i = 0; i < ANDERSON_DEPTH; ++i) {
+        kept[i] = false;
+        solution[i] = 0.0;
+        if (i >= int(used)) continue;
+        float d = l[i][i];
+        for (int k = 0; k < i; ++k) d -= l[i][k] * l[i][k];
+        if (!(d > 1e-6 * l[i][i])) {
+            for (int k = 0; k < i; ++k) l[i][k] = 0.0;
+            continue;
+        }
+        kept[i] = true;
+        l[i][i] = sqrt(d);
+        for (int j = i + 1; j < int(used); ++j) {
+            float v = l[j][i];
+            for (int k = 0; k < i; ++k) v -= l[j][k] * l[i][k];
+            l[j][i] = v / l[i][i];
+        }
+        for (int k = 0; k < i; ++k) z[i] -= l[i][k] * z[k];
+        z[i] /= l[i][i];
+    }
+    for (int i = int(used) - 1; i >= 0; --i) {
+        if (!kept[i]) { z[i] = 0.0; continue; }
+        for (int k = i + 1; k < int(used); ++k) z[i] -= l[k][i] * z[k];
+        z[i] /= l[i][i];
+        solution[i] = z[i];
+    }
+}
+
+// One implicit iteration, Anderson-accelerated (Walker & Ni 2011, depth m = ANDERSON_DEPTH): with
+// the map's values g_i = g(y_i) and residuals F_i = g_i - y_i of the last iterations, and the
+// columns D_i = F_{i+1} - F_i, E_i = g_{i+1} - g_i of the last m,
+//     c = argmin |F_m - D c|,   y_{m+1} = g_m - E c,
+// a GMRES-like step over the last m directions. Plain iteration contracts by the step's
+// h |dR/dy| / 2 per iteration, and that Jacobian of the advection term has nearly imaginary
+// eigenvalues: close to 1 (an energetic flow at a large step) plain iteration takes dozens of
+// iterations and a one-direction secant hardly helps, where m directions cut them several fold
+// (ModalStepKernelTest; README "Speed"). The first iteration of a step is the plain one. Converged,
+// as before, when max|F| <= tolerance max|g|. History (binding 10): D in slots 0..m-1, E in
+// m..2m-1, the last F and g in 2m and 2m + 1, each parts * stride floats.
+void iterate(uint lane, uint size) {
+    const uint m = ANDERSON_DEPTH;
+    const uint iteration = status.iterations;
+    const bool accelerated = params.anderson != 0u && iteration > 0u;
+    const uint slot = accelerated ? (iteration - 1u) % m : 0u;
+    const uint used = accelerated ? min(iteration, m) : 0u;
+    float sums[SUMS];
+    for (int v = 0; v < SUMS; ++v) sums[v] = 0.0;
+    for (uint k = lane; k < params.parts * params.stride; k += size) {
+        if (!inState(k)) continue;
+        const float g = fixedPointMap(k);
+        const float residual = g - y[k];
+        sums[0] = max(sums[0], abs(residual));
+        sums[1] = max(sums[1], abs(g));
+        if (accelerated) {
+            history[at(slot, k)] = residual - history[at(2u * m, k)];
+            history[at(m + slot, k)] = g - history[at(2u * m + 1u, k)];
+            float column[ANDERSON_DEPTH];
+            for (uint i = 0; i < m; ++i) column[i] = i < used ? history[at(i, k)] : 0.0;
+            int e = 2;
+            for (uint i = 0; i < m; ++i)
+                for (uint j = 0; j <= i; ++j) sums[e++] += column[i] * column[j];
+            for (uint i = 0; i < m; ++i) sums[e++] += column[i] * residual;
+        }
+        history[at(2u * m, k)] = residual;
+        history[at(2u * m + 1u, k)] = g;
+    }
+    reduceWorkgroup(sums);
+    if (lane == 0 && accelerated) solveLeastSquares(used);
+    barrier();
+    for (uint k = lane; k < params.parts * params.stride; k += size) {
+        if (!inState(k)) continue;
+        float next = history[at(2u * m + 1u, k)];
+        for (uint i = 0; i < used; ++i) next -= solution[i] * history[at(m + i, k)];
+        setPoint(k, next);
+    }
+    if (lane != 0) return;
+    const float residual = partial[0][1] > 0.0 ? partial[0][0] / partial[0][1] : 0.0;
+    // Converged at the tolerance, or at float32's round-off floor just above it: the change
+    // no longer halves, so more iterations would only shuffle the last bits.
+    const bool stalled = iteration > 0 && residual <= 16.0 * params.tolerance &&
+                         residual > 0.5 * status.residual;
+    status.iterations += 1;
+    status.residual = residual;
+    if (residual <= params.tolerance || stalled) {
+        status.converged = 1;
+        const uint words = 3 * params.argumentCount;
+        for (uint e = 0; e < params.argumentCount; ++e) arguments[words + 3 * e] = 0;
+    }
 }
 
 void main() {
@@ -55,12 +199,15 @@ void main() {
     const uint size = gl_WorkGroupSize.x;
     const float h = params.h;
     const uint op = params.op;
+    if (op == MODAL_OP_MIDPOINT || op == MODAL_OP_TRAPEZOIDAL) {
+        iterate(lane, size);
+        return;
+    }
 
-    float change = 0.0, magnitude = 0.0;
     for (uint k = lane; k < params.parts * params.stride; k += size) {
-        if (k % params.stride >= n) continue;  // padding between the parts
+        if (!inState(k)) continue;
         const float halfDecay = exp(-0.5 * h * decay[k]);
-        const float rk = params.lorentz != 0u && k < params.stride ? r[k] - r[2u * params.stride + k] : r[k];
+        const float rk = rhs(k);
         if (op == MODAL_OP_BEGIN) {
             x[k] *= halfDecay;
             setPoint(k, x[k]);
@@ -72,11 +219,6 @@ void main() {
             acc[k] = (s == 0 ? 0.0 : acc[k]) + (s == 0 || s == 3 ? 1.0 : 2.0) * slope;
             if (s < 3) setPoint(k, x[k] + (s == 2 ? 1.0 : 0.5) * h * slope);
             else x[k] = halfDecay * (x[k] + h / 6.0 * acc[k]);
-        } else if (op == MODAL_OP_MIDPOINT) {
-            const float next = x[k] + 0.5 * h * (rk + f[k]) / mass[k];
-            change = max(change, abs(next - y[k]));
-            magnitude = max(magnitude, abs(next));
-            setPoint(k, next);
         } else if (op == MODAL_OP_MIDPOINT_END) {
             // An iteration that did not converge may be diverging (h |dR/dv| / 2 > 1): keep the
             // state rather than step to a wild iterate; the host then takes smaller substeps.
@@ -84,11 +226,6 @@ void main() {
         } else if (op == MODAL_OP_TRAPEZOIDAL_START) {
             acc[k] = rk;
             setPoint(k, x[k] + h * (rk + f[k]) / mass[k]);
-        } else if (op == MODAL_OP_TRAPEZOIDAL) {
-            const float next = x[k] + (0.5 * h * (acc[k] + rk) + h * f[k]) / mass[k];
-            change = max(change, abs(next - y[k]));
-            magnitude = max(magnitude, abs(next));
-            setPoint(k, next);
         } else if (op == MODAL_OP_TRAPEZOIDAL_END) {
             x[k] = halfDecay * (status.converged != 0u ? y[k] : x[k]);  // as MIDPOINT_END
         }
@@ -102,31 +239,4 @@ void main() {
     }
     const bool ending = op == MODAL_OP_MIDPOINT_END || op == MODAL_OP_TRAPEZOIDAL_END;
     if (ending && lane == 0 && status.converged == 0) status.unconverged += 1;
-    if (op != MODAL_OP_MIDPOINT && op != MODAL_OP_TRAPEZOIDAL) return;
-
-    // Max-reduce the change and the size of y across the workgroup (any size, not only 2^k).
-    changeMax[lane] = change;
-    sizeMax[lane] = magnitude;
-    barrier();
-    for (uint stride = 1; stride < size; stride *= 2) {
-        if (lane % (2 * stride) == 0 && lane + stride < size) {
-            changeMax[lane] = max(changeMax[lane], changeMax[lane + stride]);
-            sizeMax[lane] = max(sizeMax[lane], sizeMax[lane + stride]);
-        }
-        barrier();
-    }
-    if (lane == 0) {
-        const float residual = sizeMax[0] > 0.0 ? changeMax[0] / sizeMax[0] : 0.0;
-        // Converged at the tolerance, or at float32's round-off floor just above it: the change
-        // no longer halves, so more iterations would only shuffle the last bits.
-        const bool stalled = status.iterations > 0 && residual <= 16.0 * params.tolerance &&
-                             residual > 0.5 * status.residual;
-        status.iterations += 1;
-        status.residual = residual;
-        if (residual <= params.tolerance || stalled) {
-            status.converged = 1;
-            const uint words = 3 * params.argumentCount;
-            for (uint e = 0; e < params.argumentCount; ++e) arguments[words + 3 * e] = 0;
-        }
-    }
 }

@@ -53,9 +53,16 @@ DeviceCoefficients::DeviceCoefficients(const vulkan::VulkanContext& context,
         mStreamedBytes = mTensorFree->streamedBytes();
         return;
     }
-    // Zero first: sparse storage leaves the sums of pairs without entries untouched.
+    // The N x N matrix of pair sums (modal_combine.comp), read as texels. Zero first: sparse
+    // storage leaves the sums of pairs without entries, and the diagonal, untouched.
+    const std::size_t sumBytes = n * paddedSize(mN) * sizeof(float);
+    if (sumBytes > context.texelBufferLimit())
+        throw Error("modal contraction: the pair sums of N = " + std::to_string(n) + " modes (" +
+                    std::to_string(sumBytes) + " bytes) exceed the " +
+                    std::to_string(context.texelBufferLimit()) + "-byte buffer limit of " +
+                    context.deviceName() + "; use fewer modes or --device cpu");
     mPairSums.emplace(vulkan::DeviceBuffer::fromValues<float>(
-        context, std::vector<float>(pairCount(n), 0.0f), "pair sums"));
+        context, std::vector<float>(n * paddedSize(mN), 0.0f), "pair sums"));
 
     if (const auto* dense = dynamic_cast<const DenseCoefficients*>(&coefficients)) {
         const std::size_t rowOctets = paddedSize(mN) / 8, rowBytes = paddedSize(mN) * sizeof(float);
@@ -105,7 +112,7 @@ DeviceCoefficients::DeviceCoefficients(const vulkan::VulkanContext& context,
 /// (entries 2t and 2t + 1) of each row side by side.
 DeviceCoefficients::SparseRows DeviceCoefficients::slicedRows(const vulkan::VulkanContext& context,
                                                               const SparseCoefficients& sparse) {
-    const std::size_t rows = sparse.pairK().size(), n = std::size_t(sparse.size());
+    const std::size_t rows = sparse.pairK().size();
     const auto length = [&](std::size_t r) {
         return sparse.rowStart()[r + 1] - sparse.rowStart()[r];
     };
@@ -121,10 +128,10 @@ DeviceCoefficients::SparseRows DeviceCoefficients::slicedRows(const vulkan::Vulk
         entries.resize(entries.size() + texels * kSliceRows * 4, 0u);  // padding: column 0, value 0
         for (std::size_t lane = 0; lane < kSliceRows && first + lane < rows; ++lane) {
             const std::size_t r = order[first + lane], row = first + lane;
-            records[4 * row] = std::uint32_t(
-                pairIndex(n, std::size_t(sparse.pairK()[r]), std::size_t(sparse.pairJ()[r])));
+            records[4 * row] = std::uint32_t(sparse.pairK()[r]);
             records[4 * row + 1] = std::uint32_t(sliceStart);
             records[4 * row + 2] = std::uint32_t(texels);
+            records[4 * row + 3] = std::uint32_t(sparse.pairJ()[r]);
             for (std::size_t e = 0; e < length(r); ++e) {
                 const std::size_t source = sparse.rowStart()[r] + e;
                 const std::size_t word =
@@ -247,6 +254,7 @@ std::vector<std::uint32_t> DeviceCoefficients::dispatchGroups(bool sameVectors) 
         // A tile per kPairTileLanes invocations of 64.
         groups.push_back(groupsFor(chunk.pairs, kPairTileRows * 64 / kPairTileLanes, mMaxGroups));
     groups.push_back(groupsFor(std::size_t(mN), mSubgroupsPerGroup, mMaxGroups));
+    groups.push_back(groupsFor(paddedSize(mN) / 4, 64, mMaxGroups));
     return groups;
 }
 
@@ -255,7 +263,7 @@ void DeviceCoefficients::recordApply(vulkan::CommandSequence& sequence, const Mo
                                      const vulkan::DeviceBuffer& out,
                                      IndirectArguments indirect) const {
     requireFloats(a, int(paddedSize(mN)));
-    requireFloats(b, mN);
+    requireFloats(b, int(paddedSize(mN)));
     requireFloats(out, mN);
     if (mTensorFree) {
         mTensorFree->recordApply(sequence, a, b, out, indirect);
@@ -273,17 +281,20 @@ void DeviceCoefficients::recordApply(vulkan::CommandSequence& sequence, const Mo
     if (mSparse) {
         const std::array<const vulkan::DeviceBuffer*, 4> buffers{&mSparse->rows, &mSparse->entries,
                                                                  &a, &*mPairSums};
-        dispatch(kernels.sparsePairSums, buffers,
-                 shaders::SparsePairSumsParams{n, mSparse->rowCount, 0, 0});
+        dispatch(
+            kernels.sparsePairSums, buffers,
+            shaders::SparsePairSumsParams{n, mSparse->rowCount, std::uint32_t(paddedSize(mN)), 0});
     }
     for (const Chunk& chunk : mChunks) {
         const std::array<const vulkan::DeviceBuffer*, 3> buffers{&chunk.values, &a, &*mPairSums};
         dispatch(kernels.pairSums, buffers,
                  shaders::PairSumsParams{std::uint32_t(paddedSize(mN) / 8), chunk.firstPair,
-                                         chunk.pairs, 0});
+                                         chunk.pairs, n});
     }
     const std::array<const vulkan::DeviceBuffer*, 3> buffers{&*mPairSums, &b, &out};
-    dispatch(kernels.combine, buffers, shaders::CombineParams{n, 0, 0, 0});
+    const shaders::CombineParams combine{n, std::uint32_t(paddedSize(mN) / 4), 0, 0};
+    dispatch(kernels.combine, buffers, combine);
+    dispatch(kernels.combineColumns, buffers, combine);
 }
 
 }  // namespace modeflow::device

@@ -4,7 +4,9 @@
 /// out_k = Σ_ij C[k][i][j] a_i b_j (CPU reference: StructuralCoefficients::apply), in two passes
 /// that read every stored coefficient once:
 ///   1. pair sums  s(k,j) = Σ_i C[k][i][j] a_i for every pair k < j (a GEMV over the packed rows),
-///   2. combine    out_k = Σ_{j>k} s(k,j) b_j − Σ_{j<k} s(j,k) b_j   (antisymmetry).
+///   2. combine    out_k = Σ_{j>k} s(k,j) b_j − Σ_{j<k} s(j,k) b_j   (antisymmetry): the first
+///      pass writes s into the upper triangle of an N × N matrix U, and out = U b − Uᵀ b in two
+///      passes over U read as texels (shaders/ModalCombine.glsl has why).
 /// Dense coefficients are stored in tiles of PAIR_TILE_ROWS pair rows (shaders/modal_pair_sums.comp
 /// has the layout and why) and split into chunks of whole tiles when they exceed the device's
 /// buffer limit (VulkanContext::texelBufferLimit; lavapipe: 128 MiB, i.e. N ≳ 400); sparse ones

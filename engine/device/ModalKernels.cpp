@@ -10,6 +10,7 @@
 #include "shaders/modal_advect_sparse.spv.h"
 #include "shaders/modal_advect_sum.spv.h"
 #include "shaders/modal_combine.spv.h"
+#include "shaders/modal_combine_columns.spv.h"
 #include "shaders/modal_pair_sums.spv.h"
 #include "shaders/modal_pair_sums_sparse.spv.h"
 #include "shaders/modal_pair_weights.spv.h"
@@ -43,9 +44,18 @@ ModalKernels::ModalKernels(const vulkan::VulkanContext& context)
                                64,
                                {},
                                {0, 1, 2}}),
-      combine(context, {"modal_combine", modal_combine_spv, 3, sizeof(shaders::CombineParams), 64}),
+      combine(
+          context,
+          {"modal_combine", modal_combine_spv, 3, sizeof(shaders::CombineParams), 64, {}, {0, 1}}),
+      combineColumns(context, {"modal_combine_columns",
+                               modal_combine_columns_spv,
+                               3,
+                               sizeof(shaders::CombineParams),
+                               64,
+                               {},
+                               {0, 1}}),
       update(context,
-             {"modal_update", modal_update_spv, 10, sizeof(shaders::ModalUpdateParams), 256}),
+             {"modal_update", modal_update_spv, 11, sizeof(shaders::ModalUpdateParams), 256}),
       pairWeights(context, {"modal_pair_weights", modal_pair_weights_spv, 3,
                             sizeof(shaders::CombineParams), 64}),
       advectDense(context, {"modal_advect_dense",

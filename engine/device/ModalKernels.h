@@ -20,7 +20,8 @@ struct ModalKernels {
     vulkan::ComputeKernel
         pairSums;  ///< dense: sums[p] = Σ_i C_p[i] a_i, a tile of pairs per 8 invocations
     vulkan::ComputeKernel sparsePairSums;  ///< sparse rows: one invocation per stored pair
-    vulkan::ComputeKernel combine;         ///< out_k from the pair sums and b, one subgroup per k
+    vulkan::ComputeKernel combine;         ///< out = U b from the pair sums U, a subgroup per k
+    vulkan::ComputeKernel combineColumns;  ///< then out -= Uᵀ b, an invocation per 4 outputs
     vulkan::ComputeKernel update;          ///< the integrators' state updates, one workgroup
     vulkan::ComputeKernel pairWeights;     ///< dense advection: w(k,j) = u_k x_j − u_j x_k
     vulkan::ComputeKernel advectDense;     ///< dense advection: partial sums over groups of tiles

@@ -73,6 +73,8 @@ ModalStepper::ModalStepper(const vulkan::VulkanContext& context,
       mMass(zeros(context, mParts * mStride, "modal mass")),
       mDecay(zeros(context, mParts * mStride, "modal decay rates")),
       mAccumulator(zeros(context, mParts * mStride, "modal accumulator")),
+      mHistory(
+          zeros(context, (2 * ANDERSON_DEPTH + 2) * mParts * mStride, "modal iteration history")),
       mStatus(vulkan::DeviceBuffer::fromValues<shaders::ModalStatus>(
           context, std::vector<shaders::ModalStatus>(1), "modal status")),
       mArguments(context, 4, "modal indirect arguments") {
@@ -240,9 +242,9 @@ void ModalStepper::recordEvaluation(vulkan::CommandSequence& sequence,
 
 void ModalStepper::recordUpdate(vulkan::CommandSequence& sequence, std::uint32_t op,
                                 std::uint32_t stage, double h, bool indirect) const {
-    const std::array<const vulkan::DeviceBuffer*, 10> buffers{
-        &mState, &mPoint, &mWeighted,    &mRhs,    &mForce,
-        &mMass,  &mDecay, &mAccumulator, &mStatus, &mArguments};
+    const std::array<const vulkan::DeviceBuffer*, 11> buffers{
+        &mState, &mPoint,       &mWeighted, &mRhs,       &mForce,  &mMass,
+        &mDecay, &mAccumulator, &mStatus,   &mArguments, &mHistory};
     const shaders::ModalUpdateParams params{std::uint32_t(size()),
                                             op,
                                             stage,
@@ -252,7 +254,7 @@ void ModalStepper::recordUpdate(vulkan::CommandSequence& sequence, std::uint32_t
                                             mStride,
                                             mParts,
                                             mLorentz ? 1u : 0u,
-                                            0,
+                                            mSettings.accelerated ? 1u : 0u,
                                             0,
                                             0};
     if (indirect)

@@ -60,8 +60,13 @@ SeparableTransformKernels::SeparableTransformKernels(const vulkan::VulkanContext
       mScratchB(context, 4),
       mDofValues(context, 4),
       mDofInput(context, 4),
-      mPassKernel(context, {"separable_pass", separable_pass_spv, 3,
-                            sizeof(shaders::SeparablePassParams), kWorkgroup}),
+      mPassKernel(context, {"separable_pass",
+                            separable_pass_spv,
+                            3,
+                            sizeof(shaders::SeparablePassParams),
+                            kWorkgroup,
+                            {},
+                            {0}}),
       mGatherKernel(context, {"separable_gather", separable_gather_spv, 4,
                               sizeof(shaders::SeparableGatherParams), kWorkgroup}),
       mScatterKernel(context, {"separable_scatter", separable_scatter_spv, 3,
@@ -89,12 +94,21 @@ SeparableTransformKernels::SeparableTransformKernels(const vulkan::VulkanContext
         for (int axis = 0; axis < 3; ++axis) {
             const std::vector<double> table = host.factorTable(normal, axis);  // P × K
             const std::uint32_t rows = p[std::size_t(axis)], cols = k[std::size_t(axis)];
-            const auto synthesisOffset = std::uint32_t(tables.size());
-            tables.insert(tables.end(), table.begin(), table.end());
-            const auto analysisOffset = std::uint32_t(tables.size());
-            for (std::uint32_t c = 0; c < cols; ++c)
-                for (std::uint32_t r = 0; r < rows; ++r)
-                    tables.push_back(float(table[std::size_t(r) * cols + c]));
+            // Input-major, outputs in blocks of four a texel (separable_pass.comp): synthesis
+            // (positions from slots) the table's columns, analysis (slots from positions) its rows.
+            const auto store = [&](std::uint32_t outputs, std::uint32_t inputs, bool transposed) {
+                const std::uint32_t blocks = (outputs + 3) / 4;
+                const auto texel = std::uint32_t(tables.size() / 4);
+                tables.resize(tables.size() + std::size_t(inputs) * blocks * 4, 0.0f);
+                for (std::uint32_t j = 0; j < inputs; ++j)
+                    for (std::uint32_t q = 0; q < outputs; ++q)
+                        tables[(std::size_t(texel) + std::size_t(j) * blocks) * 4 + q] =
+                            float(transposed ? table[std::size_t(q) * cols + j]
+                                             : table[std::size_t(j) * cols + q]);
+                return texel;
+            };
+            const std::uint32_t synthesisOffset = store(rows, cols, true);
+            const std::uint32_t analysisOffset = store(cols, rows, false);
             // Before pass `axis`, the axes before it are done (positions, or slots in analysis).
             std::array<std::uint32_t, 3> before = k, after = p;
             if (axis >= 1) before[0] = p[0], after[0] = k[0];
@@ -196,11 +210,13 @@ void SeparableTransformKernels::recordPasses(vulkan::CommandSequence& sequence, 
         params.outLength = pass.outLength;
         params.inOffset = axis == 0 ? inOffset : 0;
         params.outOffset = axis == 2 ? outOffset : 0;
-        params.tableOffset = pass.tableOffset;
+        params.tableTexel = pass.tableTexel;
         const std::array<const vulkan::DeviceBuffer*, 3> buffers{&mTables, chain[std::size_t(axis)],
                                                                  chain[std::size_t(axis) + 1]};
-        const std::uint64_t outputs = std::uint64_t(pass.d1) * pass.d2 * pass.outLength;
-        sequence.dispatch(mPassKernel, buffers, params, groupsFor(mContext, outputs, kWorkgroup));
+        const std::uint64_t invocations =
+            std::uint64_t(pass.d1) * pass.d2 * ((pass.outLength + 3) / 4);
+        sequence.dispatch(mPassKernel, buffers, params,
+                          groupsFor(mContext, invocations, kWorkgroup));
     }
 }
 

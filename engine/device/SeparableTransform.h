@@ -51,7 +51,7 @@ public:
 private:
     /// One axis pass's shape and table.
     struct Pass {
-        std::uint32_t d1, d2, inLength, outLength, tableOffset;
+        std::uint32_t d1, d2, inLength, outLength, tableTexel;
     };
     /// Records the three passes of component `normal` (synthesis or analysis).
     void recordPasses(vulkan::CommandSequence& sequence, int normal, bool synthesis,

@@ -107,8 +107,10 @@ void Simulation::recordStep(std::vector<std::size_t>& boundaries) {
     }
     boundaries.push_back(mSequence.dispatchCount());
     if (forcesActive()) {
-        mForceField.record(mSequence, mSettings.buoyancy, mSmoke.temperature(), &mSmoke.mask(),
-                           mForceDensity);
+        // Without solid smoke cells the mask leaves every weight as it is: skip its loads.
+        const bool solidCells = std::int64_t(mSmoke.fluidCellCount()) < mSmoke.cellCount();
+        mForceField.record(mSequence, mSettings.buoyancy, mSmoke.temperature(),
+                           solidCells ? &mSmoke.mask() : nullptr, mForceDensity);
         if (mSeparable)
             mSeparable->recordProjection(mSequence, mForceDensity, mStepper.forceBuffer());
         else

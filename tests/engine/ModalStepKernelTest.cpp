@@ -197,6 +197,36 @@ TEST_P(ModalStepKernelTest, MidpointConservesEnergyOver1000Steps) {
     }
 }
 
+TEST_P(ModalStepKernelTest, AccelerationCutsTheIterationsOfLargeSteps) {
+    // A step of h|R|/|v| = 0.7: the plain fixed-point iteration contracts slowly there (the
+    // advection Jacobian's eigenvalues are nearly imaginary), Anderson's directions fast; both
+    // reach the same fixed point, the CPU reference's.
+    const double h = stepFor(mC, mV0, 0.7);
+    const FluidSystem system(mC, {});
+    for (const Integrator scheme : {Integrator::Midpoint, Integrator::Trapezoidal}) {
+        ModalIntegrator cpu(system, {scheme});
+        Eigen::VectorXd expected = mV0;
+        cpu.step(expected, h, Eigen::VectorXd::Zero(kModes));
+        int iterations[2] = {0, 0};
+        for (const bool accelerated : {false, true}) {
+            DeviceStepSettings settings{scheme};
+            settings.maxIterations = 200;
+            settings.accelerated = accelerated;
+            ModalStepper stepper(context(), mC, {}, settings);
+            stepper.setState(mV0);
+            runDevice(context(), stepper, h, 1);
+            ASSERT_TRUE(stepper.status().converged) << sceneKeyword(scheme) << accelerated;
+            iterations[accelerated] = stepper.status().iterations;
+            EXPECT_LE(relativeDifference(stepper.state(), expected), 1e-5)
+                << sceneKeyword(scheme) << (accelerated ? " accelerated" : " plain");
+        }
+        std::cout << sceneKeyword(scheme) << ", h|R|/|v| = 0.7: " << iterations[0]
+                  << " plain iterations, " << iterations[1] << " accelerated\n";
+        EXPECT_LE(2 * iterations[1], iterations[0]) << sceneKeyword(scheme);
+    }
+    expectNoValidationMessages();
+}
+
 TEST_P(ModalStepKernelTest, StepsThatMissTheToleranceAreCounted) {
     DeviceStepSettings settings;
     settings.maxIterations = 1;
