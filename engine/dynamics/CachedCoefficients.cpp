@@ -11,13 +11,6 @@ namespace {
 
 using Storage = BasisCache::Coefficients::Storage;
 
-std::vector<CoefficientEntry> entriesOf(const BasisCache::Coefficients& c) {
-    std::vector<CoefficientEntry> entries(c.value.size());
-    for (std::size_t e = 0; e < entries.size(); ++e)
-        entries[e] = {c.k[e], c.i[e], c.j[e], c.value[e]};
-    return entries;
-}
-
 /// The coefficients of `cache`'s velocity modes from `tensor`, its stored tensor (a copy or
 /// moved out of it).
 std::unique_ptr<StructuralCoefficients> coefficientsOf(const BasisCache& cache,
@@ -40,12 +33,13 @@ std::unique_ptr<StructuralCoefficients> coefficientsOf(const BasisCache& cache,
         if (requested != CoefficientStorage::Sparse) return dense;
         return std::make_unique<SparseCoefficients>(SparseCoefficients::fromDense(*dense));
     }
-    std::vector<CoefficientEntry> entries = entriesOf(tensor);
-    if (requested != CoefficientStorage::Dense) {
-        tensor = {};  // copied into entries: freed before they are sorted
-        return std::make_unique<SparseCoefficients>(n, std::move(entries));
-    }
-    const SparseCoefficients checked(n, std::move(entries));  // refuses entries out of range
+    if (requested != CoefficientStorage::Dense)
+        return std::make_unique<SparseCoefficients>(
+            SparseCoefficients::fromLists(n, std::move(tensor.k), std::move(tensor.i),
+                                          std::move(tensor.j), std::move(tensor.value)));
+    // Refuses entries out of range.
+    const SparseCoefficients checked =
+        SparseCoefficients::fromLists(n, tensor.k, tensor.i, tensor.j, tensor.value);
     std::vector<double> packed(packedSize(std::size_t(n)), 0.0);
     for (std::size_t e = 0; e < tensor.value.size(); ++e)
         packed[packedIndex(std::size_t(n), std::size_t(tensor.k[e]), std::size_t(tensor.i[e]),

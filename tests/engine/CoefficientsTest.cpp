@@ -5,6 +5,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numeric>
+#include <random>
+#include <type_traits>
 #include <vector>
 
 #include <Eigen/Core>
@@ -96,6 +99,37 @@ TEST(SparseCoefficients, RejectsBadEntries) {
     EXPECT_EQ(c.entry(2, 3, 0), -1.5);
     EXPECT_EQ(c.entry(3, 1, 1), 2.0);
     EXPECT_EQ(c.entry(0, 0, 2), 0.0);
+}
+
+TEST(SparseCoefficients, ListsInAnyOrderGiveTheSameRows) {
+    // A cache's lists come in the assembler's order (by wave-vector group), not by pair.
+    const SparseCoefficients sorted = SparseCoefficients::fromDense(randomDense(25, 7, 0.2));
+    std::vector<std::int32_t> k, i, j;
+    std::vector<double> value;
+    for (std::size_t r = 0; r < sorted.pairK().size(); ++r)
+        for (std::size_t t = sorted.rowStart()[r]; t < sorted.rowStart()[r + 1]; ++t) {
+            k.push_back(sorted.pairK()[r]);
+            i.push_back(sorted.columns()[t]);
+            j.push_back(sorted.pairJ()[r]);
+            value.push_back(sorted.values()[t]);
+        }
+    std::vector<std::size_t> order(value.size());
+    std::iota(order.begin(), order.end(), std::size_t(0));
+    std::shuffle(order.begin(), order.end(), std::mt19937(3));
+    const auto permuted = [&](const auto& list) {
+        std::remove_const_t<std::remove_reference_t<decltype(list)>> out;
+        for (std::size_t e : order) out.push_back(list[e]);
+        return out;
+    };
+    const SparseCoefficients shuffled =
+        SparseCoefficients::fromLists(25, permuted(k), permuted(i), permuted(j), permuted(value));
+    EXPECT_EQ(shuffled.pairK(), sorted.pairK());
+    EXPECT_EQ(shuffled.pairJ(), sorted.pairJ());
+    EXPECT_EQ(shuffled.rowStart(), sorted.rowStart());
+    EXPECT_EQ(shuffled.columns(), sorted.columns());
+    EXPECT_EQ(shuffled.values(), sorted.values());
+    EXPECT_THROW(SparseCoefficients::fromLists(4, {0}, {1}, {2, 3}, {1.0}), Error);  // lengths
+    EXPECT_THROW(SparseCoefficients::fromLists(4, {0, 0}, {1, 1}, {2, 2}, {1.0, 2.0}), Error);
 }
 
 /// Every contraction of `c` against the definitions, for one random (a, b).
