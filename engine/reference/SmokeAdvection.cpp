@@ -65,6 +65,9 @@ std::vector<Vec3> SmokeAdvection::backtrace(std::span<const double> velocity, do
         return sampleVelocityGrid(mBasis, velocity, basisPoint);
     };
     std::vector<Vec3> traces(mMask.size());
+    // Every loop over the cells below writes its own cell only: split over OpenMP's threads
+    // (one result whatever their count).
+#pragma omp parallel for schedule(static)
     for (int z = 0; z < mSmoke.cells[2]; ++z)
         for (int y = 0; y < mSmoke.cells[1]; ++y)
             for (int x = 0; x < mSmoke.cells[0]; ++x) {
@@ -83,7 +86,9 @@ std::vector<Vec3> SmokeAdvection::backtrace(std::span<const double> velocity, do
 std::vector<double> SmokeAdvection::semiLagrangian(std::span<const double> field,
                                                    const std::vector<Vec3>& traces) const {
     std::vector<double> result(field.size(), 0.0);
-    for (std::size_t c = 0; c < field.size(); ++c)
+    const auto cells = std::int64_t(field.size());
+#pragma omp parallel for schedule(static)
+    for (std::int64_t c = 0; c < cells; ++c)
         if (mMask[c]) result[c] = sampleFluid(mSmoke, mMask, field, traces[c], field[c]).value;
     return result;
 }
@@ -96,7 +101,9 @@ std::vector<double> SmokeAdvection::advectAlong(std::span<const double> field,
     if (scheme == AdvectionScheme::SemiLagrangian) return forward;
     const std::vector<double> backward = semiLagrangian(forward, ahead);
     std::vector<double> result(field.size(), 0.0);
-    for (std::size_t c = 0; c < field.size(); ++c) {
+    const auto cells = std::int64_t(field.size());
+#pragma omp parallel for schedule(static)
+    for (std::int64_t c = 0; c < cells; ++c) {
         if (!mMask[c]) continue;
         const FluidSample bounds = sampleFluid(mSmoke, mMask, field, back[c], field[c]);
         const double corrected = forward[c] + 0.5 * (field[c] - backward[c]);
