@@ -23,8 +23,9 @@
 //                 y <- x + h/2 M^-1 (R(x) + R(y)) + h M^-1 f, converged as MIDPOINT
 //   TRAPEZOIDAL_END  x <- exp(-d h/2) y; an unconverged step keeps x (decay only)
 //
-// Both fixed points converge when h |dR/dy| / 2 < 1 (the step's CFL-like number); the status block
-// counts steps that reached the iteration limit so the host can report them.
+// Plainly iterated, both fixed points converge when h |dR/dy| / 2 < 1 (the step's CFL-like number),
+// accelerated often beyond; the status block counts steps that reached the iteration limit so the
+// host can report them.
 #extension GL_GOOGLE_include_directive : require
 #extension GL_KHR_shader_subgroup_basic : require
 #extension GL_KHR_shader_subgroup_arithmetic : require
@@ -139,8 +140,8 @@ void solveLeastSquares(uint used) {
 // h |dR/dy| / 2 per iteration, and that Jacobian of the advection term has nearly imaginary
 // eigenvalues: close to 1 (an energetic flow at a large step) plain iteration takes dozens of
 // iterations and a one-direction secant hardly helps, where m directions cut them several fold
-// (ModalStepKernelTest; README "Speed"). The first iteration of a step is the plain one. Converged,
-// as before, when max|F| <= tolerance max|g|. History (binding 10): D in slots 0..m-1, E in
+// (ModalStepKernelTest; README "Vulkan runtime"). The first iteration of a step is the plain
+// one. Converged when max|F| <= tolerance max|g|. History (binding 10): D in slots 0..m-1, E in
 // m..2m-1, the last F and g in 2m and 2m + 1, each parts * stride floats.
 void iterate(uint lane, uint size) {
     const uint m = ANDERSON_DEPTH;

@@ -14,7 +14,7 @@
 // every lane of a batch, serves four outputs and each input value is loaded once for them. Why:
 // lavapipe makes every lane's storage load a scalar access and a texel fetch one gather for all
 // lanes (TexelAccess.glsl); one output an invocation, two storage loads a term, took 7.2 ms of
-// the 3D box's projection (64^3, N = 1000) where this takes 1.0 ms (README "Speed").
+// the 3D box's projection (64^3, N = 1000) where this takes 1.0 ms (README "Closed-form bases").
 #extension GL_GOOGLE_include_directive : require
 #include "SeparableParams.h"
 #include "TexelAccess.glsl"
