@@ -37,8 +37,9 @@ double largestSteppableNorm();
 void requireFiniteModalState(const Eigen::VectorXd& state, long step, double time);
 
 /// The message for a user: the error's own, then "; <integrator> is unstable at this step size:
-/// lower <dtSetting> or use midpoint" (`integrator`: the scene keyword; `dtSetting`: where the
-/// user sets the step, "[simulation].dt" or "--dt").
+/// lower <dtSetting> or use midpoint" ("or use midpoint" left out when it is already midpoint or
+/// trapezoidal; `integrator`: the scene keyword; `dtSetting`: where the user sets the step,
+/// "[simulation].dt" or "--dt").
 std::string divergenceAdvice(const ModalStateDiverged& diverged, std::string_view integrator,
                              std::string_view dtSetting);
 

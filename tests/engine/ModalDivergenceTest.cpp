@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <limits>
+#include <string>
 
 #include "engine/dynamics/ModalDivergence.h"
 
@@ -39,6 +40,17 @@ TEST(ModalDivergence, AFiniteStateTooLargeToStepIsDivergedToo) {
     EXPECT_NO_THROW(requireFiniteModalState(justBelow, 4, 0.2));
     EXPECT_TRUE(std::isfinite(std::pow(0.99 * largestSteppableNorm(), 4.0)))
         << "largestSteppableNorm() = " << largestSteppableNorm();
+}
+
+TEST(ModalDivergence, TheAdviceSuggestsMidpointOnlyToTheExplicitRules) {
+    const ModalStateDiverged diverged(1, 0.01);
+    EXPECT_EQ(divergenceAdvice(diverged, "rk4", "--dt"),
+              std::string(diverged.what()) +
+                  "; rk4 is unstable at this step size: lower --dt or use midpoint");
+    for (const char* implicit : {"midpoint", "trapezoidal"})
+        EXPECT_EQ(divergenceAdvice(diverged, implicit, "[simulation].dt"),
+                  std::string(diverged.what()) + "; " + implicit +
+                      " is unstable at this step size: lower [simulation].dt");
 }
 
 }  // namespace
