@@ -68,7 +68,8 @@ struct AdvectSumParams {
 };
 
 /* What modal_update.comp does with r = R(y) from modal_combine.comp (formulas in the shader). */
-#define MODAL_OP_BEGIN 0u        /* half decay of x, y = x, arguments reset; no r */
+#define MODAL_OP_BEGIN \
+    0u /* half decay of x, y = x (midpoint: or a warm start from the r held), arguments reset */
 #define MODAL_OP_EXPLICIT 1u     /* x += h M^-1 (r + f), half decay */
 #define MODAL_OP_RK4_STAGE 2u    /* stage `stage` (0..3) of classical RK4 */
 #define MODAL_OP_MIDPOINT 3u     /* one fixed-point iteration of the midpoint rule */
@@ -78,7 +79,7 @@ struct AdvectSumParams {
 #define MODAL_OP_TRAPEZOIDAL 6u /* one fixed-point iteration of the trapezoidal rule */
 #define MODAL_OP_TRAPEZOIDAL_END 7u /* x = y, half decay; no r */
 /* Directions of the implicit iterations' Anderson acceleration (modal_update.comp): its history
-   holds 2 ANDERSON_DEPTH + 2 state-sized vectors. */
+   holds 2 ANDERSON_DEPTH + 2 state-sized vectors, and one for the warm start. */
 #define ANDERSON_DEPTH 5
 
 struct ModalUpdateParams {
@@ -92,7 +93,7 @@ struct ModalUpdateParams {
     uint parts;         /* 1: the fluid's v; 2: MHD's [v; F], each part at a multiple of stride */
     uint lorentz;       /* MHD: subtract r[2 stride + k] (C(F, F)) from the velocity part of r */
     uint anderson;      /* implicit rules: 1 accelerates the fixed-point iteration */
-    uint pad0;
+    uint warm;          /* BEGIN of a midpoint step: 1 starts from the R held, if any */
     uint pad1;
 };
 
@@ -102,13 +103,17 @@ struct ModalStatus {
     uint unconverged; /* implicit steps so far that hit the iteration limit */
     float residual;   /* last relative change of y */
     uint converged;   /* 1 once the current step's iteration converged */
+    uint heldRhs;     /* R at the ends of the last 0-2 converged implicit steps held (r, history) */
+    uint pad0;
+    uint pad1;
+    uint pad2;
 };
 
 #ifdef __cplusplus
 static_assert(sizeof(PairSumsParams) == 16 && sizeof(SparsePairSumsParams) == 16 &&
                   sizeof(CombineParams) == 16 && sizeof(AdvectDenseParams) == 32 &&
                   sizeof(AdvectSumParams) == 16 && sizeof(ModalUpdateParams) == 48 &&
-                  sizeof(ModalStatus) == 16,
+                  sizeof(ModalStatus) == 32,
               "push constants are padded to 16 bytes");
 } /* namespace modeflow::shaders */
 #endif

@@ -1,6 +1,7 @@
 #include "engine/device/ModalStepper.h"
 
 #include <array>
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -73,8 +74,9 @@ ModalStepper::ModalStepper(const vulkan::VulkanContext& context,
       mMass(zeros(context, mParts * mStride, "modal mass")),
       mDecay(zeros(context, mParts * mStride, "modal decay rates")),
       mAccumulator(zeros(context, mParts * mStride, "modal accumulator")),
+      // Anderson's 2 ANDERSON_DEPTH + 2 vectors and the warm start's R (modal_update.comp).
       mHistory(
-          zeros(context, (2 * ANDERSON_DEPTH + 2) * mParts * mStride, "modal iteration history")),
+          zeros(context, (2 * ANDERSON_DEPTH + 3) * mParts * mStride, "modal iteration history")),
       mStatus(vulkan::DeviceBuffer::fromValues<shaders::ModalStatus>(
           context, std::vector<shaders::ModalStatus>(1), "modal status")),
       mArguments(context, 4, "modal indirect arguments") {
@@ -156,6 +158,7 @@ void ModalStepper::setScheme(Integrator scheme) {
 
 void ModalStepper::setParameters(const DeviceModel& model) {
     uploadModel(model);
+    dropHeldRhs();
     buildArguments();  // the contraction's dispatches follow the mass (C(Mv, v) or C(v, v))
 }
 
@@ -165,6 +168,12 @@ void ModalStepper::setState(const Eigen::VectorXd& x) {
                     std::to_string(dimension()));
     upload(mState, x.head(size()), 0, "state");
     if (mMhd) upload(mState, x.tail(size()), 1, "state");
+    dropHeldRhs();
+}
+
+void ModalStepper::dropHeldRhs() {
+    const std::uint32_t no = 0;
+    mStatus.upload<std::uint32_t>(std::span(&no, 1), offsetof(shaders::ModalStatus, heldRhs));
 }
 
 Eigen::VectorXd ModalStepper::state() const {
@@ -184,6 +193,7 @@ Eigen::VectorXd ModalStepper::velocity() const {
 
 void ModalStepper::setVelocity(const Eigen::VectorXd& v) {
     upload(mState, v, 0, "velocity");
+    dropHeldRhs();
 }
 
 Eigen::VectorXd ModalStepper::magneticField() const {
@@ -194,6 +204,7 @@ Eigen::VectorXd ModalStepper::magneticField() const {
 void ModalStepper::setMagneticField(const Eigen::VectorXd& f) {
     magneticFieldBuffer();
     upload(mState, f, 1, "magnetic field");
+    dropHeldRhs();
 }
 
 const vulkan::DeviceBuffer& ModalStepper::magneticFieldBuffer() const {
@@ -242,6 +253,8 @@ void ModalStepper::recordEvaluation(vulkan::CommandSequence& sequence,
 
 void ModalStepper::recordUpdate(vulkan::CommandSequence& sequence, std::uint32_t op,
                                 std::uint32_t stage, double h, bool indirect) const {
+    const bool warm =
+        op == MODAL_OP_BEGIN && mSettings.scheme == Integrator::Midpoint && mSettings.warmStart;
     const std::array<const vulkan::DeviceBuffer*, 11> buffers{
         &mState, &mPoint,       &mWeighted, &mRhs,       &mForce,  &mMass,
         &mDecay, &mAccumulator, &mStatus,   &mArguments, &mHistory};
@@ -255,7 +268,7 @@ void ModalStepper::recordUpdate(vulkan::CommandSequence& sequence, std::uint32_t
                                             mParts,
                                             mLorentz ? 1u : 0u,
                                             mSettings.accelerated ? 1u : 0u,
-                                            0,
+                                            warm ? 1u : 0u,
                                             0};
     if (indirect)
         // The update is the last dispatch of an iteration; its live entry follows the full copy.

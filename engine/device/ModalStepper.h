@@ -50,6 +50,10 @@ struct DeviceStepSettings {
     /// Implicit rules: Anderson acceleration  of the fixed-point iteration
     /// (shaders/modal_update.comp); off, the plain iteration (for comparisons).
     bool accelerated = true;
+    /// Midpoint: start a step's iteration from R extrapolated from the last converged steps
+    /// (no evaluation for the first iterate, and a closer one: shaders/modal_update.comp); off,
+    /// from y = x. A state written from the host starts cold.
+    bool warmStart = true;
 };
 
 struct DeviceStepStatus {
@@ -136,6 +140,9 @@ private:
     void uploadModel(const DeviceModel& model);
     /// The indirect arguments of an implicit iteration (its dispatches' group counts, twice).
     void buildArguments();
+    /// The state, or the mass in R, was changed from the host: the next step starts cold (the R
+    /// held is not R near the new state).
+    void dropHeldRhs();
     /// A part of `whole`, as the contractions bind it.
     vulkan::DeviceBuffer part(const vulkan::DeviceBuffer& whole, int index, const char* name) const;
 

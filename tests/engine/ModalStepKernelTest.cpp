@@ -2,7 +2,7 @@
 /// ModalStepper (the modal step on the device, float32) against the double-precision CPU
 /// reference ModalIntegrator: single steps of every scheme with forces, viscosity and LANS-α;
 /// tensor-free coefficients; MHD with every storage; trajectories; midpoint energy (and MHD's
-/// cross helicity) conservation; convergence reporting; split coefficients.
+/// cross helicity) conservation; warm starts; convergence reporting; split coefficients.
 
 #include <cmath>
 #include <memory>
@@ -224,6 +224,50 @@ TEST_P(ModalStepKernelTest, AccelerationCutsTheIterationsOfLargeSteps) {
                   << " plain iterations, " << iterations[1] << " accelerated\n";
         EXPECT_LE(2 * iterations[1], iterations[0]) << sceneKeyword(scheme);
     }
+    expectNoValidationMessages();
+}
+
+TEST_P(ModalStepKernelTest, WarmStartsCutTheIterationsOfATrajectory) {
+    // 20 forced steps of 0.1 of a turnover: started from R extrapolated from the last steps,
+    // a midpoint step needs fewer evaluations than from y = x, and reaches the same states.
+    const double h = stepFor(mC, mV0, 0.1);
+    const Eigen::VectorXd force = roundedToFloat(0.3 * testing::randomVector(kModes, 13));
+    constexpr int kSteps = 20;
+    Eigen::VectorXd states[2];
+    int iterations[2] = {0, 0};
+    for (const bool warm : {false, true}) {
+        DeviceStepSettings settings;
+        settings.warmStart = warm;
+        ModalStepper stepper(context(), mC, {}, settings);
+        stepper.setState(mV0);
+        stepper.setForce(force);
+        for (int s = 0; s < kSteps; ++s) {
+            runDevice(context(), stepper, h, 1);
+            ASSERT_TRUE(stepper.status().converged) << "step " << s << (warm ? " warm" : " cold");
+            iterations[warm] += stepper.status().iterations;
+        }
+        states[warm] = stepper.state();
+    }
+    std::cout << kSteps << " midpoint steps of h|R|/|v| = 0.1: " << iterations[0]
+              << " iterations from y = x, " << iterations[1] << " warm\n";
+    EXPECT_LE(relativeDifference(states[1], states[0]), 1e-5);
+    EXPECT_LE(iterations[1] + kSteps / 2, iterations[0]);
+    expectNoValidationMessages();
+}
+
+TEST_P(ModalStepKernelTest, AStateWrittenFromTheHostStartsCold) {
+    // The R held from earlier steps is not R near a new state: the step after setState is the
+    // step of a fresh stepper, to the bit.
+    ModalStepper stepper(context(), mC, {});
+    stepper.setState(roundedToFloat(testing::randomVector(kModes, 14)));
+    for (int s = 0; s < 3; ++s) runDevice(context(), stepper, mH, 1);
+    stepper.setState(mV0);
+    runDevice(context(), stepper, mH, 1);
+    ModalStepper fresh(context(), mC, {});
+    fresh.setState(mV0);
+    runDevice(context(), fresh, mH, 1);
+    EXPECT_EQ(stepper.status().iterations, fresh.status().iterations);
+    EXPECT_EQ(relativeDifference(stepper.state(), fresh.state()), 0.0);
     expectNoValidationMessages();
 }
 
