@@ -100,6 +100,40 @@ vec3 velocityAt(vec3 g) {
                               uvec3(0u, params.faceOffsetY, params.faceOffsetZ), params.periodic);
 }
 
+// With the smoke grid the basis grid (scale 1), a trace starts at a basis cell's centre, where
+// the MAC sample of each component is the mean of the cell's two faces across it: 2 face reads a
+// component where velocityAt reads 8, and no stencil arithmetic (the forward stage, which does
+// it once for both traces, and the semi-Lagrangian step). The same sums to the bit: the
+// general sample adds the other faces with weight 0 (MacSampling.glsl).
+layout(constant_id = 1) const bool unitScale = false;
+
+vec3 cellCentreVelocity(ivec3 cell) {
+    const ivec3 cells = ivec3(params.basisX, params.basisY, params.basisZ);
+    const uvec3 offsets = uvec3(0u, params.faceOffsetY, params.faceOffsetZ);
+    vec3 u = vec3(0.0);
+    [[unroll]] for (int a = 0; a < SMOKE_DIM; ++a) {
+        const bool wraps = isPeriodic(params.periodic, a);
+        ivec3 extent = cells;
+        extent[a] += wraps ? 0 : 1;
+        const uint face = offsets[a] + uint((cell.z * extent.y + cell.y) * extent.x + cell.x);
+        vec2 faces = macFacePair(face);  // along x the pair is the two faces
+        if (a > 0) {
+            const int rowStride = a == 1 ? extent.x : extent.x * extent.y;
+            const int across = cell[a] + 1 == cells[a] ? -(cells[a] - 1) * rowStride : rowStride;
+            faces.y = macFacePair(face + uint(across)).x;  // negative across a seam: wraps
+        }
+        const bool wallLo = !wraps && cell[a] == 0;
+        const bool wallHi = !wraps && cell[a] + 1 == cells[a];
+        u[a] = 0.5 * (wallLo ? 0.0 : faces.x) + 0.5 * (wallHi ? 0.0 : faces.y);
+    }
+    return u;
+}
+
+// Velocity at the centre of smoke cell `cell`.
+vec3 velocityAtCentre(ivec3 cell) {
+    return unitScale ? cellCentreVelocity(cell) : velocityAt(vec3(cell) + 0.5);
+}
+
 // Where the RK2 trace from `start` ends after -step * u, in smoke-grid units; u0 = velocityAt(start).
 vec3 traceEnd(vec3 start, vec3 u0, vec3 step) {
     const vec3 mid = start - 0.5 * (u0 * step);
@@ -160,7 +194,7 @@ void main() {
     const vec2 old = wordAt(fieldsIn, id);
 
 #if SMOKE_STAGE == SMOKE_STAGE_MACCORMACK_FORWARD
-    const vec3 u0 = velocityAt(start);
+    const vec3 u0 = velocityAtCentre(cell);
     const FluidSample forward = sampleFluid(fieldsIn, traceEnd(start, u0, step), old);
     const vec3 ahead = traceEnd(start, u0, -step);
     const uint r = entry * SMOKE_RECORD_WORDS;
@@ -173,7 +207,7 @@ void main() {
 #endif
 #else
 #if SMOKE_STAGE == SMOKE_STAGE_SEMI_LAGRANGIAN
-    vec2 result = sampleFluid(fieldsIn, traceEnd(start, velocityAt(start), step), old).value;
+    vec2 result = sampleFluid(fieldsIn, traceEnd(start, velocityAtCentre(cell), step), old).value;
 #else
     const vec4 range = uintBitsToFloat(texelFetch(record, int(2u * entry)));  // lo, hi
     const vec3 ahead = uintBitsToFloat(texelFetch(record, int(2u * entry + 1u)).xyz);  // z unused in 2D

@@ -5,6 +5,7 @@
 #include <cmath>
 // The generated header uses uint32_t without including <cstdint>.
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -59,9 +60,10 @@ shaders::SmokeFacePairsParams pairParams(const MacGrid& basis) {
 /// One of the smoke_advect_<stage>_<dim>d kernels (bindings 0-7 of shaders/SmokeAdvect.glsl):
 /// the read-only inputs as texels, and MacCormack's hat and record too in the correction, which
 /// reads what the forward stage wrote.
+/// `unitScale`: the variant for a smoke grid equal to the basis grid (SmokeAdvect.glsl).
 vulkan::ComputeKernel advectKernel(const vulkan::VulkanContext& context, const char* name,
                                    std::span<const std::uint32_t> spirv, std::uint32_t stage,
-                                   std::uint32_t workgroupSize) {
+                                   std::uint32_t workgroupSize, bool unitScale) {
     std::vector<std::uint32_t> texels{0, 1, 2, 3};
     if (stage == SMOKE_STAGE_MACCORMACK_CORRECT) texels.insert(texels.end(), {4, 5});
     return vulkan::ComputeKernel(context,
@@ -70,9 +72,23 @@ vulkan::ComputeKernel advectKernel(const vulkan::VulkanContext& context, const c
                                                            8,
                                                            sizeof(shaders::SmokeAdvectParams),
                                                            workgroupSize,
-                                                           {},
+                                                           {unitScale ? 1u : 0u},
                                                            std::move(texels)});
 }
+
+struct StageShader {
+    const char* name;
+    std::span<const std::uint32_t> spirv;
+};
+
+/// By stage (semi-Lagrangian, MacCormack forward, MacCormack correction), 2D then 3D.
+const std::array<StageShader, 6> kStageShaders{
+    StageShader{"smoke_advect_sl_2d", smoke_advect_sl_2d_spv},
+    StageShader{"smoke_advect_forward_2d", smoke_advect_forward_2d_spv},
+    StageShader{"smoke_advect_correct_2d", smoke_advect_correct_2d_spv},
+    StageShader{"smoke_advect_sl_3d", smoke_advect_sl_3d_spv},
+    StageShader{"smoke_advect_forward_3d", smoke_advect_forward_3d_spv},
+    StageShader{"smoke_advect_correct_3d", smoke_advect_correct_3d_spv}};
 
 }  // namespace
 
@@ -86,22 +102,18 @@ SmokeAdvectionKernels::SmokeAdvectionKernels(const vulkan::VulkanContext& contex
                                                     workgroupSize,
                                                     {},
                                                     {0}}),
-      mStages{advectKernel(context, "smoke_advect_sl_2d", smoke_advect_sl_2d_spv,
-                           SMOKE_STAGE_SEMI_LAGRANGIAN, workgroupSize),
-              advectKernel(context, "smoke_advect_forward_2d", smoke_advect_forward_2d_spv,
-                           SMOKE_STAGE_MACCORMACK_FORWARD, workgroupSize),
-              advectKernel(context, "smoke_advect_correct_2d", smoke_advect_correct_2d_spv,
-                           SMOKE_STAGE_MACCORMACK_CORRECT, workgroupSize),
-              advectKernel(context, "smoke_advect_sl_3d", smoke_advect_sl_3d_spv,
-                           SMOKE_STAGE_SEMI_LAGRANGIAN, workgroupSize),
-              advectKernel(context, "smoke_advect_forward_3d", smoke_advect_forward_3d_spv,
-                           SMOKE_STAGE_MACCORMACK_FORWARD, workgroupSize),
-              advectKernel(context, "smoke_advect_correct_3d", smoke_advect_correct_3d_spv,
-                           SMOKE_STAGE_MACCORMACK_CORRECT, workgroupSize)} {}
+      mWorkgroupSize(workgroupSize) {}
 
-const vulkan::ComputeKernel& SmokeAdvectionKernels::stageKernel(std::uint32_t stage,
-                                                                int dim) const {
-    return mStages[std::size_t(stage) + (dim == 3 ? 3 : 0)];
+const vulkan::ComputeKernel& SmokeAdvectionKernels::stageKernel(std::uint32_t stage, int dim,
+                                                                bool unitScale) const {
+    // The correction samples no velocity: one variant of it.
+    const bool variant = unitScale && stage != SMOKE_STAGE_MACCORMACK_CORRECT;
+    const std::size_t shader = std::size_t(stage) + (dim == 3 ? 3 : 0);
+    std::optional<vulkan::ComputeKernel>& kernel = mStages[2 * shader + (variant ? 1 : 0)];
+    if (!kernel)
+        kernel.emplace(advectKernel(mContext, kStageShaders[shader].name,
+                                    kStageShaders[shader].spirv, stage, mWorkgroupSize, variant));
+    return *kernel;
 }
 
 template <typename Params>
@@ -149,8 +161,8 @@ void SmokeAdvectionKernels::record(vulkan::CommandSequence& sequence, SmokeState
         &state.facePairs(), &state.fluidCells(), &state.stencilMask(), &state.fields(),
         &state.hat(),       &state.record(),     &state.nextFields(),  &state.temperature()};
     const auto stage = [&](std::uint32_t s) {
-        dispatchAll(sequence, stageKernel(s, state.smokeGrid().dim), buffers, params,
-                    &shaders::SmokeAdvectParams::firstCell, state.fluidCellCount());
+        dispatchAll(sequence, stageKernel(s, state.smokeGrid().dim, state.scale() == 1), buffers,
+                    params, &shaders::SmokeAdvectParams::firstCell, state.fluidCellCount());
     };
     if (scheme == AdvectionScheme::SemiLagrangian) {
         stage(SMOKE_STAGE_SEMI_LAGRANGIAN);

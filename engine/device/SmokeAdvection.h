@@ -31,6 +31,7 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <span>
 
 #include "engine/core/SceneSpec.h"
@@ -48,7 +49,9 @@ class SmokeState;
 
 class SmokeAdvectionKernels {
 public:
-    /// `workgroupSize`: any; 128 ran 2-4% faster than 64 on lavapipe, and suits GPUs.
+    /// `workgroupSize`: any; 128 ran 2-4% faster than 64 on lavapipe, and suits GPUs. The
+    /// advection kernels are made when a step first needs them (a run uses two or three of the
+    /// twelve variants: stage, dimension, smoke scale 1 or not).
     /// @throw modeflow::Error if the device lacks 64-bit integers in shaders (shaderInt64) or a
     /// pipeline cannot be created.
     explicit SmokeAdvectionKernels(const vulkan::VulkanContext& context,
@@ -59,8 +62,8 @@ public:
     /// that its current fields are the step's result once the sequence is submitted. Grids
     /// larger than one dispatch can cover are split over several dispatches.
     /// @throw modeflow::Error when the velocity buffer is smaller than the basis grid's face
-    /// count or has no texel view (it is read as texels), dt is not finite, or the smoke grid has
-    /// 2^32 cells or more.
+    /// count or has no texel view (it is read as texels), dt is not finite, the smoke grid has
+    /// 2^32 cells or more, or a kernel's pipeline cannot be created.
     void record(vulkan::CommandSequence& sequence, SmokeState& state,
                 const vulkan::DeviceBuffer& velocity, double dt, AdvectionScheme scheme) const;
 
@@ -73,13 +76,16 @@ private:
                      std::uint32_t Params::*first, std::int64_t count,
                      std::uint32_t firstScale = 1) const;
 
-    /// The kernel of `stage` (SMOKE_STAGE_*) for a `dim`-dimensional smoke grid.
-    const vulkan::ComputeKernel& stageKernel(std::uint32_t stage, int dim) const;
+    /// The kernel of `stage` (SMOKE_STAGE_*) for a `dim`-dimensional smoke grid, made on first
+    /// use; `unitScale`: the smoke grid is the basis grid.
+    const vulkan::ComputeKernel& stageKernel(std::uint32_t stage, int dim, bool unitScale) const;
 
     const vulkan::VulkanContext& mContext;
     vulkan::ComputeKernel mFacePairs;
-    /// By stage (semi-Lagrangian, MacCormack forward, MacCormack correction), 2D then 3D.
-    std::array<vulkan::ComputeKernel, 6> mStages;
+    std::uint32_t mWorkgroupSize;
+    /// By stage (semi-Lagrangian, MacCormack forward, MacCormack correction), 2D then 3D, each
+    /// for any smoke scale and for scale 1.
+    mutable std::array<std::optional<vulkan::ComputeKernel>, 12> mStages;
 };
 
 }  // namespace modeflow::device
