@@ -19,9 +19,8 @@ struct ForceSplatRecord {
 };
 
 /* force_field.comp's stages (its specialization constant STAGE). */
-#define FORCE_STAGE_ZERO 0u
-#define FORCE_STAGE_SPLATS 1u
-#define FORCE_STAGE_BUOYANCY 2u
+#define FORCE_STAGE_SPLATS 0u
+#define FORCE_STAGE_BUOYANCY 1u
 
 struct ForceFieldParams {
     uint dofCount;   /* velocity DOFs; one invocation per DOF (grid-stride loop) */

@@ -2,8 +2,8 @@
 // Force density g on the velocity DOFs (README.md "Reduced dynamics", engine/README.md; CPU reference and definitions:
 // engine/reference/ForceField.h): Gaussian stirring splats (force . n) exp(-|x - centre|^2 / radius^2)
 // at the face centres, plus buoyancy times the mean temperature over the dual cell of each
-// up-facing face. Three stages, one pipeline each (engine/device/ForceField):
-//   STAGE_ZERO    g = 0 on every DOF (no splats),
+// up-facing face. Two stages, one pipeline each (engine/device/ForceField; without splats the
+// host fills g with zeros instead of the first):
 //   STAGE_SPLATS  g = splats on every DOF,
 //   STAGE_BUOYANCY g += buoyancy * dual-cell temperature on the up DOFs only, from a host-made
 //                 list of (DOF, face position) texels; the CPU reference sums in the same order.
@@ -104,6 +104,6 @@ void main() {
         }
     } else {
         for (uint d = gl_GlobalInvocationID.x; d < params.dofCount; d += invocations)
-            g[d] = STAGE == FORCE_STAGE_SPLATS ? splatForce(faces[d]) : 0.0;
+            g[d] = splatForce(faces[d]);
     }
 }

@@ -51,7 +51,6 @@ ForceFieldKernel::ForceFieldKernel(const vulkan::VulkanContext& context, const B
       mUp(uploadUpDofs(context, mGrid, cache)),
       mSplats(context, VkDeviceSize(mMaxSplats) * sizeof(shaders::ForceSplatRecord),
               "force splats"),
-      mZero(makeKernel(context, FORCE_STAGE_ZERO, false, workgroupSize)),
       mSplatForce(makeKernel(context, FORCE_STAGE_SPLATS, false, workgroupSize)),
       mBuoyancy(makeKernel(context, FORCE_STAGE_BUOYANCY, false, workgroupSize)),
       mMaskedBuoyancy(makeKernel(context, FORCE_STAGE_BUOYANCY, true, workgroupSize)) {}
@@ -114,7 +113,10 @@ void ForceFieldKernel::record(vulkan::CommandSequence& sequence, double buoyancy
     // Without a mask the temperature buffer fills the mask's binding; the shader never reads it.
     const std::array<const vulkan::DeviceBuffer*, 6> buffers{
         &mFaces, &mUp.buffer, &temperature, fluidMask ? fluidMask : &temperature, &mSplats, &g};
-    sequence.dispatch(mSplatCount > 0 ? mSplatForce : mZero, buffers, params, mGroups);
+    if (mSplatCount > 0)
+        sequence.dispatch(mSplatForce, buffers, params, mGroups);
+    else
+        sequence.fill(g, VkDeviceSize(mDofCount) * sizeof(float), 0u);
     if (buoyancy != 0.0 && mUp.count > 0)
         sequence.dispatch(fluidMask ? mMaskedBuoyancy : mBuoyancy, buffers, params, mGroups);
 }

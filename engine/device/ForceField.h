@@ -66,7 +66,7 @@ private:
                                const BasisCache& cache);
     UpDofs mUp;
     vulkan::DeviceBuffer mSplats;
-    vulkan::ComputeKernel mZero, mSplatForce, mBuoyancy, mMaskedBuoyancy;
+    vulkan::ComputeKernel mSplatForce, mBuoyancy, mMaskedBuoyancy;
 };
 
 }  // namespace modeflow::device

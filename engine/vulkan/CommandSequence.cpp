@@ -2,9 +2,11 @@
 
 #include <cstdint>
 #include <functional>
+#include <string>
 
 #include "engine/core/Error.h"
 #include "engine/vulkan/ComputeKernel.h"
+#include "engine/vulkan/DeviceBuffer.h"
 #include "engine/vulkan/SyncObjects.h"
 #include "engine/vulkan/VulkanContext.h"
 #include "engine/vulkan/VulkanError.h"
@@ -78,6 +80,14 @@ void CommandSequence::dispatchIndirect(const ComputeKernel& kernel,
         [&] { kernel.recordIndirect(mCommandBuffer, buffers, pushConstants, arguments, offset); });
 }
 
+void CommandSequence::fill(const DeviceBuffer& buffer, VkDeviceSize bytes, std::uint32_t word) {
+    if (bytes == 0 || bytes % 4 != 0 || bytes > buffer.bytes())
+        throw Error("CommandSequence: cannot fill " + std::to_string(bytes) + " bytes of \"" +
+                    buffer.name() + "\" (" + std::to_string(buffer.bytes()) +
+                    " bytes; whole words only)");
+    recordTimed([&] { vkCmdFillBuffer(mCommandBuffer, buffer.handle(), 0, bytes, word); });
+}
+
 void CommandSequence::recordTimed(const std::function<void()>& recordDispatch) {
     if (isTiming() && mDispatchCount >= mMaxTimed)
         throw Error("CommandSequence: more than " + std::to_string(mMaxTimed) +
@@ -88,9 +98,10 @@ void CommandSequence::recordTimed(const std::function<void()>& recordDispatch) {
     // their writes visible to this one; lavapipe really does read stale data without it). One
     // global barrier is enough and costs little next to a dispatch.
     memoryBarrier(mCommandBuffer,
-                  VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT,
+                  VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT |
+                      VK_PIPELINE_STAGE_TRANSFER_BIT,
                   VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT |
-                      VK_ACCESS_INDIRECT_COMMAND_READ_BIT);
+                      VK_ACCESS_INDIRECT_COMMAND_READ_BIT | VK_ACCESS_TRANSFER_WRITE_BIT);
     const auto query = std::uint32_t(2 * mDispatchCount);
     if (isTiming())
         vkCmdWriteTimestamp(mCommandBuffer, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, mQueryPool.get(),

@@ -55,6 +55,12 @@ public:
         dispatchIndirect(kernel, buffers, std::as_bytes(std::span(&params, 1)), arguments, offset);
     }
 
+    /// Records setting the first `bytes` of `buffer` to copies of `word` (vkCmdFillBuffer: a
+    /// memset on lavapipe: 3 MB in 0.3 ms, where a kernel writing zeros took 1.5 ms), after the
+    /// same barrier as a dispatch, timed and counted as one.
+    /// @throw modeflow::Error if `bytes` is 0, not a multiple of 4 or beyond the buffer.
+    void fill(const DeviceBuffer& buffer, VkDeviceSize bytes, std::uint32_t word);
+
     /// Ends recording, submits once, waits on the fence (then the host may read the buffers),
     /// reads the timestamps and makes the sequence ready for new recording.
     /// @throw modeflow::Error if nothing was recorded or a call fails (e.g. VK_ERROR_DEVICE_LOST).

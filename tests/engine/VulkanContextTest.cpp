@@ -1,12 +1,15 @@
 /// @file VulkanContextTest.cpp
-/// The Vulkan foundation: device choice and its explanation, validation switch, buffers.
+/// The Vulkan foundation: device choice and its explanation, validation switch, buffers, fills.
 
 #include <algorithm>
+#include <cstdint>
+#include <cstring>
 #include <numeric>
 #include <vector>
 
 #include <gtest/gtest.h>
 
+#include "engine/vulkan/CommandSequence.h"
 #include "engine/vulkan/ComputeKernel.h"
 #include "engine/vulkan/DeviceBuffer.h"
 #include "engine/vulkan/DeviceSelector.h"
@@ -176,6 +179,27 @@ TEST_P(VulkanContextTest, ViewsShareTheirBuffersMemory) {
     EXPECT_THROW(DeviceBuffer(whole, 16, 16, "misaligned"), Error);
     EXPECT_THROW(DeviceBuffer(whole, DeviceBuffer::kViewAlignment, whole.bytes(), "past the end"),
                  Error);
+    expectNoValidationMessages();
+}
+
+TEST_P(VulkanContextTest, FillSetsTheFirstWordsOfABufferOrView) {
+    std::vector<float> values(256);
+    std::iota(values.begin(), values.end(), 0.0f);
+    DeviceBuffer whole = DeviceBuffer::fromValues<float>(context(), values, "whole");
+    DeviceBuffer second(whole, DeviceBuffer::kViewAlignment, 128 * sizeof(float), "second half");
+    vulkan::CommandSequence sequence(context());
+    float word = 2.5f;
+    std::uint32_t bits = 0;
+    std::memcpy(&bits, &word, sizeof bits);
+    sequence.fill(second, 8 * sizeof(float), bits);
+    sequence.submitAndWait();
+    std::vector<float> read(256);
+    whole.download<float>(read);
+    for (int i = 0; i < 256; ++i)
+        EXPECT_EQ(read[i], i >= 64 && i < 72 ? 2.5f : float(i)) << "float " << i;
+    EXPECT_THROW(sequence.fill(second, 6, 0u), Error);  // not whole words
+    EXPECT_THROW(sequence.fill(second, 0, 0u), Error);
+    EXPECT_THROW(sequence.fill(second, second.bytes() + 4, 0u), Error);
     expectNoValidationMessages();
 }
 
