@@ -249,7 +249,6 @@ void main() {
         }
     }
 
-    if (op == MODAL_OP_BEGIN) barrier();  // every lane has read status.heldRhs
     // r is about to hold R of an explicit stage: no step-end R is held any more.
     if ((op == MODAL_OP_EXPLICIT || op == MODAL_OP_RK4_STAGE) && lane == 0) status.heldRhs = 0;
     if (op == MODAL_OP_BEGIN && lane == 0) {
