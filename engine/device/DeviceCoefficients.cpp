@@ -55,12 +55,7 @@ DeviceCoefficients::DeviceCoefficients(const vulkan::VulkanContext& context,
     }
     // The N x N matrix of pair sums (modal_combine.comp), read as texels. Zero first: sparse
     // storage leaves the sums of pairs without entries, and the diagonal, untouched.
-    const std::size_t sumBytes = n * paddedSize(mN) * sizeof(float);
-    if (sumBytes > context.texelBufferLimit())
-        throw Error("modal contraction: the pair sums of N = " + std::to_string(n) + " modes (" +
-                    std::to_string(sumBytes) + " bytes) exceed the " +
-                    std::to_string(context.texelBufferLimit()) + "-byte buffer limit of " +
-                    context.deviceName() + "; use fewer modes or --device cpu");
+    requirePairSumsFit(context, mN);
     mPairSums.emplace(vulkan::DeviceBuffer::fromValues<float>(
         context, std::vector<float>(n * paddedSize(mN), 0.0f), "pair sums"));
 
@@ -105,6 +100,15 @@ DeviceCoefficients::DeviceCoefficients(const vulkan::VulkanContext& context,
         throw Error(
             "modal contraction: the device takes dense, sparse or tensor-free coefficients only");
     }
+}
+
+void DeviceCoefficients::requirePairSumsFit(const vulkan::VulkanContext& context, int n) {
+    const std::size_t sumBytes = std::size_t(n) * paddedSize(n) * sizeof(float);
+    if (sumBytes > context.texelBufferLimit())
+        throw Error("modal contraction: the pair sums of N = " + std::to_string(n) + " modes (" +
+                    std::to_string(sumBytes) + " bytes) exceed the " +
+                    std::to_string(context.texelBufferLimit()) + "-byte buffer limit of " +
+                    context.deviceName() + "; use fewer modes or --device cpu");
 }
 
 /// The sparse rows in slices of kSliceRows (modal_pair_sums_sparse.comp): rows sorted by entry

@@ -59,6 +59,12 @@ public:
                        const BasisCache* cache = nullptr, const ModeBuffer* modes = nullptr,
                        bool advection = false);
 
+    /// Assembled (dense or sparse) coefficients are contracted through an N × N matrix of pair
+    /// sums read as texels: refuses an N whose matrix exceeds the device's texel buffer limit
+    /// (lavapipe: 128 MB, N ≈ 5790), so a run can be refused before its cache is read.
+    /// @throw modeflow::Error naming N, the bytes, the limit and the device.
+    static void requirePairSumsFit(const vulkan::VulkanContext& context, int n);
+
     int size() const { return mN; }
     bool isSparse() const { return mSparse.has_value(); }
     bool isTensorFree() const { return mTensorFree.has_value(); }

@@ -4,11 +4,13 @@
 #include <cctype>
 
 #include "engine/core/Error.h"
+#include "engine/device/DeviceCoefficients.h"
 #include "engine/device/ModalStepper.h"
 #include "engine/device/Simulation.h"
 #include "engine/pipeline/RunInputs.h"
 #include "engine/reference/ModalStepper.h"
 #include "engine/reference/Simulation.h"
+#include "precompute/closedform/ClosedFormBasis.h"
 
 namespace modeflow {
 
@@ -43,6 +45,16 @@ Backend::~Backend() = default;
 
 std::string Backend::describe() const {
     return mKind == BackendKind::Vulkan ? mContext->describe() : std::string();
+}
+
+void Backend::requireFits(const SceneSpec& scene) const {
+    if (mKind != BackendKind::Vulkan) return;
+    const CoefficientStorage storage = scene.basis.coefficients;
+    const bool assembled = storage == CoefficientStorage::Dense ||
+                           storage == CoefficientStorage::Sparse ||
+                           (storage == CoefficientStorage::Auto && hasClosedFormVelocity(scene));
+    if (assembled)
+        device::DeviceCoefficients::requirePairSumsFit(*mContext, scene.basis.velocityCount());
 }
 
 std::unique_ptr<Simulator> Backend::makeSimulator(const RunInputs& run, bool stageTimes) const {

@@ -52,6 +52,13 @@ public:
     /// The chosen device and why the others were passed over (empty for the CPU reference).
     std::string describe() const;
 
+    /// Refuses, before its cache is read or made, a run of `scene` this backend's device cannot
+    /// hold: today the pair sums of an assembled tensor (dense or sparse coefficients asked for,
+    /// or a closed-form basis, whose coefficients are always sparse) above the device's limit.
+    /// The CPU reference refuses nothing here.
+    /// @throw modeflow::Error as DeviceCoefficients::requirePairSumsFit.
+    void requireFits(const SceneSpec& scene) const;
+
     /// A simulation of the prepared run, at its initial state. It keeps references into `run`,
     /// which must outlive it and stay where it is. `stageTimes`: time each stage (device only).
     /// @throw modeflow::Error for settings the model refuses, or a device error.

@@ -53,6 +53,7 @@ Command addModes(CLI::App& app) {
                                       : scene.simulation.integrator;
         const Backend backend(choice);
         std::cerr << backend.describe();
+        backend.requireFits(scene);
         Progress progress = Progress::toStderr();
         const RunInputs run =
             prepareRun(scene, resolveCacheDir(opts->cacheDir), progress, RunParts::Dynamics);

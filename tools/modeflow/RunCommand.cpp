@@ -82,6 +82,12 @@ Command addRun(CLI::App& app) {
         const SceneSpec scene = loadScene(opts->scene);
         requireSupport(scene, choice.kind);
         const RunMemory memory = requireRunMemory(scene, choice.kind);
+        // The device is opened, and what it cannot hold refused, before the output folder is made.
+        std::optional<Backend> backend;
+        if (!scene.isSurface()) {
+            backend.emplace(choice);
+            backend->requireFits(scene);
+        }
         const int frames = opts->frames.value_or(scene.output.frames);
         const std::filesystem::path out = opts->out.value_or(scene.name + "_frames");
         ensureWritableDirectory(out, "output folder", "; choose another with --out");
@@ -113,8 +119,7 @@ Command addRun(CLI::App& app) {
                                resolveCacheDir(opts->cacheDir), memory,
                                previews ? previewEvery : 0});
         }
-        const Backend backend(choice);
-        std::cerr << backend.describe();
+        std::cerr << backend->describe();
 
         Progress progress = Progress::toStderr();
         const RunInputs run = inRunStage(
@@ -122,7 +127,7 @@ Command addRun(CLI::App& app) {
             [&] { return prepareRun(scene, resolveCacheDir(opts->cacheDir), progress); });
         const SimulationSettings& settings = run.settings;
         const std::unique_ptr<Simulator> simulator = inRunStage(
-            "setting up the simulation", memory, [&] { return backend.makeSimulator(run); });
+            "setting up the simulation", memory, [&] { return backend->makeSimulator(run); });
 
         int first = 0;
         if (resumeFrom) {
@@ -140,7 +145,7 @@ Command addRun(CLI::App& app) {
         std::unique_ptr<FramePreview> preview;
         if (previews)
             preview = std::make_unique<FramePreview>(simulator->smokeGrid(), run.smokeMask,
-                                                     backend.vulkanContext());
+                                                     backend->vulkanContext());
         FrameProgress bar(first, frames, settings.stepsPerFrame);
         for (int frame = first + 1; frame <= frames; ++frame) {
             const std::string stage = "frame " + std::to_string(frame);
@@ -184,7 +189,7 @@ Command addRun(CLI::App& app) {
         }
         bar.finish();
         if (preview) preview->writeContactSheet(out / (scene.name + "_contact.png"));
-        backend.requireCleanValidation();
+        backend->requireCleanValidation();
         std::printf("%s\n", out.string().c_str());
         return 0;
     };
