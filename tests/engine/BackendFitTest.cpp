@@ -10,6 +10,7 @@
 
 #include "engine/core/Error.h"
 #include "engine/pipeline/Backend.h"
+#include "tests/support/TestScenes.h"
 #include "tests/support/VulkanTestContext.h"
 
 namespace modeflow {
@@ -17,12 +18,7 @@ namespace {
 
 /// A whole 64³ box with free-slip walls (closed-form bases, sparse coefficients) of n modes.
 SceneSpec wholeBox(int n) {
-    SceneSpec scene;
-    scene.name = "backend_fit_test";
-    scene.grid.dim = 3;
-    scene.grid.resolution = {64, 64, 64};
-    scene.grid.boundsMin = {0.0, 0.0, 0.0};
-    scene.grid.boundsMax = {1.0, 1.0, 1.0};
+    SceneSpec scene = testing::gridScene({64, 64, 64}, {0.0, 0.0, 0.0}, {1.0, 1.0, 1.0}, 3);
     scene.basis.velocityModes = {{1, n}};
     return scene;
 }
