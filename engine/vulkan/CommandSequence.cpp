@@ -121,15 +121,8 @@ void CommandSequence::submitAndWait() {
     mRecording = false;
     check(vkEndCommandBuffer(mCommandBuffer), "vkEndCommandBuffer");
 
-    VkSubmitInfo submit{};
-    submit.sType = VK_STRUCTURE_TYPE_SUBMIT_INFO;
-    submit.commandBufferCount = 1;
-    submit.pCommandBuffers = &mCommandBuffer;
+    vulkan::submitAndWait(mContext, mCommandBuffer, mFence.get());
     const VkDevice device = mContext.device();
-    const VkFence fence = mFence.get();
-    check(vkQueueSubmit(mContext.queue(), 1, &submit, fence), "vkQueueSubmit");
-    check(vkWaitForFences(device, 1, &fence, VK_TRUE, UINT64_MAX), "vkWaitForFences");
-    check(vkResetFences(device, 1, &fence), "vkResetFences");
 
     mTimesMs.clear();
     if (isTiming()) {

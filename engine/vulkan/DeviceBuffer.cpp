@@ -3,29 +3,12 @@
 #include <cstring>
 #include <optional>
 
-#include "engine/vulkan/SyncObjects.h"
+#include "engine/vulkan/MemoryTypeChoice.h"
+#include "engine/vulkan/StagingArea.h"
 #include "engine/vulkan/VulkanContext.h"
 #include "engine/vulkan/VulkanError.h"
 
 namespace modeflow::vulkan {
-namespace {
-
-/// A memory type allowed by `typeBits` with all of `required`, preferring device-local ones
-/// (lavapipe, integrated GPUs and resizable BAR put host-visible memory there too).
-std::optional<std::uint32_t> memoryType(const VkPhysicalDeviceMemoryProperties& memory,
-                                        std::uint32_t typeBits, VkMemoryPropertyFlags required) {
-    std::optional<std::uint32_t> found;
-    for (std::uint32_t t = 0; t < memory.memoryTypeCount; ++t) {
-        const VkMemoryPropertyFlags flags = memory.memoryTypes[t].propertyFlags;
-        if (!(typeBits & (1u << t)) || (flags & required) != required) continue;
-        if (flags & VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT) return t;
-        if (!found) found = t;
-    }
-    return found;
-}
-
-}  // namespace
-
 DeviceBuffer::DeviceBuffer(const VulkanContext& context, VkDeviceSize bytes, std::string name,
                            Placement placement)
     : mContext(&context), mName(std::move(name)), mBytes(bytes) {
@@ -42,11 +25,12 @@ DeviceBuffer::DeviceBuffer(const VulkanContext& context, VkDeviceSize bytes, std
 
     VkMemoryRequirements requirements;
     vkGetBufferMemoryRequirements(device, buffer, &requirements);
-    const bool mapped = placement == Placement::HostVisible || !context.usesStaging();
-    const VkMemoryPropertyFlags required =
-        mapped ? VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT
-               : VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT;
-    const auto type = memoryType(context.memoryProperties(), requirements.memoryTypeBits, required);
+    const MemoryUse use = placement == Placement::HostVisible ? MemoryUse::Staging
+                          : context.usesStaging()             ? MemoryUse::DeviceOnly
+                                                              : MemoryUse::Shared;
+    const bool mapped = use != MemoryUse::DeviceOnly;
+    const auto type =
+        chooseMemoryType(context.memoryProperties(), requirements.memoryTypeBits, use);
     if (!type)
         throw Error("DeviceBuffer \"" + mName + "\": " + context.deviceName() + " has no " +
                     (mapped ? "host-visible, host-coherent" : "device-local") +
@@ -117,9 +101,7 @@ void DeviceBuffer::write(const void* source, VkDeviceSize offset, VkDeviceSize b
         std::memcpy(static_cast<std::byte*>(mMapped) + offset, source, bytes);
         return;
     }
-    DeviceBuffer staging(*mContext, bytes, mName + " (staging)", Placement::HostVisible);
-    std::memcpy(staging.mMapped, source, bytes);
-    copyWithStaging(staging, offset, bytes, true);
+    mContext->staging().upload(*this, offset, source, bytes);
 }
 
 void DeviceBuffer::read(void* destination, VkDeviceSize offset, VkDeviceSize bytes) const {
@@ -129,43 +111,7 @@ void DeviceBuffer::read(void* destination, VkDeviceSize offset, VkDeviceSize byt
         std::memcpy(destination, static_cast<const std::byte*>(mMapped) + offset, bytes);
         return;
     }
-    DeviceBuffer staging(*mContext, bytes, mName + " (staging)", Placement::HostVisible);
-    copyWithStaging(staging, offset, bytes, false);
-    std::memcpy(destination, staging.mMapped, bytes);
-}
-
-void DeviceBuffer::copyWithStaging(const DeviceBuffer& staging, VkDeviceSize offset,
-                                   VkDeviceSize bytes, bool toThis) const {
-    const VkDevice device = mContext->device();
-    const CommandPool pool = makeCommandPool(*mContext, VK_COMMAND_POOL_CREATE_TRANSIENT_BIT);
-    const VkCommandBuffer commands = pool.buffer;
-    const DeviceHandle<VkFence> fence = makeFence(device);
-
-    VkCommandBufferBeginInfo begin{};
-    begin.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO;
-    begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
-    check(vkBeginCommandBuffer(commands, &begin), "vkBeginCommandBuffer");
-    const VkBufferCopy region{toThis ? 0 : offset, toThis ? offset : 0, bytes};
-    vkCmdCopyBuffer(commands, toThis ? staging.handle() : handle(),
-                    toThis ? handle() : staging.handle(), 1, &region);
-    // The copy's writes must reach the kernels (upload) or the host (download) that come next.
-    VkMemoryBarrier barrier{};
-    barrier.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER;
-    barrier.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
-    barrier.dstAccessMask =
-        toThis ? VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT : VK_ACCESS_HOST_READ_BIT;
-    vkCmdPipelineBarrier(commands, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                         toThis ? VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT : VK_PIPELINE_STAGE_HOST_BIT,
-                         0, 1, &barrier, 0, nullptr, 0, nullptr);
-    check(vkEndCommandBuffer(commands), "vkEndCommandBuffer");
-    VkSubmitInfo submit{};
-    submit.sType = VK_STRUCTURE_TYPE_SUBMIT_INFO;
-    submit.commandBufferCount = 1;
-    submit.pCommandBuffers = &commands;
-    const VkFence rawFence = fence.get();
-    check(vkQueueSubmit(mContext->queue(), 1, &submit, rawFence), "vkQueueSubmit (staging copy)");
-    check(vkWaitForFences(device, 1, &rawFence, VK_TRUE, UINT64_MAX),
-          "vkWaitForFences (staging copy)");
+    mContext->staging().download(*this, offset, destination, bytes);
 }
 
 void DeviceBuffer::checkRange(const char* what, VkDeviceSize offset, VkDeviceSize bytes) const {

@@ -3,8 +3,8 @@
 /// A storage buffer the kernels read and write. Where the device's memory is the host's (lavapipe,
 /// integrated GPUs) the buffer lives in host-visible memory that stays mapped, and upload and
 /// download are plain copies. On a discrete GPU it lives in device-local memory, which kernels
-/// read at full speed but the host cannot map: upload and download then go through a temporary
-/// host-visible staging buffer and a copy command (VulkanContext::usesStaging()).
+/// read at full speed but the host cannot map: upload and download then go through the context's
+/// StagingArea, a reused host-visible buffer and a copy command (VulkanContext::usesStaging()).
 ///
 /// A buffer of at least one 16-byte texel within VulkanContext::texelBufferLimit() also has a
 /// texel view (RGBA32UI) over its whole texels, so kernels may read it as a uniform texel buffer
@@ -96,9 +96,6 @@ private:
     void checkRange(const char* what, VkDeviceSize offset, VkDeviceSize bytes) const;
     void write(const void* source, VkDeviceSize offset, VkDeviceSize bytes);
     void read(void* destination, VkDeviceSize offset, VkDeviceSize bytes) const;
-    /// Copies `bytes` between this buffer at `offset` and a staging buffer, through the queue.
-    void copyWithStaging(const DeviceBuffer& staging, VkDeviceSize offset, VkDeviceSize bytes,
-                         bool toThis) const;
 
     const VulkanContext* mContext = nullptr;
     std::string mName;

@@ -40,4 +40,17 @@ DeviceHandle<VkSemaphore> makeSemaphore(VkDevice device) {
     return {device, semaphore, vkDestroySemaphore};
 }
 
+void submitAndWait(const VulkanContext& context, VkCommandBuffer commands, VkFence fence,
+                   const std::string& what) {
+    const std::string suffix = what.empty() ? "" : " (" + what + ")";
+    VkSubmitInfo submit{};
+    submit.sType = VK_STRUCTURE_TYPE_SUBMIT_INFO;
+    submit.commandBufferCount = 1;
+    submit.pCommandBuffers = &commands;
+    check(vkQueueSubmit(context.queue(), 1, &submit, fence), ("vkQueueSubmit" + suffix).c_str());
+    check(vkWaitForFences(context.device(), 1, &fence, VK_TRUE, UINT64_MAX),
+          ("vkWaitForFences" + suffix).c_str());
+    check(vkResetFences(context.device(), 1, &fence), ("vkResetFences" + suffix).c_str());
+}
+
 }  // namespace modeflow::vulkan

@@ -3,6 +3,8 @@
 /// The small objects every submission needs, made in one call each: a command pool with its one
 /// primary command buffer, fences and semaphores, owned by DeviceHandles.
 
+#include <string>
+
 #include <vulkan/vulkan.h>
 
 #include "engine/vulkan/DeviceHandle.h"
@@ -21,5 +23,11 @@ struct CommandPool {
 CommandPool makeCommandPool(const VulkanContext& context, VkCommandPoolCreateFlags flags);
 DeviceHandle<VkFence> makeFence(VkDevice device, bool signaled = false);
 DeviceHandle<VkSemaphore> makeSemaphore(VkDevice device);
+
+/// Submits `commands` (ended) on the context's queue, waits for `fence` (unsignaled), then
+/// unsignals it again for the next submission.
+/// @throw modeflow::Error naming the call that failed, with `what` after it.
+void submitAndWait(const VulkanContext& context, VkCommandBuffer commands, VkFence fence,
+                   const std::string& what = {});
 
 }  // namespace modeflow::vulkan

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "engine/core/Error.h"
+#include "engine/vulkan/StagingArea.h"
 #include "engine/vulkan/VulkanError.h"
 
 namespace modeflow::vulkan {
@@ -155,9 +156,15 @@ VulkanContext::~VulkanContext() {
     release();
 }
 
+StagingArea& VulkanContext::staging() const {
+    if (!mStaging) mStaging = std::make_unique<StagingArea>(*this);
+    return *mStaging;
+}
+
 void VulkanContext::release() noexcept {
     if (mDevice) {
         vkDeviceWaitIdle(mDevice);
+        mStaging.reset();
         vkDestroyDevice(mDevice, nullptr);
         mDevice = VK_NULL_HANDLE;
     }

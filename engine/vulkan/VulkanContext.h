@@ -19,6 +19,8 @@
 
 namespace modeflow::vulkan {
 
+class StagingArea;
+
 struct VulkanContextOptions {
     /// Enable VK_LAYER_KHRONOS_validation and count its messages (see ValidationLog). Also on
     /// when the environment has MODEFLOW_VULKAN_VALIDATION=1.
@@ -101,6 +103,10 @@ public:
 
     void waitIdle() const;
 
+    /// The buffer and commands DeviceBuffer copies through where usesStaging(), made on first
+    /// use and kept until the context goes (one thread at a time, as the queue).
+    StagingArea& staging() const;
+
 private:
     /// Destroys the raw handles (device, surface, messenger, instance) made so far, newest first.
     void release() noexcept;
@@ -123,6 +129,7 @@ private:
     VkDevice mDevice = VK_NULL_HANDLE;
     VkQueue mQueue = VK_NULL_HANDLE;
     PFN_vkCmdPushDescriptorSetKHR mCmdPushDescriptorSet = nullptr;
+    mutable std::unique_ptr<StagingArea> mStaging;  ///< released before the device
 };
 
 }  // namespace modeflow::vulkan

@@ -13,6 +13,7 @@
 #include "engine/vulkan/ComputeKernel.h"
 #include "engine/vulkan/DeviceBuffer.h"
 #include "engine/vulkan/DeviceSelector.h"
+#include "engine/vulkan/StagingArea.h"
 #include "engine/vulkan/VulkanError.h"
 #include "tests/support/VulkanTestContext.h"
 
@@ -124,6 +125,42 @@ TEST(VulkanStagingTest, DeviceLocalBuffersRoundTripThroughStaging) {
     EXPECT_NE(context.describe().find("staging"), std::string::npos);
     expectRoundTrip(context);
     EXPECT_EQ(context.validationMessageCount(), 0u);
+}
+
+TEST(VulkanStagingTest, TransfersLargerThanTheStagingBufferGoInPieces) {
+    vulkan::VulkanContextOptions options;
+    options.forceStaging = true;
+    const vulkan::VulkanContext context(options);
+    // One chunk and a bit, from an odd offset, so that the pieces' offsets must add up.
+    const std::size_t count = (vulkan::StagingArea::kChunkBytes + 4096) / sizeof(std::uint32_t);
+    std::vector<std::uint32_t> values(count);
+    std::iota(values.begin(), values.end(), 12345u);
+    DeviceBuffer buffer(context, (count + 3) * sizeof(std::uint32_t), "large");
+    buffer.upload<std::uint32_t>(values, 3 * sizeof(std::uint32_t));
+    std::vector<std::uint32_t> back(count + 3, 0u);
+    buffer.download<std::uint32_t>(back);
+    EXPECT_TRUE(std::equal(values.begin(), values.end(), back.begin() + 3));
+    // The staging buffer kept from it serves small copies too.
+    std::vector<std::uint32_t> few(5);
+    buffer.download<std::uint32_t>(few, (count - 2) * sizeof(std::uint32_t));
+    EXPECT_EQ(few[0], values[count - 5]);
+    EXPECT_EQ(few[4], values[count - 1]);
+}
+
+TEST(VulkanStagingTest, TheStagingBufferGrowsNoLargerThanTheDeviceAllows) {
+    // Growing by doubling from 600 bytes would pass a 1000-byte storage buffer limit.
+    vulkan::VulkanContextOptions options;
+    options.forceStaging = true;
+    options.storageBufferLimit = 1000;
+    const vulkan::VulkanContext context(options);
+    for (const std::size_t bytes : {600u, 700u, 1000u}) {
+        std::vector<std::uint8_t> values(bytes);
+        std::iota(values.begin(), values.end(), std::uint8_t(bytes));
+        DeviceBuffer buffer = DeviceBuffer::fromValues<std::uint8_t>(context, values, "limited");
+        std::vector<std::uint8_t> back(bytes);
+        buffer.download<std::uint8_t>(back);
+        EXPECT_EQ(back, values) << bytes << " bytes";
+    }
 }
 
 TEST_P(VulkanContextTest, BufferOverMaxStorageBufferRangeIsRefusedClearly) {
