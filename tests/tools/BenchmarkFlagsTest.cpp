@@ -1,7 +1,8 @@
 /// @file BenchmarkFlagsTest.cpp
 /// The benchmark harnesses' command lines (tools/bench): a mistyped flag stops them with its name
 /// and a non-zero status instead of running nothing and reporting success, and `--device N`
-/// picks the Vulkan device of the runtime benchmarks.
+/// picks the Vulkan device of the runtime benchmarks; every table runs its smallest case to the
+/// end (a table that stops with an error is caught here, not by the next person timing it).
 
 #include <string>
 
@@ -41,6 +42,26 @@ TEST_F(BenchmarkFlags, DeviceFlagPicksTheVulkanDevice) {
     const RunResult noValue = runProgram(bench, "--device");
     EXPECT_EQ(noValue.status, 1);
     EXPECT_NE(noValue.err.find("--device needs a value"), std::string::npos) << noValue.err;
+}
+
+TEST_F(BenchmarkFlags, EveryRuntimeTableRunsItsSmallestCase) {
+    const std::pair<const char*, const char*> cases[] = {
+        {"bench_contraction", "contraction/(dense/N:50|sparse/N:100)/"},
+        {"bench_modal_steps", "modalStep/midpoint/N:50/"},
+        {"bench_runtime_stages", "runtime_step/dim:2/cells:256/N:50/"},
+        {"bench_basis_kernels", "projection_float32/dim:2/cells:256/N:50/"},
+        {"bench_smoke_advection", "smokeStep/maccormack/dim:2/cells:128/"},
+        {"bench_preview", "volumePreview"},
+        {"bench_closed_form", "deviceStep/torus_2d"},
+        {"bench_tensor_free", "vulkan_tensor_free/N:250/"},
+    };
+    for (const auto& [bench, filter] : cases) {
+        const RunResult r = runProgram(kBenchFolder + "/" + bench,
+                                       std::string("--benchmark_filter='") + filter + "'");
+        EXPECT_EQ(r.status, 0) << bench << ": " << r.err;
+        EXPECT_NE(r.out.find("/iterations:"), std::string::npos)
+            << bench << " timed nothing: " << r.out << r.err;
+    }
 }
 
 }  // namespace
