@@ -8,8 +8,9 @@
 
 namespace modeflow::display {
 
-NullScreen::NullScreen(const vulkan::VulkanContext& context, int width, int height, bool blueFirst)
-    : mContext(context), mBlueFirst(blueFirst) {
+NullScreen::NullScreen(const vulkan::VulkanContext& context, int width, int height, bool blueFirst,
+                       bool readsBack)
+    : mContext(context), mBlueFirst(blueFirst), mReadsBack(readsBack) {
     resize(width, height);
 }
 
@@ -27,10 +28,11 @@ VkExtent2D NullScreen::nextPictureSize() {
 
 void NullScreen::present(const vulkan::DeviceBuffer& pixels) {
     requirePictureBytes(pixels, mExtent);
+    ++mPresented;
+    if (!mReadsBack) return;
     std::vector<std::uint32_t> words(std::size_t(mExtent.width) * mExtent.height);
     pixels.download<std::uint32_t>(words);
     mLast = preview::unpackImage(words, int(mExtent.width), int(mExtent.height), mBlueFirst);
-    ++mPresented;
 }
 
 }  // namespace modeflow::display

@@ -13,8 +13,11 @@ namespace modeflow::display {
 class NullScreen final : public Screen {
 public:
     /// A width × height pixel screen on `context`, which must outlive it; `blueFirst`: the byte
-    /// order of a B8G8R8A8 swapchain rather than R8G8B8A8.
-    NullScreen(const vulkan::VulkanContext& context, int width, int height, bool blueFirst = false);
+    /// order of a B8G8R8A8 swapchain rather than R8G8B8A8; `readsBack`: present() copies each
+    /// picture to lastPicture() (tests), or only counts it (`stir --offscreen`, where a copy per
+    /// frame would be time a window does not spend).
+    NullScreen(const vulkan::VulkanContext& context, int width, int height, bool blueFirst = false,
+               bool readsBack = true);
 
     const vulkan::VulkanContext& context() const override { return mContext; }
     std::vector<InputEvent> poll() override { return {}; }
@@ -25,7 +28,7 @@ public:
     VkExtent2D nextPictureSize() override;
     VkExtent2D extent() const override { return mExtent; }
     bool blueFirst() const override { return mBlueFirst; }
-    /// Reads the picture back into lastPicture().
+    /// Reads the picture back into lastPicture() (when made to) and counts it.
     void present(const vulkan::DeviceBuffer& pixels) override;
 
     /// The next `frames` calls of nextPictureSize() answer 0 × 0, as for a minimized window.
@@ -38,6 +41,7 @@ private:
     const vulkan::VulkanContext& mContext;
     VkExtent2D mExtent{};
     bool mBlueFirst;
+    bool mReadsBack;
     preview::Image mLast;
     int mPresented = 0;
     int mMinimizedFrames = 0;

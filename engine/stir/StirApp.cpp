@@ -6,6 +6,7 @@
 #include <thread>
 
 #include "engine/core/Error.h"
+#include "engine/display/NullScreen.h"
 #include "engine/display/WindowScreen.h"
 #include "engine/stir/RealTimeClock.h"
 #include "engine/stir/StirKeys.h"
@@ -255,6 +256,18 @@ StirReport runStir(const StirOptions& options, const RunInputs& run, display::Sc
 }
 
 StirReport runStir(const StirOptions& options, const RunInputs& run, std::ostream& log) {
+    if (options.offscreen) {
+        if (!options.frames)
+            throw Error("stir offscreen needs a frame count (--frames): nothing closes it");
+        const vulkan::VulkanContext context(options.backend.vulkan);
+        const bool cpu = context.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
+        const bool sized = options.width || options.height;
+        display::NullScreen screen(
+            context, options.width.value_or(cpu && !sized ? kCpuWindowWidth : kWindowWidth),
+            options.height.value_or(cpu && !sized ? kCpuWindowHeight : kWindowHeight), false,
+            false);
+        return runStir(options, run, screen, log);
+    }
     display::WindowScreen window(options.width.value_or(kWindowWidth),
                                  options.height.value_or(kWindowHeight),
                                  "modeflow stir: " + run.scene.name, options.backend.vulkan);

@@ -37,6 +37,9 @@ struct StirOptions {
     std::filesystem::path screenshotFolder = ".";  ///< where the screenshot key writes
     std::vector<TimedEvent> script;                ///< events to replay
     bool statistics = true;                        ///< the statistics over the picture
+    /// Draw into an offscreen picture instead of a window (no display needed; needs `frames`):
+    /// benchmarks on headless GPUs, scripted runs that keep only the screenshot.
+    bool offscreen = false;
     /// The backend that simulates: the screen's Vulkan device, or the CPU reference beside it.
     /// The window's device is `backend.vulkan`'s choice (the first suitable one that presents
     /// to the window for the CPU reference too).
@@ -67,9 +70,10 @@ struct StirReport {
 StirReport runStir(const StirOptions& options, const RunInputs& run, display::Screen& screen,
                    std::ostream& log);
 
-/// The same in a window (display::WindowScreen) opened for it.
+/// The same in a window (display::WindowScreen) opened for it, or with `options.offscreen` on a
+/// display::NullScreen of that size on the chosen device.
 /// @throw modeflow::Error without a display (with how to run headless), for a device that
-///        cannot present, or as above.
+///        cannot present, offscreen without a frame count, or as above.
 StirReport runStir(const StirOptions& options, const RunInputs& run, std::ostream& log);
 
 }  // namespace modeflow::stir

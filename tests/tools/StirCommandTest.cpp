@@ -1,10 +1,13 @@
-/// `modeflow stir` from the command line: what it refuses before any work. (The window itself
-/// is tested under Xvfb by tests/engine/StirWindowSlowTest and tests/tools/StirCommandWindowTest.)
+/// `modeflow stir` from the command line: what it refuses before any work, and the offscreen
+/// loop that needs no display. (The window itself is tested under Xvfb by
+/// tests/engine/StirWindowSlowTest and tests/tools/StirCommandWindowTest.)
 
+#include <algorithm>
 #include <cstdlib>
 #include <fstream>
 
 #include "tests/support/CliFixture.h"
+#include "tests/support/PngFile.h"
 
 namespace modeflow::testing {
 namespace {
@@ -34,6 +37,29 @@ TEST_F(StirCommand, BadScriptsAreRefusedBeforeAnyWork) {
                    (mDir / "missing.txt").string() + ": no such input script");
     expectRejected("stir " + s.string() + " --device gpu --cache-dir " + mCache.string(),
                    "--device gpu");
+}
+
+TEST_F(StirCommand, OffscreenNeedsNoDisplayAndKeepsItsScreenshot) {
+    unsetenv("DISPLAY");
+    unsetenv("WAYLAND_DISPLAY");
+    setenv("MODEFLOW_VULKAN_VALIDATION", "1", 1);  // stir fails on any validation message
+    const fs::path s = scene("disk.toml", kSmallDisk), shot = mDir / "shot.png";
+    // Nothing would close it without a frame count: refused before the precompute.
+    expectRejected("stir " + s.string() + " --offscreen --cache-dir " + mCache.string(),
+                   "--offscreen needs --frames");
+    const RunResult r =
+        run("stir " + s.string() + " --offscreen --frames 12 --width 320 --height " +
+            "200 --screenshot " + shot.string() + " --cache-dir " + mCache.string());
+    unsetenv("MODEFLOW_VULKAN_VALIDATION");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.err.find("12 frames (320x200)"), std::string::npos) << r.err;
+    const std::optional<PngPixels> png = readPng(shot);
+    ASSERT_TRUE(png) << "no screenshot at " << shot;
+    EXPECT_EQ(png->width, 320);
+    EXPECT_EQ(png->height, 200);
+    const bool drawn =
+        std::any_of(png->rgba.begin(), png->rgba.end(), [](unsigned char c) { return c > 100; });
+    EXPECT_TRUE(drawn) << "the screenshot is black: nothing was drawn offscreen";
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 #include <iostream>
 #include <memory>
 
+#include "engine/core/Error.h"
 #include "engine/display/Window.h"
 #include "engine/pipeline/RunInputs.h"
 #include "engine/stir/StirApp.h"
@@ -19,6 +20,7 @@ Command addStir(CLI::App& app) {
         std::optional<std::string> cacheDir;
         std::string device = "vulkan";
         std::optional<int> width, height;
+        bool offscreen = false;
         double force = stir::StirSettings{}.force;
     };
     auto opts = std::make_shared<Options>();
@@ -39,6 +41,9 @@ Command addStir(CLI::App& app) {
         ->check(countUpTo(display::kMaxWindowSide));
     sub->add_option("--height", opts->height, "window height (default 720, or 540 on a CPU device)")
         ->check(countUpTo(display::kMaxWindowSide));
+    sub->add_flag("--offscreen", opts->offscreen,
+                  "draw into an offscreen picture instead of a window (no display needed; needs "
+                  "--frames): benchmarks, scripted runs kept as a --screenshot");
     sub->add_option("--force", opts->force, "stirring acceleration per unit pointer speed (1/s)")
         ->check(finiteNonNegative());
     sub->add_option("--device", opts->device,
@@ -60,7 +65,11 @@ Command addStir(CLI::App& app) {
         options.stir.force = opts->force;
         if (opts->script) options.script = stir::readInputScript(*opts->script);
         if (opts->screenshot) options.screenshot = *opts->screenshot;
-        display::Window::requireDisplay();
+        options.offscreen = opts->offscreen;
+        if (!opts->offscreen)
+            display::Window::requireDisplay();
+        else if (!opts->frames)
+            throw Error("--offscreen needs --frames: nothing closes an offscreen stir");
 
         Progress progress = Progress::toStderr();
         // A surface's dye lives in its scalar basis: it has no smoke grid.
