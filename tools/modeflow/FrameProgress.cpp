@@ -41,8 +41,31 @@ void FrameProgress::frameDone(int frame, double time, const std::string& detail)
     std::fflush(stderr);
 }
 
+void FrameProgress::addTime(const char* stage, std::chrono::steady_clock::time_point start) {
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    for (auto& [name, total] : mStageSeconds)
+        if (name == stage) {
+            total += seconds;
+            return;
+        }
+    mStageSeconds.emplace_back(stage, seconds);
+}
+
 void FrameProgress::finish() {
     if (mTerminal) std::fprintf(stderr, "\n");
+    const int frames = mLast - mFirst;
+    if (frames <= 0 || mStageSeconds.empty()) return;
+    std::string line = "per frame:";
+    const char* separator = "";
+    for (const auto& [name, total] : mStageSeconds) {
+        char part[128];
+        std::snprintf(part, sizeof part, "%s %s %.1f ms", separator, name.c_str(),
+                      1e3 * total / frames);
+        line += part;
+        separator = ",";
+    }
+    std::fprintf(stderr, "%s\n", line.c_str());
 }
 
 }  // namespace modeflow::cli

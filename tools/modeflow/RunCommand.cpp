@@ -151,14 +151,20 @@ Command addRun(CLI::App& app) {
             const std::string stage = "frame " + std::to_string(frame);
             FrameStats stats;
             try {
-                stats = inRunStage(stage, memory, [&] { return simulator->advanceFrame(); });
+                stats = inRunStage(stage, memory, [&] {
+                    return bar.timed("simulating", [&] { return simulator->advanceFrame(); });
+                });
             } catch (const ModalStateDiverged& e) {
                 throw Error(
                     divergenceAdvice(e, sceneKeyword(settings.integrator), "[simulation].dt"));
             }
-            const SmokeFields smoke = inRunStage(stage, memory, [&] { return simulator->smoke(); });
-            const std::vector<double> faceVelocity = simulator->faceVelocity();
-            const std::vector<double> faceMagnetic = simulator->faceMagneticField();
+            const SmokeFields smoke = inRunStage(stage, memory, [&] {
+                return bar.timed("reading fields", [&] { return simulator->smoke(); });
+            });
+            const std::vector<double> faceVelocity =
+                bar.timed("reading fields", [&] { return simulator->faceVelocity(); });
+            const std::vector<double> faceMagnetic =
+                bar.timed("reading fields", [&] { return simulator->faceMagneticField(); });
             VdbFrame vdb;
             vdb.smokeGrid = simulator->smokeGrid();
             vdb.basisGrid = basisGrid;
@@ -172,15 +178,21 @@ Command addRun(CLI::App& app) {
             vdb.sceneHash = sceneHash;
             vdb.modeflowVersion = MODEFLOW_VERSION;
             vdb.options.halfFloat = opts->half;
-            inRunStage(stage, memory,
-                       [&] { writeVdbFrame(out / frameFileName(scene.name, frame), vdb); });
+            inRunStage(stage, memory, [&] {
+                bar.timed("VDB files",
+                          [&] { writeVdbFrame(out / frameFileName(scene.name, frame), vdb); });
+            });
             if (preview && (frame % previewEvery == 0 || frame == frames)) {
                 std::filesystem::path png = out / frameFileName(scene.name, frame);
-                preview->write(png.replace_extension(".png"), frame, smoke, temperature);
+                bar.timed("previews", [&] {
+                    preview->write(png.replace_extension(".png"), frame, smoke, temperature);
+                });
             }
-            writeCheckpoint(folder.checkpointPath(),
-                            {frame, simulator->time(), runHash, simulator->velocity(),
-                             simulator->magneticField(), smoke});
+            bar.timed("checkpoint", [&] {
+                writeCheckpoint(folder.checkpointPath(),
+                                {frame, simulator->time(), runHash, simulator->velocity(),
+                                 simulator->magneticField(), smoke});
+            });
             std::string detail;
             if (stats.unconvergedSteps)
                 detail += std::to_string(stats.unconvergedSteps) + " unconverged steps ";

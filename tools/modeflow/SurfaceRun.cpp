@@ -44,13 +44,16 @@ int runSurface(const SurfaceRunOptions& o) {
     for (int frame = first + 1; frame <= o.frames; ++frame) {
         const std::string stage = "frame " + std::to_string(frame);
         try {
-            inRunStage(stage, o.memory, [&] { simulation.advanceFrame(); });
+            inRunStage(stage, o.memory,
+                       [&] { bar.timed("simulating", [&] { simulation.advanceFrame(); }); });
         } catch (const ModalStateDiverged& e) {
             throw Error(
                 divergenceAdvice(e, sceneKeyword(run.settings.integrator), "[simulation].dt"));
         }
-        const std::vector<double> dye = simulation.dye().vertexValues();
-        const std::vector<double> velocity = simulation.vertexVelocity();
+        const std::vector<double> dye =
+            bar.timed("reading fields", [&] { return simulation.dye().vertexValues(); });
+        const std::vector<double> velocity =
+            bar.timed("reading fields", [&] { return simulation.vertexVelocity(); });
         PlyFrame ply;
         ply.mesh = &run.cache.surface.mesh;
         ply.dye = dye;
@@ -60,7 +63,9 @@ int runSurface(const SurfaceRunOptions& o) {
         ply.time = simulation.time();
         ply.sceneHash = o.sceneHash;
         inRunStage(stage, o.memory, [&] {
-            writePlyFrame(o.folder.path() / plyFrameFileName(o.scene.name, frame), ply);
+            bar.timed("PLY files", [&] {
+                writePlyFrame(o.folder.path() / plyFrameFileName(o.scene.name, frame), ply);
+            });
         });
         if (o.previewEvery > 0 && (frame % o.previewEvery == 0 || frame == o.frames)) {
             pictures.push_back(
@@ -73,7 +78,7 @@ int runSurface(const SurfaceRunOptions& o) {
         const Eigen::VectorXd& state = simulation.dye().state();
         checkpoint.smoke.density.assign(state.data(), state.data() + state.size());
         checkpoint.smoke.temperature.assign(checkpoint.smoke.density.size(), 0.0);  // dye has none
-        writeCheckpoint(o.folder.checkpointPath(), checkpoint);
+        bar.timed("checkpoint", [&] { writeCheckpoint(o.folder.checkpointPath(), checkpoint); });
         bar.frameDone(frame, simulation.time(), "");
     }
     bar.finish();
