@@ -8,7 +8,7 @@ packages=(
     libeigen3-dev libspectra-dev libsuitesparse-dev libopenblas0-pthread libfftw3-dev
     slepc-dev petsc-dev         # sliced eigensolves: SLEPc, PETSc with MUMPS, Open MPI (mpirun)
     libopenvdb-dev libboost-iostreams-dev libtbb-dev
-    libtomlplusplus-dev libcli11-dev nlohmann-json3-dev libtinyobjloader-dev
+    libtomlplusplus-dev libcli11-dev nlohmann-json3-dev libtinyobjloader-dev libxxhash-dev
     libvulkan-dev mesa-vulkan-drivers vulkan-tools glslang-tools spirv-tools vulkan-validationlayers
     libglfw3-dev xvfb xauth
     libstb-dev libgtest-dev libbenchmark-dev time bc python3 clang-format  # tools/check-layering.py, tools/check-format.sh

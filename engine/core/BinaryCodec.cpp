@@ -25,7 +25,7 @@ void ByteReader::read(void* to, std::size_t n) {
         fail("unreadable to its end (it changed while it was read?)");
     }
     mAt += n;
-    mHash = fnv1a64({bytes, n}, mHash);
+    mChecksum.update({bytes, n});
 }
 
 void ByteReader::skip(std::size_t n) {

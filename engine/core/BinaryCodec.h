@@ -16,11 +16,14 @@
 
 #include <bit>
 
+#include "engine/core/Checksum.h"
+
 static_assert(std::endian::native == std::endian::little, "modeflow's files are little-endian");
 
 namespace modeflow {
 
-/// 64-bit FNV-1a; stable across platforms and runs (it names cache files and checks contents).
+/// 64-bit FNV-1a; stable across platforms and runs (it names cache files by their keys; file
+/// contents are checked with Checksum.h's faster hash).
 std::uint64_t fnv1a64(std::string_view bytes, std::uint64_t seed = 0xcbf29ce484222325ull);
 
 class ByteWriter {
@@ -102,8 +105,8 @@ public:
 
     std::uint64_t remaining() const { return mSize - mAt; }
     bool atEnd() const { return mAt == mSize; }
-    /// FNV-1a of the bytes read so far, for the checksum that follows them.
-    std::uint64_t hash() const { return mHash; }
+    /// The checksum (Checksum.h) of the bytes read so far, for the one that follows them.
+    std::uint64_t hash() const { return mChecksum.value(); }
     [[noreturn]] void fail(std::string_view why) const;
 
 private:
@@ -111,7 +114,7 @@ private:
     std::istream* mStream = nullptr;
     std::uint64_t mSize = 0;
     std::uint64_t mAt = 0;
-    std::uint64_t mHash = fnv1a64({});
+    Checksum mChecksum;
     Describe mDescribe;
 };
 

@@ -322,10 +322,11 @@ void writeCache(const std::filesystem::path& path, const BasisCache& cache) {
     Payload payload;
     serialize(cache, payload);
     const std::vector<std::string_view> pieces = payload.pieces();
-    std::uint64_t size = 0, hash = fnv1a64({});
+    std::uint64_t size = 0;
+    Checksum hash;
     for (const std::string_view piece : pieces) {
         size += piece.size();
-        hash = fnv1a64(piece, hash);
+        hash.update(piece);
     }
     ByteWriter header;
     header.pod(kMagic);
@@ -334,7 +335,7 @@ void writeCache(const std::filesystem::path& path, const BasisCache& cache) {
     header.pod(fnv1a64(cache.key));
     header.pod<std::uint64_t>(size);
     ByteWriter checksum;
-    checksum.pod(hash);
+    checksum.pod(hash.value());
     std::vector<std::string_view> file{header.bytes()};
     file.insert(file.end(), pieces.begin(), pieces.end());
     file.push_back(checksum.bytes());

@@ -3,7 +3,7 @@
 /// The cache file: little-endian binary, versioned, checksummed, written atomically.
 ///
 /// Layout: magic "MODEFLOW-BASIS\0\0" (16 bytes) | u32 format version | u32 reserved |
-/// u64 key hash | u64 payload size | payload | u64 FNV-1a checksum of the payload.
+/// u64 key hash (FNV-1a) | u64 payload size | payload | u64 XXH3 checksum of the payload.
 /// A file with another magic, version, size or checksum is refused, never misread.
 
 #include <cstdint>
@@ -17,7 +17,7 @@ namespace modeflow {
 
 /// 3: periodic axes; 4: closed-form bases; 5: surface bases; 6: the vorticity quadrature of every
 /// eigensolved grid basis and coefficient storage "none" (tensor-free advection).
-inline constexpr std::uint32_t kCacheFormatVersion = 6;
+inline constexpr std::uint32_t kCacheFormatVersion = 7;  ///< 7: XXH3 checksum
 
 /// Writes to a temporary file beside `path` (AtomicFile.h), then renames it over `path`, so
 /// readers see the old file or the whole new one.

@@ -14,7 +14,7 @@ namespace {
 
 constexpr char kMagic[16] = {'M', 'O', 'D', 'E', 'F', 'L', 'O', 'W',
                              '-', 'M', 'A', 'S', 'K', 0,   0,   0};
-constexpr std::uint32_t kVersion = 1;
+constexpr std::uint32_t kVersion = 2;  ///< 2: XXH3 checksum
 
 }  // namespace
 
@@ -37,7 +37,7 @@ void writeSmokeMask(const std::filesystem::path& path, std::uint64_t keyHash, in
     w.pod(std::uint64_t(mask.size()));
     w.vector(bits);
     std::string bytes = w.bytes();
-    const std::uint64_t checksum = fnv1a64(bytes);
+    const std::uint64_t checksum = checksum64(bytes);
     bytes.append(reinterpret_cast<const char*>(&checksum), sizeof checksum);
     writeFileAtomically(path, bytes, "smoke mask");
 }

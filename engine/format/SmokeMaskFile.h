@@ -7,7 +7,7 @@
 ///
 /// Layout: magic "MODEFLOW-MASK\0\0\0" (16 bytes) | u32 version | u32 scale | u64 basis key hash |
 /// u64 cell count | bit array (one bit per cell, cellIndex order, count-prefixed bytes) |
-/// u64 FNV-1a checksum of everything before it.
+/// u64 XXH3 checksum (Checksum.h) of everything before it.
 
 #include <cstdint>
 #include <filesystem>

@@ -20,7 +20,7 @@ namespace {
 
 constexpr char kMagic[16] = {'M', 'O', 'D', 'E', 'F', 'L', 'O', 'W',
                              '-', 'R', 'E', 'S', 'U', 'M', 'E', '\0'};
-constexpr std::uint32_t kVersion = 2;  ///< 2: the magnetic field after the velocity
+constexpr std::uint32_t kVersion = 3;  ///< 2: the magnetic field after the velocity; 3: XXH3
 /// The largest checkpoint read (64 GiB): the modal state and two fields of the largest smoke grid a
 /// scene may ask for fit, and a damaged file cannot make the reader ask for terabytes.
 constexpr std::uintmax_t kMaxCheckpointBytes = std::uintmax_t{1} << 36;
@@ -80,7 +80,7 @@ void writeCheckpoint(const std::filesystem::path& path, const Checkpoint& checkp
     w.vector(checkpoint.smoke.density);
     w.vector(checkpoint.smoke.temperature);
     ByteWriter checksum;
-    checksum.pod(fnv1a64(w.bytes()));
+    checksum.pod(checksum64(w.bytes()));
     writeFileAtomically(path, {w.bytes(), checksum.bytes()}, "checkpoint");
 }
 
@@ -89,7 +89,7 @@ Checkpoint readCheckpoint(const std::filesystem::path& path) {
     const std::string_view body(bytes.data(), bytes.size() - sizeof(std::uint64_t));
     std::uint64_t checksum;
     std::memcpy(&checksum, bytes.data() + body.size(), sizeof checksum);
-    if (checksum != fnv1a64(body)) fail(path, "checksum mismatch (damaged)");
+    if (checksum != checksum64(body)) fail(path, "checksum mismatch (damaged)");
 
     ByteReader reader(body, [&](std::string_view why) { return refusal(path, why); });
     reader.skip(sizeof kMagic + sizeof kVersion);  // checked by readCheckpointBytes

@@ -18,7 +18,7 @@ namespace fs = std::filesystem;
 
 constexpr char kMagic[16] = {'M', 'O', 'D', 'E', 'F', 'L', 'O', 'W',
                              '-', 'S', 'L', 'I', 'C', 'E', 0,   0};
-constexpr std::uint32_t kVersion = 1;
+constexpr std::uint32_t kVersion = 2;  ///< 2: XXH3 checksum
 constexpr const char* kExtension = ".mfslice";
 
 template <typename T>
@@ -43,16 +43,18 @@ std::uint64_t sliceProblemHash(const Eigen::SparseMatrix<double>& stiffness,
     w.pod(request.estimate);
     w.pod(request.tolerance);
     w.pod(std::int32_t(request.spectralDimension));
-    std::uint64_t hash = fnv1a64(w.bytes());
+    Checksum hash;
+    hash.update(w.bytes());
     for (Eigen::Index c = 0; c < stiffness.outerSize(); ++c) {
         const auto begin = std::size_t(stiffness.outerIndexPtr()[c]);
         const auto n = std::size_t(stiffness.isCompressed() ? stiffness.outerIndexPtr()[c + 1] -
                                                                   stiffness.outerIndexPtr()[c]
                                                             : stiffness.innerNonZeroPtr()[c]);
-        hash = fnv1a64(bytesOf(stiffness.innerIndexPtr() + begin, n), hash);
-        hash = fnv1a64(bytesOf(stiffness.valuePtr() + begin, n), hash);
+        hash.update(bytesOf(stiffness.innerIndexPtr() + begin, n));
+        hash.update(bytesOf(stiffness.valuePtr() + begin, n));
     }
-    return fnv1a64(bytesOf(massDiagonal.data(), std::size_t(massDiagonal.size())), hash);
+    hash.update(bytesOf(massDiagonal.data(), std::size_t(massDiagonal.size())));
+    return hash.value();
 }
 
 fs::path sliceCheckpointPath(const fs::path& cachePath, std::uint64_t problem, int interval) {
@@ -77,7 +79,10 @@ void writeSliceCheckpoint(const fs::path& path, const SliceCheckpoint& checkpoin
         bytesOf(checkpoint.values.data(), std::size_t(checkpoint.values.size()));
     const std::string_view vectors =
         bytesOf(checkpoint.vectors.data(), std::size_t(checkpoint.vectors.size()));
-    const std::uint64_t checksum = fnv1a64(vectors, fnv1a64(values, fnv1a64(w.bytes())));
+    Checksum hash;
+    for (const std::string_view piece : {std::string_view(w.bytes()), values, vectors})
+        hash.update(piece);
+    const std::uint64_t checksum = hash.value();
     writeFileAtomically(path, {w.bytes(), values, vectors, bytesOf(&checksum, 1)},
                         "eigensolver checkpoint");
 }

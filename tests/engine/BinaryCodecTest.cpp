@@ -1,6 +1,8 @@
 /// BinaryCodec: what is written reads back the same, from memory or streamed from a file, and
 /// damaged bytes are refused with the caller's message before anything is allocated for them.
 
+#include <algorithm>
+
 #include <gtest/gtest.h>
 
 #include <sstream>
@@ -65,7 +67,7 @@ TEST(BinaryCodec, TheHashCoversTheBytesReadSoFar) {
     w.string("checked part");
     w.pod(std::uint64_t(99));
     const std::string bytes = w.bytes();
-    const std::uint64_t expected = fnv1a64(std::string_view(bytes).substr(0, bytes.size() - 8));
+    const std::uint64_t expected = checksum64(std::string_view(bytes).substr(0, bytes.size() - 8));
     ByteReader r = readerOf(bytes);
     StreamedReader streamed(bytes);
     for (ByteReader* reader : {&r, &streamed.reader}) {
@@ -111,6 +113,27 @@ TEST(BinaryCodec, AHugeCountIsRefusedBeforeAnyAllocation) {
     EXPECT_THROW(again.string(), Error);
     StreamedReader streamed(bytes);
     EXPECT_THROW(streamed.reader.vector<double>(), Error);
+}
+
+TEST(BinaryCodec, ChecksumIsXxh3AndStreamsAsOneCall) {
+    EXPECT_EQ(checksum64(""), 0x2d06800538d394c2ull);  // XXH3-64's published empty-input value
+    std::string bytes(3'000'017, '\0');
+    std::uint64_t state = 88172645463325252ull;
+    for (char& c : bytes) {  // xorshift: every byte matters to the comparison
+        state ^= state << 13, state ^= state >> 7, state ^= state << 17;
+        c = char(state);
+    }
+    // Pieces of odd sizes, across the hash's internal 256-byte stripes and 1 KiB blocks.
+    Checksum streamed;
+    std::size_t at = 0;
+    for (std::size_t piece = 1; at < bytes.size(); piece = piece * 3 + 1) {
+        const std::size_t n = std::min(piece, bytes.size() - at);
+        streamed.update(std::string_view(bytes).substr(at, n));
+        at += n;
+    }
+    EXPECT_EQ(streamed.value(), checksum64(bytes));
+    bytes[1'234'567] ^= 1;
+    EXPECT_NE(streamed.value(), checksum64(bytes)) << "one flipped bit changes the checksum";
 }
 
 TEST(BinaryCodec, Fnv1aMatchesItsPublishedValues) {

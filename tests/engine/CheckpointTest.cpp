@@ -64,7 +64,7 @@ void rewrite(const fs::path& file, const std::function<void(std::string&)>& edit
     in.close();
     bytes.resize(bytes.size() - 8);
     edit(bytes);
-    const std::uint64_t checksum = fnv1a64(bytes);
+    const std::uint64_t checksum = checksum64(bytes);
     bytes.append(reinterpret_cast<const char*>(&checksum), sizeof checksum);
     std::ofstream(file, std::ios::binary | std::ios::trunc) << bytes;
 }

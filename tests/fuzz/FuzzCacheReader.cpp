@@ -35,7 +35,7 @@ std::string cacheFileAround(std::string_view payload) {
     file.pod(keyHash(payload));
     file.pod(std::uint64_t(payload.size()));
     file.values(payload.data(), payload.size());
-    file.pod(fnv1a64(payload));
+    file.pod(checksum64(payload));
     return file.bytes();
 }
 

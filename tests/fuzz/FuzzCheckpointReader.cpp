@@ -20,9 +20,9 @@ constexpr std::string_view kMagic("MODEFLOW-RESUME\0", 16);
 std::string checkpointAround(std::string_view body) {
     ByteWriter file;
     file.values(kMagic.data(), kMagic.size());
-    file.pod(std::uint32_t{2});  // the version
+    file.pod(std::uint32_t{3});  // the version (Checkpoint.cpp)
     file.values(body.data(), body.size());
-    file.pod(fnv1a64(file.bytes()));
+    file.pod(checksum64(file.bytes()));
     return file.bytes();
 }
 
