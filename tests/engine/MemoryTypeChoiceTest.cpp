@@ -23,8 +23,8 @@ VkPhysicalDeviceMemoryProperties types(std::initializer_list<VkMemoryPropertyFla
     return memory;
 }
 
-// The H100's table as its driver lists it (580.159): plain VRAM, system memory in two kinds,
-// and VRAM mapped through the BAR.
+// A discrete GPU's usual table (NVIDIA's drivers list this layout): plain VRAM, system memory
+// in two kinds, and VRAM mapped through the BAR.
 TEST(MemoryTypeChoice, DiscreteGpuStagesThroughCachedSystemMemory) {
     const auto nvidia = types({0, kLocal, kVisible, kVisible | kCached, kLocal | kVisible});
     EXPECT_EQ(chooseMemoryType(nvidia, kAll, MemoryUse::DeviceOnly), 1u);
