@@ -3,9 +3,11 @@
 /// tests/engine/StirWindowSlowTest and tests/tools/StirCommandWindowTest.)
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <fstream>
 
+#include "engine/vulkan/VulkanContext.h"
 #include "tests/support/CliFixture.h"
 #include "tests/support/PngFile.h"
 
@@ -37,6 +39,19 @@ TEST_F(StirCommand, BadScriptsAreRefusedBeforeAnyWork) {
                    (mDir / "missing.txt").string() + ": no such input script");
     expectRejected("stir " + s.string() + " --device gpu --cache-dir " + mCache.string(),
                    "--device gpu");
+}
+
+TEST_F(StirCommand, ABasisTooLargeForTheDeviceIsRefusedBeforeThePrecompute) {
+    // Just past the device's texel limit for the N × N float32 pair sums of an assembled tensor
+    // (a whole box's closed-form basis): refused from the scene, with no cache made.
+    const vulkan::VulkanContext device{vulkan::VulkanContextOptions{}};
+    const int n = int(std::sqrt(double(device.texelBufferLimit()) / 4.0)) + 8;
+    const fs::path s = scene("box.toml",
+                             "[grid]\nresolution = [24, 24, 24]\nbounds_min = [0, 0, 0]\n"
+                             "bounds_max = [1, 1, 1]\n[basis]\nvelocity_modes = " +
+                                 std::to_string(n) + "\nscalar_modes = 0\n");
+    expectRejected("stir " + s.string() + " --offscreen --frames 1 --cache-dir " + mCache.string(),
+                   "the pair sums of N = " + std::to_string(n) + " modes");
 }
 
 TEST_F(StirCommand, OffscreenNeedsNoDisplayAndKeepsItsScreenshot) {

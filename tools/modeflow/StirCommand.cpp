@@ -3,6 +3,7 @@
 
 #include "engine/core/Error.h"
 #include "engine/display/Window.h"
+#include "engine/pipeline/Backend.h"
 #include "engine/pipeline/RunInputs.h"
 #include "engine/stir/StirApp.h"
 #include "precompute/scene/SceneLoader.h"
@@ -57,6 +58,9 @@ Command addStir(CLI::App& app) {
         const BackendChoice choice = parseDeviceOption(opts->device);
         const SceneSpec scene = loadScene(opts->scene);
         requireSupport(scene, choice.kind);
+        // The window's device opens after the precompute; a basis too large for it is refused
+        // now, from the first suitable device's limits (the upload checks again).
+        if (choice.kind == BackendKind::Vulkan) Backend(choice).requireFits(scene);
         stir::StirOptions options;
         options.backend = choice;
         options.frames = opts->frames;
