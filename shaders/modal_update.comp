@@ -151,6 +151,7 @@ void solveLeastSquares(uint used) {
 // each parts * stride floats.
 void iterate(uint lane, uint size) {
     const uint m = ANDERSON_DEPTH;
+    const float infinity = uintBitsToFloat(0x7f800000u);
     const uint iteration = status.iterations;
     const bool accelerated = params.anderson != 0u && iteration > 0u;
     const uint slot = accelerated ? (iteration - 1u) % m : 0u;
@@ -161,7 +162,9 @@ void iterate(uint lane, uint size) {
         if (!inState(k)) continue;
         const float g = fixedPointMap(k);
         const float residual = g - y[k];
-        sums[0] = max(sums[0], abs(residual));
+        // A non-finite iterate (a step whose R overflows, or diverging iterates) must never count
+        // as converged, but max() may return its other operand for a NaN: it enters as infinity.
+        sums[0] = max(sums[0], isnan(residual) ? infinity : abs(residual));
         sums[1] = max(sums[1], abs(g));
         if (accelerated) {
             history[at(slot, k)] = residual - history[at(2u * m, k)];
@@ -186,7 +189,8 @@ void iterate(uint lane, uint size) {
         setPoint(k, next);
     }
     if (lane != 0) return;
-    const float residual = partial[0][1] > 0.0 ? partial[0][0] / partial[0][1] : 0.0;
+    // Relative to max|g|, or absolute where every |g| is 0 (or NaN, which max() may drop).
+    const float residual = partial[0][1] > 0.0 ? partial[0][0] / partial[0][1] : partial[0][0];
     // Converged at the tolerance, or at float32's round-off floor just above it: the change
     // no longer halves, so more iterations would only shuffle the last bits.
     const bool stalled = iteration > 0 && residual <= 16.0 * params.tolerance &&

@@ -286,6 +286,28 @@ TEST_P(ModalStepKernelTest, StepsThatMissTheToleranceAreCounted) {
     }
 }
 
+TEST_P(ModalStepKernelTest, AnIterateThatIsNotFiniteNeverCountsAsConverged) {
+    // |v| ~ 1e25: the pair sums reach ~1e26 and their products with v overflow float32, so every
+    // iterate is inf or NaN. Such a step must keep its state and be counted (the host then takes
+    // substeps), for both implicit rules, plain and accelerated.
+    const Eigen::VectorXd huge = roundedToFloat(1e25 * mV0);
+    for (const Integrator scheme : {Integrator::Midpoint, Integrator::Trapezoidal})
+        for (const bool accelerated : {false, true}) {
+            DeviceStepSettings settings;
+            settings.scheme = scheme;
+            settings.accelerated = accelerated;
+            settings.maxIterations = 4;
+            ModalStepper stepper(context(), mC, {}, settings);
+            stepper.setState(huge);
+            runDevice(context(), stepper, mH, 2);
+            const device::DeviceStepStatus status = stepper.status();
+            EXPECT_FALSE(status.converged) << int(scheme) << " " << accelerated;
+            EXPECT_EQ(status.unconvergedSteps, 2) << int(scheme) << " " << accelerated;
+            EXPECT_TRUE(stepper.state() == huge) << int(scheme) << " " << accelerated;
+        }
+    expectNoValidationMessages();
+}
+
 TEST_P(ModalStepKernelTest, RefusesStatesAndParametersOfTheWrongShape) {
     ModalStepper stepper(context(), mC, {});
     EXPECT_THROW(stepper.setState(Eigen::VectorXd::Zero(kModes + 1)), Error);
