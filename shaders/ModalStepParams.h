@@ -78,6 +78,9 @@ struct AdvectSumParams {
     5u                          /* r0 = R(x) kept, y = x + h M^-1 (r0 + f) (explicit predictor) */
 #define MODAL_OP_TRAPEZOIDAL 6u /* one fixed-point iteration of the trapezoidal rule */
 #define MODAL_OP_TRAPEZOIDAL_END 7u /* x = y, half decay; no r */
+#define MODAL_OP_LINEARIZED_START \
+    8u /* r = R(x): y = x + h/2 M^-1 (r + f), a = M y (the predictor the iterations freeze) */
+#define MODAL_OP_LINEARIZED_END 9u /* as MIDPOINT_END, and no step-end R held */
 /* Directions of the implicit iterations' Anderson acceleration (modal_update.comp): its history
    holds 2 ANDERSON_DEPTH + 2 state-sized vectors, and one for the warm start. */
 #define ANDERSON_DEPTH 5
@@ -94,7 +97,7 @@ struct ModalUpdateParams {
     uint lorentz;       /* MHD: subtract r[2 stride + k] (C(F, F)) from the velocity part of r */
     uint anderson;      /* implicit rules: 1 accelerates the fixed-point iteration */
     uint warm;          /* BEGIN of a midpoint step: 1 starts from the R held, if any */
-    uint pad1;
+    uint frozen;        /* MIDPOINT of a linearized step: 1 leaves a (the frozen M x~) alone */
 };
 
 /* The status block modal_update.comp keeps for the host. */

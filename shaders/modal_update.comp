@@ -24,6 +24,10 @@
 //   TRAPEZOIDAL   fixed point of seed eq. 6.9 in the end point y = x' (f constant over the step):
 //                 y <- x + h/2 M^-1 (R(x) + R(y)) + h M^-1 f, converged as MIDPOINT
 //   TRAPEZOIDAL_END  x <- exp(-d h/2) y; an unconverged step keeps x (decay only)
+//   LINEARIZED_START  r = R(x): y = x + h/2 M^-1 (r + f), a = M y, the predictor x~ whose pair
+//                 sums the linearized rule's iterations keep (engine/dynamics/ModalIntegrator.h)
+//   MIDPOINT with `frozen`: the same map with r = L(x~) y, a left as it is (a linear fixed point)
+//   LINEARIZED_END  as MIDPOINT_END
 //
 // Plainly iterated, both fixed points converge when h |dR/dy| / 2 < 1 (the step's CFL-like number),
 // accelerated often beyond; the status block counts steps that reached the iteration limit so the
@@ -57,7 +61,7 @@ shared float solution[ANDERSON_DEPTH];
 
 void setPoint(uint k, float value) {
     y[k] = value;
-    a[k] = mass[k] * value;
+    if (params.frozen == 0u) a[k] = mass[k] * value;
 }
 
 bool inState(uint k) { return k % params.stride < params.n; }  // not padding between the parts
@@ -241,7 +245,9 @@ void main() {
             acc[k] = (s == 0 ? 0.0 : acc[k]) + (s == 0 || s == 3 ? 1.0 : 2.0) * slope;
             if (s < 3) setPoint(k, x[k] + (s == 2 ? 1.0 : 0.5) * h * slope);
             else x[k] = halfDecay * (x[k] + h / 6.0 * acc[k]);
-        } else if (op == MODAL_OP_MIDPOINT_END) {
+        } else if (op == MODAL_OP_LINEARIZED_START) {
+            setPoint(k, x[k] + 0.5 * h * (rk + f[k]) / mass[k]);
+        } else if (op == MODAL_OP_MIDPOINT_END || op == MODAL_OP_LINEARIZED_END) {
             // An iteration that did not converge may be diverging (h |dR/dv| / 2 > 1): keep the
             // state rather than step to a wild iterate; the host then takes smaller substeps.
             x[k] = halfDecay * (status.converged != 0u ? 2.0 * y[k] - x[k] : x[k]);
@@ -261,9 +267,12 @@ void main() {
         const uint words = 3 * params.argumentCount;
         for (uint e = 0; e < words; ++e) arguments[words + e] = arguments[e];
     }
-    const bool ending = op == MODAL_OP_MIDPOINT_END || op == MODAL_OP_TRAPEZOIDAL_END;
+    const bool ending = op == MODAL_OP_MIDPOINT_END || op == MODAL_OP_TRAPEZOIDAL_END ||
+                        op == MODAL_OP_LINEARIZED_END;
     if (ending && lane == 0) {
         if (status.converged == 0) status.unconverged += 1;
-        status.heldRhs = status.converged != 0u ? min(status.heldRhs + 1u, 2u) : 0u;
+        // A linearized step ends with r = L(x~) y, not R at the step's end: nothing to extrapolate.
+        const bool holds = status.converged != 0u && op != MODAL_OP_LINEARIZED_END;
+        status.heldRhs = holds ? min(status.heldRhs + 1u, 2u) : 0u;
     }
 }

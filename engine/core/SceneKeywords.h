@@ -41,7 +41,8 @@ inline constexpr std::pair<std::string_view, Integrator> kIntegrators[] = {
     {"explicit", Integrator::Explicit},
     {"rk4", Integrator::Rk4},
     {"midpoint", Integrator::Midpoint},
-    {"trapezoidal", Integrator::Trapezoidal}};
+    {"trapezoidal", Integrator::Trapezoidal},
+    {"linearized", Integrator::Linearized}};
 inline constexpr std::pair<std::string_view, InitialVelocity> kInitialVelocities[] = {
     {"zero", InitialVelocity::Zero},
     {"random", InitialVelocity::Random},

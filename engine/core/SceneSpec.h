@@ -80,7 +80,13 @@ struct BasisSpec {
     bool operator==(const BasisSpec&) const = default;
 };
 
-enum class Integrator { Explicit, Rk4, Midpoint, Trapezoidal };
+/// The modal time integrators (engine/dynamics/ModalIntegrator.h has their equations).
+enum class Integrator { Explicit, Rk4, Midpoint, Trapezoidal, Linearized };
+
+/// Whether a step solves an equation (and reports iterations): all but explicit and rk4.
+inline bool isImplicit(Integrator integrator) {
+    return integrator != Integrator::Explicit && integrator != Integrator::Rk4;
+}
 
 struct SimulationSpec {
     double dt = 0.02;

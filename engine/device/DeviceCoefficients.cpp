@@ -252,53 +252,87 @@ void DeviceCoefficients::recordAdvect(vulkan::CommandSequence& sequence,
 
 std::vector<std::uint32_t> DeviceCoefficients::dispatchGroups(bool sameVectors) const {
     if (mTensorFree) return mTensorFree->dispatchGroups(sameVectors);
+    std::vector<std::uint32_t> groups = pairSumGroups();
+    for (const std::uint32_t g : combineGroups()) groups.push_back(g);
+    return groups;
+}
+
+void DeviceCoefficients::requireAssembled(const char* what) const {
+    if (mTensorFree)
+        throw Error(std::string("modal contraction: tensor-free coefficients keep no ") + what);
+}
+
+std::vector<std::uint32_t> DeviceCoefficients::pairSumGroups() const {
+    requireAssembled("pair sums");
     std::vector<std::uint32_t> groups;
     if (mSparse) groups.push_back(groupsFor(mSparse->rowCount, 64, mMaxGroups));
     for (const Chunk& chunk : mChunks)
         // A tile per kPairTileLanes invocations of 64.
         groups.push_back(groupsFor(chunk.pairs, kPairTileRows * 64 / kPairTileLanes, mMaxGroups));
-    groups.push_back(groupsFor(std::size_t(mN), mSubgroupsPerGroup, mMaxGroups));
-    groups.push_back(groupsFor(paddedSize(mN) / 4, 64, mMaxGroups));
     return groups;
+}
+
+std::vector<std::uint32_t> DeviceCoefficients::combineGroups() const {
+    requireAssembled("pair sums");
+    return {groupsFor(std::size_t(mN), mSubgroupsPerGroup, mMaxGroups),
+            groupsFor(paddedSize(mN) / 4, 64, mMaxGroups)};
 }
 
 void DeviceCoefficients::recordApply(vulkan::CommandSequence& sequence, const ModalKernels& kernels,
                                      const vulkan::DeviceBuffer& a, const vulkan::DeviceBuffer& b,
                                      const vulkan::DeviceBuffer& out,
                                      IndirectArguments indirect) const {
-    requireFloats(a, int(paddedSize(mN)));
-    requireFloats(b, int(paddedSize(mN)));
-    requireFloats(out, mN);
     if (mTensorFree) {
+        requireFloats(a, int(paddedSize(mN)));
+        requireFloats(b, int(paddedSize(mN)));
+        requireFloats(out, mN);
         mTensorFree->recordApply(sequence, a, b, out, indirect);
         return;
     }
-    const std::vector<std::uint32_t> groups = dispatchGroups(&a == &b);
+    recordPairSums(sequence, kernels, a, indirect);
+    recordCombine(sequence, kernels, b, out, indirect.after(std::uint32_t(pairSumGroups().size())));
+}
+
+void DeviceCoefficients::recordPairSums(vulkan::CommandSequence& sequence,
+                                        const ModalKernels& kernels, const vulkan::DeviceBuffer& a,
+                                        IndirectArguments indirect) const {
+    requireAssembled("pair sums");
+    requireFloats(a, int(paddedSize(mN)));
+    const std::vector<std::uint32_t> groups = pairSumGroups();
     std::uint32_t d = 0;
-    const auto dispatch = [&](const vulkan::ComputeKernel& kernel,
-                              std::span<const vulkan::DeviceBuffer* const> buffers,
-                              const auto& params) {
-        indirect.after(d).dispatch(sequence, kernel, buffers, params, groups[d]);
-        ++d;
-    };
     const auto n = std::uint32_t(mN);
     if (mSparse) {
         const std::array<const vulkan::DeviceBuffer*, 4> buffers{&mSparse->rows, &mSparse->entries,
                                                                  &a, &*mPairSums};
-        dispatch(
-            kernels.sparsePairSums, buffers,
-            shaders::SparsePairSumsParams{n, mSparse->rowCount, std::uint32_t(paddedSize(mN)), 0});
+        indirect.after(d).dispatch(
+            sequence, kernels.sparsePairSums, buffers,
+            shaders::SparsePairSumsParams{n, mSparse->rowCount, std::uint32_t(paddedSize(mN)), 0},
+            groups[d]);
+        ++d;
     }
     for (const Chunk& chunk : mChunks) {
         const std::array<const vulkan::DeviceBuffer*, 3> buffers{&chunk.values, &a, &*mPairSums};
-        dispatch(kernels.pairSums, buffers,
-                 shaders::PairSumsParams{std::uint32_t(paddedSize(mN) / 8), chunk.firstPair,
-                                         chunk.pairs, n});
+        indirect.after(d).dispatch(sequence, kernels.pairSums, buffers,
+                                   shaders::PairSumsParams{std::uint32_t(paddedSize(mN) / 8),
+                                                           chunk.firstPair, chunk.pairs, n},
+                                   groups[d]);
+        ++d;
     }
+}
+
+void DeviceCoefficients::recordCombine(vulkan::CommandSequence& sequence,
+                                       const ModalKernels& kernels, const vulkan::DeviceBuffer& b,
+                                       const vulkan::DeviceBuffer& out,
+                                       IndirectArguments indirect) const {
+    requireAssembled("pair sums");
+    requireFloats(b, int(paddedSize(mN)));
+    requireFloats(out, mN);
+    const std::vector<std::uint32_t> groups = combineGroups();
     const std::array<const vulkan::DeviceBuffer*, 3> buffers{&*mPairSums, &b, &out};
-    const shaders::CombineParams combine{n, std::uint32_t(paddedSize(mN) / 4), 0, 0};
-    dispatch(kernels.combine, buffers, combine);
-    dispatch(kernels.combineColumns, buffers, combine);
+    const shaders::CombineParams combine{std::uint32_t(mN), std::uint32_t(paddedSize(mN) / 4), 0,
+                                         0};
+    indirect.dispatch(sequence, kernels.combine, buffers, combine, groups[0]);
+    indirect.after(1).dispatch(sequence, kernels.combineColumns, buffers, combine, groups[1]);
 }
 
 }  // namespace modeflow::device

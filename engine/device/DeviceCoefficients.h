@@ -86,12 +86,26 @@ public:
                       const vulkan::DeviceBuffer& u, const vulkan::DeviceBuffer& x,
                       const vulkan::DeviceBuffer& out, IndirectArguments indirect = {}) const;
 
-    /// Records out = C(a, b) (dispatchGroups().size() dispatches).
-    /// @throw modeflow::Error if `a` holds fewer than paddedSize(N) floats (zeros past N) or b, out
-    /// fewer than N.
+    /// Records out = C(a, b) (dispatchGroups().size() dispatches): recordPairSums, then
+    /// recordCombine, for assembled coefficients.
+    /// @throw modeflow::Error if `a` or `b` holds fewer than paddedSize(N) floats (zeros past N)
+    /// or `out` fewer than N.
     void recordApply(vulkan::CommandSequence& sequence, const ModalKernels& kernels,
                      const vulkan::DeviceBuffer& a, const vulkan::DeviceBuffer& b,
                      const vulkan::DeviceBuffer& out, IndirectArguments indirect = {}) const;
+
+    /// Assembled coefficients: the contraction's two halves, so that one set of pair sums (C with
+    /// `a` frozen) serves several combines (the linearized rule, engine/device/ModalStepper.h).
+    /// The pair sums live in this object until the next recordPairSums or recordApply.
+    /// @throw modeflow::Error for tensor-free coefficients (they keep no pair sums), or buffers
+    /// too small (as recordApply).
+    std::vector<std::uint32_t> pairSumGroups() const;
+    std::vector<std::uint32_t> combineGroups() const;
+    void recordPairSums(vulkan::CommandSequence& sequence, const ModalKernels& kernels,
+                        const vulkan::DeviceBuffer& a, IndirectArguments indirect = {}) const;
+    void recordCombine(vulkan::CommandSequence& sequence, const ModalKernels& kernels,
+                       const vulkan::DeviceBuffer& b, const vulkan::DeviceBuffer& out,
+                       IndirectArguments indirect = {}) const;
 
 private:
     struct Chunk {
@@ -106,6 +120,8 @@ private:
             entries;  ///< texels of two (column, value bits) entries, slice-interleaved
         std::uint32_t rowCount = 0;
     };
+    /// @throw modeflow::Error for tensor-free coefficients, which keep no `what`.
+    void requireAssembled(const char* what) const;
     /// `sparse` in slices of PAIR_TILE_LANES rows (DeviceCoefficients.cpp).
     static SparseRows slicedRows(const vulkan::VulkanContext& context,
                                  const SparseCoefficients& sparse);

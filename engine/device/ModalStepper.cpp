@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "engine/core/Error.h"
+#include "engine/dynamics/ModalIntegrator.h"
 #include "engine/vulkan/CommandSequence.h"
 #include "shaders/ModalStepParams.h"
 
@@ -54,6 +55,11 @@ DeviceModel modelOf(const SimulationSettings& settings) {
                          settings.magneticDiffusivity};
 }
 
+void ModalStepper::requireSchemeFits(Integrator scheme) const {
+    if (scheme == Integrator::Linearized && mMhd)
+        throw Error(std::string("modal step: ") + kLinearizedNeedsAFluid);
+}
+
 ModalStepper::ModalStepper(const vulkan::VulkanContext& context,
                            const StructuralCoefficients& coefficients, const DeviceModel& model,
                            DeviceStepSettings settings, const BasisCache* cache,
@@ -80,6 +86,7 @@ ModalStepper::ModalStepper(const vulkan::VulkanContext& context,
       mStatus(vulkan::DeviceBuffer::fromValues<shaders::ModalStatus>(
           context, std::vector<shaders::ModalStatus>(1), "modal status")),
       mArguments(context, 4, "modal indirect arguments") {
+    requireSchemeFits(mSettings.scheme);
     uploadModel(model);
     if (mMhd) {
         mField.emplace(part(mState, 1, "magnetic field"));
@@ -91,8 +98,9 @@ ModalStepper::ModalStepper(const vulkan::VulkanContext& context,
 }
 
 void ModalStepper::buildArguments() {
-    std::vector<std::uint32_t> groups = evaluationGroups();
-    mEvaluationDispatches = std::uint32_t(groups.size());
+    mEvaluationDispatches = std::uint32_t(evaluationGroups().size());
+    std::vector<std::uint32_t> groups = iterationGroups();
+    mIterationDispatches = std::uint32_t(groups.size());
     groups.push_back(1);  // modal_update
     mArguments = vulkan::DeviceBuffer::fromValues<std::uint32_t>(
         mContext, indirectArguments(groups), "modal indirect arguments");
@@ -151,9 +159,11 @@ Eigen::VectorXd ModalStepper::download(const vulkan::DeviceBuffer& buffer, int p
 }
 
 void ModalStepper::setScheme(Integrator scheme) {
+    requireSchemeFits(scheme);
     DeviceStepSettings settings = mSettings;
     settings.scheme = scheme;
     mSettings = checked(settings);
+    buildArguments();  // a linearized iteration dispatches other kernels than R's evaluation
 }
 
 void ModalStepper::setParameters(const DeviceModel& model) {
@@ -215,8 +225,7 @@ const vulkan::DeviceBuffer& ModalStepper::magneticFieldBuffer() const {
 DeviceStepStatus ModalStepper::status() const {
     shaders::ModalStatus raw{};
     mStatus.download<shaders::ModalStatus>(std::span(&raw, 1));
-    if (mSettings.scheme != Integrator::Midpoint && mSettings.scheme != Integrator::Trapezoidal)
-        return {0, 0.0, true, 0};
+    if (!isImplicit(mSettings.scheme)) return {0, 0.0, true, 0};
     return {int(raw.iterations), double(raw.residual), raw.converged != 0, int(raw.unconverged)};
 }
 
@@ -227,6 +236,22 @@ std::vector<std::uint32_t> ModalStepper::evaluationGroups() const {
     if (mLorentz) groups.insert(groups.end(), apply.begin(), apply.end());
     groups.insert(groups.end(), advect.begin(), advect.end());
     return groups;
+}
+
+std::vector<std::uint32_t> ModalStepper::iterationGroups() const {
+    if (mSettings.scheme != Integrator::Linearized) return evaluationGroups();
+    if (mCoefficients.isTensorFree()) return mCoefficients.dispatchGroups(false);
+    return mCoefficients.combineGroups();
+}
+
+void ModalStepper::recordFrozenEvaluation(vulkan::CommandSequence& sequence,
+                                          IndirectArguments indirect) const {
+    // r = L(x~) y = C(a, y) with a = M x~ left in place by the iterations (modal_update.comp):
+    // the pair sums of a were recorded once for the step; tensor-free coefficients contract anew.
+    if (mCoefficients.isTensorFree())
+        mCoefficients.recordApply(sequence, mKernels, mWeighted, mPoint, mRhs, indirect);
+    else
+        mCoefficients.recordCombine(sequence, mKernels, mPoint, mRhs, indirect);
 }
 
 void ModalStepper::recordEvaluation(vulkan::CommandSequence& sequence,
@@ -252,7 +277,7 @@ void ModalStepper::recordEvaluation(vulkan::CommandSequence& sequence,
 }
 
 void ModalStepper::recordUpdate(vulkan::CommandSequence& sequence, std::uint32_t op,
-                                std::uint32_t stage, double h, bool indirect) const {
+                                std::uint32_t stage, double h, bool indirect, bool frozen) const {
     const bool warm =
         op == MODAL_OP_BEGIN && mSettings.scheme == Integrator::Midpoint && mSettings.warmStart;
     const std::array<const vulkan::DeviceBuffer*, 11> buffers{
@@ -261,7 +286,7 @@ void ModalStepper::recordUpdate(vulkan::CommandSequence& sequence, std::uint32_t
     const shaders::ModalUpdateParams params{std::uint32_t(size()),
                                             op,
                                             stage,
-                                            mEvaluationDispatches + 1,
+                                            mIterationDispatches + 1,
                                             float(h),
                                             mSettings.tolerance,
                                             mStride,
@@ -269,12 +294,12 @@ void ModalStepper::recordUpdate(vulkan::CommandSequence& sequence, std::uint32_t
                                             mLorentz ? 1u : 0u,
                                             mSettings.accelerated ? 1u : 0u,
                                             warm ? 1u : 0u,
-                                            0};
+                                            frozen ? 1u : 0u};
     if (indirect)
         // The update is the last dispatch of an iteration; its live entry follows the full copy.
         sequence.dispatchIndirect(
             mKernels.update, buffers, params, mArguments,
-            VkDeviceSize(2 * mEvaluationDispatches + 1) * sizeof(VkDispatchIndirectCommand));
+            VkDeviceSize(2 * mIterationDispatches + 1) * sizeof(VkDispatchIndirectCommand));
     else
         sequence.dispatch(mKernels.update, buffers, params, 1);
 }
@@ -286,7 +311,7 @@ void ModalStepper::recordStep(vulkan::CommandSequence& sequence, double h, int s
         for (int s = 0; s < substeps; ++s) recordStep(sequence, h / substeps);
         return;
     }
-    const IndirectArguments live{&mArguments, mEvaluationDispatches + 1};
+    const IndirectArguments live{&mArguments, mIterationDispatches + 1};
     recordUpdate(sequence, MODAL_OP_BEGIN, 0, h, false);
     switch (mSettings.scheme) {
         case Integrator::Explicit:
@@ -315,11 +340,23 @@ void ModalStepper::recordStep(vulkan::CommandSequence& sequence, double h, int s
             }
             recordUpdate(sequence, MODAL_OP_TRAPEZOIDAL_END, 0, h, false);
             break;
+        case Integrator::Linearized:
+            recordEvaluation(sequence, {});  // R(x), for the predictor x~
+            recordUpdate(sequence, MODAL_OP_LINEARIZED_START, 0, h, false);
+            if (!mCoefficients.isTensorFree())
+                mCoefficients.recordPairSums(sequence, mKernels, mWeighted);
+            for (int m = 0; m < mSettings.maxIterations; ++m) {
+                recordFrozenEvaluation(sequence, live);
+                recordUpdate(sequence, MODAL_OP_MIDPOINT, 0, h, true, true);
+            }
+            recordUpdate(sequence, MODAL_OP_LINEARIZED_END, 0, h, false);
+            break;
     }
 }
 
 std::size_t ModalStepper::dispatchesPerStep() const {
     const std::size_t iteration = mEvaluationDispatches + 1;
+    const std::size_t frozenIteration = mIterationDispatches + 1;
     switch (mSettings.scheme) {
         case Integrator::Explicit:
             return 1 + iteration;
@@ -329,6 +366,10 @@ std::size_t ModalStepper::dispatchesPerStep() const {
             return 2 + std::size_t(mSettings.maxIterations) * iteration;
         case Integrator::Trapezoidal:
             return 2 + std::size_t(mSettings.maxIterations + 1) * iteration;
+        case Integrator::Linearized:
+            return 2 + iteration +
+                   (mCoefficients.isTensorFree() ? 0 : mCoefficients.pairSumGroups().size()) +
+                   std::size_t(mSettings.maxIterations) * frozenIteration;
     }
     return 0;
 }

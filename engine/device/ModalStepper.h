@@ -15,6 +15,11 @@
 /// slowly near 1; the acceleration cuts those iterations several fold (shaders/modal_update.comp
 /// has how and why); a step that reaches `maxIterations` keeps its state (a diverging
 /// iterate would blow up) and is counted in status(), so the caller can take smaller substeps.
+/// The linearized rule (engine/dynamics/ModalIntegrator.h) evaluates R(x) for its predictor x~,
+/// records the pair sums of M x~ once, and iterates its linear fixed point (the midpoint map with
+/// R(y) replaced by L(x~) y) through the second half of the contraction alone: two passes over
+/// the coefficients a step where the midpoint rule makes one an iteration. Tensor-free
+/// coefficients have no pair sums to keep and contract C(M x~, y) in every iteration. Fluids only.
 /// Viscosity (and the magnetic diffusivity) is applied exactly, Strang-split as on the CPU.
 ///
 /// MHD's state is two parts of `stride` floats, v then F; its right-hand side is three
@@ -130,8 +135,17 @@ private:
     void recordEvaluation(vulkan::CommandSequence& sequence, IndirectArguments indirect) const;
     /// Group counts of recordEvaluation's dispatches.
     std::vector<std::uint32_t> evaluationGroups() const;
+    /// Records r = L(x~) y, the right-hand side frozen at the predictor (the linearized rule).
+    void recordFrozenEvaluation(vulkan::CommandSequence& sequence,
+                                IndirectArguments indirect) const;
+    /// Group counts of an implicit iteration's contraction: recordEvaluation's, or for the
+    /// linearized rule recordFrozenEvaluation's.
+    std::vector<std::uint32_t> iterationGroups() const;
+    /// `frozen`: a linearized iteration, which leaves the weighted point (M x~) alone.
     void recordUpdate(vulkan::CommandSequence& sequence, std::uint32_t op, std::uint32_t stage,
-                      double h, bool indirect) const;
+                      double h, bool indirect, bool frozen = false) const;
+    /// @throw modeflow::Error for the linearized rule with MHD.
+    void requireSchemeFits(Integrator scheme) const;
     /// Uploads `values` to part `part` of a state-shaped buffer.
     void upload(vulkan::DeviceBuffer& buffer, const Eigen::VectorXd& values, int part,
                 const char* what) const;
@@ -158,6 +172,7 @@ private:
     ModalKernels mKernels;
     DeviceCoefficients mCoefficients;
     std::uint32_t mEvaluationDispatches = 0;  ///< dispatches of one evaluation of R
+    std::uint32_t mIterationDispatches = 0;   ///< contraction dispatches of an implicit iteration
     vulkan::DeviceBuffer mState, mPoint, mWeighted, mRhs, mForce, mMass, mDecay, mAccumulator,
         mHistory, mStatus, mArguments;
     /// MHD: the field parts of the state and point, and the induction and Lorentz parts of r.

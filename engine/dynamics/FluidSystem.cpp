@@ -65,6 +65,17 @@ void FluidSystem::rhs(const Eigen::VectorXd& v, Eigen::VectorXd& out) const {
     for (const int k : mHeld) out[k] = 0.0;
 }
 
+void FluidSystem::frozenRhs(const Eigen::VectorXd& p, const Eigen::VectorXd& u,
+                            Eigen::VectorXd& out) const {
+    // uᵀC(m, u) = 0 for any m (the k↔j antisymmetry), so L(p) conserves ½uᵀMu as R does.
+    if (mFiltered) {
+        mCoefficients.apply(mMass.cwiseProduct(p), u, out);
+    } else {
+        mCoefficients.apply(p, u, out);
+    }
+    for (const int k : mHeld) out[k] = 0.0;
+}
+
 void FluidSystem::linearize(const Eigen::VectorXd& v, Eigen::VectorXd& out,
                             Eigen::MatrixXd& jac) const {
     // R(v) = apply(Mv, v): ∂R/∂v = byJ(v)·M + byI(Mv), and R = byI(Mv)·v.

@@ -51,6 +51,10 @@ public:
                    Eigen::MatrixXd& jac) const override;
     void jacobianProduct(const Eigen::VectorXd& v, const Eigen::VectorXd& u,
                          Eigen::VectorXd& out) const override;
+    bool freezesRhs() const override { return true; }
+    /// L(p)·u = C(Mp, u), held modes' rows 0.
+    void frozenRhs(const Eigen::VectorXd& p, const Eigen::VectorXd& u,
+                   Eigen::VectorXd& out) const override;
     bool formsJacobiansCheaply() const override { return mCoefficients.linearizesCheaply(); }
 
 private:

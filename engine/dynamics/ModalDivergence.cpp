@@ -27,7 +27,8 @@ void requireFiniteModalState(const Eigen::VectorXd& state, long step, double tim
 std::string divergenceAdvice(const ModalStateDiverged& diverged, std::string_view integrator,
                              std::string_view dtSetting) {
     // The implicit rules are the advice for the explicit ones; for themselves, only a smaller step.
-    const bool implicit = integrator == "midpoint" || integrator == "trapezoidal";
+    const bool implicit =
+        integrator == "midpoint" || integrator == "trapezoidal" || integrator == "linearized";
     return std::string(diverged.what()) + "; " + std::string(integrator) +
            " is unstable at this step size: lower " + std::string(dtSetting) +
            (implicit ? "" : " or use midpoint");

@@ -22,6 +22,8 @@ ModalIntegrator::ModalIntegrator(const ModalSystem& system, IntegratorSettings s
             "must not be negative");
     }
     if (settings.krylovRestart < 1) throw Error("integrator: the GMRES restart must be positive");
+    if (settings.scheme == Integrator::Linearized && !system.freezesRhs())
+        throw Error(std::string("integrator: ") + kLinearizedNeedsAFluid);
 }
 
 StepReport ModalIntegrator::step(Eigen::VectorXd& x, double h) {
@@ -61,6 +63,9 @@ StepReport ModalIntegrator::advance(Eigen::VectorXd& x, double t, double h,
         case Integrator::Trapezoidal:
             report = trapezoidal(x, t, h, force);
             break;
+        case Integrator::Linearized:
+            report = linearized(x, t, h, force);
+            break;
     }
     decay(x, 0.5 * h);
     return report;
@@ -99,6 +104,46 @@ StepReport ModalIntegrator::trapezoidal(Eigen::VectorXd& x, double t, double h,
     Eigen::VectorXd w = x + h * (r0 + f0).cwiseQuotient(mSystem.mass());
     const StepReport report = newton(x, w, h, false, known);
     x = w;
+    return report;
+}
+
+StepReport ModalIntegrator::linearized(Eigen::VectorXd& x, double t, double h,
+                                       const ForceFunction* force) {
+    const Eigen::VectorXd& mass = mSystem.mass();
+    const Eigen::VectorXd f = forceAt(t + 0.5 * h, force);
+    Eigen::VectorXd r;
+    mSystem.rhs(x, r);
+    const Eigen::VectorXd predictor = x + (0.5 * h) * (r + f).cwiseQuotient(mass);
+    // (I − (h/2)M⁻¹L) ȳ = x + (h/2)M⁻¹f, left-preconditioned by M⁻¹ as the Krylov updates are;
+    // solved for the correction δ = ȳ − x̃.
+    Eigen::VectorXd frozen;
+    const auto product = [&](const Eigen::VectorXd& u, Eigen::VectorXd& out) {
+        mSystem.frozenRhs(predictor, u, frozen);
+        out = u - (0.5 * h) * frozen.cwiseQuotient(mass);
+    };
+    Eigen::VectorXd start;
+    product(predictor, start);
+    const Eigen::VectorXd residual = x + (0.5 * h) * f.cwiseQuotient(mass) - start;
+    // Converged when the preconditioned residual is within relativeTolerance of |x| (of its own
+    // start where x = 0: a force alone).
+    const double norm = residual.norm();
+    if (!std::isfinite(norm))
+        throw Error("integrator: the linearized step is no longer finite; reduce dt");
+    const double scale = x.norm() > 0.0 ? x.norm() : norm;
+    StepReport report;
+    report.solver = NewtonSolver::Krylov;
+    report.iterations = 1;
+    report.residual = scale > 0.0 ? norm / scale : 0.0;
+    Eigen::VectorXd delta = Eigen::VectorXd::Zero(x.size());
+    if (report.residual > mSettings.relativeTolerance) {
+        const GmresResult g =
+            gmres(product, residual, delta, mSettings.relativeTolerance * scale / norm,
+                  mSettings.krylovRestart, 20 * mSettings.krylovRestart);
+        report.jacobianProducts = g.iterations;
+        report.converged = g.converged;
+        report.residual *= g.residual;
+    }
+    x = 2.0 * (predictor + delta) - x;
     return report;
 }
 

@@ -6,6 +6,16 @@
 ///   rk4          classical Runge–Kutta with forces sampled at t, t + h/2, t + h
 ///   midpoint     M(x' − x) = h (R((x + x')/2) + f(t + h/2))                       (seed eq. 6.8)
 ///   trapezoidal  M(x' − x) = h/2 (R(x) + R(x')) + h/2 (f(t) + f(t + h))           (seed eq. 6.9)
+///   linearized   M(x' − x) = h (L(x̃)·(x + x')/2 + f(t + h/2)),  x̃ = x + h/2 M⁻¹(R(x) + f(t + h/2))
+///
+/// The linearized rule is the midpoint rule with the right-hand side's first factor frozen at an
+/// explicit predictor x̃ of the midpoint (ModalSystem::frozenRhs: R(y) = C(My, y) becomes
+/// C(Mx̃, y)): linear in x', so it costs two passes over the coefficients (R(x), then L(x̃) once)
+/// however many iterations its linear solve takes, where the midpoint rule contracts anew at every
+/// iteration. L(x̃) is antisymmetric like R's Jacobian part, so the energy ½xᵀMx is conserved
+/// exactly as by the midpoint rule; x̃ is within O(h²) of the midpoint, so the rule is second
+/// order. It is not time-reversible (x̃ is explicit). Its linear system, (M − (h/2)L(x̃)) ȳ = Mx +
+/// (h/2)f for the midpoint ȳ = (x + x')/2, is solved by GMRES from ȳ = x̃ to relativeTolerance.
 ///
 /// The implicit equations are solved by Newton until |residual| ≤ relativeTolerance ·
 /// max(|Mx|, |Mx'|), whichever linear solver takes the Newton updates, so that both conserve the
@@ -35,6 +45,11 @@
 
 namespace modeflow {
 
+/// Why a model without ModalSystem::frozenRhs (MHD) cannot take the linearized rule.
+inline constexpr const char* kLinearizedNeedsAFluid =
+    "the linearized rule is for fluids (Euler, Navier–Stokes, LANS-α); MHD takes midpoint, "
+    "trapezoidal, explicit or rk4";
+
 struct IntegratorSettings {
     Integrator scheme = Integrator::Midpoint;
     /// Newton residual, relative to the momentum |Mx|. At 1e-13 the accepted residual already
@@ -58,7 +73,8 @@ struct IntegratorSettings {
 class ModalIntegrator {
 public:
     /// Keeps a reference to `system`, which must outlive the integrator. Throws modeflow::Error
-    /// for a non-positive tolerance or iteration limit, or negative other settings.
+    /// for a non-positive tolerance or iteration limit, negative other settings, or the
+    /// linearized rule for a system without a frozen right-hand side (MHD).
     ModalIntegrator(const ModalSystem& system, IntegratorSettings settings = {});
 
     const IntegratorSettings& settings() const { return mSettings; }
@@ -77,6 +93,7 @@ private:
     void rungeKutta4(Eigen::VectorXd& x, double t, double h, const ForceFunction* force);
     StepReport midpoint(Eigen::VectorXd& x, double t, double h, const ForceFunction* force);
     StepReport trapezoidal(Eigen::VectorXd& x, double t, double h, const ForceFunction* force);
+    StepReport linearized(Eigen::VectorXd& x, double t, double h, const ForceFunction* force);
     /// Newton on the midpoint or trapezoidal equation; see the .cpp.
     StepReport newton(const Eigen::VectorXd& x, Eigen::VectorXd& w, double h, bool atMidpoint,
                       const Eigen::VectorXd& constantPart);

@@ -10,6 +10,8 @@
 
 #include <Eigen/Core>
 
+#include "engine/core/Error.h"
+
 namespace modeflow {
 
 class ModalSystem {
@@ -31,9 +33,22 @@ public:
     /// quadratic, so this is a few contractions, O(stored coefficients).
     virtual void jacobianProduct(const Eigen::VectorXd& x, const Eigen::VectorXd& u,
                                  Eigen::VectorXd& out) const = 0;
+    /// Whether frozenRhs exists: for fluids, not for MHD (the linearized rule,
+    /// engine/dynamics/ModalIntegrator.h).
+    virtual bool freezesRhs() const { return false; }
+    /// out = L(p)·u, the right-hand side with its first factor frozen at p: a linear operator in u
+    /// with L(x)·x = R(x) and uᵀL(p)u = 0 for every u. One contraction.
+    /// @throw modeflow::Error unless freezesRhs().
+    virtual void frozenRhs(const Eigen::VectorXd& p, const Eigen::VectorXd& u,
+                           Eigen::VectorXd& out) const;
     /// Whether linearize costs about a contraction (stored coefficients); false when forming the
     /// Jacobian costs far more (tensor-free: O(E·N²)), so that solvers use jacobianProduct.
     virtual bool formsJacobiansCheaply() const { return true; }
 };
+
+inline void ModalSystem::frozenRhs(const Eigen::VectorXd&, const Eigen::VectorXd&,
+                                   Eigen::VectorXd&) const {
+    throw Error("integrator: this system has no frozen right-hand side");
+}
 
 }  // namespace modeflow

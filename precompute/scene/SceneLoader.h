@@ -66,7 +66,8 @@ SceneSpec parseScene(std::string_view text, const std::filesystem::path& origin)
 /// @throw Error on bad syntax, overlapping/unsorted ranges, first > last or first < 1.
 std::vector<ModeRange> parseModeRanges(std::string_view text, std::string_view key);
 
-/// The integrator a scene keyword names ("explicit", "rk4", "midpoint", "trapezoidal"), for
+/// The integrator a scene keyword names ("explicit", "rk4", "midpoint", "trapezoidal",
+/// "linearized"), for
 /// command-line options that override [simulation].integrator. `key` prefixes the message.
 /// @throw Error naming the value, the closest keyword and the choices.
 Integrator parseIntegrator(std::string_view text, std::string_view key);

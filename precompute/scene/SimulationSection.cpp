@@ -26,6 +26,10 @@ SimulationSpec readSimulation(const TomlReader& reader, const Section& s) {
     if (sim.mhd && sim.alpha > 0.0)
         reader.fail(s, "alpha", "LANS-alpha and MHD cannot be combined (set one of them)",
                     s.table.get("alpha"));
+    if (sim.mhd && sim.integrator == Integrator::Linearized)
+        reader.fail(s, "integrator",
+                    "linearized is for fluids; MHD takes midpoint (or trapezoidal, explicit, rk4)",
+                    s.table.get("integrator"));
     if (!sim.mhd && s.table.contains("magnetic_diffusivity"))
         reader.fail(s, "magnetic_diffusivity", "only used with mhd = true",
                     s.table.get("magnetic_diffusivity"));

@@ -38,8 +38,8 @@ TEST(Viscosity, LoneModeDecaysExactlyForAnyStep) {
     const Eigen::VectorXd k2 = shapedKappaSquared(n);
     const FluidSystem system(c, {k2, nu, 0.0});
     const double time = 10.0, amplitude = 1.7;
-    for (Integrator scheme :
-         {Integrator::Explicit, Integrator::Rk4, Integrator::Midpoint, Integrator::Trapezoidal}) {
+    for (Integrator scheme : {Integrator::Explicit, Integrator::Rk4, Integrator::Midpoint,
+                              Integrator::Trapezoidal, Integrator::Linearized}) {
         for (int steps : {1, 3, 100, 10000}) {
             ModalIntegrator integrator(system, {scheme});
             Eigen::VectorXd v = Eigen::VectorXd::Zero(n);
@@ -64,8 +64,8 @@ TEST(HeldModes, KeepTheirAmplitudeUnderEverySchemeAndFeedTheOthers) {
     const FluidSystem free(c, {k2, 0.02, 0.0});
     Eigen::VectorXd v0 = Eigen::VectorXd::Zero(n);
     for (const int k : held) v0[k] = 1.0;  // all the energy in the held modes
-    for (Integrator scheme :
-         {Integrator::Explicit, Integrator::Rk4, Integrator::Midpoint, Integrator::Trapezoidal}) {
+    for (Integrator scheme : {Integrator::Explicit, Integrator::Rk4, Integrator::Midpoint,
+                              Integrator::Trapezoidal, Integrator::Linearized}) {
         ModalIntegrator integrator(forced, {scheme});
         ModalIntegrator unforced(free, {scheme});
         Eigen::VectorXd v = v0, w = v0;

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdio>
 #include <numeric>
+#include <string>
 #include <vector>
 
 #include <Eigen/Core>
@@ -122,6 +123,72 @@ TEST_F(RandomState, NewtonKrylovMatchesTheDenseNewtonAndConservesEnergy) {
         s.maxEnergyDrift, s.meanIterations, s.maxIterations);
 }
 
+TEST_F(RandomState, LinearizedConservesEnergyWithTwoPassesAndALinearSolve) {
+    // The rule freezes R's first factor at an explicit predictor, so each step is two
+    // contractions (R(x), then L(x~) in every GMRES product) and one linear solve; L(x~) is
+    // antisymmetric, so the energy is kept to the solver's tolerance, as by the midpoint rule.
+    ModalIntegrator linearized(mSystem, {Integrator::Linearized});
+    Eigen::VectorXd v = mV0;
+    const double e0 = energy(v);
+    double drift = 0.0, residual = 0.0;
+    int products = 0;
+    bool converged = true;
+    for (int n = 0; n < 10000; ++n) {
+        const StepReport report = linearized.step(v, mH);
+        drift = std::max(drift, std::abs(energy(v) - e0) / e0);
+        residual = std::max(residual, report.residual);
+        products = std::max(products, report.jacobianProducts);
+        converged = converged && report.converged;
+        EXPECT_EQ(report.iterations, 1);
+        EXPECT_EQ(report.solver, NewtonSolver::Krylov);
+    }
+    EXPECT_LE(drift, 1e-10);
+    EXPECT_LE(residual, 1e-13);
+    EXPECT_TRUE(converged);
+    EXPECT_LE(products, 30);
+    std::printf("linearized h|R|/|v| = 0.3, 1e4 steps: drift %.3g, GMRES products max %d\n", drift,
+                products);
+
+    // One step is the midpoint step up to O(h³): halving h cuts the difference eightfold.
+    std::vector<double> gaps;
+    for (const double h : {0.1 * mH, 0.05 * mH}) {
+        ModalIntegrator midpoint(mSystem, {Integrator::Midpoint});
+        Eigen::VectorXd a = mV0, b = mV0;
+        midpoint.step(a, h);
+        linearized.step(b, h);
+        gaps.push_back((a - b).norm());
+    }
+    EXPECT_NEAR(std::log2(gaps[0] / gaps[1]), 3.0, 0.2) << gaps[0] << " -> " << gaps[1];
+}
+
+TEST(Integrators, LinearizedRuleKeepsTheFilteredEnergyAndRefusesMhd) {
+    // LANS-α: L(x~)·u = C(M x~, u) keeps ½ uᵀMu for any predictor.
+    const DenseCoefficients c = randomDense(16, 106);
+    FluidParameters lans;
+    lans.alpha = 0.4;
+    lans.kappaSquared = randomVector(16, 17).cwiseAbs() * 10.0;
+    const FluidSystem filtered(c, lans);
+    ModalIntegrator integrator(filtered, {Integrator::Linearized});
+    Eigen::VectorXd v = randomVector(16, 18);
+    const auto filteredEnergy = [&](const Eigen::VectorXd& x) {
+        return 0.5 * x.dot(filtered.mass().cwiseProduct(x));
+    };
+    const double e0 = filteredEnergy(v), h = stepFor(c, v, 0.2);
+    for (int n = 0; n < 1000; ++n) integrator.step(v, h);
+    EXPECT_LE(std::abs(filteredEnergy(v) - e0), 1e-11 * e0);
+    EXPECT_GT((v - randomVector(16, 18)).norm(), 0.1 * v.norm()) << "the state must move";
+
+    const MhdSystem mhd(c);
+    try {
+        ModalIntegrator refused(mhd, {Integrator::Linearized});
+        ADD_FAILURE() << "MHD took the linearized rule";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("the linearized rule is for fluids"),
+                  std::string::npos)
+            << e.what();
+    }
+}
+
 /// Steps forward then back with −h; the relative distance from the start.
 double roundTrip(ModalIntegrator& integrator, const Eigen::VectorXd& v0, double h, int steps,
                  double& travelled) {
@@ -220,6 +287,7 @@ TEST(Integrators, ConvergeAtTheirOrders) {
     const std::vector<std::pair<Integrator, double>> orders{{Integrator::Rk4, 4.0},
                                                             {Integrator::Midpoint, 2.0},
                                                             {Integrator::Trapezoidal, 2.0},
+                                                            {Integrator::Linearized, 2.0},
                                                             {Integrator::Explicit, 1.0}};
     for (const auto& [scheme, order] : orders) {
         const double coarse = trajectoryError(system, scheme, v0, time, 64, reference);
@@ -307,8 +375,8 @@ TEST(Forces, ConstantForceWithoutCouplingIsExactForEveryScheme) {
     const FluidSystem system(zero);
     const Eigen::VectorXd v0 = randomVector(n, 301), f = randomVector(n, 302);
     const double h = 0.05;
-    for (Integrator scheme :
-         {Integrator::Explicit, Integrator::Rk4, Integrator::Midpoint, Integrator::Trapezoidal}) {
+    for (Integrator scheme : {Integrator::Explicit, Integrator::Rk4, Integrator::Midpoint,
+                              Integrator::Trapezoidal, Integrator::Linearized}) {
         ModalIntegrator integrator(system, {scheme});
         Eigen::VectorXd v = v0;
         for (int s = 0; s < 100; ++s) integrator.step(v, h, f);
@@ -325,7 +393,8 @@ TEST(Forces, LinearInTimeForceIsExactForSecondOrderSchemes) {
                           f1 = randomVector(n, 305);
     const ForceFunction force = [&](double t) { return Eigen::VectorXd(f0 + t * f1); };
     const double h = 0.1;
-    for (Integrator scheme : {Integrator::Rk4, Integrator::Midpoint, Integrator::Trapezoidal}) {
+    for (Integrator scheme :
+         {Integrator::Rk4, Integrator::Midpoint, Integrator::Trapezoidal, Integrator::Linearized}) {
         ModalIntegrator integrator(system, {scheme});
         Eigen::VectorXd v = v0;
         double t = 1.0;
@@ -366,6 +435,7 @@ TEST(Integrators, RejectBadInput) {
     noRestart.krylovRestart = 0;
     EXPECT_THROW(ModalIntegrator(system, noRestart), Error);
     EXPECT_EQ(parseIntegrator("trapezoidal", "--integrator"), Integrator::Trapezoidal);
+    EXPECT_EQ(parseIntegrator("linearized", "--integrator"), Integrator::Linearized);
     EXPECT_EQ(sceneKeyword(parseIntegrator("rk4", "--integrator")), "rk4");
     EXPECT_THROW(parseIntegrator("leapfrog", "--integrator"), Error);
 }

@@ -94,8 +94,8 @@ TEST(Lans, ForcesActOnTheMomentum) {
     const Eigen::VectorXd k2 = shapedKappaSquared(n);
     const FluidSystem system(zero, {k2, 0.0, 0.1});
     const Eigen::VectorXd v0 = randomVector(n, 505), f = randomVector(n, 506);
-    for (Integrator scheme :
-         {Integrator::Explicit, Integrator::Rk4, Integrator::Midpoint, Integrator::Trapezoidal}) {
+    for (Integrator scheme : {Integrator::Explicit, Integrator::Rk4, Integrator::Midpoint,
+                              Integrator::Trapezoidal, Integrator::Linearized}) {
         ModalIntegrator integrator(system, {scheme});
         Eigen::VectorXd v = v0;
         for (int s = 0; s < 20; ++s) integrator.step(v, 0.1, f);

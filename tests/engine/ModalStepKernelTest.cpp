@@ -73,7 +73,7 @@ TEST_P(ModalStepKernelTest, OneStepOfEverySchemeEqualsTheCpuReference) {
     for (const FluidParameters& parameters : {FluidParameters{}, viscousLans}) {
         const FluidSystem system(mC, parameters);
         for (const Integrator scheme : {Integrator::Explicit, Integrator::Rk4, Integrator::Midpoint,
-                                        Integrator::Trapezoidal}) {
+                                        Integrator::Trapezoidal, Integrator::Linearized}) {
             ModalIntegrator cpu(system, {scheme});
             Eigen::VectorXd expected = mV0;
             cpu.step(expected, mH, force);
@@ -99,13 +99,15 @@ TEST_P(ModalStepKernelTest, SparseCoefficientsStepLikeDenseOnes) {
     const DenseCoefficients dense = roundedDense(testing::randomDense(kModes, 21, 0.1));
     const SparseCoefficients sparse = SparseCoefficients::fromDense(dense);
     const double h = stepFor(dense, mV0, 0.1);
-    {
-        ModalStepper fromDense(context(), dense, {}), fromSparse(context(), sparse, {});
+    for (const Integrator scheme : {Integrator::Midpoint, Integrator::Linearized}) {
+        ModalStepper fromDense(context(), dense, {}, {scheme}),
+            fromSparse(context(), sparse, {}, {scheme});
         for (ModalStepper* stepper : {&fromDense, &fromSparse}) {
             stepper->setState(mV0);
             runDevice(context(), *stepper, h, 5);
         }
-        EXPECT_LE(relativeDifference(fromSparse.state(), fromDense.state()), 1e-6);
+        EXPECT_LE(relativeDifference(fromSparse.state(), fromDense.state()), 1e-6)
+            << sceneKeyword(scheme);
     }
 }
 
@@ -123,7 +125,7 @@ TEST_P(ModalStepKernelTest, TensorFreeCoefficientsStepLikeTheCpuReference) {
     for (const FluidParameters& parameters : {FluidParameters{}, lans}) {
         const FluidSystem system(c, parameters);
         for (const Integrator scheme : {Integrator::Explicit, Integrator::Rk4, Integrator::Midpoint,
-                                        Integrator::Trapezoidal}) {
+                                        Integrator::Trapezoidal, Integrator::Linearized}) {
             ModalIntegrator cpu(system, {scheme});
             Eigen::VectorXd expected = v0;
             for (int s = 0; s < 20; ++s) cpu.step(expected, h);
@@ -157,8 +159,8 @@ TEST_P(ModalStepKernelTest, TensorFreeCoefficientsStepLikeTheCpuReference) {
 
 TEST_P(ModalStepKernelTest, TrajectoriesStayWithin1e4OfTheDoubleReference) {
     const FluidSystem system(mC);
-    for (const Integrator scheme :
-         {Integrator::Explicit, Integrator::Rk4, Integrator::Midpoint, Integrator::Trapezoidal}) {
+    for (const Integrator scheme : {Integrator::Explicit, Integrator::Rk4, Integrator::Midpoint,
+                                    Integrator::Trapezoidal, Integrator::Linearized}) {
         ModalIntegrator cpu(system, {scheme});
         {
             ModalStepper stepper(context(), mC, {}, {scheme});
@@ -195,6 +197,56 @@ TEST_P(ModalStepKernelTest, MidpointConservesEnergyOver1000Steps) {
         EXPECT_LE(drift, 1e-5);
         EXPECT_EQ(stepper.status().unconvergedSteps, 0);
     }
+}
+
+TEST_P(ModalStepKernelTest, LinearizedConservesEnergyOver1000Steps) {
+    // Its iterations solve a linear system whose operator is antisymmetric: the energy is kept
+    // to the iteration's tolerance, as by the midpoint rule, from pair sums made twice a step.
+    const double h = stepFor(mC, mV0, 0.3);
+    {
+        ModalStepper stepper(context(), mC, {}, {Integrator::Linearized});
+        // Begin, R(x) and the predictor, one set of pair sums, 30 iterations of two combines and
+        // an update, end.
+        const std::size_t pairSums = stepper.coefficients().pairSumGroups().size();
+        EXPECT_EQ(stepper.dispatchesPerStep(), 1 + (pairSums + 3) + pairSums + 30 * 3 + 1);
+        stepper.setState(mV0);
+        const double e0 = energy(mV0);
+        double drift = 0.0;
+        int maxIterations = 0;
+        for (int block = 0; block < 10; ++block) {
+            runDevice(context(), stepper, h, 100);
+            drift = std::max(drift, std::abs(energy(stepper.state()) - e0) / e0);
+            maxIterations = std::max(maxIterations, stepper.status().iterations);
+        }
+        std::cout << "linearized, 1000 steps of h|R|/|v| = 0.3: energy drift " << drift
+                  << ", at most " << maxIterations << " iterations a step\n";
+        EXPECT_LE(drift, 1e-5);
+        EXPECT_EQ(stepper.status().unconvergedSteps, 0);
+        EXPECT_GT(relativeDifference(stepper.state(), mV0), 0.1) << "the state must move";
+    }
+    expectNoValidationMessages();
+}
+
+TEST_P(ModalStepKernelTest, SwitchingToAndFromTheLinearizedRuleStepsLikeAFreshStepper) {
+    // The iterations dispatch other kernels (combines alone): setScheme rebuilds their arguments.
+    const double h = stepFor(mC, mV0, 0.1);
+    {
+        ModalStepper switched(context(), mC, {}, {Integrator::Midpoint});
+        switched.setState(mV0);
+        runDevice(context(), switched, h, 3);
+        const Eigen::VectorXd middle = switched.state();
+        switched.setScheme(Integrator::Linearized);
+        runDevice(context(), switched, h, 3);
+        ModalStepper fresh(context(), mC, {}, {Integrator::Linearized});
+        fresh.setState(middle);
+        runDevice(context(), fresh, h, 3);
+        EXPECT_LE(relativeDifference(switched.state(), fresh.state()), 1e-6);
+        switched.setScheme(Integrator::Midpoint);
+        runDevice(context(), switched, h, 3);
+        EXPECT_TRUE(switched.status().converged);
+        EXPECT_GT(switched.status().iterations, 0);
+    }
+    expectNoValidationMessages();
 }
 
 TEST_P(ModalStepKernelTest, AccelerationCutsTheIterationsOfLargeSteps) {
@@ -319,6 +371,8 @@ TEST_P(ModalStepKernelTest, RefusesStatesAndParametersOfTheWrongShape) {
     EXPECT_THROW(ModalStepper(context(), mC, held), Error);
     ModalStepper mhd(context(), mC, MhdParameters{});
     EXPECT_THROW(mhd.setState(Eigen::VectorXd::Zero(kModes)), Error);
+    EXPECT_THROW(mhd.setScheme(Integrator::Linearized), Error);  // fluids only, as on the CPU
+    EXPECT_THROW(ModalStepper(context(), mC, MhdParameters{}, {Integrator::Linearized}), Error);
     EXPECT_NO_THROW(mhd.setState(Eigen::VectorXd::Zero(2 * kModes)));
 }
 

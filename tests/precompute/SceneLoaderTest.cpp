@@ -894,6 +894,16 @@ TEST_F(SceneLoaderTest, ForcingHoldsModesByPositionOrWaveNumber) {
     EXPECT_CONTAINS(errorOf(base + "[forcng]\n"), "unknown table (did you mean forcing?)");
 }
 
+TEST_F(SceneLoaderTest, TheLinearizedRuleIsForFluids) {
+    const std::string base = std::string(kGrid2d) + kBasis + "[simulation]\n";
+    EXPECT_EQ(parseScene(base + "integrator = \"linearized\"\n", "s.toml").simulation.integrator,
+              Integrator::Linearized);
+    EXPECT_CONTAINS(
+        errorOf(base + "integrator = \"linearized\"\nmhd = true\n"),
+        "[simulation].integrator: linearized is for fluids; MHD takes midpoint (or trapezoidal, "
+        "explicit, rk4)");
+}
+
 TEST_F(SceneLoaderTest, ModalAmplitudesAreRequiredAndChecked) {
     const std::string base = std::string(kGrid2d) + kBasis + "[initial]\nvelocity = \"modes\"\n";
     const SceneSpec scene =

@@ -52,7 +52,7 @@ TEST_F(BenchmarkFlags, EveryRuntimeTableRunsItsSmallestCase) {
         {"bench_basis_kernels", "projection_float32/dim:2/cells:256/N:50/"},
         {"bench_smoke_advection", "smokeStep/maccormack/dim:2/cells:128/"},
         {"bench_preview", "volumePreview"},
-        {"bench_closed_form", "deviceStep/torus_2d"},
+        {"bench_closed_form", "deviceStep/torus_2d/"},
         {"bench_tensor_free", "vulkan_tensor_free/N:250/"},
     };
     for (const auto& [bench, filter] : cases) {

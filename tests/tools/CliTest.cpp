@@ -525,6 +525,38 @@ TEST_F(Cli, ModesRunsOnTheVulkanDeviceLikeTheCpuReference) {
         EXPECT_NEAR(energies[step] / wanted[step], 1.0, 1e-5) << "trapezoidal, step " << step;
 }
 
+TEST_F(Cli, ModesTakesTheLinearizedRuleOnBothDevicesAndRefusesItForMhd) {
+    const fs::path s = scene("linear.toml", std::string(kSmallDisk) +
+                                                "[initial]\nvelocity = \"random\"\nenergy = 2.0\n");
+    const std::string args =
+        " --cache-dir " + mCache.string() + " --steps 100 --dt 0.02 --integrator linearized --csv";
+    const RunResult cpu = run("modes " + s.string() + args);
+    const RunResult gpu = run("modes " + s.string() + args + " --device vulkan");
+    ASSERT_EQ(cpu.status, 0) << cpu.err;
+    ASSERT_EQ(gpu.status, 0) << gpu.err;
+    const std::vector<double> expected = csvEnergies(cpu.out), got = csvEnergies(gpu.out);
+    ASSERT_EQ(got.size(), 101u);
+    ASSERT_EQ(got.size(), expected.size());
+    for (std::size_t step = 0; step < got.size(); ++step) {
+        EXPECT_NEAR(expected[step], expected[0], 1e-12 * expected[0]) << "step " << step;
+        EXPECT_NEAR(got[step] / expected[step], 1.0, 1e-5) << "step " << step;
+    }
+
+    const fs::path mhd = scene("linear_mhd.toml", std::string(kSmallDisk) +
+                                                      "[simulation]\nmhd = true\n"
+                                                      "[initial]\nvelocity = \"random\"\n");
+    for (const char* device : {"cpu", "vulkan"}) {
+        const RunResult refused = run("modes " + mhd.string() + " --cache-dir " + mCache.string() +
+                                      " --steps 5 --integrator linearized --device " + device);
+        EXPECT_NE(refused.status, 0) << device;
+        EXPECT_NE(refused.err.find("--integrator: the linearized rule is for fluids"),
+                  std::string::npos)
+            << device << ": " << refused.err;
+        EXPECT_EQ(refused.err.find("eigensolve"), std::string::npos)
+            << device << ": refused before the precompute";
+    }
+}
+
 TEST_F(Cli, ModesStartsFromVorticesAndFromModalAmplitudes) {
     const std::string vortices = std::string(kSmallDisk) + R"(
 [initial]

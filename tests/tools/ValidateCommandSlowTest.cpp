@@ -79,6 +79,8 @@ void checkIntegrators(const json& results) {
     for (const json& s : study(results, "integrators")["series"])
         drift[s["integrator"]].push_back(s["max_relative_drift"]);
     for (const double d : drift["midpoint"]) EXPECT_LT(d, 1e-12);
+    for (const double d : drift["linearized"]) EXPECT_LT(d, 1e-12);
+    EXPECT_EQ(drift["linearized"].size(), 3u);
     for (const double d : drift["explicit"]) EXPECT_GT(d, 1e-2) << "explicit Euler gains energy";
     // Steps halve: RK4's drift falls about 2⁴-fold, the trapezoidal rule's 2²-fold.
     EXPECT_GT(drift["rk4"][0] / drift["rk4"][1], 8.0);

@@ -1,15 +1,16 @@
 /// @file BenchClosedForm.cpp
 /// The shipped closed-form scenes stage by stage, on the CPU reference and on the Vulkan device
 /// (--device N): the 64³ box (scenes/box_closed_form_3d.toml: a whole box with free-slip walls,
-/// buoyant smoke from a hot ball near the floor, MacCormack, midpoint) at N = 1000 and 2000 modes,
-/// and the 256² torus (scenes/torus_closed_form_2d.toml, the real-time goal) at N = 500:
+/// buoyant smoke from a hot ball near the floor, MacCormack) at N = 1000 and 2000 modes, and the
+/// 256² torus (scenes/torus_closed_form_2d.toml, the real-time goal) at N = 500, each with the
+/// midpoint rule and (`_linearized`) the linearized rule:
 ///   precompute        computeBasis (closed-form bases, sparse coefficients by selection rules)
 ///   cpu_step          one reference::Simulation step (wall ms, the reported time), and alone:
 ///                     contraction_ms (one C(v, v), SparseCoefficients, one thread),
 ///                     recon_ms and proj_ms (the separable transforms, FFTW),
 ///                     advect_ms (MacCormack on the 64³ smoke grid)
 ///   device_step       one device::Simulation step (GPU ms from timestamps, the reported time):
-///                     forces_ms (force field + projection), modal_ms (midpoint iterations),
+///                     forces_ms (force field + projection), modal_ms (the implicit step),
 ///                     recon_ms, advect_ms; and alone: contraction_ms (one C(v, v), sliced
 ///                     ELLPACK), proj_ms (the transposed transforms)
 /// The state is the torus scene's initial vortices, and for the box (which starts at rest) a swirl
@@ -89,9 +90,10 @@ void precompute(benchmark::State& state, const char* file) {
     state.counters["nnz"] = double(nonZeros);
 }
 
-void cpuStep(benchmark::State& state, const char* file) {
+void cpuStep(benchmark::State& state, const char* file, Integrator integrator) {
     const RunInputs& run = sceneRun(file, int(state.range(0)));
     reference::Simulation simulation(run.cache, *run.coefficients, run.settings, run.smokeMask);
+    simulation.setIntegrator(integrator);
     simulation.setVelocity(startingVelocity(run));
     simulation.advanceSteps(3);  // smoke to carry
     const VelocityBasis basis(run.cache);
@@ -126,10 +128,11 @@ void cpuStep(benchmark::State& state, const char* file) {
     state.counters["DOFs"] = double(run.cache.faces.size());
 }
 
-void deviceStep(benchmark::State& state, const char* file) {
+void deviceStep(benchmark::State& state, const char* file, Integrator integrator) {
     const RunInputs& run = sceneRun(file, int(state.range(0)));
     const vulkan::VulkanContext& context = benchContext();
     const std::unique_ptr<Simulator> simulation = benchBackend().makeSimulator(run, true);
+    simulation->setIntegrator(integrator);
     simulation->setVelocity(startingVelocity(run));
     simulation->advanceSteps(3);
     // The contraction and the projection alone.
@@ -186,10 +189,38 @@ void torusSizes(benchmark::internal::Benchmark* b) {
 
 BENCHMARK_CAPTURE(precompute, box_3d, kBox)->Apply(boxSizes)->Iterations(1);
 BENCHMARK_CAPTURE(precompute, torus_2d, kTorus)->Apply(torusSizes)->Iterations(1);
-BENCHMARK_CAPTURE(cpuStep, box_3d, kBox)->Apply(boxSizes)->Iterations(5)->UseManualTime();
-BENCHMARK_CAPTURE(cpuStep, torus_2d, kTorus)->Apply(torusSizes)->Iterations(20)->UseManualTime();
-BENCHMARK_CAPTURE(deviceStep, box_3d, kBox)->Apply(boxSizes)->Iterations(5)->UseManualTime();
-BENCHMARK_CAPTURE(deviceStep, torus_2d, kTorus)->Apply(torusSizes)->Iterations(20)->UseManualTime();
+BENCHMARK_CAPTURE(cpuStep, box_3d, kBox, Integrator::Midpoint)
+    ->Apply(boxSizes)
+    ->Iterations(5)
+    ->UseManualTime();
+BENCHMARK_CAPTURE(cpuStep, box_3d_linearized, kBox, Integrator::Linearized)
+    ->Apply(boxSizes)
+    ->Iterations(5)
+    ->UseManualTime();
+BENCHMARK_CAPTURE(cpuStep, torus_2d, kTorus, Integrator::Midpoint)
+    ->Apply(torusSizes)
+    ->Iterations(20)
+    ->UseManualTime();
+BENCHMARK_CAPTURE(cpuStep, torus_2d_linearized, kTorus, Integrator::Linearized)
+    ->Apply(torusSizes)
+    ->Iterations(20)
+    ->UseManualTime();
+BENCHMARK_CAPTURE(deviceStep, box_3d, kBox, Integrator::Midpoint)
+    ->Apply(boxSizes)
+    ->Iterations(5)
+    ->UseManualTime();
+BENCHMARK_CAPTURE(deviceStep, box_3d_linearized, kBox, Integrator::Linearized)
+    ->Apply(boxSizes)
+    ->Iterations(5)
+    ->UseManualTime();
+BENCHMARK_CAPTURE(deviceStep, torus_2d, kTorus, Integrator::Midpoint)
+    ->Apply(torusSizes)
+    ->Iterations(20)
+    ->UseManualTime();
+BENCHMARK_CAPTURE(deviceStep, torus_2d_linearized, kTorus, Integrator::Linearized)
+    ->Apply(torusSizes)
+    ->Iterations(20)
+    ->UseManualTime();
 
 }  // namespace
 }  // namespace modeflow::bench

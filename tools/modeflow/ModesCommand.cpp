@@ -11,6 +11,7 @@
 #include "engine/core/KappaSquared.h"
 #include "engine/dynamics/Diagnostics.h"
 #include "engine/dynamics/ModalDivergence.h"
+#include "engine/dynamics/ModalIntegrator.h"
 #include "engine/pipeline/Backend.h"
 #include "engine/pipeline/RunInputs.h"
 #include "precompute/scene/SceneLoader.h"
@@ -37,7 +38,8 @@ Command addModes(CLI::App& app) {
     sub->add_option("--dt", opts->dt, "time step (default: [simulation].dt)")
         ->check(finitePositive());
     sub->add_option("--integrator", opts->integrator,
-                    "explicit | rk4 | midpoint | trapezoidal (default: [simulation].integrator)");
+                    "explicit | rk4 | midpoint | trapezoidal | linearized (default: "
+                    "[simulation].integrator)");
     sub->add_option("--device", opts->device, kDeviceOptionHelp);
     sub->add_flag("--csv", opts->csv,
                   "CSV on stdout: step,time,energy,enstrophy,cross_helicity,iterations,residual");
@@ -51,6 +53,8 @@ Command addModes(CLI::App& app) {
         const Integrator scheme = opts->integrator
                                       ? parseIntegrator(*opts->integrator, "--integrator")
                                       : scene.simulation.integrator;
+        if (scheme == Integrator::Linearized && scene.simulation.mhd)
+            throw Error(std::string("--integrator: ") + kLinearizedNeedsAFluid);
         const Backend backend(choice);
         std::cerr << backend.describe();
         backend.requireFits(scene);
