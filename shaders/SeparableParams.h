@@ -1,5 +1,5 @@
 /* SeparableParams.h: push constants of the closed-form basis transforms (separable_pass.comp,
-   separable_gather.comp, separable_scatter.comp; engine/device/SeparableTransform), shared by C++
+   separable_gather.comp; engine/device/SeparableTransform), shared by C++
    and GLSL (ASCII, no C++-only syntax outside the __cplusplus blocks); padded to 16 bytes. */
 #ifndef MODEFLOW_SHADERS_SEPARABLE_PARAMS_H
 #define MODEFLOW_SHADERS_SEPARABLE_PARAMS_H
@@ -15,7 +15,9 @@ using uint = std::uint32_t;
 
 /* One pass along one axis: lines of inLength values (fastest) in d1 x d2 of them, each taken
    through the outLength x inLength table (stored j-major in texels: separable_pass.comp); the
-   output has the axes rotated (d1 fastest, d2, then outLength). */
+   output has the axes rotated (d1 fastest, d2, then outLength), its rows of d1 values outRow
+   apart and its planes of d2 rows outPlane apart (d1 and d1 d2 for a packed tensor; the last
+   pass of a reconstruction writes straight into the face field's rows and planes). */
 struct SeparablePassParams {
     uint d1;
     uint d2;
@@ -24,7 +26,11 @@ struct SeparablePassParams {
     uint inOffset;   /* first value of the input tensor in its buffer */
     uint outOffset;  /* first value of the output tensor in its buffer */
     uint tableTexel; /* first texel of the table in the tables buffer */
+    uint outRow;     /* values between the starts of two output rows (i2 -> i2 + 1) */
+    uint outPlane;   /* values between the starts of two output planes (q -> q + 1) */
     uint pad0;
+    uint pad1;
+    uint pad2;
 };
 
 /* out[outOffset + e] = sum over t < terms of weight[e terms + t] in[index[e terms + t]], for
@@ -36,18 +42,9 @@ struct SeparableGatherParams {
     uint pad0;
 };
 
-/* field[face[d]] = values[d] for d < count. */
-struct SeparableScatterParams {
-    uint count;
-    uint pad0;
-    uint pad1;
-    uint pad2;
-};
-
 #ifdef __cplusplus
-static_assert(sizeof(SeparablePassParams) == 32, "push constants are padded to 16 bytes");
+static_assert(sizeof(SeparablePassParams) == 48, "push constants are padded to 16 bytes");
 static_assert(sizeof(SeparableGatherParams) == 16, "push constants are padded to 16 bytes");
-static_assert(sizeof(SeparableScatterParams) == 16, "push constants are padded to 16 bytes");
 }  // namespace modeflow::shaders
 #endif
 

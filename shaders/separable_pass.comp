@@ -6,8 +6,10 @@
 // positions -> slots), written with the axes rotated so that three passes bring the tensor back
 // to x fastest:
 //
-//     out[(q d2 + i2) d1 + i1] = sum_j table(q, j) in[(i2 d1 + i1) inLength + j]
+//     out[q outPlane + i2 outRow + i1] = sum_j table(q, j) in[(i2 d1 + i1) inLength + j]
 //
+// (outRow = d1, outPlane = d1 d2 for a packed tensor; a reconstruction's last pass writes the
+// face field's rows and planes, which have the walls' faces between them).
 // One invocation per line and four consecutive outputs q (grid-stride), neighbouring lanes on
 // neighbouring lines. The table is stored j-major, four outputs a texel (entry (q, j) at float
 // j * 4 blocks + q, blocks = ceil(outLength / 4), zero-padded), so one texel fetch, the same for
@@ -38,9 +40,11 @@ void main() {
         vec4 sum = vec4(0.0);
         for (uint j = 0; j < params.inLength; ++j, texel += blocks)
             sum += floatTexel(tables, texel) * values[first + j];
+        const uint i2 = line / params.d1;
+        const uint at = params.outOffset + i2 * params.outRow + (line - i2 * params.d1);
         for (uint c = 0; c < 4u; ++c) {
             const uint q = 4u * block + c;
-            if (q < params.outLength) result[params.outOffset + q * lines + line] = sum[c];
+            if (q < params.outLength) result[at + q * params.outPlane] = sum[c];
         }
     }
 }

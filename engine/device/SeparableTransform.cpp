@@ -13,7 +13,6 @@
 #include "shaders/SeparableParams.h"
 #include "shaders/separable_gather.spv.h"
 #include "shaders/separable_pass.spv.h"
-#include "shaders/separable_scatter.spv.h"
 
 namespace modeflow::device {
 namespace {
@@ -58,7 +57,6 @@ SeparableTransformKernels::SeparableTransformKernels(const vulkan::VulkanContext
       mSlots(context, 4),
       mScratchA(context, 4),
       mScratchB(context, 4),
-      mDofValues(context, 4),
       mDofInput(context, 4),
       mPassKernel(context, {"separable_pass",
                             separable_pass_spv,
@@ -68,9 +66,7 @@ SeparableTransformKernels::SeparableTransformKernels(const vulkan::VulkanContext
                             {},
                             {0}}),
       mGatherKernel(context, {"separable_gather", separable_gather_spv, 4,
-                              sizeof(shaders::SeparableGatherParams), kWorkgroup}),
-      mScatterKernel(context, {"separable_scatter", separable_scatter_spv, 3,
-                               sizeof(shaders::SeparableScatterParams), kWorkgroup}) {
+                              sizeof(shaders::SeparableGatherParams), kWorkgroup}) {
     const SeparableTransform host(cache);  // the checks, slots and tables
     mDim = cache.grid.dim;
     mModeCount = std::uint32_t(host.modeCount());
@@ -129,8 +125,6 @@ SeparableTransformKernels::SeparableTransformKernels(const vulkan::VulkanContext
     mScratchB = vulkan::DeviceBuffer(context, scratch * sizeof(float), "separable scratch B");
     mSlots = vulkan::DeviceBuffer(context, std::uint64_t(mDim) * mSlotCount * sizeof(float),
                                   "separable slots");
-    mDofValues = vulkan::DeviceBuffer(context, std::uint64_t(mDofCount) * sizeof(float),
-                                      "separable DOF values");
     mDofInput = vulkan::DeviceBuffer(context, std::uint64_t(mDofCount) * sizeof(float),
                                      "separable DOF input");
 
@@ -143,6 +137,17 @@ SeparableTransformKernels::SeparableTransformKernels(const vulkan::VulkanContext
     std::array<std::vector<float>, 2> gatherWeights{std::vector<float>(gatherIndex.size()),
                                                     std::vector<float>(gatherIndex.size())};
     const MacGrid mac = MacGrid::fromSpec(cache.grid);
+    // Component a's DOFs are its faces off the walls in grid order (SeparableTransform checked:
+    // wholeBoxFaces), x fastest as the last synthesis pass leaves them: position (x, y, z) is
+    // face (x, y, z) + 1 along a walled normal axis.
+    for (int a = 0; a < mDim; ++a) {
+        const std::array<int, 3> e = mac.faceExtent(a);
+        const int wall = cache.grid.isPeriodic(a) ? 0 : 1;
+        mFacePlacement[std::size_t(a)] = {
+            std::uint32_t(
+                mac.faceIndex(a, a == 0 ? wall : 0, a == 1 ? wall : 0, a == 2 ? wall : 0)),
+            std::uint32_t(e[0]), std::uint32_t(e[0] * e[1])};
+    }
     const std::array<FaceQuantity, 2> quantities{FaceQuantity::Density, FaceQuantity::FaceField};
     std::array<std::array<double, 3>, 2> weights{};
     for (int q = 0; q < 2; ++q)
@@ -198,7 +203,7 @@ void SeparableTransformKernels::recordPasses(vulkan::CommandSequence& sequence, 
                                              bool synthesis, const vulkan::DeviceBuffer& in,
                                              std::uint32_t inOffset,
                                              const vulkan::DeviceBuffer& out,
-                                             std::uint32_t outOffset) const {
+                                             Placement placement) const {
     const std::array<const vulkan::DeviceBuffer*, 4> chain{&in, &mScratchA, &mScratchB, &out};
     for (int axis = 0; axis < 3; ++axis) {
         const Pass& pass =
@@ -209,8 +214,11 @@ void SeparableTransformKernels::recordPasses(vulkan::CommandSequence& sequence, 
         params.inLength = pass.inLength;
         params.outLength = pass.outLength;
         params.inOffset = axis == 0 ? inOffset : 0;
-        params.outOffset = axis == 2 ? outOffset : 0;
+        const bool last = axis == 2;
+        params.outOffset = last ? placement.offset : 0;
         params.tableTexel = pass.tableTexel;
+        params.outRow = last && placement.row != 0 ? placement.row : pass.d1;
+        params.outPlane = last && placement.plane != 0 ? placement.plane : pass.d1 * pass.d2;
         const std::array<const vulkan::DeviceBuffer*, 3> buffers{&mTables, chain[std::size_t(axis)],
                                                                  chain[std::size_t(axis) + 1]};
         const std::uint64_t invocations =
@@ -224,18 +232,15 @@ void SeparableTransformKernels::recordReconstruction(vulkan::CommandSequence& se
                                                      const vulkan::DeviceBuffer& v,
                                                      const vulkan::DeviceBuffer& faceField) const {
     requireWords("separable_gather", v, mModeCount);
-    requireWords("separable_scatter", faceField, mFaceTotal);
+    requireWords("separable_pass", faceField, mFaceTotal);
     const std::uint32_t slots = std::uint32_t(mDim) * mSlotCount;
     const std::array<const vulkan::DeviceBuffer*, 4> scatter{&mScatterIndex, &mScatterWeight, &v,
                                                              &mSlots};
     sequence.dispatch(mGatherKernel, scatter, shaders::SeparableGatherParams{slots, 2, 0, 0},
                       groupsFor(mContext, slots, kWorkgroup));
     for (int normal = 0; normal < mDim; ++normal)
-        recordPasses(sequence, normal, true, mSlots, std::uint32_t(normal) * mSlotCount, mDofValues,
-                     mDofStart[std::size_t(normal)]);
-    const std::array<const vulkan::DeviceBuffer*, 3> write{&mFaces, &mDofValues, &faceField};
-    sequence.dispatch(mScatterKernel, write, shaders::SeparableScatterParams{mDofCount, 0, 0, 0},
-                      groupsFor(mContext, mDofCount, kWorkgroup));
+        recordPasses(sequence, normal, true, mSlots, std::uint32_t(normal) * mSlotCount, faceField,
+                     mFacePlacement[std::size_t(normal)]);
 }
 
 void SeparableTransformKernels::recordAnalysis(vulkan::CommandSequence& sequence,
@@ -245,7 +250,7 @@ void SeparableTransformKernels::recordAnalysis(vulkan::CommandSequence& sequence
     requireWords("separable_gather", f, mModeCount);
     for (int normal = 0; normal < mDim; ++normal)
         recordPasses(sequence, normal, false, q, mDofStart[std::size_t(normal)], mSlots,
-                     std::uint32_t(normal) * mSlotCount);
+                     {std::uint32_t(normal) * mSlotCount});
     const auto& weights = mGatherWeights[quantity == FaceQuantity::Density ? 0 : 1];
     const std::array<const vulkan::DeviceBuffer*, 4> gather{&mGatherIndex, &weights, &mSlots, &f};
     sequence.dispatch(mGatherKernel, gather,

@@ -5,9 +5,11 @@
 /// reconstruction v → face field and projection q → f = Ψᵀ(w ∘ q) as separable per-axis sums over
 /// the band of wave numbers in use (shaders/separable_pass.comp: one dispatch per axis and
 /// component, each output a dot product with a row of the axis's table of factors), the modes
-/// gathered into and out of each component's tensor of slots (separable_gather.comp) and the
-/// velocities written to their faces (separable_scatter.comp). float32; the tables are computed
-/// in double on the host.
+/// gathered into and out of each component's tensor of slots (separable_gather.comp); a
+/// reconstruction's last pass writes each component's velocities straight into its faces (the
+/// DOFs are the box's non-wall faces in grid order, SeparableTransform checks, so that is a
+/// strided write, where a scatter through the DOF faces took 3.5 ms of a 64³ reconstruction's 12
+/// on lavapipe). float32; the tables are computed in double on the host.
 
 #include <array>
 #include <cstdint>
@@ -53,10 +55,14 @@ private:
     struct Pass {
         std::uint32_t d1, d2, inLength, outLength, tableTexel;
     };
+    /// Where the last pass of a component's passes writes: its first value, rows and planes.
+    struct Placement {
+        std::uint32_t offset = 0, row = 0, plane = 0;  ///< row, plane 0: packed
+    };
     /// Records the three passes of component `normal` (synthesis or analysis).
     void recordPasses(vulkan::CommandSequence& sequence, int normal, bool synthesis,
                       const vulkan::DeviceBuffer& in, std::uint32_t inOffset,
-                      const vulkan::DeviceBuffer& out, std::uint32_t outOffset) const;
+                      const vulkan::DeviceBuffer& out, Placement placement) const;
     /// f from the DOF values in `q` (mGatherWeights[quantity]).
     void recordAnalysis(vulkan::CommandSequence& sequence, const vulkan::DeviceBuffer& q,
                         FaceQuantity quantity, const vulkan::DeviceBuffer& f) const;
@@ -65,6 +71,7 @@ private:
     int mDim = 3;
     std::uint32_t mModeCount = 0, mDofCount = 0, mSlotCount = 0, mFaceTotal = 0;
     std::array<std::uint32_t, 3> mDofStart{0, 0, 0};
+    std::array<Placement, 3> mFacePlacement{};  ///< each component's faces in the face field
     std::array<std::array<Pass, 3>, 3> mSynthesis{}, mAnalysis{};  ///< [normal][axis]
     vulkan::DeviceBuffer mTables;
     vulkan::DeviceBuffer mScatterIndex, mScatterWeight;  ///< modes → slots: 2 terms a slot
@@ -73,9 +80,8 @@ private:
     vulkan::DeviceBuffer mFaces, mOnes;                  ///< DOF faces; weight 1 a DOF
     vulkan::DeviceBuffer mSlots;                         ///< the components' tensors of slots
     vulkan::DeviceBuffer mScratchA, mScratchB;           ///< between passes
-    vulkan::DeviceBuffer mDofValues;                     ///< reconstructed velocities (DOF order)
     vulkan::DeviceBuffer mDofInput;                      ///< a face field read at the DOF faces
-    vulkan::ComputeKernel mPassKernel, mGatherKernel, mScatterKernel;
+    vulkan::ComputeKernel mPassKernel, mGatherKernel;
 };
 
 }  // namespace modeflow::device
