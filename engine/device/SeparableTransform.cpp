@@ -245,12 +245,15 @@ void SeparableTransformKernels::recordReconstruction(vulkan::CommandSequence& se
 
 void SeparableTransformKernels::recordAnalysis(vulkan::CommandSequence& sequence,
                                                const vulkan::DeviceBuffer& q, FaceQuantity quantity,
-                                               const vulkan::DeviceBuffer& f) const {
+                                               const vulkan::DeviceBuffer& f, int component) const {
     requireWords("separable_pass", q, mDofCount);
     requireWords("separable_gather", f, mModeCount);
+    // The skipped components' slots read as 0 in the gather (a fill of a few thousand words).
+    if (component >= 0) sequence.fill(mSlots, VkDeviceSize(mDim) * mSlotCount * sizeof(float), 0u);
     for (int normal = 0; normal < mDim; ++normal)
-        recordPasses(sequence, normal, false, q, mDofStart[std::size_t(normal)], mSlots,
-                     {std::uint32_t(normal) * mSlotCount});
+        if (component < 0 || normal == component)
+            recordPasses(sequence, normal, false, q, mDofStart[std::size_t(normal)], mSlots,
+                         {std::uint32_t(normal) * mSlotCount});
     const auto& weights = mGatherWeights[quantity == FaceQuantity::Density ? 0 : 1];
     const std::array<const vulkan::DeviceBuffer*, 4> gather{&mGatherIndex, &weights, &mSlots, &f};
     sequence.dispatch(mGatherKernel, gather,
@@ -262,6 +265,16 @@ void SeparableTransformKernels::recordProjection(vulkan::CommandSequence& sequen
                                                  const vulkan::DeviceBuffer& q,
                                                  const vulkan::DeviceBuffer& f) const {
     recordAnalysis(sequence, q, FaceQuantity::Density, f);
+}
+
+void SeparableTransformKernels::recordComponentProjection(vulkan::CommandSequence& sequence,
+                                                          const vulkan::DeviceBuffer& q,
+                                                          int component,
+                                                          const vulkan::DeviceBuffer& f) const {
+    if (component < 0 || component >= mDim)
+        throw Error("separable projection: component " + std::to_string(component) + " of a " +
+                    std::to_string(mDim) + "D field");
+    recordAnalysis(sequence, q, FaceQuantity::Density, f, component);
 }
 
 void SeparableTransformKernels::recordFaceFieldProjection(vulkan::CommandSequence& sequence,

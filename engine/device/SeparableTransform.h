@@ -42,6 +42,12 @@ public:
     /// for FaceQuantity::Density.
     void recordProjection(vulkan::CommandSequence& sequence, const vulkan::DeviceBuffer& q,
                           const vulkan::DeviceBuffer& f) const;
+    /// The same for a q that is 0 on every DOF but those of component `component` (buoyancy
+    /// without splats: the up faces alone), whose passes alone are recorded: a third of a 3D
+    /// projection's.
+    /// @throw modeflow::Error for a component outside the grid's dimensions.
+    void recordComponentProjection(vulkan::CommandSequence& sequence, const vulkan::DeviceBuffer& q,
+                                   int component, const vulkan::DeviceBuffer& f) const;
     /// The same for a whole-grid face field read at the DOF faces, w for FaceQuantity::FaceField.
     void recordFaceFieldProjection(vulkan::CommandSequence& sequence,
                                    const vulkan::DeviceBuffer& faceField,
@@ -63,9 +69,11 @@ private:
     void recordPasses(vulkan::CommandSequence& sequence, int normal, bool synthesis,
                       const vulkan::DeviceBuffer& in, std::uint32_t inOffset,
                       const vulkan::DeviceBuffer& out, Placement placement) const;
-    /// f from the DOF values in `q` (mGatherWeights[quantity]).
+    /// f from the DOF values in `q` (mGatherWeights[quantity]); `component` ≥ 0: that
+    /// component's DOFs alone, the others' slots zeroed.
     void recordAnalysis(vulkan::CommandSequence& sequence, const vulkan::DeviceBuffer& q,
-                        FaceQuantity quantity, const vulkan::DeviceBuffer& f) const;
+                        FaceQuantity quantity, const vulkan::DeviceBuffer& f,
+                        int component = -1) const;
 
     const vulkan::VulkanContext& mContext;
     int mDim = 3;

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "engine/core/Error.h"
+#include "engine/core/FaceLocation.h"
 #include "engine/dynamics/ModalDivergence.h"
 
 namespace modeflow::device {
@@ -111,7 +112,12 @@ void Simulation::recordStep(std::vector<std::size_t>& boundaries) {
         const bool solidCells = std::int64_t(mSmoke.fluidCellCount()) < mSmoke.cellCount();
         mForceField.record(mSequence, mSettings.buoyancy, mSmoke.temperature(),
                            solidCells ? &mSmoke.mask() : nullptr, mForceDensity);
-        if (mSeparable)
+        // Buoyancy alone acts on the up faces only: the other components' passes would
+        // transform zeros.
+        if (mSeparable && mForceField.splatCount() == 0)
+            mSeparable->recordComponentProjection(
+                mSequence, mForceDensity, upAxis(mReconstruction.grid()), mStepper.forceBuffer());
+        else if (mSeparable)
             mSeparable->recordProjection(mSequence, mForceDensity, mStepper.forceBuffer());
         else
             mProjection.record(mSequence, *mModes, mForceDensity, mStepper.forceBuffer());
