@@ -53,7 +53,10 @@ ForceFieldKernel::ForceFieldKernel(const vulkan::VulkanContext& context, const B
               "force splats"),
       mSplatForce(makeKernel(context, FORCE_STAGE_SPLATS, false, workgroupSize)),
       mBuoyancy(makeKernel(context, FORCE_STAGE_BUOYANCY, false, workgroupSize)),
-      mMaskedBuoyancy(makeKernel(context, FORCE_STAGE_BUOYANCY, true, workgroupSize)) {}
+      mMaskedBuoyancy(makeKernel(context, FORCE_STAGE_BUOYANCY, true, workgroupSize)) {
+    // Sized by the up list, not every DOF: on lavapipe each empty workgroup still costs a call.
+    mUpGroups = groupsFor(context, mUp.count, workgroupSize);
+}
 
 vulkan::ComputeKernel ForceFieldKernel::makeKernel(const vulkan::VulkanContext& context,
                                                    std::uint32_t stage, bool useMask,
@@ -66,7 +69,7 @@ vulkan::ComputeKernel ForceFieldKernel::makeKernel(const vulkan::VulkanContext& 
                                   sizeof(shaders::ForceFieldParams),
                                   workgroupSize,
                                   {stage, std::uint32_t(mGrid.dim), std::uint32_t(mScale), useMask},
-                                  {1}});
+                                  {1, 2}});
 }
 
 void ForceFieldKernel::setSplats(std::span<const ForceSplat> splats) {
@@ -118,7 +121,7 @@ void ForceFieldKernel::record(vulkan::CommandSequence& sequence, double buoyancy
     else
         sequence.fill(g, VkDeviceSize(mDofCount) * sizeof(float), 0u);
     if (buoyancy != 0.0 && mUp.count > 0)
-        sequence.dispatch(fluidMask ? mMaskedBuoyancy : mBuoyancy, buffers, params, mGroups);
+        sequence.dispatch(fluidMask ? mMaskedBuoyancy : mBuoyancy, buffers, params, mUpGroups);
 }
 
 }  // namespace modeflow::device

@@ -55,7 +55,8 @@ private:
     std::uint32_t mDofCount = 0;
     std::uint32_t mMaxSplats = 0;
     std::uint32_t mSplatCount = 0;
-    std::uint32_t mGroups = 1;
+    std::uint32_t mGroups = 1;    ///< workgroups over every DOF (splats)
+    std::uint32_t mUpGroups = 1;  ///< over the up DOFs (buoyancy)
     vulkan::DeviceBuffer mFaces;
     struct UpDofs {
         vulkan::DeviceBuffer
