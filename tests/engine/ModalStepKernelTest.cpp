@@ -7,6 +7,7 @@
 #include <cmath>
 #include <memory>
 #include <string>
+#include <utility>
 
 #include <gtest/gtest.h>
 
@@ -179,19 +180,28 @@ TEST_P(ModalStepKernelTest, TrajectoriesStayWithin1e4OfTheDoubleReference) {
     }
 }
 
+/// The largest relative energy drift over 1000 steps of h from v0, checked every 100, and the
+/// most iterations the last step of a block took.
+std::pair<double, int> driftOver1000Steps(const vulkan::VulkanContext& context,
+                                          ModalStepper& stepper, const Eigen::VectorXd& v0,
+                                          double h) {
+    stepper.setState(v0);
+    const double e0 = energy(v0);
+    double drift = 0.0;
+    int maxIterations = 0;
+    for (int block = 0; block < 10; ++block) {
+        runDevice(context, stepper, h, 100);
+        drift = std::max(drift, std::abs(energy(stepper.state()) - e0) / e0);
+        maxIterations = std::max(maxIterations, stepper.status().iterations);
+    }
+    return {drift, maxIterations};
+}
+
 TEST_P(ModalStepKernelTest, MidpointConservesEnergyOver1000Steps) {
     const double h = stepFor(mC, mV0, 0.3);  // the CPU tests' large step
     {
         ModalStepper stepper(context(), mC, {});
-        stepper.setState(mV0);
-        const double e0 = energy(mV0);
-        double drift = 0.0;
-        int maxIterations = 0;
-        for (int block = 0; block < 10; ++block) {
-            runDevice(context(), stepper, h, 100);
-            drift = std::max(drift, std::abs(energy(stepper.state()) - e0) / e0);
-            maxIterations = std::max(maxIterations, stepper.status().iterations);
-        }
+        const double drift = driftOver1000Steps(context(), stepper, mV0, h).first;
         std::cout << "midpoint, 1000 steps of h|R|/|v| = 0.3: energy drift " << drift
                   << ", last step " << stepper.status().iterations << " iterations\n";
         EXPECT_LE(drift, 1e-5);
@@ -209,15 +219,7 @@ TEST_P(ModalStepKernelTest, LinearizedConservesEnergyOver1000Steps) {
         // an update, end.
         const std::size_t pairSums = stepper.coefficients().pairSumGroups().size();
         EXPECT_EQ(stepper.dispatchesPerStep(), 1 + (pairSums + 3) + pairSums + 30 * 3 + 1);
-        stepper.setState(mV0);
-        const double e0 = energy(mV0);
-        double drift = 0.0;
-        int maxIterations = 0;
-        for (int block = 0; block < 10; ++block) {
-            runDevice(context(), stepper, h, 100);
-            drift = std::max(drift, std::abs(energy(stepper.state()) - e0) / e0);
-            maxIterations = std::max(maxIterations, stepper.status().iterations);
-        }
+        const auto [drift, maxIterations] = driftOver1000Steps(context(), stepper, mV0, h);
         std::cout << "linearized, 1000 steps of h|R|/|v| = 0.3: energy drift " << drift
                   << ", at most " << maxIterations << " iterations a step\n";
         EXPECT_LE(drift, 1e-5);
