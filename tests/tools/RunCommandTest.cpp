@@ -134,21 +134,33 @@ TEST_F(RunCommand, WritesVdbFramesThatReadBack) {
     EXPECT_GT(inside, 20);
 }
 
+/// kHotDisk with `integrator` (the scene's default, midpoint, when empty).
+std::string hotDisk(const std::string& integrator) {
+    if (integrator.empty()) return kHotDisk;
+    std::string text = kHotDisk;
+    const std::string dt = "dt = 0.02\n";
+    return text.replace(text.find(dt), dt.size(), dt + "integrator = \"" + integrator + "\"\n");
+}
+
 TEST_F(RunCommand, ResumeGivesTheFramesOfAnUninterruptedRun) {
-    const fs::path s = scene("hot.toml", kHotDisk);
-    ASSERT_EQ(simulate(s, mDir / "whole").status, 0);
-    // A run stopped after frame 2 (the checkpoint is written after every frame), then resumed.
-    ASSERT_EQ(simulate(s, mDir / "parts", "--frames 2").status, 0);
-    const RunResult resumed = simulate(s, mDir / "parts", "--resume");
-    ASSERT_EQ(resumed.status, 0) << resumed.err;
-    EXPECT_NE(resumed.err.find("resuming after frame 2"), std::string::npos) << resumed.err;
-    const std::vector<Vec3> centres = smokeCentres();
-    for (const char* name : {"hot_0003.vdb", "hot_0004.vdb"}) {
-        for (const char* grid : {"density", "temperature", "vel"}) {
-            const auto whole = sampleVdbGrid(mDir / "whole" / name, grid, centres);
-            const auto parts = sampleVdbGrid(mDir / "parts" / name, grid, centres);
-            for (std::size_t c = 0; c < centres.size(); ++c)
-                ASSERT_EQ(whole[c].value, parts[c].value) << name << " " << grid << " cell " << c;
+    for (const std::string integrator : {"", "linearized"}) {
+        const fs::path s = scene("hot.toml", hotDisk(integrator));
+        const fs::path whole = mDir / ("whole" + integrator), parts = mDir / ("parts" + integrator);
+        ASSERT_EQ(simulate(s, whole).status, 0);
+        // A run stopped after frame 2 (the checkpoint is written after every frame), then resumed.
+        ASSERT_EQ(simulate(s, parts, "--frames 2").status, 0);
+        const RunResult resumed = simulate(s, parts, "--resume");
+        ASSERT_EQ(resumed.status, 0) << resumed.err;
+        EXPECT_NE(resumed.err.find("resuming after frame 2"), std::string::npos) << resumed.err;
+        const std::vector<Vec3> centres = smokeCentres();
+        for (const char* name : {"hot_0003.vdb", "hot_0004.vdb"}) {
+            for (const char* grid : {"density", "temperature", "vel"}) {
+                const auto a = sampleVdbGrid(whole / name, grid, centres);
+                const auto b = sampleVdbGrid(parts / name, grid, centres);
+                for (std::size_t c = 0; c < centres.size(); ++c)
+                    ASSERT_EQ(a[c].value, b[c].value)
+                        << integrator << " " << name << " " << grid << " cell " << c;
+            }
         }
     }
     // The checkpoint belongs to the scene text it was written for.
@@ -159,15 +171,18 @@ TEST_F(RunCommand, ResumeGivesTheFramesOfAnUninterruptedRun) {
 }
 
 TEST_F(RunCommand, CpuReferenceRunGivesTheSameSmoke) {
-    const fs::path s = scene("hot.toml", kHotDisk);
-    ASSERT_EQ(simulate(s, mDir / "gpu", "--frames 2").status, 0);
-    const RunResult cpu = simulate(s, mDir / "cpu", "--frames 2 --device cpu");
-    ASSERT_EQ(cpu.status, 0) << cpu.err;
-    const std::vector<Vec3> centres = smokeCentres();
-    const auto a = sampleVdbGrid(mDir / "gpu" / "hot_0002.vdb", "density", centres);
-    const auto b = sampleVdbGrid(mDir / "cpu" / "hot_0002.vdb", "density", centres);
-    for (std::size_t c = 0; c < centres.size(); ++c)
-        EXPECT_NEAR(a[c].value[0], b[c].value[0], 1e-5) << c;
+    for (const std::string integrator : {"", "linearized"}) {
+        const fs::path s = scene("hot.toml", hotDisk(integrator));
+        const fs::path gpuOut = mDir / ("gpu" + integrator), cpuOut = mDir / ("cpu" + integrator);
+        ASSERT_EQ(simulate(s, gpuOut, "--frames 2").status, 0);
+        const RunResult cpu = simulate(s, cpuOut, "--frames 2 --device cpu");
+        ASSERT_EQ(cpu.status, 0) << cpu.err;
+        const std::vector<Vec3> centres = smokeCentres();
+        const auto a = sampleVdbGrid(gpuOut / "hot_0002.vdb", "density", centres);
+        const auto b = sampleVdbGrid(cpuOut / "hot_0002.vdb", "density", centres);
+        for (std::size_t c = 0; c < centres.size(); ++c)
+            EXPECT_NEAR(a[c].value[0], b[c].value[0], 1e-5) << integrator << " " << c;
+    }
 }
 
 TEST_F(RunCommand, MhdRunsOnTheCpuReferenceWithAMagneticGridAndResumes) {
