@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "engine/core/Error.h"
+#include "engine/core/LibraryLeaks.h"
 #include "engine/vulkan/VulkanError.h"
 
 namespace modeflow::vulkan {
@@ -88,7 +89,11 @@ const char* DeviceSelector::typeName(VkPhysicalDeviceType type) {
 
 DeviceSelection DeviceSelector::select() const {
     std::uint32_t count = 0;
-    check(vkEnumeratePhysicalDevices(mInstance, &count, nullptr), "vkEnumeratePhysicalDevices");
+    {
+        // The first call loads the driver (engine/core/LibraryLeaks.h).
+        [[maybe_unused]] const IgnoreLibraryLeaks ignore;
+        check(vkEnumeratePhysicalDevices(mInstance, &count, nullptr), "vkEnumeratePhysicalDevices");
+    }
     std::vector<VkPhysicalDevice> devices(count);
     check(vkEnumeratePhysicalDevices(mInstance, &count, devices.data()),
           "vkEnumeratePhysicalDevices");

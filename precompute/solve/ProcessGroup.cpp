@@ -6,7 +6,7 @@
 #include <slepcsys.h>
 
 #include "engine/core/Error.h"
-#include "precompute/solve/LibraryLeaks.h"
+#include "engine/core/LibraryLeaks.h"
 
 namespace modeflow {
 namespace {

@@ -10,7 +10,7 @@
 #include <slepceps.h>
 
 #include "engine/core/Error.h"
-#include "precompute/solve/LibraryLeaks.h"
+#include "engine/core/LibraryLeaks.h"
 #include "precompute/solve/ProcessGroup.h"
 #include "precompute/solve/SliceCheckpoint.h"
 
