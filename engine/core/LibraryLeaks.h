@@ -5,9 +5,10 @@
 ///   - Open MPI's start and stop (MPI_Init, MPI_Finalize: about 120 KB in 3000 blocks);
 ///   - SLEPc 3.18's spectrum slicing when an interval ends inside a cluster of eigenvalues
 ///     (EPSSolve: 53 KB in 5 blocks, SlicedEigensolverTest.ClusterOnAnIntervalEndFoundOnce);
-///   - the Vulkan driver's first load (vkEnumeratePhysicalDevices): lavapipe's LLVM keeps 128
-///     bytes from a one-time initialization, which the leak checker sees as leaked once
-///     vkDestroyInstance has unloaded the driver and its LLVM (Mesa 22.3.6-1+deb12u2).
+///   - the Vulkan driver's load (vkEnumeratePhysicalDevices, or vkCreateInstance with the
+///     validation layer): lavapipe's LLVM keeps 128 bytes from a one-time initialization, which
+///     the leak checker sees as leaked once vkDestroyInstance has unloaded the driver and its
+///     LLVM (Mesa 22.3.6-1+deb12u2).
 /// Only the calling thread's allocations are ignored: Open MPI's progress thread under mpirun
 /// (32 bytes) is suppressed by the sanitized tests' environment instead (tests/CMakeLists.txt).
 

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "engine/core/Error.h"
+#include "engine/core/LibraryLeaks.h"
 #include "engine/vulkan/StagingArea.h"
 #include "engine/vulkan/VulkanError.h"
 
@@ -71,7 +72,12 @@ VulkanContext::VulkanContext(const VulkanContextOptions& options) {
     instanceInfo.ppEnabledLayerNames = layers.data();
     instanceInfo.enabledExtensionCount = std::uint32_t(extensions.size());
     instanceInfo.ppEnabledExtensionNames = extensions.data();
-    const VkResult created = vkCreateInstance(&instanceInfo, nullptr, &mInstance);
+    VkResult created = VK_SUCCESS;
+    {
+        // With the validation layer the driver loads here (engine/core/LibraryLeaks.h).
+        [[maybe_unused]] const IgnoreLibraryLeaks ignore;
+        created = vkCreateInstance(&instanceInfo, nullptr, &mInstance);
+    }
     if (created == VK_ERROR_INCOMPATIBLE_DRIVER)
         throw Error(
             "no Vulkan device found: vkCreateInstance failed: VK_ERROR_INCOMPATIBLE_DRIVER "
