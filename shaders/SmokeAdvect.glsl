@@ -21,12 +21,15 @@
    components is the cost (shaders/modal_pair_sums.comp), while a texel fetch is one vector gather
    for all lanes (shaders/TexelAccess.glsl); and an `if` only masks lanes: its body runs, loads
    included, even when no lane takes it (gallivm's if_cond):
-   - every read-only input fetched as texels (uniform texel buffers of RGBA32UI): the velocity
-     pairs, the cell list, the stencil mask, the fields (in, and MacCormack's hat in the
-     correction) and the record; a 64-bit word i is texel i >> 1, .xy or .zw. Against 64-bit
-     storage loads, steps ran 1.3-2x faster (3D 48^3 with 2 lavapipe threads, four runs
-     alternating: semi-Lagrangian 6.7-7.5 -> 3.0-4.1 ms, MacCormack 12.2-13.2 -> 6.9-8.3 ms;
-     one thread: SmokeAdvection.h), most where the stencil corners are gathered at random;
+   - every read-only input fetched as texels (uniform texel buffers): the velocity pairs, the
+     cell list, the stencil mask, the fields (in, and MacCormack's hat in the correction) and
+     the record. Against 64-bit storage loads, steps ran 1.3-2x faster (3D 48^3 with 2 lavapipe
+     threads, four runs alternating: semi-Lagrangian 6.7-7.5 -> 3.0-4.1 ms, MacCormack
+     12.2-13.2 -> 6.9-8.3 ms; one thread: SmokeAdvection.h), most where the stencil corners are
+     gathered at random. The inputs read a 64-bit word at a time (pairs and fields) go through
+     RG32UI views (DeviceBuffer::wordView), whose fetch gathers the two components in use, not
+     the four of an RGBA32UI texel and a select of half: MacCormack at 64^3 20.3-21.1 ms against
+     22.2-22.5 (bench_smoke_advection, two runs each);
    - results still stored as 64-bit words, one scalar access per lane, where a uvec2 takes two;
    - stage and dimension fixed at compile time, one pipeline each: with a run-time stage switch
      the correction cost 80% of the forward stage, split 30%;
@@ -58,12 +61,12 @@
 layout(local_size_x = 128, local_size_x_id = 0) in;
 
 // Read-only inputs as uniform texel buffers of RGBA32UI texels (why: the header).
-layout(set = 0, binding = 0) uniform usamplerBuffer facePairs;   // two pairs a texel
+layout(set = 0, binding = 0) uniform usamplerBuffer facePairs;   // one pair a word texel
 layout(set = 0, binding = 1) uniform usamplerBuffer fluidCells;  // one entry a texel
 layout(set = 0, binding = 2) uniform usamplerBuffer stencilMask; // 16 cells a texel
-layout(set = 0, binding = 3) uniform usamplerBuffer fieldsIn;    // two cells a texel
+layout(set = 0, binding = 3) uniform usamplerBuffer fieldsIn;    // one cell a word texel
 #if SMOKE_STAGE == SMOKE_STAGE_MACCORMACK_CORRECT
-layout(set = 0, binding = 4) uniform usamplerBuffer hat;     // the forward stage's, two cells a texel
+layout(set = 0, binding = 4) uniform usamplerBuffer hat;     // the forward stage's, one cell a word texel
 layout(set = 0, binding = 5) uniform usamplerBuffer record;  // list order, two texels an entry
 #else
 // Stores of 64-bit words: one scalar access per lane each on lavapipe, where a uvec2 takes two.
@@ -74,11 +77,8 @@ layout(std430, set = 0, binding = 6) writeonly buffer FieldsOut { uint64_t field
 layout(std430, set = 0, binding = 7) writeonly buffer TemperatureOut { float temperatureOut[]; };
 layout(push_constant) uniform Push { SmokeAdvectParams params; };
 
-// The 64-bit word `index` of a texel buffer as two floats.
-vec2 wordAt(usamplerBuffer texels, uint index) {
-    const uvec4 t = texelFetch(texels, int(index >> 1));
-    return uintBitsToFloat((index & 1u) != 0u ? t.zw : t.xy);
-}
+// The 64-bit word `index` of a word texel buffer (RG32UI) as two floats.
+vec2 wordAt(usamplerBuffer words, uint index) { return uintBitsToFloat(texelFetch(words, int(index)).xy); }
 uint64_t packPair(vec2 v) { return pack64(floatBitsToUint(v)); }
 
 #define MAC_DIM SMOKE_DIM

@@ -5,8 +5,8 @@
 //     pairs[f] = (u[f], u[f + 1])
 //
 // Every trilinear MAC stencil, of any component, is two faces wide along x, and x is the fastest
-// axis of MacGrid::faceIndex, so one texel fetch of pairs[] (two pairs a texel) gives two of its
-// corners. Why: the advection samples the velocity two or three times per smoke cell, and fewer
+// axis of MacGrid::faceIndex, so one fetch of pairs[] (a word texel: SmokeAdvect.glsl) gives two
+// of its corners. Why: the advection samples the velocity two or three times per smoke cell, and fewer
 // reads cost less on lavapipe (shaders/SmokeAdvect.glsl). Invocation k writes pairs 4k ... 4k + 3
 // from the velocity's texels k and k + 1, fetched (faces at 48^3: 0.8-1.1 -> 0.5-0.8 ms against a
 // 64-bit and a float storage load per two faces), and stores 64-bit words: one scalar access per

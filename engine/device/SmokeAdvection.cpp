@@ -64,8 +64,11 @@ shaders::SmokeFacePairsParams pairParams(const MacGrid& basis) {
 vulkan::ComputeKernel advectKernel(const vulkan::VulkanContext& context, const char* name,
                                    std::span<const std::uint32_t> spirv, std::uint32_t stage,
                                    std::uint32_t workgroupSize, bool unitScale) {
-    std::vector<std::uint32_t> texels{0, 1, 2, 3};
-    if (stage == SMOKE_STAGE_MACCORMACK_CORRECT) texels.insert(texels.end(), {4, 5});
+    std::vector<std::uint32_t> texels{1, 2}, words{0, 3};
+    if (stage == SMOKE_STAGE_MACCORMACK_CORRECT) {
+        texels.push_back(5);
+        words.push_back(4);
+    }
     return vulkan::ComputeKernel(context,
                                  vulkan::ComputeKernelSpec{name,
                                                            spirv,
@@ -73,7 +76,8 @@ vulkan::ComputeKernel advectKernel(const vulkan::VulkanContext& context, const c
                                                            sizeof(shaders::SmokeAdvectParams),
                                                            workgroupSize,
                                                            {unitScale ? 1u : 0u},
-                                                           std::move(texels)});
+                                                           std::move(texels),
+                                                           std::move(words)});
 }
 
 struct StageShader {

@@ -10,7 +10,8 @@
 ///
 /// Cells outside the fluid mask are 0 in every field at all times: upload() drops what it is
 /// given there, and the kernels never write them. Every buffer is padded with zeros to whole
-/// 16-byte texels, as the kernels read them through DeviceBuffer::texelView.
+/// 16-byte texels, as the kernels read them through texel views (DeviceBuffer::texelView and
+/// wordView).
 
 #include <array>
 #include <cstdint>

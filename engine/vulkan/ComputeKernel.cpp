@@ -25,10 +25,13 @@ ComputeKernel::ComputeKernel(const VulkanContext& context, const ComputeKernelSp
                     " bytes of push constants (must be a multiple of 4 and at most " +
                     std::to_string(limits.maxPushConstantsSize) + ")");
 
-    for (const std::uint32_t b : spec.texelBindings)
-        if (b >= spec.bufferCount)
-            throw Error("kernel " + spec.name + ": texel binding " + std::to_string(b) +
-                        " is not among its " + std::to_string(spec.bufferCount) + " bindings");
+    for (const auto* list : {&spec.texelBindings, &spec.wordBindings})
+        for (const std::uint32_t b : *list)
+            if (b >= spec.bufferCount)
+                throw Error("kernel " + spec.name + ": " +
+                            (list == &spec.wordBindings ? "word" : "texel") + " binding " +
+                            std::to_string(b) + " is not among its " +
+                            std::to_string(spec.bufferCount) + " bindings");
     std::vector<VkDescriptorSetLayoutBinding> bindings(spec.bufferCount);
     for (std::uint32_t b = 0; b < spec.bufferCount; ++b) {
         bindings[b].binding = b;
@@ -92,8 +95,14 @@ ComputeKernel::ComputeKernel(const VulkanContext& context, const ComputeKernelSp
 }
 
 bool ComputeKernel::isTexelBinding(std::uint32_t binding) const {
-    return std::find(mSpec.texelBindings.begin(), mSpec.texelBindings.end(), binding) !=
-           mSpec.texelBindings.end();
+    return isWordBinding(binding) ||
+           std::find(mSpec.texelBindings.begin(), mSpec.texelBindings.end(), binding) !=
+               mSpec.texelBindings.end();
+}
+
+bool ComputeKernel::isWordBinding(std::uint32_t binding) const {
+    return std::find(mSpec.wordBindings.begin(), mSpec.wordBindings.end(), binding) !=
+           mSpec.wordBindings.end();
 }
 
 void ComputeKernel::bind(VkCommandBuffer commandBuffer,
@@ -115,13 +124,15 @@ void ComputeKernel::bind(VkCommandBuffer commandBuffer,
         writes[b].dstBinding = b;
         writes[b].descriptorCount = 1;
         if (isTexelBinding(b)) {
-            views[b] = buffers[b]->texelView();
+            const bool words = isWordBinding(b);
+            views[b] = words ? buffers[b]->wordView() : buffers[b]->texelView();
             if (views[b] == VK_NULL_HANDLE)
                 throw Error("kernel " + mSpec.name + ": binding " + std::to_string(b) +
                             " reads buffer \"" + buffers[b]->name() + "\" (" +
-                            std::to_string(buffers[b]->bytes()) +
-                            " bytes) as 16-byte texels, but it is smaller than one texel or "
-                            "larger than the texel buffer limit");
+                            std::to_string(buffers[b]->bytes()) + " bytes) as " +
+                            (words ? "8" : "16") +
+                            "-byte texels, but it is smaller than one texel or larger than the "
+                            "texel buffer limit");
             writes[b].descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
             writes[b].pTexelBufferView = &views[b];
         } else {

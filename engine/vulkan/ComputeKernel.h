@@ -35,6 +35,9 @@ struct ComputeKernelSpec {
     /// The bindings a shader reads as `usamplerBuffer` (DeviceBuffer::texelView), the rest being
     /// storage buffers. For read-only streams: lavapipe gathers texels with vector loads.
     std::vector<std::uint32_t> texelBindings = {};
+    /// The bindings a shader reads as `usamplerBuffer` of 64-bit words (DeviceBuffer::wordView,
+    /// RG32UI): where the reads are single words, a fetch gathers two components, not four.
+    std::vector<std::uint32_t> wordBindings = {};
 };
 
 class ComputeKernel {
@@ -71,7 +74,9 @@ public:
     std::uint32_t workgroupSize() const { return mSpec.workgroupSize; }
 
 private:
+    /// A binding of texelBindings or wordBindings (a uniform texel buffer).
     bool isTexelBinding(std::uint32_t binding) const;
+    bool isWordBinding(std::uint32_t binding) const;
     /// Binds the pipeline and buffers and pushes the constants, after checking their counts.
     void bind(VkCommandBuffer commandBuffer, std::span<const DeviceBuffer* const> buffers,
               std::span<const std::byte> pushConstants) const;

@@ -45,7 +45,7 @@ DeviceBuffer::DeviceBuffer(const VulkanContext& context, VkDeviceSize bytes, std
     mMemoryHandle = memory;
     check(vkBindBufferMemory(device, buffer, memory, 0), "vkBindBufferMemory");
     if (mapped) check(vkMapMemory(device, memory, 0, VK_WHOLE_SIZE, 0, &mMapped), "vkMapMemory");
-    createTexelView(bytes);
+    createTexelViews(bytes);
 }
 
 DeviceBuffer::DeviceBuffer(const DeviceBuffer& whole, VkDeviceSize offset, VkDeviceSize bytes,
@@ -63,14 +63,14 @@ DeviceBuffer::DeviceBuffer(const DeviceBuffer& whole, VkDeviceSize offset, VkDev
     check(vkBindBufferMemory(mContext->device(), buffer, mMemoryHandle, offset),
           "vkBindBufferMemory (view)");
     if (whole.mMapped) mMapped = static_cast<std::byte*>(whole.mMapped) + offset;
-    createTexelView(bytes);
+    createTexelViews(bytes);
 }
 
 VkBuffer DeviceBuffer::createBuffer(VkDeviceSize bytes) {
     VkBufferCreateInfo info{};
     info.sType = VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO;
     info.size = bytes;
-    const bool texels = bytes >= kTexelBytes && bytes <= mContext->texelBufferLimit();
+    const bool texels = bytes >= kWordBytes && bytes <= mContext->storageBufferLimit();
     info.usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT |
                  VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT |
                  (texels ? VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT : 0);
@@ -81,17 +81,27 @@ VkBuffer DeviceBuffer::createBuffer(VkDeviceSize bytes) {
     return buffer;
 }
 
-void DeviceBuffer::createTexelView(VkDeviceSize bytes) {
-    if (bytes < kTexelBytes || bytes > mContext->texelBufferLimit()) return;
-    // RGBA32UI texel buffers are mandatory in Vulkan; shaders reinterpret the bits.
+DeviceHandle<VkBufferView> DeviceBuffer::createView(VkFormat format, VkDeviceSize texelBytes,
+                                                    VkDeviceSize bytes) const {
+    const VkDeviceSize texels = bytes / texelBytes;
+    if (texels == 0 || texels > mContext->properties().limits.maxTexelBufferElements ||
+        bytes > mContext->storageBufferLimit())
+        return {};
     VkBufferViewCreateInfo view{};
     view.sType = VK_STRUCTURE_TYPE_BUFFER_VIEW_CREATE_INFO;
     view.buffer = mBuffer.get();
-    view.format = VK_FORMAT_R32G32B32A32_UINT;
-    view.range = bytes / kTexelBytes * kTexelBytes;
-    VkBufferView texelView = VK_NULL_HANDLE;
-    check(vkCreateBufferView(mContext->device(), &view, nullptr, &texelView), "vkCreateBufferView");
-    mTexelView = DeviceHandle<VkBufferView>(mContext->device(), texelView, vkDestroyBufferView);
+    view.format = format;
+    view.range = texels * texelBytes;
+    VkBufferView handle = VK_NULL_HANDLE;
+    check(vkCreateBufferView(mContext->device(), &view, nullptr, &handle), "vkCreateBufferView");
+    return DeviceHandle<VkBufferView>(mContext->device(), handle, vkDestroyBufferView);
+}
+
+void DeviceBuffer::createTexelViews(VkDeviceSize bytes) {
+    // RGBA32UI and RG32UI uniform texel buffers are mandatory in Vulkan; shaders reinterpret the
+    // bits.
+    mTexelView = createView(VK_FORMAT_R32G32B32A32_UINT, kTexelBytes, bytes);
+    mWordView = createView(VK_FORMAT_R32G32_UINT, kWordBytes, bytes);
 }
 
 void DeviceBuffer::write(const void* source, VkDeviceSize offset, VkDeviceSize bytes) {

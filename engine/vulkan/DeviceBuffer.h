@@ -10,7 +10,9 @@
 /// texel view (RGBA32UI) over its whole texels, so kernels may read it as a uniform texel buffer
 /// (`usamplerBuffer`, ComputeKernelSpec::texelBindings): lavapipe fetches texels with vector
 /// gathers, about 3× the bandwidth of its storage buffer loads (shaders/TexelAccess.glsl). Bytes
-/// past the last whole texel read as zero there.
+/// past the last whole texel read as zero there. A second view (RG32UI, wordView) reads it a
+/// 64-bit word at a time, for kernels whose reads are single words
+/// (ComputeKernelSpec::wordBindings).
 
 #include <cstddef>
 #include <span>
@@ -63,6 +65,8 @@ public:
 
     /// Bytes per texel of texelView().
     static constexpr VkDeviceSize kTexelBytes = 16;
+    /// Bytes per texel of wordView().
+    static constexpr VkDeviceSize kWordBytes = 8;
 
     VkBuffer handle() const { return mBuffer.get(); }
     VkDeviceSize bytes() const { return mBytes; }
@@ -70,6 +74,9 @@ public:
     /// The RGBA32UI view over the buffer's whole 16-byte texels, or VK_NULL_HANDLE when it is
     /// smaller than one texel or larger than VulkanContext::texelBufferLimit().
     VkBufferView texelView() const { return mTexelView.get(); }
+    /// The RG32UI view over the buffer's whole 8-byte words (one 64-bit word a texel), or
+    /// VK_NULL_HANDLE as texelView().
+    VkBufferView wordView() const { return mWordView.get(); }
     /// True when the host reads and writes the memory directly (no staging copy).
     bool isMapped() const { return mMapped != nullptr; }
 
@@ -92,7 +99,9 @@ public:
 private:
     /// The buffer object over `bytes`, its usage, and whether it gets a texel view.
     VkBuffer createBuffer(VkDeviceSize bytes);
-    void createTexelView(VkDeviceSize bytes);
+    void createTexelViews(VkDeviceSize bytes);
+    DeviceHandle<VkBufferView> createView(VkFormat format, VkDeviceSize texelBytes,
+                                          VkDeviceSize bytes) const;
     void checkRange(const char* what, VkDeviceSize offset, VkDeviceSize bytes) const;
     void write(const void* source, VkDeviceSize offset, VkDeviceSize bytes);
     void read(void* destination, VkDeviceSize offset, VkDeviceSize bytes) const;
@@ -104,7 +113,7 @@ private:
     DeviceHandle<VkDeviceMemory> mMemory;  ///< empty in a view: the whole buffer's memory
     VkDeviceMemory mMemoryHandle = VK_NULL_HANDLE;
     DeviceHandle<VkBuffer> mBuffer;
-    DeviceHandle<VkBufferView> mTexelView;  // destroyed before the buffer
+    DeviceHandle<VkBufferView> mTexelView, mWordView;  // destroyed before the buffer
     void* mMapped = nullptr;
 };
 

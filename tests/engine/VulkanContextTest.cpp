@@ -187,6 +187,9 @@ TEST_P(VulkanContextTest, BuffersOfWholeTexelsCanBeReadAsTexels) {
     // The view covers the whole texels; the ragged tail is read some other way.
     EXPECT_NE(DeviceBuffer(context(), 20, "one texel and a float").texelView(), VK_NULL_HANDLE);
     EXPECT_EQ(DeviceBuffer(context(), 12, "three floats").texelView(), VK_NULL_HANDLE);
+    // And as 8-byte words (RG32UI), from one word up.
+    EXPECT_NE(DeviceBuffer(context(), 12, "one word and a float").wordView(), VK_NULL_HANDLE);
+    EXPECT_EQ(DeviceBuffer(context(), 4, "one float").wordView(), VK_NULL_HANDLE);
     // A texel binding must be one of the kernel's bindings (checked before any SPIR-V is read).
     try {
         const vulkan::ComputeKernel kernel(context(), {"probe", {}, 2, 0, 64, {}, {2}});
@@ -195,6 +198,12 @@ TEST_P(VulkanContextTest, BuffersOfWholeTexelsCanBeReadAsTexels) {
         const std::string message = e.what();
         EXPECT_NE(message.find("texel binding 2"), std::string::npos) << message;
         EXPECT_NE(message.find("probe"), std::string::npos) << message;
+    }
+    try {
+        const vulkan::ComputeKernel kernel(context(), {"probe", {}, 2, 0, 64, {}, {}, {3}});
+        FAIL() << "a kernel with word binding 3 of 2 bindings was made";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("word binding 3"), std::string::npos) << e.what();
     }
     expectNoValidationMessages();
 }
