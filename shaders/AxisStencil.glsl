@@ -15,14 +15,18 @@ struct AxisStencil {
 /* Along an axis with n samples at grid coordinates offset + 0, 1, ..., n - 1, clamped to them,
    or on a periodic axis repeating every n (n - 1 interpolates with 0). The index is clamped as an
    integer too: a diverged run's NaN coordinate makes floor() some undefined value, which must
-   still address the buffer (the reference samples it as 0). */
+   still address the buffer (the reference samples it as 0). The wrap is a compare and select,
+   not an integer modulo: lavapipe runs both sides of an `if` whichever lanes take it, and has no
+   vector integer division, so a modulo here divided lane by lane in every trilinear sample of
+   every run, periodic or not (3D MacCormack at 64^3: see SmokeAdvect.glsl). */
 AxisStencil axisStencil(float coordinate, float offset, int n, bool periodic) {
     AxisStencil a;
     if (periodic) {
         const float s = mod(coordinate - offset, float(n));  // [0, n], n only by round-off
         const float below = floor(s);
-        a.lo = clamp(int(below), 0, n) % n;
-        a.hi = (a.lo + 1) % n;
+        const int lo = clamp(int(below), 0, n);
+        a.lo = lo == n ? 0 : lo;
+        a.hi = a.lo + 1 == n ? 0 : a.lo + 1;
         a.f = s - below;
         return a;
     }

@@ -68,8 +68,9 @@ struct AdvectSumParams {
 };
 
 /* What modal_update.comp does with r = R(y) from modal_combine.comp (formulas in the shader). */
-#define MODAL_OP_BEGIN \
-    0u /* half decay of x, y = x (midpoint: or a warm start from the r held), arguments reset */
+#define MODAL_OP_BEGIN                                                                        \
+    0u /* half decay of x, y = x (midpoint: or a warm start from the r held), arguments reset \
+          (the predictor's switched off while a linearized rate is held) */
 #define MODAL_OP_EXPLICIT 1u     /* x += h M^-1 (r + f), half decay */
 #define MODAL_OP_RK4_STAGE 2u    /* stage `stage` (0..3) of classical RK4 */
 #define MODAL_OP_MIDPOINT 3u     /* one fixed-point iteration of the midpoint rule */
@@ -78,11 +79,14 @@ struct AdvectSumParams {
     5u                          /* r0 = R(x) kept, y = x + h M^-1 (r0 + f) (explicit predictor) */
 #define MODAL_OP_TRAPEZOIDAL 6u /* one fixed-point iteration of the trapezoidal rule */
 #define MODAL_OP_TRAPEZOIDAL_END 7u /* x = y, half decay; no r */
-#define MODAL_OP_LINEARIZED_START \
-    8u /* r = R(x): y = x + h/2 M^-1 (r + f), a = M y (the predictor the iterations freeze) */
-#define MODAL_OP_LINEARIZED_END 9u /* as MIDPOINT_END, and no step-end R held */
+#define MODAL_OP_LINEARIZED_START                                                            \
+    8u /* y = x + h/2 (g + M^-1 f) with the rate held, or g = M^-1 R(x) from r; a = M y (the \
+          predictor the iterations freeze) */
+#define MODAL_OP_LINEARIZED_END \
+    9u /* as MIDPOINT_END; the rate g = 2 (y - x) / h - M^-1 f held; no step-end R held */
 /* Directions of the implicit iterations' Anderson acceleration (modal_update.comp): its history
-   holds 2 ANDERSON_DEPTH + 2 state-sized vectors, and one for the warm start. */
+   holds 2 ANDERSON_DEPTH + 2 state-sized vectors, one for the warm start and one for the
+   linearized rule's held rate. */
 #define ANDERSON_DEPTH 5
 
 struct ModalUpdateParams {
@@ -98,6 +102,11 @@ struct ModalUpdateParams {
     uint anderson;      /* implicit rules: 1 accelerates the fixed-point iteration */
     uint warm;          /* BEGIN of a midpoint step: 1 starts from the R held, if any */
     uint frozen;        /* MIDPOINT of a linearized step: 1 leaves a (the frozen M x~) alone */
+    uint predictorCount; /* indirect dispatches of the linearized predictor's R(x), after the
+                            iterations' two copies: switched off while a rate is held */
+    uint pad0;
+    uint pad1;
+    uint pad2;
 };
 
 /* The status block modal_update.comp keeps for the host. */
@@ -107,7 +116,7 @@ struct ModalStatus {
     float residual;   /* last relative change of y */
     uint converged;   /* 1 once the current step's iteration converged */
     uint heldRhs;     /* R at the ends of the last 0-2 converged implicit steps held (r, history) */
-    uint pad0;
+    uint heldRate;    /* 1: the linearized rule's rate g held (history slot 2 ANDERSON_DEPTH + 3) */
     uint pad1;
     uint pad2;
 };
@@ -115,7 +124,7 @@ struct ModalStatus {
 #ifdef __cplusplus
 static_assert(sizeof(PairSumsParams) == 16 && sizeof(SparsePairSumsParams) == 16 &&
                   sizeof(CombineParams) == 16 && sizeof(AdvectDenseParams) == 32 &&
-                  sizeof(AdvectSumParams) == 16 && sizeof(ModalUpdateParams) == 48 &&
+                  sizeof(AdvectSumParams) == 16 && sizeof(ModalUpdateParams) == 64 &&
                   sizeof(ModalStatus) == 32,
               "push constants are padded to 16 bytes");
 } /* namespace modeflow::shaders */

@@ -24,10 +24,13 @@
 //   TRAPEZOIDAL   fixed point of seed eq. 6.9 in the end point y = x' (f constant over the step):
 //                 y <- x + h/2 M^-1 (R(x) + R(y)) + h M^-1 f, converged as MIDPOINT
 //   TRAPEZOIDAL_END  x <- exp(-d h/2) y; an unconverged step keeps x (decay only)
-//   LINEARIZED_START  r = R(x): y = x + h/2 M^-1 (r + f), a = M y, the predictor x~ whose pair
-//                 sums the linearized rule's iterations keep (engine/dynamics/ModalIntegrator.h)
+//   LINEARIZED_START  y = x + h/2 (g + M^-1 f), a = M y, the predictor x~ whose pair sums the
+//                 linearized rule's iterations keep (engine/dynamics/ModalIntegrator.h): g the
+//                 rate held from the last step (history slot 2m + 3), or without one g = M^-1 r,
+//                 r = R(x) evaluated by the dispatches before (which BEGIN switches off through
+//                 their indirect arguments while a rate is held)
 //   MIDPOINT with `frozen`: the same map with r = L(x~) y, a left as it is (a linear fixed point)
-//   LINEARIZED_END  as MIDPOINT_END
+//   LINEARIZED_END  as MIDPOINT_END; a converged step holds its rate g = 2 (y - x)/h - M^-1 f
 //
 // Plainly iterated, both fixed points converge when h |dR/dy| / 2 < 1 (the step's CFL-like number),
 // accelerated often beyond; the status block counts steps that reached the iteration limit so the
@@ -64,7 +67,8 @@ void setPoint(uint k, float value) {
     if (params.frozen == 0u) a[k] = mass[k] * value;
 }
 
-bool inState(uint k) { return k % params.stride < params.n; }  // not padding between the parts
+// Not padding after a part (at most two parts; no modulo: lavapipe divides lane by lane).
+bool inState(uint k) { return k < params.stride ? k < params.n : k - params.stride < params.n; }
 
 // R(y)_k from r (MHD with the Lorentz force: the velocity part less C(F, F)).
 float rhs(uint k) {
@@ -82,6 +86,7 @@ float fixedPointMap(uint k) {
 
 // Entry k of history vector `slot` (history layout: see iterate).
 uint at(uint slot, uint k) { return slot * params.parts * params.stride + k; }
+#define HELD_RATE_SLOT (2u * ANDERSON_DEPTH + 3u)
 
 // The workgroup's sums of `values` (max for the first two), in partial[0] after the call.
 void reduceWorkgroup(float values[SUMS]) {
@@ -151,8 +156,8 @@ void solveLeastSquares(uint used) {
 // iterations and a one-direction secant hardly helps, where m directions cut them several fold
 // (ModalStepKernelTest; README "Vulkan runtime"). The first iteration of a step is the plain
 // one. Converged when max|F| <= tolerance max|g|. History (binding 10): D in slots 0..m-1, E in
-// m..2m-1, the last F and g in 2m and 2m + 1, the warm start's r_before in 2m + 2 (main()),
-// each parts * stride floats.
+// m..2m-1, the last F and g in 2m and 2m + 1, the warm start's r_before in 2m + 2 (main()), the
+// linearized rule's held rate in 2m + 3, each parts * stride floats.
 void iterate(uint lane, uint size) {
     const uint m = ANDERSON_DEPTH;
     const float infinity = uintBitsToFloat(0x7f800000u);
@@ -246,8 +251,11 @@ void main() {
             if (s < 3) setPoint(k, x[k] + (s == 2 ? 1.0 : 0.5) * h * slope);
             else x[k] = halfDecay * (x[k] + h / 6.0 * acc[k]);
         } else if (op == MODAL_OP_LINEARIZED_START) {
-            setPoint(k, x[k] + 0.5 * h * (rk + f[k]) / mass[k]);
+            const float rate = status.heldRate != 0u ? history[at(HELD_RATE_SLOT, k)] : rk / mass[k];
+            setPoint(k, x[k] + 0.5 * h * (rate + f[k] / mass[k]));
         } else if (op == MODAL_OP_MIDPOINT_END || op == MODAL_OP_LINEARIZED_END) {
+            if (op == MODAL_OP_LINEARIZED_END)
+                history[at(HELD_RATE_SLOT, k)] = 2.0 * (y[k] - x[k]) / h - f[k] / mass[k];
             // An iteration that did not converge may be diverging (h |dR/dv| / 2 > 1): keep the
             // state rather than step to a wild iterate; the host then takes smaller substeps.
             x[k] = halfDecay * (status.converged != 0u ? 2.0 * y[k] - x[k] : x[k]);
@@ -266,6 +274,11 @@ void main() {
         status.converged = 0;
         const uint words = 3 * params.argumentCount;
         for (uint e = 0; e < words; ++e) arguments[words + e] = arguments[e];
+        // The linearized predictor's R(x): not evaluated while a rate is held.
+        const uint predictor = 2u * words, predictorWords = 3 * params.predictorCount;
+        for (uint e = 0; e < predictorWords; ++e)
+            arguments[predictor + predictorWords + e] =
+                status.heldRate != 0u && e % 3u == 0u ? 0u : arguments[predictor + e];
     }
     const bool ending = op == MODAL_OP_MIDPOINT_END || op == MODAL_OP_TRAPEZOIDAL_END ||
                         op == MODAL_OP_LINEARIZED_END;
@@ -274,5 +287,6 @@ void main() {
         // A linearized step ends with r = L(x~) y, not R at the step's end: nothing to extrapolate.
         const bool holds = status.converged != 0u && op != MODAL_OP_LINEARIZED_END;
         status.heldRhs = holds ? min(status.heldRhs + 1u, 2u) : 0u;
+        status.heldRate = op == MODAL_OP_LINEARIZED_END && status.converged != 0u && h != 0.0 ? 1u : 0u;
     }
 }

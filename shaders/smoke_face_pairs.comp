@@ -21,6 +21,8 @@
 #include "SmokeAdvectParams.h"
 
 layout(local_size_x = 128, local_size_x_id = 0) in;
+// x is periodic (params.wrapX > 0): a constant, so that a walled grid compiles the wrap out.
+layout(constant_id = 1) const bool WRAP_X = false;
 
 // The velocity buffer twice: its whole texels, and as floats for the faces past them.
 layout(set = 0, binding = 0) uniform usamplerBuffer velocityTexels;
@@ -42,11 +44,16 @@ void main() {
         next = floatBitsToUint(velocity[faces - 1u]);
     }
     uvec4 second = uvec4(u.yzw, next);
-    if (params.wrapX != 0u) {
+    if (WRAP_X) {
+        // One integer division per lane (lavapipe divides lane by lane): the row position of
+        // face 4k, then of the next three. Every face group has whole rows, so positions up to
+        // the last face are exact; past it the pairs are never read.
+        const uint row = params.wrapX;
+        uint x = (4u * k) % row;
         [[unroll]] for (uint c = 0u; c < 4u; ++c) {
             const uint face = min(4u * k + c, faces - 1u);
-            if (face % params.wrapX == params.wrapX - 1u)
-                second[c] = floatBitsToUint(velocity[face - (params.wrapX - 1u)]);
+            if (x == row - 1u) second[c] = floatBitsToUint(velocity[face - (row - 1u)]);
+            x = x + 1u == row ? 0u : x + 1u;
         }
     }
     pairs[2u * k] = u64vec2(pack64(uvec2(u.x, second.x)), pack64(uvec2(u.y, second.y)));

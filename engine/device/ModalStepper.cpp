@@ -35,11 +35,13 @@ vulkan::DeviceBuffer zeros(const vulkan::VulkanContext& context, std::size_t flo
 }
 
 /// The full indirect arguments (one VkDispatchIndirectCommand per dispatch of an iteration),
-/// followed by the live copy the device resets and zeroes.
-std::vector<std::uint32_t> indirectArguments(const std::vector<std::uint32_t>& groups) {
+/// followed by the live copy the device resets and zeroes, then the same two for the linearized
+/// predictor's evaluation of R(x) (modal_update.comp's BEGIN).
+std::vector<std::uint32_t> indirectArguments(const std::vector<std::uint32_t>& iteration,
+                                             const std::vector<std::uint32_t>& predictor) {
     std::vector<std::uint32_t> words;
-    for (int copy = 0; copy < 2; ++copy)
-        for (std::uint32_t g : groups) words.insert(words.end(), {g, 1u, 1u});
+    for (const auto* groups : {&iteration, &iteration, &predictor, &predictor})
+        for (std::uint32_t g : *groups) words.insert(words.end(), {g, 1u, 1u});
     return words;
 }
 
@@ -80,9 +82,10 @@ ModalStepper::ModalStepper(const vulkan::VulkanContext& context,
       mMass(zeros(context, mParts * mStride, "modal mass")),
       mDecay(zeros(context, mParts * mStride, "modal decay rates")),
       mAccumulator(zeros(context, mParts * mStride, "modal accumulator")),
-      // Anderson's 2 ANDERSON_DEPTH + 2 vectors and the warm start's R (modal_update.comp).
+      // Anderson's 2 ANDERSON_DEPTH + 2 vectors, the warm start's R and the linearized rule's
+      // held rate (modal_update.comp).
       mHistory(
-          zeros(context, (2 * ANDERSON_DEPTH + 3) * mParts * mStride, "modal iteration history")),
+          zeros(context, (2 * ANDERSON_DEPTH + 4) * mParts * mStride, "modal iteration history")),
       mStatus(vulkan::DeviceBuffer::fromValues<shaders::ModalStatus>(
           context, std::vector<shaders::ModalStatus>(1), "modal status")),
       mArguments(context, 4, "modal indirect arguments") {
@@ -103,7 +106,7 @@ void ModalStepper::buildArguments() {
     mIterationDispatches = std::uint32_t(groups.size());
     groups.push_back(1);  // modal_update
     mArguments = vulkan::DeviceBuffer::fromValues<std::uint32_t>(
-        mContext, indirectArguments(groups), "modal indirect arguments");
+        mContext, indirectArguments(groups, evaluationGroups()), "modal indirect arguments");
 }
 
 vulkan::DeviceBuffer ModalStepper::part(const vulkan::DeviceBuffer& whole, int index,
@@ -164,6 +167,7 @@ void ModalStepper::setScheme(Integrator scheme) {
     settings.scheme = scheme;
     mSettings = checked(settings);
     buildArguments();  // a linearized iteration dispatches other kernels than R's evaluation
+    dropHeldRhs();     // what another scheme held is no start for this one
 }
 
 void ModalStepper::setParameters(const DeviceModel& model) {
@@ -182,8 +186,40 @@ void ModalStepper::setState(const Eigen::VectorXd& x) {
 }
 
 void ModalStepper::dropHeldRhs() {
-    const std::uint32_t no = 0;
-    mStatus.upload<std::uint32_t>(std::span(&no, 1), offsetof(shaders::ModalStatus, heldRhs));
+    const std::array<std::uint32_t, 2> no{0, 0};
+    static_assert(offsetof(shaders::ModalStatus, heldRate) ==
+                  offsetof(shaders::ModalStatus, heldRhs) + sizeof(std::uint32_t));
+    mStatus.upload<std::uint32_t>(no, offsetof(shaders::ModalStatus, heldRhs));
+}
+
+VkDeviceSize ModalStepper::heldRateOffset() const {
+    return VkDeviceSize(2 * ANDERSON_DEPTH + 3) * mParts * mStride * sizeof(float);
+}
+
+Eigen::VectorXd ModalStepper::heldRate() const {
+    shaders::ModalStatus raw{};
+    mStatus.download<shaders::ModalStatus>(std::span(&raw, 1));
+    if (raw.heldRate == 0 || mSettings.scheme != Integrator::Linearized) return {};
+    std::vector<float> values(static_cast<std::size_t>(size()));
+    mHistory.download<float>(values, heldRateOffset());
+    return Eigen::Map<const Eigen::VectorXf>(values.data(), size()).template cast<double>();
+}
+
+void ModalStepper::setHeldRate(const Eigen::VectorXd& rate) {
+    if (rate.size() == 0) {
+        dropHeldRhs();
+        return;
+    }
+    if (mSettings.scheme != Integrator::Linearized)
+        throw Error("modal step: only the linearized rule holds a rate between steps");
+    if (rate.size() != size())
+        throw Error("modal step: a held rate of " + std::to_string(rate.size()) +
+                    " entries, the basis " + std::to_string(size()));
+    if (!rate.allFinite()) throw Error("modal step: the held rate is not finite");
+    const std::vector<float> rounded(rate.begin(), rate.end());
+    mHistory.upload<float>(rounded, heldRateOffset());
+    const std::uint32_t yes = 1;
+    mStatus.upload<std::uint32_t>(std::span(&yes, 1), offsetof(shaders::ModalStatus, heldRate));
 }
 
 Eigen::VectorXd ModalStepper::state() const {
@@ -294,7 +330,11 @@ void ModalStepper::recordUpdate(vulkan::CommandSequence& sequence, std::uint32_t
                                             mLorentz ? 1u : 0u,
                                             mSettings.accelerated ? 1u : 0u,
                                             warm ? 1u : 0u,
-                                            frozen ? 1u : 0u};
+                                            frozen ? 1u : 0u,
+                                            mEvaluationDispatches,
+                                            0u,
+                                            0u,
+                                            0u};
     if (indirect)
         // The update is the last dispatch of an iteration; its live entry follows the full copy.
         sequence.dispatchIndirect(
@@ -341,7 +381,9 @@ void ModalStepper::recordStep(vulkan::CommandSequence& sequence, double h, int s
             recordUpdate(sequence, MODAL_OP_TRAPEZOIDAL_END, 0, h, false);
             break;
         case Integrator::Linearized:
-            recordEvaluation(sequence, {});  // R(x), for the predictor x~
+            // R(x) for the predictor x~, switched off by BEGIN while a rate is held.
+            recordEvaluation(sequence,
+                             {&mArguments, 2 * (mIterationDispatches + 1) + mEvaluationDispatches});
             recordUpdate(sequence, MODAL_OP_LINEARIZED_START, 0, h, false);
             if (!mCoefficients.isTensorFree())
                 mCoefficients.recordPairSums(sequence, mKernels, mWeighted);

@@ -15,10 +15,12 @@
 /// slowly near 1; the acceleration cuts those iterations several fold (shaders/modal_update.comp
 /// has how and why); a step that reaches `maxIterations` keeps its state (a diverging
 /// iterate would blow up) and is counted in status(), so the caller can take smaller substeps.
-/// The linearized rule (engine/dynamics/ModalIntegrator.h) evaluates R(x) for its predictor x~,
-/// records the pair sums of M x~ once, and iterates its linear fixed point (the midpoint map with
-/// R(y) replaced by L(x~) y) through the second half of the contraction alone: two passes over
-/// the coefficients a step where the midpoint rule makes one an iteration. Tensor-free
+/// The linearized rule (engine/dynamics/ModalIntegrator.h) takes its predictor x~ from the rate
+/// held from the step before (or, with none held, evaluates R(x): dispatches that BEGIN switches
+/// off through their indirect arguments while a rate is held), records the pair sums of M x~ once,
+/// and iterates its linear fixed point (the midpoint map with R(y) replaced by L(x~) y) through
+/// the second half of the contraction alone: one pass over the coefficients a step where the
+/// midpoint rule makes one an iteration. Tensor-free
 /// coefficients have no pair sums to keep and contract C(M x~, y) in every iteration. Fluids only.
 /// Viscosity (and the magnetic diffusivity) is applied exactly, Strang-split as on the CPU.
 ///
@@ -111,6 +113,12 @@ public:
     /// @throw modeflow::Error without MHD.
     Eigen::VectorXd magneticField() const;
     void setMagneticField(const Eigen::VectorXd& f);
+    /// The linearized rule's held rate (ModalIntegrator::heldRate: empty when none is held, as
+    /// after any host write of the state or parameters, or with another scheme), and its restore
+    /// (empty: drop it). Between submissions.
+    /// @throw modeflow::Error on a wrong size, a non-finite rate, or another scheme.
+    Eigen::VectorXd heldRate() const;
+    void setHeldRate(const Eigen::VectorXd& rate);
     /// The device vectors, for kernels that read v (or F) or write f in the same submission: the
     /// state buffer begins with v (N floats, padded), the force buffer with f.
     const vulkan::DeviceBuffer& stateBuffer() const { return mState; }
@@ -154,9 +162,11 @@ private:
     void uploadModel(const DeviceModel& model);
     /// The indirect arguments of an implicit iteration (its dispatches' group counts, twice).
     void buildArguments();
-    /// The state, or the mass in R, was changed from the host: the next step starts cold (the R
-    /// held is not R near the new state).
+    /// The state, the mass in R or the scheme was changed from the host: the next step starts
+    /// cold (the R or rate held is not one near the new state).
     void dropHeldRhs();
+    /// Where the held rate lies in mHistory.
+    VkDeviceSize heldRateOffset() const;
     /// A part of `whole`, as the contractions bind it.
     vulkan::DeviceBuffer part(const vulkan::DeviceBuffer& whole, int index, const char* name) const;
 

@@ -42,6 +42,8 @@ public:
 
     void setVelocity(const Eigen::VectorXd& v) override { mStepper.setVelocity(v); }
     Eigen::VectorXd velocity() const override { return mStepper.velocity(); }
+    Eigen::VectorXd heldRate() const override { return mStepper.heldRate(); }
+    void setHeldRate(const Eigen::VectorXd& rate) override { mStepper.setHeldRate(rate); }
     Eigen::VectorXd magneticField() const override;
     void setMagneticField(const Eigen::VectorXd& f) override { mStepper.setMagneticField(f); }
     std::vector<double> faceMagneticField() const override;

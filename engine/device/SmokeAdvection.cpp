@@ -80,6 +80,20 @@ vulkan::ComputeKernel advectKernel(const vulkan::VulkanContext& context, const c
                                                            std::move(words)});
 }
 
+/// smoke_face_pairs with its WRAP_X: compiled out for a walled x (an `if` on lavapipe runs its
+/// body whichever lanes take it, here integer divisions lane by lane).
+vulkan::ComputeKernel facePairsKernel(const vulkan::VulkanContext& context,
+                                      std::uint32_t workgroupSize, bool wrapX) {
+    return vulkan::ComputeKernel(context,
+                                 vulkan::ComputeKernelSpec{"smoke_face_pairs",
+                                                           smoke_face_pairs_spv,
+                                                           3,
+                                                           sizeof(shaders::SmokeFacePairsParams),
+                                                           workgroupSize,
+                                                           {wrapX ? 1u : 0u},
+                                                           {0}});
+}
+
 struct StageShader {
     const char* name;
     std::span<const std::uint32_t> spirv;
@@ -99,13 +113,8 @@ const std::array<StageShader, 6> kStageShaders{
 SmokeAdvectionKernels::SmokeAdvectionKernels(const vulkan::VulkanContext& context,
                                              std::uint32_t workgroupSize)
     : mContext(context.requireShaderInt64("the smoke advection")),
-      mFacePairs(context, vulkan::ComputeKernelSpec{"smoke_face_pairs",
-                                                    smoke_face_pairs_spv,
-                                                    3,
-                                                    sizeof(shaders::SmokeFacePairsParams),
-                                                    workgroupSize,
-                                                    {},
-                                                    {0}}),
+      mFacePairs{facePairsKernel(context, workgroupSize, false),
+                 facePairsKernel(context, workgroupSize, true)},
       mWorkgroupSize(workgroupSize) {}
 
 const vulkan::ComputeKernel& SmokeAdvectionKernels::stageKernel(std::uint32_t stage, int dim,
@@ -156,8 +165,8 @@ void SmokeAdvectionKernels::record(vulkan::CommandSequence& sequence, SmokeState
     // Bindings 0-2 of shaders/smoke_face_pairs.comp: the velocity as texels and as floats.
     const std::array<const vulkan::DeviceBuffer*, 3> pairBuffers{&velocity, &velocity,
                                                                  &state.facePairs()};
-    dispatchAll(sequence, mFacePairs, pairBuffers, pairs, &shaders::SmokeFacePairsParams::firstFace,
-                (faces + 3) / 4, 4);
+    dispatchAll(sequence, mFacePairs[pairs.wrapX != 0 ? 1 : 0], pairBuffers, pairs,
+                &shaders::SmokeFacePairsParams::firstFace, (faces + 3) / 4, 4);
 
     shaders::SmokeAdvectParams params = stepParams(state, dt);
     // Bindings 0-7 of shaders/SmokeAdvect.glsl.

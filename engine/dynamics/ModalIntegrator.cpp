@@ -111,9 +111,13 @@ StepReport ModalIntegrator::linearized(Eigen::VectorXd& x, double t, double h,
                                        const ForceFunction* force) {
     const Eigen::VectorXd& mass = mSystem.mass();
     const Eigen::VectorXd f = forceAt(t + 0.5 * h, force);
-    Eigen::VectorXd r;
-    mSystem.rhs(x, r);
-    const Eigen::VectorXd predictor = x + (0.5 * h) * (r + f).cwiseQuotient(mass);
+    Eigen::VectorXd rate = mHeldRate;  // M⁻¹R near the last step's midpoint, held (see the header)
+    if (rate.size() == 0) {
+        mSystem.rhs(x, rate);
+        rate = rate.cwiseQuotient(mass);
+    }
+    const Eigen::VectorXd predictor = x + (0.5 * h) * (rate + f.cwiseQuotient(mass));
+    mHeldRate.resize(0);  // until this step has converged
     // (I − (h/2)M⁻¹L) ȳ = x + (h/2)M⁻¹f, left-preconditioned by M⁻¹ as the Krylov updates are;
     // solved for the correction δ = ȳ − x̃.
     Eigen::VectorXd frozen;
@@ -143,8 +147,22 @@ StepReport ModalIntegrator::linearized(Eigen::VectorXd& x, double t, double h,
         report.converged = g.converged;
         report.residual *= g.residual;
     }
-    x = 2.0 * (predictor + delta) - x;
+    const Eigen::VectorXd midpoint = predictor + delta;
+    // The step's own rate less the force's: M⁻¹L(x̃)ȳ = (2/h)(ȳ − x) − M⁻¹f.
+    if (report.converged && h != 0.0)
+        mHeldRate = (2.0 / h) * (midpoint - x) - f.cwiseQuotient(mass);
+    x = 2.0 * midpoint - x;
     return report;
+}
+
+void ModalIntegrator::setHeldRate(const Eigen::VectorXd& rate) {
+    if (rate.size() != 0 && rate.size() != mSystem.dimension())
+        throw Error("integrator: a held rate of " + std::to_string(rate.size()) +
+                    " entries, the system has " + std::to_string(mSystem.dimension()));
+    if (!rate.allFinite()) throw Error("integrator: the held rate is not finite");
+    if (rate.size() != 0 && mSettings.scheme != Integrator::Linearized)
+        throw Error("integrator: only the linearized rule holds a rate between steps");
+    mHeldRate = rate;
 }
 
 StepReport ModalIntegrator::newton(const Eigen::VectorXd& x, Eigen::VectorXd& w, double h,

@@ -6,16 +6,23 @@
 ///   rk4          classical Runge–Kutta with forces sampled at t, t + h/2, t + h
 ///   midpoint     M(x' − x) = h (R((x + x')/2) + f(t + h/2))                       (seed eq. 6.8)
 ///   trapezoidal  M(x' − x) = h/2 (R(x) + R(x')) + h/2 (f(t) + f(t + h))           (seed eq. 6.9)
-///   linearized   M(x' − x) = h (L(x̃)·(x + x')/2 + f(t + h/2)),  x̃ = x + h/2 M⁻¹(R(x) + f(t + h/2))
+///   linearized   M(x' − x) = h (L(x̃)·(x + x')/2 + f(t + h/2)),  x̃ = x + h/2 (g + M⁻¹f(t + h/2))
 ///
 /// The linearized rule is the midpoint rule with the right-hand side's first factor frozen at an
 /// explicit predictor x̃ of the midpoint (ModalSystem::frozenRhs: R(y) = C(My, y) becomes
-/// C(Mx̃, y)): linear in x', so it costs two passes over the coefficients (R(x), then L(x̃) once)
-/// however many iterations its linear solve takes, where the midpoint rule contracts anew at every
-/// iteration. L(x̃) is antisymmetric like R's Jacobian part, so the energy ½xᵀMx is conserved
-/// exactly as by the midpoint rule; x̃ is within O(h²) of the midpoint, so the rule is second
-/// order. It is not time-reversible (x̃ is explicit). Its linear system, (M − (h/2)L(x̃)) ȳ = Mx +
-/// (h/2)f for the midpoint ȳ = (x + x')/2, is solved by GMRES from ȳ = x̃ to relativeTolerance.
+/// C(Mx̃, y)): linear in x', so it costs one pass over the coefficients (L(x̃) once) however many
+/// iterations its linear solve takes, where the midpoint rule contracts anew at every iteration.
+/// The predictor's rate g is the free rate M⁻¹L(x̃)ȳ of the step before, held between steps
+/// (heldRate(): (2/h)(ȳ − x) − M⁻¹f, no contraction), or M⁻¹R(x) for the first step or after the
+/// rate was dropped (a second pass): either is within O(h) of the rate at x, so x̃ is within
+/// O(h²) of the midpoint and the rule is second order. L(x̃) is antisymmetric like R's Jacobian
+/// part, so the energy ½xᵀMx is conserved exactly as by the midpoint rule whatever x̃ is. It is
+/// not time-reversible (x̃ is explicit). Its linear system, (M − (h/2)L(x̃)) ȳ = Mx + (h/2)f for
+/// the midpoint ȳ = (x + x')/2, is solved by GMRES from ȳ = x̃ to relativeTolerance. The held rate
+/// is the fluid's own (forces and the decay are outside it), so forces that change between steps
+/// and changes of x between steps (obstacles) leave it valid; a new state from elsewhere (a run
+/// restored, an interactive reset) calls for dropHeldRate(), and a resumed run restores it
+/// (setHeldRate) to continue bit for bit.
 ///
 /// The implicit equations are solved by Newton until |residual| ≤ relativeTolerance ·
 /// max(|Mx|, |Mx'|), whichever linear solver takes the Newton updates, so that both conserve the
@@ -86,6 +93,14 @@ public:
     /// One step from time t with a time-dependent force.
     StepReport step(Eigen::VectorXd& x, double t, double h, const ForceFunction& force);
 
+    /// The linearized rule's rate held for the next step's predictor (see above); empty before
+    /// the first step, after an unconverged one, with another scheme, or once dropped.
+    const Eigen::VectorXd& heldRate() const { return mHeldRate; }
+    /// Restores a held rate (a resumed run), or drops it with an empty vector.
+    /// @throw modeflow::Error on a wrong size, a non-finite rate, or a rate for another scheme.
+    void setHeldRate(const Eigen::VectorXd& rate);
+    void dropHeldRate() { mHeldRate.resize(0); }
+
 private:
     /// The whole step: half decay, the scheme with `force` (null: none), half decay.
     StepReport advance(Eigen::VectorXd& x, double t, double h, const ForceFunction* force);
@@ -112,6 +127,7 @@ private:
     IntegratorSettings mSettings;
     bool mDecays = false;
     Eigen::PartialPivLU<Eigen::MatrixXd> mLu;
+    Eigen::VectorXd mHeldRate;  ///< the linearized rule's g, empty when none is held
 };
 
 }  // namespace modeflow

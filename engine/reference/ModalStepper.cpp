@@ -46,6 +46,16 @@ void ModalStepper::setState(const Eigen::VectorXd& x) {
     if (x.size() != mState.size())
         throw Error(sizeMismatch("modal state", x.size(), mState.size()));
     mState = x;
+    mIntegrator->dropHeldRate();
+}
+
+void ModalStepper::setHeldRate(const Eigen::VectorXd& rate) {
+    mIntegrator->setHeldRate(rate);
+}
+
+void ModalStepper::correctVelocity(const Eigen::VectorXd& dv) {
+    if (dv.size() != mModes) throw Error(sizeMismatch("velocity correction", dv.size(), mModes));
+    mState.head(mModes) += dv;
 }
 
 void ModalStepper::setForce(const Eigen::VectorXd& f) {
@@ -74,6 +84,7 @@ void ModalStepper::setViscosity(double viscosity) {
 void ModalStepper::setVelocity(const Eigen::VectorXd& v) {
     if (v.size() != mModes) throw Error(sizeMismatch("velocity", v.size(), mModes));
     mState.head(mModes) = v;
+    mIntegrator->dropHeldRate();
 }
 
 Eigen::VectorXd ModalStepper::magneticField() const {
@@ -85,6 +96,7 @@ void ModalStepper::setMagneticField(const Eigen::VectorXd& f) {
         throw Error("simulation: this run simulates no magnetic field ([simulation].mhd)");
     if (f.size() != mModes) throw Error(sizeMismatch("magnetic field", f.size(), mModes));
     mState.tail(mModes) = f;
+    mIntegrator->dropHeldRate();
 }
 
 }  // namespace modeflow::reference

@@ -45,7 +45,13 @@ public:
 
     /// v (the first N entries of the state), which forces and reconstruction see.
     Eigen::VectorXd velocity() const { return mState.head(mModes); }
+    /// A new v (or state, or F): the integrator's held rate is dropped (ModalIntegrator.h).
     void setVelocity(const Eigen::VectorXd& v);
+    /// v += dv within a run (moving obstacles): the held rate stays.
+    void correctVelocity(const Eigen::VectorXd& dv);
+    /// The linearized rule's held rate (ModalIntegrator::heldRate; empty: none), and its restore.
+    const Eigen::VectorXd& heldRate() const { return mIntegrator->heldRate(); }
+    void setHeldRate(const Eigen::VectorXd& rate);
     /// F; empty without MHD.
     Eigen::VectorXd magneticField() const;
     void setMagneticField(const Eigen::VectorXd& f);

@@ -81,8 +81,8 @@ FrameStats Simulation::advanceSteps(int steps) {
         stats.unconvergedSteps += report.converged ? 0 : 1;
         mFaceVelocity = reconstructFaceField(mBasis, velocity());
         if (!mSettings.obstacles.empty()) {
-            setVelocity(velocity() -
-                        obstacleCorrection(mBasis, mFaceVelocity, mSettings.obstacles, mTime + dt));
+            mStepper.correctVelocity(
+                -obstacleCorrection(mBasis, mFaceVelocity, mSettings.obstacles, mTime + dt));
             mFaceVelocity = reconstructFaceField(mBasis, velocity());
         }
         mAdvection.step(std::span<const double>(mFaceVelocity), dt, mSettings.advection,

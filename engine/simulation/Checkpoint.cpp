@@ -20,7 +20,8 @@ namespace {
 
 constexpr char kMagic[16] = {'M', 'O', 'D', 'E', 'F', 'L', 'O', 'W',
                              '-', 'R', 'E', 'S', 'U', 'M', 'E', '\0'};
-constexpr std::uint32_t kVersion = 3;  ///< 2: the magnetic field after the velocity; 3: XXH3
+/// 2: the magnetic field after the velocity; 3: XXH3; 4: the held rate after the field.
+constexpr std::uint32_t kVersion = 4;
 /// The largest checkpoint read (64 GiB): the modal state and two fields of the largest smoke grid a
 /// scene may ask for fit, and a damaged file cannot make the reader ask for terabytes.
 constexpr std::uintmax_t kMaxCheckpointBytes = std::uintmax_t{1} << 36;
@@ -77,6 +78,7 @@ void writeCheckpoint(const std::filesystem::path& path, const Checkpoint& checkp
     w.pod(checkpoint.time);
     w.array(checkpoint.velocity.data(), std::size_t(checkpoint.velocity.size()));
     w.array(checkpoint.magnetic.data(), std::size_t(checkpoint.magnetic.size()));
+    w.array(checkpoint.heldRate.data(), std::size_t(checkpoint.heldRate.size()));
     w.vector(checkpoint.smoke.density);
     w.vector(checkpoint.smoke.temperature);
     ByteWriter checksum;
@@ -104,6 +106,9 @@ Checkpoint readCheckpoint(const std::filesystem::path& path) {
         fail(path, "its time is not a non-negative number");
     checkpoint.velocity = modalVector(reader);
     checkpoint.magnetic = modalVector(reader);
+    checkpoint.heldRate = modalVector(reader);
+    if (checkpoint.heldRate.size() != 0 && checkpoint.heldRate.size() != checkpoint.velocity.size())
+        fail(path, "its held rate and velocity sizes differ");
     checkpoint.smoke.density = reader.vector<double>();
     checkpoint.smoke.temperature = reader.vector<double>();
     if (checkpoint.smoke.density.size() != checkpoint.smoke.temperature.size())

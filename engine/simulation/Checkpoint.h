@@ -5,10 +5,10 @@
 /// as the simulator holds them (device floats widen to doubles and narrow back without loss), so a
 /// resumed run continues bit for bit.
 ///
-/// Layout (little-endian): magic "MODEFLOW-RESUME\0" | u32 version (3) | u32 frame | u64 run
+/// Layout (little-endian): magic "MODEFLOW-RESUME\0" | u32 version (4) | u32 frame | u64 run
 /// hash | f64 time | u64 N | N × f64 velocity | u64 M | M × f64 magnetic field (M = 0 without
-/// MHD) | u64 cells | cells × f64 density | cells × f64 temperature | u64 XXH3 checksum
-/// (Checksum.h) of everything before it.
+/// MHD) | u64 R | R × f64 held rate (R = 0 or N: Simulator::heldRate) | u64 cells | cells × f64
+/// density | cells × f64 temperature | u64 XXH3 checksum (Checksum.h) of everything before it.
 
 #include <cstdint>
 #include <filesystem>
@@ -25,6 +25,7 @@ struct Checkpoint {
     std::uint64_t runHash = 0;  ///< what shaped the run (scene, device kind, options)
     Eigen::VectorXd velocity;
     Eigen::VectorXd magnetic;  ///< F of an MHD run; empty otherwise
+    Eigen::VectorXd heldRate;  ///< the integrator's held rate (Simulator::heldRate); may be empty
     SmokeFields smoke;
 };
 

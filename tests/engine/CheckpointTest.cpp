@@ -33,6 +33,7 @@ Checkpoint sample(std::size_t cells = 6) {
     c.runHash = 0x0123456789abcdefull;
     c.velocity = Eigen::VectorXd::LinSpaced(5, -1.0, 1.0);
     c.magnetic = Eigen::VectorXd::LinSpaced(5, 2.0, 3.0);
+    c.heldRate = Eigen::VectorXd::LinSpaced(5, -4.0, 0.5);
     c.smoke.density.assign(cells, 0.25);
     c.smoke.temperature.assign(cells, 1.5);
     return c;
@@ -78,6 +79,7 @@ TEST(CheckpointTest, RoundTripsBitForBit) {
     EXPECT_EQ(read.runHash, sample().runHash);
     EXPECT_EQ(read.velocity, sample().velocity);
     EXPECT_EQ(read.magnetic, sample().magnetic);
+    EXPECT_EQ(read.heldRate, sample().heldRate);
     EXPECT_EQ(read.smoke.density, sample().smoke.density);
     EXPECT_EQ(read.smoke.temperature, sample().smoke.temperature);
 }
@@ -125,6 +127,15 @@ TEST(CheckpointTest, WellFormedNonsenseIsRefused) {
         std::string::npos);
     EXPECT_NE(damaged([](std::string& b) { b.resize(b.size() - 8); }).find("truncated"),
               std::string::npos);
+    // A held rate is none or one value per mode.
+    Checkpoint odd = sample();
+    odd.heldRate = Eigen::VectorXd::Ones(4);
+    writeCheckpoint(file, odd);
+    EXPECT_NE(readError(file).find("its held rate and velocity sizes differ"), std::string::npos)
+        << readError(file);
+    odd.heldRate.resize(0);
+    writeCheckpoint(file, odd);
+    EXPECT_EQ(readCheckpoint(file).heldRate.size(), 0);
 }
 
 TEST(CheckpointTest, AFailedWriteSaysWhyAndLeavesNoPartialFile) {

@@ -211,7 +211,8 @@ TEST_P(ModalStepKernelTest, MidpointConservesEnergyOver1000Steps) {
 
 TEST_P(ModalStepKernelTest, LinearizedConservesEnergyOver1000Steps) {
     // Its iterations solve a linear system whose operator is antisymmetric: the energy is kept
-    // to the iteration's tolerance, as by the midpoint rule, from pair sums made twice a step.
+    // to the iteration's tolerance, as by the midpoint rule, from pair sums made once a step
+    // (twice for the first, whose predictor evaluates R).
     const double h = stepFor(mC, mV0, 0.3);
     {
         ModalStepper stepper(context(), mC, {}, {Integrator::Linearized});
@@ -247,6 +248,49 @@ TEST_P(ModalStepKernelTest, SwitchingToAndFromTheLinearizedRuleStepsLikeAFreshSt
         runDevice(context(), switched, h, 3);
         EXPECT_TRUE(switched.status().converged);
         EXPECT_GT(switched.status().iterations, 0);
+    }
+    expectNoValidationMessages();
+}
+
+TEST_P(ModalStepKernelTest, LinearizedStepsHoldTheCpusRateAndUseIt) {
+    // After the first step the predictor's rate is the one held from the step before, as on the
+    // CPU: the device holds the CPU's rate, and a step from a restored rate is the CPU's step.
+    const double h = stepFor(mC, mV0, 0.3);
+    const Eigen::VectorXd force = roundedToFloat(0.3 * testing::randomVector(kModes, 19));
+    const FluidSystem system(mC);
+    ModalIntegrator cpu(system, {Integrator::Linearized});
+    Eigen::VectorXd expected = mV0;
+    {
+        ModalStepper stepper(context(), mC, {}, {Integrator::Linearized});
+        stepper.setState(mV0);
+        stepper.setForce(force);
+        EXPECT_EQ(stepper.heldRate().size(), 0);
+        for (int s = 0; s < 4; ++s) cpu.step(expected, h, force);
+        runDevice(context(), stepper, h, 4);
+        EXPECT_LE(relativeDifference(stepper.state(), expected), 1e-5);
+        EXPECT_LE(relativeDifference(stepper.heldRate(), cpu.heldRate()), 1e-4);
+
+        // From the CPU's state and rate the device takes the CPU's step; from another rate, not.
+        const Eigen::VectorXd x = roundedToFloat(expected), g = roundedToFloat(cpu.heldRate());
+        cpu.setHeldRate(g);
+        Eigen::VectorXd next = x;
+        cpu.step(next, h, force);
+        stepper.setState(x);
+        EXPECT_EQ(stepper.heldRate().size(), 0) << "a state from the host drops the rate";
+        stepper.setHeldRate(g);
+        EXPECT_EQ(stepper.heldRate(), g.cast<float>().cast<double>());
+        runDevice(context(), stepper, h, 1);
+        EXPECT_LE(relativeDifference(stepper.state(), next), 1e-5);
+        stepper.setState(x);
+        stepper.setHeldRate(Eigen::VectorXd::Zero(kModes));
+        runDevice(context(), stepper, h, 1);
+        EXPECT_GT(relativeDifference(stepper.state(), next), 1e-3) << "the rate held is used";
+
+        EXPECT_THROW(stepper.setHeldRate(Eigen::VectorXd::Zero(kModes + 1)), Error);
+        EXPECT_THROW(stepper.setHeldRate(Eigen::VectorXd::Constant(kModes, NAN)), Error);
+        stepper.setScheme(Integrator::Midpoint);
+        EXPECT_EQ(stepper.heldRate().size(), 0);
+        EXPECT_THROW(stepper.setHeldRate(g), Error);
     }
     expectNoValidationMessages();
 }

@@ -20,7 +20,7 @@ constexpr std::string_view kMagic("MODEFLOW-RESUME\0", 16);
 std::string checkpointAround(std::string_view body) {
     ByteWriter file;
     file.values(kMagic.data(), kMagic.size());
-    file.pod(std::uint32_t{3});  // the version (Checkpoint.cpp)
+    file.pod(std::uint32_t{4});  // the version (Checkpoint.cpp)
     file.values(body.data(), body.size());
     file.pod(checksum64(file.bytes()));
     return file.bytes();
@@ -47,6 +47,7 @@ bool checkpointReader(std::string_view bytes) {
                 std::memcmp(&again.time, &checkpoint.time, sizeof again.time) == 0 &&
                 sameBytes(again.velocity, checkpoint.velocity) &&
                 sameBytes(again.magnetic, checkpoint.magnetic) &&
+                sameBytes(again.heldRate, checkpoint.heldRate) &&
                 sameBytes(again.smoke.density, checkpoint.smoke.density) &&
                 sameBytes(again.smoke.temperature, checkpoint.smoke.temperature),
             "an accepted checkpoint does not survive a write and a read");

@@ -47,6 +47,12 @@ mhd = true
 [initial]
 velocity = "random"
 magnetic_energy = 0.5'
+# The linearized rule: its checkpoints hold the rate carried between steps.
+scene disk_linearized "$disk" 3 "$smoke
+[simulation]
+integrator = \"linearized\"
+[initial]
+velocity = \"random\""
 scene box "$box" 4 ""
 scene wholebox "$wholebox" 6 ""
 # A fluid on an icosahedron's surface: a surface basis (mesh, edges, advection, vertex velocities).
@@ -71,7 +77,7 @@ for name in disk box wholebox surface disk_tensor_free; do
     size=$(stat -c %s "$cache")
     tail -c +41 "$cache" | head -c $((size - 48)) >"$caches/$name.payload"
 done
-for name in disk disk_mhd; do
+for name in disk disk_mhd disk_linearized; do
     "$modeflow" run "$work/$name.toml" --device cpu --cache-dir "$work/cache" --out "$work/$name" >/dev/null 2>&1
     cp "$work/$name/$name.resume" "$checkpoints/$name.resume"
     # The body after magic and version, without the checksum (wrapped again by the target).

@@ -17,6 +17,7 @@
 #include "engine/core/MacGrid.h"
 #include "engine/output/RunFolder.h"
 #include "engine/output/VdbFrame.h"
+#include "engine/simulation/Checkpoint.h"
 #include "tests/support/CliFixture.h"
 
 namespace modeflow {
@@ -149,6 +150,8 @@ TEST_F(RunCommand, ResumeGivesTheFramesOfAnUninterruptedRun) {
         ASSERT_EQ(simulate(s, whole).status, 0);
         // A run stopped after frame 2 (the checkpoint is written after every frame), then resumed.
         ASSERT_EQ(simulate(s, parts, "--frames 2").status, 0);
+        // The linearized rule's checkpoint carries the rate its next predictor starts from.
+        EXPECT_EQ(readCheckpoint(parts / "hot.resume").heldRate.size(), integrator.empty() ? 0 : 8);
         const RunResult resumed = simulate(s, parts, "--resume");
         ASSERT_EQ(resumed.status, 0) << resumed.err;
         EXPECT_NE(resumed.err.find("resuming after frame 2"), std::string::npos) << resumed.err;

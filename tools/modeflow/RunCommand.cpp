@@ -133,6 +133,7 @@ Command addRun(CLI::App& app) {
         if (resumeFrom) {
             simulator->restore(resumeFrom->time, resumeFrom->velocity, resumeFrom->smoke);
             if (settings.mhd) simulator->setMagneticField(resumeFrom->magnetic);
+            simulator->setHeldRate(resumeFrom->heldRate);
             first = resumeFrom->frame;
             std::cerr << "resuming after frame " << first << " (t = " << resumeFrom->time << ")\n";
         } else if (const int removed = folder.removeEarlierRun(); removed > 0) {
@@ -191,7 +192,7 @@ Command addRun(CLI::App& app) {
             bar.timed("checkpoint", [&] {
                 writeCheckpoint(folder.checkpointPath(),
                                 {frame, simulator->time(), runHash, simulator->velocity(),
-                                 simulator->magneticField(), smoke});
+                                 simulator->magneticField(), simulator->heldRate(), smoke});
             });
             std::string detail;
             if (stats.unconvergedSteps)

@@ -30,6 +30,7 @@ int runSurface(const SurfaceRunOptions& o) {
             o.resumeFrom->time, o.resumeFrom->velocity,
             Eigen::Map<const Eigen::VectorXd>(o.resumeFrom->smoke.density.data(),
                                               Eigen::Index(o.resumeFrom->smoke.density.size())));
+        simulation.setHeldRate(o.resumeFrom->heldRate);
         first = o.resumeFrom->frame;
         std::cerr << "resuming after frame " << first << " (t = " << o.resumeFrom->time << ")\n";
     } else if (const int removed = o.folder.removeEarlierRun(); removed > 0) {
@@ -74,7 +75,8 @@ int runSurface(const SurfaceRunOptions& o) {
             std::filesystem::path png = o.folder.path() / plyFrameFileName(o.scene.name, frame);
             preview::writePng(png.replace_extension(".png"), pictures.back());
         }
-        Checkpoint checkpoint{frame, simulation.time(), o.runHash, simulation.velocity(), {}, {}};
+        Checkpoint checkpoint{frame, simulation.time(),     o.runHash, simulation.velocity(),
+                              {},    simulation.heldRate(), {}};
         const Eigen::VectorXd& state = simulation.dye().state();
         checkpoint.smoke.density.assign(state.data(), state.data() + state.size());
         checkpoint.smoke.temperature.assign(checkpoint.smoke.density.size(), 0.0);  // dye has none
