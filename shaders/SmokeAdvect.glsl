@@ -29,7 +29,8 @@
      gathered at random. The inputs read a 64-bit word at a time (pairs and fields) go through
      RG32UI views (DeviceBuffer::wordView), whose fetch gathers the two components in use, not
      the four of an RGBA32UI texel and a select of half: MacCormack at 64^3 20.3-21.1 ms against
-     22.2-22.5 (bench_smoke_advection, two runs each);
+     22.2-22.5 (bench_smoke_advection, two runs each); the stencil mask's 32-bit words likewise
+     through an R32UI view (floatView);
    - results still stored as 64-bit words, one scalar access per lane, where a uvec2 takes two;
    - stage and dimension fixed at compile time, one pipeline each: with a run-time stage switch
      the correction cost 80% of the forward stage, split 30%;
@@ -63,7 +64,7 @@ layout(local_size_x = 128, local_size_x_id = 0) in;
 // Read-only inputs as uniform texel buffers of RGBA32UI texels (why: the header).
 layout(set = 0, binding = 0) uniform usamplerBuffer facePairs;   // one pair a word texel
 layout(set = 0, binding = 1) uniform usamplerBuffer fluidCells;  // one entry a texel
-layout(set = 0, binding = 2) uniform usamplerBuffer stencilMask; // 16 cells a texel
+layout(set = 0, binding = 2) uniform usamplerBuffer stencilMask; // 4 cells a (R32UI) texel
 layout(set = 0, binding = 3) uniform usamplerBuffer fieldsIn;    // one cell a word texel
 #if SMOKE_STAGE == SMOKE_STAGE_MACCORMACK_CORRECT
 layout(set = 0, binding = 4) uniform usamplerBuffer hat;     // the forward stage's, one cell a word texel
@@ -86,7 +87,7 @@ vec2 macFacePair(uint face) { return wordAt(facePairs, face); }
 #include "MacSampling.glsl"
 
 uint stencilBits(uint cell) {
-    const uint word = texelFetch(stencilMask, int(cell >> 4))[(cell >> 2) & 3u];
+    const uint word = texelFetch(stencilMask, int(cell >> 2)).x;
     return (word >> ((cell & 3u) * 8u)) & 0xffu;
 }
 

@@ -24,10 +24,10 @@ using uint = std::uint32_t;
  */
 #define SMOKE_CELL_AXIS_LIMIT 65535u
 
-/* The stencil mask: one byte per cell, 4 to a 32-bit word, 16 to a texel; bit cx + 2 cy + 4 cz of
-   the byte of cell (i, j, k) is set when cell (i + cx, j + cy, k + cz) exists and is fluid (taken
-   across the seam along a periodic axis), so one load gives the fluid flags of a whole trilinear
-   stencil whose low corner is (i, j, k). */
+/* The stencil mask: one byte per cell, 4 to a 32-bit word (a texel of its R32UI view); bit
+   cx + 2 cy + 4 cz of the byte of cell (i, j, k) is set when cell (i + cx, j + cy, k + cz) exists
+   and is fluid (taken across the seam along a periodic axis), so one load gives the fluid flags
+   of a whole trilinear stencil whose low corner is (i, j, k). */
 
 /* MacCormack's record of a fluid cell (list order), written by the forward stage for the
    correction: 64-bit words (lo.density, lo.temperature), (hi.density, hi.temperature) over the

@@ -26,8 +26,9 @@ layout(constant_id = 4) const uint USE_MASK = 0u;  // 1: average over fluid smok
 layout(std430, set = 0, binding = 0) readonly buffer Faces { uint faces[]; };
 // Per up DOF: the DOF, and its face's lower-corner position x, y, z.
 layout(set = 0, binding = 1) uniform usamplerBuffer upDofs;
-// The smoke temperature, four cells a texel: a texel fetch is one gather for all lanes where a
-// storage load is a scalar access per lane on lavapipe (TexelAccess.glsl).
+// The smoke temperature, one cell a texel (R32UI): a texel fetch is one gather for all lanes where
+// a storage load is a scalar access per lane on lavapipe (TexelAccess.glsl), and one component
+// gathers a quarter of what an RGBA32UI texel and a select of its component do.
 layout(set = 0, binding = 2) uniform usamplerBuffer temperatureTexels;
 layout(std430, set = 0, binding = 3) readonly buffer Mask { uint maskWords[]; };  // 4 bytes a word
 layout(std430, set = 0, binding = 4) readonly buffer Splats { ForceSplatRecord splats[]; };
@@ -72,7 +73,7 @@ float dualCellTemperature(uvec3 pos) {
                 }
                 const uint cell = uint((c.z * smokeCells.y + c.y) * smokeCells.x + c.x);
                 if (USE_MASK != 0u && !isFluid(cell)) w = 0.0;
-                sum += w * uintBitsToFloat(texelFetch(temperatureTexels, int(cell >> 2))[cell & 3u]);
+                sum += w * uintBitsToFloat(texelFetch(temperatureTexels, int(cell)).x);
                 weight += w;
             }
     return weight > 0.0 ? sum / weight : 0.0;

@@ -23,11 +23,12 @@ layout(local_size_x = 64, local_size_x_id = 0) in;
 layout(set = 0, binding = 0) uniform usamplerBuffer rows;
 // Two (column, value bits) entries a texel.
 layout(set = 0, binding = 1) uniform usamplerBuffer entries;
+// One value a texel (R32UI): a gathered value is one component, not a texel of four and a select.
 layout(set = 0, binding = 2) uniform usamplerBuffer a;
 layout(std430, set = 0, binding = 3) buffer Sums { float sums[]; };
 layout(push_constant) uniform Push { SparsePairSumsParams params; };
 
-float aAt(uint i) { return floatTexel(a, i >> 2)[i & 3u]; }
+float aAt(uint i) { return uintBitsToFloat(texelFetch(a, int(i)).x); }
 
 void main() {
     const uint stride = gl_NumWorkGroups.x * gl_WorkGroupSize.x;

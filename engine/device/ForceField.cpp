@@ -69,7 +69,9 @@ vulkan::ComputeKernel ForceFieldKernel::makeKernel(const vulkan::VulkanContext& 
                                   sizeof(shaders::ForceFieldParams),
                                   workgroupSize,
                                   {stage, std::uint32_t(mGrid.dim), std::uint32_t(mScale), useMask},
-                                  {1, 2}});
+                                  {1},
+                                  {},
+                                  {2}});
 }
 
 void ForceFieldKernel::setSplats(std::span<const ForceSplat> splats) {

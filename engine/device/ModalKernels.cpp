@@ -43,7 +43,9 @@ ModalKernels::ModalKernels(const vulkan::VulkanContext& context)
                                sizeof(shaders::SparsePairSumsParams),
                                64,
                                {},
-                               {0, 1, 2}}),
+                               {0, 1},
+                               {},
+                               {2}}),
       combine(
           context,
           {"modal_combine", modal_combine_spv, 3, sizeof(shaders::CombineParams), 64, {}, {0, 1}}),

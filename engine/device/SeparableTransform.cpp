@@ -64,7 +64,9 @@ SeparableTransformKernels::SeparableTransformKernels(const vulkan::VulkanContext
                             sizeof(shaders::SeparablePassParams),
                             kWorkgroup,
                             {},
-                            {0}}),
+                            {0},
+                            {},
+                            {1}}),
       mGatherKernel(context, {"separable_gather", separable_gather_spv, 4,
                               sizeof(shaders::SeparableGatherParams), kWorkgroup}) {
     const SeparableTransform host(cache);  // the checks, slots and tables

@@ -64,7 +64,7 @@ shaders::SmokeFacePairsParams pairParams(const MacGrid& basis) {
 vulkan::ComputeKernel advectKernel(const vulkan::VulkanContext& context, const char* name,
                                    std::span<const std::uint32_t> spirv, std::uint32_t stage,
                                    std::uint32_t workgroupSize, bool unitScale) {
-    std::vector<std::uint32_t> texels{1, 2}, words{0, 3};
+    std::vector<std::uint32_t> texels{1}, words{0, 3}, floats{2};
     if (stage == SMOKE_STAGE_MACCORMACK_CORRECT) {
         texels.push_back(5);
         words.push_back(4);
@@ -77,7 +77,8 @@ vulkan::ComputeKernel advectKernel(const vulkan::VulkanContext& context, const c
                                                            workgroupSize,
                                                            {unitScale ? 1u : 0u},
                                                            std::move(texels),
-                                                           std::move(words)});
+                                                           std::move(words),
+                                                           std::move(floats)});
 }
 
 /// smoke_face_pairs with its WRAP_X: compiled out for a walled x (an `if` on lavapipe runs its

@@ -1,6 +1,7 @@
 #include "engine/vulkan/ComputeKernel.h"
 
 #include <algorithm>
+#include <array>
 #include <vector>
 
 #include "engine/core/Error.h"
@@ -25,17 +26,19 @@ ComputeKernel::ComputeKernel(const VulkanContext& context, const ComputeKernelSp
                     " bytes of push constants (must be a multiple of 4 and at most " +
                     std::to_string(limits.maxPushConstantsSize) + ")");
 
-    for (const auto* list : {&spec.texelBindings, &spec.wordBindings})
+    const std::array<std::pair<const std::vector<std::uint32_t>*, const char*>, 3> lists{
+        {{&spec.texelBindings, "texel"},
+         {&spec.wordBindings, "word"},
+         {&spec.floatBindings, "float"}}};
+    for (const auto& [list, kind] : lists)
         for (const std::uint32_t b : *list)
             if (b >= spec.bufferCount)
-                throw Error("kernel " + spec.name + ": " +
-                            (list == &spec.wordBindings ? "word" : "texel") + " binding " +
-                            std::to_string(b) + " is not among its " +
-                            std::to_string(spec.bufferCount) + " bindings");
+                throw Error("kernel " + spec.name + ": " + kind + " binding " + std::to_string(b) +
+                            " is not among its " + std::to_string(spec.bufferCount) + " bindings");
     std::vector<VkDescriptorSetLayoutBinding> bindings(spec.bufferCount);
     for (std::uint32_t b = 0; b < spec.bufferCount; ++b) {
         bindings[b].binding = b;
-        bindings[b].descriptorType = isTexelBinding(b) ? VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER
+        bindings[b].descriptorType = texelBytes(b) > 0 ? VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER
                                                        : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
         bindings[b].descriptorCount = 1;
         bindings[b].stageFlags = VK_SHADER_STAGE_COMPUTE_BIT;
@@ -94,15 +97,14 @@ ComputeKernel::ComputeKernel(const VulkanContext& context, const ComputeKernelSp
     mPipeline = DeviceHandle<VkPipeline>(device, pipeline, vkDestroyPipeline);
 }
 
-bool ComputeKernel::isTexelBinding(std::uint32_t binding) const {
-    return isWordBinding(binding) ||
-           std::find(mSpec.texelBindings.begin(), mSpec.texelBindings.end(), binding) !=
-               mSpec.texelBindings.end();
-}
-
-bool ComputeKernel::isWordBinding(std::uint32_t binding) const {
-    return std::find(mSpec.wordBindings.begin(), mSpec.wordBindings.end(), binding) !=
-           mSpec.wordBindings.end();
+VkDeviceSize ComputeKernel::texelBytes(std::uint32_t binding) const {
+    const auto has = [binding](const std::vector<std::uint32_t>& list) {
+        return std::find(list.begin(), list.end(), binding) != list.end();
+    };
+    if (has(mSpec.texelBindings)) return DeviceBuffer::kTexelBytes;
+    if (has(mSpec.wordBindings)) return DeviceBuffer::kWordBytes;
+    if (has(mSpec.floatBindings)) return DeviceBuffer::kFloatBytes;
+    return 0;
 }
 
 void ComputeKernel::bind(VkCommandBuffer commandBuffer,
@@ -123,14 +125,15 @@ void ComputeKernel::bind(VkCommandBuffer commandBuffer,
         writes[b].sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
         writes[b].dstBinding = b;
         writes[b].descriptorCount = 1;
-        if (isTexelBinding(b)) {
-            const bool words = isWordBinding(b);
-            views[b] = words ? buffers[b]->wordView() : buffers[b]->texelView();
+        if (const VkDeviceSize bytes = texelBytes(b); bytes > 0) {
+            views[b] = bytes == DeviceBuffer::kTexelBytes  ? buffers[b]->texelView()
+                       : bytes == DeviceBuffer::kWordBytes ? buffers[b]->wordView()
+                                                           : buffers[b]->floatView();
             if (views[b] == VK_NULL_HANDLE)
                 throw Error("kernel " + mSpec.name + ": binding " + std::to_string(b) +
                             " reads buffer \"" + buffers[b]->name() + "\" (" +
                             std::to_string(buffers[b]->bytes()) + " bytes) as " +
-                            (words ? "8" : "16") +
+                            std::to_string(bytes) +
                             "-byte texels, but it is smaller than one texel or larger than the "
                             "texel buffer limit");
             writes[b].descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;

@@ -38,6 +38,9 @@ struct ComputeKernelSpec {
     /// The bindings a shader reads as `usamplerBuffer` of 64-bit words (DeviceBuffer::wordView,
     /// RG32UI): where the reads are single words, a fetch gathers two components, not four.
     std::vector<std::uint32_t> wordBindings = {};
+    /// The bindings read as `usamplerBuffer` of 32-bit values (DeviceBuffer::floatView, R32UI):
+    /// where values are read one at a time.
+    std::vector<std::uint32_t> floatBindings = {};
 };
 
 class ComputeKernel {
@@ -74,9 +77,8 @@ public:
     std::uint32_t workgroupSize() const { return mSpec.workgroupSize; }
 
 private:
-    /// A binding of texelBindings or wordBindings (a uniform texel buffer).
-    bool isTexelBinding(std::uint32_t binding) const;
-    bool isWordBinding(std::uint32_t binding) const;
+    /// The texel view's bytes at `binding` (16, 8 or 4), 0 for a storage buffer.
+    VkDeviceSize texelBytes(std::uint32_t binding) const;
     /// Binds the pipeline and buffers and pushes the constants, after checking their counts.
     void bind(VkCommandBuffer commandBuffer, std::span<const DeviceBuffer* const> buffers,
               std::span<const std::byte> pushConstants) const;

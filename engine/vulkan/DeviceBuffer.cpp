@@ -70,7 +70,7 @@ VkBuffer DeviceBuffer::createBuffer(VkDeviceSize bytes) {
     VkBufferCreateInfo info{};
     info.sType = VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO;
     info.size = bytes;
-    const bool texels = bytes >= kWordBytes && bytes <= mContext->storageBufferLimit();
+    const bool texels = bytes >= kFloatBytes && bytes <= mContext->storageBufferLimit();
     info.usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT |
                  VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT |
                  (texels ? VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT : 0);
@@ -98,10 +98,11 @@ DeviceHandle<VkBufferView> DeviceBuffer::createView(VkFormat format, VkDeviceSiz
 }
 
 void DeviceBuffer::createTexelViews(VkDeviceSize bytes) {
-    // RGBA32UI and RG32UI uniform texel buffers are mandatory in Vulkan; shaders reinterpret the
-    // bits.
+    // RGBA32UI, RG32UI and R32UI uniform texel buffers are mandatory in Vulkan; shaders
+    // reinterpret the bits.
     mTexelView = createView(VK_FORMAT_R32G32B32A32_UINT, kTexelBytes, bytes);
     mWordView = createView(VK_FORMAT_R32G32_UINT, kWordBytes, bytes);
+    mFloatView = createView(VK_FORMAT_R32_UINT, kFloatBytes, bytes);
 }
 
 void DeviceBuffer::write(const void* source, VkDeviceSize offset, VkDeviceSize bytes) {

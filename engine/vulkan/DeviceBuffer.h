@@ -10,9 +10,10 @@
 /// texel view (RGBA32UI) over its whole texels, so kernels may read it as a uniform texel buffer
 /// (`usamplerBuffer`, ComputeKernelSpec::texelBindings): lavapipe fetches texels with vector
 /// gathers, about 3× the bandwidth of its storage buffer loads (shaders/TexelAccess.glsl). Bytes
-/// past the last whole texel read as zero there. A second view (RG32UI, wordView) reads it a
-/// 64-bit word at a time, for kernels whose reads are single words
-/// (ComputeKernelSpec::wordBindings).
+/// past the last whole texel read as zero there. Two more views read it a 64-bit word (RG32UI,
+/// wordView) or a 32-bit value (R32UI, floatView) at a time, for kernels whose reads are single
+/// words or values (ComputeKernelSpec::wordBindings, floatBindings): a fetch then gathers the
+/// components in use only.
 
 #include <cstddef>
 #include <span>
@@ -65,8 +66,9 @@ public:
 
     /// Bytes per texel of texelView().
     static constexpr VkDeviceSize kTexelBytes = 16;
-    /// Bytes per texel of wordView().
+    /// Bytes per texel of wordView() and floatView().
     static constexpr VkDeviceSize kWordBytes = 8;
+    static constexpr VkDeviceSize kFloatBytes = 4;
 
     VkBuffer handle() const { return mBuffer.get(); }
     VkDeviceSize bytes() const { return mBytes; }
@@ -77,6 +79,8 @@ public:
     /// The RG32UI view over the buffer's whole 8-byte words (one 64-bit word a texel), or
     /// VK_NULL_HANDLE as texelView().
     VkBufferView wordView() const { return mWordView.get(); }
+    /// The R32UI view over its 32-bit values (one a texel), or VK_NULL_HANDLE as texelView().
+    VkBufferView floatView() const { return mFloatView.get(); }
     /// True when the host reads and writes the memory directly (no staging copy).
     bool isMapped() const { return mMapped != nullptr; }
 
@@ -113,7 +117,7 @@ private:
     DeviceHandle<VkDeviceMemory> mMemory;  ///< empty in a view: the whole buffer's memory
     VkDeviceMemory mMemoryHandle = VK_NULL_HANDLE;
     DeviceHandle<VkBuffer> mBuffer;
-    DeviceHandle<VkBufferView> mTexelView, mWordView;  // destroyed before the buffer
+    DeviceHandle<VkBufferView> mTexelView, mWordView, mFloatView;  // destroyed before the buffer
     void* mMapped = nullptr;
 };
 

@@ -190,6 +190,8 @@ TEST_P(VulkanContextTest, BuffersOfWholeTexelsCanBeReadAsTexels) {
     // And as 8-byte words (RG32UI), from one word up.
     EXPECT_NE(DeviceBuffer(context(), 12, "one word and a float").wordView(), VK_NULL_HANDLE);
     EXPECT_EQ(DeviceBuffer(context(), 4, "one float").wordView(), VK_NULL_HANDLE);
+    // And as 32-bit values (R32UI).
+    EXPECT_NE(DeviceBuffer(context(), 4, "one float").floatView(), VK_NULL_HANDLE);
     // A texel binding must be one of the kernel's bindings (checked before any SPIR-V is read).
     try {
         const vulkan::ComputeKernel kernel(context(), {"probe", {}, 2, 0, 64, {}, {2}});
@@ -204,6 +206,12 @@ TEST_P(VulkanContextTest, BuffersOfWholeTexelsCanBeReadAsTexels) {
         FAIL() << "a kernel with word binding 3 of 2 bindings was made";
     } catch (const Error& e) {
         EXPECT_NE(std::string(e.what()).find("word binding 3"), std::string::npos) << e.what();
+    }
+    try {
+        const vulkan::ComputeKernel kernel(context(), {"probe", {}, 2, 0, 64, {}, {}, {}, {2}});
+        FAIL() << "a kernel with float binding 2 of 2 bindings was made";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("float binding 2"), std::string::npos) << e.what();
     }
     expectNoValidationMessages();
 }
