@@ -128,8 +128,10 @@ StepReport ModalIntegrator::linearized(Eigen::VectorXd& x, double t, double h,
     Eigen::VectorXd start;
     product(predictor, start);
     const Eigen::VectorXd residual = x + (0.5 * h) * f.cwiseQuotient(mass) - start;
-    // Converged when the preconditioned residual is within relativeTolerance of |x| (of its own
-    // start where x = 0: a force alone).
+    // Converged when the preconditioned residual is within a tenth of relativeTolerance of |x| (of
+    // its own start where x = 0: a force alone): the residual is what the step adds to or takes
+    // from the energy, and at relativeTolerance itself the drift over 40 time units of the
+    // validate study's disk flow reached 9.3e-13 (2.5e-13 at a tenth, two more GMRES products).
     const double norm = residual.norm();
     if (!std::isfinite(norm))
         throw Error("integrator: the linearized step is no longer finite; reduce dt");
@@ -141,7 +143,7 @@ StepReport ModalIntegrator::linearized(Eigen::VectorXd& x, double t, double h,
     Eigen::VectorXd delta = Eigen::VectorXd::Zero(x.size());
     if (report.residual > mSettings.relativeTolerance) {
         const GmresResult g =
-            gmres(product, residual, delta, mSettings.relativeTolerance * scale / norm,
+            gmres(product, residual, delta, 0.1 * mSettings.relativeTolerance * scale / norm,
                   mSettings.krylovRestart, 20 * mSettings.krylovRestart);
         report.jacobianProducts = g.iterations;
         report.converged = g.converged;

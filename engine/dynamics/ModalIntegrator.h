@@ -18,10 +18,10 @@
 /// O(h²) of the midpoint and the rule is second order. L(x̃) is antisymmetric like R's Jacobian
 /// part, so the energy ½xᵀMx is conserved exactly as by the midpoint rule whatever x̃ is. It is
 /// not time-reversible (x̃ is explicit). Its linear system, (M − (h/2)L(x̃)) ȳ = Mx + (h/2)f for
-/// the midpoint ȳ = (x + x')/2, is solved by GMRES from ȳ = x̃ to relativeTolerance. The held rate
-/// is the fluid's own (forces and the decay are outside it), so forces that change between steps
-/// and changes of x between steps (obstacles) leave it valid; a new state from elsewhere (a run
-/// restored, an interactive reset) calls for dropHeldRate(), and a resumed run restores it
+/// the midpoint ȳ = (x + x')/2, is solved by GMRES from ȳ = x̃ to relativeTolerance / 10. The held
+/// rate is the fluid's own (forces and the decay are outside it), so forces that change between
+/// steps and changes of x between steps (obstacles) leave it valid; a new state from elsewhere (a
+/// run restored, an interactive reset) calls for dropHeldRate(), and a resumed run restores it
 /// (setHeldRate) to continue bit for bit.
 ///
 /// The implicit equations are solved by Newton until |residual| ≤ relativeTolerance ·
