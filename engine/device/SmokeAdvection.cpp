@@ -113,10 +113,7 @@ const std::array<StageShader, 6> kStageShaders{
 
 SmokeAdvectionKernels::SmokeAdvectionKernels(const vulkan::VulkanContext& context,
                                              std::uint32_t workgroupSize)
-    : mContext(context.requireShaderInt64("the smoke advection")),
-      mFacePairs{facePairsKernel(context, workgroupSize, false),
-                 facePairsKernel(context, workgroupSize, true)},
-      mWorkgroupSize(workgroupSize) {}
+    : mContext(context.requireShaderInt64("the smoke advection")), mWorkgroupSize(workgroupSize) {}
 
 const vulkan::ComputeKernel& SmokeAdvectionKernels::stageKernel(std::uint32_t stage, int dim,
                                                                 bool unitScale) const {
@@ -166,8 +163,10 @@ void SmokeAdvectionKernels::record(vulkan::CommandSequence& sequence, SmokeState
     // Bindings 0-2 of shaders/smoke_face_pairs.comp: the velocity as texels and as floats.
     const std::array<const vulkan::DeviceBuffer*, 3> pairBuffers{&velocity, &velocity,
                                                                  &state.facePairs()};
-    dispatchAll(sequence, mFacePairs[pairs.wrapX != 0 ? 1 : 0], pairBuffers, pairs,
-                &shaders::SmokeFacePairsParams::firstFace, (faces + 3) / 4, 4);
+    std::optional<vulkan::ComputeKernel>& facePairs = mFacePairs[pairs.wrapX != 0 ? 1 : 0];
+    if (!facePairs) facePairs.emplace(facePairsKernel(mContext, mWorkgroupSize, pairs.wrapX != 0));
+    dispatchAll(sequence, *facePairs, pairBuffers, pairs, &shaders::SmokeFacePairsParams::firstFace,
+                (faces + 3) / 4, 4);
 
     shaders::SmokeAdvectParams params = stepParams(state, dt);
     // Bindings 0-7 of shaders/SmokeAdvect.glsl.

@@ -81,8 +81,8 @@ private:
     const vulkan::ComputeKernel& stageKernel(std::uint32_t stage, int dim, bool unitScale) const;
 
     const vulkan::VulkanContext& mContext;
-    /// smoke_face_pairs for a walled x, then for a periodic one (its WRAP_X).
-    std::array<vulkan::ComputeKernel, 2> mFacePairs;
+    /// smoke_face_pairs for a walled x, then for a periodic one (its WRAP_X), made on first use.
+    mutable std::array<std::optional<vulkan::ComputeKernel>, 2> mFacePairs;
     std::uint32_t mWorkgroupSize;
     /// By stage (semi-Lagrangian, MacCormack forward, MacCormack correction), 2D then 3D, each
     /// for any smoke scale and for scale 1.

@@ -1,6 +1,5 @@
 #include "engine/vulkan/ComputeKernel.h"
 
-#include <algorithm>
 #include <array>
 #include <vector>
 
@@ -26,15 +25,27 @@ ComputeKernel::ComputeKernel(const VulkanContext& context, const ComputeKernelSp
                     " bytes of push constants (must be a multiple of 4 and at most " +
                     std::to_string(limits.maxPushConstantsSize) + ")");
 
-    const std::array<std::pair<const std::vector<std::uint32_t>*, const char*>, 3> lists{
-        {{&spec.texelBindings, "texel"},
-         {&spec.wordBindings, "word"},
-         {&spec.floatBindings, "float"}}};
-    for (const auto& [list, kind] : lists)
-        for (const std::uint32_t b : *list)
+    struct TexelList {
+        const std::vector<std::uint32_t>* bindings;
+        const char* kind;
+        VkDeviceSize bytes;
+    };
+    const std::array<TexelList, 3> lists{
+        {{&spec.texelBindings, "texel", DeviceBuffer::kTexelBytes},
+         {&spec.wordBindings, "word", DeviceBuffer::kWordBytes},
+         {&spec.floatBindings, "float", DeviceBuffer::kFloatBytes}}};
+    mTexelBytes.assign(spec.bufferCount, 0);
+    for (const TexelList& list : lists)
+        for (const std::uint32_t b : *list.bindings) {
             if (b >= spec.bufferCount)
-                throw Error("kernel " + spec.name + ": " + kind + " binding " + std::to_string(b) +
-                            " is not among its " + std::to_string(spec.bufferCount) + " bindings");
+                throw Error("kernel " + spec.name + ": " + list.kind + " binding " +
+                            std::to_string(b) + " is not among its " +
+                            std::to_string(spec.bufferCount) + " bindings");
+            if (mTexelBytes[b] != 0)
+                throw Error("kernel " + spec.name + ": binding " + std::to_string(b) +
+                            " is listed as texels twice");
+            mTexelBytes[b] = list.bytes;
+        }
     std::vector<VkDescriptorSetLayoutBinding> bindings(spec.bufferCount);
     for (std::uint32_t b = 0; b < spec.bufferCount; ++b) {
         bindings[b].binding = b;
@@ -95,16 +106,6 @@ ComputeKernel::ComputeKernel(const VulkanContext& context, const ComputeKernelSp
     check(vkCreateComputePipelines(device, VK_NULL_HANDLE, 1, &pipelineInfo, nullptr, &pipeline),
           "vkCreateComputePipelines");
     mPipeline = DeviceHandle<VkPipeline>(device, pipeline, vkDestroyPipeline);
-}
-
-VkDeviceSize ComputeKernel::texelBytes(std::uint32_t binding) const {
-    const auto has = [binding](const std::vector<std::uint32_t>& list) {
-        return std::find(list.begin(), list.end(), binding) != list.end();
-    };
-    if (has(mSpec.texelBindings)) return DeviceBuffer::kTexelBytes;
-    if (has(mSpec.wordBindings)) return DeviceBuffer::kWordBytes;
-    if (has(mSpec.floatBindings)) return DeviceBuffer::kFloatBytes;
-    return 0;
 }
 
 void ComputeKernel::bind(VkCommandBuffer commandBuffer,

@@ -78,13 +78,14 @@ public:
 
 private:
     /// The texel view's bytes at `binding` (16, 8 or 4), 0 for a storage buffer.
-    VkDeviceSize texelBytes(std::uint32_t binding) const;
+    VkDeviceSize texelBytes(std::uint32_t binding) const { return mTexelBytes[binding]; }
     /// Binds the pipeline and buffers and pushes the constants, after checking their counts.
     void bind(VkCommandBuffer commandBuffer, std::span<const DeviceBuffer* const> buffers,
               std::span<const std::byte> pushConstants) const;
 
     const VulkanContext& mContext;
     ComputeKernelSpec mSpec;
+    std::vector<VkDeviceSize> mTexelBytes;  ///< per binding, from the spec's lists
     // Dependency order: the pipeline needs its layout, the layout needs the set layout.
     DeviceHandle<VkDescriptorSetLayout> mSetLayout;
     DeviceHandle<VkPipelineLayout> mPipelineLayout;

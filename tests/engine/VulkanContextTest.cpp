@@ -213,6 +213,14 @@ TEST_P(VulkanContextTest, BuffersOfWholeTexelsCanBeReadAsTexels) {
     } catch (const Error& e) {
         EXPECT_NE(std::string(e.what()).find("float binding 2"), std::string::npos) << e.what();
     }
+    try {
+        const vulkan::ComputeKernel kernel(context(), {"probe", {}, 2, 0, 64, {}, {1}, {}, {1}});
+        FAIL() << "a kernel reading binding 1 through two views was made";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("binding 1 is listed as texels twice"),
+                  std::string::npos)
+            << e.what();
+    }
     expectNoValidationMessages();
 }
 
