@@ -9,6 +9,7 @@
 #include <new>
 #include <string>
 #include <string_view>
+#include <utility>
 
 #include "engine/core/AtomicFile.h"
 #include "engine/core/BinaryCodec.h"
@@ -109,6 +110,11 @@ Checkpoint readCheckpoint(const std::filesystem::path& path) {
     checkpoint.heldRate = modalVector(reader);
     if (checkpoint.heldRate.size() != 0 && checkpoint.heldRate.size() != checkpoint.velocity.size())
         fail(path, "its held rate and velocity sizes differ");
+    // No step can continue from them; refused here, naming the file, not by the simulator.
+    for (const auto& [values, what] : {std::pair{&checkpoint.velocity, "velocity"},
+                                       std::pair{&checkpoint.magnetic, "magnetic field"},
+                                       std::pair{&checkpoint.heldRate, "held rate"}})
+        if (!values->allFinite()) fail(path, std::string("its modal ") + what + " is not finite");
     checkpoint.smoke.density = reader.vector<double>();
     checkpoint.smoke.temperature = reader.vector<double>();
     if (checkpoint.smoke.density.size() != checkpoint.smoke.temperature.size())

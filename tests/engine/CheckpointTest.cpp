@@ -136,6 +136,14 @@ TEST(CheckpointTest, WellFormedNonsenseIsRefused) {
     odd.heldRate.resize(0);
     writeCheckpoint(file, odd);
     EXPECT_EQ(readCheckpoint(file).heldRate.size(), 0);
+    // Modal values no step can continue from.
+    for (Eigen::VectorXd Checkpoint::*field :
+         {&Checkpoint::velocity, &Checkpoint::magnetic, &Checkpoint::heldRate}) {
+        Checkpoint bad = sample();
+        (bad.*field)[2] = std::numeric_limits<double>::quiet_NaN();
+        writeCheckpoint(file, bad);
+        EXPECT_NE(readError(file).find("is not finite"), std::string::npos) << readError(file);
+    }
 }
 
 TEST(CheckpointTest, AFailedWriteSaysWhyAndLeavesNoPartialFile) {
