@@ -6,6 +6,8 @@
 #ifndef MODEFLOW_SHADERS_FACE_LOCATION_GLSL
 #define MODEFLOW_SHADERS_FACE_LOCATION_GLSL
 
+#include "LaneDivision.glsl"
+
 uint faceAxis(uint face, uint faceStart1, uint faceStart2) {
     return face >= faceStart2 ? 2u : (face >= faceStart1 ? 1u : 0u);
 }
@@ -14,7 +16,10 @@ uint faceAxis(uint face, uint faceStart1, uint faceStart2) {
 uvec3 facePosition(uint local, uint axis, uvec3 cells, uint periodic) {
     const uint ex = cells.x + (axis == 0u && (periodic & 1u) == 0u ? 1u : 0u);
     const uint ey = cells.y + (axis == 1u && (periodic & 2u) == 0u ? 1u : 0u);
-    return uvec3(local % ex, (local / ex) % ey, local / (ex * ey));
+    // Quotients of at most an axis's positions (quotientOf's bound).
+    const uint z = quotientOf(local, ex * ey), inPlane = local - z * ex * ey;
+    const uint y = quotientOf(inPlane, ex);
+    return uvec3(inPlane - y * ex, y, z);
 }
 
 /* The offset d moved by whole box lengths (`box` per axis) along the periodic axes to its

@@ -6,7 +6,10 @@
 // host fills g with zeros instead of the first):
 //   STAGE_SPLATS  g = splats on every DOF,
 //   STAGE_BUOYANCY g += buoyancy * dual-cell temperature on the up DOFs only, from a host-made
-//                 list of (DOF, face position) texels; the CPU reference sums in the same order.
+//                 list of (DOF, face position) texels; the CPU reference sums in the same order;
+//                 without splats g = (ACCUMULATE 0: no load of g, a scalar access per lane on
+//                 lavapipe; the 64^3 box's buoyancy pass 2.3-2.5 -> 1.9 ms, and its fill of
+//                 g, 0.2 ms, left out where only the up DOFs are read).
 // Why, measured on lavapipe (tools/bench/bench_runtime `forces`, README "Speed"): one pass over
 // every DOF with the buoyancy behind `if (axis == up)` and the dual cell's loop bounds per lane ran
 // the dual-cell code for every DOF (an `if` on lavapipe masks lanes, its body runs), decoded the
@@ -22,6 +25,7 @@ layout(constant_id = 1) const uint STAGE = 0u;     // FORCE_STAGE_* (ForceFieldP
 layout(constant_id = 2) const uint DIM = 3u;       // 2 or 3; up is axis DIM - 1
 layout(constant_id = 3) const uint SCALE = 1u;     // smoke cells per basis cell and axis
 layout(constant_id = 4) const uint USE_MASK = 0u;  // 1: average over fluid smoke cells only
+layout(constant_id = 5) const uint ACCUMULATE = 1u;  // buoyancy: 1 adds to g, 0 assigns it
 
 layout(std430, set = 0, binding = 0) readonly buffer Faces { uint faces[]; };
 // Per up DOF: the DOF, and its face's lower-corner position x, y, z.
@@ -103,7 +107,9 @@ void main() {
     if (STAGE == FORCE_STAGE_BUOYANCY) {
         for (uint i = gl_GlobalInvocationID.x; i < params.upCount; i += invocations) {
             const uvec4 entry = texelFetch(upDofs, int(i));
-            g[entry.x] += params.buoyancy * dualCellTemperature(entry.yzw);
+            const float force = params.buoyancy * dualCellTemperature(entry.yzw);
+            if (ACCUMULATE != 0u) g[entry.x] += force;
+            else g[entry.x] = force;
         }
     } else {
         for (uint d = gl_GlobalInvocationID.x; d < params.dofCount; d += invocations)

@@ -19,6 +19,7 @@
 // the 3D box's projection (64^3, N = 1000) where this takes 1.0 ms (README "Closed-form bases").
 #extension GL_GOOGLE_include_directive : require
 #include "SeparableParams.h"
+#include "LaneDivision.glsl"
 #include "TexelAccess.glsl"
 
 layout(local_size_x = 64, local_size_x_id = 0) in;
@@ -37,13 +38,13 @@ void main() {
     const uint total = lines * blocks;
     const uint stride = gl_NumWorkGroups.x * gl_WorkGroupSize.x;
     for (uint e = gl_GlobalInvocationID.x; e < total; e += stride) {
-        const uint line = e % lines, block = e / lines;  // line = i2 d1 + i1
+        const uint block = quotientOf(e, lines), line = e - block * lines;  // line = i2 d1 + i1
         const uint first = params.inOffset + line * params.inLength;
         uint texel = params.tableTexel + block;
         vec4 sum = vec4(0.0);
         for (uint j = 0; j < params.inLength; ++j, texel += blocks)
             sum += floatTexel(tables, texel) * uintBitsToFloat(texelFetch(values, int(first + j)).x);
-        const uint i2 = line / params.d1;
+        const uint i2 = quotientOf(line, params.d1);
         const uint at = params.outOffset + i2 * params.outRow + (line - i2 * params.d1);
         for (uint c = 0; c < 4u; ++c) {
             const uint q = 4u * block + c;

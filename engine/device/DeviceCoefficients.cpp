@@ -8,6 +8,7 @@
 
 #include "engine/core/Error.h"
 #include "engine/core/PackedLayout.h"
+#include "engine/device/DofFaces.h"
 #include "engine/device/ModalKernels.h"
 #include "engine/dynamics/DenseCoefficients.h"
 #include "engine/dynamics/SparseCoefficients.h"
@@ -42,7 +43,7 @@ DeviceCoefficients::DeviceCoefficients(const vulkan::VulkanContext& context,
                                        bool advection)
     : mN(coefficients.size()),
       mSubgroupsPerGroup(std::max(1u, 64u / context.subgroupSize())),
-      mMaxGroups(context.properties().limits.maxComputeWorkGroupCount[0]) {
+      mMaxGroups(groupCap(context)) {
     if (mN < 2) throw Error("modal contraction: needs at least 2 modes, got " + std::to_string(mN));
     const std::size_t n = std::size_t(mN);
     if (dynamic_cast<const TensorFreeCoefficients*>(&coefficients)) {

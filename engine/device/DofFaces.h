@@ -19,8 +19,12 @@ namespace modeflow::device {
 /// @throw modeflow::Error when there are no DOFs or the grid has 2^32 faces or more.
 vulkan::DeviceBuffer uploadDofFaces(const vulkan::VulkanContext& context, const BasisCache& cache);
 
-/// Workgroups for one invocation per item, capped at the device's group count limit (the
-/// shaders loop with a grid stride over what is left).
+/// The most workgroups a dispatch of a grid-stride kernel takes: the device's group count
+/// limit, and on a CPU device a few per CPU thread.
+std::uint32_t groupCap(const vulkan::VulkanContext& context);
+
+/// Workgroups for one invocation per item, at most groupCap (the shaders loop with a grid
+/// stride over what is left).
 std::uint32_t groupsFor(const vulkan::VulkanContext& context, std::uint64_t items,
                         std::uint32_t workgroupSize);
 

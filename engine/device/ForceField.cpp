@@ -51,27 +51,30 @@ ForceFieldKernel::ForceFieldKernel(const vulkan::VulkanContext& context, const B
       mUp(uploadUpDofs(context, mGrid, cache)),
       mSplats(context, VkDeviceSize(mMaxSplats) * sizeof(shaders::ForceSplatRecord),
               "force splats"),
-      mSplatForce(makeKernel(context, FORCE_STAGE_SPLATS, false, workgroupSize)),
-      mBuoyancy(makeKernel(context, FORCE_STAGE_BUOYANCY, false, workgroupSize)),
-      mMaskedBuoyancy(makeKernel(context, FORCE_STAGE_BUOYANCY, true, workgroupSize)) {
+      mSplatForce(makeKernel(context, FORCE_STAGE_SPLATS, false, false, workgroupSize)),
+      mBuoyancy{{{makeKernel(context, FORCE_STAGE_BUOYANCY, false, false, workgroupSize),
+                  makeKernel(context, FORCE_STAGE_BUOYANCY, false, true, workgroupSize)},
+                 {makeKernel(context, FORCE_STAGE_BUOYANCY, true, false, workgroupSize),
+                  makeKernel(context, FORCE_STAGE_BUOYANCY, true, true, workgroupSize)}}} {
     // Sized by the up list, not every DOF: on lavapipe each empty workgroup still costs a call.
     mUpGroups = groupsFor(context, mUp.count, workgroupSize);
 }
 
 vulkan::ComputeKernel ForceFieldKernel::makeKernel(const vulkan::VulkanContext& context,
                                                    std::uint32_t stage, bool useMask,
+                                                   bool accumulate,
                                                    std::uint32_t workgroupSize) const {
     return vulkan::ComputeKernel(
-        context,
-        vulkan::ComputeKernelSpec{"force_field",
-                                  force_field_spv,
-                                  6,
-                                  sizeof(shaders::ForceFieldParams),
-                                  workgroupSize,
-                                  {stage, std::uint32_t(mGrid.dim), std::uint32_t(mScale), useMask},
-                                  {1},
-                                  {},
-                                  {2}});
+        context, vulkan::ComputeKernelSpec{
+                     "force_field",
+                     force_field_spv,
+                     6,
+                     sizeof(shaders::ForceFieldParams),
+                     workgroupSize,
+                     {stage, std::uint32_t(mGrid.dim), std::uint32_t(mScale), useMask, accumulate},
+                     {1},
+                     {},
+                     {2}});
 }
 
 void ForceFieldKernel::setSplats(std::span<const ForceSplat> splats) {
@@ -95,8 +98,8 @@ void ForceFieldKernel::setSplats(std::span<const ForceSplat> splats) {
 
 void ForceFieldKernel::record(vulkan::CommandSequence& sequence, double buoyancy,
                               const vulkan::DeviceBuffer& temperature,
-                              const vulkan::DeviceBuffer* fluidMask,
-                              const vulkan::DeviceBuffer& g) const {
+                              const vulkan::DeviceBuffer* fluidMask, const vulkan::DeviceBuffer& g,
+                              bool upDofsOnly) const {
     const auto smokeCells = std::uint64_t(mSmoke.cellCount());
     requireWords("force_field", temperature, smokeCells);
     if (fluidMask) requireWords("force_field", *fluidMask, (smokeCells + 3) / 4);
@@ -118,12 +121,15 @@ void ForceFieldKernel::record(vulkan::CommandSequence& sequence, double buoyancy
     // Without a mask the temperature buffer fills the mask's binding; the shader never reads it.
     const std::array<const vulkan::DeviceBuffer*, 6> buffers{
         &mFaces, &mUp.buffer, &temperature, fluidMask ? fluidMask : &temperature, &mSplats, &g};
+    const bool buoyant = buoyancy != 0.0 && mUp.count > 0;
     if (mSplatCount > 0)
         sequence.dispatch(mSplatForce, buffers, params, mGroups);
-    else
+    else if (!buoyant || !upDofsOnly)
         sequence.fill(g, VkDeviceSize(mDofCount) * sizeof(float), 0u);
-    if (buoyancy != 0.0 && mUp.count > 0)
-        sequence.dispatch(fluidMask ? mMaskedBuoyancy : mBuoyancy, buffers, params, mUpGroups);
+    // After splats the buoyancy adds to g; otherwise it assigns the up DOFs (zeroed or unread).
+    if (buoyant)
+        sequence.dispatch(mBuoyancy[fluidMask ? 1 : 0][mSplatCount > 0 ? 1 : 0], buffers, params,
+                          mUpGroups);
 }
 
 }  // namespace modeflow::device

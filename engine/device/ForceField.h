@@ -5,6 +5,7 @@
 /// (a smoke-grid buffer, e.g. SmokeState::temperature(), with its packed fluid mask) plus
 /// stirring splats. The result feeds ForceProjectionKernel with FaceQuantity::Density.
 
+#include <array>
 #include <cstdint>
 #include <span>
 
@@ -37,17 +38,22 @@ public:
     /// Records g = buoyancy × dual-cell temperature (up faces) + splats, one float per DOF.
     /// `temperature`: one float per smoke cell; `fluidMask`: null, or one byte per smoke cell
     /// packed four to a word (SmokeState's mask), then only fluid cells enter the mean.
+    /// `upDofsOnly`: the caller reads g at the up DOFs alone (a projection of the up component,
+    /// SeparableTransformKernels::recordComponentProjection); without splats the other DOFs
+    /// are then left as they were, not zeroed.
     /// @throw modeflow::Error if a buffer is too small.
     void record(vulkan::CommandSequence& sequence, double buoyancy,
                 const vulkan::DeviceBuffer& temperature, const vulkan::DeviceBuffer* fluidMask,
-                const vulkan::DeviceBuffer& g) const;
+                const vulkan::DeviceBuffer& g, bool upDofsOnly = false) const;
 
     std::uint32_t dofCount() const { return mDofCount; }
 
 private:
-    /// force_field.comp's pipeline for `stage` (FORCE_STAGE_*), with or without the fluid mask.
+    /// force_field.comp's pipeline for `stage` (FORCE_STAGE_*), with or without the fluid mask;
+    /// the buoyancy adding to g (after splats) or assigning it.
     vulkan::ComputeKernel makeKernel(const vulkan::VulkanContext& context, std::uint32_t stage,
-                                     bool useMask, std::uint32_t workgroupSize) const;
+                                     bool useMask, bool accumulate,
+                                     std::uint32_t workgroupSize) const;
 
     MacGrid mGrid;
     MacGrid mSmoke;
@@ -67,7 +73,9 @@ private:
                                const BasisCache& cache);
     UpDofs mUp;
     vulkan::DeviceBuffer mSplats;
-    vulkan::ComputeKernel mSplatForce, mBuoyancy, mMaskedBuoyancy;
+    vulkan::ComputeKernel mSplatForce;
+    /// The buoyancy stage, [masked][accumulate].
+    std::array<std::array<vulkan::ComputeKernel, 2>, 2> mBuoyancy;
 };
 
 }  // namespace modeflow::device

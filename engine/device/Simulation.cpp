@@ -110,11 +110,12 @@ void Simulation::recordStep(std::vector<std::size_t>& boundaries) {
     if (forcesActive()) {
         // Without solid smoke cells the mask leaves every weight as it is: skip its loads.
         const bool solidCells = std::int64_t(mSmoke.fluidCellCount()) < mSmoke.cellCount();
-        mForceField.record(mSequence, mSettings.buoyancy, mSmoke.temperature(),
-                           solidCells ? &mSmoke.mask() : nullptr, mForceDensity);
         // Buoyancy alone acts on the up faces only: the other components' passes would
-        // transform zeros.
-        if (mSeparable && mForceField.splatCount() == 0)
+        // transform zeros, so they are not recorded and those DOFs of g not written.
+        const bool upOnly = mSeparable && mForceField.splatCount() == 0;
+        mForceField.record(mSequence, mSettings.buoyancy, mSmoke.temperature(),
+                           solidCells ? &mSmoke.mask() : nullptr, mForceDensity, upOnly);
+        if (upOnly)
             mSeparable->recordComponentProjection(
                 mSequence, mForceDensity, upAxis(mReconstruction.grid()), mStepper.forceBuffer());
         else if (mSeparable)

@@ -5,14 +5,18 @@
 /// buffers, the orthonormality round trip through the reconstruction kernel, and kernel times.
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <iostream>
 #include <limits>
 #include <random>
+#include <span>
 #include <vector>
 
 #include <gtest/gtest.h>
 
+#include "engine/core/FaceLocation.h"
+#include "engine/core/MacGrid.h"
 #include "engine/device/ForceField.h"
 #include "engine/device/ForceProjection.h"
 #include "engine/device/ModeBuffer.h"
@@ -73,17 +77,20 @@ DeviceBuffer maskBuffer(const vulkan::VulkanContext& context, std::vector<std::u
     return DeviceBuffer::fromValues<std::uint8_t>(context, mask, "fluid mask");
 }
 
+/// g on the device, from a g of NaNs (a DOF never written stays NaN).
 Eigen::VectorXd forceFieldOnDevice(const vulkan::VulkanContext& context, const BasisCache& cache,
-                                   int scale, double buoyancy, const Smoke& smoke, bool useMask) {
+                                   int scale, double buoyancy, const Smoke& smoke, bool useMask,
+                                   std::span<const ForceSplat> splatList = splats(),
+                                   bool upDofsOnly = false) {
     ForceFieldKernel kernel(context, cache, scale);
-    kernel.setSplats(splats());
+    kernel.setSplats(splatList);
     const DeviceBuffer temperature =
         DeviceBuffer::fromValues<float>(context, testing::toFloat(smoke.temperature), "T");
     const DeviceBuffer mask = maskBuffer(context, smoke.mask);
     const std::vector<float> nan(cache.faces.size(), std::numeric_limits<float>::quiet_NaN());
     const DeviceBuffer g = DeviceBuffer::fromValues<float>(context, nan, "g");
     CommandSequence sequence(context);
-    kernel.record(sequence, buoyancy, temperature, useMask ? &mask : nullptr, g);
+    kernel.record(sequence, buoyancy, temperature, useMask ? &mask : nullptr, g, upDofsOnly);
     sequence.submitAndWait();
     return testing::downloadFloats(g, cache.faces.size());
 }
@@ -139,6 +146,34 @@ TEST_P(ForceProjectionKernelTest, ForceFieldEqualsTheCpuReference) {
                     << cache->grid.periodic[1] << cache->grid.periodic[2] << ", scale " << scale
                     << ", mask " << useMask;
             }
+}
+
+TEST_P(ForceProjectionKernelTest, BuoyancyAloneAssignsTheUpDofsAndZeroesOnlyWhenAsked) {
+    // Without splats the buoyancy stage assigns g (no load of it); the other DOFs are zeroed
+    // unless the caller reads the up DOFs alone, when they keep what they held (here NaN).
+    for (const BasisCache* cache : {&testing::disk2d(), &testing::ball3d(), &testing::torus3d()})
+        for (const bool upDofsOnly : {false, true}) {
+            const int scale = 2;
+            const Smoke smoke = randomSmoke(*cache, scale, 11);
+            const Eigen::VectorXd device =
+                forceFieldOnDevice(context(), *cache, scale, 1.3, smoke, false, {}, upDofsOnly);
+            const reference::BuoyancyInput input{1.3, scale, smoke.temperature, {}};
+            const Eigen::VectorXd reference = reference::forceDensity(*cache, input, {});
+            const MacGrid grid = MacGrid::fromSpec(cache->grid);
+            int up = 0;
+            for (std::size_t d = 0; d < cache->faces.size(); ++d) {
+                const bool isUp = locateFace(grid, cache->faces[d]).axis == upAxis(grid);
+                up += isUp ? 1 : 0;
+                if (isUp || !upDofsOnly)
+                    ASSERT_NEAR(device[Eigen::Index(d)], reference[Eigen::Index(d)],
+                                1e-6 * (1.0 + std::abs(reference[Eigen::Index(d)])))
+                        << "DOF " << d << ", up only " << upDofsOnly;
+                else
+                    ASSERT_TRUE(std::isnan(device[Eigen::Index(d)]))
+                        << "DOF " << d << " of another component was written";
+            }
+            EXPECT_GT(up, 0);
+        }
 }
 
 TEST_P(ForceProjectionKernelTest, ProjectionEqualsTheCpuReference) {
