@@ -8,6 +8,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -123,6 +124,29 @@ TEST_P(ModalContractionKernelTest, SparseEqualsCpuApplyInFloat32) {
     for (const int n : {20, 90}) {
         const SparseCoefficients sparse =
             SparseCoefficients::fromDense(roundedDense(testing::randomDense(n, 300 + n, 0.1)));
+        const double error = contractionError(context(), sparse);
+        std::cout << "sparse N = " << n << " (" << sparse.nonZeros() << " entries): relative error "
+                  << error << "\n";
+        EXPECT_LE(error, 1e-5) << "N = " << n;
+    }
+}
+
+TEST_P(ModalContractionKernelTest, ManyModesEqualCpuApplyAcrossTheCombinesTiles) {
+    // The combine cuts the N x N pair sums into tiles of 64 texel columns (256 modes) by sets of
+    // up to 64 rows: N past one tile, and one past a whole number of sets and tiles, with two
+    // random float32 entries a pair (a dense N^3 array of this size would not fit).
+    for (const int n : {257, 601}) {
+        std::mt19937_64 random{std::uint64_t(n)};
+        std::uniform_int_distribution<int> mode(0, n - 1);
+        std::uniform_real_distribution<double> value(-1.0, 1.0);
+        std::vector<CoefficientEntry> entries;
+        for (int k = 0; k < n; ++k)
+            for (int j = k + 1; j < n; ++j) {
+                const int first = mode(random), second = (first + 1 + mode(random) % (n - 1)) % n;
+                for (const int i : {first, second})
+                    entries.push_back({k, i, j, double(float(value(random)))});
+            }
+        const SparseCoefficients sparse(n, std::move(entries));
         const double error = contractionError(context(), sparse);
         std::cout << "sparse N = " << n << " (" << sparse.nonZeros() << " entries): relative error "
                   << error << "\n";
