@@ -10,6 +10,9 @@ namespace modeflow::shaders {
 using uint = std::uint32_t;
 #endif
 
+/* Blocks of four outputs one invocation of separable_pass.comp computes. */
+#define SEPARABLE_BLOCKS_PER_INVOCATION 2u
+
 /* Index of a gather term that adds nothing. */
 #define SEPARABLE_NONE 0xFFFFFFFFu
 

@@ -10,14 +10,17 @@
 //
 // (outRow = d1, outPlane = d1 d2 for a packed tensor; a reconstruction's last pass writes the
 // face field's rows and planes, which have the walls' faces between them).
-// One invocation per line and four consecutive outputs q (grid-stride), neighbouring lanes on
-// neighbouring lines. The table is stored j-major, four outputs a texel (entry (q, j) at float
-// j * 4 blocks + q, blocks = ceil(outLength / 4), zero-padded), so one texel fetch, the same for
-// every lane of a batch, serves four outputs and each input value is loaded once for them. Why:
+// One invocation per line and GROUP blocks of four consecutive outputs q (grid-stride),
+// neighbouring lanes on neighbouring lines. The table is stored j-major, four outputs a texel
+// (entry (q, j) at float j * 4 blocks + q, blocks = ceil(outLength / 4), zero-padded), so one
+// texel fetch, the same for every lane of a batch, serves four outputs and each input value is
+// loaded once for 4 GROUP of them (two blocks against one: a 64^3 reconstruction 4.2-6.1 ->
+// 3.7-4.6 ms, six runs each alternating). Why texels:
 // lavapipe makes every lane's storage load a scalar access and a texel fetch one gather for all
 // lanes (TexelAccess.glsl); one output an invocation, two storage loads a term, took 7.2 ms of
 // the 3D box's projection (64^3, N = 1000) where this takes 1.0 ms (README "Closed-form bases").
 #extension GL_GOOGLE_include_directive : require
+#extension GL_EXT_control_flow_attributes : require
 #include "SeparableParams.h"
 #include "LaneDivision.glsl"
 #include "TexelAccess.glsl"
@@ -32,23 +35,32 @@ layout(set = 0, binding = 1) uniform usamplerBuffer values;
 layout(std430, set = 0, binding = 2) writeonly buffer Out { float result[]; };
 layout(push_constant) uniform Push { SeparablePassParams params; };
 
+#define GROUP SEPARABLE_BLOCKS_PER_INVOCATION
+
 void main() {
     const uint lines = params.d1 * params.d2;
     const uint blocks = (params.outLength + 3u) / 4u;
-    const uint total = lines * blocks;
+    const uint groups = (blocks + GROUP - 1u) / GROUP;
+    const uint total = lines * groups;
+    const uint lastTexel = params.tableTexel + params.inLength * blocks - 1u;
     const uint stride = gl_NumWorkGroups.x * gl_WorkGroupSize.x;
     for (uint e = gl_GlobalInvocationID.x; e < total; e += stride) {
-        const uint block = quotientOf(e, lines), line = e - block * lines;  // line = i2 d1 + i1
+        const uint group = quotientOf(e, lines), line = e - group * lines;  // line = i2 d1 + i1
         const uint first = params.inOffset + line * params.inLength;
-        uint texel = params.tableTexel + block;
-        vec4 sum = vec4(0.0);
-        for (uint j = 0; j < params.inLength; ++j, texel += blocks)
-            sum += floatTexel(tables, texel) * uintBitsToFloat(texelFetch(values, int(first + j)).x);
+        uint texel = params.tableTexel + GROUP * group;
+        vec4 sum[GROUP];
+        [[unroll]] for (uint g = 0; g < GROUP; ++g) sum[g] = vec4(0.0);
+        for (uint j = 0; j < params.inLength; ++j, texel += blocks) {
+            const float v = uintBitsToFloat(texelFetch(values, int(first + j)).x);
+            [[unroll]] for (uint g = 0; g < GROUP; ++g)
+                sum[g] += floatTexel(tables, min(texel + g, lastTexel)) * v;
+        }
         const uint i2 = quotientOf(line, params.d1);
         const uint at = params.outOffset + i2 * params.outRow + (line - i2 * params.d1);
-        for (uint c = 0; c < 4u; ++c) {
-            const uint q = 4u * block + c;
-            if (q < params.outLength) result[at + q * params.outPlane] = sum[c];
-        }
+        [[unroll]] for (uint g = 0; g < GROUP; ++g)
+            [[unroll]] for (uint c = 0; c < 4u; ++c) {
+                const uint q = 4u * (GROUP * group + g) + c;
+                if (q < params.outLength) result[at + q * params.outPlane] = sum[g][c];
+            }
     }
 }

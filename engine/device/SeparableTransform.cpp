@@ -223,8 +223,10 @@ void SeparableTransformKernels::recordPasses(vulkan::CommandSequence& sequence, 
         params.outPlane = last && placement.plane != 0 ? placement.plane : pass.d1 * pass.d2;
         const std::array<const vulkan::DeviceBuffer*, 3> buffers{&mTables, chain[std::size_t(axis)],
                                                                  chain[std::size_t(axis) + 1]};
+        const std::uint64_t outputsPerInvocation = 4 * SEPARABLE_BLOCKS_PER_INVOCATION;
         const std::uint64_t invocations =
-            std::uint64_t(pass.d1) * pass.d2 * ((pass.outLength + 3) / 4);
+            std::uint64_t(pass.d1) * pass.d2 *
+            ((pass.outLength + outputsPerInvocation - 1) / outputsPerInvocation);
         sequence.dispatch(mPassKernel, buffers, params,
                           groupsFor(mContext, invocations, kWorkgroup));
     }
