@@ -89,24 +89,26 @@ struct AdvectSumParams {
    linearized rule's held rate. */
 #define ANDERSON_DEPTH 5
 
+/* The operation, the linearized rule's frozen point and MHD's Lorentz force are specialization
+   constants of modal_update.comp, not push constants (why: there). */
 struct ModalUpdateParams {
     uint n;
-    uint op;
-    uint stage;         /* RK4 stage */
-    uint argumentCount; /* indirect dispatches the implicit iterations switch off */
-    float h;            /* step */
-    float tolerance;    /* implicit rules: relative max-norm change of y that counts as converged */
-    uint stride;        /* floats per part of the state (n padded) */
-    uint parts;         /* 1: the fluid's v; 2: MHD's [v; F], each part at a multiple of stride */
-    uint lorentz;       /* MHD: subtract r[2 stride + k] (C(F, F)) from the velocity part of r */
-    uint anderson;      /* implicit rules: 1 accelerates the fixed-point iteration */
-    uint warm;          /* BEGIN of a midpoint step: 1 starts from the R held, if any */
-    uint frozen;        /* MIDPOINT of a linearized step: 1 leaves a (the frozen M x~) alone */
+    uint stage;          /* RK4 stage */
+    uint argumentCount;  /* indirect dispatches the implicit iterations switch off */
     uint predictorCount; /* indirect dispatches of the linearized predictor's R(x), after the
                             iterations' two copies: switched off while a rate is held */
+    float h;             /* step */
+    float tolerance; /* implicit rules: relative max-norm change of y that counts as converged */
+    uint stride;     /* floats per part of the state (n padded) */
+    uint parts;      /* 1: the fluid's v; 2: MHD's [v; F], each part at a multiple of stride */
+    uint anderson;   /* implicit rules: 1 accelerates the fixed-point iteration */
+    uint warm;       /* BEGIN of a midpoint step: 1 starts from the R held, if any */
     uint pad0;
     uint pad1;
     uint pad2;
+    uint pad3;
+    uint pad4;
+    uint pad5;
 };
 
 /* The status block modal_update.comp keeps for the host. */

@@ -55,6 +55,13 @@ layout(std430, set = 0, binding = 9) buffer Arguments { uint arguments[]; };
 // The implicit iterations' history (Anderson acceleration, see iterate).
 layout(std430, set = 0, binding = 10) buffer History { float history[]; };
 layout(push_constant) uniform Push { ModalUpdateParams params; };
+// What a dispatch does, fixed at compile time, one pipeline each (engine/device/ModalKernels):
+// lavapipe runs every branch of an `if`, loads included, whichever lanes take it, so with the
+// operation a run-time value every dispatch ran every operation's loads (64^3 box, N = 1000,
+// lavapipe: BEGIN 0.17 -> 0.07 ms, LINEARIZED_START 0.14 -> 0.06, an iteration 0.15 -> 0.12).
+layout(constant_id = 1) const uint OP = MODAL_OP_BEGIN;  // MODAL_OP_*
+layout(constant_id = 2) const bool FROZEN = false;  // MIDPOINT of a linearized step: a left alone
+layout(constant_id = 3) const bool LORENTZ = false; // MHD: r's velocity part less C(F, F)
 
 // Subgroup partial sums, then their sums: SUMS values per iteration (see iterate).
 #define MAX_SUBGROUPS 64
@@ -64,7 +71,7 @@ shared float solution[ANDERSON_DEPTH];
 
 void setPoint(uint k, float value) {
     y[k] = value;
-    if (params.frozen == 0u) a[k] = mass[k] * value;
+    if (!FROZEN) a[k] = mass[k] * value;
 }
 
 // Not padding after a part (at most two parts; no modulo: lavapipe divides lane by lane).
@@ -72,7 +79,7 @@ bool inState(uint k) { return k < params.stride ? k < params.n : k - params.stri
 
 // R(y)_k from r (MHD with the Lorentz force: the velocity part less C(F, F)).
 float rhs(uint k) {
-    return params.lorentz != 0u && k < params.stride ? r[k] - r[2u * params.stride + k] : r[k];
+    return LORENTZ && k < params.stride ? r[k] - r[2u * params.stride + k] : r[k];
 }
 
 // The midpoint rule's fixed-point map g(y)_k with r = R(y) (see the header).
@@ -80,7 +87,7 @@ float midpointMap(uint k) { return x[k] + 0.5 * params.h * (rhs(k) + f[k]) / mas
 
 // The fixed-point map g(y)_k of the implicit rules (see the header).
 float fixedPointMap(uint k) {
-    if (params.op == MODAL_OP_MIDPOINT) return midpointMap(k);
+    if (OP == MODAL_OP_MIDPOINT) return midpointMap(k);
     return x[k] + (0.5 * params.h * (acc[k] + rhs(k)) + params.h * f[k]) / mass[k];
 }
 
@@ -218,7 +225,7 @@ void main() {
     const uint lane = gl_LocalInvocationID.x;
     const uint size = gl_WorkGroupSize.x;
     const float h = params.h;
-    const uint op = params.op;
+    const uint op = OP;
     if (op == MODAL_OP_MIDPOINT || op == MODAL_OP_TRAPEZOIDAL) {
         iterate(lane, size);
         return;

@@ -63,8 +63,6 @@ ModalKernels::ModalKernels(const vulkan::VulkanContext& context)
                                64,
                                {},
                                {0, 1}}),
-      update(context, {"modal_update", modal_update_spv, 11, sizeof(shaders::ModalUpdateParams),
-                       updateWorkgroupSize(context)}),
       pairWeights(context, {"modal_pair_weights", modal_pair_weights_spv, 3,
                             sizeof(shaders::CombineParams), 64}),
       advectDense(context, {"modal_advect_dense",
@@ -77,6 +75,25 @@ ModalKernels::ModalKernels(const vulkan::VulkanContext& context)
       advectSum(context, {"modal_advect_sum", modal_advect_sum_spv, 2,
                           sizeof(shaders::AdvectSumParams), 64}),
       advectSparse(context, {"modal_advect_sparse", modal_advect_sparse_spv, 5,
-                             sizeof(shaders::CombineParams), 64}) {}
+                             sizeof(shaders::CombineParams), 64}),
+      mContext(context) {}
+
+const vulkan::ComputeKernel& ModalKernels::update(std::uint32_t op, bool frozen,
+                                                  bool lorentz) const {
+    const UpdateVariant variant{op, frozen, lorentz};
+    auto found = mUpdates.find(variant);
+    if (found == mUpdates.end())
+        found =
+            mUpdates
+                .try_emplace(variant, mContext,
+                             vulkan::ComputeKernelSpec{"modal_update",
+                                                       modal_update_spv,
+                                                       11,
+                                                       sizeof(shaders::ModalUpdateParams),
+                                                       updateWorkgroupSize(mContext),
+                                                       {op, frozen ? 1u : 0u, lorentz ? 1u : 0u}})
+                .first;
+    return found->second;
+}
 
 }  // namespace modeflow::device

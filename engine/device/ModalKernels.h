@@ -4,6 +4,10 @@
 /// DeviceCoefficients and ModalStepper. They use subgroup arithmetic, which every desktop GPU and
 /// lavapipe offer; a device without it is refused with a clear message.
 
+#include <cstdint>
+#include <map>
+#include <tuple>
+
 #include "engine/vulkan/ComputeKernel.h"
 
 namespace modeflow::vulkan {
@@ -22,11 +26,21 @@ struct ModalKernels {
     vulkan::ComputeKernel sparsePairSums;  ///< sparse rows: one invocation per stored pair
     vulkan::ComputeKernel combine;         ///< out = U b from the pair sums U, a subgroup per k
     vulkan::ComputeKernel combineColumns;  ///< then out -= Uᵀ b, an invocation per 4 outputs
-    vulkan::ComputeKernel update;          ///< the integrators' state updates, one workgroup
     vulkan::ComputeKernel pairWeights;     ///< dense advection: w(k,j) = u_k x_j − u_j x_k
     vulkan::ComputeKernel advectDense;     ///< dense advection: partial sums over groups of tiles
     vulkan::ComputeKernel advectSum;       ///< dense advection: the partial sums added
     vulkan::ComputeKernel advectSparse;    ///< sparse advection: one gather per mode
+
+    /// The integrators' state update `op` (MODAL_OP_*; one workgroup), with the linearized rule's
+    /// frozen point (`frozen`) and MHD's Lorentz force (`lorentz`) fixed at compile time: made on
+    /// first use (shaders/modal_update.comp has why). Not for concurrent use.
+    /// @throw modeflow::Error if the pipeline cannot be created.
+    const vulkan::ComputeKernel& update(std::uint32_t op, bool frozen, bool lorentz) const;
+
+private:
+    using UpdateVariant = std::tuple<std::uint32_t, bool, bool>;
+    const vulkan::VulkanContext& mContext;
+    mutable std::map<UpdateVariant, vulkan::ComputeKernel> mUpdates;
 };
 
 }  // namespace modeflow::device

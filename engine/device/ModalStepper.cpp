@@ -320,28 +320,29 @@ void ModalStepper::recordUpdate(vulkan::CommandSequence& sequence, std::uint32_t
         &mState, &mPoint,       &mWeighted, &mRhs,       &mForce,  &mMass,
         &mDecay, &mAccumulator, &mStatus,   &mArguments, &mHistory};
     const shaders::ModalUpdateParams params{std::uint32_t(size()),
-                                            op,
                                             stage,
                                             mIterationDispatches + 1,
+                                            mEvaluationDispatches,
                                             float(h),
                                             mSettings.tolerance,
                                             mStride,
                                             mParts,
-                                            mLorentz ? 1u : 0u,
                                             mSettings.accelerated ? 1u : 0u,
                                             warm ? 1u : 0u,
-                                            frozen ? 1u : 0u,
-                                            mEvaluationDispatches,
+                                            0u,
+                                            0u,
+                                            0u,
                                             0u,
                                             0u,
                                             0u};
+    const vulkan::ComputeKernel& kernel = mKernels.update(op, frozen, mLorentz);
     if (indirect)
         // The update is the last dispatch of an iteration; its live entry follows the full copy.
         sequence.dispatchIndirect(
-            mKernels.update, buffers, params, mArguments,
+            kernel, buffers, params, mArguments,
             VkDeviceSize(2 * mIterationDispatches + 1) * sizeof(VkDispatchIndirectCommand));
     else
-        sequence.dispatch(mKernels.update, buffers, params, 1);
+        sequence.dispatch(kernel, buffers, params, 1);
 }
 
 void ModalStepper::recordStep(vulkan::CommandSequence& sequence, double h, int substeps) const {

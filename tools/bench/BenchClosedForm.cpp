@@ -13,10 +13,15 @@
 ///                     forces_ms (force field + projection), modal_ms (the implicit step),
 ///                     recon_ms, advect_ms; and alone: contraction_ms (one C(v, v), sliced
 ///                     ELLPACK), proj_ms (the transposed transforms)
+///   device_wall       the same step as a run takes it, without timestamps: the wall time of
+///                     advanceSteps(1), submission, waiting and the host's status reads included
+///                     (lavapipe flushes its work at every timestamp, so device_step's sum of
+///                     dispatch times is not the time a run sees)
 /// The state is the torus scene's initial vortices, and for the box (which starts at rest) a swirl
 /// of a twentieth of a turnover per step, so the midpoint rule iterates as in a run. Run:
 /// bench_closed_form [--device N] [--benchmark_filter=...].
 
+#include <algorithm>
 #include <chrono>
 #include <map>
 #include <memory>
@@ -176,6 +181,22 @@ void deviceStep(benchmark::State& state, const char* file, Integrator integrator
     state.counters["iterations"] = iterations;
 }
 
+void deviceWall(benchmark::State& state, const char* file, Integrator integrator) {
+    const RunInputs& run = sceneRun(file, int(state.range(0)));
+    const std::unique_ptr<Simulator> simulation = benchBackend().makeSimulator(run);
+    simulation->setIntegrator(integrator);
+    simulation->setVelocity(startingVelocity(run));
+    simulation->advanceSteps(3);
+    int iterations = 0;
+    for (auto _ : state) {
+        const auto start = Clock::now();
+        const FrameStats stats = simulation->advanceSteps(1);
+        state.SetIterationTime(msSince(start) * 1e-3);
+        iterations = std::max(iterations, stats.maxIterations);
+    }
+    state.counters["iterations"] = iterations;
+}
+
 constexpr const char* kBox = "box_closed_form_3d.toml";
 constexpr const char* kTorus = "torus_closed_form_2d.toml";
 
@@ -220,6 +241,22 @@ BENCHMARK_CAPTURE(deviceStep, torus_2d, kTorus, Integrator::Midpoint)
 BENCHMARK_CAPTURE(deviceStep, torus_2d_linearized, kTorus, Integrator::Linearized)
     ->Apply(torusSizes)
     ->Iterations(20)
+    ->UseManualTime();
+BENCHMARK_CAPTURE(deviceWall, box_3d, kBox, Integrator::Midpoint)
+    ->Apply(boxSizes)
+    ->Iterations(10)
+    ->UseManualTime();
+BENCHMARK_CAPTURE(deviceWall, box_3d_linearized, kBox, Integrator::Linearized)
+    ->Apply(boxSizes)
+    ->Iterations(10)
+    ->UseManualTime();
+BENCHMARK_CAPTURE(deviceWall, torus_2d, kTorus, Integrator::Midpoint)
+    ->Apply(torusSizes)
+    ->Iterations(40)
+    ->UseManualTime();
+BENCHMARK_CAPTURE(deviceWall, torus_2d_linearized, kTorus, Integrator::Linearized)
+    ->Apply(torusSizes)
+    ->Iterations(40)
     ->UseManualTime();
 
 }  // namespace
