@@ -103,6 +103,13 @@ ForceProjectionKernel::ForceProjectionKernel(const vulkan::VulkanContext& contex
                 "projection partial sums"),
       mContext(context),
       mWorkgroupSize(options.workgroupSize),
+      mPartialKernels(context, {"project_force",
+                                project_force_spv,
+                                6,
+                                sizeof(shaders::ProjectForceParams),
+                                options.workgroupSize,
+                                {},
+                                {0, 1, 2}}),
       mSumKernel(context, vulkan::ComputeKernelSpec{"project_force_sum", project_force_sum_spv, 3,
                                                     sizeof(shaders::ProjectForceSumParams),
                                                     options.workgroupSize}) {}
@@ -152,22 +159,9 @@ void ForceProjectionKernel::record(vulkan::CommandSequence& sequence, const Mode
 
 const vulkan::ComputeKernel& ForceProjectionKernel::partialKernel(ModePrecision precision,
                                                                   std::uint32_t slots) const {
-    const bool half = precision == ModePrecision::Float16;
-    auto found = mPartialKernels.find({half, slots});
-    if (found == mPartialKernels.end()) {
-        const std::uint32_t gather = mQuantity == FaceQuantity::FaceField;
-        found = mPartialKernels
-                    .try_emplace({half, slots}, mContext,
-                                 vulkan::ComputeKernelSpec{"project_force",
-                                                           project_force_spv,
-                                                           6,
-                                                           sizeof(shaders::ProjectForceParams),
-                                                           mWorkgroupSize,
-                                                           {std::uint32_t(half), gather, slots},
-                                                           {0, 1, 2}})
-                    .first;
-    }
-    return found->second;
+    const std::uint32_t gather = mQuantity == FaceQuantity::FaceField;
+    return mPartialKernels.with(
+        {std::uint32_t(precision == ModePrecision::Float16), gather, slots});
 }
 
 }  // namespace modeflow::device

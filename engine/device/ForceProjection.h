@@ -12,8 +12,6 @@
 /// weights and density are read as texels (shaders/TexelAccess.glsl).
 
 #include <cstdint>
-#include <map>
-#include <utility>
 #include <vector>
 
 #include "engine/core/ModePrecision.h"
@@ -22,6 +20,7 @@
 #include "engine/simulation/ProjectionWeights.h"
 #include "engine/vulkan/ComputeKernel.h"
 #include "engine/vulkan/DeviceBuffer.h"
+#include "engine/vulkan/KernelVariants.h"
 
 namespace modeflow::vulkan {
 class CommandSequence;
@@ -80,8 +79,8 @@ private:
     vulkan::DeviceBuffer mPartials;
     const vulkan::VulkanContext& mContext;
     std::uint32_t mWorkgroupSize = 64;
-    /// By (float16, slots); recording, like CommandSequence, is for one thread at a time.
-    mutable std::map<std::pair<bool, std::uint32_t>, vulkan::ComputeKernel> mPartialKernels;
+    /// By (float16, gather, slots).
+    vulkan::KernelVariants mPartialKernels;
     vulkan::ComputeKernel mSumKernel;
 };
 

@@ -76,24 +76,12 @@ ModalKernels::ModalKernels(const vulkan::VulkanContext& context)
                           sizeof(shaders::AdvectSumParams), 64}),
       advectSparse(context, {"modal_advect_sparse", modal_advect_sparse_spv, 5,
                              sizeof(shaders::CombineParams), 64}),
-      mContext(context) {}
+      mUpdates(context, {"modal_update", modal_update_spv, 11, sizeof(shaders::ModalUpdateParams),
+                         updateWorkgroupSize(context)}) {}
 
 const vulkan::ComputeKernel& ModalKernels::update(std::uint32_t op, bool frozen,
                                                   bool lorentz) const {
-    const UpdateVariant variant{op, frozen, lorentz};
-    auto found = mUpdates.find(variant);
-    if (found == mUpdates.end())
-        found =
-            mUpdates
-                .try_emplace(variant, mContext,
-                             vulkan::ComputeKernelSpec{"modal_update",
-                                                       modal_update_spv,
-                                                       11,
-                                                       sizeof(shaders::ModalUpdateParams),
-                                                       updateWorkgroupSize(mContext),
-                                                       {op, frozen ? 1u : 0u, lorentz ? 1u : 0u}})
-                .first;
-    return found->second;
+    return mUpdates.with({op, frozen ? 1u : 0u, lorentz ? 1u : 0u});
 }
 
 }  // namespace modeflow::device

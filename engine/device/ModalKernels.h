@@ -5,10 +5,9 @@
 /// lavapipe offer; a device without it is refused with a clear message.
 
 #include <cstdint>
-#include <map>
-#include <tuple>
 
 #include "engine/vulkan/ComputeKernel.h"
+#include "engine/vulkan/KernelVariants.h"
 
 namespace modeflow::vulkan {
 class VulkanContext;
@@ -38,9 +37,7 @@ struct ModalKernels {
     const vulkan::ComputeKernel& update(std::uint32_t op, bool frozen, bool lorentz) const;
 
 private:
-    using UpdateVariant = std::tuple<std::uint32_t, bool, bool>;
-    const vulkan::VulkanContext& mContext;
-    mutable std::map<UpdateVariant, vulkan::ComputeKernel> mUpdates;
+    vulkan::KernelVariants mUpdates;
 };
 
 }  // namespace modeflow::device

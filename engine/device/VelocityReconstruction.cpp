@@ -55,7 +55,14 @@ ReconstructionKernel::ReconstructionKernel(const vulkan::VulkanContext& context,
       mDofCount(std::uint32_t(cache.faces.size())),
       mFaces(paddedDofFaces(context, cache)),
       mScratch(context, mFaces.bytes(), "reconstruction sums"),
-      mWorkgroupSize(workgroupSize) {}
+      mWorkgroupSize(workgroupSize),
+      mKernels(context, {"reconstruct_velocity",
+                         reconstruct_velocity_spv,
+                         6,
+                         sizeof(shaders::ReconstructVelocityParams),
+                         workgroupSize,
+                         {},
+                         {0, 3}}) {}
 
 vulkan::DeviceBuffer ReconstructionKernel::makeFaceField(std::string name) const {
     const std::vector<float> zeros(std::size_t(mGrid.faceTotal()), 0.0f);
@@ -94,32 +101,15 @@ void ReconstructionKernel::record(vulkan::CommandSequence& sequence, const ModeB
         params.firstMode = chunk.firstMode;
         const bool first = &chunk == &modes.chunks().front(),
                    last = &chunk == &modes.chunks().back();
-        const std::array<std::uint32_t, 5> constants{modes.precision() == ModePrecision::Float16,
-                                                     !first, last, chunk.modeCount,
-                                                     chunk.firstMode % 4};
+        // Float16 modes, a chunk after the first, the last chunk, its mode count, first mode % 4.
+        const std::vector<std::uint32_t> constants{modes.precision() == ModePrecision::Float16,
+                                                   !first, last, chunk.modeCount,
+                                                   chunk.firstMode % 4};
         const std::array<const vulkan::DeviceBuffer*, 6> buffers{
             &chunk.buffer, &modes.scales(), &v, &mFaces, &faceField, &mScratch};
-        indirect.after(d).dispatch(sequence, kernel(constants), buffers, params, groups[d]);
+        indirect.after(d).dispatch(sequence, mKernels.with(constants), buffers, params, groups[d]);
         ++d;
     }
-}
-
-const vulkan::ComputeKernel& ReconstructionKernel::kernel(
-    const std::array<std::uint32_t, 5>& key) const {
-    auto found = mKernels.find(key);
-    if (found == mKernels.end())
-        found =
-            mKernels
-                .try_emplace(key, mContext,
-                             vulkan::ComputeKernelSpec{"reconstruct_velocity",
-                                                       reconstruct_velocity_spv,
-                                                       6,
-                                                       sizeof(shaders::ReconstructVelocityParams),
-                                                       mWorkgroupSize,
-                                                       {key.begin(), key.end()},
-                                                       {0, 3}})
-                .first;
-    return found->second;
 }
 
 }  // namespace modeflow::device

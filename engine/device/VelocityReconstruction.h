@@ -7,9 +7,7 @@
 /// v stays on the device, so a modal step's output can be reconstructed in the same submission.
 /// The kernel reads 64-bit words: the device needs shaderInt64.
 
-#include <array>
 #include <cstdint>
-#include <map>
 #include <string>
 #include <vector>
 
@@ -18,6 +16,7 @@
 #include "engine/format/BasisCache.h"
 #include "engine/vulkan/ComputeKernel.h"
 #include "engine/vulkan/DeviceBuffer.h"
+#include "engine/vulkan/KernelVariants.h"
 
 namespace modeflow::vulkan {
 class CommandSequence;
@@ -54,10 +53,6 @@ public:
     std::uint32_t dofCount() const { return mDofCount; }
 
 private:
-    /// The pipeline for the shader's specialization constants (float16 modes, a chunk after the
-    /// first, the last chunk, the chunk's mode count, its first mode % 4), built on first use.
-    const vulkan::ComputeKernel& kernel(const std::array<std::uint32_t, 5>& constants) const;
-
     const vulkan::VulkanContext& mContext;
     MacGrid mGrid;
     std::uint32_t mDofCount = 0;
@@ -65,9 +60,9 @@ private:
     vulkan::DeviceBuffer
         mScratch;  ///< the sums of the chunks so far, in DOF order (as many floats as mFaces)
     std::uint32_t mWorkgroupSize = 64;
-    /// By the specialization constants; recording, like CommandSequence, is for one thread at a
-    /// time.
-    mutable std::map<std::array<std::uint32_t, 5>, vulkan::ComputeKernel> mKernels;
+    /// By the specialization constants (float16 modes, a chunk after the first, the last chunk,
+    /// the chunk's mode count, its first mode % 4).
+    vulkan::KernelVariants mKernels;
 };
 
 }  // namespace modeflow::device

@@ -6,7 +6,7 @@
 /// block, the workgroup size as specialization constant 0 and optional further uint constants 1…k
 /// (fixed at pipeline creation, so a shader's branches and loop counts on them fold away: lavapipe
 /// executes both sides of a runtime branch). Shaders declare `layout(local_size_x = 64,
-/// local_size_x_id = 0) in;` so the size written there is also the default (see PLATFORM.md).
+/// local_size_x_id = 0) in;` so the size written there is also the default (shaders/README.md).
 /// Buffers are bound by push descriptors at record time, so recording needs no descriptor pool and
 /// a kernel can be recorded any number of times.
 

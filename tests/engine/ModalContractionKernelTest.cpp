@@ -154,6 +154,19 @@ TEST_P(ModalContractionKernelTest, ManyModesEqualCpuApplyAcrossTheCombinesTiles)
     }
 }
 
+TEST_P(ModalContractionKernelTest, UpdatePipelinesAreMadeOncePerVariant) {
+    // modal_update.comp's operation and flags are specialization constants: one pipeline each,
+    // made when first recorded and kept.
+    const ModalKernels kernels(context());
+    const vulkan::ComputeKernel& begin = kernels.update(MODAL_OP_BEGIN, false, false);
+    EXPECT_EQ(&begin, &kernels.update(MODAL_OP_BEGIN, false, false));
+    EXPECT_NE(&begin, &kernels.update(MODAL_OP_MIDPOINT, false, false));
+    EXPECT_NE(&kernels.update(MODAL_OP_MIDPOINT, true, false),
+              &kernels.update(MODAL_OP_MIDPOINT, false, false));
+    EXPECT_NE(&kernels.update(MODAL_OP_MIDPOINT, false, true),
+              &kernels.update(MODAL_OP_MIDPOINT, false, false));
+}
+
 TEST(ModalContractionSplit, ChunksAboveTheStorageLimitGiveTheSameResult) {
     // 64 modes: 2016 pairs of 256 bytes, in tiles of 64 pairs (16 kB). A 100 kB limit splits them
     // into 6 chunks.

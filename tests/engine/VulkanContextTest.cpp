@@ -13,6 +13,7 @@
 #include "engine/vulkan/ComputeKernel.h"
 #include "engine/vulkan/DeviceBuffer.h"
 #include "engine/vulkan/DeviceSelector.h"
+#include "engine/vulkan/KernelVariants.h"
 #include "engine/vulkan/StagingArea.h"
 #include "engine/vulkan/VulkanError.h"
 #include "tests/support/VulkanTestContext.h"
@@ -212,6 +213,14 @@ TEST_P(VulkanContextTest, BuffersOfWholeTexelsCanBeReadAsTexels) {
         FAIL() << "a kernel with float binding 2 of 2 bindings was made";
     } catch (const Error& e) {
         EXPECT_NE(std::string(e.what()).find("float binding 2"), std::string::npos) << e.what();
+    }
+    // Variants are made when first asked for, with the same checks.
+    const vulkan::KernelVariants variants(context(), {"variant probe", {}, 2, 0, 64, {}, {2}});
+    try {
+        variants.with({1});
+        FAIL() << "a variant with texel binding 2 of 2 bindings was made";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("variant probe"), std::string::npos) << e.what();
     }
     try {
         const vulkan::ComputeKernel kernel(context(), {"probe", {}, 2, 0, 64, {}, {1}, {}, {1}});
