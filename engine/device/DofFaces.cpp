@@ -40,7 +40,7 @@ std::uint32_t groupCap(const vulkan::VulkanContext& context) {
     // its threads busy, and more only add calls (64^3 box, 262k up DOFs a buoyancy pass:
     // 4096 groups 1.9 ms, 64 groups 1.5 ms; README "Closed-form bases").
     if (context.properties().deviceType != VK_PHYSICAL_DEVICE_TYPE_CPU) return limit;
-    const std::uint64_t threads = std::max(1u, std::thread::hardware_concurrency());
+    static const std::uint64_t threads = std::max(1u, std::thread::hardware_concurrency());
     return std::uint32_t(std::min<std::uint64_t>(limit, kCpuGroupsPerThread * threads));
 }
 

@@ -51,30 +51,23 @@ ForceFieldKernel::ForceFieldKernel(const vulkan::VulkanContext& context, const B
       mUp(uploadUpDofs(context, mGrid, cache)),
       mSplats(context, VkDeviceSize(mMaxSplats) * sizeof(shaders::ForceSplatRecord),
               "force splats"),
-      mSplatForce(makeKernel(context, FORCE_STAGE_SPLATS, false, false, workgroupSize)),
-      mBuoyancy{{{makeKernel(context, FORCE_STAGE_BUOYANCY, false, false, workgroupSize),
-                  makeKernel(context, FORCE_STAGE_BUOYANCY, false, true, workgroupSize)},
-                 {makeKernel(context, FORCE_STAGE_BUOYANCY, true, false, workgroupSize),
-                  makeKernel(context, FORCE_STAGE_BUOYANCY, true, true, workgroupSize)}}} {
+      mKernels(context, {"force_field",
+                         force_field_spv,
+                         6,
+                         sizeof(shaders::ForceFieldParams),
+                         workgroupSize,
+                         {},
+                         {1},
+                         {},
+                         {2}}) {
     // Sized by the up list, not every DOF: on lavapipe each empty workgroup still costs a call.
     mUpGroups = groupsFor(context, mUp.count, workgroupSize);
 }
 
-vulkan::ComputeKernel ForceFieldKernel::makeKernel(const vulkan::VulkanContext& context,
-                                                   std::uint32_t stage, bool useMask,
-                                                   bool accumulate,
-                                                   std::uint32_t workgroupSize) const {
-    return vulkan::ComputeKernel(
-        context, vulkan::ComputeKernelSpec{
-                     "force_field",
-                     force_field_spv,
-                     6,
-                     sizeof(shaders::ForceFieldParams),
-                     workgroupSize,
-                     {stage, std::uint32_t(mGrid.dim), std::uint32_t(mScale), useMask, accumulate},
-                     {1},
-                     {},
-                     {2}});
+const vulkan::ComputeKernel& ForceFieldKernel::kernel(std::uint32_t stage, bool useMask,
+                                                      bool accumulate) const {
+    return mKernels.with({stage, std::uint32_t(mGrid.dim), std::uint32_t(mScale), useMask ? 1u : 0u,
+                          accumulate ? 1u : 0u});
 }
 
 void ForceFieldKernel::setSplats(std::span<const ForceSplat> splats) {
@@ -123,13 +116,13 @@ void ForceFieldKernel::record(vulkan::CommandSequence& sequence, double buoyancy
         &mFaces, &mUp.buffer, &temperature, fluidMask ? fluidMask : &temperature, &mSplats, &g};
     const bool buoyant = buoyancy != 0.0 && mUp.count > 0;
     if (mSplatCount > 0)
-        sequence.dispatch(mSplatForce, buffers, params, mGroups);
+        sequence.dispatch(kernel(FORCE_STAGE_SPLATS, false, false), buffers, params, mGroups);
     else if (!buoyant || !upDofsOnly)
         sequence.fill(g, VkDeviceSize(mDofCount) * sizeof(float), 0u);
     // After splats the buoyancy adds to g; otherwise it assigns the up DOFs (zeroed or unread).
     if (buoyant)
-        sequence.dispatch(mBuoyancy[fluidMask ? 1 : 0][mSplatCount > 0 ? 1 : 0], buffers, params,
-                          mUpGroups);
+        sequence.dispatch(kernel(FORCE_STAGE_BUOYANCY, fluidMask != nullptr, mSplatCount > 0),
+                          buffers, params, mUpGroups);
 }
 
 }  // namespace modeflow::device

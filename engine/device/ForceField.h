@@ -5,7 +5,6 @@
 /// (a smoke-grid buffer, e.g. SmokeState::temperature(), with its packed fluid mask) plus
 /// stirring splats. The result feeds ForceProjectionKernel with FaceQuantity::Density.
 
-#include <array>
 #include <cstdint>
 #include <span>
 
@@ -14,6 +13,7 @@
 #include "engine/simulation/ForceSplat.h"
 #include "engine/vulkan/ComputeKernel.h"
 #include "engine/vulkan/DeviceBuffer.h"
+#include "engine/vulkan/KernelVariants.h"
 
 namespace modeflow::vulkan {
 class CommandSequence;
@@ -50,10 +50,8 @@ public:
 
 private:
     /// force_field.comp's pipeline for `stage` (FORCE_STAGE_*), with or without the fluid mask;
-    /// the buoyancy adding to g (after splats) or assigning it.
-    vulkan::ComputeKernel makeKernel(const vulkan::VulkanContext& context, std::uint32_t stage,
-                                     bool useMask, bool accumulate,
-                                     std::uint32_t workgroupSize) const;
+    /// the buoyancy adding to g (after splats) or assigning it. Made on first use.
+    const vulkan::ComputeKernel& kernel(std::uint32_t stage, bool useMask, bool accumulate) const;
 
     MacGrid mGrid;
     MacGrid mSmoke;
@@ -73,9 +71,7 @@ private:
                                const BasisCache& cache);
     UpDofs mUp;
     vulkan::DeviceBuffer mSplats;
-    vulkan::ComputeKernel mSplatForce;
-    /// The buoyancy stage, [masked][accumulate].
-    std::array<std::array<vulkan::ComputeKernel, 2>, 2> mBuoyancy;
+    vulkan::KernelVariants mKernels;
 };
 
 }  // namespace modeflow::device
