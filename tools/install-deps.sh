@@ -4,7 +4,7 @@
 set -euo pipefail
 
 packages=(
-    build-essential cmake ninja-build pkg-config
+    build-essential cmake ninja-build pkg-config ccache
     libeigen3-dev libspectra-dev libsuitesparse-dev libopenblas0-pthread libfftw3-dev
     slepc-dev petsc-dev         # sliced eigensolves: SLEPc, PETSc with MUMPS, Open MPI (mpirun)
     libopenvdb-dev libboost-iostreams-dev libtbb-dev

@@ -41,9 +41,10 @@ std::uintmax_t inputFileSize(const std::filesystem::path& path, std::string_view
     const std::string name = path.string();
     std::error_code ec;
     if (auto why = whyNotARegularFile(path)) {
-        throw Error(name + ": " +
-                    (std::filesystem::exists(path, ec) ? *why + ", not " + withArticle(what)
-                                                       : "no such " + std::string(what)));
+        // "is a directory, not a scene file"; a path that cannot be reached says why.
+        if (*why == "does not exist") throw Error(name + ": no such " + std::string(what));
+        throw Error(name + ": " + *why +
+                    (why->rfind("is ", 0) == 0 ? ", not " + withArticle(what) : ""));
     }
     const std::uintmax_t size = std::filesystem::file_size(path, ec);
     if (ec)

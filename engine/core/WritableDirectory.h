@@ -14,4 +14,9 @@ namespace modeflow {
 void ensureWritableDirectory(const std::filesystem::path& dir, const std::string& what,
                              const std::string& hint);
 
+/// Checks that `file` can be written later (a screenshot at the end of a session): it is no
+/// folder, and its folder exists and takes a file. Creates nothing.
+/// @throw modeflow::Error "<what> <file>: ..." saying which of these fails.
+void requireWritableFile(const std::filesystem::path& file, const std::string& what);
+
 }  // namespace modeflow

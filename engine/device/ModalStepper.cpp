@@ -147,17 +147,18 @@ void ModalStepper::uploadModel(const DeviceModel& model) {
 }
 
 void ModalStepper::upload(vulkan::DeviceBuffer& buffer, const Eigen::VectorXd& values, int part,
-                          const char* what) const {
+                          const char* what, VkDeviceSize offset) const {
     if (values.size() != size())
         throw Error(std::string("modal ") + what + " has " + std::to_string(values.size()) +
                     " entries, the basis " + std::to_string(size()));
     const std::vector<float> rounded(values.begin(), values.end());
-    buffer.upload<float>(rounded, VkDeviceSize(part) * mStride * sizeof(float));
+    buffer.upload<float>(rounded, offset + VkDeviceSize(part) * mStride * sizeof(float));
 }
 
-Eigen::VectorXd ModalStepper::download(const vulkan::DeviceBuffer& buffer, int part) const {
+Eigen::VectorXd ModalStepper::download(const vulkan::DeviceBuffer& buffer, int part,
+                                       VkDeviceSize offset) const {
     std::vector<float> values(static_cast<std::size_t>(size()));
-    buffer.download<float>(values, VkDeviceSize(part) * mStride * sizeof(float));
+    buffer.download<float>(values, offset + VkDeviceSize(part) * mStride * sizeof(float));
     return Eigen::Map<const Eigen::VectorXf>(values.data(), size()).template cast<double>();
 }
 
@@ -194,6 +195,65 @@ void ModalStepper::dropHeldRhs() {
 
 VkDeviceSize ModalStepper::heldRateOffset() const {
     return VkDeviceSize(2 * ANDERSON_DEPTH + 3) * mParts * mStride * sizeof(float);
+}
+
+VkDeviceSize ModalStepper::rhsBeforeOffset() const {
+    return VkDeviceSize(2 * ANDERSON_DEPTH + 2) * mParts * mStride * sizeof(float);
+}
+
+std::vector<Eigen::VectorXd> ModalStepper::warmStart() const {
+    shaders::ModalStatus raw{};
+    mStatus.download<shaders::ModalStatus>(std::span(&raw, 1));
+    if (raw.heldRhs == 0 || !warms()) return {};
+    // The R modal_update.comp's BEGIN reads: r, less the Lorentz part with MHD (its rhs()).
+    std::vector<float> r(std::size_t((mMhd ? 3 : 1) * mStride));
+    mRhs.download<float>(r);
+    Eigen::VectorXd newest(dimension());
+    for (int p = 0; p < int(mParts); ++p)
+        for (int k = 0; k < size(); ++k) {
+            const std::size_t at = std::size_t(p) * mStride + std::size_t(k);
+            newest[p * size() + k] = p == 0 && mLorentz ? r[at] - r[2 * mStride + k] : r[at];
+        }
+    std::vector<Eigen::VectorXd> rhs{newest};
+    if (raw.heldRhs >= 2) {
+        Eigen::VectorXd before(dimension());
+        for (int p = 0; p < int(mParts); ++p)
+            before.segment(p * size(), size()) = download(mHistory, p, rhsBeforeOffset());
+        rhs.push_back(before);
+    }
+    return rhs;
+}
+
+void ModalStepper::setWarmStart(const std::vector<Eigen::VectorXd>& rhs) {
+    const auto hold = [&](std::uint32_t count) {  // the held rate (its own word) stays
+        mStatus.upload<std::uint32_t>(std::span(&count, 1),
+                                      offsetof(shaders::ModalStatus, heldRhs));
+    };
+    hold(0);
+    if (rhs.empty()) return;
+    if (!warms())
+        throw Error(
+            "modal step: only the midpoint rule with its warm start holds right-hand sides "
+            "between steps");
+    if (rhs.size() > 2)
+        throw Error("modal step: a warm start of " + std::to_string(rhs.size()) +
+                    " right-hand sides (at most 2)");
+    for (const Eigen::VectorXd& r : rhs) {
+        if (r.size() != dimension())
+            throw Error("modal step: a warm-start right-hand side of " + std::to_string(r.size()) +
+                        " entries, the state " + std::to_string(dimension()));
+        if (!r.allFinite()) throw Error("modal step: the warm start is not finite");
+    }
+    // BEGIN reads r = [v part; F part; Lorentz part] as r_v - r_Lorentz: the Lorentz part is
+    // zeroed, so the difference is the value given, exactly.
+    if (mLorentz) upload(mRhs, Eigen::VectorXd::Zero(size()), 2, "warm start");
+    for (int p = 0; p < int(mParts); ++p) {
+        upload(mRhs, rhs[0].segment(p * size(), size()), p, "warm start");
+        if (rhs.size() == 2)
+            upload(mHistory, rhs[1].segment(p * size(), size()), p, "warm start",
+                   rhsBeforeOffset());
+    }
+    hold(std::uint32_t(rhs.size()));
 }
 
 Eigen::VectorXd ModalStepper::heldRate() const {

@@ -31,6 +31,7 @@
 #include <memory>
 #include <optional>
 #include <variant>
+#include <vector>
 
 #include <Eigen/Core>
 
@@ -119,6 +120,14 @@ public:
     /// @throw modeflow::Error on a wrong size, a non-finite rate, or another scheme.
     Eigen::VectorXd heldRate() const;
     void setHeldRate(const Eigen::VectorXd& rate);
+    /// The midpoint rule's warm start (DeviceStepSettings::warmStart): the right-hand sides R the
+    /// last converged steps ended with, newest first (none, one or two vectors of dimension()
+    /// values; none with another scheme or without the warm start), and its restore (none: start
+    /// the next step cold). Between submissions; set after the state, which drops it.
+    /// @throw modeflow::Error for more than two vectors, a wrong size, a non-finite value, or
+    /// another scheme.
+    std::vector<Eigen::VectorXd> warmStart() const;
+    void setWarmStart(const std::vector<Eigen::VectorXd>& rhs);
     /// The device vectors, for kernels that read v (or F) or write f in the same submission: the
     /// state buffer begins with v (N floats, padded), the force buffer with f.
     const vulkan::DeviceBuffer& stateBuffer() const { return mState; }
@@ -154,10 +163,12 @@ private:
                       double h, bool indirect, bool frozen = false) const;
     /// @throw modeflow::Error for the linearized rule with MHD.
     void requireSchemeFits(Integrator scheme) const;
-    /// Uploads `values` to part `part` of a state-shaped buffer.
+    /// Uploads `values` to part `part` of a state-shaped buffer (one that begins `offset` bytes
+    /// into `buffer`).
     void upload(vulkan::DeviceBuffer& buffer, const Eigen::VectorXd& values, int part,
-                const char* what) const;
-    Eigen::VectorXd download(const vulkan::DeviceBuffer& buffer, int part) const;
+                const char* what, VkDeviceSize offset = 0) const;
+    Eigen::VectorXd download(const vulkan::DeviceBuffer& buffer, int part,
+                             VkDeviceSize offset = 0) const;
     /// Mass and decay rates of `model` as state-shaped float vectors.
     void uploadModel(const DeviceModel& model);
     /// The indirect arguments of an implicit iteration (its dispatches' group counts, twice).
@@ -165,8 +176,11 @@ private:
     /// The state, the mass in R or the scheme was changed from the host: the next step starts
     /// cold (the R or rate held is not one near the new state).
     void dropHeldRhs();
-    /// Where the held rate lies in mHistory.
+    /// Where the held rate, and the warm start's R before the last, lie in mHistory.
     VkDeviceSize heldRateOffset() const;
+    VkDeviceSize rhsBeforeOffset() const;
+    /// Whether the steps recorded start from a warm start.
+    bool warms() const { return mSettings.scheme == Integrator::Midpoint && mSettings.warmStart; }
     /// A part of `whole`, as the contractions bind it.
     vulkan::DeviceBuffer part(const vulkan::DeviceBuffer& whole, int index, const char* name) const;
 

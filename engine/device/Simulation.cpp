@@ -12,6 +12,8 @@ namespace modeflow::device {
 namespace {
 
 constexpr int kMaxSubsteps = 16;
+/// Steps of at most 8 iterations after which the substeps are halved again.
+constexpr int kEasyStepsToHalve = 50;
 
 /// What the device cannot run, checked before any upload.
 SimulationSettings supported(SimulationSettings settings) {
@@ -67,6 +69,26 @@ void Simulation::restore(double time, const Eigen::VectorXd& v, const SmokeField
     mSmoke.upload(density, temperature);
     mTime = time;
     mStep = std::lround(time / mSettings.dt);
+    mSubsteps = 1;
+    mEasySteps = 0;
+}
+
+StepCarry Simulation::carry() const {
+    return {mStepper.heldRate(), mStepper.warmStart(), mSubsteps, mEasySteps};
+}
+
+void Simulation::setCarry(const StepCarry& carry) {
+    // A power of two up to kMaxSubsteps, as advanceSteps makes them.
+    const bool schedule = carry.substeps >= 1 && carry.substeps <= kMaxSubsteps &&
+                          (carry.substeps & (carry.substeps - 1)) == 0 && carry.easySteps >= 0 &&
+                          carry.easySteps < kEasyStepsToHalve;
+    if (!schedule)
+        throw Error("simulation: " + std::to_string(carry.substeps) + " modal substeps and " +
+                    std::to_string(carry.easySteps) + " easy steps are no schedule of this device");
+    mStepper.setHeldRate(carry.heldRate);
+    mStepper.setWarmStart(carry.warmRhs);
+    mSubsteps = carry.substeps;
+    mEasySteps = carry.easySteps;
 }
 
 void Simulation::setSplats(std::span<const ForceSplat> splats) {
@@ -175,7 +197,7 @@ FrameStats Simulation::advanceSteps(int steps) {
         if (failed > 0) {
             mSubsteps = std::min(2 * mSubsteps, kMaxSubsteps);
             mEasySteps = 0;
-        } else if (mSubsteps > 1 && status.iterations <= 8 && ++mEasySteps >= 50) {
+        } else if (mSubsteps > 1 && status.iterations <= 8 && ++mEasySteps >= kEasyStepsToHalve) {
             mSubsteps /= 2;
             mEasySteps = 0;
         }

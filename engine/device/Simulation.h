@@ -42,8 +42,8 @@ public:
 
     void setVelocity(const Eigen::VectorXd& v) override { mStepper.setVelocity(v); }
     Eigen::VectorXd velocity() const override { return mStepper.velocity(); }
-    Eigen::VectorXd heldRate() const override { return mStepper.heldRate(); }
-    void setHeldRate(const Eigen::VectorXd& rate) override { mStepper.setHeldRate(rate); }
+    StepCarry carry() const override;
+    void setCarry(const StepCarry& carry) override;
     Eigen::VectorXd magneticField() const override;
     void setMagneticField(const Eigen::VectorXd& f) override { mStepper.setMagneticField(f); }
     std::vector<double> faceMagneticField() const override;

@@ -61,6 +61,20 @@ Image resampled(const Image& image, int width, int height) {
     return out;
 }
 
+std::vector<std::size_t> evenlySpaced(std::size_t count, std::size_t most) {
+    if (most < 2)
+        throw Error("contact sheet: at most " + std::to_string(most) + " frames (at least 2)");
+    std::vector<std::size_t> chosen;
+    if (count <= most) {
+        for (std::size_t i = 0; i < count; ++i) chosen.push_back(i);
+        return chosen;
+    }
+    // Index i·(count − 1)/(most − 1), rounded: distinct, as the step is above 1.
+    for (std::size_t i = 0; i < most; ++i)
+        chosen.push_back((i * (count - 1) + (most - 1) / 2) / (most - 1));
+    return chosen;
+}
+
 Image contactSheet(std::span<const Image> frames, int columns, const ContactSheetOptions& o) {
     const auto fail = [](const std::string& why) { return Error("contact sheet: " + why); };
     if (frames.empty()) throw fail("no frames");

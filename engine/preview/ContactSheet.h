@@ -4,6 +4,7 @@
 /// a thin gap, each numbered in its top left corner (DigitFont.h), so a run can be judged at a
 /// glance.
 
+#include <cstddef>
 #include <span>
 #include <vector>
 
@@ -27,6 +28,11 @@ struct ContactSheetOptions {
 ///        wrong count or a negative entry.
 Image contactSheet(std::span<const Image> frames, int columns,
                    const ContactSheetOptions& options = {});
+
+/// Which of `count` frames a sheet of at most `most` shows: all when count ≤ most, else `most`
+/// evenly spaced, the first and the last among them (indices in increasing order).
+/// @throw modeflow::Error for `most` below 2.
+std::vector<std::size_t> evenlySpaced(std::size_t count, std::size_t most);
 
 /// `image` resampled to `width` × `height` by area averaging (each output pixel is the mean of
 /// the input area it covers), which neither aliases when shrinking nor blurs when growing.

@@ -49,8 +49,12 @@ void ModalStepper::setState(const Eigen::VectorXd& x) {
     mIntegrator->dropHeldRate();
 }
 
-void ModalStepper::setHeldRate(const Eigen::VectorXd& rate) {
-    mIntegrator->setHeldRate(rate);
+void ModalStepper::setCarry(const StepCarry& carry) {
+    if (!carry.warmRhs.empty() || carry.substeps != 1 || carry.easySteps != 0)
+        throw Error(
+            "modal step: the CPU reference takes no warm start nor substeps (a device "
+            "run's carry)");
+    mIntegrator->setHeldRate(carry.heldRate);
 }
 
 void ModalStepper::correctVelocity(const Eigen::VectorXd& dv) {

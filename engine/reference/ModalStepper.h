@@ -14,6 +14,7 @@
 #include "engine/dynamics/StructuralCoefficients.h"
 #include "engine/simulation/ModalStepping.h"
 #include "engine/simulation/SimulationSettings.h"
+#include "engine/simulation/StepCarry.h"
 
 namespace modeflow::reference {
 
@@ -49,9 +50,12 @@ public:
     void setVelocity(const Eigen::VectorXd& v);
     /// v += dv within a run (moving obstacles): the held rate stays.
     void correctVelocity(const Eigen::VectorXd& dv);
-    /// The linearized rule's held rate (ModalIntegrator::heldRate; empty: none), and its restore.
-    const Eigen::VectorXd& heldRate() const { return mIntegrator->heldRate(); }
-    void setHeldRate(const Eigen::VectorXd& rate);
+    /// What the steps carry (Simulator::carry): the linearized rule's held rate
+    /// (ModalIntegrator::heldRate) alone, as the CPU has no warm start nor substeps; and its
+    /// restore. @throw modeflow::Error for a warm start or substeps (a device run's carry), or a
+    /// rate the integrator refuses.
+    StepCarry carry() const { return {mIntegrator->heldRate(), {}, 1, 0}; }
+    void setCarry(const StepCarry& carry);
     /// F; empty without MHD.
     Eigen::VectorXd magneticField() const;
     void setMagneticField(const Eigen::VectorXd& f);

@@ -25,8 +25,8 @@ public:
 
     void setVelocity(const Eigen::VectorXd& v) override { mStepper.setVelocity(v); }
     Eigen::VectorXd velocity() const override { return mStepper.velocity(); }
-    Eigen::VectorXd heldRate() const override { return mStepper.heldRate(); }
-    void setHeldRate(const Eigen::VectorXd& rate) override { mStepper.setHeldRate(rate); }
+    StepCarry carry() const override { return mStepper.carry(); }
+    void setCarry(const StepCarry& carry) override { mStepper.setCarry(carry); }
     void restore(double time, const Eigen::VectorXd& v, const SmokeFields& smoke) override;
     Eigen::VectorXd magneticField() const override { return mStepper.magneticField(); }
     void setMagneticField(const Eigen::VectorXd& f) override { mStepper.setMagneticField(f); }

@@ -10,6 +10,7 @@
 #include <string>
 #include <string_view>
 #include <utility>
+#include <vector>
 
 #include "engine/core/AtomicFile.h"
 #include "engine/core/BinaryCodec.h"
@@ -21,8 +22,13 @@ namespace {
 
 constexpr char kMagic[16] = {'M', 'O', 'D', 'E', 'F', 'L', 'O', 'W',
                              '-', 'R', 'E', 'S', 'U', 'M', 'E', '\0'};
-/// 2: the magnetic field after the velocity; 3: XXH3; 4: the held rate after the field.
-constexpr std::uint32_t kVersion = 4;
+/// 2: the magnetic field after the velocity; 3: XXH3; 4: the held rate after the field; 5: the
+/// whole step carry (warm start, substeps) in its place.
+constexpr std::uint32_t kVersion = 5;
+/// The most warm-start vectors a stepper holds (StepCarry::warmRhs).
+constexpr std::uint64_t kMaxWarmRhs = 2;
+/// The most modal substeps a run takes per step (device::Simulation).
+constexpr std::uint32_t kMaxSubsteps = 1u << 10;
 /// The largest checkpoint read (64 GiB): the modal state and two fields of the largest smoke grid a
 /// scene may ask for fit, and a damaged file cannot make the reader ask for terabytes.
 constexpr std::uintmax_t kMaxCheckpointBytes = std::uintmax_t{1} << 36;
@@ -79,7 +85,12 @@ void writeCheckpoint(const std::filesystem::path& path, const Checkpoint& checkp
     w.pod(checkpoint.time);
     w.array(checkpoint.velocity.data(), std::size_t(checkpoint.velocity.size()));
     w.array(checkpoint.magnetic.data(), std::size_t(checkpoint.magnetic.size()));
-    w.array(checkpoint.heldRate.data(), std::size_t(checkpoint.heldRate.size()));
+    const StepCarry& carry = checkpoint.carry;
+    w.array(carry.heldRate.data(), std::size_t(carry.heldRate.size()));
+    w.pod(std::uint64_t(carry.warmRhs.size()));
+    for (const Eigen::VectorXd& r : carry.warmRhs) w.array(r.data(), std::size_t(r.size()));
+    w.pod(std::uint32_t(carry.substeps));
+    w.pod(std::uint32_t(carry.easySteps));
     w.vector(checkpoint.smoke.density);
     w.vector(checkpoint.smoke.temperature);
     ByteWriter checksum;
@@ -107,18 +118,38 @@ Checkpoint readCheckpoint(const std::filesystem::path& path) {
         fail(path, "its time is not a non-negative number");
     checkpoint.velocity = modalVector(reader);
     checkpoint.magnetic = modalVector(reader);
-    checkpoint.heldRate = modalVector(reader);
-    if (checkpoint.heldRate.size() != 0 && checkpoint.heldRate.size() != checkpoint.velocity.size())
+    StepCarry& carry = checkpoint.carry;
+    carry.heldRate = modalVector(reader);
+    if (carry.heldRate.size() != 0 && carry.heldRate.size() != checkpoint.velocity.size())
         fail(path, "its held rate and velocity sizes differ");
+    const auto warm = reader.pod<std::uint64_t>();
+    if (warm > kMaxWarmRhs) fail(path, "its warm start holds more than two right-hand sides");
+    for (std::uint64_t i = 0; i < warm; ++i) {
+        carry.warmRhs.push_back(modalVector(reader));
+        if (carry.warmRhs.back().size() != checkpoint.velocity.size() + checkpoint.magnetic.size())
+            fail(path, "its warm start and state sizes differ");
+    }
+    const auto substeps = reader.pod<std::uint32_t>(), easy = reader.pod<std::uint32_t>();
+    if (substeps < 1 || substeps > kMaxSubsteps || easy > kMaxSubsteps * 1000u)
+        fail(path, "its substep count is out of range");
+    carry.substeps = int(substeps);
+    carry.easySteps = int(easy);
     // No step can continue from them; refused here, naming the file, not by the simulator.
-    for (const auto& [values, what] : {std::pair{&checkpoint.velocity, "velocity"},
-                                       std::pair{&checkpoint.magnetic, "magnetic field"},
-                                       std::pair{&checkpoint.heldRate, "held rate"}})
-        if (!values->allFinite()) fail(path, std::string("its modal ") + what + " is not finite");
+    std::vector<std::pair<const Eigen::VectorXd*, std::string>> modal{
+        {&checkpoint.velocity, "velocity"},
+        {&checkpoint.magnetic, "magnetic field"},
+        {&carry.heldRate, "held rate"}};
+    for (const Eigen::VectorXd& r : carry.warmRhs) modal.emplace_back(&r, "warm start");
+    for (const auto& [values, what] : modal)
+        if (!values->allFinite()) fail(path, "its modal " + what + " is not finite");
     checkpoint.smoke.density = reader.vector<double>();
     checkpoint.smoke.temperature = reader.vector<double>();
     if (checkpoint.smoke.density.size() != checkpoint.smoke.temperature.size())
         fail(path, "density and temperature sizes differ");
+    for (const auto& [field, what] : {std::pair{&checkpoint.smoke.density, "density"},
+                                      std::pair{&checkpoint.smoke.temperature, "temperature"}})
+        if (!std::all_of(field->begin(), field->end(), [](double c) { return std::isfinite(c); }))
+            fail(path, std::string("its smoke ") + what + " is not finite");
     if (!reader.atEnd()) fail(path, "bytes follow its smoke fields");
     return checkpoint;
 }

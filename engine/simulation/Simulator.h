@@ -17,6 +17,7 @@
 #include "engine/simulation/MovingObstacle.h"
 #include "engine/simulation/SimulationSettings.h"
 #include "engine/simulation/SmokeFields.h"
+#include "engine/simulation/StepCarry.h"
 
 namespace modeflow {
 
@@ -31,13 +32,13 @@ public:
     /// Continues from a saved state (a resumed run): the time, the modal velocity and the smoke.
     /// @throw modeflow::Error on wrong sizes.
     virtual void restore(double time, const Eigen::VectorXd& v, const SmokeFields& smoke) = 0;
-    /// What the integrator carries from one step to the next beyond v: the linearized rule's held
-    /// rate (engine/dynamics/ModalIntegrator.h), empty when none is held (any other scheme, the
-    /// first step, after setVelocity or restore). A checkpoint saves it and a resumed run sets it
+    /// What the simulator carries from one step to the next beyond its state (StepCarry.h);
+    /// nothing after setVelocity or restore. A checkpoint saves it and a resumed run sets it
     /// after restore(), so that it continues bit for bit.
-    virtual Eigen::VectorXd heldRate() const = 0;
-    /// @throw modeflow::Error on a wrong size, a non-finite rate, or a scheme that holds none.
-    virtual void setHeldRate(const Eigen::VectorXd& rate) = 0;
+    virtual StepCarry carry() const = 0;
+    /// @throw modeflow::Error on wrong sizes, non-finite values, a rate or warm start the scheme
+    /// holds none of, or a substep schedule the backend does not take.
+    virtual void setCarry(const StepCarry& carry) = 0;
     /// MHD (seed §6.3.5): the modal magnetic field F (N values in the velocity basis); empty
     /// when the run simulates none. The defaults are those of a runtime without MHD.
     virtual Eigen::VectorXd magneticField() const { return {}; }

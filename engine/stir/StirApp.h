@@ -27,6 +27,9 @@
 
 namespace modeflow::stir {
 
+/// The window's first size unless one is asked for: smaller on a CPU device (StirOptions).
+inline constexpr int kWindowWidth = 1280, kWindowHeight = 720;
+
 struct StirOptions {
     /// The window's first size, screen units (runStir with a window). Unset: 1280 × 720, or
     /// 960 × 540 on a CPU device (lavapipe), where drawing costs per pixel and the smaller window

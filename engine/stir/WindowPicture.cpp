@@ -2,11 +2,16 @@
 
 #include "engine/stir/WindowPicture.h"
 
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <string>
 #include <vector>
 
 #include "engine/core/Error.h"
 #include "engine/preview/PngWriter.h"
 #include "engine/stir/StirKeys.h"
+#include "engine/vulkan/VulkanContext.h"
 
 namespace modeflow::stir {
 namespace {
@@ -27,12 +32,30 @@ std::vector<display::TextBlock> overlayText(const PictureExtras& extras, int sca
 
 }  // namespace
 
+void requirePictureFits(const vulkan::VulkanContext& context, int width, int height,
+                        const std::string& what) {
+    constexpr double kBytesPerPixel = 4.0;  // packed RGBA
+    const VkDeviceSize limit = context.storageBufferLimit();
+    const double bytes = kBytesPerPixel * double(width) * double(height);
+    if (bytes <= double(limit)) return;
+    // The same shape shrunk until it fits.
+    const double shrink = std::sqrt(double(limit) / bytes);
+    const int w = std::max(1, int(std::floor(width * shrink))),
+              h = std::max(1, int(std::floor(height * shrink)));
+    throw Error(what + ": a picture of " + std::to_string(width) + " × " + std::to_string(height) +
+                " pixels takes " + std::to_string(std::uint64_t(bytes)) +
+                " bytes, more than the largest storage buffer of this device (" +
+                std::to_string(limit) + " bytes); at this shape it takes at most " +
+                std::to_string(w) + " × " + std::to_string(h));
+}
+
 WindowPicture::WindowPicture(const vulkan::VulkanContext& context)
     : mContext(context), mKernels(context), mOverlay(context), mSequence(context) {}
 
 display::DisplayTarget WindowPicture::begin(const PictureExtras& extras, VkExtent2D size,
                                             const display::Viewport& viewport, bool blueFirst) {
     if (!mPixels || size.width != mExtent.width || size.height != mExtent.height) {
+        requirePictureFits(mContext, int(size.width), int(size.height), "the window");
         mPixels = std::make_unique<vulkan::DeviceBuffer>(
             mContext, VkDeviceSize(size.width) * size.height * 4, "window picture");
         mExtent = size;

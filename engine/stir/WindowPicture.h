@@ -27,6 +27,13 @@ struct PictureExtras {
     double energy = 0.0;     ///< ½|v|², which sets the arrows' scale
 };
 
+/// Refuses a picture of width × height pixels larger than one storage buffer of `context`'s
+/// device, saying how large it may be at that shape; `what` names what set the size (an option,
+/// "the window").
+/// @throw modeflow::Error "WHAT: a picture of W × H pixels takes B bytes, more than ...".
+void requirePictureFits(const vulkan::VulkanContext& context, int width, int height,
+                        const std::string& what);
+
 class WindowPicture {
 public:
     /// Draws on `context`, which must outlive it.

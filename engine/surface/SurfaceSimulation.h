@@ -42,9 +42,9 @@ public:
 
     double time() const { return mTime; }
     Eigen::VectorXd velocity() const { return mStepper.velocity(); }
-    /// The linearized rule's held rate (Simulator::heldRate), and its restore after restore().
-    const Eigen::VectorXd& heldRate() const { return mStepper.heldRate(); }
-    void setHeldRate(const Eigen::VectorXd& rate) { mStepper.setHeldRate(rate); }
+    /// What the steps carry (Simulator::carry), and its restore after restore().
+    StepCarry carry() const { return mStepper.carry(); }
+    void setCarry(const StepCarry& carry) { mStepper.setCarry(carry); }
     const SurfaceDye& dye() const { return mDye; }
     /// The velocity at the vertices, x, y, z per vertex.
     std::vector<double> vertexVelocity() const;

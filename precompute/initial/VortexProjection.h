@@ -19,12 +19,15 @@ using VelocityField = std::function<Vec3(const Vec3&)>;
 /// Segments of the discretized ring centre line in the 3D Biot–Savart sum.
 inline constexpr int kRingSegments = 128;
 
-/// Velocity of the summed vortices at x. 2D (dim 2, x[2] ignored): Lamb–Oseen vortices,
-/// u = Γ/(2π r²)(1 − exp(−r²/σ²)) (−y', x'), counter-clockwise for Γ > 0. 3D: vortex rings by
-/// the Biot–Savart integral over kRingSegments chords with Rosenhead–Moore core σ,
-/// u = Γ/4π Σ dl × (x − p) / (|x − p|² + σ²)^{3/2}, the ring turning right-handedly about its
-/// normal (so it travels along +normal for Γ > 0).
-Vec3 vortexVelocity(std::span<const VortexSpec> vortices, int dim, const Vec3& x);
+/// Velocity of the summed vortices at x on `grid` (its dim, and its periodic axes). 2D (x[2]
+/// ignored): Lamb–Oseen vortices, u = Γ/(2π r²)(1 − exp(−r²/σ²)) (−y', x'), counter-clockwise for
+/// Γ > 0. 3D: vortex rings by the Biot–Savart integral over kRingSegments chords with
+/// Rosenhead–Moore core σ, u = Γ/4π Σ dl × (x − p) / (|x − p|² + σ²)^{3/2}, the ring turning
+/// right-handedly about its normal (so it travels along +normal for Γ > 0). Along a periodic axis
+/// a vortex acts with its periodic images (2D: their sum in closed form; 3D: each chord's image
+/// nearest x), so the field wraps the seams: a vortex centred on a seam is the same vortex as one
+/// in the middle of the grid.
+Vec3 vortexVelocity(std::span<const VortexSpec> vortices, const GridSpec& grid, const Vec3& x);
 
 /// Fluxes F_f = ∫_{f∩Ω} u·n of u through the cache's face DOFs (`cache.faces` order): the mean of
 /// u·n by a Gauss rule (2 points per tangential axis) over the whole face times |f ∩ Ω|, which is

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "precompute/scene/SceneLoader.h"
 
@@ -100,8 +101,10 @@ void checkForcingFitsScene(const TomlReader& reader, const Section& s, const For
                             " is beyond the basis ([basis] has " + std::to_string(modeCount) +
                             " velocity modes)",
                         s.table.get("hold_modes"));
-    if (forcing.holdModes.size() == 1 && forcing.holdModes[0].first == 1 &&
-        forcing.holdModes[0].last == modeCount)
+    // However the list splits them ("1-5,6-12"): its ranges are sorted and disjoint (ModeList).
+    long long held = 0;
+    for (const ModeRange& range : forcing.holdModes) held += range.last - range.first + 1;
+    if (!forcing.holdModes.empty() && held >= modeCount)
         reader.fail(s, "hold_modes", "holds every mode of the basis: nothing would move",
                     s.table.get("hold_modes"));
 }

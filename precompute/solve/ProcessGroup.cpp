@@ -6,18 +6,11 @@
 #include <slepcsys.h>
 
 #include "engine/core/Error.h"
+#include "engine/core/LaunchedRank.h"
 #include "engine/core/LibraryLeaks.h"
 
 namespace modeflow {
 namespace {
-
-/// Open MPI's mpirun, MPICH's hydra and PMIx launchers (Slurm's srun among them) tell their
-/// processes so through these.
-bool launchedByMpi() {
-    for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_RANK"})
-        if (std::getenv(name) != nullptr) return true;
-    return false;
-}
 
 /// The innermost message of the error PETSc is returning (where it was raised: later frames of
 /// the same error add none), for our own error line.
@@ -66,7 +59,7 @@ std::string lastPetscErrorMessage() {
 }
 
 ProcessGroup joinProcessGroup() {
-    if (launchedByMpi()) ensurePetsc();
+    if (launchedRank().launched) ensurePetsc();
     return currentProcessGroup();
 }
 

@@ -9,8 +9,11 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <limits>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "engine/core/AtomicFile.h"
 #include "engine/core/BinaryCodec.h"
@@ -33,7 +36,12 @@ Checkpoint sample(std::size_t cells = 6) {
     c.runHash = 0x0123456789abcdefull;
     c.velocity = Eigen::VectorXd::LinSpaced(5, -1.0, 1.0);
     c.magnetic = Eigen::VectorXd::LinSpaced(5, 2.0, 3.0);
-    c.heldRate = Eigen::VectorXd::LinSpaced(5, -4.0, 0.5);
+    c.carry.heldRate = Eigen::VectorXd::LinSpaced(5, -4.0, 0.5);
+    // A device midpoint run's warm start: two right-hand sides of the state [v; F] (10 values).
+    c.carry.warmRhs = {Eigen::VectorXd::LinSpaced(10, 0.5, 1.5),
+                       Eigen::VectorXd::LinSpaced(10, -2.0, 2.0)};
+    c.carry.substeps = 4;
+    c.carry.easySteps = 17;
     c.smoke.density.assign(cells, 0.25);
     c.smoke.temperature.assign(cells, 1.5);
     return c;
@@ -79,7 +87,10 @@ TEST(CheckpointTest, RoundTripsBitForBit) {
     EXPECT_EQ(read.runHash, sample().runHash);
     EXPECT_EQ(read.velocity, sample().velocity);
     EXPECT_EQ(read.magnetic, sample().magnetic);
-    EXPECT_EQ(read.heldRate, sample().heldRate);
+    EXPECT_EQ(read.carry.heldRate, sample().carry.heldRate);
+    EXPECT_EQ(read.carry.warmRhs, sample().carry.warmRhs);
+    EXPECT_EQ(read.carry.substeps, 4);
+    EXPECT_EQ(read.carry.easySteps, 17);
     EXPECT_EQ(read.smoke.density, sample().smoke.density);
     EXPECT_EQ(read.smoke.temperature, sample().smoke.temperature);
 }
@@ -127,23 +138,59 @@ TEST(CheckpointTest, WellFormedNonsenseIsRefused) {
         std::string::npos);
     EXPECT_NE(damaged([](std::string& b) { b.resize(b.size() - 8); }).find("truncated"),
               std::string::npos);
-    // A held rate is none or one value per mode.
+    // A held rate is none or one value per mode; a warm start none, one or two of the state's.
     Checkpoint odd = sample();
-    odd.heldRate = Eigen::VectorXd::Ones(4);
+    odd.carry.heldRate = Eigen::VectorXd::Ones(4);
     writeCheckpoint(file, odd);
     EXPECT_NE(readError(file).find("its held rate and velocity sizes differ"), std::string::npos)
         << readError(file);
-    odd.heldRate.resize(0);
+    odd.carry.heldRate.resize(0);
     writeCheckpoint(file, odd);
-    EXPECT_EQ(readCheckpoint(file).heldRate.size(), 0);
+    EXPECT_EQ(readCheckpoint(file).carry.heldRate.size(), 0);
+    odd.carry.warmRhs.push_back(odd.carry.warmRhs[0]);
+    writeCheckpoint(file, odd);
+    EXPECT_NE(readError(file).find("more than two right-hand sides"), std::string::npos)
+        << readError(file);
+    odd.carry.warmRhs = {Eigen::VectorXd::Ones(5)};
+    writeCheckpoint(file, odd);
+    EXPECT_NE(readError(file).find("its warm start and state sizes differ"), std::string::npos)
+        << readError(file);
+    odd.carry.warmRhs.clear();
+    for (const auto& [substeps, easy] :
+         {std::pair{0, 0}, std::pair{1 << 20, 0}, std::pair{1, -1}}) {
+        odd.carry.substeps = substeps;
+        odd.carry.easySteps = easy;
+        writeCheckpoint(file, odd);
+        EXPECT_NE(readError(file).find("its substep count is out of range"), std::string::npos)
+            << readError(file);
+    }
     // Modal values no step can continue from.
-    for (Eigen::VectorXd Checkpoint::*field :
-         {&Checkpoint::velocity, &Checkpoint::magnetic, &Checkpoint::heldRate}) {
-        Checkpoint bad = sample();
-        (bad.*field)[2] = std::numeric_limits<double>::quiet_NaN();
-        writeCheckpoint(file, bad);
+    const auto withNan = [](Checkpoint bad,
+                            const std::function<Eigen::VectorXd&(Checkpoint&)>& part) {
+        part(bad)[2] = std::numeric_limits<double>::quiet_NaN();
+        return bad;
+    };
+    for (const auto& part : std::vector<std::function<Eigen::VectorXd&(Checkpoint&)>>{
+             [](Checkpoint& c) -> Eigen::VectorXd& { return c.velocity; },
+             [](Checkpoint& c) -> Eigen::VectorXd& { return c.magnetic; },
+             [](Checkpoint& c) -> Eigen::VectorXd& { return c.carry.heldRate; },
+             [](Checkpoint& c) -> Eigen::VectorXd& { return c.carry.warmRhs[1]; }}) {
+        writeCheckpoint(file, withNan(sample(), part));
         EXPECT_NE(readError(file).find("is not finite"), std::string::npos) << readError(file);
     }
+    // Smoke no step can continue from: refused naming the file, not blamed on a divergence later.
+    for (std::vector<double> SmokeFields::*field :
+         {&SmokeFields::density, &SmokeFields::temperature})
+        for (const double bad :
+             {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {
+            Checkpoint smoky = sample();
+            (smoky.smoke.*field)[3] = bad;
+            writeCheckpoint(file, smoky);
+            const std::string why = readError(file);
+            EXPECT_EQ(why, "checkpoint " + file.string() + ": its smoke " +
+                               (field == &SmokeFields::density ? "density" : "temperature") +
+                               " is not finite; delete it to start the run afresh");
+        }
 }
 
 TEST(CheckpointTest, AFailedWriteSaysWhyAndLeavesNoPartialFile) {

@@ -369,6 +369,61 @@ TEST_P(ModalStepKernelTest, AStateWrittenFromTheHostStartsCold) {
     expectNoValidationMessages();
 }
 
+TEST_P(ModalStepKernelTest, AWarmStartRestoredContinuesToTheBit) {
+    // What a checkpoint saves of a midpoint run on the device (the R of the last converged steps)
+    // and a resumed run restores: a fresh stepper given the state and that warm start takes the
+    // steps of the one that never stopped, to the bit, after one step (one R held) and after
+    // several (two), for a fluid and for MHD with the Lorentz force (r less its Lorentz part).
+    const Eigen::VectorXd force = roundedToFloat(0.3 * testing::randomVector(kModes, 13));
+    const MhdParameters mhd{testing::shapedKappaSquared(kModes) / 100.0, 0.02, 0.03};
+    const MhdSystem mhdSystem(mC, mhd);
+    const Eigen::VectorXd mhdStart = roundedToFloat(mhdSystem.state(
+        testing::randomVector(kModes, 61), 0.5 * testing::randomVector(kModes, 62)));
+    for (const bool magnetic : {false, true}) {
+        for (const int before : {1, 2, 5}) {
+            const device::DeviceModel model =
+                magnetic ? device::DeviceModel(mhd) : device::DeviceModel(FluidParameters{});
+            ModalStepper whole(context(), mC, model, {});
+            whole.setState(magnetic ? mhdStart : mV0);
+            whole.setForce(force);
+            runDevice(context(), whole, mH, before);
+            const std::vector<Eigen::VectorXd> warm = whole.warmStart();
+            ASSERT_EQ(warm.size(), std::size_t(std::min(before, 2)));
+            EXPECT_EQ(warm[0].size(), whole.dimension());
+            ModalStepper resumed(context(), mC, model, {});
+            resumed.setState(whole.state());
+            resumed.setForce(force);
+            EXPECT_TRUE(resumed.warmStart().empty()) << "a state from the host starts cold";
+            resumed.setWarmStart(warm);
+            EXPECT_EQ(resumed.warmStart(), warm) << "the warm start reads back as it was set";
+            runDevice(context(), whole, mH, 3);
+            runDevice(context(), resumed, mH, 3);
+            EXPECT_EQ(resumed.status().iterations, whole.status().iterations);
+            EXPECT_EQ(relativeDifference(resumed.state(), whole.state()), 0.0)
+                << (magnetic ? "MHD" : "fluid") << " after " << before << " steps";
+
+            // Without it the first step starts cold: not the same iterate (what resume did).
+            ModalStepper cold(context(), mC, model, {});
+            cold.setState(resumed.state());
+            cold.setForce(force);
+            resumed.setState(cold.state());
+            resumed.setWarmStart(whole.warmStart());
+            runDevice(context(), resumed, mH, 1);
+            runDevice(context(), cold, mH, 1);
+            EXPECT_LT(resumed.status().iterations, cold.status().iterations);
+        }
+    }
+    ModalStepper stepper(context(), mC, {}, {});
+    const std::vector<Eigen::VectorXd> three(3, Eigen::VectorXd::Zero(kModes));
+    EXPECT_THROW(stepper.setWarmStart(three), Error);
+    EXPECT_THROW(stepper.setWarmStart({Eigen::VectorXd::Zero(kModes + 1)}), Error);
+    EXPECT_THROW(stepper.setWarmStart({Eigen::VectorXd::Constant(kModes, NAN)}), Error);
+    stepper.setScheme(Integrator::Trapezoidal);
+    EXPECT_THROW(stepper.setWarmStart({Eigen::VectorXd::Zero(kModes)}), Error);
+    stepper.setWarmStart({});  // starting cold is always allowed
+    expectNoValidationMessages();
+}
+
 TEST_P(ModalStepKernelTest, StepsThatMissTheToleranceAreCounted) {
     DeviceStepSettings settings;
     settings.maxIterations = 1;

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -18,6 +19,7 @@
 #include "engine/core/Error.h"
 #include "engine/preview/ContactSheet.h"
 #include "engine/preview/Palette.h"
+#include "engine/preview/PngReader.h"
 #include "engine/preview/PngWriter.h"
 #include "engine/preview/SmokeImage2D.h"
 #include "engine/preview/VolumeReference.h"
@@ -244,6 +246,45 @@ TEST(ContactSheetTest, GridOfThumbnailsWithNumbers) {
     EXPECT_EQ(preview::contactSheet(std::span(frames).first(2), 3).width, 2 * 260 + 4);
     EXPECT_THROW(preview::contactSheet({}, 3), Error);
     EXPECT_THROW(preview::contactSheet(frames, 0), Error);
+}
+
+TEST(ContactSheetTest, EvenlySpacedFramesKeepTheFirstAndTheLast) {
+    EXPECT_EQ(preview::evenlySpaced(3, 48), (std::vector<std::size_t>{0, 1, 2}));
+    EXPECT_EQ(preview::evenlySpaced(5, 3), (std::vector<std::size_t>{0, 2, 4}));
+    EXPECT_EQ(preview::evenlySpaced(400, 2), (std::vector<std::size_t>{0, 399}));
+    for (const std::size_t count : {49, 50, 97, 400, 100000}) {
+        const std::vector<std::size_t> chosen = preview::evenlySpaced(count, 48);
+        ASSERT_EQ(chosen.size(), 48u) << count;
+        EXPECT_EQ(chosen.front(), 0u);
+        EXPECT_EQ(chosen.back(), count - 1);
+        for (std::size_t i = 1; i < chosen.size(); ++i) {
+            EXPECT_GT(chosen[i], chosen[i - 1]) << count;
+            // Steps differ by at most one frame: evenly spaced.
+            EXPECT_LE(chosen[i] - chosen[i - 1], (count - 1) / 47 + 1) << count;
+        }
+    }
+    EXPECT_TRUE(preview::evenlySpaced(0, 48).empty());
+    EXPECT_THROW(preview::evenlySpaced(10, 1), Error);
+}
+
+TEST(PngReaderTest, ReadsWhatTheWriterWroteAndNamesAFileItCannotRead) {
+    const testing::TestFolder dir;
+    Image picture(5, 3, {10, 20, 30, 255});
+    picture.setPixel(4, 2, {200, 100, 50, 128});
+    preview::writePng(dir.path() / "a.png", picture);
+    const Image read = preview::readPng(dir.path() / "a.png");
+    EXPECT_EQ(read.width, 5);
+    EXPECT_EQ(read.height, 3);
+    EXPECT_EQ(read.rgba, picture.rgba);
+    std::ofstream(dir.path() / "b.png") << "not a picture";
+    for (const char* name : {"b.png", "missing.png"}) {
+        try {
+            preview::readPng(dir.path() / name);
+            ADD_FAILURE() << name << " was read";
+        } catch (const Error& e) {
+            EXPECT_NE(std::string(e.what()).find(name), std::string::npos) << e.what();
+        }
+    }
 }
 
 TEST(ContactSheetTest, AreaResamplingAveragesAndKeepsUniformColours) {

@@ -4,15 +4,21 @@
 
 #include <cmath>
 #include <memory>
+#include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
+#include "engine/core/Error.h"
+#include "engine/core/SceneKeywords.h"
 #include "engine/device/Simulation.h"
 #include "engine/dynamics/InitialConditions.h"
 #include "engine/dynamics/TensorFreeCoefficients.h"
 #include "engine/reference/Simulation.h"
+#include "engine/simulation/Checkpoint.h"
 #include "tests/support/SharedRuns.h"
 #include "tests/support/SmokeTestFields.h"
+#include "tests/support/TestFolder.h"
 #include "tests/support/TestScenes.h"
 #include "tests/support/VulkanTestContext.h"
 
@@ -355,6 +361,103 @@ TEST_P(SimulationTest, EmittersFollowTheirTimeWindows) {
         EXPECT_EQ(masses[5], masses[4]) << "after the window";
     }
     expectNoValidationMessages();
+}
+
+/// What a run keeps after a frame, as a checkpoint file holds it.
+Checkpoint savedThroughAFile(const Simulator& simulator, int frame) {
+    const testing::TestFolder folder;
+    writeCheckpoint(folder / "run.resume",
+                    {frame, simulator.time(), 0, simulator.velocity(), simulator.magneticField(),
+                     simulator.carry(), simulator.smoke()});
+    return readCheckpoint(folder / "run.resume");
+}
+
+TEST(SimulationResume, EveryBackendAndIntegratorContinuesBitForBitFromAnyStep) {
+    // A run stopped after any step and resumed from what its checkpoint holds takes the steps of
+    // the run that never stopped, to the bit: on the device and the CPU, with every integrator,
+    // right after the first step too, and with the device's substeps set from a carry.
+    const auto context = testing::makeVulkanContext(false);
+    ASSERT_NE(context, nullptr);
+    const RunInputs& disk = hotDisk();
+    SimulationSettings settings = disk.settings;
+    settings.stepsPerFrame = 1;
+    RandomVelocitySpec swirl;
+    swirl.energy = 0.05;
+    const Eigen::VectorXd v0 = randomVelocity(disk.coefficients->size(), swirl);
+    constexpr int kSteps = 8;
+    struct Case {
+        bool device;
+        Integrator scheme;
+        int substeps;
+    };
+    std::vector<Case> cases;
+    for (const bool device : {true, false})
+        for (const Integrator scheme : {Integrator::Explicit, Integrator::Rk4, Integrator::Midpoint,
+                                        Integrator::Trapezoidal, Integrator::Linearized})
+            cases.push_back({device, scheme, 1});
+    cases.push_back({true, Integrator::Midpoint, 4});
+    for (const Case& c : cases) {
+        settings.integrator = c.scheme;
+        const std::string name = std::string(c.device ? "device " : "CPU ") +
+                                 std::string(sceneKeyword(c.scheme)) + ", " +
+                                 std::to_string(c.substeps) + " substeps";
+        const auto make = [&]() -> std::unique_ptr<Simulator> {
+            if (c.device)
+                return std::make_unique<device::Simulation>(
+                    *context, disk.cache, *disk.coefficients, settings, disk.smokeMask);
+            return std::make_unique<reference::Simulation>(disk.cache, *disk.coefficients, settings,
+                                                           disk.smokeMask);
+        };
+        const std::unique_ptr<Simulator> whole = make();
+        whole->setVelocity(v0);
+        if (c.substeps > 1) whole->setCarry({{}, {}, c.substeps, 0});
+        std::vector<Checkpoint> saved;
+        std::vector<int> iterations;  // of each step
+        for (int step = 1; step <= kSteps; ++step) {
+            iterations.push_back(whole->advanceFrame().maxIterations);
+            saved.push_back(savedThroughAFile(*whole, step));
+        }
+        if (c.device && c.scheme == Integrator::Midpoint) {
+            // One R held after the first step, two once two substeps converged.
+            EXPECT_EQ(saved[0].carry.warmRhs.size(), c.substeps > 1 ? 2u : 1u) << name;
+            EXPECT_EQ(saved[4].carry.warmRhs.size(), 2u) << name;
+        }
+        EXPECT_EQ(saved[0].carry.heldRate.size() != 0, c.scheme == Integrator::Linearized) << name;
+        EXPECT_EQ(saved[4].carry.substeps, c.substeps) << name;
+        for (const int stop : {1, 2, 5}) {
+            const Checkpoint& from = saved[std::size_t(stop - 1)];
+            const std::unique_ptr<Simulator> resumed = make();
+            resumed->restore(from.time, from.velocity, from.smoke);
+            resumed->setCarry(from.carry);
+            // The first step after the resume starts where the uninterrupted one did: as many
+            // implicit iterations (a cold start takes more, and may still reach the same state).
+            for (int step = stop + 1; step <= kSteps; ++step)
+                EXPECT_EQ(resumed->advanceFrame().maxIterations, iterations[std::size_t(step - 1)])
+                    << name << ", resumed after " << stop << ", step " << step;
+            const StepCarry carry = resumed->carry(), expected = whole->carry();
+            EXPECT_EQ(carry.heldRate, expected.heldRate) << name;
+            EXPECT_EQ(carry.warmRhs, expected.warmRhs) << name;
+            EXPECT_EQ(carry.substeps, expected.substeps) << name;
+            EXPECT_EQ(carry.easySteps, expected.easySteps) << name;
+            EXPECT_EQ(resumed->time(), whole->time()) << name;
+            EXPECT_EQ(resumed->velocity(), whole->velocity()) << name << ", resumed after " << stop;
+            EXPECT_EQ(resumed->smoke().density, whole->smoke().density)
+                << name << ", resumed after " << stop;
+            EXPECT_EQ(resumed->smoke().temperature, whole->smoke().temperature)
+                << name << ", resumed after " << stop;
+        }
+    }
+    // A carry the backend cannot take is refused: the CPU has no warm start nor substeps, the
+    // device no schedule it would not make.
+    reference::Simulation cpu(disk.cache, *disk.coefficients, settings, disk.smokeMask);
+    EXPECT_THROW(cpu.setCarry({{}, {}, 4, 0}), Error);
+    EXPECT_THROW(cpu.setCarry({{}, {Eigen::VectorXd::Zero(disk.coefficients->size())}, 1, 0}),
+                 Error);
+    device::Simulation gpu(*context, disk.cache, *disk.coefficients, settings, disk.smokeMask);
+    EXPECT_THROW(gpu.setCarry({{}, {}, 3, 0}), Error);
+    EXPECT_THROW(gpu.setCarry({{}, {}, 64, 0}), Error);
+    EXPECT_THROW(gpu.setCarry({{}, {}, 2, -1}), Error);
+    testing::expectNoValidationMessages(*context);
 }
 
 INSTANTIATE_TEST_SUITE_P(PlainAndValidated, SimulationTest, ::testing::Bool(),

@@ -2,9 +2,11 @@
 /// others are bodies after the version, given the magic, version and a valid checksum so that
 /// the decoder sees them.
 
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <string>
+#include <vector>
 
 #include "engine/core/BinaryCodec.h"
 #include "engine/simulation/Checkpoint.h"
@@ -20,7 +22,7 @@ constexpr std::string_view kMagic("MODEFLOW-RESUME\0", 16);
 std::string checkpointAround(std::string_view body) {
     ByteWriter file;
     file.values(kMagic.data(), kMagic.size());
-    file.pod(std::uint32_t{4});  // the version (Checkpoint.cpp)
+    file.pod(std::uint32_t{5});  // the version (Checkpoint.cpp)
     file.values(body.data(), body.size());
     file.pod(checksum64(file.bytes()));
     return file.bytes();
@@ -47,10 +49,19 @@ bool checkpointReader(std::string_view bytes) {
                 std::memcmp(&again.time, &checkpoint.time, sizeof again.time) == 0 &&
                 sameBytes(again.velocity, checkpoint.velocity) &&
                 sameBytes(again.magnetic, checkpoint.magnetic) &&
-                sameBytes(again.heldRate, checkpoint.heldRate) &&
+                sameBytes(again.carry.heldRate, checkpoint.carry.heldRate) &&
+                again.carry.warmRhs.size() == checkpoint.carry.warmRhs.size() &&
+                again.carry.substeps == checkpoint.carry.substeps &&
+                again.carry.easySteps == checkpoint.carry.easySteps &&
                 sameBytes(again.smoke.density, checkpoint.smoke.density) &&
                 sameBytes(again.smoke.temperature, checkpoint.smoke.temperature),
             "an accepted checkpoint does not survive a write and a read");
+    for (std::size_t i = 0; i < again.carry.warmRhs.size(); ++i)
+        require(sameBytes(again.carry.warmRhs[i], checkpoint.carry.warmRhs[i]),
+                "an accepted warm start does not survive a write and a read");
+    // What a resumed run relies on: every value it continues from is a number.
+    for (const std::vector<double>* field : {&again.smoke.density, &again.smoke.temperature})
+        for (const double c : *field) require(std::isfinite(c), "an accepted smoke is not finite");
     return true;
 }
 

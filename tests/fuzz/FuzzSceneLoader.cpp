@@ -17,7 +17,19 @@ bool sceneLoader(std::string_view bytes) {
                     "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n")
             .parent_path() /
         "scene.toml";
-    return acceptedOrRefused([&] { parseScene(bytes, origin); });
+    SceneSpec scene;
+    if (!acceptedOrRefused([&] { scene = parseScene(bytes, origin); })) return false;
+    // What the loader promises of [forcing] hold_modes: inside the basis, never all of it (a
+    // scene that holds every mode would be refused only after its precompute).
+    long long held = 0;
+    for (const ModeRange& range : scene.forcing.holdModes) {
+        require(range.first >= 1 && range.first <= range.last &&
+                    range.last <= scene.basis.velocityCount(),
+                "an accepted hold_modes range lies outside the basis");
+        held += range.last - range.first + 1;
+    }
+    require(held < scene.basis.velocityCount(), "an accepted hold_modes holds every mode");
+    return true;
 }
 
 }  // namespace modeflow::fuzz

@@ -77,8 +77,13 @@ for name in disk box wholebox surface disk_tensor_free; do
     size=$(stat -c %s "$cache")
     tail -c +41 "$cache" | head -c $((size - 48)) >"$caches/$name.payload"
 done
-for name in disk disk_mhd disk_linearized; do
-    "$modeflow" run "$work/$name.toml" --device cpu --cache-dir "$work/cache" --out "$work/$name" >/dev/null 2>&1
+# The device's midpoint rule (lavapipe will do): its checkpoints hold the warm start's R and the
+# substep schedule.
+cp "$work/disk.toml" "$work/disk_device.toml"
+for name in disk disk_mhd disk_linearized disk_device; do
+    device=cpu
+    [ "$name" = disk_device ] && device=vulkan
+    "$modeflow" run "$work/$name.toml" --device $device --cache-dir "$work/cache" --out "$work/$name" >/dev/null 2>&1
     cp "$work/$name/$name.resume" "$checkpoints/$name.resume"
     # The body after magic and version, without the checksum (wrapped again by the target).
     size=$(stat -c %s "$work/$name/$name.resume")

@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+#include <unistd.h>
+
 #include <nlohmann/json.hpp>
 
 #include "tests/support/CliFixture.h"
@@ -401,6 +403,36 @@ TEST_F(Cli, InspectTellsCachesFromScenesByTheirContents) {
     EXPECT_EQ(neither.status, 1);
     EXPECT_NE(neither.err.find("picture.toml is neither a modeflow basis cache"), std::string::npos)
         << neither.err;
+}
+
+TEST_F(Cli, AFolderThatCannotBeEnteredIsNamedNotCalledMissing) {
+    // A folder others may not enter, owned by root: the commands run as nobody when the test runs
+    // as root (root enters every folder), else the folder is made unenterable for this user.
+    fs::permissions(mDir, fs::perms(0755));
+    const fs::path locked = mDir / "locked";
+    fs::create_directories(locked);
+    const fs::path s = locked / "disk.toml", reachable = scene("disk.toml", kSmallDisk);
+    std::ofstream(s) << kSmallDisk;
+    const bool root = ::geteuid() == 0;
+    fs::permissions(locked, fs::perms(root ? 0700 : 0));
+    const std::string as = (root ? "setpriv --reuid=65534 --regid=65534 --clear-groups " : "") +
+                           modeflow::testing::cliPath();
+    const std::string denied =
+        "cannot be reached: permission denied to enter the folder " + locked.string();
+    for (const std::string& command :
+         {"inspect " + s.string(), "precompute " + s.string() + " --cache-dir " + mCache.string(),
+          "run " + s.string() + " --out " + (mDir / "out").string()}) {
+        const RunResult r = runProgram(as, command);
+        EXPECT_EQ(r.status, 1) << command << ": " << r.err;
+        EXPECT_NE(r.err.find("modeflow: error: " + s.string() + ": " + denied), std::string::npos)
+            << command << ": " << r.err;
+        EXPECT_EQ(r.err.find("no such"), std::string::npos) << r.err;
+    }
+    // A cache folder behind it.
+    const RunResult cache = runProgram(
+        as, "precompute " + reachable.string() + " --cache-dir " + (locked / "cache").string());
+    EXPECT_EQ(cache.status, 1) << cache.err;
+    EXPECT_NE(cache.err.find(denied), std::string::npos) << cache.err;
 }
 
 TEST_F(Cli, InspectRefusesFoldersAndDevicesByName) {

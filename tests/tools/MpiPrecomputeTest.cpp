@@ -107,5 +107,43 @@ TEST_F(MpiPrecompute, InterruptedPrecomputeResumesOnEveryRank) {
         EXPECT_NE(e.path().extension(), ".mfslice") << "left after the cache was written";
 }
 
+/// How often `needle` stands in `text`.
+int occurrences(const std::string& text, const std::string& needle) {
+    int n = 0;
+    for (std::size_t at = text.find(needle); at != std::string::npos;
+         at = text.find(needle, at + 1))
+        ++n;
+    return n;
+}
+
+TEST_F(MpiPrecompute, OneRankSpeaksForARefusalEveryRankMeets) {
+    const fs::path bad = scene("bad.toml", std::string(kHollowBall) + "[simulation]\ndt = -1\n");
+    const RunResult r = runProgram(
+        MODEFLOW_MPIRUN, "--allow-run-as-root --oversubscribe -n 2 " + testing::cliPath() +
+                             " precompute " + bad.string() + " --cache-dir " + mCache.string());
+    EXPECT_NE(r.status, 0);
+    EXPECT_EQ(occurrences(r.err, "modeflow: error: "), 1) << r.err;
+    EXPECT_NE(r.err.find("dt"), std::string::npos) << r.err;
+}
+
+TEST_F(MpiPrecompute, CommandsOtherThanPrecomputeAreRefusedUnderSeveralRanks) {
+    // Two ranks of `run` raced for the output folder's lock and wrote nothing: refused, once.
+    for (const std::string& command :
+         {"run " + mScene.string() + " --out " + (mDir / "frames").string(),
+          "modes " + mScene.string(), "inspect " + mScene.string()}) {
+        const RunResult r = runProgram(
+            MODEFLOW_MPIRUN, "--allow-run-as-root --oversubscribe -n 2 " + testing::cliPath() +
+                                 " " + command + " --cache-dir " + mCache.string());
+        EXPECT_NE(r.status, 0) << command;
+        EXPECT_EQ(occurrences(r.err, "modeflow: error: "), 1) << command << ": " << r.err;
+        EXPECT_NE(r.err.find("only `modeflow precompute` shares its work among MPI ranks: start "
+                             "it without mpirun (2 ranks here)"),
+                  std::string::npos)
+            << r.err;
+        EXPECT_EQ(cacheFiles(), 0) << "work started: " << command;
+    }
+    EXPECT_FALSE(fs::exists(mDir / "frames"));
+}
+
 }  // namespace
 }  // namespace modeflow

@@ -3,6 +3,7 @@
 /// input refused before any work.
 
 #include <cmath>
+#include <cstdlib>
 #include <fstream>
 #include <string>
 #include <vector>
@@ -19,6 +20,7 @@
 #include "engine/output/VdbFrame.h"
 #include "engine/simulation/Checkpoint.h"
 #include "tests/support/CliFixture.h"
+#include "tests/support/PngFile.h"
 
 namespace modeflow {
 namespace {
@@ -144,33 +146,96 @@ std::string hotDisk(const std::string& integrator) {
 }
 
 TEST_F(RunCommand, ResumeGivesTheFramesOfAnUninterruptedRun) {
-    for (const std::string integrator : {"", "linearized"}) {
-        const fs::path s = scene("hot.toml", hotDisk(integrator));
-        const fs::path whole = mDir / ("whole" + integrator), parts = mDir / ("parts" + integrator);
-        ASSERT_EQ(simulate(s, whole).status, 0);
-        // A run stopped after frame 2 (the checkpoint is written after every frame), then resumed.
-        ASSERT_EQ(simulate(s, parts, "--frames 2").status, 0);
-        // The linearized rule's checkpoint carries the rate its next predictor starts from.
-        EXPECT_EQ(readCheckpoint(parts / "hot.resume").heldRate.size(), integrator.empty() ? 0 : 8);
-        const RunResult resumed = simulate(s, parts, "--resume");
-        ASSERT_EQ(resumed.status, 0) << resumed.err;
-        EXPECT_NE(resumed.err.find("resuming after frame 2"), std::string::npos) << resumed.err;
-        const std::vector<Vec3> centres = smokeCentres();
-        for (const char* name : {"hot_0003.vdb", "hot_0004.vdb"}) {
-            for (const char* grid : {"density", "temperature", "vel"}) {
-                const auto a = sampleVdbGrid(whole / name, grid, centres);
-                const auto b = sampleVdbGrid(parts / name, grid, centres);
-                for (std::size_t c = 0; c < centres.size(); ++c)
-                    ASSERT_EQ(a[c].value, b[c].value)
-                        << integrator << " " << name << " " << grid << " cell " << c;
+    // Every integrator on the device, stopped after the first frame and after the third; the
+    // midpoint rule and the linearized rule on the CPU too.
+    struct Case {
+        std::string integrator, device;
+    };
+    std::vector<Case> cases;
+    for (const std::string integrator : {"", "explicit", "rk4", "trapezoidal", "linearized"})
+        cases.push_back({integrator, ""});
+    for (const std::string integrator : {"", "linearized"}) cases.push_back({integrator, "cpu"});
+    for (const Case& c : cases) {
+        const std::string name = (c.integrator.empty() ? "midpoint" : c.integrator) +
+                                 (c.device.empty() ? "" : "_" + c.device);
+        const std::string device = c.device.empty() ? "" : " --device " + c.device;
+        const fs::path s = scene("hot.toml", hotDisk(c.integrator));
+        const fs::path whole = mDir / ("whole" + name);
+        ASSERT_EQ(simulate(s, whole, device).status, 0);
+        for (const int stop : {1, 3}) {
+            const fs::path parts = mDir / ("parts" + name + std::to_string(stop));
+            // A run stopped after frame `stop` (the checkpoint is written after every frame).
+            ASSERT_EQ(simulate(s, parts, device + " --frames " + std::to_string(stop)).status, 0);
+            const StepCarry carry = readCheckpoint(parts / "hot.resume").carry;
+            // The linearized rule's checkpoint carries the rate its next predictor starts from,
+            // the device midpoint rule's the right-hand sides its next iteration starts from.
+            EXPECT_EQ(carry.heldRate.size(), c.integrator == "linearized" ? 8 : 0) << name;
+            EXPECT_EQ(carry.warmRhs.size(), c.integrator.empty() && c.device.empty() ? 2u : 0u)
+                << name;
+            const RunResult resumed = simulate(s, parts, device + " --resume");
+            ASSERT_EQ(resumed.status, 0) << resumed.err;
+            EXPECT_NE(resumed.err.find("resuming after frame " + std::to_string(stop)),
+                      std::string::npos)
+                << resumed.err;
+            // The last checkpoints are the same bytes: state, smoke and what the steps carry (a
+            // cold first step after the resume can reach the same state, not the same carry).
+            EXPECT_EQ(testing::slurp(parts / "hot.resume"), testing::slurp(whole / "hot.resume"))
+                << name << ", resumed after " << stop;
+            const std::vector<Vec3> centres = smokeCentres();
+            for (int frame = stop + 1; frame <= 4; ++frame) {
+                const std::string file = frameFileName("hot", frame);
+                for (const char* grid : {"density", "temperature", "vel"}) {
+                    const auto a = sampleVdbGrid(whole / file, grid, centres);
+                    const auto b = sampleVdbGrid(parts / file, grid, centres);
+                    for (std::size_t cell = 0; cell < centres.size(); ++cell)
+                        ASSERT_EQ(a[cell].value, b[cell].value)
+                            << name << ", resumed after " << stop << ": " << file << " " << grid
+                            << " cell " << cell;
+                }
             }
         }
     }
     // The checkpoint belongs to the scene text it was written for.
     const fs::path changed = scene("hot.toml", std::string(kHotDisk) + "# edited\n");
-    const RunResult refused = simulate(changed, mDir / "parts", "--resume");
+    const RunResult refused = simulate(changed, mDir / "partsmidpoint1", "--resume");
     EXPECT_NE(refused.status, 0);
     EXPECT_NE(refused.err.find("another scene"), std::string::npos) << refused.err;
+}
+
+/// Peak resident memory of `command` in MiB (GNU time's %M), its status asserted 0.
+long peakMiB(const std::string& command, const fs::path& report) {
+    const int raw = std::system(("/usr/bin/time -f %M -o " + report.string() + " " + command +
+                                 " >/dev/null 2>&1 </dev/null")
+                                    .c_str());
+    EXPECT_TRUE(WIFEXITED(raw) && WEXITSTATUS(raw) == 0) << command;
+    return std::stol(testing::slurp(report)) / 1024;
+}
+
+TEST_F(RunCommand, PreviewsOfEveryFrameKeepMemoryFlatAndTheSheetShowsAtMost48) {
+    const fs::path s = scene("hot.toml", kHotDisk);
+    ASSERT_EQ(run(precompute(s)).status, 0);
+    const auto previewRun = [&](int frames, const fs::path& out) {
+        return peakMiB("env -u MODEFLOW_CACHE_DIR " + testing::cliPath() + " run " + s.string() +
+                           " --out " + out.string() + " --cache-dir " + mCache.string() +
+                           " --preview-every 1 --frames " + std::to_string(frames),
+                       mDir / "time.txt");
+    };
+    const long few = previewRun(12, mDir / "few"), many = previewRun(96, mDir / "many");
+    // Every preview held until the sheet was 1.8 MiB a frame here: 150 MiB more for 84 frames.
+    EXPECT_LT(many - few, 40) << few << " MiB for 12 frames, " << many << " for 96";
+    const auto frame = testing::readPng(mDir / "many" / "hot_0096.png");
+    const auto sheet = testing::readPng(mDir / "many" / "hot_contact.png");
+    ASSERT_TRUE(frame && sheet);
+    const int thumbnail = int(std::lround(frame->height * 256.0 / frame->width));
+    EXPECT_EQ(sheet->width, 6 * (256 + 4) + 4);
+    EXPECT_EQ(sheet->height, 8 * (thumbnail + 4) + 4) << "48 of the 96 previews, 8 rows of 6";
+
+    // A resumed run's sheet shows the frames before the resume too: they are read from the files.
+    ASSERT_EQ(simulate(s, mDir / "parts", "--preview-every 1 --frames 3").status, 0);
+    ASSERT_EQ(simulate(s, mDir / "parts", "--preview-every 1 --resume").status, 0);
+    const auto resumed = testing::readPng(mDir / "parts" / "hot_contact.png");
+    ASSERT_TRUE(resumed);
+    EXPECT_EQ(resumed->width, 4 * (256 + 4) + 4) << "the 4 frames of the whole run";
 }
 
 TEST_F(RunCommand, CpuReferenceRunGivesTheSameSmoke) {

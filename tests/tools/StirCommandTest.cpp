@@ -54,6 +54,30 @@ TEST_F(StirCommand, ABasisTooLargeForTheDeviceIsRefusedBeforeThePrecompute) {
                    "the pair sums of N = " + std::to_string(n) + " modes");
 }
 
+TEST_F(StirCommand, AScreenshotOrPictureThatCannotBeMadeIsRefusedBeforeThePrecompute) {
+    const fs::path s = scene("disk.toml", kSmallDisk);
+    const std::string stir =
+        "stir " + s.string() + " --offscreen --frames 1 --cache-dir " + mCache.string() + " ";
+    fs::create_directories(mDir / "folder");
+    expectRejected(stir + "--screenshot " + (mDir / "missing" / "shot.png").string(),
+                   "--screenshot " + (mDir / "missing" / "shot.png").string() + ": its folder " +
+                       (mDir / "missing").string() + " does not exist");
+    expectRejected(stir + "--screenshot " + (mDir / "folder").string(),
+                   "--screenshot " + (mDir / "folder").string() + ": is a folder; name a file");
+
+    // One row more than a storage buffer of the device holds at the widest window.
+    const vulkan::VulkanContext device{vulkan::VulkanContextOptions{}};
+    const VkDeviceSize rows = device.storageBufferLimit() / 4 / 16384 + 1;
+    if (rows > 16384) GTEST_SKIP() << "this device takes every window size";
+    const std::string size = "16384 × " + std::to_string(rows);
+    expectRejected(stir + "--width 16384 --height " + std::to_string(rows),
+                   "--width/--height: a picture of " + size + " pixels takes " +
+                       std::to_string(4 * 16384 * rows) +
+                       " bytes, more than the largest storage buffer of this device (" +
+                       std::to_string(device.storageBufferLimit()) +
+                       " bytes); at this shape it takes at most 1638");
+}
+
 TEST_F(StirCommand, OffscreenNeedsNoDisplayAndKeepsItsScreenshot) {
     unsetenv("DISPLAY");
     unsetenv("WAYLAND_DISPLAY");

@@ -62,6 +62,42 @@ TEST_F(ValidateCommand, AnUnknownStudyIsNamedWithTheStudiesThereAre) {
     EXPECT_NE(r.err.find("convergence, integrators"), std::string::npos) << r.err;
 }
 
+TEST_F(ValidateCommand, AnEmptyStudyListIsRefusedNamingTheStudies) {
+    for (const std::string only : {"\"\"", "\",\"", "integrators,", "\" , \""}) {
+        const RunResult r = validate("/usr/bin/python3", "--only " + only);
+        EXPECT_EQ(r.status, 1) << only << ": " << r.err;
+        EXPECT_NE(r.err.find("an empty study name (studies: convergence, integrators"),
+                  std::string::npos)
+            << only << ": " << r.err;
+        EXPECT_EQ(r.err.find("[1/"), std::string::npos) << "a study ran: " << r.err;
+        EXPECT_EQ(r.err.find("Traceback"), std::string::npos) << r.err;
+    }
+    // Spaces around a name are no part of it.
+    const RunResult unknown = validate("/usr/bin/python3", "--only \" integrators , turbulence\"");
+    EXPECT_NE(unknown.err.find("no study named \"turbulence\""), std::string::npos) << unknown.err;
+}
+
+TEST_F(ValidateCommand, AReportThatCannotBeWrittenLeavesNoPartialFigureAndSaysSoInOneLine) {
+    // The report's Python under a file size limit, as a full disk: results.json (written by
+    // modeflow itself) is whole, the first figure cannot be.
+    const fs::path python = mDir / "python-with-a-full-disk";
+    std::ofstream(python) << "#!/bin/sh\ntrap '' XFSZ\nulimit -f 4\nexec /usr/bin/python3 \"$@\"\n";
+    fs::permissions(python, fs::perms::owner_all);
+    const RunResult r = validate(python.string(), "--only integrators");
+    EXPECT_EQ(r.status, 1) << r.err;
+    const std::string line =
+        "modeflow: error: validate: the report could not be written: cannot "
+        "write " +
+        (mDir / "out" / "figures" / "integrators.png").string() + ": File too large\n";
+    EXPECT_NE(r.err.find(line), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find("Traceback"), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find("report.py"), std::string::npos) << r.err;
+    EXPECT_TRUE(fs::exists(mDir / "out" / "results.json"));
+    EXPECT_FALSE(fs::exists(mDir / "out" / "report.html"));
+    for (const auto& entry : fs::directory_iterator(mDir / "out" / "figures"))
+        ADD_FAILURE() << "left behind: " << entry.path();
+}
+
 TEST_F(ValidateCommand, ABlenderThatIsNoProgramIsRefusedBeforeAnyStudy) {
     const RunResult r =
         validate("/usr/bin/python3", "--blender " + (mDir / "no-such-blender").string());

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "engine/preview/ContactSheet.h"
+#include "engine/preview/PngReader.h"
 #include "engine/preview/PngWriter.h"
 #include "engine/preview/SmokeImage2D.h"
 #include "engine/preview/VolumeReference.h"
@@ -39,7 +40,7 @@ FramePreview::FramePreview(const MacGrid& smokeGrid, std::span<const std::uint8_
 
 FramePreview::~FramePreview() = default;
 
-void FramePreview::write(const std::filesystem::path& file, int frame, const SmokeFields& smoke,
+void FramePreview::write(const std::filesystem::path& file, const SmokeFields& smoke,
                          bool temperature) {
     // One exposure for the whole run, raised as the smoke thickens, so that pictures of one run
     // compare (a per-picture exposure would make every frame look alike).
@@ -67,16 +68,30 @@ void FramePreview::write(const std::filesystem::path& file, int frame, const Smo
         }
     }
     preview::writePng(file, picture);
-    mPictures.push_back(std::move(picture));
-    mFrames.push_back(frame);
 }
 
-void FramePreview::writeContactSheet(const std::filesystem::path& file) const {
-    if (mPictures.empty()) return;
+bool previewed(int frame, int frames, int every) {
+    return frame % every == 0 || frame == frames;
+}
+
+void writeContactSheet(const std::filesystem::path& file, int frames, int every,
+                       const std::function<std::filesystem::path(int)>& pictureOf) {
+    std::vector<int> written;
+    for (int frame = 1; frame <= frames; ++frame)
+        if (previewed(frame, frames, every) && std::filesystem::exists(pictureOf(frame)))
+            written.push_back(frame);
+    if (written.empty()) return;
     preview::ContactSheetOptions options;
-    options.labels = mFrames;
-    const int columns = std::min<int>(6, int(mPictures.size()));
-    preview::writePng(file, preview::contactSheet(mPictures, columns, options));
+    std::vector<preview::Image> thumbnails;
+    for (const std::size_t i : preview::evenlySpaced(written.size(), kContactSheetFrames)) {
+        const preview::Image picture = preview::readPng(pictureOf(written[i]));
+        const int height = std::max(
+            1, int(std::lround(double(picture.height) * options.thumbnailWidth / picture.width)));
+        thumbnails.push_back(preview::resampled(picture, options.thumbnailWidth, height));
+        options.labels.push_back(written[i]);
+    }
+    const int columns = std::min<int>(6, int(thumbnails.size()));
+    preview::writePng(file, preview::contactSheet(thumbnails, columns, options));
 }
 
 }  // namespace modeflow::cli

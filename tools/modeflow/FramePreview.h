@@ -2,10 +2,13 @@
 /// @file FramePreview.h
 /// `modeflow run --preview`: a PNG of the smoke every K frames (2D: the smoke grid as an image;
 /// 3D: ray-marched on the device, or by the CPU reference renderer with `--device cpu`) and a
-/// contact sheet of them at the end. The exposure is the run's: the largest 99th-percentile
-/// density of the pictures so far.
+/// contact sheet of them at the end, made from the files (so it covers a resumed run's earlier
+/// frames too, and memory stays flat however many previews a run writes). The exposure is the
+/// run's: the largest 99th-percentile density of the pictures so far.
 
+#include <cstddef>
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <span>
 #include <vector>
@@ -28,11 +31,8 @@ public:
                  const vulkan::VulkanContext* context);
     ~FramePreview();
 
-    /// Renders `smoke`, writes it to `file` and keeps a copy for the contact sheet.
-    void write(const std::filesystem::path& file, int frame, const SmokeFields& smoke,
-               bool temperature);
-    /// Writes the contact sheet of every picture written so far (nothing when there is none).
-    void writeContactSheet(const std::filesystem::path& file) const;
+    /// Renders `smoke` and writes it to `file`.
+    void write(const std::filesystem::path& file, const SmokeFields& smoke, bool temperature);
 
 private:
     MacGrid mGrid;
@@ -40,8 +40,20 @@ private:
     std::unique_ptr<preview::VolumeRenderer> mRenderer;
     const vulkan::VulkanContext* mContext;
     double mExposure = 0.0;  ///< the largest 99th-percentile density of the pictures so far
-    std::vector<preview::Image> mPictures;
-    std::vector<int> mFrames;
 };
+
+/// The most previews a contact sheet shows (8 rows of 6).
+inline constexpr std::size_t kContactSheetFrames = 48;
+
+/// Whether frame `frame` of `frames` gets a preview when one is written every `every` frames:
+/// every `every`-th and the last.
+bool previewed(int frame, int frames, int every);
+
+/// Writes the contact sheet of a run's previews: the files `pictureOf(f)` of the frames
+/// f = 1 … frames that get one and exist, at most kContactSheetFrames of them evenly spaced (the
+/// first and last among them), read back one at a time. Nothing when there is none.
+/// @throw modeflow::Error when a preview cannot be read or the sheet cannot be written.
+void writeContactSheet(const std::filesystem::path& file, int frames, int every,
+                       const std::function<std::filesystem::path(int)>& pictureOf);
 
 }  // namespace modeflow::cli

@@ -133,7 +133,7 @@ Command addRun(CLI::App& app) {
         if (resumeFrom) {
             simulator->restore(resumeFrom->time, resumeFrom->velocity, resumeFrom->smoke);
             if (settings.mhd) simulator->setMagneticField(resumeFrom->magnetic);
-            simulator->setHeldRate(resumeFrom->heldRate);
+            simulator->setCarry(resumeFrom->carry);
             first = resumeFrom->frame;
             std::cerr << "resuming after frame " << first << " (t = " << resumeFrom->time << ")\n";
         } else if (const int removed = folder.removeEarlierRun(); removed > 0) {
@@ -147,6 +147,10 @@ Command addRun(CLI::App& app) {
         if (previews)
             preview = std::make_unique<FramePreview>(simulator->smokeGrid(), run.smokeMask,
                                                      backend->vulkanContext());
+        const auto pictureOf = [&](int frame) {
+            return std::filesystem::path(out / frameFileName(scene.name, frame))
+                .replace_extension(".png");
+        };
         FrameProgress bar(first, frames, settings.stepsPerFrame);
         for (int frame = first + 1; frame <= frames; ++frame) {
             const std::string stage = "frame " + std::to_string(frame);
@@ -183,16 +187,13 @@ Command addRun(CLI::App& app) {
                 bar.timed("VDB files",
                           [&] { writeVdbFrame(out / frameFileName(scene.name, frame), vdb); });
             });
-            if (preview && (frame % previewEvery == 0 || frame == frames)) {
-                std::filesystem::path png = out / frameFileName(scene.name, frame);
-                bar.timed("previews", [&] {
-                    preview->write(png.replace_extension(".png"), frame, smoke, temperature);
-                });
-            }
+            if (preview && previewed(frame, frames, previewEvery))
+                bar.timed("previews",
+                          [&] { preview->write(pictureOf(frame), smoke, temperature); });
             bar.timed("checkpoint", [&] {
                 writeCheckpoint(folder.checkpointPath(),
                                 {frame, simulator->time(), runHash, simulator->velocity(),
-                                 simulator->magneticField(), simulator->heldRate(), smoke});
+                                 simulator->magneticField(), simulator->carry(), smoke});
             });
             std::string detail;
             if (stats.unconvergedSteps)
@@ -201,7 +202,8 @@ Command addRun(CLI::App& app) {
             bar.frameDone(frame, simulator->time(), detail);
         }
         bar.finish();
-        if (preview) preview->writeContactSheet(out / (scene.name + "_contact.png"));
+        if (preview)
+            writeContactSheet(out / (scene.name + "_contact.png"), frames, previewEvery, pictureOf);
         backend->requireCleanValidation();
         std::printf("%s\n", out.string().c_str());
         return 0;

@@ -2,10 +2,12 @@
 #include <memory>
 
 #include "engine/core/Error.h"
+#include "engine/core/WritableDirectory.h"
 #include "engine/display/Window.h"
 #include "engine/pipeline/Backend.h"
 #include "engine/pipeline/RunInputs.h"
 #include "engine/stir/StirApp.h"
+#include "engine/stir/WindowPicture.h"
 #include "precompute/scene/SceneLoader.h"
 #include "tools/modeflow/Commands.h"
 #include "tools/modeflow/NumberOptions.h"
@@ -58,9 +60,17 @@ Command addStir(CLI::App& app) {
         const BackendChoice choice = parseDeviceOption(opts->device);
         const SceneSpec scene = loadScene(opts->scene);
         requireSupport(scene, choice.kind);
-        // The window's device opens after the precompute; a basis too large for it is refused
-        // now, from the first suitable device's limits (the upload checks again).
-        if (choice.kind == BackendKind::Vulkan) Backend(choice).requireFits(scene);
+        // The window's device opens after the precompute; a basis or a picture too large for it
+        // is refused now, from the first suitable device's limits (the uploads check again).
+        {
+            const Backend windowDevice(BackendChoice{BackendKind::Vulkan, choice.vulkan});
+            if (choice.kind == BackendKind::Vulkan) windowDevice.requireFits(scene);
+            if (opts->width || opts->height)
+                stir::requirePictureFits(
+                    *windowDevice.vulkanContext(), opts->width.value_or(stir::kWindowWidth),
+                    opts->height.value_or(stir::kWindowHeight), "--width/--height");
+        }
+        if (opts->screenshot) requireWritableFile(*opts->screenshot, "--screenshot");
         stir::StirOptions options;
         options.backend = choice;
         options.frames = opts->frames;

@@ -10,10 +10,10 @@
 #include "engine/dynamics/ModalDivergence.h"
 #include "engine/output/PlyFrame.h"
 #include "engine/pipeline/RunInputs.h"
-#include "engine/preview/ContactSheet.h"
 #include "engine/preview/PngWriter.h"
 #include "engine/preview/SurfaceImage.h"
 #include "engine/surface/SurfaceSimulation.h"
+#include "tools/modeflow/FramePreview.h"
 #include "tools/modeflow/FrameProgress.h"
 
 namespace modeflow::cli {
@@ -30,7 +30,7 @@ int runSurface(const SurfaceRunOptions& o) {
             o.resumeFrom->time, o.resumeFrom->velocity,
             Eigen::Map<const Eigen::VectorXd>(o.resumeFrom->smoke.density.data(),
                                               Eigen::Index(o.resumeFrom->smoke.density.size())));
-        simulation.setHeldRate(o.resumeFrom->heldRate);
+        simulation.setCarry(o.resumeFrom->carry);
         first = o.resumeFrom->frame;
         std::cerr << "resuming after frame " << first << " (t = " << o.resumeFrom->time << ")\n";
     } else if (const int removed = o.folder.removeEarlierRun(); removed > 0) {
@@ -39,8 +39,10 @@ int runSurface(const SurfaceRunOptions& o) {
     }
     const double dyeScale = dyeColourScale(run.settings);
 
-    std::vector<preview::Image> pictures;
-    std::vector<int> pictured;
+    const auto pictureOf = [&](int frame) {
+        return std::filesystem::path(o.folder.path() / plyFrameFileName(o.scene.name, frame))
+            .replace_extension(".png");
+    };
     FrameProgress bar(first, o.frames, run.settings.stepsPerFrame);
     for (int frame = first + 1; frame <= o.frames; ++frame) {
         const std::string stage = "frame " + std::to_string(frame);
@@ -68,15 +70,13 @@ int runSurface(const SurfaceRunOptions& o) {
                 writePlyFrame(o.folder.path() / plyFrameFileName(o.scene.name, frame), ply);
             });
         });
-        if (o.previewEvery > 0 && (frame % o.previewEvery == 0 || frame == o.frames)) {
-            pictures.push_back(
-                preview::surfaceImage(run.cache.surface.mesh, dye, dyeScale, 512, 384));
-            pictured.push_back(frame);
-            std::filesystem::path png = o.folder.path() / plyFrameFileName(o.scene.name, frame);
-            preview::writePng(png.replace_extension(".png"), pictures.back());
-        }
-        Checkpoint checkpoint{frame, simulation.time(),     o.runHash, simulation.velocity(),
-                              {},    simulation.heldRate(), {}};
+        if (o.previewEvery > 0 && previewed(frame, o.frames, o.previewEvery))
+            bar.timed("previews", [&] {
+                preview::writePng(pictureOf(frame), preview::surfaceImage(run.cache.surface.mesh,
+                                                                          dye, dyeScale, 512, 384));
+            });
+        Checkpoint checkpoint{frame, simulation.time(),  o.runHash, simulation.velocity(),
+                              {},    simulation.carry(), {}};
         const Eigen::VectorXd& state = simulation.dye().state();
         checkpoint.smoke.density.assign(state.data(), state.data() + state.size());
         checkpoint.smoke.temperature.assign(checkpoint.smoke.density.size(), 0.0);  // dye has none
@@ -84,13 +84,9 @@ int runSurface(const SurfaceRunOptions& o) {
         bar.frameDone(frame, simulation.time(), "");
     }
     bar.finish();
-    if (!pictures.empty()) {
-        preview::ContactSheetOptions options;
-        options.labels = pictured;
-        preview::writePng(
-            o.folder.path() / (o.scene.name + "_contact.png"),
-            preview::contactSheet(pictures, std::min<int>(6, int(pictures.size())), options));
-    }
+    if (o.previewEvery > 0)
+        writeContactSheet(o.folder.path() / (o.scene.name + "_contact.png"), o.frames,
+                          o.previewEvery, pictureOf);
     std::printf("%s\n", o.folder.path().string().c_str());
     return 0;
 }

@@ -25,20 +25,24 @@ std::string fixed(double value, int digits) {
     return out.str();
 }
 
-/// The studies `--only` names (comma-separated keys), in their own order; all without it.
+/// The studies `--only` names (comma-separated keys, spaces around them ignored), in their own
+/// order; all without it. @throw Error for an empty list, an empty or unknown key, naming the keys
+/// there are.
 std::vector<validate::Study> chosenStudies(const std::optional<std::string>& only) {
     const std::vector<validate::Study>& all = validate::allStudies();
     if (!only) return all;
+    std::string keys;
+    for (const validate::Study& s : all) keys += (keys.empty() ? "" : ", ") + s.key;
     std::set<std::string> wanted;
-    std::stringstream list(*only);
+    std::stringstream list(*only + ",");  // so that a trailing comma leaves an empty key too
     for (std::string key; std::getline(list, key, ',');) {
+        const std::size_t first = key.find_first_not_of(" \t"), last = key.find_last_not_of(" \t");
+        key = first == std::string::npos ? "" : key.substr(first, last - first + 1);
+        if (key.empty())
+            throw Error("--only \"" + *only + "\": an empty study name (studies: " + keys + ")");
         bool known = false;
         for (const validate::Study& s : all) known = known || s.key == key;
-        if (!known) {
-            std::string keys;
-            for (const validate::Study& s : all) keys += (keys.empty() ? "" : ", ") + s.key;
-            throw Error("--only: no study named \"" + key + "\" (studies: " + keys + ")");
-        }
+        if (!known) throw Error("--only: no study named \"" + key + "\" (studies: " + keys + ")");
         wanted.insert(key);
     }
     std::vector<validate::Study> chosen;

@@ -7,6 +7,8 @@
 #include <csignal>
 #include <cstdlib>
 #include <cstring>
+#include <iostream>
+#include <string>
 #include <vector>
 
 #include "engine/core/Error.h"
@@ -22,19 +24,45 @@ constexpr int kNoMatplotlib = 3;
 /// The child's status when the interpreter cannot be started.
 constexpr int kNoInterpreter = 127;
 
-/// Runs `interpreter - args...` with the report script on its standard input; its output goes
-/// to ours. Returns its exit status.
-int runScript(const std::vector<std::string>& args) {
+/// report.py's exit status when a file of the report cannot be written: its last line says which.
+constexpr int kWriteFailed = 4;
+
+struct ScriptResult {
+    int status = 0;
+    std::string errors;  ///< what the script wrote to its standard error
+};
+
+/// The last line of `text` that is not empty.
+std::string lastLine(const std::string& text) {
+    std::size_t end = text.find_last_not_of("\n");
+    if (end == std::string::npos) return "";
+    const std::size_t begin = text.rfind('\n', end);
+    return text.substr(begin == std::string::npos ? 0 : begin + 1,
+                       end - (begin == std::string::npos ? 0 : begin + 1) + 1);
+}
+
+/// Runs `interpreter - args...` with the report script on its standard input; its standard
+/// output goes to ours, its standard error is returned (Python reads the whole script before it
+/// runs any of it, so nothing it writes there can stall the script's writing).
+ScriptResult runScript(const std::vector<std::string>& args) {
     const std::string interpreter = reportInterpreter();
-    int pipeFds[2];
+    int pipeFds[2], errorFds[2];
     if (pipe(pipeFds) != 0)
         throw Error(std::string("report: cannot create a pipe: ") + std::strerror(errno));
+    if (pipe(errorFds) != 0) {
+        close(pipeFds[0]);
+        close(pipeFds[1]);
+        throw Error(std::string("report: cannot create a pipe: ") + std::strerror(errno));
+    }
     const pid_t pid = fork();
     if (pid < 0) throw Error(std::string("report: cannot start Python: ") + std::strerror(errno));
     if (pid == 0) {
         dup2(pipeFds[0], STDIN_FILENO);
+        dup2(errorFds[1], STDERR_FILENO);
         close(pipeFds[0]);
         close(pipeFds[1]);
+        close(errorFds[0]);
+        close(errorFds[1]);
         std::vector<char*> argv{const_cast<char*>(interpreter.c_str()), const_cast<char*>("-")};
         for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
         argv.push_back(nullptr);
@@ -42,6 +70,7 @@ int runScript(const std::vector<std::string>& args) {
         _exit(kNoInterpreter);
     }
     close(pipeFds[0]);
+    close(errorFds[1]);
     // An interpreter that never started (or exited early) closes the pipe: the write must fail
     // with EPIPE, not kill this process with SIGPIPE.
     struct sigaction ignore {
@@ -57,10 +86,21 @@ int runScript(const std::vector<std::string>& args) {
     }
     close(pipeFds[1]);
     sigaction(SIGPIPE, &previous, nullptr);
+    ScriptResult result;
+    char buffer[4096];
+    for (;;) {
+        const ssize_t n = read(errorFds[0], buffer, sizeof buffer);
+        if (n > 0)
+            result.errors.append(buffer, std::size_t(n));
+        else if (n == 0 || errno != EINTR)
+            break;
+    }
+    close(errorFds[0]);
     int status = 0;
     while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
     }
-    return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+    result.status = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+    return result;
 }
 
 }  // namespace
@@ -72,7 +112,9 @@ std::string reportInterpreter() {
 }
 
 void requirePlotting() {
-    const int status = runScript({"--check"});
+    const ScriptResult check = runScript({"--check"});
+    std::cerr << check.errors;
+    const int status = check.status;
     if (status == kNoInterpreter)
         throw Error("validate: cannot start Python (" + reportInterpreter() +
                     ") to draw the report: install python3 and python3-matplotlib "
@@ -89,11 +131,18 @@ void requirePlotting() {
 }
 
 void drawReport(const std::filesystem::path& dir) {
-    const int status = runScript({dir.string()});
-    if (status != 0)
+    const ScriptResult drawn = runScript({dir.string()});
+    if (drawn.status == kWriteFailed) {
+        // One line: which file, and why (its partial file is gone, no figure is left half written).
+        std::string why = lastLine(drawn.errors);
+        if (why.rfind("report.py: ", 0) == 0) why.erase(0, 11);
+        throw Error("validate: the report could not be written: " + why);
+    }
+    std::cerr << drawn.errors;
+    if (drawn.status != 0)
         throw Error("validate: drawing the report from " + (dir / "results.json").string() +
-                    " failed (" + reportInterpreter() + " exit status " + std::to_string(status) +
-                    ", its messages above)");
+                    " failed (" + reportInterpreter() + " exit status " +
+                    std::to_string(drawn.status) + ", its messages above)");
 }
 
 }  // namespace modeflow::validate

@@ -28,14 +28,40 @@ except ImportError as e:
 FIGURE_DPI = 90
 
 
+class WriteFailed(Exception):
+    """A file of the report could not be written (a full disk, a quota): one line says which."""
+
+
+def write_atomically(path, write):
+    """Calls write(partial) on a file beside `path`, then renames it over `path`: a failed write
+    leaves no file under the final name, and removes its partial one."""
+    partial = path + ".tmp"
+    try:
+        write(partial)
+        os.replace(partial, path)
+    except OSError as e:
+        try:
+            os.remove(partial)
+        except OSError:
+            pass
+        raise WriteFailed(f"cannot write {path}: {e.strerror or e}") from e
+
+
 def save(fig, folder, name):
     path = os.path.join(folder, name + ".png")
     fig.tight_layout()
-    fig.savefig(path, dpi=FIGURE_DPI)
-    plt.close(fig)
-    # 256 colours (Pillow comes with matplotlib): a third of the size, so the committed figures
-    # stay small.
-    Image.open(path).convert("RGB").quantize(colors=256).save(path, optimize=True)
+
+    def write(partial):
+        try:
+            fig.savefig(partial, dpi=FIGURE_DPI, format="png")
+        finally:
+            plt.close(fig)
+        # 256 colours (Pillow comes with matplotlib): a third of the size, so the committed
+        # figures stay small.
+        Image.open(partial).convert("RGB").quantize(colors=256).save(partial, format="PNG",
+                                                                     optimize=True)
+
+    write_atomically(path, write)
     return path
 
 
@@ -449,7 +475,10 @@ def main():
     with open(os.path.join(folder, "results.json"), encoding="utf-8") as f:
         results = json.load(f)
     figures = os.path.join(folder, "figures")
-    os.makedirs(figures, exist_ok=True)
+    try:
+        os.makedirs(figures, exist_ok=True)
+    except OSError as e:
+        raise WriteFailed(f"cannot create {figures}: {e.strerror or e}") from e
     studies = results["studies"]
     parts = [
         "<!DOCTYPE html><html><head><meta charset='utf-8'><title>modeflow validate</title><style>"
@@ -476,12 +505,18 @@ def main():
             parts.append(f"<figure><img src='{embedded(path)}' alt='{html.escape(key)}'>"
                          f"<figcaption>{html.escape(caption)}</figcaption></figure>")
     parts.append("</body></html>")
-    report = os.path.join(folder, "report.html")
-    with open(report + ".tmp", "w", encoding="utf-8") as f:
-        f.write("\n".join(parts))
-    os.replace(report + ".tmp", report)
+    def write(partial):
+        with open(partial, "w", encoding="utf-8") as f:
+            f.write("\n".join(parts))
+
+    write_atomically(os.path.join(folder, "report.html"), write)
     return 0
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    try:
+        sys.exit(main())
+    except WriteFailed as e:
+        # modeflow validate shows this line as its error.
+        print(f"report.py: {e}", file=sys.stderr)
+        sys.exit(4)
