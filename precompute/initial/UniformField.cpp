@@ -63,6 +63,57 @@ UniformField::UniformField(const BasisCache& cache, const std::vector<ShapeSpec>
     if (!(length > 0.0)) throw Error("uniform field: the direction must be a non-zero vector");
     if (!(layer > 0.0)) throw Error("uniform field: the wall layer must be positive");
     for (int a = 0; a < 3; ++a) mField[a] = strength * direction[a] / length;
+    choosePotential();
+}
+
+void UniformField::choosePotential() {
+    const int dim = mGrid.dim;
+    const auto periodic = [&](int a) { return a < dim && mGrid.isPeriodic(a); };
+    // A_i = Σ_j P_ij r_j. Without a periodic axis, the symmetric gauge A = ½ B0 × r (3D) or
+    // A_z = B0x r_y − B0y r_x (2D).
+    for (Vec3& row : mPotential) row = {0.0, 0.0, 0.0};
+    if (!mGrid.anyPeriodic()) {
+        if (dim == 2) {
+            mPotential[2] = {-mField[1], mField[0], 0.0};
+            return;
+        }
+        for (int a = 0; a < 3; ++a) {
+            const int b = (a + 1) % 3, c = (a + 2) % 3;
+            mPotential[c][b] += 0.5 * mField[a];  // ½ B0_a (ê_a × r) = ½ B0_a (r_b ê_c − r_c ê_b)
+            mPotential[b][c] -= 0.5 * mField[a];
+        }
+        return;
+    }
+    // Along a periodic axis A must not grow, or B would jump at the seam wherever a wall meets
+    // it: each component B0_a ê_a = ∇×(r_b ê_c) = ∇×(−r_c ê_b) ((a, b, c) cyclic; 2D: c = z)
+    // takes the form whose coordinate runs along a wall-bounded axis.
+    for (int a = 0; a < dim; ++a) {
+        if (mField[a] == 0.0) continue;
+        const int b = (a + 1) % 3, c = (a + 2) % 3;
+        if (b < dim && !periodic(b)) {
+            mPotential[c][b] += mField[a];
+        } else if (c < dim && !periodic(c)) {
+            mPotential[b][c] -= mField[a];
+        } else if (!periodic(a)) {
+            // The section across axis a closes on itself: the flux through it is the same at
+            // every a and zero at a's walls, so no field crosses it on average.
+            const char* names[] = {"x", "y", "z"};
+            throw Error(std::string("uniform field: a component along ") + names[a] +
+                        " crosses the walls at the ends of " + names[a] +
+                        ", and every other axis is periodic: no divergence-free field without "
+                        "flux through the walls crosses them on average; choose a direction "
+                        "along a periodic axis");
+        } else {
+            // A whole torus: the coordinate is taken at its image nearest Ω's centroid, which
+            // is exact wherever walls (obstacles) stay clear of the seam opposite the centroid.
+            const int axis = b < dim ? b : c;
+            mWrapped[axis] = true;
+            if (axis == b)
+                mPotential[c][b] += mField[a];
+            else
+                mPotential[b][c] -= mField[a];
+        }
+    }
 }
 
 double UniformField::wallDistance(const Vec3& x) const {
@@ -82,14 +133,15 @@ double UniformField::weight(const Vec3& x) const {
 
 Vec3 UniformField::operator()(const Vec3& x) const {
     Vec3 r{x[0] - mCentre[0], x[1] - mCentre[1], x[2] - mCentre[2]};
-    Vec3 potential;
-    if (mGrid.dim == 2) {
-        r[2] = 0.0;
-        potential = {0.0, 0.0, mField[0] * r[1] - mField[1] * r[0]};
-    } else {
-        potential = cross(mField, r);
-        for (double& c : potential) c *= 0.5;
+    for (int a = 0; a < 3; ++a) {
+        if (a >= mGrid.dim) r[a] = 0.0;
+        if (!mWrapped[a]) continue;
+        const double period = mGrid.boundsMax[a] - mGrid.boundsMin[a];
+        r[a] -= period * std::round(r[a] / period);
     }
+    Vec3 potential;
+    for (int i = 0; i < 3; ++i)
+        potential[i] = mPotential[i][0] * r[0] + mPotential[i][1] * r[1] + mPotential[i][2] * r[2];
     // ∇w by central differences: χ has no analytic gradient for meshes and CSG combinations.
     const double step = 1e-4 * mLayer;
     Vec3 gradient{0.0, 0.0, 0.0};

@@ -424,7 +424,7 @@ TEST(SimulationResume, EveryBackendAndIntegratorContinuesBitForBitFromAnyStep) {
         }
         EXPECT_EQ(saved[0].carry.heldRate.size() != 0, c.scheme == Integrator::Linearized) << name;
         EXPECT_EQ(saved[4].carry.substeps, c.substeps) << name;
-        for (const int stop : {1, 2, 5}) {
+        for (int stop = 1; stop < kSteps; ++stop) {
             const Checkpoint& from = saved[std::size_t(stop - 1)];
             const std::unique_ptr<Simulator> resumed = make();
             resumed->restore(from.time, from.velocity, from.smoke);

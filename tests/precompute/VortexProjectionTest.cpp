@@ -381,6 +381,52 @@ TEST(UniformField, IsUniformUpToTheEndsOfPeriodicAxes) {
     EXPECT_LT(field({0.0, 0.999, 0.0})[0], 0.1) << "faded out at a wall";
 }
 
+TEST(UniformField, WrapsPeriodicSeamsWhereWallsMeetThem) {
+    // A 3D channel periodic along x between walls in y and z: a field across y turns back along
+    // the z walls. Across the seam x = ±1 it goes on continuously, next to the walls too (the
+    // symmetric gauge's potential grows along x there, and jumped); divergence-free throughout.
+    BasisCache channel;
+    channel.grid = testing::gridScene({8, 8, 8}, {-1.0, -1.0, -1.0}, {1.0, 1.0, 1.0}, 3).grid;
+    channel.grid.periodic = {true, false, false};
+    const UniformField field(channel, {}, {0.3, 1.0, 0.4}, 1.0, 0.3);
+    const double h = 1e-5;
+    for (const double y : {-0.9, -0.2, 0.85})
+        for (const double z : {-0.92, 0.1, 0.9}) {
+            EXPECT_LE(maxDifference(field({1.0 - 1e-9, y, z}), field({-1.0 + 1e-9, y, z})), 1e-6)
+                << "y = " << y << ", z = " << z;
+            const auto at = [&](double dx, double dy, double dz) {
+                return field({-0.99 + dx, y + dy, z + dz});
+            };
+            const double divergence = (at(h, 0, 0)[0] - at(-h, 0, 0)[0] + at(0, h, 0)[1] -
+                                       at(0, -h, 0)[1] + at(0, 0, h)[2] - at(0, 0, -h)[2]) /
+                                      (2 * h);
+            EXPECT_NEAR(divergence, 0.0, 1e-4) << "y = " << y << ", z = " << z;
+        }
+    EXPECT_NEAR(field({0.0, 0.0, 0.0})[1], 1.0 / std::sqrt(1.25), 1e-12) << "uniform inside";
+    // Where the section across an axis closes on itself through periodic axes, no field crosses
+    // it on average: refused, naming the axis (2D channel along x: y; 3D slab periodic in x, y: z).
+    BasisCache channel2d;
+    channel2d.grid = testing::gridScene({16, 16, 1}, {-1.0, -1.0, 0.0}, {1.0, 1.0, 0.0}, 2).grid;
+    channel2d.grid.periodic = {true, false, false};
+    BasisCache slab = channel;
+    slab.grid.periodic = {true, true, false};
+    for (const auto& [cache, direction, axis] : {std::tuple{&channel2d, Vec3{0.2, 1.0, 0.0}, "y"},
+                                                 std::tuple{&slab, Vec3{0.0, 0.0, 1.0}, "z"}}) {
+        try {
+            UniformField(*cache, {}, direction, 1.0, 0.3);
+            ADD_FAILURE() << "a field across " << axis << " was accepted";
+        } catch (const Error& e) {
+            EXPECT_NE(std::string(e.what()).find(std::string("a component along ") + axis +
+                                                 " crosses the walls"),
+                      std::string::npos)
+                << e.what();
+        }
+    }
+    const UniformField along(slab, {}, {1.0, 0.5, 0.0}, 1.0, 0.3);
+    EXPECT_LE(maxDifference(along({1.0 - 1e-9, 0.3, 0.95}), along({-1.0 + 1e-9, 0.3, 0.95})), 1e-6);
+    EXPECT_LE(maxDifference(along({0.3, 1.0 - 1e-9, 0.95}), along({0.3, -1.0 + 1e-9, 0.95})), 1e-6);
+}
+
 TEST(UniformField, ProjectionIsTheLeastSquaresFitAndDivergenceFree) {
     const BasisCache& cache = disk();
     const UniformField field(cache, kUnitDisk, {1.0, 0.0, 0.0}, 1.0, uniformFieldLayer(cache));
