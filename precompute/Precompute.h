@@ -1,7 +1,7 @@
 #pragma once
 /// @file Precompute.h
-/// Scene → cut-cell DEC → eigenbases → cache file (README.md, "How the precompute works"). The only
-/// entry point the command line needs; every stage below it is a separate module.
+/// Scene → cut-cell DEC → eigenbases → cache file (precompute/README.md, "How the precompute
+/// works"). The only entry point the command line needs; every stage below it is a separate module.
 
 #include <filesystem>
 #include <string>

@@ -1,8 +1,8 @@
 #pragma once
 /// @file SurfaceStages.h
-/// The precompute of a surface scene (README.md, "Curved surfaces"): its mesh read and checked,
-/// the surface DEC, the bases and the structural coefficients (packed and dense: Precompute
-/// chooses their storage), into a cache of kind Surface.
+/// The precompute of a surface scene (scenes/README.md, "Curved surfaces"): its mesh read and
+/// checked, the surface DEC, the bases and the structural coefficients (packed and dense:
+/// Precompute chooses their storage), into a cache of kind Surface.
 
 #include <string>
 

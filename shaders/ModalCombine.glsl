@@ -15,7 +15,7 @@
    are one float from each earlier row, a scalar load per lane on lavapipe, where a texel is one
    vector gather for all lanes (TexelAccess.glsl); and writing U's mirror image from the pair sums
    makes those stores scattered (3D box, N = 1000, lavapipe, per contraction: packed 5.6 + 3.2 ms,
-   mirrored 8.9 + 0.4 ms, two passes 5.7 + 0.8 ms: README "Closed-form bases"). The columns pass
+   mirrored 8.9 + 0.4 ms, two passes 5.7 + 0.8 ms: precompute/README.md "Closed-form bases"). The columns pass
    takes four rows a step, one fetch of b for them and no component picked by a run-time index
    (0.24 -> 0.17 ms a pass). Not one read of U for both products: every row's part then needs a
    sum across lanes in every tile of columns (a subgroup sum per row and tile: 1.0 ms a combine

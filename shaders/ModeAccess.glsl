@@ -20,7 +20,7 @@
    Tiles make what one 8-wide batch of invocations (lavapipe's SIMD width with AVX2) reads of all
    the modes one contiguous stream: the reconstruction went from 113 to 32 ms
    (reconstruct_velocity.comp). Texel fetches, vector gathers on lavapipe, then read that stream
-   about 3x faster than 32-byte storage loads (README "Speed"). On a GPU each fetch of a warp
+   about 3x faster than 32-byte storage loads (engine/README.md "Speed"). On a GPU each fetch of a warp
    covers whole, aligned segments (a tile: 8 neighbouring invocations x 32 bytes). */
 #ifndef MODEFLOW_SHADERS_MODE_ACCESS_GLSL
 #define MODEFLOW_SHADERS_MODE_ACCESS_GLSL

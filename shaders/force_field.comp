@@ -1,5 +1,5 @@
 #version 450
-// Force density g on the velocity DOFs (README.md "Reduced dynamics", engine/README.md; CPU reference and definitions:
+// Force density g on the velocity DOFs (engine/README.md "Reduced dynamics"; CPU reference and definitions:
 // engine/reference/ForceField.h): Gaussian stirring splats (force . n) exp(-|x - centre|^2 / radius^2)
 // at the face centres, plus buoyancy times the mean temperature over the dual cell of each
 // up-facing face. Two stages, one pipeline each (engine/device/ForceField; without splats the
@@ -10,7 +10,7 @@
 //                 without splats g = (ACCUMULATE 0: no load of g, a scalar access per lane on
 //                 lavapipe; the 64^3 box's buoyancy pass 2.3-2.5 -> 1.9 ms, and its fill of
 //                 g, 0.2 ms, left out where only the up DOFs are read).
-// Why, measured on lavapipe (tools/bench/bench_runtime `forces`, README "Speed"): one pass over
+// Why, measured on lavapipe (tools/bench/bench_runtime `forces`, engine/README.md "Speed"): one pass over
 // every DOF with the buoyancy behind `if (axis == up)` and the dual cell's loop bounds per lane ran
 // the dual-cell code for every DOF (an `if` on lavapipe masks lanes, its body runs), decoded the
 // face position by integer division and looped with lane-varying bounds. The stages, the up list

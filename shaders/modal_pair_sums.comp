@@ -1,5 +1,5 @@
 #version 450
-// First half of the dense structural-coefficient contraction (README.md "Reduced dynamics", seed eq. 6.6),
+// First half of the dense structural-coefficient contraction (engine/README.md "Reduced dynamics", seed eq. 6.6),
 // float32. For every stored pair p = (k, j), k < j, of one chunk of the packed coefficients:
 //
 //     sums(k, j) = sum_i C[k][i][j] a_i,   stored as U[k][j] (modal_combine.comp)
@@ -23,7 +23,7 @@
 // 8-wide batch (lavapipe's SIMD width with AVX2) reads one contiguous stream instead of 32 (one
 // per row): 4.6-7.8 GB/s; octets as one load of four 64-bit words and eight rows a lane: 7.0-8.8.
 // Then both inputs read as uniform texel buffers (TexelAccess.glsl), which lavapipe fetches with
-// unmasked vector gathers: see README "Speed". On a GPU each fetch of a warp covers whole,
+// unmasked vector gathers: see engine/README.md "Speed". On a GPU each fetch of a warp covers whole,
 // aligned segments (8 lanes x 32 bytes). Tiles are visited grid-stride, so any group count works.
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_control_flow_attributes : require

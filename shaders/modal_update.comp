@@ -1,5 +1,5 @@
 #version 450
-// The state updates of the modal integrators (README.md "Reduced dynamics"), float32, one workgroup over the
+// The state updates of the modal integrators (engine/README.md "Reduced dynamics"), float32, one workgroup over the
 // N modes, or over MHD's state [v; F] (two parts of N at 0 and `stride`; r then holds
 // [C(v, v); advect(v, F); C(F, F)] and the velocity part's R is the first minus the third). x is the state, y the point where r = R(y) was evaluated (modal_combine.comp), a = M y
 // the weighted point modal_pair_sums.comp contracts next, f the modal force (constant over the
@@ -161,7 +161,7 @@ void solveLeastSquares(uint used) {
 // h |dR/dy| / 2 per iteration, and that Jacobian of the advection term has nearly imaginary
 // eigenvalues: close to 1 (an energetic flow at a large step) plain iteration takes dozens of
 // iterations and a one-direction secant hardly helps, where m directions cut them several fold
-// (ModalStepKernelTest; README "Vulkan runtime"). The first iteration of a step is the plain
+// (ModalStepKernelTest; engine/README.md "Vulkan runtime"). The first iteration of a step is the plain
 // one. Converged when max|F| <= tolerance max|g|. History (binding 10): D in slots 0..m-1, E in
 // m..2m-1, the last F and g in 2m and 2m + 1, the warm start's r_before in 2m + 2 (main()), the
 // linearized rule's held rate in 2m + 3, each parts * stride floats.
@@ -236,7 +236,7 @@ void main() {
     // 2 r - r_before, or r after one such step; y = g with R~ is then within h/2 |R~ - R(y*)| =
     // O(h^3) of the fixed point (O(h^2) after one step), where the first plain iterate from
     // y = x, which costs an evaluation, is O(h^2) off. 64^3 box, N = 1000: 6 -> 4 evaluations a
-    // step (README "Closed-form bases").
+    // step (precompute/README.md "Closed-form bases").
     const uint held = op == MODAL_OP_BEGIN ? status.heldRhs : 0u;
     const bool warm = params.warm != 0u && held != 0u;
     for (uint k = lane; k < params.parts * params.stride; k += size) {

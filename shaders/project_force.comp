@@ -1,5 +1,5 @@
 #version 450
-// Force projection, pass 1 of 2 (README.md "Reduced dynamics"; CPU reference engine/reference/ForceProjection.h):
+// Force projection, pass 1 of 2 (engine/README.md "Reduced dynamics"; CPU reference engine/reference/ForceProjection.h):
 //
 //     partial[k][b] = sum_{d in block b} Psi_k[d] w_d q_d
 //
@@ -24,7 +24,7 @@
 // density q read 8 floats a load, and the shared-memory tree replaced by one ordered pass over the
 // invocations' sums: 64^3 N = 200 float32 1.2-2.1x faster in each of seven runs alternating with
 // the previous version (75-204 -> 50-124 ms), 256^2 and 48^3 0.6-2x (typically 1.1-1.4x). Then
-// the modes, w and density q fetched as texels (TexelAccess.glsl): README "Speed".
+// the modes, w and density q fetched as texels (TexelAccess.glsl): engine/README.md "Speed".
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_control_flow_attributes : require
 #include "ProjectForceParams.h"

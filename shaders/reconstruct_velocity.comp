@@ -23,7 +23,7 @@
 // the modes unrolled: 64^3 N = 200 (five 40-mode chunks) float32 1.5-3.2x faster in each of seven
 // runs alternating with the previous version (101-312 -> 62-104 ms), 48^3 N <= 100 1.3-2x, one
 // chunk of 200 modes (256^2) no faster (0.6-1.25x; runs of 64 modes each, tried, were slower).
-// Then the modes and face indices fetched as texels (TexelAccess.glsl): README "Speed".
+// Then the modes and face indices fetched as texels (TexelAccess.glsl): engine/README.md "Speed".
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
 #extension GL_EXT_control_flow_attributes : require

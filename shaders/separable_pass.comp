@@ -18,7 +18,7 @@
 // 3.7-4.6 ms, six runs each alternating). Why texels:
 // lavapipe makes every lane's storage load a scalar access and a texel fetch one gather for all
 // lanes (TexelAccess.glsl); one output an invocation, two storage loads a term, took 7.2 ms of
-// the 3D box's projection (64^3, N = 1000) where this takes 1.0 ms (README "Closed-form bases").
+// the 3D box's projection (64^3, N = 1000) where this takes 1.0 ms (precompute/README.md "Closed-form bases").
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_control_flow_attributes : require
 #include "SeparableParams.h"

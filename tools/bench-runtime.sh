@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The Vulkan runtime's benchmark tables (README "Speed"), one Google Benchmark executable each:
+# The Vulkan runtime's benchmark tables (engine/README.md "Speed"), one Google Benchmark executable each:
 # contraction, whole modal steps, the runtime step by stage, the basis kernels alone, smoke
 # advection, the 3D preview, the 64³ closed-form box stage by stage (CPU reference and device),
 # and dense against tensor-free steps (N up to 1000: 10 GB, minutes).

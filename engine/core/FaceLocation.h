@@ -44,7 +44,7 @@ inline Vec3 faceCentre(const MacGrid& grid, const FaceLocation& face) {
     return centre;
 }
 
-/// The "up" axis of buoyancy (README.md, "Scene files"): +y in 2D, +z in 3D.
+/// The "up" axis of buoyancy (scenes/README.md, "Scene files"): +y in 2D, +z in 3D.
 inline int upAxis(const MacGrid& grid) {
     return grid.dim - 1;
 }

@@ -1,6 +1,6 @@
 #pragma once
 /// @file PackedLayout.h
-/// The packed layout of dense structural coefficients (README.md, "Reduced dynamics", seed
+/// The packed layout of dense structural coefficients (engine/README.md, "Reduced dynamics", seed
 /// eq. 6.7). Because C[k][i][j] = −C[j][i][k] (and so C[k][i][k] = 0), only the pairs k < j are
 /// stored. Pairs are numbered in row order (0,1), (0,2), …, (0,N−1), (1,2), …, (N−2,N−1), and each
 /// pair owns the contiguous vector over i:

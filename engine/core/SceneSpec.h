@@ -1,7 +1,8 @@
 #pragma once
 /// @file SceneSpec.h
-/// The validated content of a scene file (README.md, "Scene files"). Plain values only: parsing and
-/// validation live in SceneLoader, so every other module can use a scene without pulling in TOML.
+/// The validated content of a scene file (scenes/README.md, "Scene files"). Plain values only:
+/// parsing and validation live in SceneLoader, so every other module can use a scene without
+/// pulling in TOML.
 
 #include <array>
 #include <cstdint>
@@ -191,7 +192,7 @@ struct OutputSpec {
 };
 
 /// `[surface]`: the fluid lives on a closed triangle-mesh surface instead of in a grid's box
-/// (README.md, "Curved surfaces").
+/// (scenes/README.md, "Curved surfaces").
 struct SurfaceSpec {
     std::filesystem::path meshFile;  ///< OBJ, resolved against the scene's folder
     bool operator==(const SurfaceSpec&) const = default;

@@ -1,7 +1,7 @@
 #pragma once
 /// @file ModalStepper.h
-/// The reduced dynamics (README.md, "Reduced dynamics") advanced on the device in float32: the
-/// fluid (Euler, Navier–Stokes, LANS-α) over v, or MHD over [v; F]. The state, the modal force
+/// The reduced dynamics (engine/README.md, "Reduced dynamics") advanced on the device in float32:
+/// the fluid (Euler, Navier–Stokes, LANS-α) over v, or MHD over [v; F]. The state, the modal force
 /// and the integrator's scratch vectors live in device buffers, and a step is recorded into a
 /// CommandSequence, so any number of steps (and the kernels that consume the velocity) go in one
 /// submission. CPU reference: ModalIntegrator over a FluidSystem or MhdSystem with the same

@@ -184,7 +184,7 @@ FrameStats Simulation::advanceSteps(int steps) {
         mSequence.submitAndWait();
         mTime += mSettings.dt;
         ++stats.steps;
-        // N floats: as cheap as the status read below (measured in the README).
+        // N floats: as cheap as the status read below (measured in engine/README.md).
         requireFiniteModalState(mStepper.state(), ++mStep, mTime);
 
         const DeviceStepStatus status = mStepper.status();

@@ -1,7 +1,7 @@
 #pragma once
 /// @file FluidSystem.h
-/// The reduced Euler / Navier–Stokes / LANS-α model over the modal velocity v (README.md, "Reduced
-/// dynamics"):
+/// The reduced Euler / Navier–Stokes / LANS-α model over the modal velocity v (engine/README.md,
+/// "Reduced dynamics"):
 ///
 ///     (1 + α²κ_k²) v̇_k = Σ_ij (1 + α²κ_i²) C[k][i][j] v_i v_j + f_k,  then  v_k ← e^{−νκ_k²h} v_k.
 ///

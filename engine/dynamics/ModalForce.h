@@ -1,8 +1,8 @@
 #pragma once
 /// @file ModalForce.h
-/// External modal forces f_k = Ψkᵀ⋆2 F (README.md, "Reduced dynamics") as a function of time, for
-/// schemes that sample the force inside a step (RK4 stages, the midpoint time, the trapezoidal end
-/// points).
+/// External modal forces f_k = Ψkᵀ⋆2 F (engine/README.md, "Reduced dynamics") as a function of
+/// time, for schemes that sample the force inside a step (RK4 stages, the midpoint time, the
+/// trapezoidal end points).
 
 #include <functional>
 

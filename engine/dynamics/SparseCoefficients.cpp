@@ -77,7 +77,7 @@ SparseCoefficients SparseCoefficients::fromLists(int n, std::vector<std::int32_t
     // A counting sort of the non-zero entries into rows by pair (k, j), in the lists' order, then
     // by i within each row: the lists (20 bytes an entry) and the rows (12) are all that is held,
     // and the lists go as each array is filled, instead of a sort of 24-byte records beside both
-    // (the N = 10 000 box: README "Closed-form bases").
+    // (the N = 10 000 box: precompute/README.md "Closed-form bases").
     const auto nn = std::size_t(n);
     const auto pairOf = [&](std::size_t e) {
         return pairIndex(nn, std::size_t(k[e]), std::size_t(j[e]));

@@ -1,8 +1,8 @@
 #pragma once
 /// @file BasisCache.h
-/// What a precompute produces and the runtime reads (README.md, "How the precompute works", step
-/// 6): the grid, the degrees of freedom with their Hodge stars, and the eigenbases. Plain values,
-/// no solver types.
+/// What a precompute produces and the runtime reads (precompute/README.md, "How the precompute
+/// works", step 6): the grid, the degrees of freedom with their Hodge stars, and the eigenbases.
+/// Plain values, no solver types.
 
 #include <cstdint>
 #include <string>

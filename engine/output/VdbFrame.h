@@ -1,7 +1,7 @@
 #pragma once
 /// @file VdbFrame.h
-/// Simulation frames as OpenVDB files (README.md, "VDB frames") that Blender and Houdini open as
-/// they are, and a reader of those files for tests and `--resume` checks.
+/// Simulation frames as OpenVDB files (tools/README.md, "VDB frames") that Blender and Houdini open
+/// as they are, and a reader of those files for tests and `--resume` checks.
 ///
 /// One file per frame holds the grids
 /// - `density`: FloatGrid, class fog volume;

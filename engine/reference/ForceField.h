@@ -1,6 +1,6 @@
 #pragma once
 /// @file ForceField.h
-/// Grid forces on the velocity DOFs (README.md, "Reduced dynamics"; engine/README.md), the
+/// Grid forces on the velocity DOFs (engine/README.md, "Reduced dynamics"; engine/README.md), the
 /// double-precision CPU reference of engine/device/ForceField: a force density g (force per unit
 /// volume, along the face normal) on each DOF face, from buoyancy and stirring splats.
 /// ForceProjection.h turns g into modal forces.

@@ -1,8 +1,8 @@
 #pragma once
 /// @file ForceProjection.h
-/// Grid forces → modal forces f_k = Ψ_kᵀ ⋆ F (README.md, "Reduced dynamics"), the double-precision
-/// CPU reference of engine/device/ForceProjection. Both inputs reduce to f_k = Σ_d Ψ_k[d] w_d q_d
-/// with a weight per DOF that depends on what q is:
+/// Grid forces → modal forces f_k = Ψ_kᵀ ⋆ F (engine/README.md, "Reduced dynamics"), the
+/// double-precision CPU reference of engine/device/ForceProjection. Both inputs reduce to f_k = Σ_d
+/// Ψ_k[d] w_d q_d with a weight per DOF that depends on what q is:
 ///
 /// - a force density g (force per volume along the normal, ForceField.h): F = g |f ∩ Ω| and
 ///   ⋆ = |dual edge| / |f ∩ Ω|, so ⋆F = g |dual edge| = g h_axis (h_axis the spacing along the

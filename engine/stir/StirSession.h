@@ -2,11 +2,11 @@
 /// @file StirSession.h
 /// What `modeflow stir` does to the fluid, apart from any window: a Simulation of the scene on
 /// the device, and the user's hand in it. A left drag either stirs, with force splats along the
-/// pointer's path proportional to its speed (projected on the basis like buoyancy, README.md,
-/// "Reduced dynamics"), or moves a solid paddle, a moving obstacle that follows the pointer (seed
-/// §6.3.5). Keys switch the integrator, scale the viscosity, reset, and switch between the shaped
-/// bases the cache holds (ShapedBases.h), carrying the velocity's shared modes and the smoke
-/// across.
+/// pointer's path proportional to its speed (projected on the basis like buoyancy,
+/// engine/README.md, "Reduced dynamics"), or moves a solid paddle, a moving obstacle that follows
+/// the pointer (seed §6.3.5). Keys switch the integrator, scale the viscosity, reset, and switch
+/// between the shaped bases the cache holds (ShapedBases.h), carrying the velocity's shared modes
+/// and the smoke across.
 
 #include <cstdint>
 #include <memory>

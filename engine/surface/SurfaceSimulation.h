@@ -1,7 +1,7 @@
 #pragma once
 /// @file SurfaceSimulation.h
-/// A surface scene advancing step by step on the CPU (README.md, "Curved surfaces"): the modal
-/// velocity with the same integrators, viscosity and LANS-α as a grid scene's (the CPU
+/// A surface scene advancing step by step on the CPU (scenes/README.md, "Curved surfaces"): the
+/// modal velocity with the same integrators, viscosity and LANS-α as a grid scene's (the CPU
 /// reference's modal stage, reference::ModalStepper), a modal force (stirring, SurfaceForce.h)
 /// held over the following steps, and the dye it carries (SurfaceDye). `run` writes its frames
 /// (engine/output/PlyFrame.h); `stir` stirs it.

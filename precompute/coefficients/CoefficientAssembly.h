@@ -1,8 +1,8 @@
 #pragma once
 /// @file CoefficientAssembly.h
-/// The structural coefficients C[k][i][j] = ∫(∇×Ψi)·(Ψk×Ψj) (seed eq. 6.7, README.md, "Reduced
-/// dynamics") of a velocity basis on a cut-cell grid, by quadrature over the vorticity elements (3D
-/// edges, 2D vertices).
+/// The structural coefficients C[k][i][j] = ∫(∇×Ψi)·(Ψk×Ψj) (seed eq. 6.7, engine/README.md,
+/// "Reduced dynamics") of a velocity basis on a cut-cell grid, by quadrature over the vorticity
+/// elements (3D edges, 2D vertices).
 ///
 /// At each element e (axis a; b, c the next axes in cyclic order; in 2D a = z, b = x, c = y):
 ///   ω_i(e)  = (∂_b u_c − ∂_c u_b)(e): circulation of ⋆Ψi around the dual face / its area,

@@ -35,7 +35,7 @@ namespace modeflow {
 /// The default layer L the field turns in (`magnetic_wall_layer` overrides it): one wavelength
 /// 2π/κ of the basis's highest mode, the narrowest the basis resolves. The field is no
 /// equilibrium in the layer (its lines turn at the walls), and the motion that starts there
-/// shrinks as L grows (README, "Scene files").
+/// shrinks as L grows (scenes/README.md, "Scene files").
 /// @throw Error for a basis without modes.
 double uniformFieldLayer(const BasisCache& cache);
 

@@ -1,8 +1,9 @@
 #pragma once
 /// @file SceneLoader.h
-/// Reads a scene file (README.md, "Scene files") into a validated SceneSpec. Everything a user can
-/// get wrong in a scene is caught here, with a message that names the file and the key, so later
-/// stages can trust the values they are given. The TOML library stays inside precompute/scene.
+/// Reads a scene file (scenes/README.md, "Scene files") into a validated SceneSpec. Everything a
+/// user can get wrong in a scene is caught here, with a message that names the file and the key, so
+/// later stages can trust the values they are given. The TOML library stays inside
+/// precompute/scene.
 
 #include <cstdint>
 #include <filesystem>

@@ -1,5 +1,5 @@
 // The `modeflow` command line, run as users run it: exit codes, messages that name what is
-// wrong, and no cache file left behind by a failure (README.md, "Command line").
+// wrong, and no cache file left behind by a failure (tools/README.md, "Command line").
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,6 @@
-// `mpirun -n 2 modeflow precompute` (README.md, "Large bases"): the ranks share the sliced
-// eigensolves, rank 0 alone writes the cache, and the basis is the one a single process computes.
+// `mpirun -n 2 modeflow precompute` (precompute/README.md, "Sliced eigensolves and MPI"): the ranks
+// share the sliced eigensolves, rank 0 alone writes the cache, and the basis is the one a single
+// process computes.
 
 #include <gtest/gtest.h>
 

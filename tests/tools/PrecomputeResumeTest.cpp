@@ -1,6 +1,6 @@
-// `modeflow precompute` stopped in the middle of its sliced eigensolves (README.md, "Sliced
-// eigensolves and MPI") resumes from the intervals it finished: the log says so, the basis is
-// the one an uninterrupted run computes, damaged checkpoints are solved again, and none is left
+// `modeflow precompute` stopped in the middle of its sliced eigensolves (precompute/README.md,
+// "Sliced eigensolves and MPI") resumes from the intervals it finished: the log says so, the basis
+// is the one an uninterrupted run computes, damaged checkpoints are solved again, and none is left
 // once the cache is written. The interruption: MODEFLOW_TEST_STOP_AFTER_INTERVALS, a test hook
 // that makes the solver fail once it has solved and kept that many intervals.
 

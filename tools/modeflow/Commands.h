@@ -1,7 +1,7 @@
 #pragma once
 /// @file Commands.h
-/// The `modeflow` subcommands (README.md, "Command line"). Each registers its options on the CLI11
-/// app and returns the function that runs it; errors propagate as modeflow::Error to main().
+/// The `modeflow` subcommands (tools/README.md, "Command line"). Each registers its options on the
+/// CLI11 app and returns the function that runs it; errors propagate as modeflow::Error to main().
 
 #include <filesystem>
 #include <functional>

@@ -193,7 +193,7 @@ Command addInspect(CLI::App& app) {
                     "a cache file or a scene file (told apart by their contents)")
         ->required();
     sub->add_option("--cache-dir", opts->cacheDir, "cache folder used for a scene");
-    sub->add_flag("--json", opts->json, "print one JSON object (keys in the README)");
+    sub->add_flag("--json", opts->json, "print one JSON object (keys in tools/README.md)");
     return [sub, opts]() {
         if (!*sub) return -1;
         std::filesystem::path path = opts->target;

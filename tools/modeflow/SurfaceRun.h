@@ -1,7 +1,7 @@
 #pragma once
 /// @file SurfaceRun.h
-/// `run` for a surface scene (README.md, "Curved surfaces"): the CPU simulation of the flow and
-/// its dye, one PLY file per frame (with --preview, PNG pictures and a contact sheet too) and
+/// `run` for a surface scene (scenes/README.md, "Curved surfaces"): the CPU simulation of the flow
+/// and its dye, one PLY file per frame (with --preview, PNG pictures and a contact sheet too) and
 /// the resume checkpoint (the dye's modal state [mean, f] in
 /// the checkpoint's density, zeros in its temperature).
 
