@@ -75,6 +75,11 @@ std::vector<std::size_t> evenlySpaced(std::size_t count, std::size_t most) {
     return chosen;
 }
 
+Image thumbnail(const Image& image, int width) {
+    const int height = std::max(1, int(std::lround(double(image.height) * width / image.width)));
+    return resampled(image, width, height);
+}
+
 Image contactSheet(std::span<const Image> frames, int columns, const ContactSheetOptions& o) {
     const auto fail = [](const std::string& why) { return Error("contact sheet: " + why); };
     if (frames.empty()) throw fail("no frames");
@@ -92,9 +97,7 @@ Image contactSheet(std::span<const Image> frames, int columns, const ContactShee
     std::vector<Image> thumbs;
     for (std::size_t f = 0; f < frames.size(); ++f) {
         checkFrame(frames[f], f);
-        const int h = std::max(
-            1, int(std::lround(double(frames[f].height) * o.thumbnailWidth / frames[f].width)));
-        thumbs.push_back(resampled(frames[f], o.thumbnailWidth, h));
+        thumbs.push_back(thumbnail(frames[f], o.thumbnailWidth));
     }
     const int used = std::min<int>(columns, int(frames.size()));
     const int rows = (int(frames.size()) + used - 1) / used;

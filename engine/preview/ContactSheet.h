@@ -34,6 +34,9 @@ Image contactSheet(std::span<const Image> frames, int columns,
 /// @throw modeflow::Error for `most` below 2.
 std::vector<std::size_t> evenlySpaced(std::size_t count, std::size_t most);
 
+/// `image` resampled to `width`, its height in proportion (at least 1): a sheet's thumbnail.
+Image thumbnail(const Image& image, int width);
+
 /// `image` resampled to `width` × `height` by area averaging (each output pixel is the mean of
 /// the input area it covers), which neither aliases when shrinking nor blurs when growing.
 Image resampled(const Image& image, int width, int height);

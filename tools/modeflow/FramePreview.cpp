@@ -84,10 +84,8 @@ void writeContactSheet(const std::filesystem::path& file, int frames, int every,
     preview::ContactSheetOptions options;
     std::vector<preview::Image> thumbnails;
     for (const std::size_t i : preview::evenlySpaced(written.size(), kContactSheetFrames)) {
-        const preview::Image picture = preview::readPng(pictureOf(written[i]));
-        const int height = std::max(
-            1, int(std::lround(double(picture.height) * options.thumbnailWidth / picture.width)));
-        thumbnails.push_back(preview::resampled(picture, options.thumbnailWidth, height));
+        thumbnails.push_back(
+            preview::thumbnail(preview::readPng(pictureOf(written[i])), options.thumbnailWidth));
         options.labels.push_back(written[i]);
     }
     const int columns = std::min<int>(6, int(thumbnails.size()));
