@@ -5,7 +5,7 @@
 /// advection from the quadrature and the modes, engine/dynamics/TensorFreeCoefficients.h).
 ///
 /// "auto" assembles no tensor when it would not fit (more than a quarter of the available memory:
-/// a run holds it up to three times, engine/simulation/RuntimeMemory.h) or when the tensor-free
+/// a run holds it up to three times, engine/simulation/RunMemory.h) or when the tensor-free
 /// advection is predicted cheaper per evaluation. Per evaluation a tensor streams N²(N−1)/2
 /// coefficients; the tensor-free advection streams the modes twice (reconstruction, projection),
 /// 2·V·N values for V velocity DOFs, plus the quadrature. Per value streamed the tensor-free
@@ -19,9 +19,9 @@
 #include <string>
 #include <vector>
 
+#include "engine/core/Progress.h"
 #include "engine/core/SceneSpec.h"
 #include "engine/format/BasisCache.h"
-#include "precompute/Progress.h"
 
 namespace modeflow {
 

@@ -6,9 +6,9 @@
 #include <filesystem>
 #include <string>
 
+#include "engine/core/Progress.h"
 #include "engine/core/SceneSpec.h"
 #include "engine/format/BasisCache.h"
-#include "precompute/Progress.h"
 
 namespace modeflow {
 

@@ -1,7 +1,7 @@
 // Display.glsl: what both display kernels share: the overlay, sRGB packing in the swapchain's
 // byte order, and main(): each invocation writes four
 // consecutive window pixels, the four of one overlay word (one load for them, and a quarter of
-// the invocations: 5-10% faster on lavapipe). Include after DisplayParams.h and after declaring `params`,
+// the invocations: faster on lavapipe). Include after DisplayParams.h and after declaring `params`,
 // the buffers `overlayWords` (one byte per pixel, 4 to a word) and `pixels` (one word per pixel),
 // and `vec3 pixelColour(uint x, uint y)`: the colour of window pixel (x, y) under the overlay.
 

@@ -1,7 +1,7 @@
 /* LaneDivision.glsl: integer quotients by a run-time divisor through float division, for kernels
    that must take an index apart (shaders/README.md: lavapipe divides integers lane by lane, a
-   loop of scalar divisions per batch, where a float division is one vector instruction; a 64^3
-   box's reconstruction passes 5.3 -> 4.5 ms, precompute/README.md "Closed-form bases").
+   loop of scalar divisions per batch, where a float division is one vector instruction: a 64^3
+   box's reconstruction passes ran faster, engine/README.md "Speed").
 
    Exact for any n and d > 0 whose quotient is below 2^21 (the callers' are positions along one
    grid axis or wave numbers of a band): float(n) and float(d) are within 2^-24 of n and d, and

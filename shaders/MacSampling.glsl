@@ -5,9 +5,9 @@
    The includer defines MAC_DIM (2 or 3: the axes sampled; a 2D grid has one cell along z) and
    `vec2 macFacePair(uint face)`: the values at MacGrid::faceIndex `face` and `face + 1`
    (smoke_face_pairs.comp). Every stencil row along x is two adjacent faces, so one read fetches
-   it: half the reads of taking the faces apart (3D smoke steps ran 25-30% faster on lavapipe with
-   storage loads; shaders/SmokeAdvect.glsl, which now fetches the pairs as texels). Outside the box the
-   stencils clamp to it: tangential components keep their nearest value, the normal component
+   it: half the reads of taking the faces apart (3D smoke steps ran faster on lavapipe with
+   storage loads; shaders/SmokeAdvect.glsl, which now fetches the pairs as texels). Outside the box
+   the stencils clamp to it: tangential components keep their nearest value, the normal component
    falls to 0 at the wall, because wall faces (position 0 or n along their normal) read as 0
    whatever the field holds. Where the reference skips a wall corner this adds weight x 0, and on
    an axis of one position (hi == lo) the second corner of a pair has weight 0: the same sums.

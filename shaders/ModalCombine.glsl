@@ -14,13 +14,12 @@
    Why U rather than the packed triangle, and two passes: with the packed triangle the j < k terms
    are one float from each earlier row, a scalar load per lane on lavapipe, where a texel is one
    vector gather for all lanes (TexelAccess.glsl); and writing U's mirror image from the pair sums
-   makes those stores scattered (3D box, N = 1000, lavapipe, per contraction: packed 5.6 + 3.2 ms,
-   mirrored 8.9 + 0.4 ms, two passes 5.7 + 0.8 ms: precompute/README.md "Closed-form bases"). The columns pass
-   takes four rows a step, one fetch of b for them and no component picked by a run-time index
-   (0.24 -> 0.17 ms a pass). Not one read of U for both products: every row's part then needs a
-   sum across lanes in every tile of columns (a subgroup sum per row and tile: 1.0 ms a combine
-   against 0.41), or each lane keeps the parts of a block of rows and texels, which on lavapipe
-   (a value per lane is a SIMD register) spill (8 x 8 a lane: 1.7 ms). */
+   makes those stores scattered (both measured slower on lavapipe: precompute/README.md
+   "Closed-form bases"). The columns pass takes four rows a step, one fetch of b for them and no
+   component picked by a run-time index (faster). Not one read of U for both products: every
+   row's part then needs a sum across lanes in every tile of columns (a subgroup sum per row and
+   tile, slower than the two passes), or each lane keeps the parts of a block of rows and texels,
+   which on lavapipe (a value per lane is a SIMD register) spill. */
 #ifndef MODEFLOW_SHADERS_MODAL_COMBINE_GLSL
 #define MODEFLOW_SHADERS_MODAL_COMBINE_GLSL
 

@@ -16,12 +16,12 @@
    mask and bounds checks, in a loop over the lanes, so a load costs about the same whatever it
    brings, and a cache miss its full latency unless the prefetcher has fetched the line. Mode-major
    modes summed per invocation jump to another mode at every load, and the prefetcher loses track:
-   a probe kernel streaming the same bytes that way ran at 0.75 GB/s, contiguously at 3.5-4.4.
+   a probe kernel streaming the same bytes that way ran several times slower than contiguously.
    Tiles make what one 8-wide batch of invocations (lavapipe's SIMD width with AVX2) reads of all
-   the modes one contiguous stream: the reconstruction went from 113 to 32 ms
+   the modes one contiguous stream, which made the reconstruction several times faster
    (reconstruct_velocity.comp). Texel fetches, vector gathers on lavapipe, then read that stream
-   about 3x faster than 32-byte storage loads (engine/README.md "Speed"). On a GPU each fetch of a warp
-   covers whole, aligned segments (a tile: 8 neighbouring invocations x 32 bytes). */
+   faster still than 32-byte storage loads (engine/README.md "Speed"). On a GPU each fetch of a
+   warp covers whole, aligned segments (a tile: 8 neighbouring invocations x 32 bytes). */
 #ifndef MODEFLOW_SHADERS_MODE_ACCESS_GLSL
 #define MODEFLOW_SHADERS_MODE_ACCESS_GLSL
 

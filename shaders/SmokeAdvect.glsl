@@ -16,24 +16,21 @@
    SmokeState keeps them 0.
 
    Layout and work, chosen by measurement on lavapipe (Mesa 22.3; SmokeKernelTest's TimingPerStep,
-   totals in engine/device/SmokeAdvection.h). There every lane's storage-buffer load or store of
+   the times in engine/README.md "Speed"). There every lane's storage-buffer load or store of
    every 32- or 64-bit component is a separate scalar access whatever the pattern, so the count of
    components is the cost (shaders/modal_pair_sums.comp), while a texel fetch is one vector gather
    for all lanes (shaders/TexelAccess.glsl); and an `if` only masks lanes: its body runs, loads
    included, even when no lane takes it (gallivm's if_cond):
    - every read-only input fetched as texels (uniform texel buffers): the velocity pairs, the
      cell list, the stencil mask, the fields (in, and MacCormack's hat in the correction) and
-     the record. Against 64-bit storage loads, steps ran 1.3-2x faster (3D 48^3 with 2 lavapipe
-     threads, four runs alternating: semi-Lagrangian 6.7-7.5 -> 3.0-4.1 ms, MacCormack
-     12.2-13.2 -> 6.9-8.3 ms; one thread: SmokeAdvection.h), most where the stencil corners are
-     gathered at random. The inputs read a 64-bit word at a time (pairs and fields) go through
+     the record. Against 64-bit storage loads, steps ran faster, most where the stencil corners
+     are gathered at random. The inputs read a 64-bit word at a time (pairs and fields) go through
      RG32UI views (DeviceBuffer::wordView), whose fetch gathers the two components in use, not
-     the four of an RGBA32UI texel and a select of half: MacCormack at 64^3 20.3-21.1 ms against
-     22.2-22.5 (bench_smoke_advection, two runs each); the stencil mask's 32-bit words likewise
-     through an R32UI view (floatView);
+     the four of an RGBA32UI texel and a select of half (faster still); the stencil mask's 32-bit
+     words likewise through an R32UI view (floatView);
    - results still stored as 64-bit words, one scalar access per lane, where a uvec2 takes two;
    - stage and dimension fixed at compile time, one pipeline each: with a run-time stage switch
-     the correction cost 80% of the forward stage, split 30%;
+     the correction cost nearly as much as the forward stage, split far less;
    - one invocation per entry of a list of the fluid cells (x fastest, so neighbouring lanes read
      neighbouring cells): no lane works outside the mask (most of the cells of the tests' disks
      and balls); an entry is one texel: the coordinates (no integer division) and the emitters'
@@ -42,9 +39,9 @@
    - density and temperature interleaved, one 64-bit word per cell: one fetch per stencil corner
      for both fields;
    - the fluid flags of a whole stencil in one byte (SmokeState's stencil mask): one fetch per
-     stencil; a mask load per corner made steps ~10% slower (storage loads);
+     stencil; a mask load per corner made steps slower (storage loads);
    - velocity faces read in x-neighbour pairs (MacSampling.glsl, smoke_face_pairs.comp): one
-     fetch per two corners; reading the faces as floats made 3D steps 30-40% slower at scale 1
+     fetch per two corners; reading the faces as floats made 3D steps much slower at scale 1
      (storage loads);
    - MacCormack's forward stage also traces backward (the centre velocity serves both traces) and
      records the clamp range and the backward end point, so the correction re-traces and

@@ -2,11 +2,11 @@
    over RGBA32UI texels: engine/vulkan/DeviceBuffer::texelView, ComputeKernelSpec::texelBindings)
    as the floats or float16 pairs its 16 bytes hold.
 
-   Why texels, measured on lavapipe (Mesa 22.3, LLVM 15, AVX2; a probe streaming 64 MB by 8-lane
-   batches reading contiguous runs): storage-buffer loads 8.9-10.2 GB/s as 32-byte u64vec4 loads,
-   texel fetches 26.7-30.9 GB/s. Lavapipe turns a storage-buffer load into a loop over the lanes
-   with a mask and bounds check per lane and component; a texel fetch is an unmasked vector gather
-   whose out-of-range lanes are selected to zero. On a GPU a texel fetch goes through the texture
+   Why texels, measured on lavapipe (Mesa 22.3, LLVM 15, AVX2; a probe streaming by 8-lane batches
+   reading contiguous runs, engine/README.md "Vulkan runtime"): texel fetches several times faster
+   than 32-byte u64vec4 storage-buffer loads. Lavapipe turns a storage-buffer load into a loop over
+   the lanes with a mask and bounds check per lane and component; a texel fetch is an unmasked
+   vector gather whose out-of-range lanes are selected to zero. On a GPU a texel fetch goes through the texture
    cache, as fast as a load for streams. */
 #ifndef MODEFLOW_SHADERS_TEXEL_ACCESS_GLSL
 #define MODEFLOW_SHADERS_TEXEL_ACCESS_GLSL

@@ -8,8 +8,8 @@
 //   STAGE_BUOYANCY g += buoyancy * dual-cell temperature on the up DOFs only, from a host-made
 //                 list of (DOF, face position) texels; the CPU reference sums in the same order;
 //                 without splats g = (ACCUMULATE 0: no load of g, a scalar access per lane on
-//                 lavapipe; the 64^3 box's buoyancy pass 2.3-2.5 -> 1.9 ms, and its fill of
-//                 g, 0.2 ms, left out where only the up DOFs are read).
+//                 lavapipe, measurably faster, and the fill of g left out where only the up
+//                 DOFs are read: precompute/README.md "Closed-form bases").
 // Why, measured on lavapipe (tools/bench/bench_runtime `forces`, engine/README.md "Speed"): one pass over
 // every DOF with the buoyancy behind `if (axis == up)` and the dual cell's loop bounds per lane ran
 // the dual-cell code for every DOF (an `if` on lavapipe masks lanes, its body runs), decoded the
@@ -68,7 +68,7 @@ float dualCellTemperature(uvec3 pos) {
                 if ((params.periodic & (1u << UP)) != 0u) {
                     // REACH < one period; selects, not %: lavapipe divides lane by lane, and
                     // runs both sides of this `if` (with the mask also left out where no smoke
-                    // cell is solid, the 3D box at 64^3: 7.2 -> 4.6 ms a buoyancy pass).
+                    // cell is solid, a much cheaper buoyancy pass: precompute/README.md).
                     const int n = smokeCells[UP];
                     c[UP] += c[UP] < 0 ? n : (c[UP] >= n ? -n : 0);
                 } else {

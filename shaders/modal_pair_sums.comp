@@ -17,14 +17,14 @@
 //
 // Why, measured on lavapipe (tools/bench/bench_runtime, N = 200): lavapipe issues every lane's
 // storage-buffer load as a loop over the lanes with a mask and bounds check per lane and per
-// component, so the count of loads and components is what costs, not bytes. Floats: 1.5 GB/s;
-// 64-bit words: 2.8; four rows per a[q]: 4.2. A subgroup per row with coalesced loads and
-// subgroupAdd, or a[q] shared by subgroupBroadcast, were no faster. Tiles, which make what one
-// 8-wide batch (lavapipe's SIMD width with AVX2) reads one contiguous stream instead of 32 (one
-// per row): 4.6-7.8 GB/s; octets as one load of four 64-bit words and eight rows a lane: 7.0-8.8.
-// Then both inputs read as uniform texel buffers (TexelAccess.glsl), which lavapipe fetches with
-// unmasked vector gathers: see engine/README.md "Speed". On a GPU each fetch of a warp covers whole,
-// aligned segments (8 lanes x 32 bytes). Tiles are visited grid-stride, so any group count works.
+// component, so the count of loads and components is what costs, not bytes. Each step faster
+// than the one before (rates: engine/README.md "Speed"): floats; 64-bit words; four rows per
+// a[q]. A subgroup per row with coalesced loads and subgroupAdd, or a[q] shared by
+// subgroupBroadcast, were no faster. Tiles, which make what one 8-wide batch (lavapipe's SIMD
+// width with AVX2) reads one contiguous stream instead of 32 (one per row); octets as one load of
+// four 64-bit words and eight rows a lane. Then both inputs read as uniform texel buffers
+// (TexelAccess.glsl), which lavapipe fetches with unmasked vector gathers. On a GPU each fetch of
+// a warp covers whole, aligned segments (8 lanes x 32 bytes). Tiles are visited grid-stride, so any group count works.
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_control_flow_attributes : require
 #include "ModalStepParams.h"

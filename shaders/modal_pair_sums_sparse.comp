@@ -12,7 +12,7 @@
 // of an 8-wide batch (one slice) read one contiguous run per step and stop together. Every input
 // is fetched as texels (TexelAccess.glsl), a_i gathered. Why, measured on lavapipe
 // (tools/bench/bench_runtime, 10% density): CSR rows read one float and one index a load, one
-// invocation per row: N = 200 0.8 GB/s (11% of Eigen's sparse GEMV); sliced texels: engine/README.md "Speed".
+// invocation per row, were far slower than Eigen's sparse GEMV (engine/README.md "Speed").
 #extension GL_GOOGLE_include_directive : require
 #include "ModalStepParams.h"
 #include "TexelAccess.glsl"

@@ -57,8 +57,8 @@ layout(std430, set = 0, binding = 10) buffer History { float history[]; };
 layout(push_constant) uniform Push { ModalUpdateParams params; };
 // What a dispatch does, fixed at compile time, one pipeline each (engine/device/ModalKernels):
 // lavapipe runs every branch of an `if`, loads included, whichever lanes take it, so with the
-// operation a run-time value every dispatch ran every operation's loads (64^3 box, N = 1000,
-// lavapipe: BEGIN 0.17 -> 0.07 ms, LINEARIZED_START 0.14 -> 0.06, an iteration 0.15 -> 0.12).
+// operation a run-time value every dispatch ran every operation's loads (each operation faster
+// apart on lavapipe: precompute/README.md "Closed-form bases").
 layout(constant_id = 1) const uint OP = MODAL_OP_BEGIN;  // MODAL_OP_*
 layout(constant_id = 2) const bool FROZEN = false;  // MIDPOINT of a linearized step: a left alone
 layout(constant_id = 3) const bool LORENTZ = false; // MHD: r's velocity part less C(F, F)

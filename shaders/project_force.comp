@@ -11,20 +11,18 @@
 // sums of each mode in a fixed order, so the result is deterministic (no atomics). Blocks spread
 // one projection over many workgroups.
 //
-// Why, measured on lavapipe (tools/bench/bench_runtime, 48^3 grid, N = 100, CPU ms of one
-// lavapipe thread, float32 / float16): one invocation per DOF reading a float per mode, 8 modes a
-// group: 153 / 133. 64-bit vectors, 16 modes a group, mode-major modes: 126 / 97; tiled: 56 / 45.
-// 64 modes a group, the slots past the chunk's modes skipped, each 8-wide batch on a run of
-// consecutive tiles, larger blocks on a CPU device: 41 / 27. Lavapipe pays per lane and load,
-// whatever the load brings: x (w and q) shared by more modes pays, and so does running the tree
-// (invocation by invocation there) over larger blocks (ForceProjection.cpp). A unit's word as one
-// u64vec4 load instead of two u64vec2 loads (64^3 grid, N = 200, GPU ms with two lavapipe threads,
-// float32 / float16): 198-220 / 156-166 -> 109-112 / 83-88. Then the precision, the input kind
-// and the group's mode count as specialization constants (no unused path, few masked slots), w and
-// density q read 8 floats a load, and the shared-memory tree replaced by one ordered pass over the
-// invocations' sums: 64^3 N = 200 float32 1.2-2.1x faster in each of seven runs alternating with
-// the previous version (75-204 -> 50-124 ms), 256^2 and 48^3 0.6-2x (typically 1.1-1.4x). Then
-// the modes, w and density q fetched as texels (TexelAccess.glsl): engine/README.md "Speed".
+// Why, measured on lavapipe (tools/bench/bench_runtime; each step's times: engine/README.md
+// "Speed"), each step faster than the one before: one invocation per DOF reading a float per mode,
+// 8 modes a group; 64-bit vectors, 16 modes a group, mode-major modes; tiled; 64 modes a group,
+// the slots past the chunk's modes skipped, each 8-wide batch on a run of consecutive tiles,
+// larger blocks on a CPU device. Lavapipe pays per lane and load, whatever the load brings: x (w
+// and q) shared by more modes pays, and so does running the tree (invocation by invocation there)
+// over larger blocks (ForceProjection.cpp). A unit's word as one u64vec4 load instead of two
+// u64vec2 loads. Then the precision, the input kind and the group's mode count as specialization
+// constants (no unused path, few masked slots), w and density q read 8 floats a load, and the
+// shared-memory tree replaced by one ordered pass over the invocations' sums: faster at 64^3
+// N = 200 in each of seven runs alternating with the previous version, mostly faster at 256^2 and
+// 48^3. Then the modes, w and density q fetched as texels (TexelAccess.glsl).
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_control_flow_attributes : require
 #include "ProjectForceParams.h"

@@ -12,18 +12,16 @@
 // A GEMV over the tiled basis (ModeAccess.glsl), bandwidth-bound. Each invocation reads the
 // chunk's v_i s_i once, then owns units of one 32-byte word (8 float32 or 16 float16 DOFs) and
 // adds each mode's word times its coefficient, the chunk's modes unrolled (their count is a
-// specialization constant). Why, measured on lavapipe (tools/bench/bench_runtime, 48^3 grid,
-// N = 100, CPU ms of one lavapipe thread, float32 / float16): one invocation per DOF reading a
-// float of each mode and v, s per mode: 146 / 131; 64-bit vectors, 8 DOFs per invocation, v by
-// fours, mode-major modes: 113 / 91; tiled: 32 / 21; faces by fours: 29 / 20. A unit's 32 bytes of
-// a mode as one u64vec4 load instead of two u64vec2 loads (64^3 grid, N = 200, GPU ms with two
-// lavapipe threads): 224-296 / 100-124 -> 166-178 / 70-77. Lavapipe pays per lane and load,
-// whatever the load brings. Then the precision and the chunk's place as specialization constants,
-// the scratch sums, 16 units per invocation on a CPU device and v read once per invocation with
-// the modes unrolled: 64^3 N = 200 (five 40-mode chunks) float32 1.5-3.2x faster in each of seven
-// runs alternating with the previous version (101-312 -> 62-104 ms), 48^3 N <= 100 1.3-2x, one
-// chunk of 200 modes (256^2) no faster (0.6-1.25x; runs of 64 modes each, tried, were slower).
-// Then the modes and face indices fetched as texels (TexelAccess.glsl): engine/README.md "Speed".
+// specialization constant). Why, measured on lavapipe (tools/bench/bench_runtime; each step's
+// times: engine/README.md "Speed"), each step faster than the one before: one invocation per DOF
+// reading a float of each mode and v, s per mode; 64-bit vectors, 8 DOFs per invocation, v by
+// fours, mode-major modes; tiled; faces by fours. A unit's 32 bytes of a mode as one u64vec4 load
+// instead of two u64vec2 loads. Lavapipe pays per lane and load, whatever the load brings. Then
+// the precision and the chunk's place as specialization constants, the scratch sums, 16 units
+// per invocation on a CPU device and v read once per invocation with the modes unrolled: faster
+// at 64^3 N = 200 (five 40-mode chunks) in each of seven runs alternating with the previous
+// version and at 48^3 N <= 100, one chunk of 200 modes (256^2) no faster (runs of 64 modes each,
+// tried, were slower). Then the modes and face indices fetched as texels (TexelAccess.glsl).
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
 #extension GL_EXT_control_flow_attributes : require

@@ -1,5 +1,5 @@
 #version 450
-// One pass of a closed-form basis transform along one axis (engine/format/SeparableTransform.h;
+// One pass of a closed-form basis transform along one axis (engine/basis/SeparableTransform.h;
 // device side: engine/device/SeparableTransform): every line of the tensor along the axis (its
 // fastest index) taken through the axis's table of trigonometric factors, a per-axis sum over
 // the band of wave numbers in use (synthesis: slots -> positions; analysis: the transposed table,
@@ -14,11 +14,10 @@
 // neighbouring lanes on neighbouring lines. The table is stored j-major, four outputs a texel
 // (entry (q, j) at float j * 4 blocks + q, blocks = ceil(outLength / 4), zero-padded), so one
 // texel fetch, the same for every lane of a batch, serves four outputs and each input value is
-// loaded once for 4 GROUP of them (two blocks against one: a 64^3 reconstruction 4.2-6.1 ->
-// 3.7-4.6 ms, six runs each alternating). Why texels:
-// lavapipe makes every lane's storage load a scalar access and a texel fetch one gather for all
-// lanes (TexelAccess.glsl); one output an invocation, two storage loads a term, took 7.2 ms of
-// the 3D box's projection (64^3, N = 1000) where this takes 1.0 ms (precompute/README.md "Closed-form bases").
+// loaded once for 4 GROUP of them (two blocks faster than one: engine/README.md "Speed"). Why
+// texels: lavapipe makes every lane's storage load a scalar access and a texel fetch one gather
+// for all lanes (TexelAccess.glsl); one output an invocation, two storage loads a term, was
+// several times slower (precompute/README.md "Closed-form bases").
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_control_flow_attributes : require
 #include "SeparableParams.h"
@@ -29,8 +28,7 @@ layout(local_size_x = 64, local_size_x_id = 0) in;
 
 layout(set = 0, binding = 0) uniform usamplerBuffer tables;  // texels; see above
 // One value a texel (R32UI): lanes on different lines read different values, a gather where a
-// storage load is a scalar access per lane (a 64^3 reconstruction's last passes 2.1-2.2 ->
-// 1.8-2.0 ms).
+// storage load is a scalar access per lane (the last passes faster: engine/README.md "Speed").
 layout(set = 0, binding = 1) uniform usamplerBuffer values;
 layout(std430, set = 0, binding = 2) writeonly buffer Out { float result[]; };
 layout(push_constant) uniform Push { SeparablePassParams params; };

@@ -8,8 +8,8 @@
 // axis of MacGrid::faceIndex, so one fetch of pairs[] (a word texel: SmokeAdvect.glsl) gives two
 // of its corners. Why: the advection samples the velocity two or three times per smoke cell, and fewer
 // reads cost less on lavapipe (shaders/SmokeAdvect.glsl). Invocation k writes pairs 4k ... 4k + 3
-// from the velocity's texels k and k + 1, fetched (faces at 48^3: 0.8-1.1 -> 0.5-0.8 ms against a
-// 64-bit and a float storage load per two faces), and stores 64-bit words: one scalar access per
+// from the velocity's texels k and k + 1, fetched (faster than a 64-bit and a float storage load
+// per two faces: engine/README.md "Speed"), and stores 64-bit words: one scalar access per
 // lane on lavapipe, where a uvec2 takes two. f + 1 past a row's end pairs with the next row's
 // first face, which no stencil uses with a non-zero weight. The last face is a wall, which the
 // sampling reads as 0: it stands in for the faces past it. Along a periodic x (wrapX: the row

@@ -2,7 +2,7 @@
 /// @file AvailableMemory.h
 /// How much memory this machine can still give, the one refusal used when an estimate says a
 /// command would not fit (the precompute's, precompute/PrecomputeMemory.h, and the run's,
-/// engine/simulation/RuntimeMemory.h), and the one message for an allocation that failed anyway.
+/// engine/simulation/RunMemory.h), and the one message for an allocation that failed anyway.
 
 #include <cstdint>
 #include <optional>

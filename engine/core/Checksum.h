@@ -2,8 +2,8 @@
 /// @file Checksum.h
 /// The checksum of modeflow's files (basis caches, checkpoints, smoke masks, eigensolver slices):
 /// XXH3's 64-bit hash (libxxhash), one call or streamed. It replaced FNV-1a over the bytes, which
-/// goes a byte a step (0.5 GB/s): 8 ms of every 4 MB checkpoint on the H100's host, 10 s of a
-/// 5.5 GB cache. FNV-1a (BinaryCodec.h) still names caches by their short keys.
+/// goes a byte a step, several times slower (precompute/README.md "How the precompute works",
+/// cache). FNV-1a (BinaryCodec.h) still names caches by their short keys.
 
 #include <cstdint>
 #include <string_view>

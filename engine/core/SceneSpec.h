@@ -219,4 +219,14 @@ struct SceneSpec {
     bool isSurface() const { return surface.has_value(); }
 };
 
+/// The scene's domain is the whole grid box (no [[domain]]): its bases have a closed form.
+inline bool hasWholeBoxDomain(const SceneSpec& scene) {
+    return scene.domain.empty();
+}
+/// The velocity basis comes in closed form: a whole box with free-slip walls (no-slip walls keep
+/// the wall vorticity, whose eigenfields are not separable).
+inline bool hasClosedFormVelocity(const SceneSpec& scene) {
+    return hasWholeBoxDomain(scene) && scene.basis.wall == WallKind::FreeSlip;
+}
+
 }  // namespace modeflow

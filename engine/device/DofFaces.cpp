@@ -37,8 +37,8 @@ vulkan::DeviceBuffer uploadDofFaces(const vulkan::VulkanContext& context, const 
 std::uint32_t groupCap(const vulkan::VulkanContext& context) {
     const std::uint32_t limit = context.properties().limits.maxComputeWorkGroupCount[0];
     // A CPU device runs each workgroup as a call with its own set-up: a few per thread keep
-    // its threads busy, and more only add calls (64^3 box, 262k up DOFs a buoyancy pass:
-    // 4096 groups 1.9 ms, 64 groups 1.5 ms; precompute/README.md "Closed-form bases").
+    // its threads busy, and more only add calls (measured on a buoyancy pass of the 64^3 box:
+    // precompute/README.md "Closed-form bases").
     if (context.properties().deviceType != VK_PHYSICAL_DEVICE_TYPE_CPU) return limit;
     static const std::uint64_t threads = std::max(1u, std::thread::hardware_concurrency());
     return std::uint32_t(std::min<std::uint64_t>(limit, kCpuGroupsPerThread * threads));

@@ -24,7 +24,7 @@ static_assert(ModeBuffer::kTileLanes == MODE_TILE_LANES && ModeBuffer::kTileRows
               "the shader reads the tiles ModeBuffer writes");
 /// Default DOFs per workgroup of pass 1. A GPU wants many workgroups (a 64³ basis, ~750k DOFs,
 /// makes ~380 blocks). A CPU device wants few, large ones: lavapipe runs each workgroup's closing
-/// shared-memory sums invocation by invocation (32768 measured ~10% faster than 8192 there, when
+/// shared-memory sums invocation by invocation (32768 measured faster than 8192 there, when
 /// they were a tree), but still about kCpuGroups of them to share among its threads.
 constexpr std::uint32_t kGpuDofsPerGroup = 2048;
 constexpr std::uint32_t kCpuMinDofsPerGroup = 4096, kCpuMaxDofsPerGroup = 32768, kCpuGroups = 16;
@@ -38,7 +38,7 @@ std::uint32_t modeGroups(std::uint32_t modes) {
 /// Mode slots of a workgroup (the shader's MODES) for a chunk of `modes`: the chunk split into
 /// equal groups of at most kModesPerGroup, rounded up to 4, so that few slots go unused (lavapipe
 /// still loops over an unused slot's lanes). Larger groups on a CPU device, their closing sums in
-/// rounds of 64, measured slower with float32 modes (sums spilled; 48^3 N = 200: 28 -> 37 ms).
+/// rounds of 64, measured slower with float32 modes (sums spilled; engine/README.md "Speed").
 std::uint32_t slotsFor(std::uint32_t modes) {
     const std::uint32_t groups = modeGroups(modes);
     return ((modes + groups - 1) / groups + 3) / 4 * 4;

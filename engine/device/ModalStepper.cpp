@@ -162,7 +162,7 @@ Eigen::VectorXd ModalStepper::download(const vulkan::DeviceBuffer& buffer, int p
     return Eigen::Map<const Eigen::VectorXf>(values.data(), size()).template cast<double>();
 }
 
-void ModalStepper::setScheme(Integrator scheme) {
+void ModalStepper::setIntegrator(Integrator scheme) {
     requireSchemeFits(scheme);
     DeviceStepSettings settings = mSettings;
     settings.scheme = scheme;

@@ -98,7 +98,7 @@ public:
 
     /// The scheme of the steps recorded from now on.
     /// @throw modeflow::Error for bad settings.
-    void setScheme(Integrator scheme);
+    void setIntegrator(Integrator scheme);
     /// New parameters (of the model kind the stepper was made with) for the steps recorded from
     /// now on. Between submissions only.
     /// @throw modeflow::Error for parameters FluidSystem or MhdSystem refuses, or another kind.

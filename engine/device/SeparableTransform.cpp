@@ -4,10 +4,10 @@
 #include <string>
 #include <vector>
 
+#include "engine/basis/SeparableTransform.h"
 #include "engine/core/Error.h"
 #include "engine/core/MacGrid.h"
 #include "engine/device/DofFaces.h"
-#include "engine/format/SeparableTransform.h"
 #include "engine/vulkan/CommandSequence.h"
 #include "engine/vulkan/VulkanContext.h"
 #include "shaders/SeparableParams.h"

@@ -1,15 +1,16 @@
 #pragma once
 /// @file SeparableTransform.h
 /// The transforms of a closed-form velocity basis on the device (CPU reference:
-/// engine/format/SeparableTransform.h), so that a device run never forms the basis's columns:
+/// engine/basis/SeparableTransform.h), so that a device run never forms the basis's columns:
 /// reconstruction v → face field and projection q → f = Ψᵀ(w ∘ q) as separable per-axis sums over
 /// the band of wave numbers in use (shaders/separable_pass.comp: one dispatch per axis and
 /// component, each output a dot product with a row of the axis's table of factors), the modes
 /// gathered into and out of each component's tensor of slots (separable_gather.comp); a
 /// reconstruction's last pass writes each component's velocities straight into its faces (the
 /// DOFs are the box's non-wall faces in grid order, SeparableTransform checks, so that is a
-/// strided write, where a scatter through the DOF faces took 3.5 ms of a 64³ reconstruction's 12
-/// on lavapipe). float32; the tables are computed in double on the host.
+/// strided write, far cheaper on lavapipe than the scatter through the DOF faces it replaced:
+/// precompute/README.md "Closed-form bases"). float32; the tables are computed in double on the
+/// host.
 
 #include <array>
 #include <cstdint>

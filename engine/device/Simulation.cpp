@@ -114,7 +114,7 @@ void Simulation::setViscosity(double viscosity) {
 }
 
 void Simulation::setIntegrator(Integrator integrator) {
-    mStepper.setScheme(integrator);
+    mStepper.setIntegrator(integrator);
     mSettings.integrator = integrator;
 }
 

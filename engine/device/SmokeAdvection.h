@@ -7,27 +7,8 @@
 /// sample, then the backward sample and the clamped correction), over the fluid cells only, both
 /// fields in each. Emitters are added in the step's last dispatch.
 ///
-/// GPU ms per step on lavapipe (Mesa 22.3, one worker thread: LP_NUM_THREADS=1; 2-core machine;
-/// whole box fluid, smoke scale 1; SmokeKernelTest's TimingPerStep with MODEFLOW_SMOKE_TIMING=full,
-/// best of 4 runs, same session), the single-kernel layout before it -> this one
-/// (shaders/SmokeAdvect.glsl says what changed and why):
-///
-///                semi-Lagrangian      MacCormack
-///     2D 128²     3.15 ->  0.66      6.90 ->  1.16
-///     2D 256²    14.8  ->  2.58     28.3  ->  4.66
-///     3D 32³      9.7  ->  2.3      23.9  ->  4.1
-///     3D 48³     37.4  -> 12.0     102.7  -> 18.1
-///     3D 64³    103.7  -> 23.3     286.8  -> 32.7
-///
-/// Then every read-only input fetched as texels instead of 64-bit storage loads; same settings,
-/// three runs alternating old and new in one session, range of each ms:
-///
-///                semi-Lagrangian              MacCormack
-///     2D 128²   0.67-1.00 -> 0.56-0.69     1.23-1.90 -> 0.90-1.22
-///     2D 256²   2.76-4.40 -> 1.95-2.68     4.72-6.87 -> 3.51-3.67
-///     3D 32³    2.45-4.06 -> 1.60-2.10     4.17-4.73 -> 2.95-4.07
-///     3D 48³   10.8-13.6  -> 5.6-7.6      14.8-23.3  -> 9.4-13.2
-///     3D 64³   22.9-30.4  -> 12.9-19.2    33.3-36.4  -> 22.8-31.4
+/// Its speed on lavapipe, layout by layout: engine/README.md "Speed" (shaders/SmokeAdvect.glsl
+/// says what changed and why).
 
 #include <array>
 #include <cstdint>
@@ -49,7 +30,7 @@ class SmokeState;
 
 class SmokeAdvectionKernels {
 public:
-    /// `workgroupSize`: any; 128 ran 2-4% faster than 64 on lavapipe, and suits GPUs. The
+    /// `workgroupSize`: any; 128 ran a little faster than 64 on lavapipe, and suits GPUs. The
     /// advection kernels are made when a step first needs them (a run uses two or three of the
     /// twelve variants: stage, dimension, smoke scale 1 or not).
     /// @throw modeflow::Error if the device lacks 64-bit integers in shaders (shaderInt64) or a

@@ -30,7 +30,7 @@
 /// period of a field that repeats along those axes, whose ends meet across the seam.
 ///
 /// OpenVDB's types stay out of this header: VdbFrame.cpp is the one translation unit that
-/// includes OpenVDB (its headers cost 15–30 s of compile time each).
+/// includes OpenVDB (its headers are slow to compile: tools/README.md, `build.sh`).
 
 #include <array>
 #include <cstdint>

@@ -18,8 +18,8 @@
 
 #include <Eigen/Core>
 
+#include "engine/basis/VelocityBasis.h"
 #include "engine/format/BasisCache.h"
-#include "engine/format/VelocityBasis.h"
 #include "engine/simulation/ProjectionWeights.h"
 
 namespace modeflow::reference {

@@ -73,7 +73,7 @@ StepReport ModalStepper::step(double h) {
     return mIntegrator->step(mState, h, mForce);
 }
 
-void ModalStepper::setScheme(Integrator scheme) {
+void ModalStepper::setIntegrator(Integrator scheme) {
     SimulationSettings settings = mSettings;
     settings.integrator = scheme;
     rebuild(settings);

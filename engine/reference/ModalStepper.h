@@ -39,7 +39,7 @@ public:
     StepReport step(double h) override;
 
     /// The scheme of the following steps.
-    void setScheme(Integrator scheme);
+    void setIntegrator(Integrator scheme);
     /// A new viscosity for the following steps.
     /// @throw modeflow::Error for a viscosity the model refuses.
     void setViscosity(double viscosity);

@@ -9,8 +9,8 @@
 
 #include <Eigen/Core>
 
+#include "engine/basis/VelocityBasis.h"
 #include "engine/format/BasisCache.h"
-#include "engine/format/VelocityBasis.h"
 #include "engine/simulation/MovingObstacle.h"
 
 namespace modeflow::reference {

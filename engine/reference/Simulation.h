@@ -9,7 +9,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "engine/format/VelocityBasis.h"
+#include "engine/basis/VelocityBasis.h"
 #include "engine/reference/ModalStepper.h"
 #include "engine/reference/SmokeAdvection.h"
 #include "engine/simulation/Simulator.h"

@@ -10,9 +10,9 @@
 
 #include <Eigen/Core>
 
+#include "engine/basis/VelocityBasis.h"
 #include "engine/core/MacGrid.h"
 #include "engine/format/BasisCache.h"
-#include "engine/format/VelocityBasis.h"
 
 namespace modeflow::reference {
 

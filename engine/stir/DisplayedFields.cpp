@@ -4,7 +4,7 @@
 
 #include "engine/core/Error.h"
 #include "engine/device/Simulation.h"
-#include "engine/pipeline/RunInputs.h"
+#include "engine/run/RunInputs.h"
 
 namespace modeflow::stir {
 

@@ -23,7 +23,7 @@ using display::MouseButton;
 
 /// Steps may use this much of a frame in real time, so the window keeps at least ~30 fps.
 constexpr double kStepBudgetSeconds = 1.0 / 30.0;
-/// On CPU devices, where every pixel drawn costs (about 24 ns on lavapipe with two cores), a
+/// On CPU devices, where every pixel drawn costs (tools/README.md, "Interactive stirring"), a
 /// default window smaller than kWindowWidth × kWindowHeight keeps a 2D 128² scene above 30 fps.
 constexpr int kCpuWindowWidth = 960, kCpuWindowHeight = 540;
 

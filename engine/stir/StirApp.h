@@ -19,8 +19,8 @@
 #include <Eigen/Core>
 
 #include "engine/display/Screen.h"
-#include "engine/pipeline/Backend.h"
-#include "engine/pipeline/RunInputs.h"
+#include "engine/run/Backend.h"
+#include "engine/run/RunInputs.h"
 #include "engine/simulation/SmokeFields.h"
 #include "engine/stir/InputScript.h"
 #include "engine/stir/StirSession.h"

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "engine/pipeline/RunInputs.h"
+#include "engine/run/RunInputs.h"
 #include "engine/stir/StirSession.h"
 #include "engine/stir/StirView.h"
 

@@ -2,8 +2,8 @@
 
 #include "engine/stir/StirScene.h"
 
-#include "engine/pipeline/Backend.h"
-#include "engine/pipeline/RunInputs.h"
+#include "engine/run/Backend.h"
+#include "engine/run/RunInputs.h"
 #include "engine/stir/GridStirScene.h"
 #include "engine/stir/SurfaceStirScene.h"
 

@@ -16,9 +16,9 @@
 
 #include <Eigen/Core>
 
-#include "engine/pipeline/Backend.h"
-#include "engine/pipeline/RunInputs.h"
-#include "engine/stir/ShapedBases.h"
+#include "engine/dynamics/ShapedBases.h"
+#include "engine/run/Backend.h"
+#include "engine/run/RunInputs.h"
 
 namespace modeflow::stir {
 

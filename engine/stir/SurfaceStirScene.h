@@ -10,7 +10,7 @@
 
 #include <optional>
 
-#include "engine/pipeline/RunInputs.h"
+#include "engine/run/RunInputs.h"
 #include "engine/stir/StirScene.h"
 #include "engine/stir/SurfaceView.h"
 #include "engine/surface/SurfaceForce.h"

@@ -38,7 +38,7 @@ public:
     void setForce(const Eigen::VectorXd& force) { mStepper.setForce(force); }
     /// Interactive changes between steps (`stir`). @throw modeflow::Error for a negative ν.
     void setViscosity(double viscosity) { mStepper.setViscosity(viscosity); }
-    void setIntegrator(Integrator integrator) { mStepper.setScheme(integrator); }
+    void setIntegrator(Integrator integrator) { mStepper.setIntegrator(integrator); }
 
     double time() const { return mTime; }
     Eigen::VectorXd velocity() const { return mStepper.velocity(); }

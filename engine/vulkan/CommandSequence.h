@@ -56,8 +56,8 @@ public:
     }
 
     /// Records setting the first `bytes` of `buffer` to copies of `word` (vkCmdFillBuffer: a
-    /// memset on lavapipe: 3 MB in 0.3 ms, where a kernel writing zeros took 1.5 ms), after the
-    /// same barrier as a dispatch, timed and counted as one.
+    /// memset on lavapipe, far cheaper than a kernel writing zeros), after the same barrier as a
+    /// dispatch, timed and counted as one.
     /// @throw modeflow::Error if `bytes` is 0, not a multiple of 4 or beyond the buffer.
     void fill(const DeviceBuffer& buffer, VkDeviceSize bytes, std::uint32_t word);
 
@@ -67,9 +67,9 @@ public:
     void submitAndWait();
 
     /// Times the following submissions, or not. A timestamp costs lavapipe about as much as a
-    /// small dispatch (a stir step: 14-16 ms timed, 6-7 ms untimed), so a caller that shows times
-    /// a few times a second times a sample of its submissions. Between submissions only; without
-    /// timestamps (constructor) it stays off.
+    /// small dispatch (timing every one made a stir step far slower: tools/README.md), so a
+    /// caller that shows times a few times a second times a sample of its submissions. Between
+    /// submissions only; without timestamps (constructor) it stays off.
     /// @throw modeflow::Error while a submission is being recorded.
     void setTiming(bool on);
     bool isTiming() const { return mQueryPool.isValid() && mTimingOn; }

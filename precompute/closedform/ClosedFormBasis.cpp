@@ -10,14 +10,6 @@
 
 namespace modeflow {
 
-bool hasWholeBoxDomain(const SceneSpec& scene) {
-    return scene.domain.empty();
-}
-
-bool hasClosedFormVelocity(const SceneSpec& scene) {
-    return hasWholeBoxDomain(scene) && scene.basis.wall == WallKind::FreeSlip;
-}
-
 namespace {
 
 /// One factor of one axis: wave number, phase and σ².

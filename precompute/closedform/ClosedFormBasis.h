@@ -20,12 +20,6 @@
 
 namespace modeflow {
 
-/// The scene's domain is the whole grid box (no [[domain]]): its bases have a closed form.
-bool hasWholeBoxDomain(const SceneSpec& scene);
-/// The velocity basis comes in closed form: a whole box with free-slip walls (no-slip walls keep
-/// the wall vorticity, whose eigenfields are not separable).
-bool hasClosedFormVelocity(const SceneSpec& scene);
-
 struct ClosedFormVelocity {
     Eigen::VectorXd eigenvalues;  ///< κ² (harmonic: exactly 0)
     std::vector<SeparableMode> modes;

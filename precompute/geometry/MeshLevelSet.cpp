@@ -31,8 +31,8 @@ namespace fs = std::filesystem;
 /// or far too fine for the mesh.
 constexpr double kMaxBandVoxels = 4.0e8;
 /// Beyond this many voxels across, the conversion's time and memory grow with the extent even
-/// when the band is small (a sliver 1e5 voxels long took 12 s and 0.8 GB, one 1.6e10 voxels long
-/// did not finish in 2 minutes and 23 GB). The widest grid is 4096 cells of two voxels.
+/// when the band is small (a long sliver ran for minutes and took gigabytes: precompute/README.md
+/// "How the precompute works"). The widest grid is 4096 cells of two voxels.
 constexpr double kMaxExtentVoxels = 131072;
 
 /// A count for messages: two significant digits, never an overflowed integer cast.

@@ -2,7 +2,7 @@
 /// @file MeshLevelSet.h
 /// Mesh shapes (`shape = "mesh"`, 3D): a closed OBJ surface turned into a narrow-band signed
 /// distance level set. The OpenVDB machinery stays in MeshLevelSet.cpp, the only translation unit
-/// that includes its headers (they cost 15–30 s of compile time each).
+/// that includes its headers (they are slow to compile: tools/README.md, `build.sh`).
 
 #include <filesystem>
 #include <memory>

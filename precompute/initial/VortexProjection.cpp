@@ -6,9 +6,9 @@
 #include <numbers>
 #include <string>
 
+#include "engine/basis/VelocityBasis.h"
 #include "engine/core/Error.h"
 #include "engine/core/Vec3Math.h"
-#include "engine/format/VelocityBasis.h"
 #include "precompute/dec/CubicalComplex.h"
 #include "precompute/dec/CutCellDec.h"
 

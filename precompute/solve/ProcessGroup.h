@@ -1,10 +1,11 @@
 #pragma once
-
-#include <string>
 /// @file ProcessGroup.h
 /// The processes one precompute runs on: this one alone, or the K ranks `mpirun -n K` started.
-/// MPI and PETSc are initialized only when needed (SlicedEigensolver.h, or joinProcessGroup()
-/// under an MPI launcher) and finalized at exit; nothing else in the project sees them.
+/// MPI and PETSc are loaded and initialized only when needed (SlicedEigensolver.h, or
+/// joinProcessGroup() under an MPI launcher: PetscRuntime.h) and finalized at exit; nothing else
+/// in the project sees them.
+
+#include <string>
 
 namespace modeflow {
 

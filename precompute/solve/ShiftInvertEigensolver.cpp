@@ -126,9 +126,9 @@ EigenPairs lanczos(const ShiftedFactor& factor, const Eigen::MatrixXd& deflated,
                    const EigenRequest& request, long& restarts) {
     const Eigen::Index n = factor.size();
     ScaledShiftInvert op(factor, deflated);
-    // ncv = 1.5 nev needed fewer solves and less time than the textbook 2 nev (48³ ball, 100 modes:
-    // 334 against 406 solves, 47 s against 58 s): the Krylov basis is re-orthogonalized at every
-    // step, and its bandwidth grows with ncv.
+    // ncv = 1.5 nev needed fewer solves and less time than the textbook 2 nev (tools/README.md,
+    // "Precompute speed"): the Krylov basis is re-orthogonalized at every step, and its bandwidth
+    // grows with ncv.
     const Eigen::Index room = n - deflated.cols();
     const Eigen::Index ncv =
         std::min<Eigen::Index>(room, std::max<Eigen::Index>(3 * nev / 2 + 1, nev + 30));

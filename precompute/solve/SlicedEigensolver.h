@@ -8,7 +8,7 @@
 /// (ShiftInvertEigensolver.h) slows down. Under `mpirun -n K` the subintervals run on the K ranks
 /// (SLEPc's partitions: one per rank, or as many as PETSc's option -eps_krylovschur_partitions
 /// says, each factorizing with MUMPS on its K / partitions ranks) and every rank receives every
-/// pair. PETSc and SLEPc stay inside the .cpp.
+/// pair. PETSc, SLEPc and MPI stay in their module (PetscRuntime.h).
 ///
 /// The intervals: the first runs from `request.shift` to a little above `request.estimate`;
 /// while fewer than `count` eigenvalues are found, the next one starts where the last ended and

@@ -9,7 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "engine/core/Error.h"
-#include "engine/pipeline/Backend.h"
+#include "engine/run/Backend.h"
 #include "tests/support/TestScenes.h"
 #include "tests/support/VulkanTestContext.h"
 

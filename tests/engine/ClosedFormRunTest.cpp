@@ -8,10 +8,10 @@
 #include <cstdio>
 
 #include "engine/format/SeparableModes.h"
-#include "engine/pipeline/RunInputs.h"
 #include "engine/reference/Simulation.h"
 #include "precompute/Precompute.h"
 #include "tests/support/TestScenes.h"
+#include "tools/compose/RunPreparation.h"
 
 namespace modeflow {
 namespace {

@@ -231,20 +231,21 @@ TEST_P(ModalStepKernelTest, LinearizedConservesEnergyOver1000Steps) {
 }
 
 TEST_P(ModalStepKernelTest, SwitchingToAndFromTheLinearizedRuleStepsLikeAFreshStepper) {
-    // The iterations dispatch other kernels (combines alone): setScheme rebuilds their arguments.
+    // The iterations dispatch other kernels (combines alone): setIntegrator rebuilds their
+    // arguments.
     const double h = stepFor(mC, mV0, 0.1);
     {
         ModalStepper switched(context(), mC, {}, {Integrator::Midpoint});
         switched.setState(mV0);
         runDevice(context(), switched, h, 3);
         const Eigen::VectorXd middle = switched.state();
-        switched.setScheme(Integrator::Linearized);
+        switched.setIntegrator(Integrator::Linearized);
         runDevice(context(), switched, h, 3);
         ModalStepper fresh(context(), mC, {}, {Integrator::Linearized});
         fresh.setState(middle);
         runDevice(context(), fresh, h, 3);
         EXPECT_LE(relativeDifference(switched.state(), fresh.state()), 1e-6);
-        switched.setScheme(Integrator::Midpoint);
+        switched.setIntegrator(Integrator::Midpoint);
         runDevice(context(), switched, h, 3);
         EXPECT_TRUE(switched.status().converged);
         EXPECT_GT(switched.status().iterations, 0);
@@ -288,7 +289,7 @@ TEST_P(ModalStepKernelTest, LinearizedStepsHoldTheCpusRateAndUseIt) {
 
         EXPECT_THROW(stepper.setHeldRate(Eigen::VectorXd::Zero(kModes + 1)), Error);
         EXPECT_THROW(stepper.setHeldRate(Eigen::VectorXd::Constant(kModes, NAN)), Error);
-        stepper.setScheme(Integrator::Midpoint);
+        stepper.setIntegrator(Integrator::Midpoint);
         EXPECT_EQ(stepper.heldRate().size(), 0);
         EXPECT_THROW(stepper.setHeldRate(g), Error);
     }
@@ -418,7 +419,7 @@ TEST_P(ModalStepKernelTest, AWarmStartRestoredContinuesToTheBit) {
     EXPECT_THROW(stepper.setWarmStart(three), Error);
     EXPECT_THROW(stepper.setWarmStart({Eigen::VectorXd::Zero(kModes + 1)}), Error);
     EXPECT_THROW(stepper.setWarmStart({Eigen::VectorXd::Constant(kModes, NAN)}), Error);
-    stepper.setScheme(Integrator::Trapezoidal);
+    stepper.setIntegrator(Integrator::Trapezoidal);
     EXPECT_THROW(stepper.setWarmStart({Eigen::VectorXd::Zero(kModes)}), Error);
     stepper.setWarmStart({});  // starting cold is always allowed
     expectNoValidationMessages();
@@ -472,7 +473,7 @@ TEST_P(ModalStepKernelTest, RefusesStatesAndParametersOfTheWrongShape) {
     EXPECT_THROW(ModalStepper(context(), mC, held), Error);
     ModalStepper mhd(context(), mC, MhdParameters{});
     EXPECT_THROW(mhd.setState(Eigen::VectorXd::Zero(kModes)), Error);
-    EXPECT_THROW(mhd.setScheme(Integrator::Linearized), Error);  // fluids only, as on the CPU
+    EXPECT_THROW(mhd.setIntegrator(Integrator::Linearized), Error);  // fluids only, as on the CPU
     EXPECT_THROW(ModalStepper(context(), mC, MhdParameters{}, {Integrator::Linearized}), Error);
     EXPECT_NO_THROW(mhd.setState(Eigen::VectorXd::Zero(2 * kModes)));
 }

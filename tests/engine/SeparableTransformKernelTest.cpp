@@ -1,7 +1,7 @@
 /// @file SeparableTransformKernelTest.cpp
 /// The closed-form basis transforms on the device (engine/device/SeparableTransform: per-axis
 /// sums in shaders/separable_*.comp) against the CPU reference (engine/reference on
-/// engine/format/SeparableTransform, FFTW) in float32: reconstruction, projection of a force
+/// engine/basis/SeparableTransform, FFTW) in float32: reconstruction, projection of a force
 /// density and of a face field, on wall boxes, a torus and mixed axes, 2D and 3D, with and
 /// without the validation layer.
 

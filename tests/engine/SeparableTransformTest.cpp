@@ -1,5 +1,5 @@
 /// @file SeparableTransformTest.cpp
-/// The separable transforms of closed-form bases (engine/format/SeparableTransform.h) equal the
+/// The separable transforms of closed-form bases (engine/basis/SeparableTransform.h) equal the
 /// dense materialized columns to round-off: Ψ v and Ψᵀ q on wall boxes, tori and mixed axes, 2D
 /// and 3D, even and odd resolutions, for the whole div-free space and for a low band of it.
 
@@ -8,10 +8,10 @@
 #include <cstdio>
 #include <string>
 
+#include "engine/basis/SeparableTransform.h"
+#include "engine/basis/VelocityBasis.h"
 #include "engine/core/Error.h"
 #include "engine/format/SeparableModes.h"
-#include "engine/format/SeparableTransform.h"
-#include "engine/format/VelocityBasis.h"
 #include "precompute/closedform/ClosedFormBasis.h"
 #include "precompute/closedform/WholeBoxDofs.h"
 #include "tests/support/RandomCoefficients.h"

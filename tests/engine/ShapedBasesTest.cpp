@@ -3,10 +3,10 @@
 #include <gtest/gtest.h>
 
 #include "engine/core/Error.h"
-#include "engine/stir/ShapedBases.h"
+#include "engine/dynamics/ShapedBases.h"
 #include "tests/support/RandomCoefficients.h"
 
-namespace modeflow::stir {
+namespace modeflow {
 namespace {
 
 TEST(ShapedBasesTest, OneBasisPerLeadingRange) {
@@ -46,4 +46,4 @@ TEST(ShapedBasesTest, LeadingModesKeepTheFirstColumns) {
 }
 
 }  // namespace
-}  // namespace modeflow::stir
+}  // namespace modeflow

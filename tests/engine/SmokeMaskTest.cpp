@@ -12,10 +12,10 @@
 #include "engine/core/BinaryCodec.h"
 #include "engine/core/Error.h"
 #include "engine/format/SmokeMaskFile.h"
-#include "engine/pipeline/RunInputs.h"
 #include "precompute/geometry/FluidMask.h"
 #include "tests/support/TestFolder.h"
 #include "tests/support/TestScenes.h"
+#include "tools/compose/RunPreparation.h"
 
 namespace modeflow {
 namespace {

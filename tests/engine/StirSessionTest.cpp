@@ -6,10 +6,10 @@
 #include <string>
 
 #include "engine/core/SceneKeywords.h"
-#include "engine/pipeline/Backend.h"
-#include "engine/pipeline/RunInputs.h"
+#include "engine/run/Backend.h"
 #include "engine/stir/StirSession.h"
 #include "precompute/Precompute.h"
+#include "tools/compose/RunPreparation.h"
 
 namespace modeflow {
 namespace {

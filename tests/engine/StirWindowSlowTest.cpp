@@ -1,6 +1,7 @@
 /// `modeflow stir`'s window, run for real: under Xvfb on lavapipe (tests/CMakeLists.txt wraps
 /// files named *WindowTest and *WindowSlowTest in xvfb-run) with the validation layer on, driven
-/// by input scripts on the frame clock, so every run is reproducible. Label `slow`: about 20 s.
+/// by input scripts on the frame clock, so every run is reproducible. Label `slow`
+/// (tests/README.md).
 
 #include <gtest/gtest.h>
 

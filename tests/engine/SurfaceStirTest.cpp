@@ -10,7 +10,6 @@
 #include <sstream>
 
 #include "engine/display/NullScreen.h"
-#include "engine/pipeline/RunInputs.h"
 #include "engine/stir/StirApp.h"
 #include "engine/stir/SurfaceStirScene.h"
 #include "engine/surface/SurfaceForce.h"
@@ -18,6 +17,7 @@
 #include "precompute/geometry/MeshGenerator.h"
 #include "tests/support/TestFolder.h"
 #include "tests/support/VulkanTestContext.h"
+#include "tools/compose/RunPreparation.h"
 
 namespace modeflow::testing {
 namespace {

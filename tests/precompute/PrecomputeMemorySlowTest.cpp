@@ -18,6 +18,7 @@
 #include "precompute/scene/SceneLoader.h"
 #include "tests/support/CliFixture.h"
 #include "tests/support/Sanitizers.h"
+#include "tests/support/SceneFixtures.h"
 #include "tests/support/TestFolder.h"
 
 extern char** environ;
@@ -52,39 +53,16 @@ TEST(PrecomputeMemorySlow, TheEstimateIsConservativeButLessThanTwiceThePeak) {
     if (testing::kAddressSanitizer)
         GTEST_SKIP() << "AddressSanitizer's shadow memory and quarantine change the peak";
     const testing::TestFolder dir;
-    const std::string disk = R"([grid]
-resolution = [128, 128]
-bounds_min = [-1.1, -1.1]
-bounds_max = [1.1, 1.1]
-[[domain]]
-shape = "ball"
-center = [0.0, 0.0]
-radius = 1.0
-[basis]
-velocity_modes = 100
-scalar_modes = 0
-)";
-    const std::string ball = R"([grid]
-resolution = [24, 24, 24]
-bounds_min = [-1.1, -1.1, -1.1]
-bounds_max = [1.1, 1.1, 1.1]
-[[domain]]
-shape = "ball"
-center = [0.0, 0.0, 0.0]
-radius = 1.0
-[basis]
-velocity_modes = 60
-scalar_modes = 0
-)";
+    const std::string disk = testing::replaced(testing::sceneFixture("small_disk_2d"),
+                                               {{"[24, 24]", "[128, 128]"},
+                                                {"velocity_modes = 8", "velocity_modes = 100"},
+                                                {"scalar_modes = 4", "scalar_modes = 0"}});
+    const std::string ball = testing::sceneFixture("unit_ball_3d");
     // A whole box with free-slip walls: closed-form bases, sparse coefficients (2.2 million).
-    const std::string box = R"([grid]
-resolution = [64, 64, 64]
-bounds_min = [0.0, 0.0, 0.0]
-bounds_max = [1.0, 1.0, 1.0]
-[basis]
-velocity_modes = 1000
-scalar_modes = 0
-)";
+    const std::string box = testing::replaced(testing::sceneFixture("unit_box_3d"),
+                                              {{"[10, 8, 6]", "[64, 64, 64]"},
+                                               {"velocity_modes = 30", "velocity_modes = 1000"},
+                                               {"scalar_modes = 5", "scalar_modes = 0"}});
     for (const auto& [name, text] :
          {std::pair{"disk.toml", disk}, std::pair{"ball.toml", ball}, std::pair{"box.toml", box}}) {
         const fs::path scene = dir / name;

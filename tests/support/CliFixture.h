@@ -8,26 +8,16 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/support/SceneFixtures.h"
 #include "tests/support/TestFolder.h"
 
 namespace modeflow::testing {
 
 namespace fs = std::filesystem;
 
-/// A 24² unit disk with 8 velocity modes: quick to precompute, for the command-line tests.
-inline const char* kSmallDisk = R"(
-[grid]
-resolution = [24, 24]
-bounds_min = [-1.1, -1.1]
-bounds_max = [1.1, 1.1]
-[[domain]]
-shape = "ball"
-center = [0.0, 0.0]
-radius = 1.0
-[basis]
-velocity_modes = 8
-scalar_modes = 4
-)";
+/// tests/data/scenes/small_disk_2d.toml, the 24² unit disk with 8 velocity modes: quick to
+/// precompute, for the command-line tests (read when the test program starts).
+inline const std::string kSmallDisk = sceneFixture("small_disk_2d");
 
 struct RunResult {
     int status = -1;

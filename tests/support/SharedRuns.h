@@ -3,7 +3,7 @@
 /// Runs set up on the shared real bases (RealBases.h), the way `run` and `stir` set them up.
 
 #include "engine/core/SceneSpec.h"
-#include "engine/pipeline/RunInputs.h"
+#include "tools/compose/RunPreparation.h"
 
 namespace modeflow::testing {
 

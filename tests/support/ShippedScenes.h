@@ -51,17 +51,17 @@ inline std::string sceneTestName(const fs::path& relative) {
 
 /// The precompute's cost: velocity DOFs × the highest velocity mode. The velocity eigensolve
 /// dominates the precompute, and its shift-invert Lanczos iteration takes a few solves per wanted
-/// mode. Measured on this 2-core machine: 3 µs per unit in 2D, 4–16 µs in 3D (boxes, with their
-/// repeated eigenvalues, cost most). A closed-form basis has no eigensolve: its sparse
-/// coefficients dominate, about 2 N² entries in 3D (64³ box, N = 1000: 1.3 s), so it costs the
-/// highest mode squared and the shipped closed-form scenes run at their own size.
+/// mode. Measured per unit (tests/README.md, "Running the suite"): 3D costs more than 2D, and
+/// boxes, with their repeated eigenvalues, most. A closed-form basis has no eigensolve: its sparse
+/// coefficients dominate, about 2 N² entries in 3D, so it costs the highest mode squared and the
+/// shipped closed-form scenes run at their own size.
 inline double precomputeCost(const SceneSpec& scene) {
     const double modes = scene.basis.highestVelocityMode();
     if (hasClosedFormVelocity(scene)) return modes * modes;
     return double(estimatePrecomputeMemory(scene).velocityDofs) * modes;
 }
 
-/// Scenes costing more run on a reduced copy (2D scenes up to about 12 s, 3D up to about 60 s).
+/// Scenes costing more run on a reduced copy (what this allows in seconds: tests/README.md).
 inline constexpr double kFullSceneCost = 4e6;
 /// What the reduced copy may cost at most: a few seconds.
 inline constexpr double kReducedSceneCost = 1e6;

@@ -7,8 +7,8 @@
 #include <vector>
 
 #include "engine/core/SceneSpec.h"
-#include "engine/pipeline/RunInputs.h"
 #include "engine/preview/Image.h"
+#include "engine/run/RunInputs.h"
 
 namespace modeflow::testing {
 

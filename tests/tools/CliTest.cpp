@@ -16,6 +16,7 @@
 #include <nlohmann/json.hpp>
 
 #include "tests/support/CliFixture.h"
+#include "tests/support/SceneFixtures.h"
 
 namespace {
 
@@ -25,15 +26,8 @@ using modeflow::testing::slurp;
 namespace fs = std::filesystem;
 
 using modeflow::testing::kSmallDisk;
-
-std::string replaced(std::string text, const std::string& from, const std::string& to) {
-    const auto at = text.find(from);
-    if (at == std::string::npos)
-        ADD_FAILURE() << "no '" << from << "' in the scene";
-    else
-        text.replace(at, from.size(), to);
-    return text;
-}
+using modeflow::testing::replaced;
+using modeflow::testing::sceneFixture;
 
 /// The table `modes --csv` prints: its header line and each row's numbers.
 struct Csv {
@@ -171,8 +165,9 @@ TEST_F(Cli, TensorFreeScenesStoreNoTensorAndRunLikeDenseOnes) {
 TEST_F(Cli, TensorFreeIsRefusedForClosedFormAndSurfaceBases) {
     // A whole box with free-slip walls has closed-form bases: no columns, no vorticity quadrature.
     const std::string box =
-        "[grid]\nresolution = [4, 3, 3]\nbounds_min = [0.0, 0.0, 0.0]\n"
-        "bounds_max = [1.0, 1.0, 1.0]\n[basis]\nvelocity_modes = 6\nscalar_modes = 1\n";
+        replaced(sceneFixture("unit_box_3d"), {{"[10, 8, 6]", "[4, 3, 3]"},
+                                               {"velocity_modes = 30", "velocity_modes = 6"},
+                                               {"scalar_modes = 5", "scalar_modes = 1"}});
     const fs::path free = scene("box_free.toml", box + "coefficients = \"tensor-free\"\n");
     const std::string closedForm = "a whole box with free-slip walls gets closed-form bases";
     expectRejected("precompute " + free.string() + " --cache-dir " + mCache.string(), closedForm);
@@ -209,16 +204,7 @@ TEST_F(Cli, TensorFreeIsRefusedForClosedFormAndSurfaceBases) {
 
 TEST_F(Cli, InspectSaysWhichAxesArePeriodic) {
     // A channel periodic along x: one harmonic field, the uniform flow along it.
-    const fs::path s = scene("channel.toml", R"(
-[grid]
-resolution = [16, 8]
-bounds_min = [0.0, 0.0]
-bounds_max = [2.0, 1.0]
-periodic = [true, false]
-[basis]
-velocity_modes = 6
-scalar_modes = 2
-)");
+    const fs::path s = scene("channel.toml", sceneFixture("periodic_channel_2d"));
     const RunResult json =
         run("inspect " + s.string() + " --cache-dir " + mCache.string() + " --json");
     ASSERT_EQ(json.status, 0) << json.err;
@@ -234,10 +220,7 @@ scalar_modes = 2
 
 TEST_F(Cli, InspectNamesTheClosedFormBasesOfAWholeBox) {
     // No [[domain]] and free-slip walls: both bases in closed form, sparse coefficients.
-    const fs::path s = scene("box.toml",
-                             "[grid]\nresolution = [10, 8, 6]\nbounds_min = [0, 0, 0]\n"
-                             "bounds_max = [1, 1, 1]\n[basis]\nvelocity_modes = 30\n"
-                             "scalar_modes = 5\n");
+    const fs::path s = scene("box.toml", sceneFixture("unit_box_3d"));
     RunResult r = run("inspect " + s.string() + " --cache-dir " + mCache.string() + " --json");
     ASSERT_EQ(r.status, 0) << r.err;
     const auto j = nlohmann::json::parse(r.out);
@@ -311,17 +294,7 @@ TEST_F(Cli, TooManyModesAreRejected) {
 }
 
 TEST_F(Cli, BadMeshesAreRejected) {
-    const std::string meshScene = R"(
-[grid]
-resolution = [8, 8, 8]
-bounds_min = [-1.0, -1.0, -1.0]
-bounds_max = [1.0, 1.0, 1.0]
-[[domain]]
-shape = "mesh"
-file = "MESH"
-[basis]
-velocity_modes = 4
-)";
+    const std::string meshScene = sceneFixture("mesh_domain_3d");
     expectRejected(precompute(scene("m1.toml", replaced(meshScene, "MESH", "nowhere.obj"))),
                    "nowhere.obj");
     std::ofstream(mDir / "garbage.obj") << "this is not\x01 an obj file\nf 7 8 9\n";
@@ -433,6 +406,34 @@ TEST_F(Cli, AFolderThatCannotBeEnteredIsNamedNotCalledMissing) {
         as, "precompute " + reachable.string() + " --cache-dir " + (locked / "cache").string());
     EXPECT_EQ(cache.status, 1) << cache.err;
     EXPECT_NE(cache.err.find(denied), std::string::npos) << cache.err;
+}
+
+TEST_F(Cli, OnlyASlicedPrecomputeLoadsMpiAndPetsc) {
+    // The dynamic loader names every library it loads (LD_DEBUG=files): a command that slices
+    // nothing starts without MPI, PETSc and SLEPc and the libraries they bring.
+    const auto loaded = [&](const std::string& args) {
+        return runProgram("env LD_DEBUG=files " + modeflow::testing::cliPath(), args);
+    };
+    const fs::path s = scene("disk.toml", kSmallDisk);
+    for (const std::string& args :
+         {std::string("--version"), "precompute " + s.string() + " --cache-dir " + mCache.string(),
+          "inspect " + s.string() + " --cache-dir " + mCache.string()}) {
+        const RunResult r = loaded(args);
+        EXPECT_EQ(r.status, 0) << args;
+        for (const char* library : {"libpetsc", "libslepc", "libmpi", "libmodeflow_petsc"})
+            EXPECT_EQ(r.err.find(library), std::string::npos) << args << " loaded " << library;
+    }
+    // Above the size whose eigenproblems are solved densely (1200 unknowns).
+    const fs::path sliced = scene(
+        "sliced.toml",
+        replaced(kSmallDisk, {{"[24, 24]", "[48, 48]"},
+                              {"scalar_modes = 4", "scalar_modes = 4\neigensolver = \"slepc\""}}));
+    const RunResult r =
+        loaded("precompute " + sliced.string() + " --force --cache-dir " + mCache.string());
+    EXPECT_EQ(r.status, 0) << r.err.substr(r.err.size() > 4000 ? r.err.size() - 4000 : 0);
+    for (const char* library : {"libmodeflow_petsc", "libslepc", "libpetsc", "libmpi"})
+        EXPECT_NE(r.err.find(library), std::string::npos)
+            << "the sliced precompute loaded no " << library;
 }
 
 TEST_F(Cli, InspectRefusesFoldersAndDevicesByName) {

@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "tests/support/CliFixture.h"
+#include "tests/support/SceneFixtures.h"
 
 namespace modeflow {
 namespace {
@@ -18,39 +19,8 @@ using testing::Cli;
 using testing::RunResult;
 namespace fs = std::filesystem;
 
-/// An ellipse minus a disk at 72², 40 modes: the solve gives the harmonic mode κ² = −2.7e-11.
-const char* kEllipseMinusDisk = R"(
-[grid]
-resolution = [72, 72]
-bounds_min = [-1.1, -1.1]
-bounds_max = [1.1, 1.1]
-[[domain]]
-shape = "ellipsoid"
-center = [0.0, 0.0]
-radii = [1.0, 0.7]
-[[domain]]
-shape = "ball"
-center = [0.2, 0.0]
-radius = 0.25
-op = "subtract"
-[basis]
-velocity_modes = 40
-scalar_modes = 8
-[simulation]
-dt = 0.02
-viscosity = 0.001
-[initial]
-velocity = "random"
-energy = 1.0
-[[source]]
-shape = "ball"
-center = [-0.6, 0.0]
-radius = 0.15
-density = 1.0
-[output]
-frames = 2
-steps_per_frame = 2
-)";
+/// tests/data/scenes/ellipse_minus_disk_2d.toml: the solve gives the harmonic mode κ² = −2.7e-11.
+const std::string kEllipseMinusDisk = testing::sceneFixture("ellipse_minus_disk_2d");
 
 class HarmonicDomains : public Cli {
 protected:

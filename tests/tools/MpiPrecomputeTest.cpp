@@ -7,6 +7,7 @@
 #include "engine/format/CacheFile.h"
 #include "tests/support/BasisComparison.h"
 #include "tests/support/CliFixture.h"
+#include "tests/support/SceneFixtures.h"
 
 namespace modeflow {
 namespace {
@@ -15,27 +16,9 @@ using testing::Cli;
 using testing::RunResult;
 namespace fs = std::filesystem;
 
-/// An off-centre ball with a hole through it (a harmonic field): no exact symmetry, so every
-/// eigenspace is one-dimensional or nearly so.
-const char* kHollowBall = R"(
-[grid]
-resolution = [14, 14, 14]
-bounds_min = [-1.1, -1.1, -1.1]
-bounds_max = [1.1, 1.1, 1.1]
-[[domain]]
-shape = "ball"
-center = [0.03, 0.02, 0.01]
-radius = 1.0
-[[domain]]
-shape = "cylinder"
-center = [0.0, 0.0, 0.0]
-radius = 0.3
-half_height = 2.0
-op = "subtract"
-[basis]
-velocity_modes = 20
-scalar_modes = 6
-)";
+/// An off-centre ball with a hole through it: no exact symmetry, so every eigenspace is
+/// one-dimensional or nearly so.
+const std::string kHollowBall = testing::sceneFixture("hollow_ball_3d");
 
 class MpiPrecompute : public Cli {
 protected:

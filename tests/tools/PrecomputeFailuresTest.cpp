@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "tests/support/CliFixture.h"
+#include "tests/support/SceneFixtures.h"
 
 namespace modeflow {
 namespace {
@@ -19,11 +20,11 @@ TEST_F(Cli, ExtremelyScaledScenesFailWithOurMessageOnly) {
     // print "CHOLMOD warning: matrix not positive definite" on stdout before our message; at
     // 6e-152 the scaled operator overflows and Spectra's exception ended as "internal error".
     for (const std::string scale : {"1e150", "1e-150"}) {
-        const std::string text =
-            "[grid]\nresolution = [48, 48]\nbounds_min = [-" + scale + ", -" + scale +
-            "]\nbounds_max = [" + scale + ", " + scale +
-            "]\n[[domain]]\nshape = \"ball\"\ncenter = [0.0, 0.0]\nradius = " + scale +
-            "\n[basis]\nvelocity_modes = 8\nscalar_modes = 4\n";
+        const std::string text = testing::replaced(
+            testing::kSmallDisk, {{"[24, 24]", "[48, 48]"},
+                                  {"[-1.1, -1.1]", "[-" + scale + ", -" + scale + "]"},
+                                  {"[1.1, 1.1]", "[" + scale + ", " + scale + "]"},
+                                  {"radius = 1.0", "radius = " + scale}});
         const RunResult r = run(precompute(scene("scaled.toml", text)));
         EXPECT_EQ(r.status, 1) << scale << ": " << r.err;
         EXPECT_EQ((r.out + r.err).find("CHOLMOD"), std::string::npos)

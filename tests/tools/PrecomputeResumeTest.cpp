@@ -9,6 +9,7 @@
 #include "engine/format/CacheFile.h"
 #include "tests/support/BasisComparison.h"
 #include "tests/support/CliFixture.h"
+#include "tests/support/SceneFixtures.h"
 
 namespace modeflow {
 namespace {
@@ -19,21 +20,7 @@ namespace fs = std::filesystem;
 
 /// Sliced solves of one interval (the Neumann scalar), two (Dirichlet scalars: their count falls
 /// short of Weyl's leading term) and two (velocity).
-const char* kDisk = R"(
-[grid]
-resolution = [48, 48]
-bounds_min = [-1.1, -1.1]
-bounds_max = [1.1, 1.1]
-[[domain]]
-shape = "ball"
-center = [0.03, 0.02]
-radius = 1.0
-[basis]
-velocity_modes = 12
-scalar_modes = 40
-scalar_boundary = "dirichlet"
-eigensolver = "slepc"
-)";
+const std::string kDisk = testing::sceneFixture("sliced_disk_2d");
 
 std::vector<fs::path> checkpoints(const fs::path& folder) {
     std::vector<fs::path> files;

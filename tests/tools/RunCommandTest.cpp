@@ -22,6 +22,7 @@
 #include "tests/support/CliFixture.h"
 #include "tests/support/PngFile.h"
 #include "tests/support/Sanitizers.h"
+#include "tests/support/SceneFixtures.h"
 
 namespace modeflow {
 namespace {
@@ -313,16 +314,7 @@ TEST_F(RunCommand, BadInputIsRefusedBeforeAnyWork) {
         "run " + scene("dt.toml", std::string(kHotDisk) + "[simulation]\ndt = -1\n").string() +
             " --cache-dir " + mCache.string(),
         "dt");
-    const std::string cone = R"(
-[grid]
-resolution = [24, 24]
-bounds_min = [-1.1, -1.1]
-bounds_max = [1.1, 1.1]
-[basis]
-velocity_modes = 8
-[[source]]
-shape = "cone"
-)";
+    const std::string cone = testing::sceneFixture("cone_source_2d");
     expectRejected("run " + scene("cone.toml", cone).string() + " --cache-dir " + mCache.string(),
                    "[[source]]");
     expectRejected("run " + s.string() + " --out " + (mDir / "g").string() +
@@ -397,23 +389,7 @@ std::string octahedron(double scale) {
 
 TEST_F(RunCommand, ResumeAfterEditingOnlyTheMeshIsRefused) {
     std::ofstream(mDir / "shape.obj") << octahedron(1.0);
-    const fs::path s = scene("mesh.toml", R"(
-[grid]
-resolution = [10, 10, 10]
-bounds_min = [-1.1, -1.1, -1.1]
-bounds_max = [1.1, 1.1, 1.1]
-[[domain]]
-shape = "mesh"
-file = "shape.obj"
-[basis]
-velocity_modes = 4
-scalar_modes = 0
-[initial]
-velocity = "random"
-energy = 0.1
-[output]
-frames = 2
-)");
+    const fs::path s = scene("mesh.toml", testing::sceneFixture("mesh_run_3d"));
     ASSERT_EQ(simulate(s, mDir / "out", "--frames 1 --device cpu").status, 0);
     std::ofstream(mDir / "shape.obj") << octahedron(0.9);  // the scene's text is unchanged
     const RunResult resumed = simulate(s, mDir / "out", "--resume --device cpu");

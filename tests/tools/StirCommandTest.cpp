@@ -10,6 +10,7 @@
 #include "engine/vulkan/VulkanContext.h"
 #include "tests/support/CliFixture.h"
 #include "tests/support/PngFile.h"
+#include "tests/support/SceneFixtures.h"
 
 namespace modeflow::testing {
 namespace {
@@ -46,10 +47,11 @@ TEST_F(StirCommand, ABasisTooLargeForTheDeviceIsRefusedBeforeThePrecompute) {
     // (a whole box's closed-form basis): refused from the scene, with no cache made.
     const vulkan::VulkanContext device{vulkan::VulkanContextOptions{}};
     const int n = int(std::sqrt(double(device.texelBufferLimit()) / 4.0)) + 8;
-    const fs::path s = scene("box.toml",
-                             "[grid]\nresolution = [24, 24, 24]\nbounds_min = [0, 0, 0]\n"
-                             "bounds_max = [1, 1, 1]\n[basis]\nvelocity_modes = " +
-                                 std::to_string(n) + "\nscalar_modes = 0\n");
+    const fs::path s = scene(
+        "box.toml", replaced(sceneFixture("unit_box_3d"),
+                             {{"[10, 8, 6]", "[24, 24, 24]"},
+                              {"velocity_modes = 30", "velocity_modes = " + std::to_string(n)},
+                              {"scalar_modes = 5", "scalar_modes = 0"}}));
     expectRejected("stir " + s.string() + " --offscreen --frames 1 --cache-dir " + mCache.string(),
                    "the pair sums of N = " + std::to_string(n) + " modes");
 }

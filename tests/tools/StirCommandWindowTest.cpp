@@ -10,30 +10,13 @@
 
 #include "tests/support/CliFixture.h"
 #include "tests/support/PngFile.h"
+#include "tests/support/SceneFixtures.h"
 
 namespace modeflow::testing {
 namespace {
 
 /// A 12³ ball with 6 velocity modes and a warm source.
-const char* kSmallBall = R"(
-[grid]
-resolution = [12, 12, 12]
-bounds_min = [-1.1, -1.1, -1.1]
-bounds_max = [1.1, 1.1, 1.1]
-[[domain]]
-shape = "ball"
-center = [0.0, 0.0, 0.0]
-radius = 1.0
-[basis]
-velocity_modes = 6
-scalar_modes = 0
-[[source]]
-shape = "ball"
-center = [0.0, 0.0, -0.5]
-radius = 0.3
-density = 1.5
-temperature = 1.0
-)";
+const std::string kSmallBall = sceneFixture("small_ball_3d");
 
 /// The unit sphere of scenes/meshes (642 vertices) at rest, with dye from the north pole for the
 /// first 0.4 s.

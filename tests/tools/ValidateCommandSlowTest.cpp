@@ -3,7 +3,8 @@
 /// here against expectations of our own (not the report's verdicts): second order for cut cells,
 /// energy exact under the midpoint rule, cross helicity conserved, grid-evaluated coefficients
 /// drifting, the error against the full run falling with more modes, LANS-α's spectrum steeper
-/// than Navier–Stokes'. Speed is reported, never asserted. About 40 s on a 2-core machine.
+/// than Navier–Stokes'. Speed is reported, never asserted. Label `slow` (its time:
+/// tools/validate/README.md).
 
 #include <cmath>
 #include <map>

@@ -30,11 +30,10 @@
 
 #include <benchmark/benchmark.h>
 
+#include "engine/basis/VelocityBasis.h"
 #include "engine/device/DeviceCoefficients.h"
 #include "engine/device/ModalKernels.h"
 #include "engine/device/SeparableTransform.h"
-#include "engine/format/VelocityBasis.h"
-#include "engine/pipeline/RunInputs.h"
 #include "engine/reference/ForceProjection.h"
 #include "engine/reference/Simulation.h"
 #include "engine/reference/SmokeAdvection.h"
@@ -46,6 +45,7 @@
 #include "tests/support/RandomCoefficients.h"
 #include "tools/bench/BenchDevice.h"
 #include "tools/bench/EigenReference.h"
+#include "tools/compose/RunPreparation.h"
 
 namespace modeflow::bench {
 namespace {

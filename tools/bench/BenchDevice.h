@@ -5,7 +5,7 @@
 /// default) is taken from the command line before Google Benchmark reads the rest, which refuses
 /// any flag it does not know (exit status 1).
 
-#include "engine/pipeline/Backend.h"
+#include "engine/run/Backend.h"
 #include "engine/vulkan/VulkanContext.h"
 
 namespace modeflow::bench {

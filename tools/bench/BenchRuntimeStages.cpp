@@ -12,12 +12,12 @@
 
 #include <benchmark/benchmark.h>
 
-#include "engine/pipeline/Backend.h"
-#include "engine/pipeline/RunInputs.h"
+#include "engine/run/Backend.h"
 #include "tests/support/RandomCoefficients.h"
 #include "tools/bench/BenchDevice.h"
 #include "tools/bench/BenchGrids.h"
 #include "tools/bench/EigenReference.h"
+#include "tools/compose/RunPreparation.h"
 
 namespace modeflow::bench {
 namespace {

@@ -9,12 +9,13 @@
 
 #include "engine/core/Error.h"
 #include "engine/core/KappaSquared.h"
+#include "engine/core/SceneKeywords.h"
 #include "engine/dynamics/Diagnostics.h"
 #include "engine/dynamics/ModalDivergence.h"
 #include "engine/dynamics/ModalIntegrator.h"
-#include "engine/pipeline/Backend.h"
-#include "engine/pipeline/RunInputs.h"
+#include "engine/run/Backend.h"
 #include "precompute/scene/SceneLoader.h"
+#include "tools/compose/Preflight.h"
 #include "tools/modeflow/Commands.h"
 #include "tools/modeflow/NumberOptions.h"
 
@@ -47,9 +48,9 @@ Command addModes(CLI::App& app) {
     return [sub, opts]() {
         if (!*sub) return -1;
         // Checked before any precompute work.
-        const BackendChoice choice = parseDeviceOption(opts->device);
-        const SceneSpec scene = loadScene(opts->scene);
-        requireSupport(scene, choice.kind);
+        const Preflight checked = preflight(opts->scene, opts->device, RunParts::Dynamics);
+        const BackendChoice& choice = checked.backend;
+        const SceneSpec& scene = checked.scene;
         const Integrator scheme = opts->integrator
                                       ? parseIntegrator(*opts->integrator, "--integrator")
                                       : scene.simulation.integrator;

@@ -4,11 +4,10 @@
 #include "engine/core/Error.h"
 #include "engine/core/WritableDirectory.h"
 #include "engine/display/Window.h"
-#include "engine/pipeline/Backend.h"
-#include "engine/pipeline/RunInputs.h"
+#include "engine/run/Backend.h"
 #include "engine/stir/StirApp.h"
 #include "engine/stir/WindowPicture.h"
-#include "precompute/scene/SceneLoader.h"
+#include "tools/compose/Preflight.h"
 #include "tools/modeflow/Commands.h"
 #include "tools/modeflow/NumberOptions.h"
 
@@ -57,9 +56,9 @@ Command addStir(CLI::App& app) {
     return [sub, opts]() {
         if (!*sub) return -1;
         // Everything that can be refused is checked before the precompute or the window.
-        const BackendChoice choice = parseDeviceOption(opts->device);
-        const SceneSpec scene = loadScene(opts->scene);
-        requireSupport(scene, choice.kind);
+        const Preflight checked = preflight(opts->scene, opts->device, RunParts::DynamicsAndSmoke);
+        const BackendChoice& choice = checked.backend;
+        const SceneSpec& scene = checked.scene;
         // The window's device opens after the precompute; a basis or a picture too large for it
         // is refused now, from the first suitable device's limits (the uploads check again).
         {

@@ -10,13 +10,13 @@
 #include <string>
 #include <vector>
 
+#include "engine/basis/VelocityBasis.h"
 #include "engine/core/FaceLocation.h"
 #include "engine/core/MacGrid.h"
 #include "engine/dynamics/Diagnostics.h"
 #include "engine/dynamics/FluidSystem.h"
 #include "engine/dynamics/ModalIntegrator.h"
-#include "engine/format/VelocityBasis.h"
-#include "engine/stir/ShapedBases.h"
+#include "engine/dynamics/ShapedBases.h"
 #include "tools/validate/GridCoefficients.h"
 #include "tools/validate/Studies.h"
 #include "tools/validate/StudyRuns.h"
@@ -88,7 +88,7 @@ StudyResult coefficientStudy(const StudyOptions& options) {
             run.style = style;
             run.modes = n;
             if (run.style == "ours") {
-                run.coefficients = stir::leadingCoefficients(*full.coefficients, n);
+                run.coefficients = leadingCoefficients(*full.coefficients, n);
             } else {
                 auto grid = std::make_unique<FullTensorCoefficients>(
                     gridAdvectionCoefficients(full.cache, n));

@@ -4,9 +4,9 @@
 #include <cmath>
 #include <string>
 
+#include "engine/basis/VelocityBasis.h"
 #include "engine/core/Error.h"
 #include "engine/core/MacGrid.h"
-#include "engine/format/VelocityBasis.h"
 #include "engine/reference/VelocityReconstruction.h"
 
 namespace modeflow::validate {

@@ -15,8 +15,8 @@
 #include <vector>
 
 #include "engine/core/MacSampling.h"
-#include "engine/pipeline/Backend.h"
 #include "engine/reference/VelocityReconstruction.h"
+#include "engine/run/Backend.h"
 #include "tools/validate/PseudoSpectralEuler.h"
 #include "tools/validate/Studies.h"
 #include "tools/validate/StudyRuns.h"

@@ -20,11 +20,11 @@
 #include <vector>
 
 #include "engine/dynamics/DenseCoefficients.h"
+#include "engine/dynamics/ShapedBases.h"
 #include "engine/dynamics/SparseCoefficients.h"
-#include "engine/pipeline/Backend.h"
 #include "engine/reference/ForceField.h"
 #include "engine/reference/VelocityReconstruction.h"
-#include "engine/stir/ShapedBases.h"
+#include "engine/run/Backend.h"
 #include "tools/validate/MantaflowPlume.h"
 #include "tools/validate/PressureProjection.h"
 #include "tools/validate/Studies.h"
@@ -50,8 +50,8 @@ std::string plumeScene(int cells, int modes) {
 RunInputs leadingRun(const RunInputs& full, int modes) {
     RunInputs run;
     run.scene = full.scene;
-    run.cache = stir::leadingModes(full.cache, modes);
-    run.coefficients = stir::leadingCoefficients(*full.coefficients, modes);
+    run.cache = leadingModes(full.cache, modes);
+    run.coefficients = leadingCoefficients(*full.coefficients, modes);
     if (dynamic_cast<const SparseCoefficients*>(full.coefficients.get()))
         run.coefficients = std::make_unique<SparseCoefficients>(SparseCoefficients::fromDense(
             static_cast<const DenseCoefficients&>(*run.coefficients)));

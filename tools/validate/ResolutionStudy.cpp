@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "engine/dynamics/Diagnostics.h"
-#include "engine/pipeline/Backend.h"
+#include "engine/run/Backend.h"
 #include "tools/validate/Studies.h"
 #include "tools/validate/StudyRuns.h"
 

@@ -1,8 +1,8 @@
 /// @file SpeedStudy.cpp
 /// `speed`: the wall time of one reduced-dynamics step on the CPU reference (one thread) at 50,
 /// 100 and 200 modes, dense coefficients (the unit disk) and sparse ones (a box), against the
-/// seed's published figures: 0.098 / 0.65 / 2.0 s dense and 0.026 / 0.070 / 0.28 s sparse per
-/// step (seed §6.4, an Intel i7 laptop). Timings vary with the machine's load; they are measured
+/// seed's published figures per step (seedDense, seedSparse below; seed §6.4, an Intel i7 laptop;
+/// tools/validate/README.md). Timings vary with the machine's load; they are measured
 /// here, never asserted.
 
 #include <algorithm>
@@ -13,8 +13,8 @@
 #include "engine/dynamics/DenseCoefficients.h"
 #include "engine/dynamics/FluidSystem.h"
 #include "engine/dynamics/ModalIntegrator.h"
+#include "engine/dynamics/ShapedBases.h"
 #include "engine/dynamics/SparseCoefficients.h"
-#include "engine/stir/ShapedBases.h"
 #include "tools/validate/Studies.h"
 #include "tools/validate/StudyRuns.h"
 
@@ -73,7 +73,7 @@ StudyResult speedStudy(const StudyOptions& options) {
             const char* storage = disk ? "dense" : "sparse";
             options.note(std::string(storage) + ", " + std::to_string(n) + " modes");
             std::unique_ptr<StructuralCoefficients> coefficients =
-                stir::leadingCoefficients(*run.coefficients, n);
+                leadingCoefficients(*run.coefficients, n);
             // Sparse keeps what the precompute keeps: |C| above 1e-12 of the largest.
             if (!disk)
                 coefficients = std::make_unique<SparseCoefficients>(SparseCoefficients::fromDense(

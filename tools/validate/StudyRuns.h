@@ -8,7 +8,7 @@
 
 #include <Eigen/Core>
 
-#include "engine/pipeline/RunInputs.h"
+#include "tools/compose/RunPreparation.h"
 #include "tools/validate/Study.h"
 
 namespace modeflow::validate {

@@ -1,0 +1,64 @@
+#include "engine/run/GridFrames.h"
+
+#include <span>
+#include <utility>
+#include <vector>
+
+#include "engine/output/VdbFrame.h"
+
+namespace modeflow {
+
+GridFrames::GridFrames(Simulator& simulator, const RunInputs& run, GridFrameFiles files)
+    : mSimulator(simulator),
+      mRun(run),
+      mFiles(std::move(files)),
+      mBasisGrid(MacGrid::fromSpec(run.cache.grid)) {
+    if (mFiles.previews)
+        mPreview = std::make_unique<FramePreview>(mSimulator.smokeGrid(), mRun.smokeMask,
+                                                  mFiles.previewDevice);
+}
+
+std::filesystem::path GridFrames::frameFile(int frame) const {
+    return mFiles.folder / frameFileName(mFiles.sceneName, frame);
+}
+
+Checkpoint GridFrames::writeFrame(int frame, const std::filesystem::path& picture,
+                                  FrameProgress& bar) {
+    const bool temperature = settings().simulatesTemperature();
+    SmokeFields smoke = bar.timed("reading fields", [&] { return mSimulator.smoke(); });
+    const std::vector<double> faceVelocity =
+        bar.timed("reading fields", [&] { return mSimulator.faceVelocity(); });
+    const std::vector<double> faceMagnetic =
+        bar.timed("reading fields", [&] { return mSimulator.faceMagneticField(); });
+    VdbFrame vdb;
+    vdb.smokeGrid = mSimulator.smokeGrid();
+    vdb.basisGrid = mBasisGrid;
+    vdb.density = std::span<const double>(smoke.density);
+    if (temperature) vdb.temperature = std::span<const double>(smoke.temperature);
+    vdb.faceVelocity = faceVelocity;
+    vdb.faceMagnetic = faceMagnetic;
+    vdb.fluidMask = mRun.smokeMask;
+    vdb.frame = frame;
+    vdb.time = mSimulator.time();
+    vdb.sceneHash = mFiles.sceneHash;
+    vdb.modeflowVersion = MODEFLOW_VERSION;
+    vdb.options.halfFloat = mFiles.halfFloat;
+    bar.timed("VDB files", [&] { writeVdbFrame(frameFile(frame), vdb); });
+    if (!picture.empty() && mPreview)
+        bar.timed("previews", [&] { mPreview->write(picture, smoke, temperature); });
+    return {frame,
+            mSimulator.time(),
+            0,
+            mSimulator.velocity(),
+            mSimulator.magneticField(),
+            mSimulator.carry(),
+            std::move(smoke)};
+}
+
+void GridFrames::restore(const Checkpoint& from) {
+    mSimulator.restore(from.time, from.velocity, from.smoke);
+    if (settings().mhd) mSimulator.setMagneticField(from.magnetic);
+    mSimulator.setCarry(from.carry);
+}
+
+}  // namespace modeflow

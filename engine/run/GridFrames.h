@@ -1,0 +1,51 @@
+#pragma once
+/// @file GridFrames.h
+/// The frames of a grid scene's run: one OpenVDB file per frame (density, temperature, the face
+/// velocity and magnetic field, the fluid mask; engine/output/VdbFrame.h), a picture of the smoke
+/// when asked, and the checkpoint of the simulation's state and smoke.
+
+#include <filesystem>
+#include <memory>
+#include <string>
+
+#include "engine/core/MacGrid.h"
+#include "engine/run/FramePreview.h"
+#include "engine/run/FramedRun.h"
+#include "engine/run/RunInputs.h"
+#include "engine/simulation/Simulator.h"
+#include "engine/vulkan/VulkanContext.h"
+
+namespace modeflow {
+
+struct GridFrameFiles {
+    std::filesystem::path folder;
+    std::string sceneName;  ///< frames are NAME_0001.vdb, …
+    std::string sceneHash;  ///< the frames' metadata
+    bool halfFloat = false;
+    bool previews = false;  ///< whether any frame gets a picture
+    /// The device that ray-marches 3D pictures; null renders them on the CPU.
+    const vulkan::VulkanContext* previewDevice = nullptr;
+};
+
+class GridFrames final : public FramedRun {
+public:
+    /// `simulator` runs `run`; both must outlive this.
+    GridFrames(Simulator& simulator, const RunInputs& run, GridFrameFiles files);
+
+    const SimulationSettings& settings() const override { return mSimulator.settings(); }
+    double time() const override { return mSimulator.time(); }
+    FrameStats advanceFrame() override { return mSimulator.advanceFrame(); }
+    std::filesystem::path frameFile(int frame) const override;
+    Checkpoint writeFrame(int frame, const std::filesystem::path& picture,
+                          FrameProgress& bar) override;
+    void restore(const Checkpoint& from) override;
+
+private:
+    Simulator& mSimulator;
+    const RunInputs& mRun;
+    GridFrameFiles mFiles;
+    MacGrid mBasisGrid;
+    std::unique_ptr<FramePreview> mPreview;
+};
+
+}  // namespace modeflow

@@ -1,0 +1,67 @@
+#include "engine/run/SurfaceFrames.h"
+
+#include <utility>
+#include <vector>
+
+#include "engine/output/PlyFrame.h"
+#include "engine/preview/PngWriter.h"
+#include "engine/preview/SurfaceImage.h"
+
+namespace modeflow {
+
+SurfaceFrames::SurfaceFrames(const RunInputs& run, std::filesystem::path folder,
+                             std::string sceneName, std::string sceneHash)
+    : mRun(run),
+      mSimulation(run.cache, *run.coefficients, run.settings, run.initialVelocity),
+      mFolder(std::move(folder)),
+      mSceneName(std::move(sceneName)),
+      mSceneHash(std::move(sceneHash)),
+      mDyeScale(dyeColourScale(run.settings)) {}
+
+FrameStats SurfaceFrames::advanceFrame() {
+    mSimulation.advanceFrame();
+    FrameStats stats;
+    stats.steps = mRun.settings.stepsPerFrame;
+    return stats;
+}
+
+std::filesystem::path SurfaceFrames::frameFile(int frame) const {
+    return mFolder / plyFrameFileName(mSceneName, frame);
+}
+
+Checkpoint SurfaceFrames::writeFrame(int frame, const std::filesystem::path& picture,
+                                     FrameProgress& bar) {
+    const std::vector<double> dye =
+        bar.timed("reading fields", [&] { return mSimulation.dye().vertexValues(); });
+    const std::vector<double> velocity =
+        bar.timed("reading fields", [&] { return mSimulation.vertexVelocity(); });
+    PlyFrame ply;
+    ply.mesh = &mRun.cache.surface.mesh;
+    ply.dye = dye;
+    ply.velocity = velocity;
+    ply.dyeScale = mDyeScale;
+    ply.frame = frame;
+    ply.time = mSimulation.time();
+    ply.sceneHash = mSceneHash;
+    bar.timed("PLY files", [&] { writePlyFrame(frameFile(frame), ply); });
+    if (!picture.empty())
+        bar.timed("previews", [&] {
+            preview::writePng(
+                picture, preview::surfaceImage(mRun.cache.surface.mesh, dye, mDyeScale, 512, 384));
+        });
+    Checkpoint checkpoint{frame, mSimulation.time(),  0, mSimulation.velocity(),
+                          {},    mSimulation.carry(), {}};
+    const Eigen::VectorXd& state = mSimulation.dye().state();
+    checkpoint.smoke.density.assign(state.data(), state.data() + state.size());
+    checkpoint.smoke.temperature.assign(checkpoint.smoke.density.size(), 0.0);  // dye has none
+    return checkpoint;
+}
+
+void SurfaceFrames::restore(const Checkpoint& from) {
+    mSimulation.restore(from.time, from.velocity,
+                        Eigen::Map<const Eigen::VectorXd>(from.smoke.density.data(),
+                                                          Eigen::Index(from.smoke.density.size())));
+    mSimulation.setCarry(from.carry);
+}
+
+}  // namespace modeflow

@@ -1,0 +1,36 @@
+#include "tools/compose/RunIdentity.h"
+
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <iterator>
+#include <sstream>
+
+#include "engine/core/BinaryCodec.h"
+#include "precompute/Precompute.h"
+
+namespace modeflow {
+namespace {
+
+std::string fileBytes(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+std::string hex(std::uint64_t value) {
+    std::ostringstream s;
+    s << std::hex << std::setw(16) << std::setfill('0') << value;
+    return s.str();
+}
+
+}  // namespace
+
+RunIdentity runIdentity(const SceneSpec& scene, BackendKind backend) {
+    RunIdentity id;
+    id.sceneHash = hex(fnv1a64(fileBytes(scene.sourceFile)));
+    id.runHash = fnv1a64(id.sceneHash + "|" + basisKey(scene) + "|" +
+                         std::string(capabilitiesOf(backend).option));
+    return id;
+}
+
+}  // namespace modeflow

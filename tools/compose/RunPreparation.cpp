@@ -1,0 +1,90 @@
+#include "tools/compose/RunPreparation.h"
+
+#include <string>
+
+#include "engine/core/Error.h"
+#include "engine/core/MacGrid.h"
+#include "engine/dynamics/CachedCoefficients.h"
+#include "precompute/CoefficientChoice.h"
+#include "precompute/Precompute.h"
+#include "precompute/geometry/FluidMask.h"
+#include "tools/compose/InitialState.h"
+#include "tools/compose/SmokeMask.h"
+
+namespace modeflow {
+namespace {
+
+/// Every [[source]] must cover a fluid smoke cell: one that emits into none is a typo in its
+/// position or size, and would silently add nothing.
+void requireSourcesInFluid(const SceneSpec& scene, const RunInputs& run) {
+    const MacGrid grid = MacGrid::fromSpec(run.cache.grid).refined(run.settings.smokeScale);
+    for (std::size_t e = 0; e < run.settings.emitters.size(); ++e) {
+        const SmokeEmitter& emitter = run.settings.emitters[e];
+        bool covers = false;
+        for (int z = 0; z < grid.cells[2] && !covers; ++z)
+            for (int y = 0; y < grid.cells[1] && !covers; ++y)
+                for (int x = 0; x < grid.cells[0] && !covers; ++x) {
+                    if (!run.smokeMask[std::size_t(grid.cellIndex(x, y, z))]) continue;
+                    const Vec3 centre{grid.cellCentre(0, x), grid.cellCentre(1, y),
+                                      grid.dim == 3 ? grid.cellCentre(2, z) : 0.0};
+                    covers = emitter.contains(centre, grid);
+                }
+        if (!covers)
+            throw Error(scene.sourceFile.string() + ": [[source]] #" + std::to_string(e + 1) +
+                        " covers no fluid cell of the smoke grid: it lies outside the domain or is "
+                        "smaller than "
+                        "a smoke cell; move it into Ω or enlarge it");
+    }
+}
+
+void requireFinite(const SceneSpec& scene, const Eigen::VectorXd& state, const char* key) {
+    if (!state.allFinite())
+        throw Error(scene.sourceFile.string() + ": [initial]." + key +
+                    ": the initial state is not finite (too large to represent); lower its energy "
+                    "or strength");
+}
+
+/// Everything after the cache.
+void complete(RunInputs& run, RunParts parts, Progress& progress) {
+    const SceneSpec& scene = run.scene;
+    completeCoefficients(run.cache, scene.basis.coefficients, progress);
+    run.coefficients = takeCoefficientsFromCache(run.cache, scene.basis.coefficients);
+    run.settings = SimulationSettings::fromScene(scene, run.cache);
+    const int modes = run.coefficients->size();
+    run.initialVelocity = initialVelocity(scene, run.cache, modes);
+    requireFinite(scene, run.initialVelocity, "velocity");
+    if (run.settings.mhd) {
+        run.initialMagneticField = initialMagneticField(scene, run.cache, modes);
+        requireFinite(scene, run.initialMagneticField, "magnetic");
+    }
+    if (parts == RunParts::DynamicsAndSmoke) {
+        run.smokeMask = run.cachePath.empty()
+                            ? fluidMask(scene, run.cache, scene.smoke.resolutionScale)
+                            : smokeMaskOf(scene, run.cache, run.cachePath, progress);
+        requireSourcesInFluid(scene, run);
+    }
+}
+
+}  // namespace
+
+RunInputs prepareRun(const SceneSpec& scene, const std::filesystem::path& cacheDir,
+                     Progress& progress, RunParts parts) {
+    RunInputs run;
+    run.scene = scene;
+    CacheOutcome outcome = ensureCache(scene, cacheDir, false, progress);
+    run.cachePath = std::move(outcome.path);
+    run.cache = std::move(outcome.cache);
+    complete(run, parts, progress);
+    return run;
+}
+
+RunInputs prepareRun(const SceneSpec& scene, BasisCache cache, RunParts parts) {
+    RunInputs run;
+    run.scene = scene;
+    run.cache = std::move(cache);
+    Progress quiet = Progress::silent();
+    complete(run, parts, quiet);
+    return run;
+}
+
+}  // namespace modeflow
