@@ -3,7 +3,8 @@
 # e.g. `tools/run-tests.sh -LE slow` or `-R Cli`. Without arguments the Vulkan tests (labels
 # engine and tools) then run a second time with the Khronos validation layer forced on for every
 # context (MODEFLOW_VULKAN_VALIDATION=1; slow tests once only: the slow window tests force the
-# layer themselves, the others are CPU-bound); their tests fail on any validation message.
+# layer themselves, the others are CPU-bound; the shipped scenes once only: their device paths are
+# the kernel and CLI tests'); their tests fail on any validation message.
 # Where clang++ can link libFuzzer, the fuzz targets of tests/fuzz are built too (build-fuzz/, by
 # tools/fuzz.sh) and each runs for 10 s on its seeds (label fuzz), so a target that stops building
 # or starts failing is noticed; the inputs they once failed on are replayed in every build
@@ -39,5 +40,5 @@ if ((fuzz)); then
 fi
 if [ $# -eq 0 ]; then
     echo "== again with the Vulkan validation layer on every context =="
-    MODEFLOW_VULKAN_VALIDATION=1 ctest --output-on-failure -j "$(nproc)" -L "engine|tools" -LE slow
+    MODEFLOW_VULKAN_VALIDATION=1 ctest --output-on-failure -j "$(nproc)" -L "engine|tools" -LE "slow|scenes"
 fi
