@@ -14,7 +14,7 @@ using uint = std::uint32_t;
 #define OBSTACLE_BOX 1u
 #define OBSTACLE_CAPSULE 2u
 
-/* One obstacle at the step's time (std430: four vec4s). */
+/* One obstacle at the step's time (std430: eight vec4s). */
 struct ObstacleRecord {
     float centre[3];
     float radius;      /* ball, capsule */
@@ -22,8 +22,11 @@ struct ObstacleRecord {
     uint shape;
     float axis[3]; /* capsule: centre to one end of its segment */
     float pad0;
-    float velocity[3];
+    float velocity[3]; /* of its centre */
     float pad1;
+    float spin[3]; /* angular velocity, rad/s, world frame */
+    float pad2;
+    float orientation[12]; /* its shape's frame to world: three columns, each xyz and a pad */
 };
 
 struct ObstacleMismatchParams {
@@ -47,7 +50,7 @@ struct ModalCorrectParams {
 };
 
 #ifdef __cplusplus
-static_assert(sizeof(ObstacleRecord) == 64 && sizeof(ObstacleMismatchParams) == 64 &&
+static_assert(sizeof(ObstacleRecord) == 128 && sizeof(ObstacleMismatchParams) == 64 &&
                   sizeof(ModalCorrectParams) == 16,
               "std430 and C++ layouts agree");
 } /* namespace modeflow::shaders */

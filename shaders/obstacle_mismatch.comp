@@ -1,11 +1,12 @@
 #version 450
-// Moving obstacles (seed section 6.3.5; CPU reference engine/simulation/MovingObstacle.cpp): on every
-// velocity DOF face whose centre an obstacle covers, the fluid's face velocity minus the
-// obstacle's velocity along the face normal, written into a face field of the whole grid (other
-// faces keep the 0 they were created with). project_force.comp then projects it on the basis
-// (face-field weights: the exact inverse of the reconstruction) and modal_correct.comp subtracts
-// the result from v. One invocation per DOF, grid-stride; the first covering obstacle decides.
-// Along periodic axes an obstacle covers at the minimum-image offset (it reaches over the seam).
+// Moving obstacles (seed section 6.3.5; CPU reference engine/simulation/MovingObstacle.cpp): on
+// every velocity DOF face whose centre an obstacle covers (in its turned frame), the fluid's face
+// velocity minus the velocity of the obstacle's material there (v + w x r) along the face normal,
+// written into a face field of the whole grid (other faces keep the 0 they were created with).
+// project_force.comp then projects it on the basis (face-field weights: the exact inverse of the
+// reconstruction) and modal_correct.comp subtracts the result from v. One invocation per DOF,
+// grid-stride; the first covering obstacle decides. Along periodic axes an obstacle covers at the
+// minimum-image offset (it reaches over the seam).
 #extension GL_GOOGLE_include_directive : require
 #include "FaceLocation.glsl"
 #include "ObstacleParams.h"
@@ -20,11 +21,24 @@ layout(push_constant) uniform Push { ObstacleMismatchParams params; };
 
 vec3 v3(float a[3]) { return vec3(a[0], a[1], a[2]); }
 
-bool covers(ObstacleRecord o, vec3 point) {
+// From the obstacle's centre to `point`, at the minimum-image offset along periodic axes.
+vec3 offset(ObstacleRecord o, vec3 point) {
     vec3 d = point - v3(o.centre);
     if (params.dim == 2u) d.z = 0.0;
     const vec3 box = vec3(params.cells[0], params.cells[1], params.cells[2]) * v3(params.spacing);
-    d = minimumImage(d, box, params.periodic);
+    return minimumImage(d, box, params.periodic);
+}
+
+// `r`, a world offset from the centre, in the obstacle's own frame (its shape's keys).
+vec3 intoShapeFrame(ObstacleRecord o, vec3 r) {
+    const mat3 orientation = mat3(o.orientation[0], o.orientation[1], o.orientation[2],
+                                  o.orientation[4], o.orientation[5], o.orientation[6],
+                                  o.orientation[8], o.orientation[9], o.orientation[10]);
+    return transpose(orientation) * r;
+}
+
+bool covers(ObstacleRecord o, vec3 r) {
+    vec3 d = intoShapeFrame(o, r);
     if (o.shape == OBSTACLE_BOX) return all(lessThanEqual(abs(d), v3(o.halfSize)));
     if (o.shape == OBSTACLE_CAPSULE) {
         const vec3 axis = v3(o.axis);
@@ -46,11 +60,15 @@ void main() {
         centre[axis] -= 0.5 * params.spacing[axis];
         if (params.dim == 2u) centre.z = 0.0;
         float value = 0.0;
-        for (uint o = 0; o < params.obstacleCount; ++o)
-            if (covers(obstacles[o], centre)) {
-                value = velocity[face] - obstacles[o].velocity[axis];
+        for (uint o = 0; o < params.obstacleCount; ++o) {
+            const vec3 r = offset(obstacles[o], centre);
+            if (covers(obstacles[o], r)) {
+                // The solid's material velocity there: v + ω × r.
+                const vec3 solid = v3(obstacles[o].velocity) + cross(v3(obstacles[o].spin), r);
+                value = velocity[face] - solid[axis];
                 break;
             }
+        }
         mismatch[face] = value;
     }
 }

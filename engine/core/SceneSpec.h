@@ -160,6 +160,14 @@ enum class AdvectionScheme { SemiLagrangian, MacCormack };
 /// velocity on the faces it covers is made to match its own (seed §6.3.5).
 enum class ObstacleShape { Ball, Box, Capsule };
 
+/// An obstacle's orientation at `time`: turned by `degrees` about `axis` (through its centre)
+/// from the pose its shape keys describe.
+struct RotationKey {
+    double time = 0.0;
+    Vec3 axis{0.0, 0.0, 1.0};  ///< unit length
+    double degrees = 0.0;
+};
+
 struct ObstacleSpec {
     ObstacleShape shape = ObstacleShape::Ball;
     double radius = 0.0;           ///< ball, capsule
@@ -168,6 +176,9 @@ struct ObstacleSpec {
     /// Key frames (time, centre), times increasing; the centre moves linearly between them and
     /// holds still before the first and after the last.
     std::vector<std::pair<double, Vec3>> path;
+    /// Key frames of its orientation, times increasing (MovingObstacle interpolates them); empty:
+    /// it never turns.
+    std::vector<RotationKey> rotation;
 };
 
 struct SmokeSpec {

@@ -52,9 +52,14 @@ void ObstacleCorrection::setObstacles(std::span<const MovingObstacle> obstacles,
     std::vector<shaders::ObstacleRecord> records(obstacles.size());
     for (std::size_t o = 0; o < obstacles.size(); ++o) {
         const ObstacleSpec& spec = obstacles[o].spec;
+        const ObstaclePose pose = obstacles[o].poseAt(t);
         shaders::ObstacleRecord& r = records[o];
-        copy3(r.centre, obstacles[o].centreAt(t));
-        copy3(r.velocity, obstacles[o].velocityAt(t));
+        copy3(r.centre, pose.centre);
+        copy3(r.velocity, pose.velocity);
+        copy3(r.spin, pose.angularVelocity);
+        for (int column = 0; column < 3; ++column)
+            for (int row = 0; row < 3; ++row)
+                r.orientation[4 * column + row] = float(pose.orientation(row, column));
         copy3(r.halfSize, spec.halfSize);
         copy3(r.axis, spec.axis);
         r.radius = float(spec.radius);

@@ -10,19 +10,17 @@ std::vector<double> obstacleMismatch(const BasisCache& cache, std::span<const do
                                      std::span<const MovingObstacle> obstacles, double t) {
     const MacGrid grid = MacGrid::fromSpec(cache.grid);
     requireFaceField(grid, faceField.size(), "obstacle mismatch");
-    std::vector<Vec3> centres, velocities;
-    for (const MovingObstacle& o : obstacles) {
-        centres.push_back(o.centreAt(t));
-        velocities.push_back(o.velocityAt(t));
-    }
+    std::vector<ObstaclePose> poses;
+    for (const MovingObstacle& o : obstacles) poses.push_back(o.poseAt(t));
     std::vector<double> mismatch(faceField.size(), 0.0);
     for (const std::int64_t face : cache.faces) {
         const FaceLocation location = locateFace(grid, face);
         const Vec3 centre = faceCentre(grid, location);
         for (std::size_t o = 0; o < obstacles.size(); ++o)
-            if (obstacles[o].covers(centre, centres[o], grid)) {
+            if (obstacles[o].covers(centre, poses[o], grid)) {
                 mismatch[std::size_t(face)] =
-                    faceField[std::size_t(face)] - velocities[o][location.axis];
+                    faceField[std::size_t(face)] -
+                    obstacles[o].velocityOf(centre, poses[o], grid)[location.axis];
                 break;  // the first obstacle covering a face sets its velocity
             }
     }

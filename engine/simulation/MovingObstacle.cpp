@@ -3,7 +3,53 @@
 #include <algorithm>
 #include <cmath>
 
+#include <Eigen/Geometry>
+
 namespace modeflow {
+namespace {
+
+Eigen::Vector3d vec(const Vec3& v) {
+    return {v[0], v[1], v[2]};
+}
+
+Vec3 arr(const Eigen::Vector3d& v) {
+    return {v[0], v[1], v[2]};
+}
+
+double radians(double degrees) {
+    return degrees * M_PI / 180.0;
+}
+
+/// The index of the key frame ending the segment that holds t (keys by increasing `time`):
+/// the first key later than t.
+template <typename Keys, typename TimeOf>
+std::size_t segmentEnd(const Keys& keys, double t, TimeOf timeOf) {
+    return std::size_t(
+        std::upper_bound(keys.begin(), keys.end(), t,
+                         [&](double time, const auto& key) { return time < timeOf(key); }) -
+        keys.begin());
+}
+
+double timeOfRotation(const RotationKey& key) {
+    return key.time;
+}
+
+bool sameAxis(const RotationKey& a, const RotationKey& b) {
+    return (vec(a.axis) - vec(b.axis)).norm() <= 1e-12;
+}
+
+Eigen::Quaterniond quaternionOf(const RotationKey& key) {
+    return Eigen::Quaterniond(Eigen::AngleAxisd(radians(key.degrees), vec(key.axis)));
+}
+
+/// From `from` to `to` the shortest way (what Eigen's slerp follows).
+Eigen::AngleAxisd turnBetween(const RotationKey& from, const RotationKey& to) {
+    Eigen::Quaterniond turn = quaternionOf(from).conjugate() * quaternionOf(to);
+    if (turn.w() < 0.0) turn.coeffs() = -turn.coeffs();
+    return Eigen::AngleAxisd(turn);
+}
+
+}  // namespace
 
 Vec3 MovingObstacle::centreAt(double t) const {
     const auto& path = spec.path;
@@ -29,11 +75,42 @@ Vec3 MovingObstacle::velocityAt(double t) const {
     return {(p1[0] - p0[0]) / (t1 - t0), (p1[1] - p0[1]) / (t1 - t0), (p1[2] - p0[2]) / (t1 - t0)};
 }
 
-bool MovingObstacle::covers(const Vec3& point, const Vec3& centre, const MacGrid& grid) const {
+Eigen::Matrix3d MovingObstacle::orientationAt(double t) const {
+    const auto& keys = spec.rotation;
+    if (keys.empty()) return Eigen::Matrix3d::Identity();
+    if (t <= keys.front().time) return quaternionOf(keys.front()).toRotationMatrix();
+    if (t >= keys.back().time) return quaternionOf(keys.back()).toRotationMatrix();
+    const std::size_t end = segmentEnd(keys, t, timeOfRotation);
+    const RotationKey &k0 = keys[end - 1], &k1 = keys[end];
+    const double s = (t - k0.time) / (k1.time - k0.time);
+    if (sameAxis(k0, k1))
+        return Eigen::AngleAxisd(radians(k0.degrees + s * (k1.degrees - k0.degrees)), vec(k0.axis))
+            .toRotationMatrix();
+    return quaternionOf(k0).slerp(s, quaternionOf(k1)).toRotationMatrix();
+}
+
+Vec3 MovingObstacle::angularVelocityAt(double t) const {
+    const auto& keys = spec.rotation;
+    if (keys.size() < 2 || t < keys.front().time || t >= keys.back().time) return {0.0, 0.0, 0.0};
+    const std::size_t end = segmentEnd(keys, t, timeOfRotation);
+    const RotationKey &k0 = keys[end - 1], &k1 = keys[end];
+    const double span = k1.time - k0.time;
+    if (sameAxis(k0, k1)) return arr(vec(k0.axis) * (radians(k1.degrees - k0.degrees) / span));
+    // The slerp turns about a fixed axis of the start's frame, which the turn leaves in place.
+    const Eigen::AngleAxisd turn = turnBetween(k0, k1);
+    return arr(quaternionOf(k0) * (turn.axis() * (turn.angle() / span)));
+}
+
+ObstaclePose MovingObstacle::poseAt(double t) const {
+    return {centreAt(t), orientationAt(t), velocityAt(t), angularVelocityAt(t)};
+}
+
+bool MovingObstacle::covers(const Vec3& point, const ObstaclePose& pose,
+                            const MacGrid& grid) const {
     const int dim = grid.dim;
     Vec3 d{0.0, 0.0, 0.0};
-    for (int a = 0; a < dim; ++a) d[a] = point[a] - centre[a];
-    d = grid.minimumImage(d);
+    for (int a = 0; a < dim; ++a) d[a] = point[a] - pose.centre[a];
+    d = arr(pose.orientation.transpose() * vec(grid.minimumImage(d)));  // into the shape's frame
     switch (spec.shape) {
         case ObstacleShape::Box:
             for (int a = 0; a < dim; ++a)
@@ -54,6 +131,13 @@ bool MovingObstacle::covers(const Vec3& point, const Vec3& centre, const MacGrid
             break;
     }
     return d[0] * d[0] + d[1] * d[1] + d[2] * d[2] <= spec.radius * spec.radius;
+}
+
+Vec3 MovingObstacle::velocityOf(const Vec3& point, const ObstaclePose& pose,
+                                const MacGrid& grid) const {
+    Vec3 r{0.0, 0.0, 0.0};
+    for (int a = 0; a < grid.dim; ++a) r[a] = point[a] - pose.centre[a];
+    return arr(vec(pose.velocity) + vec(pose.angularVelocity).cross(vec(grid.minimumImage(r))));
 }
 
 }  // namespace modeflow

@@ -1,15 +1,25 @@
 #pragma once
 /// @file MovingObstacle.h
-/// A solid moving through the fluid on a key-framed path (`[[obstacle]]`, seed §6.3.5): where
-/// it is, how fast it moves and what it covers. Both backends make the fluid's normal velocity
-/// on the faces it covers match its own (ObstacleCorrection in engine/reference and
-/// engine/device).
+/// A solid moving through the fluid on key frames (`[[obstacle]]`, seed §6.3.5): where it is,
+/// how it is turned, how fast each of its points moves and what it covers. Both backends make
+/// the fluid's normal velocity on the faces it covers match its own (ObstacleCorrection in
+/// engine/reference and engine/device).
+
+#include <Eigen/Core>
 
 #include "engine/core/MacGrid.h"
 #include "engine/core/RuntimeLimits.h"
 #include "engine/core/SceneSpec.h"
 
 namespace modeflow {
+
+/// An obstacle at one instant.
+struct ObstaclePose {
+    Vec3 centre{0.0, 0.0, 0.0};
+    Eigen::Matrix3d orientation = Eigen::Matrix3d::Identity();  ///< its shape's frame → world
+    Vec3 velocity{0.0, 0.0, 0.0};                               ///< of its centre
+    Vec3 angularVelocity{0.0, 0.0, 0.0};                        ///< rad/s, world frame
+};
 
 struct MovingObstacle {
     ObstacleSpec spec;
@@ -18,10 +28,20 @@ struct MovingObstacle {
     Vec3 centreAt(double t) const;
     /// Velocity at time t (of the key-frame segment holding t; 0 outside the path's span).
     Vec3 velocityAt(double t) const;
-    /// Whether the world point lies in the solid when its centre is `centre` (the grid's axes;
-    /// along its periodic ones at the minimum-image offset, so a solid on the seam covers both
-    /// ends).
-    bool covers(const Vec3& point, const Vec3& centre, const MacGrid& grid) const;
+    /// Orientation at time t: between two rotation key frames about the same axis the angle moves
+    /// linearly (so 0° to 720° turns twice), between others the orientations are slerped; held
+    /// before the first key frame and after the last.
+    Eigen::Matrix3d orientationAt(double t) const;
+    /// Angular velocity at time t (of the rotation segment holding t; 0 outside their span).
+    Vec3 angularVelocityAt(double t) const;
+    ObstaclePose poseAt(double t) const;
+
+    /// Whether the world point lies in the solid at `pose` (the grid's axes; along its periodic
+    /// ones at the minimum-image offset, so a solid on the seam covers both ends).
+    bool covers(const Vec3& point, const ObstaclePose& pose, const MacGrid& grid) const;
+    /// The velocity of the solid's material at a world point: v + ω × r, with r from the centre
+    /// at the minimum-image offset.
+    Vec3 velocityOf(const Vec3& point, const ObstaclePose& pose, const MacGrid& grid) const;
 };
 
 }  // namespace modeflow

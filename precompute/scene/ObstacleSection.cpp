@@ -1,9 +1,48 @@
 /// @file ObstacleSection.cpp
-/// `[[obstacle]]`: a ball, box or capsule moving along key frames.
+/// `[[obstacle]]`: a ball, box or capsule moving and turning along key frames.
+
+#include <cmath>
 
 #include "precompute/scene/SceneSections.h"
 
 namespace modeflow::scene {
+namespace {
+
+/// `rotation = [[t, ax, ay, az, degrees], ...]`: times increasing, axes of non-zero length
+/// (normalized here), about z alone in 2D.
+std::vector<RotationKey> readRotation(const TomlReader& reader, const Section& s) {
+    std::vector<RotationKey> keys;
+    const toml::node* node = s.table.get("rotation");
+    if (node == nullptr) return keys;
+    const std::string where = s.name + ".rotation";
+    const toml::array* frames = node->as_array();
+    if (frames == nullptr || frames->empty())
+        reader.fail(where, "expected an array of key frames [t, ax, ay, az, degrees]", node);
+    for (const toml::node& entry : *frames) {
+        const toml::array* frame = entry.as_array();
+        if (frame == nullptr || frame->size() != 5)
+            reader.fail(where, "each key frame is 5 numbers [t, ax, ay, az, degrees]", &entry);
+        RotationKey key;
+        key.time = reader.numberValue((*frame)[0], where + " time");
+        double length2 = 0.0;
+        for (int a = 0; a < 3; ++a) {
+            key.axis[a] = reader.numberValue((*frame)[std::size_t(a + 1)], where + " axis");
+            length2 += key.axis[a] * key.axis[a];
+        }
+        key.degrees = reader.numberValue((*frame)[4], where + " degrees");
+        if (!(length2 > 0.0) || !std::isfinite(length2))
+            reader.fail(where, "the axis [ax, ay, az] must have a non-zero, finite length", &entry);
+        for (double& component : key.axis) component /= std::sqrt(length2);
+        if (reader.dimension() == 2 && (key.axis[0] != 0.0 || key.axis[1] != 0.0))
+            reader.fail(where, "a 2D obstacle turns about z: the axis must be [0, 0, ±1]", &entry);
+        if (!keys.empty() && !(key.time > keys.back().time))
+            reader.fail(where, "key frame times must increase", &entry);
+        keys.push_back(key);
+    }
+    return keys;
+}
+
+}  // namespace
 
 ObstacleSpec readObstacle(const TomlReader& reader, const Section& s) {
     reader.checkKeys(s, kObstacleKeys);
@@ -55,6 +94,7 @@ ObstacleSpec readObstacle(const TomlReader& reader, const Section& s) {
             reader.fail(where, "key frame times must increase", &entry);
         obstacle.path.emplace_back(t, position);
     }
+    obstacle.rotation = readRotation(reader, s);
     return obstacle;
 }
 

@@ -1,8 +1,10 @@
 /// @file MovingObstacleTest.cpp
-/// Moving obstacles' CPU reference (engine/reference/MovingObstacle): key-framed paths, shapes, and
-/// the seed's §6.3.5 correction, which must shrink the normal-velocity mismatch on covered faces.
+/// Moving obstacles' CPU reference (engine/simulation/MovingObstacle): key-framed paths and
+/// rotations, shapes, and the seed's §6.3.5 correction, which must shrink the normal-velocity
+/// mismatch on covered faces and make still fluid move with the solid, turning with a paddle.
 
 #include <cmath>
+#include <iostream>
 
 #include <gtest/gtest.h>
 
@@ -20,6 +22,13 @@ MacGrid walledGrid(int dim) {
     MacGrid grid;
     grid.dim = dim;
     return grid;
+}
+
+/// A pose at `centre`, not turned, still.
+ObstaclePose at(const Vec3& centre) {
+    ObstaclePose pose;
+    pose.centre = centre;
+    return pose;
 }
 
 MovingObstacle ball(double radius, std::vector<std::pair<double, Vec3>> path) {
@@ -58,18 +67,20 @@ TEST(MovingObstacle, ShapesCoverWhatTheySay) {
     box.halfSize = {0.2, 0.1, 0.3};
     box.path = {{0.0, {0.0, 0.0, 0.0}}};
     const MovingObstacle b{box};
-    EXPECT_TRUE(b.covers({0.19, -0.09, 0.0}, {0.0, 0.0, 0.0}, walledGrid(2)));
-    EXPECT_FALSE(b.covers({0.21, 0.0, 0.0}, {0.0, 0.0, 0.0}, walledGrid(2)));
-    EXPECT_FALSE(b.covers({0.0, 0.0, 0.31}, {0.0, 0.0, 0.0}, walledGrid(3)));
+    EXPECT_TRUE(b.covers({0.19, -0.09, 0.0}, at({0.0, 0.0, 0.0}), walledGrid(2)));
+    EXPECT_FALSE(b.covers({0.21, 0.0, 0.0}, at({0.0, 0.0, 0.0}), walledGrid(2)));
+    EXPECT_FALSE(b.covers({0.0, 0.0, 0.31}, at({0.0, 0.0, 0.0}), walledGrid(3)));
     ObstacleSpec capsule;
     capsule.shape = ObstacleShape::Capsule;
     capsule.radius = 0.1;
     capsule.axis = {0.5, 0.0, 0.0};
     capsule.path = box.path;
     const MovingObstacle c{capsule};
-    EXPECT_TRUE(c.covers({0.55, 0.05, 0.0}, {0.0, 0.0, 0.0}, walledGrid(2)));  // near the end cap
-    EXPECT_FALSE(c.covers({0.65, 0.0, 0.0}, {0.0, 0.0, 0.0}, walledGrid(2)));  // past it
-    EXPECT_FALSE(c.covers({0.0, 0.11, 0.0}, {0.0, 0.0, 0.0}, walledGrid(2)));  // beside the segment
+    EXPECT_TRUE(
+        c.covers({0.55, 0.05, 0.0}, at({0.0, 0.0, 0.0}), walledGrid(2)));  // near the end cap
+    EXPECT_FALSE(c.covers({0.65, 0.0, 0.0}, at({0.0, 0.0, 0.0}), walledGrid(2)));  // past it
+    EXPECT_FALSE(
+        c.covers({0.0, 0.11, 0.0}, at({0.0, 0.0, 0.0}), walledGrid(2)));  // beside the segment
 }
 
 TEST(MovingObstacle, CoversAcrossAPeriodicSeamAtTheMinimumImage) {
@@ -82,13 +93,14 @@ TEST(MovingObstacle, CoversAcrossAPeriodicSeamAtTheMinimumImage) {
     ball.radius = 0.2;
     ball.path = {{0.0, {1.95, 0.5, 0.0}}};
     const MovingObstacle o{ball};
-    EXPECT_FALSE(o.covers({0.1, 0.5, 0.0}, {1.95, 0.5, 0.0}, grid)) << "walled";
+    EXPECT_FALSE(o.covers({0.1, 0.5, 0.0}, at({1.95, 0.5, 0.0}), grid)) << "walled";
     grid.periodic[0] = true;
-    EXPECT_TRUE(o.covers({0.1, 0.5, 0.0}, {1.95, 0.5, 0.0}, grid))
+    EXPECT_TRUE(o.covers({0.1, 0.5, 0.0}, at({1.95, 0.5, 0.0}), grid))
         << "periodic: 0.15 away across the seam";
-    EXPECT_FALSE(o.covers({0.3, 0.5, 0.0}, {1.95, 0.5, 0.0}, grid))
+    EXPECT_FALSE(o.covers({0.3, 0.5, 0.0}, at({1.95, 0.5, 0.0}), grid))
         << "periodic: 0.35 away across the seam";
-    EXPECT_TRUE(o.covers({1.8, 0.5, 0.0}, {1.95, 0.5, 0.0}, grid)) << "periodic: on its own side";
+    EXPECT_TRUE(o.covers({1.8, 0.5, 0.0}, at({1.95, 0.5, 0.0}), grid))
+        << "periodic: on its own side";
 }
 
 TEST(MovingObstacle, AnObstacleCrossingAPeriodicSeamDragsTheFluidAtBothEnds) {
@@ -150,6 +162,89 @@ TEST(MovingObstacle, AMovingObstacleDragsStillFluidAlong) {
     const double centreX = u[std::size_t(grid.faceIndex(0, 16, 16, 0))];
     std::cout << "fluid x velocity at the moving ball's centre: " << centreX << " (ball: 0.6)\n";
     EXPECT_GT(centreX, 0.1);
+}
+
+/// A thin box (a paddle) still at the origin, turning about z at `degreesPerSecond`.
+MovingObstacle paddle(double degreesPerSecond) {
+    ObstacleSpec spec;
+    spec.shape = ObstacleShape::Box;
+    spec.halfSize = {0.5, 0.08, 0.0};
+    spec.path = {{0.0, {0.0, 0.0, 0.0}}};
+    spec.rotation = {{0.0, {0.0, 0.0, 1.0}, 0.0}, {10.0, {0.0, 0.0, 1.0}, 10.0 * degreesPerSecond}};
+    return {spec};
+}
+
+TEST(MovingObstacle, TurnsAlongItsRotationKeyFrames) {
+    const MovingObstacle fan = paddle(360.0);  // one turn a second for 10 s
+    const Eigen::Vector3d x = Eigen::Vector3d::UnitX();
+    EXPECT_TRUE((fan.orientationAt(-1.0) * x).isApprox(x)) << "held before the first key frame";
+    EXPECT_TRUE((fan.orientationAt(0.5) * x).isApprox(-x, 1e-12)) << "half a turn";
+    EXPECT_TRUE((fan.orientationAt(0.25) * x).isApprox(Eigen::Vector3d::UnitY(), 1e-12));
+    EXPECT_TRUE((fan.orientationAt(7.0) * x).isApprox(x, 1e-12))
+        << "whole turns, not the short way";
+    EXPECT_NEAR(fan.angularVelocityAt(3.3)[2], 2.0 * M_PI, 1e-12);
+    EXPECT_EQ(fan.angularVelocityAt(10.0), (Vec3{0.0, 0.0, 0.0})) << "still after the last";
+    // Between key frames about different axes: the slerp, about the axis of the turn between.
+    ObstacleSpec spec = fan.spec;
+    spec.rotation = {{0.0, {0.0, 0.0, 1.0}, 0.0}, {1.0, {1.0, 0.0, 0.0}, 90.0}};
+    const MovingObstacle tilt{spec};
+    const Eigen::Vector3d y = tilt.orientationAt(0.5) * Eigen::Vector3d::UnitY();
+    EXPECT_TRUE(y.isApprox(Eigen::Vector3d(0.0, std::sqrt(0.5), std::sqrt(0.5)), 1e-12)) << y;
+    const Vec3 w = tilt.angularVelocityAt(0.5);
+    EXPECT_NEAR(w[0], 0.5 * M_PI, 1e-12);
+    EXPECT_NEAR(std::hypot(w[1], w[2]), 0.0, 1e-12);
+}
+
+TEST(MovingObstacle, ATurnedBoxCoversWhatItsOwnFrameHolds) {
+    const MovingObstacle fan = paddle(360.0);
+    const MacGrid grid = walledGrid(2);
+    ObstaclePose pose = fan.poseAt(0.25);  // a quarter turn: the paddle lies along y
+    EXPECT_TRUE(fan.covers({0.02, 0.45, 0.0}, pose, grid));
+    EXPECT_FALSE(fan.covers({0.45, 0.02, 0.0}, pose, grid));
+    pose = fan.poseAt(0.0);
+    EXPECT_TRUE(fan.covers({0.45, 0.02, 0.0}, pose, grid));
+    EXPECT_FALSE(fan.covers({0.02, 0.45, 0.0}, pose, grid));
+    // Its material moves with the spin: v + ω × r, 2π · 0.4 along y at r = (0.4, 0).
+    const Vec3 u = fan.velocityOf({0.4, 0.0, 0.0}, pose, grid);
+    EXPECT_NEAR(u[0], 0.0, 1e-12);
+    EXPECT_NEAR(u[1], 2.0 * M_PI * 0.4, 1e-12);
+}
+
+/// The fluid's angular momentum about the z axis through the origin, Σ area · (x u_y − y u_x)
+/// over the DOF faces.
+double angularMomentum(const BasisCache& cache, const std::vector<double>& u) {
+    const MacGrid grid = MacGrid::fromSpec(cache.grid);
+    double sum = 0.0;
+    for (const std::int64_t face : cache.faces) {
+        const FaceLocation location = locateFace(grid, face);
+        const Vec3 x = faceCentre(grid, location);
+        const double arm = location.axis == 0 ? -x[1] : x[0];
+        sum += grid.faceArea(location.axis) * arm * u[std::size_t(face)];
+    }
+    return sum;
+}
+
+TEST(MovingObstacle, ATurningPaddleTurnsStillFluidItsWay) {
+    // Still fluid in the disk: the correction makes it move with the paddle, so its angular
+    // momentum takes the paddle's sign, and grows while the paddle keeps turning (the correction
+    // applied again each step, the fluid keeping what it was given).
+    const BasisCache& cache = testing::disk2d();
+    for (const double speed : {90.0, -90.0}) {
+        const std::vector<MovingObstacle> obstacles{paddle(speed)};
+        Eigen::VectorXd v = Eigen::VectorXd::Zero(cache.velocity.modes.cols());
+        double previous = 0.0;
+        for (int step = 0; step < 4; ++step) {
+            const double t = 0.1 * step;
+            v -= reference::obstacleCorrection(cache, reference::reconstructFaceField(cache, v),
+                                               obstacles, t);
+            const double l = angularMomentum(cache, reference::reconstructFaceField(cache, v));
+            std::cout << "paddle at " << speed << "°/s, step " << step
+                      << ": fluid angular momentum " << l << "\n";
+            EXPECT_GT(l * speed, 0.0) << "the fluid turns the paddle's way";
+            EXPECT_GT(std::abs(l), std::abs(previous)) << "and more while it keeps turning";
+            previous = l;
+        }
+    }
 }
 
 }  // namespace

@@ -142,6 +142,20 @@ const std::vector<Refusal> kRefusals = {
      kObstacleBall + "radius = 0.1\nhalf_size = [0.1, 0.1]\npath = [[0.0, 0.0, 0.0]]\n",
      {"half_size: not used by a ball"}},
     {"ObstacleCone", k2d, {}, "[[obstacle]]\nshape = \"cone\"\n", {"cone"}},
+    {"RotationKeyFramesGoBack", k2d, {},
+     kObstacleBall + "radius = 0.1\npath = [[0, 0, 0]]\nrotation = [[1, 0, 0, 1, 0], [0.5, 0, 0, 1, 9]]\n",
+     {"[[obstacle]] #1.rotation", "key frame times must increase"}},
+    {"RotationKeyFrameOfFourNumbers", k2d, {},
+     kObstacleBall + "radius = 0.1\npath = [[0, 0, 0]]\nrotation = [[0, 0, 1, 90]]\n",
+     {"[[obstacle]] #1.rotation", "[t, ax, ay, az, degrees]"}},
+    {"RotationAboutNoAxis", k2d, {},
+     kObstacleBall + "radius = 0.1\npath = [[0, 0, 0]]\nrotation = [[0, 0, 0, 0, 90]]\n",
+     {"[[obstacle]] #1.rotation", "non-zero, finite length"}},
+    {"RotationOutOfThePlane", k2d, {},
+     kObstacleBall + "radius = 0.1\npath = [[0, 0, 0]]\nrotation = [[0, 1, 0, 0, 90]]\n",
+     {"[[obstacle]] #1.rotation", "a 2D obstacle turns about z"}},
+    {"RotationNotAnArray", k2d, {}, kObstacleBall + "radius = 0.1\npath = [[0, 0, 0]]\nrotation = 90\n",
+     {"[[obstacle]] #1.rotation", "expected an array of key frames"}},
     // Unknown names, wrong types.
     {"BadModesString", k2d, {basis("modes = \"5-3\"")}, "",
      {"scenes/bad.toml: [basis].modes: "}, true},
@@ -567,6 +581,25 @@ path = [[0.0, 0.0, -0.5]]
     EXPECT_EQ(scene.obstacles[0].path[2].first, 2.0);
     EXPECT_EQ(scene.obstacles[0].path[2].second, (Vec3{0.5, 0.5, 0.0}));
     EXPECT_EQ(scene.obstacles[1].halfSize, (Vec3{0.1, 0.2, 0.0}));
+    EXPECT_TRUE(scene.obstacles[0].rotation.empty()) << "without rotation keys it never turns";
+}
+
+TEST_F(SceneLoaderTest, ObstaclesTurnAlongRotationKeyFrames) {
+    const SceneSpec scene = parseScene(sceneFixture(k2d) + R"(
+[[obstacle]]
+shape = "box"
+half_size = [0.3, 0.05]
+path = [[0.0, 0.0, 0.0]]
+rotation = [[0.0, 0, 0, 2, 0], [1.0, 0, 0, -1, 720]]
+)",
+                                       "turning.toml");
+    ASSERT_EQ(scene.obstacles.size(), 1u);
+    const std::vector<RotationKey>& keys = scene.obstacles[0].rotation;
+    ASSERT_EQ(keys.size(), 2u);
+    EXPECT_EQ(keys[0].time, 0.0);
+    EXPECT_EQ(keys[0].axis, (Vec3{0.0, 0.0, 1.0})) << "axes are normalized";
+    EXPECT_EQ(keys[1].axis, (Vec3{0.0, 0.0, -1.0}));
+    EXPECT_EQ(keys[1].degrees, 720.0);
 }
 
 TEST_F(SceneLoaderTest, MinimalSceneGetsDefaults) {
@@ -777,6 +810,15 @@ TEST_F(SceneLoaderTest, NonFiniteNumbersAreRefusedForEveryFloatKey) {
         {obstacle + "shape = \"ball\"\nradius = 0.1\npath = [[X, 0, 0]]\n",
          "[[obstacle]] #1.path time"},
         {obstacle + "shape = \"ball\"\nradius = 0.1\npath = [[0, 0, X]]\n", "[[obstacle]] #1.path"},
+        {obstacle +
+             "shape = \"ball\"\nradius = 0.1\npath = [[0, 0, 0]]\nrotation = [[X, 0, 0, 1, 0]]\n",
+         "[[obstacle]] #1.rotation time"},
+        {obstacle +
+             "shape = \"ball\"\nradius = 0.1\npath = [[0, 0, 0]]\nrotation = [[0, 0, X, 1, 0]]\n",
+         "[[obstacle]] #1.rotation axis"},
+        {obstacle +
+             "shape = \"ball\"\nradius = 0.1\npath = [[0, 0, 0]]\nrotation = [[0, 0, 0, 1, X]]\n",
+         "[[obstacle]] #1.rotation degrees"},
         {two + "[smoke]\nbuoyancy = X\n", "[smoke].buoyancy"},
     };
     for (const auto& [text, key] : cases) {
