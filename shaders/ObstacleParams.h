@@ -13,20 +13,27 @@ using uint = std::uint32_t;
 #define OBSTACLE_BALL 0u
 #define OBSTACLE_BOX 1u
 #define OBSTACLE_CAPSULE 2u
+#define OBSTACLE_MESH 3u
 
-/* One obstacle at the step's time (std430: eight vec4s). */
+/* One obstacle at the step's time (std430: ten vec4s). */
 struct ObstacleRecord {
     float centre[3];
     float radius;      /* ball, capsule */
     float halfSize[3]; /* box */
     uint shape;
-    float axis[3]; /* capsule: centre to one end of its segment */
-    float pad0;
+    float axis[3];     /* capsule: centre to one end of its segment */
+    float scale;       /* mesh: world length per mesh unit */
     float velocity[3]; /* of its centre */
     float pad1;
     float spin[3]; /* angular velocity, rad/s, world frame */
     float pad2;
     float orientation[12]; /* its shape's frame to world: three columns, each xyz and a pad */
+    /* mesh: its level set (engine/simulation/SolidLevelSet.h), in the lattice buffer from
+       latticeStart, samples x fastest */
+    float latticeOrigin[3];
+    float latticeSpacing;
+    uint latticeSamples[3];
+    uint latticeStart;
 };
 
 struct ObstacleMismatchParams {
@@ -50,7 +57,7 @@ struct ModalCorrectParams {
 };
 
 #ifdef __cplusplus
-static_assert(sizeof(ObstacleRecord) == 128 && sizeof(ObstacleMismatchParams) == 64 &&
+static_assert(sizeof(ObstacleRecord) == 160 && sizeof(ObstacleMismatchParams) == 64 &&
                   sizeof(ModalCorrectParams) == 16,
               "std430 and C++ layouts agree");
 } /* namespace modeflow::shaders */

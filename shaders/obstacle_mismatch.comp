@@ -17,6 +17,7 @@ layout(std430, set = 0, binding = 0) readonly buffer Faces { uint faces[]; };
 layout(std430, set = 0, binding = 1) readonly buffer Velocity { float velocity[]; };
 layout(std430, set = 0, binding = 2) readonly buffer Obstacles { ObstacleRecord obstacles[]; };
 layout(std430, set = 0, binding = 3) writeonly buffer Mismatch { float mismatch[]; };
+layout(std430, set = 0, binding = 4) readonly buffer Lattices { float depth[]; };
 layout(push_constant) uniform Push { ObstacleMismatchParams params; };
 
 vec3 v3(float a[3]) { return vec3(a[0], a[1], a[2]); }
@@ -37,8 +38,31 @@ vec3 intoShapeFrame(ObstacleRecord o, vec3 r) {
     return transpose(orientation) * r;
 }
 
+float latticeDepth(ObstacleRecord o, uvec3 i) {
+    return depth[o.latticeStart + i.x + o.latticeSamples[0] * (i.y + o.latticeSamples[1] * i.z)];
+}
+
+// A mesh's depth (positive inside) at `p` in its own frame: trilinear between the lattice's
+// samples, -spacing outside the lattice (SolidLevelSet::depthAt).
+float meshDepth(ObstacleRecord o, vec3 p) {
+    const uvec3 samples = uvec3(o.latticeSamples[0], o.latticeSamples[1], o.latticeSamples[2]);
+    const vec3 x = (p - v3(o.latticeOrigin)) / o.latticeSpacing;
+    if (any(lessThan(x, vec3(0.0))) || any(greaterThan(x, vec3(samples - uvec3(1)))))
+        return -o.latticeSpacing;
+    const uvec3 i = min(uvec3(x), samples - uvec3(2));
+    const vec3 f = x - vec3(i);
+    float sum = 0.0;
+    for (uint corner = 0u; corner < 8u; ++corner) {
+        const uvec3 d = uvec3(corner & 1u, (corner >> 1u) & 1u, (corner >> 2u) & 1u);
+        const vec3 w = mix(vec3(1.0) - f, f, vec3(d));
+        sum += w.x * w.y * w.z * latticeDepth(o, i + d);
+    }
+    return sum;
+}
+
 bool covers(ObstacleRecord o, vec3 r) {
     vec3 d = intoShapeFrame(o, r);
+    if (o.shape == OBSTACLE_MESH) return meshDepth(o, d / o.scale) >= 0.0;
     if (o.shape == OBSTACLE_BOX) return all(lessThanEqual(abs(d), v3(o.halfSize)));
     if (o.shape == OBSTACLE_CAPSULE) {
         const vec3 axis = v3(o.axis);

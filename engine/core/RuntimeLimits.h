@@ -1,14 +1,20 @@
 #pragma once
 /// @file RuntimeLimits.h
-/// How many moving parts one simulation takes: the device kernels hold them in fixed buffers.
-/// The scene loader refuses more at load, the runtime again when it is handed them.
+/// How many moving parts one simulation takes. The scene loader refuses more at load, the
+/// runtime again when it is handed them.
 
 namespace modeflow {
 
-/// The most emitters one device step takes (the kernels' emitter buffer).
-inline constexpr int maxSmokeEmitters = 8;
+/// The most emitters one scene takes. The device holds emitters as per-cell rates, so the
+/// limit is one of scene sanity, not of a buffer.
+inline constexpr int maxSmokeEmitters = 64;
 
-/// The most obstacles one scene takes (the device kernel's obstacle buffer).
-inline constexpr int maxObstacles = 8;
+/// The most obstacles one scene takes (each step every DOF face's centre is tested against every
+/// obstacle in turn).
+inline constexpr int maxObstacles = 64;
+
+/// The most regions the velocity correction holds at once: every obstacle and every source
+/// that drives the air (`velocity`).
+inline constexpr int maxVelocityRegions = maxObstacles + maxSmokeEmitters;
 
 }  // namespace modeflow

@@ -53,7 +53,8 @@ inline constexpr std::pair<std::string_view, InitialMagnetic> kInitialMagnetics[
 inline constexpr std::pair<std::string_view, ObstacleShape> kObstacleShapes[] = {
     {"ball", ObstacleShape::Ball},
     {"box", ObstacleShape::Box},
-    {"capsule", ObstacleShape::Capsule}};
+    {"capsule", ObstacleShape::Capsule},
+    {"mesh", ObstacleShape::Mesh}};
 inline constexpr std::pair<std::string_view, AdvectionScheme> kAdvectionSchemes[] = {
     {"maccormack", AdvectionScheme::MacCormack},
     {"semi-lagrangian", AdvectionScheme::SemiLagrangian}};

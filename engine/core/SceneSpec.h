@@ -150,6 +150,9 @@ struct SourceSpec {
     double temperature = 0.0;  ///< injected per unit time
     double start = 0.0;        ///< emits while start ≤ t < end (simulated seconds)
     double end = std::numeric_limits<double>::infinity();
+    /// The emitted air's velocity (`velocity`): while the source emits, the fluid inside it is
+    /// driven to move at it (a jet, a chimney's draught); none: the source adds smoke alone.
+    std::optional<Vec3> velocity = std::nullopt;
 };
 
 /// How smoke is carried (engine/README.md): RK2 semi-Lagrangian, or MacCormack with clamping (less
@@ -158,7 +161,7 @@ enum class AdvectionScheme { SemiLagrangian, MacCormack };
 
 /// A solid moving through the fluid on a key-framed path (`[[obstacle]]`); the fluid's normal
 /// velocity on the faces it covers is made to match its own (seed §6.3.5).
-enum class ObstacleShape { Ball, Box, Capsule };
+enum class ObstacleShape { Ball, Box, Capsule, Mesh };
 
 /// An obstacle's orientation at `time`: turned by `degrees` about `axis` (through its centre)
 /// from the pose its shape keys describe.
@@ -173,6 +176,10 @@ struct ObstacleSpec {
     double radius = 0.0;           ///< ball, capsule
     Vec3 halfSize{0.0, 0.0, 0.0};  ///< box: half its extent per axis
     Vec3 axis{0.0, 0.0, 0.0};      ///< capsule: from its centre to one end of its segment
+    /// mesh: a closed OBJ surface, resolved against the scene's folder; its origin is the
+    /// obstacle's centre, its coordinates times `scale` are world lengths.
+    std::filesystem::path meshFile;
+    double scale = 1.0;  ///< mesh
     /// Key frames (time, centre), times increasing; the centre moves linearly between them and
     /// holds still before the first and after the last.
     std::vector<std::pair<double, Vec3>> path;

@@ -1,8 +1,10 @@
 #include "engine/device/ObstacleCorrection.h"
 
+#include <algorithm>
 #include <array>
 // The generated headers use uint32_t without including <cstdint>.
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -36,19 +38,23 @@ ObstacleCorrection::ObstacleCorrection(const vulkan::VulkanContext& context,
       mDofCount(std::uint32_t(cache.faces.size())),
       mModeCount(std::uint32_t(cache.velocity.eigenvalues.size())),
       mFaces(uploadDofFaces(context, cache)),
-      mObstacles(context, maxObstacles * sizeof(shaders::ObstacleRecord), "obstacles"),
+      mObstacles(context, maxVelocityRegions * sizeof(shaders::ObstacleRecord), "obstacles"),
       mMismatch(zeros(context, std::size_t(mGrid.faceTotal()), "obstacle mismatch")),
       mCorrection(zeros(context, paddedSize(int(mModeCount)), "obstacle correction")),
+      mLattices(zeros(context, 1, "obstacle lattices")),
       mProjection(context, cache, FaceQuantity::FaceField),
-      mMismatchKernel(context, {"obstacle_mismatch", obstacle_mismatch_spv, 4,
+      mMismatchKernel(context, {"obstacle_mismatch", obstacle_mismatch_spv, 5,
                                 sizeof(shaders::ObstacleMismatchParams), 64}),
       mCorrectKernel(context, {"modal_correct", modal_correct_spv, 2,
                                sizeof(shaders::ModalCorrectParams), 64}) {}
 
 void ObstacleCorrection::setObstacles(std::span<const MovingObstacle> obstacles, double t) {
-    if (obstacles.size() > std::size_t(maxObstacles))
-        throw Error(std::to_string(obstacles.size()) + " obstacles; the runtime takes at most " +
-                    std::to_string(maxObstacles));
+    if (obstacles.size() > std::size_t(maxVelocityRegions))
+        throw Error(std::to_string(obstacles.size()) +
+                    " obstacles and driving sources; the runtime takes at most " +
+                    std::to_string(maxVelocityRegions));
+    requireLevelSets(obstacles);
+    const std::vector<std::uint32_t> latticeStarts = uploadLattices(obstacles);
     std::vector<shaders::ObstacleRecord> records(obstacles.size());
     for (std::size_t o = 0; o < obstacles.size(); ++o) {
         const ObstacleSpec& spec = obstacles[o].spec;
@@ -63,12 +69,46 @@ void ObstacleCorrection::setObstacles(std::span<const MovingObstacle> obstacles,
         copy3(r.halfSize, spec.halfSize);
         copy3(r.axis, spec.axis);
         r.radius = float(spec.radius);
+        r.scale = float(spec.scale);
         r.shape = spec.shape == ObstacleShape::Box       ? OBSTACLE_BOX
                   : spec.shape == ObstacleShape::Capsule ? OBSTACLE_CAPSULE
+                  : spec.shape == ObstacleShape::Mesh    ? OBSTACLE_MESH
                                                          : OBSTACLE_BALL;
+        if (const SolidLevelSet* lattice = obstacles[o].levelSet.get()) {
+            copy3(r.latticeOrigin, lattice->origin);
+            r.latticeSpacing = float(lattice->spacing);
+            for (int a = 0; a < 3; ++a) r.latticeSamples[a] = std::uint32_t(lattice->samples[a]);
+            r.latticeStart = latticeStarts[o];
+        }
     }
     if (!records.empty()) mObstacles.upload<shaders::ObstacleRecord>(records);
     mObstacleCount = std::uint32_t(records.size());
+}
+
+std::vector<std::uint32_t> ObstacleCorrection::uploadLattices(
+    std::span<const MovingObstacle> obstacles) {
+    std::vector<const SolidLevelSet*> sets;
+    std::vector<std::uint32_t> starts;
+    std::size_t total = 0;
+    for (const MovingObstacle& o : obstacles) {
+        sets.push_back(o.levelSet.get());
+        starts.push_back(std::uint32_t(total));
+        if (o.levelSet) total += o.levelSet->depth.size();
+    }
+    if (total > std::size_t(std::numeric_limits<std::uint32_t>::max()))
+        throw Error("the mesh obstacles' level sets hold " + std::to_string(total) +
+                    " samples; the device takes at most " +
+                    std::to_string(std::numeric_limits<std::uint32_t>::max()));
+    if (sets != mUploadedLattices) {
+        std::vector<float> depth;
+        depth.reserve(std::max<std::size_t>(total, 1));
+        for (const SolidLevelSet* set : sets)
+            if (set) depth.insert(depth.end(), set->depth.begin(), set->depth.end());
+        if (depth.empty()) depth.push_back(0.0f);
+        mLattices = vulkan::DeviceBuffer::fromValues<float>(mContext, depth, "obstacle lattices");
+        mUploadedLattices = std::move(sets);
+    }
+    return starts;
 }
 
 template <typename Project>
@@ -90,8 +130,8 @@ void ObstacleCorrection::recordWith(vulkan::CommandSequence& sequence,
         params.origin[a] = float(mGrid.origin[a]);
         params.spacing[a] = float(mGrid.spacing[a]);
     }
-    const std::array<const vulkan::DeviceBuffer*, 4> mismatchBuffers{&mFaces, &faceField,
-                                                                     &mObstacles, &mMismatch};
+    const std::array<const vulkan::DeviceBuffer*, 5> mismatchBuffers{
+        &mFaces, &faceField, &mObstacles, &mMismatch, &mLattices};
     sequence.dispatch(mMismatchKernel, mismatchBuffers, params, groupsFor(mContext, mDofCount, 64));
     project();
     const std::array<const vulkan::DeviceBuffer*, 2> correctBuffers{&v, &mCorrection};

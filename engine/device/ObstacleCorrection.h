@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <span>
+#include <vector>
 
 #include "engine/core/MacGrid.h"
 #include "engine/device/ForceProjection.h"
@@ -30,8 +31,10 @@ public:
     /// @throw modeflow::Error if a creation call fails.
     ObstacleCorrection(const vulkan::VulkanContext& context, const BasisCache& cache);
 
-    /// The obstacles where they are at time t. Between submissions only.
-    /// @throw modeflow::Error for more than maxObstacles.
+    /// The obstacles where they are at time t. Between submissions only. Mesh obstacles' level
+    /// sets are uploaded when they differ from the last call's.
+    /// @throw modeflow::Error for more than maxVelocityRegions, or a mesh obstacle without its
+    ///        level set.
     void setObstacles(std::span<const MovingObstacle> obstacles, double t);
 
     /// Records v −= Ψᵀ⋆(mismatch of `faceField`) with the basis in `modes`; nothing without
@@ -43,6 +46,9 @@ public:
                 const vulkan::DeviceBuffer& faceField, const vulkan::DeviceBuffer& v) const;
 
 private:
+    /// Uploads the obstacles' lattices unless they are those already there; where each
+    /// obstacle's starts in mLattices.
+    std::vector<std::uint32_t> uploadLattices(std::span<const MovingObstacle> obstacles);
     /// The mismatch, then `project` (mismatch → correction), then v −= correction.
     template <typename Project>
     void recordWith(vulkan::CommandSequence& sequence, const vulkan::DeviceBuffer& faceField,
@@ -54,6 +60,9 @@ private:
     std::uint32_t mModeCount = 0;
     std::uint32_t mObstacleCount = 0;
     vulkan::DeviceBuffer mFaces, mObstacles, mMismatch, mCorrection;
+    /// Every mesh obstacle's lattice, one after the other, and which level sets it holds.
+    vulkan::DeviceBuffer mLattices;
+    std::vector<const SolidLevelSet*> mUploadedLattices;
     ForceProjectionKernel mProjection;
     vulkan::ComputeKernel mMismatchKernel, mCorrectKernel;
 };

@@ -150,9 +150,10 @@ void Simulation::recordStep(std::vector<std::size_t>& boundaries) {
     boundaries.push_back(mSequence.dispatchCount());
     recordReconstruction();
     boundaries.push_back(mSequence.dispatchCount());
-    if (!mSettings.obstacles.empty()) {
+    const std::vector<MovingObstacle> regions = mSettings.velocityRegions(mTime);
+    if (!regions.empty()) {
         // Where the obstacles are at the end of the step, which the advection then sees.
-        mObstacles.setObstacles(mSettings.obstacles, mTime + dt);
+        mObstacles.setObstacles(regions, mTime + dt);
         if (mSeparable)
             mObstacles.record(mSequence, *mSeparable, mFaceVelocity, mStepper.stateBuffer());
         else

@@ -10,6 +10,7 @@ std::vector<double> obstacleMismatch(const BasisCache& cache, std::span<const do
                                      std::span<const MovingObstacle> obstacles, double t) {
     const MacGrid grid = MacGrid::fromSpec(cache.grid);
     requireFaceField(grid, faceField.size(), "obstacle mismatch");
+    requireLevelSets(obstacles);
     std::vector<ObstaclePose> poses;
     for (const MovingObstacle& o : obstacles) poses.push_back(o.poseAt(t));
     std::vector<double> mismatch(faceField.size(), 0.0);

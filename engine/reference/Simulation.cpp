@@ -80,9 +80,10 @@ FrameStats Simulation::advanceSteps(int steps) {
         stats.maxIterations = std::max(stats.maxIterations, report.iterations);
         stats.unconvergedSteps += report.converged ? 0 : 1;
         mFaceVelocity = reconstructFaceField(mBasis, velocity());
-        if (!mSettings.obstacles.empty()) {
+        const std::vector<MovingObstacle> regions = mSettings.velocityRegions(mTime);
+        if (!regions.empty()) {
             mStepper.correctVelocity(
-                -obstacleCorrection(mBasis, mFaceVelocity, mSettings.obstacles, mTime + dt));
+                -obstacleCorrection(mBasis, mFaceVelocity, regions, mTime + dt));
             mFaceVelocity = reconstructFaceField(mBasis, velocity());
         }
         mAdvection.step(std::span<const double>(mFaceVelocity), dt, mSettings.advection,

@@ -2,8 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include <Eigen/Geometry>
+
+#include "engine/core/Error.h"
 
 namespace modeflow {
 namespace {
@@ -49,30 +52,29 @@ Eigen::AngleAxisd turnBetween(const RotationKey& from, const RotationKey& to) {
     return Eigen::AngleAxisd(turn);
 }
 
+double timeOfPosition(const std::pair<double, Vec3>& key) {
+    return key.first;
+}
+
 }  // namespace
 
 Vec3 MovingObstacle::centreAt(double t) const {
     const auto& path = spec.path;
     if (t <= path.front().first) return path.front().second;
     if (t >= path.back().first) return path.back().second;
-    const auto next =
-        std::upper_bound(path.begin(), path.end(), t,
-                         [](double time, const auto& frame) { return time < frame.first; });
-    const auto& [t1, p1] = *next;
-    const auto& [t0, p0] = *(next - 1);
-    const double s = (t - t0) / (t1 - t0);
-    return {p0[0] + s * (p1[0] - p0[0]), p0[1] + s * (p1[1] - p0[1]), p0[2] + s * (p1[2] - p0[2])};
+    const std::size_t end = segmentEnd(path, t, timeOfPosition);
+    const auto& [t0, p0] = path[end - 1];
+    const auto& [t1, p1] = path[end];
+    return arr(vec(p0) + (t - t0) / (t1 - t0) * (vec(p1) - vec(p0)));
 }
 
 Vec3 MovingObstacle::velocityAt(double t) const {
     const auto& path = spec.path;
     if (path.size() < 2 || t < path.front().first || t >= path.back().first) return {0.0, 0.0, 0.0};
-    const auto next =
-        std::upper_bound(path.begin(), path.end(), t,
-                         [](double time, const auto& frame) { return time < frame.first; });
-    const auto& [t1, p1] = *next;
-    const auto& [t0, p0] = *(next - 1);
-    return {(p1[0] - p0[0]) / (t1 - t0), (p1[1] - p0[1]) / (t1 - t0), (p1[2] - p0[2]) / (t1 - t0)};
+    const std::size_t end = segmentEnd(path, t, timeOfPosition);
+    const auto& [t0, p0] = path[end - 1];
+    const auto& [t1, p1] = path[end];
+    return arr((vec(p1) - vec(p0)) / (t1 - t0));
 }
 
 Eigen::Matrix3d MovingObstacle::orientationAt(double t) const {
@@ -102,6 +104,7 @@ Vec3 MovingObstacle::angularVelocityAt(double t) const {
 }
 
 ObstaclePose MovingObstacle::poseAt(double t) const {
+    if (drive) return {centreAt(t), orientationAt(t), *drive, {0.0, 0.0, 0.0}};
     return {centreAt(t), orientationAt(t), velocityAt(t), angularVelocityAt(t)};
 }
 
@@ -129,6 +132,8 @@ bool MovingObstacle::covers(const Vec3& point, const ObstaclePose& pose,
         }
         case ObstacleShape::Ball:
             break;
+        case ObstacleShape::Mesh:
+            return levelSet->depthAt(arr(vec(d) / spec.scale)) >= 0.0;
     }
     return d[0] * d[0] + d[1] * d[1] + d[2] * d[2] <= spec.radius * spec.radius;
 }
@@ -138,6 +143,14 @@ Vec3 MovingObstacle::velocityOf(const Vec3& point, const ObstaclePose& pose,
     Vec3 r{0.0, 0.0, 0.0};
     for (int a = 0; a < grid.dim; ++a) r[a] = point[a] - pose.centre[a];
     return arr(vec(pose.velocity) + vec(pose.angularVelocity).cross(vec(grid.minimumImage(r))));
+}
+
+void requireLevelSets(std::span<const MovingObstacle> obstacles) {
+    for (std::size_t o = 0; o < obstacles.size(); ++o)
+        if (obstacles[o].spec.shape == ObstacleShape::Mesh && !obstacles[o].levelSet)
+            throw Error("obstacle #" + std::to_string(o + 1) + " (mesh " +
+                        obstacles[o].spec.meshFile.string() +
+                        ") has no level set: build it with obstacleSolids before the run");
 }
 
 }  // namespace modeflow

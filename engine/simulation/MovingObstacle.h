@@ -5,11 +5,17 @@
 /// the fluid's normal velocity on the faces it covers match its own (ObstacleCorrection in
 /// engine/reference and engine/device).
 
+#include <memory>
+#include <optional>
+#include <span>
+#include <utility>
+
 #include <Eigen/Core>
 
 #include "engine/core/MacGrid.h"
 #include "engine/core/RuntimeLimits.h"
 #include "engine/core/SceneSpec.h"
+#include "engine/simulation/SolidLevelSet.h"
 
 namespace modeflow {
 
@@ -22,7 +28,17 @@ struct ObstaclePose {
 };
 
 struct MovingObstacle {
+    MovingObstacle() = default;
+    MovingObstacle(ObstacleSpec spec, std::shared_ptr<const SolidLevelSet> levelSet = nullptr)
+        : spec(std::move(spec)), levelSet(std::move(levelSet)) {}
+
     ObstacleSpec spec;
+    /// A mesh obstacle's shape in its own frame (mesh units; tools/compose/ObstacleSolids.h
+    /// builds it from spec.meshFile); null for the other shapes.
+    std::shared_ptr<const SolidLevelSet> levelSet;
+    /// A region that drives the air rather than a solid (a [[source]] with `velocity`): its
+    /// material moves at this velocity wherever its path puts it, and it does not spin.
+    std::optional<Vec3> drive;
 
     /// Centre at time t: linear between key frames, held before the first and after the last.
     Vec3 centreAt(double t) const;
@@ -37,11 +53,16 @@ struct MovingObstacle {
     ObstaclePose poseAt(double t) const;
 
     /// Whether the world point lies in the solid at `pose` (the grid's axes; along its periodic
-    /// ones at the minimum-image offset, so a solid on the seam covers both ends).
+    /// ones at the minimum-image offset, so a solid on the seam covers both ends). A mesh
+    /// obstacle samples its level set at Rᵀ(x − c) / scale.
     bool covers(const Vec3& point, const ObstaclePose& pose, const MacGrid& grid) const;
     /// The velocity of the solid's material at a world point: v + ω × r, with r from the centre
     /// at the minimum-image offset.
     Vec3 velocityOf(const Vec3& point, const ObstaclePose& pose, const MacGrid& grid) const;
 };
+
+/// Refuses a mesh obstacle without its level set (a caller that skipped ObstacleSolids).
+/// @throw modeflow::Error naming the obstacle and its file.
+void requireLevelSets(std::span<const MovingObstacle> obstacles);
 
 }  // namespace modeflow

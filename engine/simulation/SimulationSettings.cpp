@@ -65,6 +65,31 @@ std::vector<int> heldModes(const SceneSpec& scene, const BasisCache& cache) {
     return held;
 }
 
+std::vector<MovingObstacle> SimulationSettings::velocityRegions(double t) const {
+    std::vector<MovingObstacle> regions = obstacles;
+    for (const SmokeEmitter& emitter : emitters) {
+        if (!emitter.velocity || !emitter.activeAt(t)) continue;
+        ObstacleSpec region;
+        if (emitter.shape == EmitterShape::Box) {
+            region.shape = ObstacleShape::Box;
+            Vec3 centre{};
+            for (int a = 0; a < 3; ++a) {
+                centre[a] = 0.5 * (emitter.min[a] + emitter.max[a]);
+                region.halfSize[a] = 0.5 * (emitter.max[a] - emitter.min[a]);
+            }
+            region.path = {{0.0, centre}};
+        } else {
+            region.shape = ObstacleShape::Ball;
+            region.radius = emitter.radius;
+            region.path = {{0.0, emitter.centre}};
+        }
+        MovingObstacle jet(region);
+        jet.drive = emitter.velocity;
+        regions.push_back(std::move(jet));
+    }
+    return regions;
+}
+
 bool SimulationSettings::simulatesTemperature() const {
     if (buoyancy != 0.0) return true;
     for (const SmokeEmitter& emitter : emitters)

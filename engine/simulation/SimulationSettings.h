@@ -32,6 +32,12 @@ struct SimulationSettings {
     std::vector<SmokeEmitter> emitters;
     std::vector<MovingObstacle> obstacles;
 
+    /// What the velocity correction holds during the step starting at t (seed §6.3.5): the
+    /// obstacles, then the sources with a `velocity` active at t, as regions of their shape whose
+    /// material moves at that velocity (MovingObstacle::drive). The first region covering a face
+    /// sets its velocity, so a solid wins over a jet.
+    std::vector<MovingObstacle> velocityRegions(double t) const;
+
     /// Whether the run simulates temperature: a source heats, or buoyancy reads it. Frames then
     /// carry a temperature grid and pictures tint hot smoke.
     bool simulatesTemperature() const;

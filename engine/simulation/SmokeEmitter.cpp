@@ -45,6 +45,7 @@ SmokeEmitter emitterFromSource(const SourceSpec& source) {
     emitter.temperatureRate = source.temperature;
     emitter.start = source.start;
     emitter.end = source.end;
+    emitter.velocity = source.velocity;
     return emitter;
 }
 

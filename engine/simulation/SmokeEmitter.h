@@ -2,10 +2,11 @@
 /// @file SmokeEmitter.h
 /// A smoke and heat source (engine/README.md, a scene's `[[source]]`): a ball or a box (a disk or a
 /// rectangle in 2D) that adds `densityRate · dt` and `temperatureRate · dt` to every fluid smoke
-/// cell whose centre lies inside it. A plain value type, so the device kernels can copy it as is.
+/// cell whose centre lies inside it, and may drive the air inside it (`velocity`). A plain value.
 
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -27,6 +28,9 @@ struct SmokeEmitter {
     double temperatureRate = 0.0;  ///< temperature added per unit time
     double start = 0.0;            ///< emits while start ≤ t < end (simulated time)
     double end = std::numeric_limits<double>::infinity();
+    /// The emitted air's velocity: while active, the velocity correction drives the fluid inside
+    /// to it (SimulationSettings::velocityRegions); none: smoke and heat alone.
+    std::optional<Vec3> velocity = std::nullopt;
 
     /// Whether the emitter emits during the step that starts at time t.
     bool activeAt(double t) const { return start <= t && t < end; }

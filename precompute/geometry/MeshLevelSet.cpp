@@ -16,10 +16,10 @@
 #include <mutex>
 #include <string>
 #include <system_error>
-#include <unordered_map>
 #include <vector>
 
 #include "engine/core/Error.h"
+#include "precompute/geometry/ClosedSurfaceCheck.h"
 #include "precompute/geometry/ObjMesh.h"
 
 namespace modeflow {
@@ -61,8 +61,11 @@ struct RawMesh {
 };
 
 /// The OBJ's triangles (ObjMesh.h) without those with a repeated vertex, which have no area.
+/// meshToLevelSet silently produces garbage signs for a surface with holes, so the surface
+/// must be closed (ClosedSurfaceCheck.h).
 RawMesh readObj(const fs::path& file) {
     const TriangleMesh obj = readObjMesh(file);
+    requireClosedSurface(obj, file);
     RawMesh mesh;
     mesh.points.reserve(obj.vertices.size());
     for (const Vec3& p : obj.vertices)
@@ -75,40 +78,6 @@ RawMesh readObj(const fs::path& file) {
         throw Error("mesh file " + file.string() +
                     " has only degenerate faces (repeated vertices)");
     return mesh;
-}
-
-/// meshToLevelSet silently produces garbage signs for a surface with holes, so demand that every
-/// undirected edge joins exactly two triangles.
-void requireClosed(const RawMesh& mesh, const fs::path& file) {
-    std::unordered_map<std::uint64_t, int> edgeUse;
-    edgeUse.reserve(mesh.triangles.size() * 2);
-    for (const auto& t : mesh.triangles) {
-        for (int k = 0; k < 3; ++k) {
-            std::uint64_t a = t[k], b = t[(k + 1) % 3];
-            if (a > b) std::swap(a, b);
-            ++edgeUse[(a << 32) | b];
-        }
-    }
-    std::size_t boundary = 0, nonManifold = 0;
-    for (const auto& [edge, uses] : edgeUse) {
-        if (uses == 1)
-            ++boundary;
-        else if (uses > 2)
-            ++nonManifold;
-    }
-    if (boundary == 0 && nonManifold == 0) return;
-    std::string what = "mesh file " + file.string() + " is not a closed surface: ";
-    if (boundary > 0)
-        what += std::to_string(boundary) + " boundary edge" + (boundary == 1 ? "" : "s") +
-                " (used by one triangle: the mesh is open)";
-    if (nonManifold > 0)
-        what += std::string(boundary > 0 ? " and " : "") + std::to_string(nonManifold) +
-                " non-manifold edge" + (nonManifold == 1 ? "" : "s") +
-                " (shared by more than two triangles)";
-    what +=
-        ". Every edge must join exactly two triangles; vertices are matched by index, so "
-        "duplicated vertices leave seams open";
-    throw Error(what);
 }
 
 /// Refuses a mesh more than kMaxExtentVoxels across on some axis (vertices of its triangles).
@@ -169,7 +138,6 @@ std::unique_ptr<ImplicitShape> loadMeshShape(const fs::path& objFile, double vox
         throw Error("mesh file " + name + ": the level-set half width must be at least 1 voxel");
 
     const RawMesh mesh = readObj(objFile);
-    requireClosed(mesh, objFile);
 
     requireSaneExtent(mesh, voxelSize, name);
     const double bandVoxels = surfaceArea(mesh) / (voxelSize * voxelSize) * 2.0 * halfWidthVoxels;

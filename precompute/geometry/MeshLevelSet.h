@@ -20,10 +20,10 @@ namespace modeflow {
 /// voxel near the surface). value() is safe to call from many threads at once.
 /// @throw Error naming the file when it is missing or not a readable OBJ, has a vertex
 ///        coordinate that is not a finite number or a face that refers to vertices it lacks (both
-///        with the line, ObjLineCheck.h), has no faces, is open or non-manifold (every edge must
-///        join exactly two triangles), spans more than 131072 voxels on an axis or would need more
-///        than 4e8 band voxels, encloses no voxel (flat, doubled, or thinner than a voxel), or the
-///        voxel size is not a positive number.
+///        with the line, ObjLineCheck.h), has no faces, is not a closed, consistently oriented,
+///        outward-facing surface (ClosedSurfaceCheck.h), spans more than 131072 voxels on an axis
+///        or would need more than 4e8 band voxels, encloses no voxel (flat, doubled, or thinner
+///        than a voxel), or the voxel size is not a positive number.
 std::unique_ptr<ImplicitShape> loadMeshShape(const std::filesystem::path& objFile, double voxelSize,
                                              double halfWidthVoxels = 3.0);
 

@@ -1,5 +1,5 @@
 /// @file ObstacleSection.cpp
-/// `[[obstacle]]`: a ball, box or capsule moving and turning along key frames.
+/// `[[obstacle]]`: a ball, box, capsule or closed mesh moving and turning along key frames.
 
 #include <cmath>
 
@@ -47,7 +47,7 @@ std::vector<RotationKey> readRotation(const TomlReader& reader, const Section& s
 ObstacleSpec readObstacle(const TomlReader& reader, const Section& s) {
     reader.checkKeys(s, kObstacleKeys);
     if (!s.table.contains("shape"))
-        reader.fail(s, "shape", "missing required key (one of ball, box or capsule)");
+        reader.fail(s, "shape", "missing required key (one of ball, box, capsule or mesh)");
     const Choices<ObstacleShape> shapes(kObstacleShapes);
     ObstacleSpec obstacle;
     obstacle.shape = reader.readChoice(s, "shape", obstacle.shape, shapes);
@@ -57,7 +57,17 @@ ObstacleSpec readObstacle(const TomlReader& reader, const Section& s) {
                         s.table.get(key));
     };
     const int dim = reader.dimension();
-    if (obstacle.shape == ObstacleShape::Box) {
+    if (obstacle.shape != ObstacleShape::Mesh) {
+        unused("file");
+        unused("scale");
+    }
+    if (obstacle.shape == ObstacleShape::Mesh) {
+        unused("radius");
+        unused("half_size");
+        unused("axis");
+        obstacle.meshFile = readMeshFile(reader, s, "file");
+        obstacle.scale = reader.readNumber(s, "scale", 1.0, Sign::Positive);
+    } else if (obstacle.shape == ObstacleShape::Box) {
         obstacle.halfSize = reader.requireVector(s, "half_size");
         for (int a = 0; a < dim; ++a)
             if (!(obstacle.halfSize[a] > 0.0))

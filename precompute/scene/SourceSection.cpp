@@ -16,6 +16,7 @@ SourceSpec readSource(const TomlReader& reader, const toml::table& table, int in
     source.temperature = reader.readNumber(s, "temperature", source.temperature);
     source.start = reader.readNumber(s, "start", source.start, Sign::NonNegative);
     source.end = reader.readNumber(s, "end", source.end, Sign::Positive);
+    source.velocity = reader.vector(s, "velocity");
     if (source.end <= source.start)
         reader.fail(s, "end", "must be later than start (" + std::to_string(source.start) + ")",
                     table.get("end"));

@@ -31,6 +31,14 @@ void checkSurfaceSceneTables(const TomlReader& reader, const toml::table& root) 
         reader.fail("[[obstacle]]",
                     "moving obstacles push on a grid's faces; a surface scene ([surface]) has none",
                     node);
+    if (const toml::array* sources = root.get("source") ? root.get("source")->as_array() : nullptr)
+        for (std::size_t i = 0; i < sources->size(); ++i)
+            if (const toml::table* source = (*sources)[i].as_table())
+                if (const toml::node* node = source->get("velocity"))
+                    reader.fail("[[source]] #" + std::to_string(i + 1) + ".velocity",
+                                "a surface scene's sources add dye alone; driving the air "
+                                "belongs to grid scenes",
+                                node);
     if (const toml::node* node = root.get("smoke"))
         reader.fail("[smoke]",
                     "buoyancy and the smoke grid belong to grid scenes; a surface scene carries "

@@ -4,15 +4,20 @@
 /// mismatch on covered faces and make still fluid move with the solid, turning with a paddle.
 
 #include <cmath>
+#include <fstream>
 #include <iostream>
 
 #include <gtest/gtest.h>
 
+#include "engine/core/Error.h"
 #include "engine/core/FaceLocation.h"
 #include "engine/dynamics/InitialConditions.h"
 #include "engine/reference/ObstacleCorrection.h"
 #include "engine/reference/VelocityReconstruction.h"
+#include "precompute/geometry/MeshGenerator.h"
 #include "tests/support/RealBases.h"
+#include "tests/support/TestFolder.h"
+#include "tools/compose/ObstacleSolids.h"
 
 namespace modeflow {
 namespace {
@@ -224,27 +229,146 @@ double angularMomentum(const BasisCache& cache, const std::vector<double>& u) {
     return sum;
 }
 
-TEST(MovingObstacle, ATurningPaddleTurnsStillFluidItsWay) {
-    // Still fluid in the disk: the correction makes it move with the paddle, so its angular
-    // momentum takes the paddle's sign, and grows while the paddle keeps turning (the correction
-    // applied again each step, the fluid keeping what it was given).
+/// Still fluid in the disk with `paddle` (turning at `speed` °/s) in it: the correction makes it
+/// move with the paddle, so its angular momentum takes the paddle's sign, and grows while the
+/// paddle keeps turning (the correction applied again each step, the fluid keeping what it was
+/// given).
+void expectTurnsStillFluidItsWay(const MovingObstacle& paddle, double speed) {
     const BasisCache& cache = testing::disk2d();
-    for (const double speed : {90.0, -90.0}) {
-        const std::vector<MovingObstacle> obstacles{paddle(speed)};
-        Eigen::VectorXd v = Eigen::VectorXd::Zero(cache.velocity.modes.cols());
-        double previous = 0.0;
-        for (int step = 0; step < 4; ++step) {
-            const double t = 0.1 * step;
-            v -= reference::obstacleCorrection(cache, reference::reconstructFaceField(cache, v),
-                                               obstacles, t);
-            const double l = angularMomentum(cache, reference::reconstructFaceField(cache, v));
-            std::cout << "paddle at " << speed << "°/s, step " << step
-                      << ": fluid angular momentum " << l << "\n";
-            EXPECT_GT(l * speed, 0.0) << "the fluid turns the paddle's way";
-            EXPECT_GT(std::abs(l), std::abs(previous)) << "and more while it keeps turning";
-            previous = l;
-        }
+    const std::vector<MovingObstacle> obstacles{paddle};
+    Eigen::VectorXd v = Eigen::VectorXd::Zero(cache.velocity.modes.cols());
+    double previous = 0.0;
+    for (int step = 0; step < 4; ++step) {
+        v -= reference::obstacleCorrection(cache, reference::reconstructFaceField(cache, v),
+                                           obstacles, 0.1 * step);
+        const double l = angularMomentum(cache, reference::reconstructFaceField(cache, v));
+        std::cout << "paddle at " << speed << "°/s, step " << step << ": fluid angular momentum "
+                  << l << "\n";
+        EXPECT_GT(l * speed, 0.0) << "the fluid turns the paddle's way";
+        EXPECT_GT(std::abs(l), std::abs(previous)) << "and more while it keeps turning";
+        previous = l;
     }
+}
+
+TEST(MovingObstacle, ATurningPaddleTurnsStillFluidItsWay) {
+    for (const double speed : {90.0, -90.0}) expectTurnsStillFluidItsWay(paddle(speed), speed);
+}
+
+// ---- mesh obstacles ------------------------------------------------------------------------
+
+/// A mesh obstacle of `mesh` (written to `folder`) at `scale`, on `path`, with its level set
+/// built as a run builds it, for a scene on `cache`'s grid.
+MovingObstacle meshObstacle(const testing::TestFolder& folder, const TriangleMesh& mesh,
+                            double scale, std::vector<std::pair<double, Vec3>> path,
+                            const BasisCache& cache) {
+    SceneSpec scene;
+    scene.sourceFile = folder / "s.toml";
+    scene.grid = cache.grid;
+    ObstacleSpec spec;
+    spec.shape = ObstacleShape::Mesh;
+    spec.meshFile = folder / "mesh.obj";
+    spec.scale = scale;
+    spec.path = std::move(path);
+    writeObj(spec.meshFile, mesh);
+    scene.obstacles = {spec};
+    MovingObstacle obstacle{spec};
+    obstacle.levelSet = obstacleSolids(scene).front();
+    return obstacle;
+}
+
+TEST(MovingObstacle, AMeshIcosphereBehavesAsTheBallOnItsPath) {
+    // A unit icosphere at scale 0.3 against the analytic ball of radius 0.3 on the disk's 32²
+    // grid (the 2D obstacle is the section by z = 0), moving across the disk.
+    const testing::TestFolder folder;
+    const BasisCache& cache = testing::disk2d();
+    const std::vector<std::pair<double, Vec3>> path{{0.0, {-0.3, 0.1, 0.0}},
+                                                    {1.0, {0.3, -0.1, 0.0}}};
+    const std::vector<MovingObstacle> mesh{
+        meshObstacle(folder, makeIcosphere(3), 0.3, path, cache)};
+    const std::vector<MovingObstacle> analytic{ball(0.3, path)};
+    RandomVelocitySpec random;
+    const Eigen::VectorXd v = randomVelocity(int(cache.velocity.modes.cols()), random);
+    const std::vector<double> faces = reference::reconstructFaceField(cache, v);
+    for (const double t : {0.0, 0.37, 1.0}) {
+        const std::vector<double> m = reference::obstacleMismatch(cache, faces, mesh, t),
+                                  b = reference::obstacleMismatch(cache, faces, analytic, t);
+        int covered = 0, differ = 0;
+        for (std::size_t f = 0; f < m.size(); ++f) {
+            covered += b[f] != 0.0;
+            differ += (m[f] != 0.0) != (b[f] != 0.0);
+        }
+        const Eigen::VectorXd dm = reference::obstacleCorrection(cache, faces, mesh, t),
+                              db = reference::obstacleCorrection(cache, faces, analytic, t);
+        const double relative = (dm - db).norm() / db.norm();
+        std::cout << "t = " << t << ": the ball covers " << covered
+                  << " faces, the mesh differs on " << differ << "; corrections differ by "
+                  << relative << " (relative)\n";
+        EXPECT_GT(covered, 50);
+        EXPECT_LE(differ, covered / 25) << "coverage within the discretization";
+        EXPECT_LE(relative, 0.05);
+    }
+}
+
+TEST(MovingObstacle, ATurningPaddleMeshTurnsStillFluidItsWay) {
+    // A slab of six cubes, 0.96 × 0.16 × 0.16 at scale 0.16, turning about z at the origin.
+    const testing::TestFolder folder;
+    const BasisCache& cache = testing::disk2d();
+    const TriangleMesh slab = makeVoxelSurface(
+        {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {3, 0, 0}, {4, 0, 0}, {5, 0, 0}}, 1, 0.16);
+    for (const double speed : {90.0, -90.0}) {
+        MovingObstacle paddle = meshObstacle(folder, slab, 1.0, {{0.0, {0.0, 0.0, 0.0}}}, cache);
+        paddle.spec.rotation = {{0.0, {0.0, 0.0, 1.0}, 0.0}, {10.0, {0.0, 0.0, 1.0}, 10.0 * speed}};
+        expectTurnsStillFluidItsWay(paddle, speed);
+    }
+}
+
+/// What obstacleSolids says of the mesh `text` in a scene on the disk's grid (2D).
+std::string meshRefusal(const std::string& text, double scale = 1.0) {
+    const testing::TestFolder folder;
+    SceneSpec scene;
+    scene.sourceFile = folder / "s.toml";
+    scene.grid = testing::disk2d().grid;
+    ObstacleSpec spec;
+    spec.shape = ObstacleShape::Mesh;
+    spec.meshFile = folder / "m.obj";
+    spec.scale = scale;
+    spec.path = {{0.0, {0.0, 0.0, 0.0}}};
+    std::ofstream(spec.meshFile) << text;
+    scene.obstacles = {ball(0.1, spec.path).spec, spec};
+    try {
+        obstacleSolids(scene);
+    } catch (const Error& e) {
+        return e.what();
+    }
+    return "accepted";
+}
+
+TEST(MovingObstacle, BadObstacleMeshesAreRefusedNamingTheObstacle) {
+    // Outward tetrahedra: one crossing z = 0, one above it.
+    const std::string faces = "f 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n";
+    EXPECT_EQ(meshRefusal("v -0.3 -0.3 -0.3\nv 0.6 -0.3 -0.3\nv -0.3 0.6 -0.3\nv -0.3 -0.3 0.6\n" +
+                          faces),
+              "accepted");
+    std::string what = meshRefusal("v 0 0 0.1\nv 0.5 0 0.1\nv 0 0.5 0.1\nv 0 0 0.6\n" + faces);
+    EXPECT_NE(what.find("[[obstacle]] #2"), std::string::npos) << what;
+    EXPECT_NE(what.find("does not cross that plane"), std::string::npos) << what;
+    what = meshRefusal("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 3\nf 1 4 2\nf 1 3 4\nf 2 4 3\n");
+    EXPECT_NE(what.find("[[obstacle]] #2"), std::string::npos) << what;
+    EXPECT_NE(what.find("is inside out"), std::string::npos) << what;
+    what = meshRefusal("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    EXPECT_NE(what.find("belongs to no other triangle"), std::string::npos) << what;
+    what = meshRefusal(
+        "v -0.3 -0.3 -0.3\nv 0.6 -0.3 -0.3\nv -0.3 0.6 -0.3\nv -0.3 -0.3 0.6\n" + faces, 1e6);
+    EXPECT_NE(what.find("far larger than the grid"), std::string::npos) << what;
+    // Without its level set a mesh obstacle is refused, not taken for empty.
+    ObstacleSpec bare;
+    bare.shape = ObstacleShape::Mesh;
+    bare.meshFile = "m.obj";
+    bare.path = {{0.0, {0.0, 0.0, 0.0}}};
+    const std::vector<MovingObstacle> obstacles{MovingObstacle{bare}};
+    const std::vector<double> still(
+        std::size_t(MacGrid::fromSpec(testing::disk2d().grid).faceTotal()), 0.0);
+    EXPECT_THROW(reference::obstacleMismatch(testing::disk2d(), still, obstacles, 0.0), Error);
 }
 
 }  // namespace

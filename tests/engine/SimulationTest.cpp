@@ -284,6 +284,53 @@ TEST_P(SimulationTest, MovingObstaclesMatchTheCpuReference) {
     expectNoValidationMessages();
 }
 
+TEST_P(SimulationTest, ASourceWithAVelocityDrivesTheAirAndMatchesTheCpuReference) {
+    // A jet: a box source blowing along +x at 1.5 in still air for the first 0.1 s (5 steps), then
+    // off. While on, the air inside moves its way; after, nothing drives it (inviscid: the energy
+    // it was given stays). Both backends alike.
+    const RunInputs& disk = hotDisk();
+    SimulationSettings settings = disk.settings;
+    settings.buoyancy = 0.0;
+    SmokeEmitter jet;
+    jet.shape = EmitterShape::Box;
+    jet.min = {-0.6, -0.15, 0.0};
+    jet.max = {-0.2, 0.15, 0.0};
+    jet.densityRate = 1.0;
+    jet.end = 0.1 - 1e-9;
+    jet.velocity = Vec3{1.5, 0.0, 0.0};
+    settings.emitters = {jet};
+    settings.integrator = Integrator::Midpoint;
+    {
+        device::Simulation device(context(), disk.cache, *disk.coefficients, settings,
+                                  disk.smokeMask, true);
+        reference::Simulation cpu(disk.cache, *disk.coefficients, settings, disk.smokeMask);
+        device.advanceSteps(5);
+        cpu.advanceSteps(5);
+        const Eigen::VectorXd v = device.velocity(), expected = cpu.velocity();
+        const double error =
+            (v - expected).lpNorm<Eigen::Infinity>() / expected.lpNorm<Eigen::Infinity>();
+        const MacGrid grid = MacGrid::fromSpec(disk.cache.grid);
+        const auto cellAt = [&](int axis, double x) {
+            return int((x - grid.origin[axis]) / grid.spacing[axis]);
+        };
+        const double inside =
+            cpu.faceVelocity()[std::size_t(grid.faceIndex(0, cellAt(0, -0.4), cellAt(1, 0.0), 0))];
+        const double energy = cpu.velocity().squaredNorm();
+        std::cout << "jet, 5 steps: modes relative difference " << error
+                  << ", fluid x velocity inside the jet " << inside << " (jet: 1.5)\n";
+        EXPECT_LE(error, 1e-4);
+        EXPECT_GT(inside, 0.5) << "the air inside moves with the jet";
+        device.advanceSteps(5);
+        cpu.advanceSteps(5);
+        EXPECT_NEAR(cpu.velocity().squaredNorm() / energy, 1.0, 1e-3)
+            << "the jet is off: nothing drives the air";
+        EXPECT_LE((device.velocity() - cpu.velocity()).lpNorm<Eigen::Infinity>() /
+                      cpu.velocity().lpNorm<Eigen::Infinity>(),
+                  1e-4);
+    }
+    expectNoValidationMessages();
+}
+
 TEST_P(SimulationTest, AClosedFormBoxRunsOnItsTransformsAndFollowsTheCpuReference) {
     // A whole box with free-slip walls: closed-form modes, no columns on either side; buoyant
     // smoke and a moving ball.

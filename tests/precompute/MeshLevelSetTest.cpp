@@ -329,7 +329,9 @@ TEST_F(MeshLevelSetTest, FacesReferringToMissingVerticesNameTheirLine) {
 TEST_F(MeshLevelSetTest, OpenMeshIsRejected) {
     const std::string what = expectMeshError(write("open.obj", cubeObj(0.5, true)));
     EXPECT_NE(what.find("not a closed surface"), std::string::npos) << what;
-    EXPECT_NE(what.find("4 boundary edges"), std::string::npos) << what;
+    EXPECT_NE(what.find("belongs to no other triangle (the mesh is open there"), std::string::npos)
+        << what;
+    EXPECT_NE(what.find("the edge between vertices "), std::string::npos) << what;
 }
 
 TEST_F(MeshLevelSetTest, NonManifoldMeshIsRejected) {
@@ -339,8 +341,30 @@ TEST_F(MeshLevelSetTest, NonManifoldMeshIsRejected) {
         "f 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n"
         "f 1 2 5\nf 1 6 2\nf 1 5 6\nf 2 6 5\n";
     const std::string what = expectMeshError(write("bowtie.obj", text));
-    EXPECT_NE(what.find("1 non-manifold edge"), std::string::npos) << what;
-    EXPECT_EQ(what.find("boundary"), std::string::npos) << what;
+    EXPECT_NE(what.find("the edge between vertices 1 and 2 of triangle 1 is shared by 4 triangles"),
+              std::string::npos)
+        << what;
+    EXPECT_EQ(what.find("open"), std::string::npos) << what;
+}
+
+TEST_F(MeshLevelSetTest, InsideOutMeshIsRejected) {
+    // A tetrahedron whose triangles are all clockwise seen from outside.
+    const std::string text =
+        "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 3\nf 1 4 2\nf 1 3 4\nf 2 4 3\n";
+    const std::string what = expectMeshError(write("inverted.obj", text));
+    EXPECT_NE(what.find("is inside out"), std::string::npos) << what;
+    EXPECT_NE(what.find("-0.167"), std::string::npos) << what;
+}
+
+TEST_F(MeshLevelSetTest, AFlippedTriangleIsNamed) {
+    // The outward tetrahedron with its third triangle flipped.
+    const std::string text =
+        "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 3 4\nf 2 3 4\n";
+    const std::string what = expectMeshError(write("flipped.obj", text));
+    EXPECT_NE(what.find("is not consistently oriented: triangle 1 and triangle 3 both run the edge "
+                        "between vertices 1 and 3 from 1 to 3"),
+              std::string::npos)
+        << what;
 }
 
 TEST_F(MeshLevelSetTest, SurfaceEnclosingNothingIsRejected) {

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 
+#include <algorithm>
 #include <charconv>
 #include <cstdint>
 #include <filesystem>
@@ -13,6 +14,7 @@
 #include <utility>
 #include <vector>
 
+#include "engine/core/RuntimeLimits.h"
 #include "precompute/scene/SceneLoader.h"
 #include "tests/support/SceneFixtures.h"
 #include "tests/support/TestFolder.h"
@@ -142,6 +144,19 @@ const std::vector<Refusal> kRefusals = {
      kObstacleBall + "radius = 0.1\nhalf_size = [0.1, 0.1]\npath = [[0.0, 0.0, 0.0]]\n",
      {"half_size: not used by a ball"}},
     {"ObstacleCone", k2d, {}, "[[obstacle]]\nshape = \"cone\"\n", {"cone"}},
+    {"SourceVelocityOfAnotherDimension", k2d, {},
+     "[[source]]\nshape = \"ball\"\ncenter = [0, 0]\nradius = 0.1\nvelocity = [1, 0, 0]\n",
+     {"[[source]] #1 (ball).velocity"}},
+    {"ObstacleMeshWithoutFile", k2d, {}, "[[obstacle]]\nshape = \"mesh\"\npath = [[0, 0, 0]]\n",
+     {"[[obstacle]] #1.file: missing required key"}},
+    {"ObstacleMeshOfNoFile", k2d, {},
+     "[[obstacle]]\nshape = \"mesh\"\nfile = \"nothing.obj\"\npath = [[0, 0, 0]]\n",
+     {"[[obstacle]] #1.file: no such file"}},
+    {"ObstacleMeshWithRadius", k2d, {},
+     "[[obstacle]]\nshape = \"mesh\"\nfile = \"a.obj\"\nradius = 1\npath = [[0, 0, 0]]\n",
+     {"[[obstacle]] #1.radius: not used by a mesh"}},
+    {"ObstacleBallWithScale", k2d, {}, kObstacleBall + "radius = 0.1\nscale = 2\npath = [[0, 0, 0]]\n",
+     {"[[obstacle]] #1.scale: not used by a ball"}},
     {"RotationKeyFramesGoBack", k2d, {},
      kObstacleBall + "radius = 0.1\npath = [[0, 0, 0]]\nrotation = [[1, 0, 0, 1, 0], [0.5, 0, 0, 1, 9]]\n",
      {"[[obstacle]] #1.rotation", "key frame times must increase"}},
@@ -722,18 +737,38 @@ TEST_F(SceneLoaderTest, MoreSourcesOrObstaclesThanTheRuntimeTakesAreRefusedAtLoa
     const std::string source = "[[source]]\nshape = \"ball\"\ncenter = [0, 0]\nradius = 0.1\n";
     const std::string obstacle =
         "[[obstacle]]\nshape = \"ball\"\nradius = 0.1\npath = [[0, 0, 0]]\n";
-    std::string eight = sceneFixture(k2d);
-    for (int i = 0; i < 8; ++i) eight += source + obstacle;
-    const SceneSpec scene = parseScene(eight, "s.toml");
-    EXPECT_EQ(scene.sources.size(), 8u);
-    EXPECT_EQ(scene.obstacles.size(), 8u);
+    std::string full = sceneFixture(k2d);
+    const int base = int(std::count(full.begin(), full.end(), '\n'));
+    for (int i = 0; i < maxSmokeEmitters; ++i) full += source;
+    for (int i = 0; i < maxObstacles; ++i) full += obstacle;
+    const SceneSpec scene = parseScene(full, "s.toml");
+    EXPECT_EQ(scene.sources.size(), std::size_t(maxSmokeEmitters));
+    EXPECT_EQ(scene.obstacles.size(), std::size_t(maxObstacles));
+    EXPECT_GE(maxSmokeEmitters, 64) << "what users need";
+    EXPECT_GE(maxObstacles, 64) << "what users need";
 
-    std::string message = errorOf(eight + source);
-    EXPECT_CONTAINS(message, "[[source]]: 9 entries; at most 8 sources take part in a simulation");
-    EXPECT_CONTAINS(message, "(line 73)");  // the ninth entry
-    message = errorOf(eight + obstacle);
-    EXPECT_CONTAINS(message,
-                    "[[obstacle]]: 9 entries; at most 8 obstacles take part in a simulation");
+    const std::string more = std::to_string(maxSmokeEmitters + 1);
+    std::string message = errorOf(full + source);
+    EXPECT_CONTAINS(message, "[[source]]: " + more + " entries; at most " +
+                                 std::to_string(maxSmokeEmitters) +
+                                 " sources take part in a simulation");
+    // The first entry past the limit: the sources' lines, then the obstacles', then it.
+    EXPECT_CONTAINS(
+        message,
+        "(line " + std::to_string(base + 4 * maxSmokeEmitters + 4 * maxObstacles + 1) + ")");
+    message = errorOf(full + obstacle);
+    EXPECT_CONTAINS(message, "[[obstacle]]: " + std::to_string(maxObstacles + 1) +
+                                 " entries; at most " + std::to_string(maxObstacles) +
+                                 " obstacles take part in a simulation");
+}
+
+TEST_F(SceneLoaderTest, ASourceMayDriveTheAir) {
+    const std::string source = "[[source]]\nshape = \"box\"\nmin = [0, 0]\nmax = [0.1, 0.2]\n";
+    const SceneSpec scene =
+        parseScene(sceneFixture(k2d) + source + "velocity = [0.5, -1]\n" + source, "s.toml");
+    ASSERT_EQ(scene.sources.size(), 2u);
+    EXPECT_EQ(scene.sources[0].velocity, (Vec3{0.5, -1.0, 0.0}));
+    EXPECT_FALSE(scene.sources[1].velocity.has_value()) << "smoke alone unless asked";
 }
 
 TEST_F(SceneLoaderTest, RandomInitialVelocityTakesEnergySeedAndBand) {
@@ -1157,6 +1192,9 @@ TEST_F(SceneLoaderTest, SurfaceSceneRefusesTheGridsTablesAndKeys) {
         {surface + "[[obstacle]]\nshape = \"ball\"\nradius = 0.1\npath = [[0, 0, 0, 0]]\n",
          "[[obstacle]]: moving obstacles push on a grid's faces"},
         {surface + "[smoke]\nbuoyancy = 1.0\n", "[smoke]: buoyancy and the smoke grid"},
+        {surface + "[[source]]\nshape = \"ball\"\ncenter = [0, 0, 1]\nradius = 0.2\nvelocity = [1, "
+                   "0, 0]\n",
+         "[[source]] #1.velocity: a surface scene's sources add dye alone"},
         {std::string(kSurface) + "[basis]\nvelocity_modes = 4\nwall = \"no-slip\"\n",
          "[basis].wall: only for grid scenes"},
         {surface + "[simulation]\nmhd = true\n",

@@ -28,8 +28,13 @@ std::string hex(std::uint64_t value) {
 RunIdentity runIdentity(const SceneSpec& scene, BackendKind backend) {
     RunIdentity id;
     id.sceneHash = hex(fnv1a64(fileBytes(scene.sourceFile)));
+    // A mesh obstacle's file is part of the run: changing it changes the frames.
+    std::string meshes;
+    for (const ObstacleSpec& obstacle : scene.obstacles)
+        if (obstacle.shape == ObstacleShape::Mesh)
+            meshes.append(1, '|').append(hex(fnv1a64(fileBytes(obstacle.meshFile))));
     id.runHash = fnv1a64(id.sceneHash + "|" + basisKey(scene) + "|" +
-                         std::string(capabilitiesOf(backend).option));
+                         std::string(capabilitiesOf(backend).option) + meshes);
     return id;
 }
 

@@ -9,6 +9,7 @@
 #include "precompute/Precompute.h"
 #include "precompute/geometry/FluidMask.h"
 #include "tools/compose/InitialState.h"
+#include "tools/compose/ObstacleSolids.h"
 #include "tools/compose/SmokeMask.h"
 
 namespace modeflow {
@@ -44,12 +45,14 @@ void requireFinite(const SceneSpec& scene, const Eigen::VectorXd& state, const c
                     "or strength");
 }
 
-/// Everything after the cache.
-void complete(RunInputs& run, RunParts parts, Progress& progress) {
+/// Everything after the cache; `solids`: obstacleSolids of the scene.
+void complete(RunInputs& run, RunParts parts, Progress& progress,
+              const std::vector<std::shared_ptr<const SolidLevelSet>>& solids) {
     const SceneSpec& scene = run.scene;
     completeCoefficients(run.cache, scene.basis.coefficients, progress);
     run.coefficients = takeCoefficientsFromCache(run.cache, scene.basis.coefficients);
     run.settings = SimulationSettings::fromScene(scene, run.cache);
+    attachObstacleSolids(run.settings.obstacles, solids);
     const int modes = run.coefficients->size();
     run.initialVelocity = initialVelocity(scene, run.cache, modes);
     requireFinite(scene, run.initialVelocity, "velocity");
@@ -71,10 +74,12 @@ RunInputs prepareRun(const SceneSpec& scene, const std::filesystem::path& cacheD
                      Progress& progress, RunParts parts) {
     RunInputs run;
     run.scene = scene;
+    // Mesh obstacles are read and checked before the precompute's minutes.
+    const auto solids = obstacleSolids(scene);
     CacheOutcome outcome = ensureCache(scene, cacheDir, false, progress);
     run.cachePath = std::move(outcome.path);
     run.cache = std::move(outcome.cache);
-    complete(run, parts, progress);
+    complete(run, parts, progress, solids);
     return run;
 }
 
@@ -83,7 +88,7 @@ RunInputs prepareRun(const SceneSpec& scene, BasisCache cache, RunParts parts) {
     run.scene = scene;
     run.cache = std::move(cache);
     Progress quiet = Progress::silent();
-    complete(run, parts, quiet);
+    complete(run, parts, quiet, obstacleSolids(scene));
     return run;
 }
 

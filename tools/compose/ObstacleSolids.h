@@ -1,0 +1,30 @@
+#pragma once
+/// @file ObstacleSolids.h
+/// Mesh obstacles' shapes (`[[obstacle]] shape = "mesh"`): each OBJ file, checked to be a closed,
+/// outward-facing surface, becomes a SolidLevelSet in the mesh's own frame, once per run; the
+/// runtime moves and turns the points it samples, never the lattice.
+
+#include <memory>
+#include <vector>
+
+#include "engine/core/SceneSpec.h"
+#include "engine/simulation/MovingObstacle.h"
+#include "engine/simulation/SolidLevelSet.h"
+
+namespace modeflow {
+
+/// The level set of every mesh obstacle of the scene (null for the other shapes), in its order:
+/// the mesh's depth sampled every half of the grid's finest cell (in world lengths, so every
+/// `spacing / scale` mesh units), over the mesh's bounds and two samples beyond. Obstacles with
+/// the same file and scale share one.
+/// @throw modeflow::Error naming the obstacle and file: unreadable, not a closed, consistently
+///        oriented, outward-facing surface (the first offending edge or triangle named),
+///        enclosing nothing at that resolution, far larger than the grid, or in a 2D scene not
+///        crossing the plane z = 0.
+std::vector<std::shared_ptr<const SolidLevelSet>> obstacleSolids(const SceneSpec& scene);
+
+/// Hands each obstacle its level set (obstacleSolids of the same scene, in the same order).
+void attachObstacleSolids(std::vector<MovingObstacle>& obstacles,
+                          const std::vector<std::shared_ptr<const SolidLevelSet>>& solids);
+
+}  // namespace modeflow
