@@ -143,7 +143,7 @@ struct InitialSpec {
     double magneticWallLayer = 0.0;
 };
 
-/// A smoke/heat emitter (`[[source]]`).
+/// A smoke/heat emitter (`[[source]]`): a ball, a box or a closed mesh (3D, world coordinates).
 struct SourceSpec {
     ShapeSpec shape;
     double density = 1.0;      ///< injected per unit time
@@ -153,6 +153,8 @@ struct SourceSpec {
     /// The emitted air's velocity (`velocity`): while the source emits, the fluid inside it is
     /// driven to move at it (a jet, a chimney's draught); none: the source adds smoke alone.
     std::optional<Vec3> velocity = std::nullopt;
+    /// mesh: emit from the shell this thick inside its surface; 0: from its whole volume.
+    double thickness = 0.0;
 };
 
 /// How smoke is carried (engine/README.md): RK2 semi-Lagrangian, or MacCormack with clamping (less

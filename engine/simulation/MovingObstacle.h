@@ -33,7 +33,7 @@ struct MovingObstacle {
         : spec(std::move(spec)), levelSet(std::move(levelSet)) {}
 
     ObstacleSpec spec;
-    /// A mesh obstacle's shape in its own frame (mesh units; tools/compose/ObstacleSolids.h
+    /// A mesh obstacle's shape in its own frame (mesh units; tools/compose/MeshSolids.h
     /// builds it from spec.meshFile); null for the other shapes.
     std::shared_ptr<const SolidLevelSet> levelSet;
     /// A region that drives the air rather than a solid (a [[source]] with `velocity`): its
@@ -61,7 +61,7 @@ struct MovingObstacle {
     Vec3 velocityOf(const Vec3& point, const ObstaclePose& pose, const MacGrid& grid) const;
 };
 
-/// Refuses a mesh obstacle without its level set (a caller that skipped ObstacleSolids).
+/// Refuses a mesh obstacle without its level set (a caller that skipped obstacleSolids).
 /// @throw modeflow::Error naming the obstacle and its file.
 void requireLevelSets(std::span<const MovingObstacle> obstacles);
 

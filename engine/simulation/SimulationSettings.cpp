@@ -70,7 +70,13 @@ std::vector<MovingObstacle> SimulationSettings::velocityRegions(double t) const 
     for (const SmokeEmitter& emitter : emitters) {
         if (!emitter.velocity || !emitter.activeAt(t)) continue;
         ObstacleSpec region;
-        if (emitter.shape == EmitterShape::Box) {
+        std::shared_ptr<const SolidLevelSet> levelSet;
+        if (emitter.shape == EmitterShape::Mesh) {
+            // Its volume, in world coordinates: a mesh at the origin, unturned.
+            region.shape = ObstacleShape::Mesh;
+            region.path = {{0.0, {0.0, 0.0, 0.0}}};
+            levelSet = emitter.levelSet;
+        } else if (emitter.shape == EmitterShape::Box) {
             region.shape = ObstacleShape::Box;
             Vec3 centre{};
             for (int a = 0; a < 3; ++a) {
@@ -83,7 +89,7 @@ std::vector<MovingObstacle> SimulationSettings::velocityRegions(double t) const 
             region.radius = emitter.radius;
             region.path = {{0.0, emitter.centre}};
         }
-        MovingObstacle jet(region);
+        MovingObstacle jet(region, levelSet);
         jet.drive = emitter.velocity;
         regions.push_back(std::move(jet));
     }

@@ -7,6 +7,11 @@
 namespace modeflow {
 
 bool SmokeEmitter::contains(const Vec3& point, int dim) const {
+    if (shape == EmitterShape::Mesh) {
+        if (!levelSet) throw Error("a mesh source has no level set: attach it before the run");
+        const double depth = levelSet->depthAt(point);
+        return depth >= 0.0 && (thickness == 0.0 || depth <= thickness);
+    }
     if (shape == EmitterShape::Box) {
         for (int a = 0; a < dim; ++a)
             if (point[a] < min[a] || point[a] > max[a]) return false;
@@ -18,10 +23,12 @@ bool SmokeEmitter::contains(const Vec3& point, int dim) const {
 }
 
 bool SmokeEmitter::contains(const Vec3& worldPoint, const MacGrid& grid) const {
-    const Vec3 middle =
-        shape == EmitterShape::Box
-            ? Vec3{0.5 * (min[0] + max[0]), 0.5 * (min[1] + max[1]), 0.5 * (min[2] + max[2])}
-            : centre;
+    Vec3 middle = centre;
+    if (shape == EmitterShape::Box)
+        middle = {0.5 * (min[0] + max[0]), 0.5 * (min[1] + max[1]), 0.5 * (min[2] + max[2])};
+    else if (shape == EmitterShape::Mesh && levelSet)
+        for (int a = 0; a < 3; ++a)
+            middle[a] = levelSet->origin[a] + 0.5 * (levelSet->samples[a] - 1) * levelSet->spacing;
     return contains(grid.nearestImage(worldPoint, middle), grid.dim);
 }
 
@@ -38,8 +45,13 @@ SmokeEmitter emitterFromSource(const SourceSpec& source) {
             emitter.min = source.shape.min;
             emitter.max = source.shape.max;
             break;
+        case ShapeKind::Mesh:
+            emitter.shape = EmitterShape::Mesh;
+            emitter.thickness = source.thickness;
+            break;
         default:
-            throw Error("[[source]] shape: smoke emitters are balls or boxes, got another shape");
+            throw Error(
+                "[[source]] shape: smoke emitters are balls, boxes or meshes, got another shape");
     }
     emitter.densityRate = source.density;
     emitter.temperatureRate = source.temperature;

@@ -1,11 +1,13 @@
 #pragma once
 /// @file SmokeEmitter.h
 /// A smoke and heat source (engine/README.md, a scene's `[[source]]`): a ball or a box (a disk or a
-/// rectangle in 2D) that adds `densityRate · dt` and `temperatureRate · dt` to every fluid smoke
-/// cell whose centre lies inside it, and may drive the air inside it (`velocity`). A plain value.
+/// rectangle in 2D) or a closed mesh's volume or shell that adds `densityRate · dt` and
+/// `temperatureRate · dt` to every fluid smoke cell whose centre lies inside it, and may drive the
+/// air inside it (`velocity`). A plain value.
 
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <optional>
 #include <span>
 #include <vector>
@@ -13,10 +15,11 @@
 #include "engine/core/MacGrid.h"
 #include "engine/core/RuntimeLimits.h"
 #include "engine/core/SceneSpec.h"
+#include "engine/simulation/SolidLevelSet.h"
 
 namespace modeflow {
 
-enum class EmitterShape { Ball, Box };
+enum class EmitterShape { Ball, Box, Mesh };
 
 struct SmokeEmitter {
     EmitterShape shape = EmitterShape::Ball;
@@ -28,6 +31,10 @@ struct SmokeEmitter {
     double temperatureRate = 0.0;  ///< temperature added per unit time
     double start = 0.0;            ///< emits while start ≤ t < end (simulated time)
     double end = std::numeric_limits<double>::infinity();
+    /// mesh: its level set in world coordinates (tools/compose/MeshSolids.h builds it), and
+    /// the thickness of the shell inside its surface it emits from (0: its whole volume).
+    std::shared_ptr<const SolidLevelSet> levelSet = nullptr;
+    double thickness = 0.0;
     /// The emitted air's velocity: while active, the velocity correction drives the fluid inside
     /// to it (SimulationSettings::velocityRegions); none: smoke and heat alone.
     std::optional<Vec3> velocity = std::nullopt;
@@ -46,8 +53,9 @@ struct SmokeEmitter {
 /// The emitters of `all` active at time t (SmokeEmitter::activeAt).
 std::vector<SmokeEmitter> activeEmitters(std::span<const SmokeEmitter> all, double t);
 
-/// The emitter of a scene's `[[source]]`.
-/// @throw modeflow::Error when its shape is not a ball or a box.
+/// The emitter of a scene's `[[source]]`; a mesh source's level set is attached afterwards
+/// (attachSourceSolids).
+/// @throw modeflow::Error when its shape is not a ball, a box or a mesh.
 SmokeEmitter emitterFromSource(const SourceSpec& source);
 
 /// Adds each emitter's rates · dt to the fluid cells (fluidMask ≠ 0) of `smokeGrid` whose centre

@@ -2,7 +2,7 @@
 /// @file SolidLevelSet.h
 /// A solid's shape as its depth (signed distance, positive inside) sampled on a regular lattice
 /// in the solid's own frame: how a mesh obstacle (`shape = "mesh"`) covers points. Built once
-/// from the mesh (tools/compose/ObstacleSolids.h); rigid motion moves the sample points into this
+/// from the mesh (tools/compose/MeshSolids.h); rigid motion moves the sample points into this
 /// frame, never the lattice. The device kernel obstacle_mismatch.comp samples the same lattice
 /// the same way.
 

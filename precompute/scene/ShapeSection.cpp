@@ -93,7 +93,7 @@ ShapeSpec readShape(const TomlReader& reader, const toml::table& table, const st
                     "missing required key (one of " +
                         std::string(isDomain ? "ball, box, ellipsoid, cylinder, "
                                                "torus or mesh"
-                                             : "ball or box") +
+                                             : "ball, box or mesh") +
                         ")",
                     &table);
     }
@@ -103,8 +103,10 @@ ShapeSpec readShape(const TomlReader& reader, const toml::table& table, const st
     const std::string_view kindName = keywordOf(Choices<ShapeKind>(kShapeKinds), shape.kind);
     const Section s{table, entry + " (" + std::string(kindName) + ")"};
 
-    if (!isDomain && shape.kind != ShapeKind::Ball && shape.kind != ShapeKind::Box) {
-        reader.fail(s, "shape", "a source must be a ball or a box, got " + std::string(kindName),
+    if (!isDomain && shape.kind != ShapeKind::Ball && shape.kind != ShapeKind::Box &&
+        shape.kind != ShapeKind::Mesh) {
+        reader.fail(s, "shape",
+                    "a source must be a ball, a box or a mesh, got " + std::string(kindName),
                     shapeNode);
     }
     checkShapeDimension(reader, s, shape.kind, shapeNode);

@@ -17,6 +17,10 @@ SourceSpec readSource(const TomlReader& reader, const toml::table& table, int in
     source.start = reader.readNumber(s, "start", source.start, Sign::NonNegative);
     source.end = reader.readNumber(s, "end", source.end, Sign::Positive);
     source.velocity = reader.vector(s, "velocity");
+    if (source.shape.kind == ShapeKind::Mesh)
+        source.thickness = reader.readNumber(s, "thickness", 0.0, Sign::Positive);
+    else if (const toml::node* node = table.get("thickness"))
+        reader.fail(s, "thickness", "only a mesh source emits from a shell on its surface", node);
     if (source.end <= source.start)
         reader.fail(s, "end", "must be later than start (" + std::to_string(source.start) + ")",
                     table.get("end"));

@@ -39,6 +39,12 @@ void checkSurfaceSceneTables(const TomlReader& reader, const toml::table& root) 
                                 "a surface scene's sources add dye alone; driving the air "
                                 "belongs to grid scenes",
                                 node);
+                else if (const toml::node* shape = source->get("shape");
+                         shape && shape->value<std::string>() == "mesh")
+                    reader.fail("[[source]] #" + std::to_string(i + 1) + ".shape",
+                                "a surface scene's sources are balls or boxes in space; mesh "
+                                "sources fill a grid's cells",
+                                shape);
     if (const toml::node* node = root.get("smoke"))
         reader.fail("[smoke]",
                     "buoyancy and the smoke grid belong to grid scenes; a surface scene carries "

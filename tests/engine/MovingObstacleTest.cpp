@@ -17,7 +17,7 @@
 #include "precompute/geometry/MeshGenerator.h"
 #include "tests/support/RealBases.h"
 #include "tests/support/TestFolder.h"
-#include "tools/compose/ObstacleSolids.h"
+#include "tools/compose/MeshSolids.h"
 
 namespace modeflow {
 namespace {

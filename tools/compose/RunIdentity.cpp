@@ -28,11 +28,15 @@ std::string hex(std::uint64_t value) {
 RunIdentity runIdentity(const SceneSpec& scene, BackendKind backend) {
     RunIdentity id;
     id.sceneHash = hex(fnv1a64(fileBytes(scene.sourceFile)));
-    // A mesh obstacle's file is part of the run: changing it changes the frames.
+    // Mesh obstacles' and sources' files are part of the run: changing one changes the frames.
     std::string meshes;
+    const auto addMesh = [&](const std::filesystem::path& file) {
+        meshes.append(1, '|').append(hex(fnv1a64(fileBytes(file))));
+    };
     for (const ObstacleSpec& obstacle : scene.obstacles)
-        if (obstacle.shape == ObstacleShape::Mesh)
-            meshes.append(1, '|').append(hex(fnv1a64(fileBytes(obstacle.meshFile))));
+        if (obstacle.shape == ObstacleShape::Mesh) addMesh(obstacle.meshFile);
+    for (const SourceSpec& source : scene.sources)
+        if (source.shape.kind == ShapeKind::Mesh) addMesh(source.shape.meshFile);
     id.runHash = fnv1a64(id.sceneHash + "|" + basisKey(scene) + "|" +
                          std::string(capabilitiesOf(backend).option) + meshes);
     return id;

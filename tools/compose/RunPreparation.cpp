@@ -9,7 +9,7 @@
 #include "precompute/Precompute.h"
 #include "precompute/geometry/FluidMask.h"
 #include "tools/compose/InitialState.h"
-#include "tools/compose/ObstacleSolids.h"
+#include "tools/compose/MeshSolids.h"
 #include "tools/compose/SmokeMask.h"
 
 namespace modeflow {
@@ -45,14 +45,24 @@ void requireFinite(const SceneSpec& scene, const Eigen::VectorXd& state, const c
                     "or strength");
 }
 
-/// Everything after the cache; `solids`: obstacleSolids of the scene.
-void complete(RunInputs& run, RunParts parts, Progress& progress,
-              const std::vector<std::shared_ptr<const SolidLevelSet>>& solids) {
+/// The level sets of a scene's mesh obstacles and mesh sources (MeshSolids.h).
+struct SceneSolids {
+    std::vector<std::shared_ptr<const SolidLevelSet>> obstacles, sources;
+};
+
+/// Read and checked before the precompute's minutes.
+SceneSolids sceneSolids(const SceneSpec& scene) {
+    return {obstacleSolids(scene), sourceSolids(scene)};
+}
+
+/// Everything after the cache.
+void complete(RunInputs& run, RunParts parts, Progress& progress, const SceneSolids& solids) {
     const SceneSpec& scene = run.scene;
     completeCoefficients(run.cache, scene.basis.coefficients, progress);
     run.coefficients = takeCoefficientsFromCache(run.cache, scene.basis.coefficients);
     run.settings = SimulationSettings::fromScene(scene, run.cache);
-    attachObstacleSolids(run.settings.obstacles, solids);
+    attachObstacleSolids(run.settings.obstacles, solids.obstacles);
+    attachSourceSolids(run.settings.emitters, solids.sources);
     const int modes = run.coefficients->size();
     run.initialVelocity = initialVelocity(scene, run.cache, modes);
     requireFinite(scene, run.initialVelocity, "velocity");
@@ -74,8 +84,7 @@ RunInputs prepareRun(const SceneSpec& scene, const std::filesystem::path& cacheD
                      Progress& progress, RunParts parts) {
     RunInputs run;
     run.scene = scene;
-    // Mesh obstacles are read and checked before the precompute's minutes.
-    const auto solids = obstacleSolids(scene);
+    const SceneSolids solids = sceneSolids(scene);
     CacheOutcome outcome = ensureCache(scene, cacheDir, false, progress);
     run.cachePath = std::move(outcome.path);
     run.cache = std::move(outcome.cache);
@@ -88,7 +97,7 @@ RunInputs prepareRun(const SceneSpec& scene, BasisCache cache, RunParts parts) {
     run.scene = scene;
     run.cache = std::move(cache);
     Progress quiet = Progress::silent();
-    complete(run, parts, quiet, obstacleSolids(scene));
+    complete(run, parts, quiet, sceneSolids(scene));
     return run;
 }
 

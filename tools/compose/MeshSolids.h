@@ -1,14 +1,16 @@
 #pragma once
-/// @file ObstacleSolids.h
-/// Mesh obstacles' shapes (`[[obstacle]] shape = "mesh"`): each OBJ file, checked to be a closed,
-/// outward-facing surface, becomes a SolidLevelSet in the mesh's own frame, once per run; the
-/// runtime moves and turns the points it samples, never the lattice.
+/// @file MeshSolids.h
+/// Mesh obstacles' and mesh sources' shapes (`shape = "mesh"`): each OBJ file, checked to be a
+/// closed, consistently oriented, outward-facing surface, becomes a SolidLevelSet once per run —
+/// an obstacle's in the mesh's own frame (the runtime moves and turns the points it samples,
+/// never the lattice), a source's in the world.
 
 #include <memory>
 #include <vector>
 
 #include "engine/core/SceneSpec.h"
 #include "engine/simulation/MovingObstacle.h"
+#include "engine/simulation/SmokeEmitter.h"
 #include "engine/simulation/SolidLevelSet.h"
 
 namespace modeflow {
@@ -26,5 +28,15 @@ std::vector<std::shared_ptr<const SolidLevelSet>> obstacleSolids(const SceneSpec
 /// Hands each obstacle its level set (obstacleSolids of the same scene, in the same order).
 void attachObstacleSolids(std::vector<MovingObstacle>& obstacles,
                           const std::vector<std::shared_ptr<const SolidLevelSet>>& solids);
+
+/// The level set of every mesh source of the scene (null for the other shapes), in its order:
+/// the mesh's depth in world coordinates sampled every half smoke cell, over its bounds and two
+/// samples beyond.
+/// @throw modeflow::Error naming the source and file, as obstacleSolids.
+std::vector<std::shared_ptr<const SolidLevelSet>> sourceSolids(const SceneSpec& scene);
+
+/// Hands each emitter its level set (sourceSolids of the same scene, in the same order).
+void attachSourceSolids(std::vector<SmokeEmitter>& emitters,
+                        const std::vector<std::shared_ptr<const SolidLevelSet>>& solids);
 
 }  // namespace modeflow
