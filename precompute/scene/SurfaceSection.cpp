@@ -31,20 +31,23 @@ void checkSurfaceSceneTables(const TomlReader& reader, const toml::table& root) 
         reader.fail("[[obstacle]]",
                     "moving obstacles push on a grid's faces; a surface scene ([surface]) has none",
                     node);
-    if (const toml::array* sources = root.get("source") ? root.get("source")->as_array() : nullptr)
-        for (std::size_t i = 0; i < sources->size(); ++i)
-            if (const toml::table* source = (*sources)[i].as_table())
-                if (const toml::node* node = source->get("velocity"))
-                    reader.fail("[[source]] #" + std::to_string(i + 1) + ".velocity",
-                                "a surface scene's sources add dye alone; driving the air "
-                                "belongs to grid scenes",
-                                node);
-                else if (const toml::node* shape = source->get("shape");
-                         shape && shape->value<std::string>() == "mesh")
-                    reader.fail("[[source]] #" + std::to_string(i + 1) + ".shape",
-                                "a surface scene's sources are balls or boxes in space; mesh "
-                                "sources fill a grid's cells",
-                                shape);
+    const toml::array* sources = root.get("source") ? root.get("source")->as_array() : nullptr;
+    for (std::size_t i = 0; sources && i < sources->size(); ++i) {
+        const toml::table* source = (*sources)[i].as_table();
+        if (!source) continue;
+        const std::string entry = "[[source]] #" + std::to_string(i + 1);
+        if (const toml::node* node = source->get("velocity"))
+            reader.fail(entry + ".velocity",
+                        "a surface scene's sources add dye alone; driving the air belongs to grid "
+                        "scenes",
+                        node);
+        const toml::node* shape = source->get("shape");
+        if (shape && shape->value<std::string>() == "mesh")
+            reader.fail(entry + ".shape",
+                        "a surface scene's sources are balls or boxes in space; mesh sources fill "
+                        "a grid's cells",
+                        shape);
+    }
     if (const toml::node* node = root.get("smoke"))
         reader.fail("[smoke]",
                     "buoyancy and the smoke grid belong to grid scenes; a surface scene carries "
