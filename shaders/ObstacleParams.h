@@ -24,8 +24,8 @@ struct ObstacleRecord {
     float axis[3];     /* capsule: centre to one end of its segment */
     float scale;       /* mesh: world length per mesh unit */
     float velocity[3]; /* of its centre */
-    float pad1;
-    float spin[3]; /* angular velocity, rad/s, world frame */
+    float reach;       /* no point farther than this from its centre is in it */
+    float spin[3];     /* angular velocity, rad/s, world frame */
     float pad2;
     float orientation[12]; /* its shape's frame to world: three columns, each xyz and a pad */
     /* mesh: its level set (engine/simulation/SolidLevelSet.h), in the lattice buffer from

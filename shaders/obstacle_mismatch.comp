@@ -86,6 +86,8 @@ void main() {
         float value = 0.0;
         for (uint o = 0; o < params.obstacleCount; ++o) {
             const vec3 r = offset(obstacles[o], centre);
+            // Most faces lie far from every obstacle: skip the shape's test there.
+            if (dot(r, r) > obstacles[o].reach * obstacles[o].reach) continue;
             if (covers(obstacles[o], r)) {
                 // The solid's material velocity there: v + ω × r.
                 const vec3 solid = v3(obstacles[o].velocity) + cross(v3(obstacles[o].spin), r);

@@ -143,6 +143,14 @@ struct InitialSpec {
     double magneticWallLayer = 0.0;
 };
 
+/// An obstacle's or a source's orientation at `time`: turned by `degrees` about `axis` (through its
+/// centre) from the pose its shape keys describe.
+struct RotationKey {
+    double time = 0.0;
+    Vec3 axis{0.0, 0.0, 1.0};  ///< unit length
+    double degrees = 0.0;
+};
+
 /// A smoke/heat emitter (`[[source]]`): a ball, a box or a closed mesh (3D, world coordinates).
 struct SourceSpec {
     ShapeSpec shape;
@@ -155,6 +163,11 @@ struct SourceSpec {
     std::optional<Vec3> velocity = std::nullopt;
     /// mesh: emit from the shell this thick inside its surface; 0: from its whole volume.
     double thickness = 0.0;
+    /// Key frames moving it, as an obstacle's (`path`, `rotation`): its centre — a ball's centre,
+    /// a box's middle, a mesh's origin — follows `path`, and it turns about that centre; empty:
+    /// it stays where its shape keys put it.
+    std::vector<std::pair<double, Vec3>> path;
+    std::vector<RotationKey> rotation;
 };
 
 /// How smoke is carried (engine/README.md): RK2 semi-Lagrangian, or MacCormack with clamping (less
@@ -164,14 +177,6 @@ enum class AdvectionScheme { SemiLagrangian, MacCormack };
 /// A solid moving through the fluid on a key-framed path (`[[obstacle]]`); the fluid's normal
 /// velocity on the faces it covers is made to match its own (seed §6.3.5).
 enum class ObstacleShape { Ball, Box, Capsule, Mesh };
-
-/// An obstacle's orientation at `time`: turned by `degrees` about `axis` (through its centre)
-/// from the pose its shape keys describe.
-struct RotationKey {
-    double time = 0.0;
-    Vec3 axis{0.0, 0.0, 1.0};  ///< unit length
-    double degrees = 0.0;
-};
 
 struct ObstacleSpec {
     ObstacleShape shape = ObstacleShape::Ball;

@@ -70,6 +70,8 @@ void ObstacleCorrection::setObstacles(std::span<const MovingObstacle> obstacles,
         copy3(r.axis, spec.axis);
         r.radius = float(spec.radius);
         r.scale = float(spec.scale);
+        // Rounded up a little: float's rounding must not cut off a covered face.
+        r.reach = float(1.0001 * obstacles[o].reach() + 1e-6);
         r.shape = spec.shape == ObstacleShape::Box       ? OBSTACLE_BOX
                   : spec.shape == ObstacleShape::Capsule ? OBSTACLE_CAPSULE
                   : spec.shape == ObstacleShape::Mesh    ? OBSTACLE_MESH

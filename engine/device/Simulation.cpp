@@ -120,11 +120,15 @@ void Simulation::setIntegrator(Integrator integrator) {
 
 void Simulation::recordStep(std::vector<std::size_t>& boundaries) {
     const double dt = mSettings.dt;
-    // Emitters switch on and off at step boundaries; the device list changes only when they do.
+    // Emitters switch on and off at step boundaries; the device list changes only when they do,
+    // or when an active one moves.
     std::vector<bool> active(mSettings.emitters.size());
-    for (std::size_t e = 0; e < active.size(); ++e)
+    bool moving = false;
+    for (std::size_t e = 0; e < active.size(); ++e) {
         active[e] = mSettings.emitters[e].activeAt(mTime);
-    if (active != mActiveEmitters) {
+        moving = moving || (active[e] && mSettings.emitters[e].moves());
+    }
+    if (active != mActiveEmitters || moving) {
         mSmoke.setEmitters(activeEmitters(mSettings.emitters, mTime));
         mActiveEmitters = std::move(active);
     }

@@ -138,6 +138,29 @@ bool MovingObstacle::covers(const Vec3& point, const ObstaclePose& pose,
     return d[0] * d[0] + d[1] * d[1] + d[2] * d[2] <= spec.radius * spec.radius;
 }
 
+double MovingObstacle::reach() const {
+    switch (spec.shape) {
+        case ObstacleShape::Box:
+            return vec(spec.halfSize).norm();
+        case ObstacleShape::Capsule:
+            return vec(spec.axis).norm() + spec.radius;
+        case ObstacleShape::Mesh: {
+            double farthest = 0.0;
+            for (int corner = 0; corner < 8; ++corner) {
+                Eigen::Vector3d p;
+                for (int a = 0; a < 3; ++a)
+                    p[a] = levelSet->origin[a] +
+                           ((corner >> a) & 1) * (levelSet->samples[a] - 1) * levelSet->spacing;
+                farthest = std::max(farthest, p.norm());
+            }
+            return spec.scale * farthest;
+        }
+        case ObstacleShape::Ball:
+            break;
+    }
+    return spec.radius;
+}
+
 Vec3 MovingObstacle::velocityOf(const Vec3& point, const ObstaclePose& pose,
                                 const MacGrid& grid) const {
     Vec3 r{0.0, 0.0, 0.0};

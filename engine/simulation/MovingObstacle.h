@@ -56,6 +56,9 @@ struct MovingObstacle {
     /// ones at the minimum-image offset, so a solid on the seam covers both ends). A mesh
     /// obstacle samples its level set at Rᵀ(x − c) / scale.
     bool covers(const Vec3& point, const ObstaclePose& pose, const MacGrid& grid) const;
+    /// How far from its centre the solid reaches: no point farther is covered (spec and level
+    /// set; a mesh's is its lattice's farthest corner).
+    double reach() const;
     /// The velocity of the solid's material at a world point: v + ω × r, with r from the centre
     /// at the minimum-image offset.
     Vec3 velocityOf(const Vec3& point, const ObstaclePose& pose, const MacGrid& grid) const;

@@ -69,26 +69,28 @@ std::vector<MovingObstacle> SimulationSettings::velocityRegions(double t) const 
     std::vector<MovingObstacle> regions = obstacles;
     for (const SmokeEmitter& emitter : emitters) {
         if (!emitter.velocity || !emitter.activeAt(t)) continue;
+        // Its shape about its rest centre, moved and turned by its own key frames.
         ObstacleSpec region;
         std::shared_ptr<const SolidLevelSet> levelSet;
-        if (emitter.shape == EmitterShape::Mesh) {
-            // Its volume, in world coordinates: a mesh at the origin, unturned.
-            region.shape = ObstacleShape::Mesh;
-            region.path = {{0.0, {0.0, 0.0, 0.0}}};
-            levelSet = emitter.levelSet;
-        } else if (emitter.shape == EmitterShape::Box) {
-            region.shape = ObstacleShape::Box;
-            Vec3 centre{};
-            for (int a = 0; a < 3; ++a) {
-                centre[a] = 0.5 * (emitter.min[a] + emitter.max[a]);
-                region.halfSize[a] = 0.5 * (emitter.max[a] - emitter.min[a]);
-            }
-            region.path = {{0.0, centre}};
-        } else {
-            region.shape = ObstacleShape::Ball;
-            region.radius = emitter.radius;
-            region.path = {{0.0, emitter.centre}};
+        switch (emitter.shape) {
+            case EmitterShape::Mesh:  // world coordinates: a mesh whose centre is the origin
+                region.shape = ObstacleShape::Mesh;
+                levelSet = emitter.levelSet;
+                break;
+            case EmitterShape::Box:
+                region.shape = ObstacleShape::Box;
+                for (int a = 0; a < 3; ++a)
+                    region.halfSize[a] = 0.5 * (emitter.max[a] - emitter.min[a]);
+                break;
+            case EmitterShape::Ball:
+                region.shape = ObstacleShape::Ball;
+                region.radius = emitter.radius;
+                break;
         }
+        region.path = emitter.path.empty()
+                          ? std::vector<std::pair<double, Vec3>>{{0.0, emitter.restCentre()}}
+                          : emitter.path;
+        region.rotation = emitter.rotation;
         MovingObstacle jet(region, levelSet);
         jet.drive = emitter.velocity;
         regions.push_back(std::move(jet));

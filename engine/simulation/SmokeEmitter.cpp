@@ -2,11 +2,44 @@
 
 #include <string>
 
+#include <Eigen/Core>
+
 #include "engine/core/Error.h"
 
 namespace modeflow {
 
-bool SmokeEmitter::contains(const Vec3& point, int dim) const {
+Vec3 SmokeEmitter::restCentre() const {
+    switch (shape) {
+        case EmitterShape::Box:
+            return {0.5 * (min[0] + max[0]), 0.5 * (min[1] + max[1]), 0.5 * (min[2] + max[2])};
+        case EmitterShape::Mesh:
+            return {0.0, 0.0, 0.0};
+        case EmitterShape::Ball:
+            break;
+    }
+    return centre;
+}
+
+SmokeEmitter SmokeEmitter::placedAt(double t) const {
+    if (!moves()) return *this;
+    ObstacleSpec motion;
+    motion.path = path.empty() ? std::vector<std::pair<double, Vec3>>{{0.0, restCentre()}} : path;
+    motion.rotation = rotation;
+    SmokeEmitter placed = *this;
+    placed.placement = MovingObstacle(motion).poseAt(t);
+    return placed;
+}
+
+bool SmokeEmitter::contains(const Vec3& worldPoint, int dim) const {
+    Vec3 point = worldPoint;
+    if (placement) {
+        // Into its rest pose: Rᵀ(x − c(t)) + c(rest).
+        Eigen::Vector3d d;
+        for (int a = 0; a < 3; ++a) d[a] = a < dim ? worldPoint[a] - placement->centre[a] : 0.0;
+        const Eigen::Vector3d rest = placement->orientation.transpose() * d;
+        const Vec3 centre = restCentre();
+        for (int a = 0; a < 3; ++a) point[a] = a < dim ? rest[a] + centre[a] : worldPoint[a];
+    }
     if (shape == EmitterShape::Mesh) {
         if (!levelSet) throw Error("a mesh source has no level set: attach it before the run");
         const double depth = levelSet->depthAt(point);
@@ -23,12 +56,11 @@ bool SmokeEmitter::contains(const Vec3& point, int dim) const {
 }
 
 bool SmokeEmitter::contains(const Vec3& worldPoint, const MacGrid& grid) const {
-    Vec3 middle = centre;
-    if (shape == EmitterShape::Box)
-        middle = {0.5 * (min[0] + max[0]), 0.5 * (min[1] + max[1]), 0.5 * (min[2] + max[2])};
-    else if (shape == EmitterShape::Mesh && levelSet)
+    Vec3 middle = restCentre();
+    if (shape == EmitterShape::Mesh && levelSet)
         for (int a = 0; a < 3; ++a)
             middle[a] = levelSet->origin[a] + 0.5 * (levelSet->samples[a] - 1) * levelSet->spacing;
+    if (placement) middle = placement->centre;
     return contains(grid.nearestImage(worldPoint, middle), grid.dim);
 }
 
@@ -58,13 +90,15 @@ SmokeEmitter emitterFromSource(const SourceSpec& source) {
     emitter.start = source.start;
     emitter.end = source.end;
     emitter.velocity = source.velocity;
+    emitter.path = source.path;
+    emitter.rotation = source.rotation;
     return emitter;
 }
 
 std::vector<SmokeEmitter> activeEmitters(std::span<const SmokeEmitter> all, double t) {
     std::vector<SmokeEmitter> active;
     for (const SmokeEmitter& e : all)
-        if (e.activeAt(t)) active.push_back(e);
+        if (e.activeAt(t)) active.push_back(e.placedAt(t));
     return active;
 }
 

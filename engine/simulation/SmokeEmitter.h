@@ -10,11 +10,13 @@
 #include <memory>
 #include <optional>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "engine/core/MacGrid.h"
 #include "engine/core/RuntimeLimits.h"
 #include "engine/core/SceneSpec.h"
+#include "engine/simulation/MovingObstacle.h"
 #include "engine/simulation/SolidLevelSet.h"
 
 namespace modeflow {
@@ -35,12 +37,24 @@ struct SmokeEmitter {
     /// the thickness of the shell inside its surface it emits from (0: its whole volume).
     std::shared_ptr<const SolidLevelSet> levelSet = nullptr;
     double thickness = 0.0;
+    /// Key frames moving it (SourceSpec::path, rotation): its centre (restCentre()) follows
+    /// `path` and it turns about it. placedAt() puts it where they say at a time.
+    std::vector<std::pair<double, Vec3>> path{};
+    std::vector<RotationKey> rotation{};
+    /// Where placedAt() put it; none: at rest, where its shape fields say.
+    std::optional<ObstaclePose> placement = std::nullopt;
     /// The emitted air's velocity: while active, the velocity correction drives the fluid inside
     /// to it (SimulationSettings::velocityRegions); none: smoke and heat alone.
     std::optional<Vec3> velocity = std::nullopt;
 
     /// Whether the emitter emits during the step that starts at time t.
     bool activeAt(double t) const { return start <= t && t < end; }
+    /// Whether key frames move it.
+    bool moves() const { return !path.empty() || !rotation.empty(); }
+    /// Its centre at rest: a ball's centre, a box's middle, a mesh's origin (what `path` moves).
+    Vec3 restCentre() const;
+    /// This emitter where its key frames put it at time t (itself when nothing moves it).
+    SmokeEmitter placedAt(double t) const;
     /// Whether the point is inside (boundary included); only the first `dim` axes count (a
     /// surface's vertices: all three).
     bool contains(const Vec3& point, int dim) const;
@@ -50,7 +64,8 @@ struct SmokeEmitter {
     bool contains(const Vec3& point, const MacGrid& grid) const;
 };
 
-/// The emitters of `all` active at time t (SmokeEmitter::activeAt).
+/// The emitters of `all` active at time t (SmokeEmitter::activeAt), placed where they are then
+/// (SmokeEmitter::placedAt).
 std::vector<SmokeEmitter> activeEmitters(std::span<const SmokeEmitter> all, double t);
 
 /// The emitter of a scene's `[[source]]`; a mesh source's level set is attached afterwards

@@ -6,10 +6,7 @@
 #include "precompute/scene/SceneSections.h"
 
 namespace modeflow::scene {
-namespace {
 
-/// `rotation = [[t, ax, ay, az, degrees], ...]`: times increasing, axes of non-zero length
-/// (normalized here), about z alone in 2D.
 std::vector<RotationKey> readRotation(const TomlReader& reader, const Section& s) {
     std::vector<RotationKey> keys;
     const toml::node* node = s.table.get("rotation");
@@ -42,7 +39,35 @@ std::vector<RotationKey> readRotation(const TomlReader& reader, const Section& s
     return keys;
 }
 
-}  // namespace
+std::vector<std::pair<double, Vec3>> readPath(const TomlReader& reader, const Section& s,
+                                              bool required) {
+    std::vector<std::pair<double, Vec3>> keys;
+    const toml::node* node = s.table.get("path");
+    if (node == nullptr && !required) return keys;
+    const int dim = reader.dimension();
+    const std::string where = s.name + ".path";
+    const toml::array* path = node ? node->as_array() : nullptr;
+    if (path == nullptr || path->empty())
+        reader.fail(
+            where,
+            "expected an array of key frames [t, x, y" + std::string(dim == 3 ? ", z" : "") + "]",
+            node ? node : &s.table);
+    for (const toml::node& entry : *path) {
+        const toml::array* frame = entry.as_array();
+        if (frame == nullptr || frame->size() != std::size_t(dim + 1))
+            reader.fail(where,
+                        "each key frame is " + std::to_string(dim + 1) + " numbers [t, position]",
+                        &entry);
+        const double t = reader.numberValue((*frame)[0], where + " time");
+        Vec3 position{0.0, 0.0, 0.0};
+        for (int a = 0; a < dim; ++a)
+            position[a] = reader.numberValue((*frame)[std::size_t(a + 1)], where);
+        if (!keys.empty() && !(t > keys.back().first))
+            reader.fail(where, "key frame times must increase", &entry);
+        keys.emplace_back(t, position);
+    }
+    return keys;
+}
 
 ObstacleSpec readObstacle(const TomlReader& reader, const Section& s) {
     reader.checkKeys(s, kObstacleKeys);
@@ -82,28 +107,7 @@ ObstacleSpec readObstacle(const TomlReader& reader, const Section& s) {
         else
             unused("axis");
     }
-    const toml::node* node = s.table.get("path");
-    const std::string where = s.name + ".path";
-    const toml::array* path = node ? node->as_array() : nullptr;
-    if (path == nullptr || path->empty())
-        reader.fail(
-            where,
-            "expected an array of key frames [t, x, y" + std::string(dim == 3 ? ", z" : "") + "]",
-            node ? node : &s.table);
-    for (const toml::node& entry : *path) {
-        const toml::array* frame = entry.as_array();
-        if (frame == nullptr || frame->size() != std::size_t(dim + 1))
-            reader.fail(where,
-                        "each key frame is " + std::to_string(dim + 1) + " numbers [t, position]",
-                        &entry);
-        const double t = reader.numberValue((*frame)[0], where + " time");
-        Vec3 position{0.0, 0.0, 0.0};
-        for (int a = 0; a < dim; ++a)
-            position[a] = reader.numberValue((*frame)[std::size_t(a + 1)], where);
-        if (!obstacle.path.empty() && !(t > obstacle.path.back().first))
-            reader.fail(where, "key frame times must increase", &entry);
-        obstacle.path.emplace_back(t, position);
-    }
+    obstacle.path = readPath(reader, s, true);
     obstacle.rotation = readRotation(reader, s);
     return obstacle;
 }

@@ -55,8 +55,8 @@ inline constexpr std::string_view kObstacleKeys[] = {"shape", "radius", "half_si
 inline constexpr std::string_view kSmokeKeys[] = {"buoyancy", "resolution_scale", "advection"};
 inline constexpr std::string_view kForcingKeys[] = {"hold_modes", "hold_below_kappa"};
 inline constexpr std::string_view kOutputKeys[] = {"frames", "steps_per_frame"};
-inline constexpr std::string_view kSourceExtraKeys[] = {"density", "temperature", "start",
-                                                        "end",     "velocity",    "thickness"};
+inline constexpr std::string_view kSourceExtraKeys[] = {
+    "density", "temperature", "start", "end", "velocity", "thickness", "path", "rotation"};
 
 /// The `[initial]` keys each velocity choice reads besides `velocity`.
 std::span<const std::string_view> initialKeys(InitialVelocity velocity);

@@ -5,6 +5,7 @@
 /// in SceneValidation.h.
 
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "engine/core/SceneSpec.h"
@@ -45,6 +46,14 @@ SimulationSpec readSimulation(const TomlReader& reader, const Section& s);
 InitialSpec readInitial(const TomlReader& reader, const Section& s);
 /// `[[initial.vortex]]` entries of `[initial]` (`s`), at least one.
 std::vector<VortexSpec> readVortices(const TomlReader& reader, const Section& s);
+
+/// `path = [[t, x, y(, z)], ...]` of `s`: times increasing; empty when absent and not
+/// `required`.
+std::vector<std::pair<double, Vec3>> readPath(const TomlReader& reader, const Section& s,
+                                              bool required);
+/// `rotation = [[t, ax, ay, az, degrees], ...]` of `s`: times increasing, axes of non-zero length
+/// (normalized here), about z alone in 2D; empty when absent.
+std::vector<RotationKey> readRotation(const TomlReader& reader, const Section& s);
 
 SourceSpec readSource(const TomlReader& reader, const toml::table& table, int index);
 ObstacleSpec readObstacle(const TomlReader& reader, const Section& s);

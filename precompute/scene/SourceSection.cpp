@@ -17,6 +17,8 @@ SourceSpec readSource(const TomlReader& reader, const toml::table& table, int in
     source.start = reader.readNumber(s, "start", source.start, Sign::NonNegative);
     source.end = reader.readNumber(s, "end", source.end, Sign::Positive);
     source.velocity = reader.vector(s, "velocity");
+    source.path = readPath(reader, s, false);
+    source.rotation = readRotation(reader, s);
     if (source.shape.kind == ShapeKind::Mesh)
         source.thickness = reader.readNumber(s, "thickness", 0.0, Sign::Positive);
     else if (const toml::node* node = table.get("thickness"))

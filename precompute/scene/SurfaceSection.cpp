@@ -41,6 +41,12 @@ void checkSurfaceSceneTables(const TomlReader& reader, const toml::table& root) 
                         "a surface scene's sources add dye alone; driving the air belongs to grid "
                         "scenes",
                         node);
+        for (const char* key : {"path", "rotation"})
+            if (const toml::node* node = source->get(key))
+                reader.fail(entry + "." + key,
+                            "a surface scene's sources stay still; moving sources belong to grid "
+                            "scenes",
+                            node);
         const toml::node* shape = source->get("shape");
         if (shape && shape->value<std::string>() == "mesh")
             reader.fail(entry + ".shape",

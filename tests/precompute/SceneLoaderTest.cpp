@@ -765,13 +765,23 @@ TEST_F(SceneLoaderTest, MoreSourcesOrObstaclesThanTheRuntimeTakesAreRefusedAtLoa
                                  " obstacles take part in a simulation");
 }
 
-TEST_F(SceneLoaderTest, ASourceMayDriveTheAir) {
+TEST_F(SceneLoaderTest, ASourceMayDriveTheAirAndMove) {
     const std::string source = "[[source]]\nshape = \"box\"\nmin = [0, 0]\nmax = [0.1, 0.2]\n";
-    const SceneSpec scene =
-        parseScene(sceneFixture(k2d) + source + "velocity = [0.5, -1]\n" + source, "s.toml");
+    const SceneSpec scene = parseScene(sceneFixture(k2d) + source +
+                                           "velocity = [0.5, -1]\npath = [[0, 0, 0], [1, 0.5, 0]]\n"
+                                           "rotation = [[0, 0, 0, 1, 0], [1, 0, 0, 1, 90]]\n" +
+                                           source,
+                                       "s.toml");
     ASSERT_EQ(scene.sources.size(), 2u);
     EXPECT_EQ(scene.sources[0].velocity, (Vec3{0.5, -1.0, 0.0}));
+    ASSERT_EQ(scene.sources[0].path.size(), 2u);
+    EXPECT_EQ(scene.sources[0].path[1].second, (Vec3{0.5, 0.0, 0.0}));
+    ASSERT_EQ(scene.sources[0].rotation.size(), 2u);
+    EXPECT_EQ(scene.sources[0].rotation[1].degrees, 90.0);
     EXPECT_FALSE(scene.sources[1].velocity.has_value()) << "smoke alone unless asked";
+    EXPECT_TRUE(scene.sources[1].path.empty()) << "still unless asked";
+    EXPECT_CONTAINS(errorOf(sceneFixture(k2d) + source + "path = [[1, 0, 0], [0.5, 1, 0]]\n"),
+                    "[[source]] #1 (box).path: key frame times must increase");
 }
 
 TEST_F(SceneLoaderTest, RandomInitialVelocityTakesEnergySeedAndBand) {
@@ -1198,6 +1208,9 @@ TEST_F(SceneLoaderTest, SurfaceSceneRefusesTheGridsTablesAndKeys) {
         {surface + "[[source]]\nshape = \"ball\"\ncenter = [0, 0, 1]\nradius = 0.2\nvelocity = [1, "
                    "0, 0]\n",
          "[[source]] #1.velocity: a surface scene's sources add dye alone"},
+        {surface + "[[source]]\nshape = \"ball\"\ncenter = [0, 0, 1]\nradius = 0.2\npath = [[0, 0, "
+                   "0, 0]]\n",
+         "[[source]] #1.path: a surface scene's sources stay still"},
         {surface + "[[source]]\nshape = \"mesh\"\nfile = \"meshes/ball.obj\"\n",
          "[[source]] #1.shape: a surface scene's sources are balls or boxes in space"},
         {std::string(kSurface) + "[basis]\nvelocity_modes = 4\nwall = \"no-slip\"\n",

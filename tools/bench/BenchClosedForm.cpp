@@ -17,6 +17,10 @@
 ///                     advanceSteps(1), submission, waiting and the host's status reads included
 ///                     (lavapipe flushes its work at every timestamp, so device_step's sum of
 ///                     dispatch times is not the time a run sees)
+///   device_obstacle   device_step of the box with a rigid mesh obstacle of 10 000 triangles (a
+///                     torus, makeTorus(100, 50, ...), turning once a second): obstacles_ms (the
+///                     mismatch on its level set, projection, correction, reconstruction again)
+///                     and obstacle_share, its part of the whole step
 /// The state is the torus scene's initial vortices, and for the box (which starts at rest) a swirl
 /// of a twentieth of a turnover per step, so the midpoint rule iterates as in a run. Run:
 /// bench_closed_form [--device N] [--benchmark_filter=...].
@@ -41,6 +45,7 @@
 #include "engine/vulkan/CommandSequence.h"
 #include "engine/vulkan/DeviceBuffer.h"
 #include "precompute/Precompute.h"
+#include "precompute/geometry/MeshGenerator.h"
 #include "precompute/scene/SceneLoader.h"
 #include "tests/support/RandomCoefficients.h"
 #include "tools/bench/BenchDevice.h"
@@ -197,6 +202,43 @@ void deviceWall(benchmark::State& state, const char* file, Integrator integrator
     state.counters["iterations"] = iterations;
 }
 
+/// The box at `modes` with a turning 10 000-triangle torus mesh in its middle.
+const RunInputs& boxWithMeshObstacle(int modes) {
+    static std::map<int, std::unique_ptr<RunInputs>> runs;
+    if (!runs.count(modes)) {
+        runs.clear();
+        SceneSpec scene = shippedScene("box_closed_form_3d.toml", modes);
+        ObstacleSpec torus;
+        torus.shape = ObstacleShape::Mesh;
+        torus.meshFile = std::filesystem::temp_directory_path() / "modeflow_bench_torus.obj";
+        writeObj(torus.meshFile, makeTorus(100, 50, 0.2, 0.06));
+        torus.path = {{0.0, {0.5, 0.5, 0.5}}};
+        torus.rotation = {{0.0, {1.0, 0.0, 0.0}, 0.0}, {100.0, {1.0, 0.0, 0.0}, 36000.0}};
+        scene.obstacles = {torus};
+        Progress quiet = Progress::silent();
+        runs[modes] = std::make_unique<RunInputs>(prepareRun(scene, computeBasis(scene, quiet)));
+    }
+    return *runs[modes];
+}
+
+void deviceObstacleStep(benchmark::State& state) {
+    const RunInputs& run = boxWithMeshObstacle(int(state.range(0)));
+    const std::unique_ptr<Simulator> simulation = benchBackend().makeSimulator(run, true);
+    simulation->setVelocity(startingVelocity(run));
+    simulation->advanceSteps(3);
+    std::vector<double> obstacles, shares;
+    for (auto _ : state) {
+        const FrameStats stats = simulation->advanceSteps(1);
+        const double total = stats.forcesMs + stats.modalMs + stats.reconstructionMs +
+                             stats.obstaclesMs + stats.advectionMs;
+        state.SetIterationTime(total * 1e-3);
+        obstacles.push_back(stats.obstaclesMs);
+        shares.push_back(stats.obstaclesMs / total);
+    }
+    setMedian(state, "obstacles_ms", obstacles);
+    setMedian(state, "obstacle_share", shares);
+}
+
 constexpr const char* kBox = "box_closed_form_3d.toml";
 constexpr const char* kTorus = "torus_closed_form_2d.toml";
 
@@ -241,6 +283,12 @@ BENCHMARK_CAPTURE(deviceStep, torus_2d, kTorus, Integrator::Midpoint)
 BENCHMARK_CAPTURE(deviceStep, torus_2d_linearized, kTorus, Integrator::Linearized)
     ->Apply(torusSizes)
     ->Iterations(20)
+    ->UseManualTime();
+BENCHMARK(deviceObstacleStep)
+    ->ArgName("N")
+    ->Arg(1000)
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(5)
     ->UseManualTime();
 BENCHMARK_CAPTURE(deviceWall, box_3d, kBox, Integrator::Midpoint)
     ->Apply(boxSizes)

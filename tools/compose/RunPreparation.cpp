@@ -15,26 +15,37 @@
 namespace modeflow {
 namespace {
 
-/// Every [[source]] must cover a fluid smoke cell: one that emits into none is a typo in its
-/// position or size, and would silently add nothing.
+/// Every [[source]] must cover a fluid smoke cell (a moving one at its start or at one of its key
+/// frames while it emits): one that emits into none is a typo in its position or size, and
+/// would silently add nothing.
 void requireSourcesInFluid(const SceneSpec& scene, const RunInputs& run) {
     const MacGrid grid = MacGrid::fromSpec(run.cache.grid).refined(run.settings.smokeScale);
-    for (std::size_t e = 0; e < run.settings.emitters.size(); ++e) {
-        const SmokeEmitter& emitter = run.settings.emitters[e];
-        bool covers = false;
-        for (int z = 0; z < grid.cells[2] && !covers; ++z)
-            for (int y = 0; y < grid.cells[1] && !covers; ++y)
-                for (int x = 0; x < grid.cells[0] && !covers; ++x) {
+    const auto coversFluid = [&](const SmokeEmitter& emitter) {
+        for (int z = 0; z < grid.cells[2]; ++z)
+            for (int y = 0; y < grid.cells[1]; ++y)
+                for (int x = 0; x < grid.cells[0]; ++x) {
                     if (!run.smokeMask[std::size_t(grid.cellIndex(x, y, z))]) continue;
                     const Vec3 centre{grid.cellCentre(0, x), grid.cellCentre(1, y),
                                       grid.dim == 3 ? grid.cellCentre(2, z) : 0.0};
-                    covers = emitter.contains(centre, grid);
+                    if (emitter.contains(centre, grid)) return true;
                 }
+        return false;
+    };
+    for (std::size_t e = 0; e < run.settings.emitters.size(); ++e) {
+        const SmokeEmitter& emitter = run.settings.emitters[e];
+        std::vector<double> times{emitter.start};
+        for (const auto& [t, position] : emitter.path) times.push_back(t);
+        for (const RotationKey& key : emitter.rotation) times.push_back(key.time);
+        bool covers = false;
+        for (const double t : times)
+            if (!covers && (t == emitter.start || emitter.activeAt(t)))
+                covers = coversFluid(emitter.placedAt(t));
         if (!covers)
             throw Error(scene.sourceFile.string() + ": [[source]] #" + std::to_string(e + 1) +
                         " covers no fluid cell of the smoke grid: it lies outside the domain or is "
-                        "smaller than "
-                        "a smoke cell; move it into Ω or enlarge it");
+                        "smaller than a smoke cell" +
+                        (emitter.moves() ? " at its start and at each of its key frames" : "") +
+                        "; move it into Ω or enlarge it");
     }
 }
 
