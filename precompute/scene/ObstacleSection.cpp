@@ -3,7 +3,9 @@
 
 #include <cmath>
 
+#include "precompute/scene/SceneLoader.h"
 #include "precompute/scene/SceneSections.h"
+#include "precompute/scene/SceneWording.h"
 
 namespace modeflow::scene {
 
@@ -34,6 +36,12 @@ std::vector<RotationKey> readRotation(const TomlReader& reader, const Section& s
             reader.fail(where, "a 2D obstacle turns about z: the axis must be [0, 0, ±1]", &entry);
         if (!keys.empty() && !(key.time > keys.back().time))
             reader.fail(where, "key frame times must increase", &entry);
+        if (!keys.empty() && std::abs(key.degrees - keys.back().degrees) * M_PI / 180.0 >
+                                 kMaxInitialSpeed * (key.time - keys.back().time))
+            reader.fail(where,
+                        "turns faster than " + roughNumber(kMaxInitialSpeed) +
+                            " radians per unit time from the key frame before",
+                        &entry);
         keys.push_back(key);
     }
     return keys;
@@ -64,6 +72,16 @@ std::vector<std::pair<double, Vec3>> readPath(const TomlReader& reader, const Se
             position[a] = reader.numberValue((*frame)[std::size_t(a + 1)], where);
         if (!keys.empty() && !(t > keys.back().first))
             reader.fail(where, "key frame times must increase", &entry);
+        if (!keys.empty()) {
+            const Vec3& from = keys.back().second;
+            const double distance =
+                std::hypot(position[0] - from[0], position[1] - from[1], position[2] - from[2]);
+            if (distance > kMaxInitialSpeed * (t - keys.back().first))
+                reader.fail(where,
+                            "moves faster than " + roughNumber(kMaxInitialSpeed) +
+                                " scene units per unit time from the key frame before",
+                            &entry);
+        }
         keys.emplace_back(t, position);
     }
     return keys;

@@ -44,6 +44,7 @@ inline constexpr double kMaxCellsFromOrigin = 1e12;
 /// speed sqrt(2 energy / grid volume) of `energy` or of the modal amplitudes, the mean field of
 /// `magnetic_energy`, `magnetic_strength`, and a vortex's strength over the grid's longest side.
 /// Example scenes use about 1; 1e300 overflowed the squares of the dynamics into "energy = inf".
+/// A source's `velocity` is held to the same limit (a jet of 1e300 blew up the first step).
 inline constexpr double kMaxInitialSpeed = 1e6;
 /// Largest accepted cell count of the basis grid (2^27): beyond it no eigensolve finishes anyway.
 inline constexpr std::int64_t kMaxGridCells = std::int64_t{1} << 27;

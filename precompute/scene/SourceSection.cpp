@@ -1,7 +1,12 @@
 /// @file SourceSection.cpp
-/// `[[source]]`: a ball or box that emits smoke and heat between two times.
+/// `[[source]]`: a ball, box or mesh that emits smoke and heat between two times, may drive the
+/// air and may move on key frames.
 
+#include <cmath>
+
+#include "precompute/scene/SceneLoader.h"
 #include "precompute/scene/SceneSections.h"
+#include "precompute/scene/SceneWording.h"
 
 namespace modeflow::scene {
 
@@ -17,6 +22,15 @@ SourceSpec readSource(const TomlReader& reader, const toml::table& table, int in
     source.start = reader.readNumber(s, "start", source.start, Sign::NonNegative);
     source.end = reader.readNumber(s, "end", source.end, Sign::Positive);
     source.velocity = reader.vector(s, "velocity");
+    if (source.velocity) {
+        const Vec3& v = *source.velocity;
+        const double speed = std::hypot(v[0], v[1], v[2]);  // no overflow in the squares
+        if (speed > kMaxInitialSpeed)
+            reader.fail(s, "velocity",
+                        "speed " + roughNumber(speed) + " is beyond " +
+                            roughNumber(kMaxInitialSpeed) + " scene units per unit time",
+                        table.get("velocity"));
+    }
     source.path = readPath(reader, s, false);
     source.rotation = readRotation(reader, s);
     if (source.shape.kind == ShapeKind::Mesh)
