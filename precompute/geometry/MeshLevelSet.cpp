@@ -60,11 +60,10 @@ struct RawMesh {
     std::vector<openvdb::Vec3I> triangles;
 };
 
-/// The OBJ's triangles (ObjMesh.h) without those with a repeated vertex, which have no area.
-/// meshToLevelSet silently produces garbage signs for a surface with holes, so the surface
-/// must be closed (ClosedSurfaceCheck.h).
-RawMesh readObj(const fs::path& file) {
-    const TriangleMesh obj = readObjMesh(file);
+/// The mesh's triangles (read from `file` by ObjMesh.h) without those with a repeated vertex, which
+/// have no area. meshToLevelSet silently produces garbage signs for a surface with holes, so the
+/// surface must be closed (ClosedSurfaceCheck.h).
+RawMesh rawMesh(const TriangleMesh& obj, const fs::path& file) {
     requireClosedSurface(obj, file);
     RawMesh mesh;
     mesh.points.reserve(obj.vertices.size());
@@ -131,13 +130,18 @@ private:
 
 std::unique_ptr<ImplicitShape> loadMeshShape(const fs::path& objFile, double voxelSize,
                                              double halfWidthVoxels) {
+    return loadMeshShape(readObjMesh(objFile), objFile, voxelSize, halfWidthVoxels);
+}
+
+std::unique_ptr<ImplicitShape> loadMeshShape(const TriangleMesh& obj, const fs::path& objFile,
+                                             double voxelSize, double halfWidthVoxels) {
     const std::string name = objFile.string();
     if (!(voxelSize > 0.0) || !std::isfinite(voxelSize))
         throw Error("mesh file " + name + ": the level-set voxel size must be a positive number");
     if (!(halfWidthVoxels >= 1.0) || !std::isfinite(halfWidthVoxels))
         throw Error("mesh file " + name + ": the level-set half width must be at least 1 voxel");
 
-    const RawMesh mesh = readObj(objFile);
+    const RawMesh mesh = rawMesh(obj, objFile);
 
     requireSaneExtent(mesh, voxelSize, name);
     const double bandVoxels = surfaceArea(mesh) / (voxelSize * voxelSize) * 2.0 * halfWidthVoxels;

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <memory>
 
+#include "engine/core/TriangleMesh.h"
 #include "precompute/geometry/ImplicitShape.h"
 
 namespace modeflow {
@@ -25,6 +26,11 @@ namespace modeflow {
 ///        or would need more than 4e8 band voxels, encloses no voxel (flat, doubled, or thinner
 ///        than a voxel), or the voxel size is not a positive number.
 std::unique_ptr<ImplicitShape> loadMeshShape(const std::filesystem::path& objFile, double voxelSize,
+                                             double halfWidthVoxels = 3.0);
+
+/// The same for a mesh already read from `objFile` (readObjMesh; the file names it in messages).
+std::unique_ptr<ImplicitShape> loadMeshShape(const TriangleMesh& mesh,
+                                             const std::filesystem::path& objFile, double voxelSize,
                                              double halfWidthVoxels = 3.0);
 
 }  // namespace modeflow

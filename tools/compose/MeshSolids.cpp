@@ -55,7 +55,7 @@ SolidLevelSet sampleMesh(const std::filesystem::path& file, double scale, double
         solid.samples[a] = int(samples);
     }
     const auto shape =
-        loadMeshShape(file, spacing, std::max(3.0, std::ceil(depth / spacing) + 2.0));
+        loadMeshShape(mesh, file, spacing, std::max(3.0, std::ceil(depth / spacing) + 2.0));
     solid.depth.resize(std::size_t(total));
     std::size_t i = 0;
     for (int z = 0; z < solid.samples[2]; ++z)
