@@ -4,13 +4,13 @@
 #include <array>
 // The generated headers use uint32_t without including <cstdint>.
 #include <cstdint>
-#include <limits>
 #include <string>
 #include <vector>
 
 #include "engine/core/Error.h"
 #include "engine/device/DeviceCoefficients.h"
 #include "engine/device/DofFaces.h"
+#include "engine/device/ObstacleRecords.h"
 #include "engine/device/SeparableTransform.h"
 #include "engine/vulkan/CommandSequence.h"
 #include "shaders/ObstacleParams.h"
@@ -25,10 +25,6 @@ vulkan::DeviceBuffer zeros(const vulkan::VulkanContext& context, std::size_t cou
     return vulkan::DeviceBuffer::fromValues<float>(context, std::vector<float>(count, 0.0f), name);
 }
 
-void copy3(float to[3], const Vec3& from) {
-    for (int a = 0; a < 3; ++a) to[a] = float(from[a]);
-}
-
 }  // namespace
 
 ObstacleCorrection::ObstacleCorrection(const vulkan::VulkanContext& context,
@@ -41,7 +37,7 @@ ObstacleCorrection::ObstacleCorrection(const vulkan::VulkanContext& context,
       mObstacles(context, maxVelocityRegions * sizeof(shaders::ObstacleRecord), "obstacles"),
       mMismatch(zeros(context, std::size_t(mGrid.faceTotal()), "obstacle mismatch")),
       mCorrection(zeros(context, paddedSize(int(mModeCount)), "obstacle correction")),
-      mLattices(zeros(context, 1, "obstacle lattices")),
+      mLattices(context),
       mProjection(context, cache, FaceQuantity::FaceField),
       mMismatchKernel(context, {"obstacle_mismatch", obstacle_mismatch_spv, 5,
                                 sizeof(shaders::ObstacleMismatchParams), 64}),
@@ -54,63 +50,12 @@ void ObstacleCorrection::setObstacles(std::span<const MovingObstacle> obstacles,
                     " obstacles and driving sources; the runtime takes at most " +
                     std::to_string(maxVelocityRegions));
     requireLevelSets(obstacles);
-    const std::vector<std::uint32_t> latticeStarts = uploadLattices(obstacles);
-    std::vector<shaders::ObstacleRecord> records(obstacles.size());
-    for (std::size_t o = 0; o < obstacles.size(); ++o) {
-        const ObstacleSpec& spec = obstacles[o].spec;
-        const ObstaclePose pose = obstacles[o].poseAt(t);
-        shaders::ObstacleRecord& r = records[o];
-        copy3(r.centre, pose.centre);
-        copy3(r.velocity, pose.velocity);
-        copy3(r.spin, pose.angularVelocity);
-        for (int column = 0; column < 3; ++column)
-            for (int row = 0; row < 3; ++row)
-                r.orientation[4 * column + row] = float(pose.orientation(row, column));
-        copy3(r.halfSize, spec.halfSize);
-        copy3(r.axis, spec.axis);
-        r.radius = float(spec.radius);
-        r.scale = float(spec.scale);
-        // Rounded up a little: float's rounding must not cut off a covered face.
-        r.reach = float(1.0001 * obstacles[o].reach() + 1e-6);
-        r.shape = spec.shape == ObstacleShape::Box       ? OBSTACLE_BOX
-                  : spec.shape == ObstacleShape::Capsule ? OBSTACLE_CAPSULE
-                  : spec.shape == ObstacleShape::Mesh    ? OBSTACLE_MESH
-                                                         : OBSTACLE_BALL;
-        if (const SolidLevelSet* lattice = obstacles[o].levelSet.get()) {
-            copy3(r.latticeOrigin, lattice->origin);
-            r.latticeSpacing = float(lattice->spacing);
-            for (int a = 0; a < 3; ++a) r.latticeSamples[a] = std::uint32_t(lattice->samples[a]);
-            r.latticeStart = latticeStarts[o];
-        }
-    }
+    const std::vector<std::uint32_t> latticeStarts = mLattices.update(obstacles);
+    std::vector<shaders::ObstacleRecord> records;
+    for (std::size_t o = 0; o < obstacles.size(); ++o)
+        records.push_back(obstacleRecord(obstacles[o], obstacles[o].poseAt(t), latticeStarts[o]));
     if (!records.empty()) mObstacles.upload<shaders::ObstacleRecord>(records);
     mObstacleCount = std::uint32_t(records.size());
-}
-
-std::vector<std::uint32_t> ObstacleCorrection::uploadLattices(
-    std::span<const MovingObstacle> obstacles) {
-    std::vector<const SolidLevelSet*> sets;
-    std::vector<std::uint32_t> starts;
-    std::size_t total = 0;
-    for (const MovingObstacle& o : obstacles) {
-        sets.push_back(o.levelSet.get());
-        starts.push_back(std::uint32_t(total));
-        if (o.levelSet) total += o.levelSet->depth.size();
-    }
-    if (total > std::size_t(std::numeric_limits<std::uint32_t>::max()))
-        throw Error("the mesh obstacles' level sets hold " + std::to_string(total) +
-                    " samples; the device takes at most " +
-                    std::to_string(std::numeric_limits<std::uint32_t>::max()));
-    if (sets != mUploadedLattices) {
-        std::vector<float> depth;
-        depth.reserve(std::max<std::size_t>(total, 1));
-        for (const SolidLevelSet* set : sets)
-            if (set) depth.insert(depth.end(), set->depth.begin(), set->depth.end());
-        if (depth.empty()) depth.push_back(0.0f);
-        mLattices = vulkan::DeviceBuffer::fromValues<float>(mContext, depth, "obstacle lattices");
-        mUploadedLattices = std::move(sets);
-    }
-    return starts;
 }
 
 template <typename Project>
@@ -133,7 +78,7 @@ void ObstacleCorrection::recordWith(vulkan::CommandSequence& sequence,
         params.spacing[a] = float(mGrid.spacing[a]);
     }
     const std::array<const vulkan::DeviceBuffer*, 5> mismatchBuffers{
-        &mFaces, &faceField, &mObstacles, &mMismatch, &mLattices};
+        &mFaces, &faceField, &mObstacles, &mMismatch, &mLattices.buffer()};
     sequence.dispatch(mMismatchKernel, mismatchBuffers, params, groupsFor(mContext, mDofCount, 64));
     project();
     const std::array<const vulkan::DeviceBuffer*, 2> correctBuffers{&v, &mCorrection};

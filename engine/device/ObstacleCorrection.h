@@ -10,6 +10,7 @@
 
 #include "engine/core/MacGrid.h"
 #include "engine/device/ForceProjection.h"
+#include "engine/device/ObstacleLattices.h"
 #include "engine/format/BasisCache.h"
 #include "engine/simulation/MovingObstacle.h"
 #include "engine/vulkan/ComputeKernel.h"
@@ -46,9 +47,6 @@ public:
                 const vulkan::DeviceBuffer& faceField, const vulkan::DeviceBuffer& v) const;
 
 private:
-    /// Uploads the obstacles' lattices unless they are those already there; where each
-    /// obstacle's starts in mLattices.
-    std::vector<std::uint32_t> uploadLattices(std::span<const MovingObstacle> obstacles);
     /// The mismatch, then `project` (mismatch → correction), then v −= correction.
     template <typename Project>
     void recordWith(vulkan::CommandSequence& sequence, const vulkan::DeviceBuffer& faceField,
@@ -60,9 +58,7 @@ private:
     std::uint32_t mModeCount = 0;
     std::uint32_t mObstacleCount = 0;
     vulkan::DeviceBuffer mFaces, mObstacles, mMismatch, mCorrection;
-    /// Every mesh obstacle's lattice, one after the other, and which level sets it holds.
-    vulkan::DeviceBuffer mLattices;
-    std::vector<const SolidLevelSet*> mUploadedLattices;
+    ObstacleLattices mLattices;
     ForceProjectionKernel mProjection;
     vulkan::ComputeKernel mMismatchKernel, mCorrectKernel;
 };

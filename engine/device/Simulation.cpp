@@ -7,6 +7,7 @@
 #include "engine/core/Error.h"
 #include "engine/core/FaceLocation.h"
 #include "engine/dynamics/ModalDivergence.h"
+#include "engine/simulation/SmokeDisplacement.h"
 
 namespace modeflow::device {
 namespace {
@@ -24,7 +25,9 @@ SimulationSettings supported(SimulationSettings settings) {
 
 /// Dispatches one step may record, for the timestamp pool: the midpoint iterations dominate.
 std::uint32_t maxDispatchesPerStep(const ModalStepper& stepper) {
-    return std::uint32_t(kMaxSubsteps * stepper.dispatchesPerStep() + 64);
+    // The displacement's three stages a substep, boxes of up to four dispatches each.
+    return std::uint32_t(kMaxSubsteps * stepper.dispatchesPerStep() + 64 +
+                         3 * 4 * maxDisplacementSubsteps + 2);
 }
 
 std::vector<double> widened(const std::vector<float>& values) {
@@ -57,9 +60,11 @@ Simulation::Simulation(const vulkan::VulkanContext& context, const BasisCache& c
       mObstacles(context, cache),
       mSmoke(context, MacGrid::fromSpec(cache.grid), mSettings.smokeScale, smokeMask),
       mAdvection(context),
+      mDisplacement(context, mSmoke),
       mSequence(context, timestamps, maxDispatchesPerStep(mStepper)) {
     if (!(mSettings.dt > 0.0)) throw Error("simulation: dt must be positive");
     if (mSettings.stepsPerFrame < 1) throw Error("simulation: steps per frame must be at least 1");
+    requireDisplaceableMotion(mSettings.obstacles, mSettings.dt, mSmoke.smokeGrid());
 }
 
 void Simulation::restore(double time, const Eigen::VectorXd& v, const SmokeFields& smoke) {
@@ -101,6 +106,7 @@ void Simulation::setObstacles(std::vector<MovingObstacle> obstacles) {
     if (obstacles.size() > std::size_t(maxObstacles))
         throw Error("simulation: " + std::to_string(obstacles.size()) + " obstacles, at most " +
                     std::to_string(maxObstacles) + " move at once");
+    requireDisplaceableMotion(obstacles, mSettings.dt, mSmoke.smokeGrid());
     mSettings.obstacles = std::move(obstacles);
 }
 
@@ -167,6 +173,8 @@ void Simulation::recordStep(std::vector<std::size_t>& boundaries) {
     boundaries.push_back(mSequence.dispatchCount());
     mAdvection.record(mSequence, mSmoke, mFaceVelocity, dt, mSettings.advection);
     boundaries.push_back(mSequence.dispatchCount());
+    mDisplacement.record(mSequence, mSmoke, mSettings.obstacles, mTime, dt);
+    boundaries.push_back(mSequence.dispatchCount());
 }
 
 void Simulation::recordReconstruction() {
@@ -210,9 +218,10 @@ FrameStats Simulation::advanceSteps(int steps) {
         const std::vector<double>& times = mSequence.dispatchTimesMs();
         if (times.empty()) continue;
         ++stats.timedSteps;
-        const std::array<double*, 5> stages{&stats.forcesMs, &stats.modalMs,
+        // The smoke pushed out of solids counts to the obstacles.
+        const std::array<double*, 6> stages{&stats.forcesMs,         &stats.modalMs,
                                             &stats.reconstructionMs, &stats.obstaclesMs,
-                                            &stats.advectionMs};
+                                            &stats.advectionMs,      &stats.obstaclesMs};
         for (std::size_t stage = 0; stage < stages.size(); ++stage)
             for (std::size_t d = boundaries[stage]; d < boundaries[stage + 1]; ++d)
                 *stages[stage] += times[d];

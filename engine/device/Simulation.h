@@ -22,6 +22,7 @@
 #include "engine/device/ObstacleCorrection.h"
 #include "engine/device/SeparableTransform.h"
 #include "engine/device/SmokeAdvection.h"
+#include "engine/device/SmokeDisplacement.h"
 #include "engine/device/SmokeState.h"
 #include "engine/device/VelocityReconstruction.h"
 #include "engine/simulation/Simulator.h"
@@ -93,6 +94,7 @@ private:
     ObstacleCorrection mObstacles;
     SmokeState mSmoke;
     SmokeAdvectionKernels mAdvection;
+    SmokeDisplacement mDisplacement;
     mutable vulkan::CommandSequence
         mSequence;                      ///< also records faceMagneticField()'s reconstruction
     std::vector<bool> mActiveEmitters;  ///< what the device's emitter list holds now

@@ -10,6 +10,7 @@
 #include "engine/reference/ForceProjection.h"
 #include "engine/reference/ObstacleCorrection.h"
 #include "engine/reference/VelocityReconstruction.h"
+#include "engine/simulation/SmokeDisplacement.h"
 
 namespace modeflow::reference {
 
@@ -20,6 +21,7 @@ Simulation::Simulation(const BasisCache& cache, const StructuralCoefficients& co
       mSettings(std::move(settings)),
       mStepper(coefficients, mSettings),
       mAdvection(MacGrid::fromSpec(cache.grid), mSettings.smokeScale, std::move(smokeMask)),
+      mDisplacement(mAdvection.smokeGrid(), mAdvection.fluidMask()),
       mFaceVelocity(std::size_t(MacGrid::fromSpec(cache.grid).faceTotal()), 0.0) {
     if (!(mSettings.dt > 0.0)) throw Error("simulation: dt must be positive");
     if (mSettings.stepsPerFrame < 1) throw Error("simulation: steps per frame must be at least 1");
@@ -49,6 +51,7 @@ void Simulation::setObstacles(std::vector<MovingObstacle> obstacles) {
     if (obstacles.size() > std::size_t(maxObstacles))
         throw Error("simulation: " + std::to_string(obstacles.size()) + " obstacles, at most " +
                     std::to_string(maxObstacles) + " move at once");
+    requireDisplaceableMotion(obstacles, mSettings.dt, mAdvection.smokeGrid());
     mSettings.obstacles = std::move(obstacles);
 }
 
@@ -88,6 +91,7 @@ FrameStats Simulation::advanceSteps(int steps) {
         }
         mAdvection.step(std::span<const double>(mFaceVelocity), dt, mSettings.advection,
                         activeEmitters(mSettings.emitters, mTime), mFields);
+        mDisplacement.step(mSettings.obstacles, mTime, dt, mFields);
         mTime += dt;
         ++stats.steps;
     }

@@ -1,10 +1,10 @@
 #pragma once
 /// @file Simulation.h
 /// The whole step on the CPU, in double precision: forces from the smoke, the modal step,
-/// reconstruction, moving obstacles, advection — each stage this folder's reference of the
-/// device stage of the same name. What `--device cpu` runs and what device::Simulation is
-/// compared with. It also runs MHD (seed §6.3.5): the modal state is then [v; F] (MhdSystem),
-/// forces and moving obstacles act on v alone, and the smoke is carried by v.
+/// reconstruction, moving obstacles, advection, smoke pushed out of solids — each stage this
+/// folder's reference of the device stage of the same name. What `--device cpu` runs and what
+/// device::Simulation is compared with. It also runs MHD (seed §6.3.5): the modal state is then [v;
+/// F] (MhdSystem), forces and moving obstacles act on v alone, and the smoke is carried by v.
 
 #include <cstdint>
 #include <vector>
@@ -12,6 +12,7 @@
 #include "engine/basis/VelocityBasis.h"
 #include "engine/reference/ModalStepper.h"
 #include "engine/reference/SmokeAdvection.h"
+#include "engine/reference/SmokeDisplacement.h"
 #include "engine/simulation/Simulator.h"
 
 namespace modeflow::reference {
@@ -50,6 +51,7 @@ private:
     SimulationSettings mSettings;
     ModalStepper mStepper;
     SmokeAdvection mAdvection;
+    SmokeDisplacement mDisplacement;
     std::vector<ForceSplat> mSplats;
     std::vector<double> mFaceVelocity;
     SmokeFields mFields;

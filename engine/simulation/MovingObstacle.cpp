@@ -145,6 +145,7 @@ double MovingObstacle::reach() const {
         case ObstacleShape::Capsule:
             return vec(spec.axis).norm() + spec.radius;
         case ObstacleShape::Mesh: {
+            if (levelSet->radius > 0.0) return spec.scale * levelSet->radius;
             double farthest = 0.0;
             for (int corner = 0; corner < 8; ++corner) {
                 Eigen::Vector3d p;
@@ -159,6 +160,25 @@ double MovingObstacle::reach() const {
             break;
     }
     return spec.radius;
+}
+
+double MovingObstacle::surfaceSpeedBound(double t0, double t1) const {
+    if (drive) return 0.0;
+    double speed = 0.0, spin = 0.0;
+    const auto& path = spec.path;
+    for (std::size_t k = 1; k < path.size(); ++k)
+        if (path[k].first > t0 && path[k - 1].first < t1)
+            speed = std::max(speed, (vec(path[k].second) - vec(path[k - 1].second)).norm() /
+                                        (path[k].first - path[k - 1].first));
+    const auto& keys = spec.rotation;
+    for (std::size_t k = 1; k < keys.size(); ++k)
+        if (keys[k].time > t0 && keys[k - 1].time < t1) {
+            const double angle = sameAxis(keys[k - 1], keys[k])
+                                     ? radians(std::abs(keys[k].degrees - keys[k - 1].degrees))
+                                     : turnBetween(keys[k - 1], keys[k]).angle();
+            spin = std::max(spin, angle / (keys[k].time - keys[k - 1].time));
+        }
+    return speed + spin * reach();
 }
 
 Vec3 MovingObstacle::velocityOf(const Vec3& point, const ObstaclePose& pose,

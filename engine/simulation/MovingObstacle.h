@@ -57,8 +57,11 @@ struct MovingObstacle {
     /// obstacle samples its level set at Rᵀ(x − c) / scale.
     bool covers(const Vec3& point, const ObstaclePose& pose, const MacGrid& grid) const;
     /// How far from its centre the solid reaches: no point farther is covered (spec and level
-    /// set; a mesh's is its lattice's farthest corner).
+    /// set; a mesh's is its level set's radius, or its lattice's farthest corner).
     double reach() const;
+    /// An upper bound of the speed of any point of its surface during [t0, t1]: the fastest
+    /// path segment overlapping it plus the fastest rotation segment's |ω| × reach().
+    double surfaceSpeedBound(double t0, double t1) const;
     /// The velocity of the solid's material at a world point: v + ω × r, with r from the centre
     /// at the minimum-image offset.
     Vec3 velocityOf(const Vec3& point, const ObstaclePose& pose, const MacGrid& grid) const;

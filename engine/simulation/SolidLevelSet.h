@@ -18,6 +18,9 @@ struct SolidLevelSet {
     double spacing = 1.0;                 ///< between samples along every axis
     std::array<int, 3> samples{0, 0, 0};  ///< per axis
     std::vector<float> depth;             ///< x fastest, then y, then z
+    /// No point it covers lies farther than this from its frame's origin (a mesh's farthest
+    /// vertex plus a lattice diagonal); 0: not known, the lattice's farthest corner bounds it.
+    double radius = 0.0;
 
     /// The depth at `p`, trilinear between the samples; outside the lattice −spacing (outside:
     /// the lattice reaches beyond the solid on every side).

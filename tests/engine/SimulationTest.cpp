@@ -67,6 +67,20 @@ double maxDifference(const std::vector<double>& a, const std::vector<double>& b)
 
 class SimulationTest : public testing::VulkanTest {};
 
+/// The largest density in the smoke cells `solid` covers now.
+double maxInside(const Simulator& run, const MovingObstacle& solid) {
+    const MacGrid& grid = run.smokeGrid();
+    const std::vector<double> density = run.smoke().density;
+    const ObstaclePose pose = solid.poseAt(run.time());
+    double most = 0.0;
+    for (int z = 0; z < grid.cells[2]; ++z)
+        for (int y = 0; y < grid.cells[1]; ++y)
+            for (int x = 0; x < grid.cells[0]; ++x)
+                if (solid.covers(testing::cellCentre(grid, x, y, z), pose, grid))
+                    most = std::max(most, std::abs(density[std::size_t(grid.cellIndex(x, y, z))]));
+    return most;
+}
+
 TEST_P(SimulationTest, DeviceRunFollowsTheCpuReference) {
     for (const auto& [disk, scheme] : {std::pair{&hotDisk(), AdvectionScheme::SemiLagrangian},
                                        std::pair{&hotDisk(), AdvectionScheme::MacCormack},
@@ -391,7 +405,7 @@ TEST_P(SimulationTest, AMeshSourceMatchesTheCpuReference) {
 
 TEST_P(SimulationTest, AClosedFormBoxRunsOnItsTransformsAndFollowsTheCpuReference) {
     // A whole box with free-slip walls: closed-form modes, no columns on either side; buoyant
-    // smoke and a moving ball.
+    // smoke and a ball crossing the box full of smoke, which keeps none inside.
     SceneSpec scene = testing::gridScene({12, 10, 9}, {0.0, 0.0, 0.0}, {1.2, 1.0, 0.9}, 3);
     scene.name = "closed-form box";
     scene.basis.velocityModes = {{1, 80}};
@@ -415,6 +429,19 @@ TEST_P(SimulationTest, AClosedFormBoxRunsOnItsTransformsAndFollowsTheCpuReferenc
         device::Simulation device(context(), run.cache, *run.coefficients, settings, run.smokeMask,
                                   true);
         reference::Simulation cpu(run.cache, *run.coefficients, settings, run.smokeMask);
+        // The box full of smoke at 0.1 but where the ball starts, which the ball must push.
+        const MacGrid& grid = cpu.smokeGrid();
+        SmokeFields smoke{std::vector<double>(std::size_t(grid.cellCount()), 0.1),
+                          std::vector<double>(std::size_t(grid.cellCount()), 0.0)};
+        for (int z = 0; z < grid.cells[2]; ++z)
+            for (int y = 0; y < grid.cells[1]; ++y)
+                for (int x = 0; x < grid.cells[0]; ++x)
+                    if (settings.obstacles[0].covers(testing::cellCentre(grid, x, y, z),
+                                                     settings.obstacles[0].poseAt(0.0), grid))
+                        smoke.density[std::size_t(grid.cellIndex(x, y, z))] = 0.0;
+        const Eigen::VectorXd still = Eigen::VectorXd::Zero(cpu.velocity().size());
+        device.restore(0.0, still, smoke);
+        cpu.restore(0.0, still, smoke);
         FrameStats stats;
         for (int frame = 0; frame < 2; ++frame) {
             stats = device.advanceFrame();
@@ -435,6 +462,9 @@ TEST_P(SimulationTest, AClosedFormBoxRunsOnItsTransformsAndFollowsTheCpuReferenc
         EXPECT_LE(error, 1e-4);
         EXPECT_LE(faceError, 1e-4);
         EXPECT_LE(densityError, 1e-4);
+        // The ball pushed the smoke it met, on both backends: none inside it.
+        EXPECT_EQ(maxInside(device, settings.obstacles[0]), 0.0);
+        EXPECT_EQ(maxInside(cpu, settings.obstacles[0]), 0.0);
     }
     expectNoValidationMessages();
 }
@@ -486,6 +516,11 @@ TEST(SimulationResume, EveryBackendAndIntegratorContinuesBitForBitFromAnyStep) {
     const RunInputs& disk = hotDisk();
     SimulationSettings settings = disk.settings;
     settings.stepsPerFrame = 1;
+    // A ball crossing the smoke: its correction and the smoke it pushes resume too.
+    ObstacleSpec ball;
+    ball.radius = 0.15;
+    ball.path = {{0.0, {-0.3, -0.5, 0.0}}, {1.0, {0.3, 0.2, 0.0}}};
+    settings.obstacles = {MovingObstacle{ball}};
     RandomVelocitySpec swirl;
     swirl.energy = 0.05;
     const Eigen::VectorXd v0 = randomVelocity(disk.coefficients->size(), swirl);

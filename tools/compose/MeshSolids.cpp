@@ -64,6 +64,10 @@ SolidLevelSet sampleMesh(const std::filesystem::path& file, double scale, double
                 solid.depth[i++] = float(
                     shape->value({solid.origin[0] + x * spacing, solid.origin[1] + y * spacing,
                                   solid.origin[2] + z * spacing}));
+    // The solid lies inside its vertices' hull; trilinear depth may reach a diagonal beyond.
+    for (const Vec3& p : mesh.vertices)
+        solid.radius = std::max(solid.radius, std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]));
+    solid.radius += std::sqrt(3.0) * spacing;
     return solid;
 }
 

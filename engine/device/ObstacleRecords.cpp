@@ -1,0 +1,41 @@
+#include "engine/device/ObstacleRecords.h"
+
+namespace modeflow::device {
+namespace {
+
+void copy3(float to[3], const Vec3& from) {
+    for (int a = 0; a < 3; ++a) to[a] = float(from[a]);
+}
+
+}  // namespace
+
+shaders::ObstacleRecord obstacleRecord(const MovingObstacle& obstacle, const ObstaclePose& pose,
+                                       std::uint32_t latticeStart) {
+    const ObstacleSpec& spec = obstacle.spec;
+    shaders::ObstacleRecord r{};
+    copy3(r.centre, pose.centre);
+    copy3(r.velocity, pose.velocity);
+    copy3(r.spin, pose.angularVelocity);
+    for (int column = 0; column < 3; ++column)
+        for (int row = 0; row < 3; ++row)
+            r.orientation[4 * column + row] = float(pose.orientation(row, column));
+    copy3(r.halfSize, spec.halfSize);
+    copy3(r.axis, spec.axis);
+    r.radius = float(spec.radius);
+    r.scale = float(spec.scale);
+    // Rounded up a little: float's rounding must not cut off a covered point.
+    r.reach = float(1.0001 * obstacle.reach() + 1e-6);
+    r.shape = spec.shape == ObstacleShape::Box       ? OBSTACLE_BOX
+              : spec.shape == ObstacleShape::Capsule ? OBSTACLE_CAPSULE
+              : spec.shape == ObstacleShape::Mesh    ? OBSTACLE_MESH
+                                                     : OBSTACLE_BALL;
+    if (const SolidLevelSet* lattice = obstacle.levelSet.get()) {
+        copy3(r.latticeOrigin, lattice->origin);
+        r.latticeSpacing = float(lattice->spacing);
+        for (int a = 0; a < 3; ++a) r.latticeSamples[a] = std::uint32_t(lattice->samples[a]);
+        r.latticeStart = latticeStart;
+    }
+    return r;
+}
+
+}  // namespace modeflow::device

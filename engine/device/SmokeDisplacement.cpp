@@ -1,0 +1,120 @@
+#include "engine/device/SmokeDisplacement.h"
+
+#include <algorithm>
+#include <string>
+#include <vector>
+
+#include "engine/core/Error.h"
+#include "engine/core/RuntimeLimits.h"
+#include "engine/device/ObstacleRecords.h"
+#include "engine/device/SmokeState.h"
+#include "engine/simulation/SmokeDisplacement.h"
+#include "engine/vulkan/CommandSequence.h"
+#include "engine/vulkan/VulkanContext.h"
+#include "shaders/SmokeDisplaceParams.h"
+#include "shaders/smoke_displace.spv.h"
+
+namespace modeflow::device {
+namespace {
+
+constexpr std::uint32_t kWorkgroupSize = 64;
+/// Stamps live in the top 24 bits of the cover and target words.
+constexpr std::uint32_t kStampLimit = 1u << 24;
+
+vulkan::ComputeKernel stageKernel(const vulkan::VulkanContext& context, std::uint32_t stage) {
+    return vulkan::ComputeKernel(context,
+                                 vulkan::ComputeKernelSpec{"smoke_displace",
+                                                           smoke_displace_spv,
+                                                           8,
+                                                           sizeof(shaders::SmokeDisplaceParams),
+                                                           kWorkgroupSize,
+                                                           {stage}});
+}
+
+vulkan::DeviceBuffer zeroWords(const vulkan::VulkanContext& context, std::int64_t count,
+                               const char* name) {
+    return vulkan::DeviceBuffer::fromValues<std::uint32_t>(
+        context, std::vector<std::uint32_t>(std::size_t(std::max<std::int64_t>(count, 1)), 0u),
+        name);
+}
+
+}  // namespace
+
+SmokeDisplacement::SmokeDisplacement(const vulkan::VulkanContext& context, const SmokeState& state)
+    : mContext(context),
+      mPoses(context,
+             std::size_t(maxDisplacementSubsteps) * maxObstacles * sizeof(shaders::ObstacleRecord),
+             "solid poses"),
+      mCover(zeroWords(context, state.cellCount(), "smoke cover")),
+      mTarget(zeroWords(context, state.cellCount(), "smoke push targets")),
+      mLattices(context),
+      mStages{stageKernel(context, SMOKE_DISPLACE_COVER), stageKernel(context, SMOKE_DISPLACE_PUSH),
+              stageKernel(context, SMOKE_DISPLACE_GATHER)} {}
+
+void SmokeDisplacement::record(vulkan::CommandSequence& sequence, SmokeState& state,
+                               std::span<const MovingObstacle> solids, double t, double dt) {
+    if (solids.empty()) return;
+    if (solids.size() > std::size_t(maxObstacles))
+        throw Error("smoke displacement: " + std::to_string(solids.size()) + " solids, at most " +
+                    std::to_string(maxObstacles));
+    requireLevelSets(solids);
+    const MacGrid& grid = state.smokeGrid();
+    const int substeps = displacementSubsteps(solids, t, dt, grid);
+    const std::vector<std::uint32_t> latticeStarts = mLattices.update(solids);
+
+    std::vector<ObstaclePose> poses(solids.size());
+    std::vector<CellBox> boxes;
+    std::vector<shaders::ObstacleRecord> records;
+    for (int k = 1; k <= substeps; ++k) {
+        const double time = t + dt * double(k) / double(substeps);
+        for (std::size_t o = 0; o < solids.size(); ++o) {
+            poses[o] = solids[o].poseAt(time);
+            records.push_back(obstacleRecord(solids[o], poses[o], latticeStarts[o]));
+        }
+        boxes.push_back(displacementBox(solids, poses, grid));
+    }
+    mPoses.upload<shaders::ObstacleRecord>(records);
+
+    shaders::SmokeDisplaceParams params{};
+    params.dim = std::uint32_t(grid.dim);
+    params.periodic = grid.periodicBits();
+    for (int a = 0; a < 3; ++a) {
+        params.cells[a] = std::uint32_t(grid.cells[a]);
+        params.origin[a] = float(grid.origin[a]);
+        params.spacing[a] = float(grid.spacing[a]);
+    }
+    params.obstacleCount = std::uint32_t(solids.size());
+    params.dt = float(dt);
+    // Bindings 0-7 of shaders/smoke_displace.comp.
+    const std::array<const vulkan::DeviceBuffer*, 8> buffers{
+        &mPoses,  &mLattices.buffer(), &state.mask(),        &mCover,
+        &mTarget, &state.fields(),     &state.temperature(), &state.hat()};
+    const std::int64_t perDispatch =
+        std::int64_t(mContext.properties().limits.maxComputeWorkGroupCount[0]) * kWorkgroupSize;
+    for (int k = 0; k < substeps; ++k) {
+        if (++mStamp == kStampLimit) {
+            // Every stamp used: clear the words, whose stale stamps would otherwise come back.
+            sequence.fill(mCover, mCover.bytes(), 0u);
+            sequence.fill(mTarget, mTarget.bytes(), 0u);
+            mStamp = 1;
+        }
+        const CellBox& box = boxes[std::size_t(k)];
+        if (box.cellCount() == 0) continue;
+        params.stamp = mStamp;
+        params.firstRecord = std::uint32_t(std::size_t(k) * solids.size());
+        params.boxCells = std::uint32_t(box.cellCount());
+        for (int a = 0; a < 3; ++a) {
+            params.boxFirst[a] = box.first[a];
+            params.boxCount[a] = std::uint32_t(box.count[a]);
+        }
+        for (const vulkan::ComputeKernel& stage : mStages)
+            for (std::int64_t first = 0; first < box.cellCount(); first += perDispatch) {
+                params.firstInvocation = std::uint32_t(first);
+                const std::int64_t chunk = std::min(perDispatch, box.cellCount() - first);
+                sequence.dispatch(stage, buffers, params,
+                                  std::uint32_t((chunk + kWorkgroupSize - 1) / kWorkgroupSize));
+            }
+    }
+}
+
+}  // namespace modeflow::device
