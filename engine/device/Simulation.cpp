@@ -24,10 +24,13 @@ SimulationSettings supported(SimulationSettings settings) {
 }
 
 /// Dispatches one step may record, for the timestamp pool: the midpoint iterations dominate.
-std::uint32_t maxDispatchesPerStep(const ModalStepper& stepper) {
-    // The displacement's three stages a substep, boxes of up to four dispatches each.
+std::uint32_t maxDispatchesPerStep(const ModalStepper& stepper, const SmokeState& smoke) {
+    // The displacement's three stages a substep, each over a box of at most every smoke cell,
+    // in dispatches of at least 65535 groups of 64 (the least maxComputeWorkGroupCount), and
+    // two fills when its stamps wrap.
+    const std::int64_t boxDispatches = (smoke.cellCount() + 65535 * 64 - 1) / (65535 * 64);
     return std::uint32_t(kMaxSubsteps * stepper.dispatchesPerStep() + 64 +
-                         3 * 4 * maxDisplacementSubsteps + 2);
+                         3 * boxDispatches * maxDisplacementSubsteps + 2);
 }
 
 std::vector<double> widened(const std::vector<float>& values) {
@@ -61,7 +64,7 @@ Simulation::Simulation(const vulkan::VulkanContext& context, const BasisCache& c
       mSmoke(context, MacGrid::fromSpec(cache.grid), mSettings.smokeScale, smokeMask),
       mAdvection(context),
       mDisplacement(context, mSmoke),
-      mSequence(context, timestamps, maxDispatchesPerStep(mStepper)) {
+      mSequence(context, timestamps, maxDispatchesPerStep(mStepper, mSmoke)) {
     if (!(mSettings.dt > 0.0)) throw Error("simulation: dt must be positive");
     if (mSettings.stepsPerFrame < 1) throw Error("simulation: steps per frame must be at least 1");
     requireDisplaceableMotion(mSettings.obstacles, mSettings.dt, mSmoke.smokeGrid());
