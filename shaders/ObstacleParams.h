@@ -14,6 +14,7 @@ using uint = std::uint32_t;
 #define OBSTACLE_BOX 1u
 #define OBSTACLE_CAPSULE 2u
 #define OBSTACLE_MESH 3u
+#define OBSTACLE_RIGID 0xffffffffu
 
 /* One obstacle at the step's time (std430: ten vec4s). */
 struct ObstacleRecord {
@@ -21,12 +22,13 @@ struct ObstacleRecord {
     float radius;      /* ball, capsule */
     float halfSize[3]; /* box */
     uint shape;
-    float axis[3];     /* capsule: centre to one end of its segment */
-    float scale;       /* mesh: world length per mesh unit */
-    float velocity[3]; /* of its centre */
-    float reach;       /* no point farther than this from its centre is in it */
-    float spin[3];     /* angular velocity, rad/s, world frame */
-    float pad2;
+    float axis[3];         /* capsule: centre to one end of its segment */
+    float scale;           /* mesh: world length per mesh unit */
+    float velocity[3];     /* of its centre */
+    float reach;           /* no point farther than this from its centre is in it */
+    float spin[3];         /* angular velocity, rad/s, world frame */
+    uint velocityStart;    /* mesh, deforming: its material's velocity in the lattice buffer (xyz
+                              per sample, mesh units per unit time); OBSTACLE_RIGID: none */
     float orientation[12]; /* its shape's frame to world: three columns, each xyz and a pad */
     /* mesh: its level set (engine/simulation/SolidLevelSet.h), in the lattice buffer from
        latticeStart, samples x fastest */

@@ -10,12 +10,15 @@ namespace modeflow::shaders {
 using uint = std::uint32_t;
 #endif
 
-/* The three stages of a substep, the kernel's specialization constant 1. */
-#define SMOKE_DISPLACE_COVER 0u  /* which solid covers each fluid cell of the box */
+/* The stages of a substep, the kernel's specialization constant 1. */
+#define SMOKE_DISPLACE_COVER 0u  /* which solid covers each fluid cell of the box; list them */
 #define SMOKE_DISPLACE_PUSH 1u   /* covered cells: where their smoke goes, stashed, then 0 */
-#define SMOKE_DISPLACE_GATHER 2u /* free cells: what their covered neighbours push to them */
+#define SMOKE_DISPLACE_GATHER 2u /* receiving cells: what their covered neighbours push to them */
+#define SMOKE_DISPLACE_ARGS 3u   /* the lists' stages' indirect dispatch arguments */
 /* A target word's low byte when a covered cell has no free neighbour: its smoke is removed. */
 #define SMOKE_DISPLACE_NOWHERE 255u
+/* A free cell's target word's low byte once it is listed to receive smoke in the substep. */
+#define SMOKE_DISPLACE_RECEIVES 254u
 
 struct SmokeDisplaceParams {
     int boxFirst[3]; /* the box's first cell; wraps along periodic axes */
@@ -31,7 +34,7 @@ struct SmokeDisplaceParams {
     uint obstacleCount;
     float dt;
     uint firstInvocation; /* of this dispatch, when a box needs several */
-    uint pad0;
+    uint maxGroups;       /* the device's maxComputeWorkGroupCount[0] */
 };
 
 #ifdef __cplusplus

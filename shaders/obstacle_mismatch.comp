@@ -1,7 +1,8 @@
 #version 450
 // Moving obstacles (seed section 6.3.5; CPU reference engine/simulation/MovingObstacle.cpp): on
 // every velocity DOF face whose centre an obstacle covers (in its turned frame), the fluid's face
-// velocity minus the velocity of the obstacle's material there (v + w x r) along the face normal,
+// velocity minus the velocity of the obstacle's material there (v + w x r, and a deforming mesh's
+// own) along the face normal,
 // written into a face field of the whole grid (other faces keep the 0 they were created with).
 // project_force.comp then projects it on the basis (face-field weights: the exact inverse of the
 // reconstruction) and modal_correct.comp subtracts the result from v. One invocation per DOF,
@@ -38,8 +39,7 @@ void main() {
             const vec3 r = obstacleOffset(obstacles[o], centre, params.dim, box, params.periodic);
             if (!withinReach(obstacles[o], r)) continue;
             if (covers(obstacles[o], r)) {
-                // The solid's material velocity there: v + ω × r.
-                const vec3 solid = v3(obstacles[o].velocity) + cross(v3(obstacles[o].spin), r);
+                const vec3 solid = materialVelocity(obstacles[o], r);
                 value = velocity[face] - solid[axis];
                 break;
             }

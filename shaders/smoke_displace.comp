@@ -1,13 +1,18 @@
 #version 450
 // Smoke pushed out of solids, one substep's stage (rule and reasons: engine/simulation/
 // SmokeDisplacement.h; CPU reference engine/reference/SmokeDisplacement.cpp; host side
-// engine/device/SmokeDisplacement.cpp). One invocation per cell of the box around the solids,
-// the stage a specialization constant:
-//   cover:  which solid (the first) covers each fluid cell: cover word = stamp << 8 | solid;
-//   push:   each covered cell picks the free fluid neighbour most nearly along the solid's
-//           material velocity (outward where it is still), stashes its smoke and holds 0;
-//   gather: each free fluid cell adds what its covered neighbours pushed to it, in offset order.
-// Words carrying another substep's stamp are stale: nothing clears them between substeps.
+// engine/device/SmokeDisplacement.cpp), the stage a specialization constant:
+//   cover:  over every cell of the box around the solids: which solid (the first) covers each
+//           fluid cell, cover word = stamp << 8 | solid; covered cells go to a list;
+//   args:   one invocation: the indirect dispatch arguments of the lists' stages;
+//   push:   over the covered cells' list: each picks the free fluid neighbour most nearly along
+//           the solid's material velocity (outward where it is still), stashes its smoke and holds
+//           0; the neighbours receiving smoke go to a second list, once each (their target word
+//           marked with the stamp by an atomic exchange);
+//   gather: over the receivers' list: each adds what its covered neighbours pushed to it, in
+//           offset order (the sums do not depend on the lists' order).
+// Words carrying another substep's stamp are stale: nothing clears them between substeps. The
+// lists' stages loop grid-stride, so lists longer than one dispatch's groups are covered.
 #extension GL_GOOGLE_include_directive : require
 #include "FaceLocation.glsl"
 #include "ObstacleParams.h"
@@ -24,6 +29,15 @@ layout(std430, set = 0, binding = 4) buffer Target { uint target[]; };
 layout(std430, set = 0, binding = 5) buffer Fields { vec2 fields[]; };  // (density, temperature)
 layout(std430, set = 0, binding = 6) writeonly buffer Temperature { float temperature[]; };
 layout(std430, set = 0, binding = 7) buffer Stash { vec2 stash[]; };
+// The push and gather dispatches' arguments (x, y, z), then the lists' lengths.
+layout(std430, set = 0, binding = 8) buffer Work {
+    uint pushGroups[3];
+    uint coveredCount;
+    uint gatherGroups[3];
+    uint receiverCount;
+};
+layout(std430, set = 0, binding = 9) buffer Covered { uint covered[]; };
+layout(std430, set = 0, binding = 10) buffer Receivers { uint receivers[]; };
 layout(push_constant) uniform Push { SmokeDisplaceParams params; };
 #include "ObstacleShape.glsl"
 
@@ -74,6 +88,7 @@ void coverStage(uint cell, ivec3 p) {
         if (!withinReach(solid, r)) continue;
         if (covers(solid, r)) {
             cover[cell] = (params.stamp << 8u) | o;
+            covered[atomicAdd(coveredCount, 1u)] = cell;
             return;
         }
     }
@@ -83,8 +98,8 @@ void pushStage(uint cell, ivec3 p) {
     if (!isCovered(cell)) return;
     const ObstacleRecord solid = obstacles[params.firstRecord + (cover[cell] & 0xffu)];
     const vec3 r = obstacleOffset(solid, centreOf(p), params.dim, gridBox(), params.periodic);
-    // The solid's material velocity there (v + w x r) in cells, else outward.
-    vec3 d = (v3(solid.velocity) + cross(v3(solid.spin), r)) / spacing();
+    // The solid's material velocity there in cells, else outward.
+    vec3 d = materialVelocity(solid, r) / spacing();
     if (params.dim == 2u) d.z = 0.0;
     if (length(d) * params.dt < 1e-3) d = r / spacing();
     const float len = length(d);
@@ -101,6 +116,12 @@ void pushStage(uint cell, ivec3 p) {
         }
     }
     target[cell] = (params.stamp << 8u) | best;
+    if (best != SMOKE_DISPLACE_NOWHERE) {
+        // A free cell's target word is unused (gather reads covered cells' alone): mark it.
+        const uint to = uint(cellAt(p + offsetAt(best)));
+        const uint mark = (params.stamp << 8u) | SMOKE_DISPLACE_RECEIVES;
+        if (atomicExchange(target[to], mark) != mark) receivers[atomicAdd(receiverCount, 1u)] = to;
+    }
     stash[cell] = fields[cell];
     fields[cell] = vec2(0.0);
     temperature[cell] = 0.0;
@@ -123,18 +144,36 @@ void gatherStage(uint cell, ivec3 p) {
     }
 }
 
+ivec3 positionOf(uint cell) {
+    const uint x = cell % params.cells[0], rest = cell / params.cells[0];
+    return ivec3(int(x), int(rest % params.cells[1]), int(rest / params.cells[1]));
+}
+
+uint groupsFor(uint count) { return min((count + 63u) / 64u, params.maxGroups); }
+
 void main() {
-    const uint i = params.firstInvocation + gl_GlobalInvocationID.x;
-    if (i >= params.boxCells) return;
-    const uint x = i % params.boxCount[0], rest = i / params.boxCount[0];
-    const uint y = rest % params.boxCount[1], z = rest / params.boxCount[1];
-    const ivec3 p = wrapped(ivec3(params.boxFirst[0] + int(x), params.boxFirst[1] + int(y),
-                                  params.boxFirst[2] + int(z)));
-    const uint cell = uint(cellAt(p));  // the box lies on the grid once wrapped
-    if (stage == SMOKE_DISPLACE_COVER)
-        coverStage(cell, p);
-    else if (stage == SMOKE_DISPLACE_PUSH)
-        pushStage(cell, p);
-    else
-        gatherStage(cell, p);
+    if (stage == SMOKE_DISPLACE_ARGS) {
+        if (gl_GlobalInvocationID.x != 0u) return;
+        pushGroups = uint[3](groupsFor(coveredCount), 1u, 1u);
+        gatherGroups = uint[3](groupsFor(receiverCount), 1u, 1u);
+        return;
+    }
+    if (stage == SMOKE_DISPLACE_COVER) {
+        const uint i = params.firstInvocation + gl_GlobalInvocationID.x;
+        if (i >= params.boxCells) return;
+        const uint x = i % params.boxCount[0], rest = i / params.boxCount[0];
+        const uint y = rest % params.boxCount[1], z = rest / params.boxCount[1];
+        const ivec3 p = wrapped(ivec3(params.boxFirst[0] + int(x), params.boxFirst[1] + int(y),
+                                      params.boxFirst[2] + int(z)));
+        coverStage(uint(cellAt(p)), p);  // the box lies on the grid once wrapped
+        return;
+    }
+    const uint stride = gl_NumWorkGroups.x * gl_WorkGroupSize.x;
+    if (stage == SMOKE_DISPLACE_PUSH) {
+        for (uint i = gl_GlobalInvocationID.x; i < coveredCount; i += stride)
+            pushStage(covered[i], positionOf(covered[i]));
+    } else {
+        for (uint i = gl_GlobalInvocationID.x; i < receiverCount; i += stride)
+            gatherStage(receivers[i], positionOf(receivers[i]));
+    }
 }

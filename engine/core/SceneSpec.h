@@ -187,6 +187,9 @@ struct ObstacleSpec {
     /// obstacle's centre, its coordinates times `scale` are world lengths.
     std::filesystem::path meshFile;
     double scale = 1.0;  ///< mesh
+    /// mesh: a deforming one's files per simulated second (`sequence_rate`): `meshFile` names a
+    /// numbered sequence (MeshSequence.h), file k shown from (k − 1) / rate; 0: one rigid file.
+    double sequenceRate = 0.0;
     /// Key frames (time, centre), times increasing; the centre moves linearly between them and
     /// holds still before the first and after the last.
     std::vector<std::pair<double, Vec3>> path;

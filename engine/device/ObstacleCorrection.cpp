@@ -50,10 +50,10 @@ void ObstacleCorrection::setObstacles(std::span<const MovingObstacle> obstacles,
                     " obstacles and driving sources; the runtime takes at most " +
                     std::to_string(maxVelocityRegions));
     requireLevelSets(obstacles);
-    const std::vector<std::uint32_t> latticeStarts = mLattices.update(obstacles);
+    mLattices.update(obstacles);
     std::vector<shaders::ObstacleRecord> records;
-    for (std::size_t o = 0; o < obstacles.size(); ++o)
-        records.push_back(obstacleRecord(obstacles[o], obstacles[o].poseAt(t), latticeStarts[o]));
+    for (const MovingObstacle& obstacle : obstacles)
+        records.push_back(obstacleRecord(obstacle, obstacle.poseAt(t), mLattices));
     if (!records.empty()) mObstacles.upload<shaders::ObstacleRecord>(records);
     mObstacleCount = std::uint32_t(records.size());
 }

@@ -13,29 +13,41 @@ ObstacleLattices::ObstacleLattices(const vulkan::VulkanContext& context)
       mBuffer(vulkan::DeviceBuffer::fromValues<float>(context, std::vector<float>{0.0f},
                                                       "obstacle lattices")) {}
 
-std::vector<std::uint32_t> ObstacleLattices::update(std::span<const MovingObstacle> obstacles) {
+void ObstacleLattices::update(std::span<const MovingObstacle> obstacles) {
     std::vector<const SolidLevelSet*> sets;
-    std::vector<std::uint32_t> starts;
-    std::size_t total = 0;
     for (const MovingObstacle& o : obstacles) {
-        sets.push_back(o.levelSet.get());
-        starts.push_back(std::uint32_t(total));
-        if (o.levelSet) total += o.levelSet->depth.size();
+        if (o.levelSet) sets.push_back(o.levelSet.get());
+        for (const auto& file : o.sequence)
+            if (file.get() != o.levelSet.get()) sets.push_back(file.get());
     }
+    if (sets == mUploaded) return;
+    std::size_t total = 0;
+    for (const SolidLevelSet* set : sets) total += set->depth.size() + set->velocity.size();
     if (total > std::size_t(std::numeric_limits<std::uint32_t>::max()))
         throw Error("the mesh obstacles' level sets hold " + std::to_string(total) +
                     " samples; the device takes at most " +
                     std::to_string(std::numeric_limits<std::uint32_t>::max()));
-    if (sets != mUploaded) {
-        std::vector<float> depth;
-        depth.reserve(std::max<std::size_t>(total, 1));
-        for (const SolidLevelSet* set : sets)
-            if (set) depth.insert(depth.end(), set->depth.begin(), set->depth.end());
-        if (depth.empty()) depth.push_back(0.0f);
-        mBuffer = vulkan::DeviceBuffer::fromValues<float>(mContext, depth, "obstacle lattices");
-        mUploaded = std::move(sets);
+    std::vector<float> values;
+    values.reserve(std::max<std::size_t>(total, 1));
+    mPlaces.clear();
+    for (const SolidLevelSet* set : sets) {
+        LatticePlace place;
+        place.depth = std::uint32_t(values.size());
+        values.insert(values.end(), set->depth.begin(), set->depth.end());
+        if (!set->velocity.empty()) {
+            place.velocity = std::uint32_t(values.size());
+            values.insert(values.end(), set->velocity.begin(), set->velocity.end());
+        }
+        mPlaces.emplace(set, place);
     }
-    return starts;
+    if (values.empty()) values.push_back(0.0f);
+    mBuffer = vulkan::DeviceBuffer::fromValues<float>(mContext, values, "obstacle lattices");
+    mUploaded = std::move(sets);
+}
+
+LatticePlace ObstacleLattices::placeOf(const SolidLevelSet* set) const {
+    const auto found = mPlaces.find(set);
+    return found == mPlaces.end() ? LatticePlace{} : found->second;
 }
 
 }  // namespace modeflow::device

@@ -1,11 +1,13 @@
 #pragma once
 /// @file ObstacleLattices.h
 /// The mesh obstacles' level sets on the device, one after the other in one buffer
-/// (SolidLevelSet::depth as float32; read through shaders/ObstacleShape.glsl), uploaded when
-/// the set of level sets changes. ObstacleCorrection and SmokeDisplacement each keep one.
+/// (SolidLevelSet::depth, then a deforming file's velocity, as float32; read through
+/// shaders/ObstacleShape.glsl), uploaded when the set of level sets changes. ObstacleCorrection and
+/// SmokeDisplacement each keep one.
 
 #include <cstdint>
 #include <span>
+#include <unordered_map>
 #include <vector>
 
 #include "engine/simulation/MovingObstacle.h"
@@ -17,20 +19,31 @@ class VulkanContext;
 
 namespace modeflow::device {
 
+/// Where a level set lies in the buffer: its depth samples from `depth`, its velocity samples
+/// (x, y, z each) from `velocity`, kNoVelocity when rigid.
+struct LatticePlace {
+    static constexpr std::uint32_t kNoVelocity = 0xffffffffu;
+    std::uint32_t depth = 0;
+    std::uint32_t velocity = kNoVelocity;
+};
+
 class ObstacleLattices {
 public:
     explicit ObstacleLattices(const vulkan::VulkanContext& context);
 
-    /// Uploads the obstacles' lattices unless they are those already there; returns where each
-    /// obstacle's starts (0 for the other shapes).
-    /// @throw modeflow::Error when they hold 2^32 samples or more.
-    std::vector<std::uint32_t> update(std::span<const MovingObstacle> obstacles);
+    /// Uploads every level set of the obstacles (a deforming one's every file) unless they are
+    /// those already there.
+    /// @throw modeflow::Error when they hold 2^32 floats or more.
+    void update(std::span<const MovingObstacle> obstacles);
+    /// Where `set` lies (one of the last update's; null: {0, kNoVelocity}).
+    LatticePlace placeOf(const SolidLevelSet* set) const;
     const vulkan::DeviceBuffer& buffer() const { return mBuffer; }
 
 private:
     const vulkan::VulkanContext& mContext;
     vulkan::DeviceBuffer mBuffer;
     std::vector<const SolidLevelSet*> mUploaded;
+    std::unordered_map<const SolidLevelSet*, LatticePlace> mPlaces;
 };
 
 }  // namespace modeflow::device

@@ -10,7 +10,7 @@ void copy3(float to[3], const Vec3& from) {
 }  // namespace
 
 shaders::ObstacleRecord obstacleRecord(const MovingObstacle& obstacle, const ObstaclePose& pose,
-                                       std::uint32_t latticeStart) {
+                                       const ObstacleLattices& lattices) {
     const ObstacleSpec& spec = obstacle.spec;
     shaders::ObstacleRecord r{};
     copy3(r.centre, pose.centre);
@@ -29,11 +29,14 @@ shaders::ObstacleRecord obstacleRecord(const MovingObstacle& obstacle, const Obs
               : spec.shape == ObstacleShape::Capsule ? OBSTACLE_CAPSULE
               : spec.shape == ObstacleShape::Mesh    ? OBSTACLE_MESH
                                                      : OBSTACLE_BALL;
-    if (const SolidLevelSet* lattice = obstacle.levelSet.get()) {
+    r.velocityStart = LatticePlace::kNoVelocity;
+    if (const SolidLevelSet* lattice = pose.shape ? pose.shape : obstacle.levelSet.get()) {
         copy3(r.latticeOrigin, lattice->origin);
         r.latticeSpacing = float(lattice->spacing);
         for (int a = 0; a < 3; ++a) r.latticeSamples[a] = std::uint32_t(lattice->samples[a]);
-        r.latticeStart = latticeStart;
+        const LatticePlace place = lattices.placeOf(lattice);
+        r.latticeStart = place.depth;
+        r.velocityStart = place.velocity;
     }
     return r;
 }

@@ -25,7 +25,7 @@ vulkan::ComputeKernel stageKernel(const vulkan::VulkanContext& context, std::uin
     return vulkan::ComputeKernel(context,
                                  vulkan::ComputeKernelSpec{"smoke_displace",
                                                            smoke_displace_spv,
-                                                           8,
+                                                           11,
                                                            sizeof(shaders::SmokeDisplaceParams),
                                                            kWorkgroupSize,
                                                            {stage}});
@@ -47,9 +47,13 @@ SmokeDisplacement::SmokeDisplacement(const vulkan::VulkanContext& context, const
              "solid poses"),
       mCover(zeroWords(context, state.cellCount(), "smoke cover")),
       mTarget(zeroWords(context, state.cellCount(), "smoke push targets")),
+      mWork(zeroWords(context, 8, "smoke displacement work")),
+      mCovered(zeroWords(context, state.cellCount(), "covered smoke cells")),
+      mReceivers(zeroWords(context, state.cellCount(), "smoke cells receiving")),
       mLattices(context),
       mStages{stageKernel(context, SMOKE_DISPLACE_COVER), stageKernel(context, SMOKE_DISPLACE_PUSH),
-              stageKernel(context, SMOKE_DISPLACE_GATHER)} {}
+              stageKernel(context, SMOKE_DISPLACE_GATHER),
+              stageKernel(context, SMOKE_DISPLACE_ARGS)} {}
 
 void SmokeDisplacement::record(vulkan::CommandSequence& sequence, SmokeState& state,
                                std::span<const MovingObstacle> solids, double t, double dt) {
@@ -60,7 +64,7 @@ void SmokeDisplacement::record(vulkan::CommandSequence& sequence, SmokeState& st
     requireLevelSets(solids);
     const MacGrid& grid = state.smokeGrid();
     const int substeps = displacementSubsteps(solids, t, dt, grid);
-    const std::vector<std::uint32_t> latticeStarts = mLattices.update(solids);
+    mLattices.update(solids);
 
     std::vector<ObstaclePose> poses(solids.size());
     std::vector<CellBox> boxes;
@@ -69,7 +73,7 @@ void SmokeDisplacement::record(vulkan::CommandSequence& sequence, SmokeState& st
         const double time = t + dt * double(k) / double(substeps);
         for (std::size_t o = 0; o < solids.size(); ++o) {
             poses[o] = solids[o].poseAt(time);
-            records.push_back(obstacleRecord(solids[o], poses[o], latticeStarts[o]));
+            records.push_back(obstacleRecord(solids[o], poses[o], mLattices));
         }
         boxes.push_back(displacementBox(solids, poses, grid));
     }
@@ -85,12 +89,14 @@ void SmokeDisplacement::record(vulkan::CommandSequence& sequence, SmokeState& st
     }
     params.obstacleCount = std::uint32_t(solids.size());
     params.dt = float(dt);
-    // Bindings 0-7 of shaders/smoke_displace.comp.
-    const std::array<const vulkan::DeviceBuffer*, 8> buffers{
+    const std::uint32_t maxGroups = mContext.properties().limits.maxComputeWorkGroupCount[0];
+    params.maxGroups = maxGroups;
+    // Bindings 0-10 of shaders/smoke_displace.comp.
+    const std::array<const vulkan::DeviceBuffer*, 11> buffers{
         &mPoses,  &mLattices.buffer(), &state.mask(),        &mCover,
-        &mTarget, &state.fields(),     &state.temperature(), &state.hat()};
-    const std::int64_t perDispatch =
-        std::int64_t(mContext.properties().limits.maxComputeWorkGroupCount[0]) * kWorkgroupSize;
+        &mTarget, &state.fields(),     &state.temperature(), &state.hat(),
+        &mWork,   &mCovered,           &mReceivers};
+    const std::int64_t perDispatch = std::int64_t(maxGroups) * kWorkgroupSize;
     for (int k = 0; k < substeps; ++k) {
         if (++mStamp == kStampLimit) {
             // Every stamp used: clear the words, whose stale stamps would otherwise come back.
@@ -107,13 +113,18 @@ void SmokeDisplacement::record(vulkan::CommandSequence& sequence, SmokeState& st
             params.boxFirst[a] = box.first[a];
             params.boxCount[a] = std::uint32_t(box.count[a]);
         }
-        for (const vulkan::ComputeKernel& stage : mStages)
-            for (std::int64_t first = 0; first < box.cellCount(); first += perDispatch) {
-                params.firstInvocation = std::uint32_t(first);
-                const std::int64_t chunk = std::min(perDispatch, box.cellCount() - first);
-                sequence.dispatch(stage, buffers, params,
-                                  std::uint32_t((chunk + kWorkgroupSize - 1) / kWorkgroupSize));
-            }
+        sequence.fill(mWork, mWork.bytes(), 0u);
+        for (std::int64_t first = 0; first < box.cellCount(); first += perDispatch) {
+            params.firstInvocation = std::uint32_t(first);
+            const std::int64_t chunk = std::min(perDispatch, box.cellCount() - first);
+            sequence.dispatch(mStages[0], buffers, params,
+                              std::uint32_t((chunk + kWorkgroupSize - 1) / kWorkgroupSize));
+        }
+        // Bytes 0 and 16 of mWork: the push's and the gather's group counts.
+        sequence.dispatch(mStages[3], buffers, params, 1);
+        sequence.dispatchIndirect(mStages[1], buffers, params, mWork, 0);
+        sequence.dispatch(mStages[3], buffers, params, 1);
+        sequence.dispatchIndirect(mStages[2], buffers, params, mWork, 16);
     }
 }
 

@@ -2,9 +2,10 @@
 /// @file SmokeDisplacement.h
 /// Smoke pushed out of solids on the device, after each step's advection (the rule:
 /// engine/simulation/SmokeDisplacement.h; CPU reference engine/reference/SmokeDisplacement.h):
-/// per substep three dispatches of shaders/smoke_displace.comp over the box around the solids
-/// (cover, push, gather). The smoke's hat buffer (MacCormack's, free once the advection is
-/// done) holds what the covered cells push.
+/// per substep shaders/smoke_displace.comp covers the box around the solids, listing the covered
+/// cells; pushes from those (listing the cells receiving smoke) and gathers into those, both
+/// dispatched indirectly over their lists. The smoke's hat buffer (MacCormack's, free once the
+/// advection is done) holds what the covered cells push.
 
 #include <array>
 #include <cstdint>
@@ -42,8 +43,10 @@ private:
     const vulkan::VulkanContext& mContext;
     vulkan::DeviceBuffer mPoses;           ///< obstacle records, substep by substep
     vulkan::DeviceBuffer mCover, mTarget;  ///< a stamped word per smoke cell
+    /// The lists' dispatch arguments and lengths, the covered cells, the receiving cells.
+    vulkan::DeviceBuffer mWork, mCovered, mReceivers;
     ObstacleLattices mLattices;
-    std::array<vulkan::ComputeKernel, 3> mStages;  ///< cover, push, gather
+    std::array<vulkan::ComputeKernel, 4> mStages;  ///< cover, push, gather, args
     std::uint32_t mStamp = 0;                      ///< the last substep's
 };
 

@@ -56,6 +56,19 @@ double timeOfPosition(const std::pair<double, Vec3>& key) {
     return key.first;
 }
 
+/// How far from its frame's origin a level set may cover: its radius, or its farthest corner.
+double reachOf(const SolidLevelSet& set) {
+    if (set.radius > 0.0) return set.radius;
+    double farthest = 0.0;
+    for (int corner = 0; corner < 8; ++corner) {
+        Eigen::Vector3d p;
+        for (int a = 0; a < 3; ++a)
+            p[a] = set.origin[a] + ((corner >> a) & 1) * (set.samples[a] - 1) * set.spacing;
+        farthest = std::max(farthest, p.norm());
+    }
+    return farthest;
+}
+
 }  // namespace
 
 Vec3 MovingObstacle::centreAt(double t) const {
@@ -103,9 +116,16 @@ Vec3 MovingObstacle::angularVelocityAt(double t) const {
     return arr(quaternionOf(k0) * (turn.axis() * (turn.angle() / span)));
 }
 
+const SolidLevelSet* MovingObstacle::shapeAt(double t) const {
+    if (sequence.empty()) return levelSet.get();
+    const double file = std::floor(t * spec.sequenceRate);
+    const double last = double(sequence.size() - 1);
+    return sequence[std::size_t(std::clamp(std::isfinite(file) ? file : last, 0.0, last))].get();
+}
+
 ObstaclePose MovingObstacle::poseAt(double t) const {
-    if (drive) return {centreAt(t), orientationAt(t), *drive, {0.0, 0.0, 0.0}};
-    return {centreAt(t), orientationAt(t), velocityAt(t), angularVelocityAt(t)};
+    if (drive) return {centreAt(t), orientationAt(t), *drive, {0.0, 0.0, 0.0}, nullptr};
+    return {centreAt(t), orientationAt(t), velocityAt(t), angularVelocityAt(t), shapeAt(t)};
 }
 
 bool MovingObstacle::covers(const Vec3& point, const ObstaclePose& pose,
@@ -133,7 +153,8 @@ bool MovingObstacle::covers(const Vec3& point, const ObstaclePose& pose,
         case ObstacleShape::Ball:
             break;
         case ObstacleShape::Mesh:
-            return levelSet->depthAt(arr(vec(d) / spec.scale)) >= 0.0;
+            return (pose.shape ? pose.shape : levelSet.get())->depthAt(arr(vec(d) / spec.scale)) >=
+                   0.0;
     }
     return d[0] * d[0] + d[1] * d[1] + d[2] * d[2] <= spec.radius * spec.radius;
 }
@@ -145,15 +166,8 @@ double MovingObstacle::reach() const {
         case ObstacleShape::Capsule:
             return vec(spec.axis).norm() + spec.radius;
         case ObstacleShape::Mesh: {
-            if (levelSet->radius > 0.0) return spec.scale * levelSet->radius;
-            double farthest = 0.0;
-            for (int corner = 0; corner < 8; ++corner) {
-                Eigen::Vector3d p;
-                for (int a = 0; a < 3; ++a)
-                    p[a] = levelSet->origin[a] +
-                           ((corner >> a) & 1) * (levelSet->samples[a] - 1) * levelSet->spacing;
-                farthest = std::max(farthest, p.norm());
-            }
+            double farthest = reachOf(*levelSet);
+            for (const auto& file : sequence) farthest = std::max(farthest, reachOf(*file));
             return spec.scale * farthest;
         }
         case ObstacleShape::Ball:
@@ -178,14 +192,22 @@ double MovingObstacle::surfaceSpeedBound(double t0, double t1) const {
                                      : turnBetween(keys[k - 1], keys[k]).angle();
             spin = std::max(spin, angle / (keys[k].time - keys[k - 1].time));
         }
-    return speed + spin * reach();
+    double deforming = 0.0;
+    for (const auto& file : sequence) deforming = std::max(deforming, file->maxSpeed);
+    return speed + spin * reach() + spec.scale * deforming;
 }
 
 Vec3 MovingObstacle::velocityOf(const Vec3& point, const ObstaclePose& pose,
                                 const MacGrid& grid) const {
     Vec3 r{0.0, 0.0, 0.0};
     for (int a = 0; a < grid.dim; ++a) r[a] = point[a] - pose.centre[a];
-    return arr(vec(pose.velocity) + vec(pose.angularVelocity).cross(vec(grid.minimumImage(r))));
+    const Eigen::Vector3d offset = vec(grid.minimumImage(r));
+    Eigen::Vector3d velocity = vec(pose.velocity) + vec(pose.angularVelocity).cross(offset);
+    if (pose.shape && !pose.shape->velocity.empty()) {
+        const Vec3 local = arr(pose.orientation.transpose() * offset / spec.scale);
+        velocity += pose.orientation * (spec.scale * vec(pose.shape->velocityAt(local)));
+    }
+    return arr(velocity);
 }
 
 void requireLevelSets(std::span<const MovingObstacle> obstacles) {

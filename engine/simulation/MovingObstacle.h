@@ -9,6 +9,7 @@
 #include <optional>
 #include <span>
 #include <utility>
+#include <vector>
 
 #include <Eigen/Core>
 
@@ -25,6 +26,8 @@ struct ObstaclePose {
     Eigen::Matrix3d orientation = Eigen::Matrix3d::Identity();  ///< its shape's frame → world
     Vec3 velocity{0.0, 0.0, 0.0};                               ///< of its centre
     Vec3 angularVelocity{0.0, 0.0, 0.0};                        ///< rad/s, world frame
+    /// A mesh obstacle's shape then (a deforming one's file at that time); null: levelSet.
+    const SolidLevelSet* shape = nullptr;
 };
 
 struct MovingObstacle {
@@ -36,6 +39,9 @@ struct MovingObstacle {
     /// A mesh obstacle's shape in its own frame (mesh units; tools/compose/MeshSolids.h
     /// builds it from spec.meshFile); null for the other shapes.
     std::shared_ptr<const SolidLevelSet> levelSet;
+    /// A deforming mesh obstacle's level sets, file by file (spec.sequenceRate files per unit
+    /// time; the first is levelSet), each holding its material's velocity; empty: rigid.
+    std::vector<std::shared_ptr<const SolidLevelSet>> sequence;
     /// A region that drives the air rather than a solid (a [[source]] with `velocity`): its
     /// material moves at this velocity wherever its path puts it, and it does not spin.
     std::optional<Vec3> drive;
@@ -50,6 +56,9 @@ struct MovingObstacle {
     Eigen::Matrix3d orientationAt(double t) const;
     /// Angular velocity at time t (of the rotation segment holding t; 0 outside their span).
     Vec3 angularVelocityAt(double t) const;
+    /// Its mesh's shape at time t: file floor(t · rate) + 1 of a sequence (the first before
+    /// t = 0, the last after the sequence ends), else levelSet.
+    const SolidLevelSet* shapeAt(double t) const;
     ObstaclePose poseAt(double t) const;
 
     /// Whether the world point lies in the solid at `pose` (the grid's axes; along its periodic
@@ -60,10 +69,12 @@ struct MovingObstacle {
     /// set; a mesh's is its level set's radius, or its lattice's farthest corner).
     double reach() const;
     /// An upper bound of the speed of any point of its surface during [t0, t1]: the fastest
-    /// path segment overlapping it plus the fastest rotation segment's |ω| × reach().
+    /// path segment overlapping it plus the fastest rotation segment's |ω| × reach(), plus a
+    /// deforming mesh's fastest material.
     double surfaceSpeedBound(double t0, double t1) const;
     /// The velocity of the solid's material at a world point: v + ω × r, with r from the centre
-    /// at the minimum-image offset.
+    /// at the minimum-image offset, plus a deforming mesh's own velocity there (turned and
+    /// scaled into the world).
     Vec3 velocityOf(const Vec3& point, const ObstaclePose& pose, const MacGrid& grid) const;
 };
 

@@ -3,6 +3,7 @@
 
 #include <cmath>
 
+#include "engine/core/MeshSequence.h"
 #include "precompute/scene/SceneLoader.h"
 #include "precompute/scene/SceneSections.h"
 #include "precompute/scene/SceneWording.h"
@@ -103,13 +104,28 @@ ObstacleSpec readObstacle(const TomlReader& reader, const Section& s) {
     if (obstacle.shape != ObstacleShape::Mesh) {
         unused("file");
         unused("scale");
+        unused("sequence_rate");
     }
     if (obstacle.shape == ObstacleShape::Mesh) {
         unused("radius");
         unused("half_size");
         unused("axis");
-        obstacle.meshFile = readMeshFile(reader, s, "file");
+        obstacle.meshFile = readMeshFile(reader, s, "file", true);
         obstacle.scale = reader.readNumber(s, "scale", 1.0, Sign::Positive);
+        if (isMeshSequence(obstacle.meshFile)) {
+            if (!s.table.contains("sequence_rate"))
+                reader.fail(s, "sequence_rate",
+                            "missing required key: `file` names a numbered sequence (its '#')");
+            obstacle.sequenceRate = reader.readNumber(s, "sequence_rate", 0.0, Sign::Positive);
+            if (obstacle.sequenceRate > kMaxSequenceRate)
+                reader.fail(s, "sequence_rate",
+                            "at most " + roughNumber(kMaxSequenceRate) + " files per unit time",
+                            s.table.get("sequence_rate"));
+        } else if (s.table.contains("sequence_rate")) {
+            reader.fail(s, "sequence_rate",
+                        "only for a numbered sequence of files (a file name with ####)",
+                        s.table.get("sequence_rate"));
+        }
     } else if (obstacle.shape == ObstacleShape::Box) {
         obstacle.halfSize = reader.requireVector(s, "half_size");
         for (int a = 0; a < dim; ++a)

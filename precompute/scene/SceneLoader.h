@@ -46,6 +46,8 @@ inline constexpr double kMaxCellsFromOrigin = 1e12;
 /// Example scenes use about 1; 1e300 overflowed the squares of the dynamics into "energy = inf".
 /// A source's `velocity` is held to the same limit (a jet of 1e300 blew up the first step).
 inline constexpr double kMaxInitialSpeed = 1e6;
+/// Largest accepted `sequence_rate` of a deforming mesh obstacle, files per unit of time.
+inline constexpr double kMaxSequenceRate = 1e6;
 /// Largest accepted cell count of the basis grid (2^27): beyond it no eigensolve finishes anyway.
 inline constexpr std::int64_t kMaxGridCells = std::int64_t{1} << 27;
 /// Largest accepted cell count of the smoke grid (basis grid refined by `resolution_scale`).

@@ -50,8 +50,8 @@ inline constexpr std::string_view kInitialFieldKeys[] = {
 inline constexpr std::string_view kVortexKeys2d[] = {"center", "strength", "radius"};
 inline constexpr std::string_view kVortexKeys3d[] = {"center", "normal", "ring_radius", "radius",
                                                      "strength"};
-inline constexpr std::string_view kObstacleKeys[] = {"shape", "radius", "half_size", "axis",
-                                                     "file",  "scale",  "path",      "rotation"};
+inline constexpr std::string_view kObstacleKeys[] = {
+    "shape", "radius", "half_size", "axis", "file", "scale", "path", "sequence_rate", "rotation"};
 inline constexpr std::string_view kSmokeKeys[] = {"buoyancy", "resolution_scale", "advection"};
 inline constexpr std::string_view kForcingKeys[] = {"hold_modes", "hold_below_kappa"};
 inline constexpr std::string_view kOutputKeys[] = {"frames", "steps_per_frame"};

@@ -22,8 +22,8 @@ ShapeSpec readShape(const TomlReader& reader, const toml::table& table, const st
                     int index, bool isDomain);
 
 /// An OBJ file named by `key` of `s`: resolved against the scene's folder, a regular file.
-std::filesystem::path readMeshFile(const TomlReader& reader, const Section& s,
-                                   std::string_view key);
+std::filesystem::path readMeshFile(const TomlReader& reader, const Section& s, std::string_view key,
+                                   bool sequence = false);
 
 /// `[surface]` (a surface scene); sets the reader's dimension to 3.
 SurfaceSpec readSurface(TomlReader& reader, const Section& s);

@@ -8,6 +8,7 @@
 #include <system_error>
 
 #include "engine/core/FileKind.h"
+#include "engine/core/MeshSequence.h"
 #include "engine/core/PrintableText.h"
 #include "precompute/scene/SceneSections.h"
 #include "precompute/scene/SceneValidation.h"
@@ -59,7 +60,8 @@ void checkShapeKeys(const TomlReader& reader, const Section& s, ShapeKind kind, 
 
 }  // namespace
 
-fs::path readMeshFile(const TomlReader& reader, const Section& s, std::string_view key) {
+fs::path readMeshFile(const TomlReader& reader, const Section& s, std::string_view key,
+                      bool sequence) {
     const std::optional<std::string> file = reader.string(s, key);
     if (!file) reader.fail(s, key, "missing required key");
     if (file->empty()) reader.fail(s, key, "must name an OBJ file, got an empty string");
@@ -73,8 +75,10 @@ fs::path readMeshFile(const TomlReader& reader, const Section& s, std::string_vi
         reader.fail(s, key, "only OBJ meshes are supported, got \"" + printableText(*file) + "\"",
                     s.table.get(key));
     }
-    if (auto why = whyNotARegularFile(path)) {
-        const std::string shown = printableText(path.string(), kShownPathChars);
+    // A sequence's first file must be there; MeshSolids checks the others the run reaches.
+    const fs::path first = sequence && isMeshSequence(path) ? sequenceFile(path, 1) : path;
+    if (auto why = whyNotARegularFile(first)) {
+        const std::string shown = printableText(first.string(), kShownPathChars);
         std::error_code ec;
         reader.fail(s, key,
                     fs::exists(path, ec) ? shown + " " + *why + ", not an OBJ file"

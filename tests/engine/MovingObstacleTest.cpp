@@ -273,7 +273,7 @@ MovingObstacle meshObstacle(const testing::TestFolder& folder, const TriangleMes
     writeObj(spec.meshFile, mesh);
     scene.obstacles = {spec};
     MovingObstacle obstacle{spec};
-    obstacle.levelSet = obstacleSolids(scene).front();
+    obstacle.levelSet = obstacleSolids(scene).front().front();
     return obstacle;
 }
 

@@ -113,6 +113,63 @@ TEST_P(ObstacleKernelTest, CorrectionEqualsTheCpuReference) {
     }
 }
 
+TEST_P(ObstacleKernelTest, ADeformingMeshsOwnVelocityEqualsTheCpuReference) {
+    // Two files of the L-shaped lattice, each with a velocity of its own material (a shear and a
+    // swirl), the second shown at t = 0.5 (two files per unit time), moving and turning: the
+    // mismatch takes the material's deformation on both backends.
+    const BasisCache& cache = testing::disk2d();
+    RandomVelocitySpec random;
+    const Eigen::VectorXd v =
+        randomVelocity(int(cache.velocity.modes.cols()), random).cast<float>().cast<double>();
+    const auto file = [](double shear, double swirl) {
+        auto set = std::make_shared<SolidLevelSet>(*lShapedLattice());
+        set->velocity.resize(3 * set->depth.size());
+        for (int z = 0; z < set->samples[2]; ++z)
+            for (int y = 0; y < set->samples[1]; ++y)
+                for (int x = 0; x < set->samples[0]; ++x) {
+                    const double px = set->origin[0] + x * set->spacing,
+                                 py = set->origin[1] + y * set->spacing;
+                    const std::size_t s =
+                        3 *
+                        (std::size_t(x) + std::size_t(set->samples[0]) *
+                                              (std::size_t(y) + std::size_t(set->samples[1]) * z));
+                    set->velocity[s] = float(shear * py - swirl * py);
+                    set->velocity[s + 1] = float(swirl * px);
+                    set->velocity[s + 2] = 0.0f;
+                    set->maxSpeed =
+                        std::max(set->maxSpeed, std::hypot(shear * py - swirl * py, swirl * px));
+                }
+        return std::shared_ptr<const SolidLevelSet>(set);
+    };
+    ObstacleSpec spec;
+    spec.shape = ObstacleShape::Mesh;
+    spec.scale = 1.5;
+    spec.sequenceRate = 2.0;
+    spec.path = {{0.0, {-0.3, 0.1, 0.0}}, {1.0, {0.4, -0.2, 0.0}}};
+    spec.rotation = {{0.0, {0.0, 0.0, 1.0}, 10.0}, {1.0, {0.0, 0.0, 1.0}, 190.0}};
+    MovingObstacle obstacle{spec};
+    obstacle.sequence = {file(2.0, 0.0), file(0.5, 3.0)};
+    obstacle.levelSet = obstacle.sequence.front();
+    ASSERT_EQ(obstacle.poseAt(0.5).shape, obstacle.sequence[1].get());
+    const std::vector<MovingObstacle> obstacles{obstacle};
+    const Eigen::VectorXd expected =
+        v - reference::obstacleCorrection(cache, reference::reconstructFaceField(cache, v),
+                                          obstacles, 0.5);
+    // Its own velocity counts: the correction differs from the rigid one's.
+    MovingObstacle rigid = obstacle;
+    rigid.sequence = {lShapedLattice(), lShapedLattice()};
+    const Eigen::VectorXd rigidExpected =
+        v - reference::obstacleCorrection(cache, reference::reconstructFaceField(cache, v),
+                                          std::vector<MovingObstacle>{rigid}, 0.5);
+    EXPECT_GT((expected - rigidExpected).norm(), 1e-3 * expected.norm());
+    const Eigen::VectorXd got = deviceCorrected(context(), cache, v, obstacles, 0.5);
+    const double error =
+        (got - expected).lpNorm<Eigen::Infinity>() / expected.lpNorm<Eigen::Infinity>();
+    std::cout << "deforming mesh: relative error " << error << "\n";
+    EXPECT_LE(error, 1e-5);
+    expectNoValidationMessages();
+}
+
 TEST_P(ObstacleKernelTest, AsManyObstaclesAsTheSceneTakesEqualTheCpuReference) {
     // As many small balls and boxes as the correction holds (obstacles and driving sources), on
     // a lattice in the disk, a quarter of them turning.

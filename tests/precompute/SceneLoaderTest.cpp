@@ -168,6 +168,12 @@ const std::vector<Refusal> kRefusals = {
      {"[[obstacle]] #1.radius: not used by a mesh"}},
     {"ObstacleBallWithScale", k2d, {}, kObstacleBall + "radius = 0.1\nscale = 2\npath = [[0, 0, 0]]\n",
      {"[[obstacle]] #1.scale: not used by a ball"}},
+    {"ObstacleBallWithSequenceRate", k2d, {},
+     kObstacleBall + "radius = 0.1\nsequence_rate = 24\npath = [[0, 0, 0]]\n",
+     {"[[obstacle]] #1.sequence_rate: not used by a ball"}},
+    {"ObstacleMeshSequenceOfNoFirstFile", k2d, {},
+     "[[obstacle]]\nshape = \"mesh\"\nfile = \"flag_####.obj\"\nsequence_rate = 24\npath = [[0, 0, 0]]\n",
+     {"[[obstacle]] #1.file: no such file: ", "flag_0001.obj"}},
     {"RotationKeyFramesGoBack", k2d, {},
      kObstacleBall + "radius = 0.1\npath = [[0, 0, 0]]\nrotation = [[1, 0, 0, 1, 0], [0.5, 0, 0, 1, 9]]\n",
      {"[[obstacle]] #1.rotation", "key frame times must increase"}},
@@ -743,6 +749,29 @@ TEST_F(SceneLoaderTest, MeshPathThatIsNotAFileSaysWhatItIs) {
     message = errorOf(meshScene("missing.obj"), mDir / "s.toml");
     EXPECT_CONTAINS(message, "[[domain]] #1 (mesh).file: no such file: ");
 }
+TEST_F(SceneLoaderTest, AMeshSequenceNeedsItsRateAndARateItsSequence) {
+    write("flag_0001.obj", "v 0 0 0\n");
+    write("plate.obj", "v 0 0 0\n");
+    const auto obstacle = [](const std::string& keys) {
+        return sceneFixture(k3d) + "[[obstacle]]\nshape = \"mesh\"\npath = [[0, 0, 0, 0]]\n" + keys;
+    };
+    const SceneSpec scene =
+        loadScene(write("s.toml", obstacle("file = \"flag_####.obj\"\nsequence_rate = 24\n")));
+    EXPECT_EQ(scene.obstacles[0].sequenceRate, 24.0);
+    EXPECT_EQ(scene.obstacles[0].meshFile.filename(), "flag_####.obj");
+    EXPECT_CONTAINS(errorOf(obstacle("file = \"flag_####.obj\"\n"), mDir / "s.toml"),
+                    "[[obstacle]] #1.sequence_rate: missing required key");
+    EXPECT_CONTAINS(
+        errorOf(obstacle("file = \"plate.obj\"\nsequence_rate = 24\n"), mDir / "s.toml"),
+        "[[obstacle]] #1.sequence_rate: only for a numbered sequence");
+    EXPECT_CONTAINS(
+        errorOf(obstacle("file = \"flag_####.obj\"\nsequence_rate = 0\n"), mDir / "s.toml"),
+        "[[obstacle]] #1.sequence_rate");
+    EXPECT_CONTAINS(
+        errorOf(obstacle("file = \"flag_####.obj\"\nsequence_rate = 1e9\n"), mDir / "s.toml"),
+        "[[obstacle]] #1.sequence_rate: at most");
+}
+
 TEST_F(SceneLoaderTest, MoreSourcesOrObstaclesThanTheRuntimeTakesAreRefusedAtLoad) {
     // They were refused only after the whole precompute, when the simulation was set up.
     const std::string source = "[[source]]\nshape = \"ball\"\ncenter = [0, 0]\nradius = 0.1\n";

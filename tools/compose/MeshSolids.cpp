@@ -11,63 +11,21 @@
 #include <utility>
 
 #include "engine/core/Error.h"
-#include "precompute/geometry/MeshLevelSet.h"
 #include "precompute/geometry/ObjMesh.h"
+#include "tools/compose/DeformingSolids.h"
+#include "tools/compose/MeshLattice.h"
 
 namespace modeflow {
 namespace {
-
-/// 2²⁵ floats, 128 MiB: a lattice beyond this is a mesh far larger than the grid.
-constexpr double kMaxLatticeSamples = 33554432.0;
-
-/// The finest spacing of the grid's axes.
-double finestSpacing(const GridSpec& grid) {
-    double h = std::numeric_limits<double>::infinity();
-    for (int a = 0; a < grid.dim; ++a) h = std::min(h, grid.spacing(a));
-    return h;
-}
 
 /// `file`'s depth sampled every `spacing` mesh units, exact to `depth` inside (deeper the level
 /// set's band holds a constant); `scale`: world length per mesh unit (for messages).
 SolidLevelSet sampleMesh(const std::filesystem::path& file, double scale, double spacing,
                          double depth, const std::string& where) {
     const TriangleMesh mesh = readObjMesh(file);
-    Vec3 lo = mesh.vertices.front(), hi = lo;
-    for (const Vec3& p : mesh.vertices)
-        for (int a = 0; a < 3; ++a) {
-            lo[a] = std::min(lo[a], p[a]);
-            hi[a] = std::max(hi[a], p[a]);
-        }
-    SolidLevelSet solid;
-    solid.spacing = spacing;
-    double total = 1.0;
-    for (int a = 0; a < 3; ++a) {
-        solid.origin[a] = lo[a] - 2.0 * spacing;
-        const double samples = std::ceil((hi[a] - lo[a]) / spacing) + 5.0;
-        total *= samples;
-        if (total > kMaxLatticeSamples)
-            throw Error(where + ": the mesh spans " + std::to_string(hi[a] - lo[a]) + " along " +
-                        "xyz"[a] + " at scale " + std::to_string(scale) +
-                        "; its level set, sampled every half grid cell, would need more than " +
-                        std::to_string(std::int64_t(kMaxLatticeSamples)) +
-                        " samples: the mesh is far larger than the grid (are its units or "
-                        "scale right?)");
-        solid.samples[a] = int(samples);
-    }
-    const auto shape =
-        loadMeshShape(mesh, file, spacing, std::max(3.0, std::ceil(depth / spacing) + 2.0));
-    solid.depth.resize(std::size_t(total));
-    std::size_t i = 0;
-    for (int z = 0; z < solid.samples[2]; ++z)
-        for (int y = 0; y < solid.samples[1]; ++y)
-            for (int x = 0; x < solid.samples[0]; ++x)
-                solid.depth[i++] = float(
-                    shape->value({solid.origin[0] + x * spacing, solid.origin[1] + y * spacing,
-                                  solid.origin[2] + z * spacing}));
-    // The solid lies inside its vertices' hull; trilinear depth may reach a diagonal beyond.
-    for (const Vec3& p : mesh.vertices)
-        solid.radius = std::max(solid.radius, std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]));
-    solid.radius += std::sqrt(3.0) * spacing;
+    const auto [lo, hi] = meshBounds(mesh);
+    SolidLevelSet solid = latticeOver(lo, hi, spacing, scale, where);
+    sampleDepth(solid, mesh, file, depth);
     return solid;
 }
 
@@ -143,14 +101,28 @@ void attachSolids(Items& items, const std::vector<std::shared_ptr<const SolidLev
 
 }  // namespace
 
-std::vector<std::shared_ptr<const SolidLevelSet>> obstacleSolids(const SceneSpec& scene) {
-    return meshSolids(scene, "[[obstacle]]", scene.obstacles.size(),
-                      0.5 * finestSpacing(scene.grid), [&](std::size_t i) {
-                          const ObstacleSpec& o = scene.obstacles[i];
-                          return o.shape == ObstacleShape::Mesh
-                                     ? std::optional(MeshUse{o.meshFile, o.scale, 0.0})
-                                     : std::nullopt;
-                      });
+ObstacleShapes obstacleSolids(const SceneSpec& scene) {
+    const double spacing = 0.5 * finestSpacing(scene.grid);
+    const auto rigid =
+        meshSolids(scene, "[[obstacle]]", scene.obstacles.size(), spacing, [&](std::size_t i) {
+            const ObstacleSpec& o = scene.obstacles[i];
+            return o.shape == ObstacleShape::Mesh && o.sequenceRate == 0.0
+                       ? std::optional(MeshUse{o.meshFile, o.scale, 0.0})
+                       : std::nullopt;
+        });
+    ObstacleShapes shapes(scene.obstacles.size());
+    for (std::size_t i = 0; i < shapes.size(); ++i) {
+        if (rigid[i]) {
+            shapes[i] = {rigid[i]};
+        } else if (scene.obstacles[i].sequenceRate > 0.0) {
+            shapes[i] = deformingSolids(scene, i, spacing);
+            if (scene.grid.dim == 2)
+                requireCrossesThePlane(
+                    *shapes[i].front(),
+                    scene.sourceFile.string() + ": [[obstacle]] #" + std::to_string(i + 1));
+        }
+    }
+    return shapes;
 }
 
 std::vector<std::shared_ptr<const SolidLevelSet>> sourceSolids(const SceneSpec& scene) {
@@ -164,9 +136,14 @@ std::vector<std::shared_ptr<const SolidLevelSet>> sourceSolids(const SceneSpec& 
         });
 }
 
-void attachObstacleSolids(std::vector<MovingObstacle>& obstacles,
-                          const std::vector<std::shared_ptr<const SolidLevelSet>>& solids) {
-    attachSolids(obstacles, solids, "obstacles");
+void attachObstacleSolids(std::vector<MovingObstacle>& obstacles, const ObstacleShapes& solids) {
+    std::vector<std::shared_ptr<const SolidLevelSet>> first;
+    for (const auto& shapes : solids) first.push_back(shapes.empty() ? nullptr : shapes.front());
+    attachSolids(obstacles, first, "obstacles");
+    for (std::size_t i = 0; i < obstacles.size(); ++i)
+        obstacles[i].sequence = solids[i].size() > 1 || obstacles[i].spec.sequenceRate > 0.0
+                                    ? solids[i]
+                                    : std::vector<std::shared_ptr<const SolidLevelSet>>{};
 }
 
 void attachSourceSolids(std::vector<SmokeEmitter>& emitters,

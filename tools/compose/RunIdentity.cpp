@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "engine/core/BinaryCodec.h"
+#include "engine/core/MeshSequence.h"
 #include "precompute/Precompute.h"
 
 namespace modeflow {
@@ -33,8 +34,17 @@ RunIdentity runIdentity(const SceneSpec& scene, BackendKind backend) {
     const auto addMesh = [&](const std::filesystem::path& file) {
         meshes.append(1, '|').append(hex(fnv1a64(fileBytes(file))));
     };
-    for (const ObstacleSpec& obstacle : scene.obstacles)
-        if (obstacle.shape == ObstacleShape::Mesh) addMesh(obstacle.meshFile);
+    for (const ObstacleSpec& obstacle : scene.obstacles) {
+        if (obstacle.shape != ObstacleShape::Mesh) continue;
+        if (obstacle.sequenceRate == 0.0) {
+            addMesh(obstacle.meshFile);
+            continue;
+        }
+        // A deforming one's files as far as the folder holds them (the run checks it has those
+        // it shows).
+        const int count = sequenceLength(obstacle.meshFile, 100000);
+        for (int k = 1; k <= count; ++k) addMesh(sequenceFile(obstacle.meshFile, k));
+    }
     for (const SourceSpec& source : scene.sources)
         if (source.shape.kind == ShapeKind::Mesh) addMesh(source.shape.meshFile);
     id.runHash = fnv1a64(id.sceneHash + "|" + basisKey(scene) + "|" +

@@ -58,7 +58,8 @@ void requireFinite(const SceneSpec& scene, const Eigen::VectorXd& state, const c
 
 /// The level sets of a scene's mesh obstacles and mesh sources (MeshSolids.h).
 struct SceneSolids {
-    std::vector<std::shared_ptr<const SolidLevelSet>> obstacles, sources;
+    ObstacleShapes obstacles;
+    std::vector<std::shared_ptr<const SolidLevelSet>> sources;
 };
 
 /// Read and checked before the precompute's minutes.
