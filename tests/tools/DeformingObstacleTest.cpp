@@ -4,6 +4,7 @@
 /// from the level sets' motion, and a missing file named before any work.
 
 #include <cmath>
+#include <filesystem>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -112,6 +113,14 @@ TEST(DeformingObstacle, AMissingFileTheRunShowsIsNamedBeforeAnyWork) {
         testing::thrownMessage([&] { obstacleSolids(deformingScene(folder, 10.0)); });
     EXPECT_NE(message.find("[[obstacle]] #1"), std::string::npos) << message;
     EXPECT_NE(message.find("flag_0003.obj is missing"), std::string::npos) << message;
+    // A folder in the file's place is named as such.
+    std::filesystem::create_directory(sequenceFile(folder / "flag_####.obj", 3));
+    const std::string folderMessage =
+        testing::thrownMessage([&] { obstacleSolids(deformingScene(folder, 10.0)); });
+    EXPECT_NE(folderMessage.find("flag_0003.obj is a directory, not an OBJ file"),
+              std::string::npos)
+        << folderMessage;
+    std::filesystem::remove(sequenceFile(folder / "flag_####.obj", 3));
     // A shorter run needs files 1 and 2 alone.
     SceneSpec shorter = deformingScene(folder, 10.0);
     shorter.output.frames = 4;

@@ -4,10 +4,12 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <unordered_map>
 
 #include "engine/core/Error.h"
+#include "engine/core/FileKind.h"
 #include "engine/core/MeshSequence.h"
 #include "engine/core/NumberText.h"
 #include "precompute/geometry/ObjMesh.h"
@@ -136,11 +138,15 @@ std::vector<std::shared_ptr<const SolidLevelSet>> deformingSolids(const SceneSpe
                     numberText(kMaxSequenceFiles) + " files");
     const int needed = int(shown);
     const int available = sequenceLength(obstacle.meshFile, needed + 1);
-    if (available < needed)
-        throw Error(entry + ": " + sequenceFile(obstacle.meshFile, available + 1).string() +
-                    " is missing: the run reaches t = " + numberText(end) + ", which shows file " +
+    if (available < needed) {
+        const std::filesystem::path gap = sequenceFile(obstacle.meshFile, available + 1);
+        const std::optional<std::string> why = whyNotARegularFile(gap);
+        throw Error(entry + ": " + gap.string() + " " +
+                    (why && *why != "does not exist" ? *why + ", not an OBJ file" : "is missing") +
+                    ": the run reaches t = " + numberText(end) + ", which shows file " +
                     std::to_string(needed) + " of the sequence (sequence_rate " +
                     numberText(obstacle.sequenceRate) + ")");
+    }
     std::vector<TriangleMesh> meshes;
     std::vector<std::filesystem::path> files;
     for (int k = 1; k <= available; ++k) {
