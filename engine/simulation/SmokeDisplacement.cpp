@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "engine/core/Error.h"
@@ -21,6 +22,50 @@ double smallestSpacing(const MacGrid& grid) {
 /// Substeps that keep a surface moving at `speed` within half a cell per substep over dt.
 double substepsFor(double speed, double dt, const MacGrid& smokeGrid) {
     return std::max(1.0, std::ceil(speed * dt / (0.5 * smallestSpacing(smokeGrid))));
+}
+
+/// The least and greatest offsets from its centre, per world axis, of the points `solid` may
+/// cover at `pose`: its shape's box in its own frame (a mesh's lattice), turned, within its reach.
+std::pair<Vec3, Vec3> coveredOffsets(const MovingObstacle& solid, const ObstaclePose& pose) {
+    const ObstacleSpec& spec = solid.spec;
+    Eigen::Vector3d lo = Eigen::Vector3d::Zero(), hi = Eigen::Vector3d::Zero();  // own frame
+    switch (spec.shape) {
+        case ObstacleShape::Box:
+            hi = Eigen::Vector3d(spec.halfSize[0], spec.halfSize[1], spec.halfSize[2]);
+            lo = -hi;
+            break;
+        case ObstacleShape::Capsule:
+            for (int a = 0; a < 3; ++a) hi[a] = std::abs(spec.axis[a]) + spec.radius;
+            lo = -hi;
+            break;
+        case ObstacleShape::Mesh: {
+            const SolidLevelSet& set = pose.shape ? *pose.shape : *solid.levelSet;
+            for (int a = 0; a < 3; ++a) {
+                lo[a] = spec.scale * set.origin[a];
+                hi[a] = spec.scale * (set.origin[a] + (set.samples[a] - 1) * set.spacing);
+            }
+            break;
+        }
+        case ObstacleShape::Ball:
+            hi = Eigen::Vector3d::Constant(spec.radius);
+            lo = -hi;
+            break;
+    }
+    const double reach = solid.reach();
+    Vec3 near{-reach, -reach, -reach}, far{reach, reach, reach};
+    Eigen::Vector3d least = Eigen::Vector3d::Constant(reach), most = -least;
+    for (int corner = 0; corner < 8; ++corner) {
+        Eigen::Vector3d p;
+        for (int a = 0; a < 3; ++a) p[a] = (corner >> a) & 1 ? hi[a] : lo[a];
+        const Eigen::Vector3d turned = pose.orientation * p;
+        least = least.cwiseMin(turned);
+        most = most.cwiseMax(turned);
+    }
+    for (int a = 0; a < 3; ++a) {
+        near[a] = std::max(near[a], least[a]);
+        far[a] = std::min(far[a], most[a]);
+    }
+    return {near, far};
 }
 
 std::vector<std::array<int, 3>> offsetsOf(int dim) {
@@ -73,12 +118,12 @@ CellBox displacementBox(std::span<const MovingObstacle> solids, std::span<const 
         hi[a] = std::numeric_limits<int>::min();
     }
     for (std::size_t o = 0; o < solids.size(); ++o) {
-        const double reach = solids[o].reach();
+        const auto [near, far] = coveredOffsets(solids[o], poses[o]);
         for (int a = 0; a < smokeGrid.dim; ++a) {
             const double h = smokeGrid.spacing[a];
-            // Cell centres within reach, and one cell around them.
-            const double from = (poses[o].centre[a] - reach - smokeGrid.origin[a]) / h - 0.5;
-            const double to = (poses[o].centre[a] + reach - smokeGrid.origin[a]) / h - 0.5;
+            // The cell centres it may cover, and one cell around them.
+            const double from = (poses[o].centre[a] + near[a] - smokeGrid.origin[a]) / h - 0.5;
+            const double to = (poses[o].centre[a] + far[a] - smokeGrid.origin[a]) / h - 0.5;
             const double cells = smokeGrid.cells[a];
             lo[a] =
                 std::min(lo[a], int(std::clamp(std::floor(from) - 1.0, -2.0 * cells, 2.0 * cells)));

@@ -47,8 +47,8 @@ struct CellBox {
     std::int64_t cellCount() const { return std::int64_t(count[0]) * count[1] * count[2]; }
 };
 
-/// The cells the solids at `poses` may cover, with one cell around them (where their smoke
-/// goes).
+/// The cells the solids at `poses` may cover — each solid's shape box in its own frame (a mesh's
+/// lattice), turned, within its reach — with one cell around them (where their smoke goes).
 CellBox displacementBox(std::span<const MovingObstacle> solids, std::span<const ObstaclePose> poses,
                         const MacGrid& smokeGrid);
 
