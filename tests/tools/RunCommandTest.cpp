@@ -104,6 +104,54 @@ protected:
     }
 };
 
+TEST_F(RunCommand, ADeformingObstacleReadsTheFilesAsFarAsFramesGoes) {
+    // A closed-form box with a tetrahedron deforming over numbered files, ten a unit of time:
+    // `--frames 4` (to t = 0.08) shows file 1 and runs with files 1 and 2 alone; `--frames 10`
+    // (to t = 0.2) shows file 3, refused naming it before any frame while it is missing.
+    const auto tetrahedron = [&](int number, double shift) {
+        std::ofstream(mDir / ("tet_000" + std::to_string(number) + ".obj"))
+            << "v " << shift << " 0 0\nv " << 1 + shift << " 0 0\nv " << shift << " 1 0\nv "
+            << shift << " 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n";
+    };
+    tetrahedron(1, 0.0);
+    tetrahedron(2, 0.1);
+    const fs::path s = scene("tet.toml", R"([grid]
+resolution = [12, 12, 12]
+bounds_min = [0, 0, 0]
+bounds_max = [1, 1, 1]
+[basis]
+velocity_modes = 40
+scalar_modes = 0
+wall = "free-slip"
+[simulation]
+dt = 0.02
+[[source]]
+shape = "ball"
+center = [0.5, 0.5, 0.2]
+radius = 0.15
+density = 1.0
+[[obstacle]]
+shape = "mesh"
+file = "tet_####.obj"
+sequence_rate = 10
+scale = 0.3
+path = [[0.0, 0.4, 0.4, 0.4]]
+[output]
+frames = 4
+steps_per_frame = 1
+)");
+    RunResult r = simulate(s, mDir / "short", "--frames 4 --device cpu");
+    EXPECT_EQ(r.status, 0) << r.err;
+    r = simulate(s, mDir / "long", "--frames 10 --device cpu");
+    EXPECT_NE(r.status, 0);
+    EXPECT_NE(r.err.find("tet_0003.obj is missing"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(mDir / "long" / frameFileName("tet", 1)));
+    tetrahedron(3, 0.2);
+    r = simulate(s, mDir / "long", "--frames 10 --device cpu");
+    EXPECT_EQ(r.status, 0) << r.err;
+    EXPECT_TRUE(fs::exists(mDir / "long" / frameFileName("tet", 10)));
+}
+
 TEST_F(RunCommand, WritesVdbFramesThatReadBack) {
     const fs::path s = scene("hot.toml", kHotDisk), out = mDir / "frames";
     const RunResult r = simulate(s, out);

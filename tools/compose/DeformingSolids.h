@@ -18,7 +18,7 @@ namespace modeflow {
 
 /// The level sets of the scene's obstacle `index` (a mesh with a sequence_rate), file by file,
 /// sampled every `spacing` world lengths: files 1 to floor(T · rate) + 1, T the run's end
-/// (frames × steps_per_frame × dt).
+/// (frames × steps_per_frame × dt; `run --frames` sets the scene's frames first).
 /// @throw modeflow::Error naming the obstacle and the first file the run needs that is missing,
 ///        a file that is not a closed, consistently oriented, outward-facing surface, or files
 ///        that together would take more than 2^25 samples.

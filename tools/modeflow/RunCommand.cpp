@@ -66,6 +66,10 @@ Command addRun(CLI::App& app) {
             throw Error("--half: surface scenes write PLY frames, in 32-bit floats");
         }
         const int frames = opts->frames.value_or(scene.output.frames);
+        // The run's length as --frames sets it: a deforming obstacle's files are read (and a
+        // missing one refused) as far as the run goes.
+        SceneSpec shot = scene;
+        shot.output.frames = frames;
         const std::filesystem::path out = opts->out.value_or(scene.name + "_frames");
         ensureWritableDirectory(out, "output folder", "; choose another with --out");
         // One run at a time per scene in a folder; taken before any work.
@@ -91,7 +95,7 @@ Command addRun(CLI::App& app) {
                                          : "preparing the run (cache, smoke mask, initial state)",
                        checked.memory, [&] {
                            return prepareRun(
-                               scene, resolveCacheDir(opts->cacheDir), progress,
+                               shot, resolveCacheDir(opts->cacheDir), progress,
                                scene.isSurface() ? RunParts::Dynamics : RunParts::DynamicsAndSmoke);
                        });
         if (scene.isSurface()) {
