@@ -2,8 +2,9 @@
 // Smoke pushed out of solids, one substep's stage (rule and reasons: engine/simulation/
 // SmokeDisplacement.h; CPU reference engine/reference/SmokeDisplacement.cpp; host side
 // engine/device/SmokeDisplacement.cpp), the stage a specialization constant:
-//   cover:  over every cell of the box around the solids: which solid (the first) covers each
-//           fluid cell, cover word = stamp << 8 | solid; covered cells go to a list;
+//   cover:  over every cell of the box around the solids (or of a box each): which solid (the
+//           first) covers each fluid cell, cover word = stamp << 8 | solid; covered cells go to a
+//           list, once each;
 //   args:   one invocation: the indirect dispatch arguments of the lists' stages;
 //   push:   over the covered cells' list: each picks the free fluid neighbour most nearly along
 //           the solid's material velocity (outward where it is still), stashes its smoke and holds
@@ -87,8 +88,9 @@ void coverStage(uint cell, ivec3 p) {
         const vec3 r = obstacleOffset(solid, centre, params.dim, gridBox(), params.periodic);
         if (!withinReach(solid, r)) continue;
         if (covers(solid, r)) {
-            cover[cell] = (params.stamp << 8u) | o;
-            covered[atomicAdd(coveredCount, 1u)] = cell;
+            // Boxes may overlap: a cell a box before covered already is listed once.
+            const uint word = (params.stamp << 8u) | o;
+            if (atomicExchange(cover[cell], word) != word) covered[atomicAdd(coveredCount, 1u)] = cell;
             return;
         }
     }

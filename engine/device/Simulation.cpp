@@ -25,12 +25,12 @@ SimulationSettings supported(SimulationSettings settings) {
 
 /// Dispatches one step may record, for the timestamp pool: the midpoint iterations dominate.
 std::uint32_t maxDispatchesPerStep(const ModalStepper& stepper, const SmokeState& smoke) {
-    // The displacement a substep: a fill, the cover over a box of at most every smoke cell in
-    // dispatches of at least 65535 groups of 64 (the least maxComputeWorkGroupCount), then four
-    // dispatches; two fills when its stamps wrap.
+    // The displacement a substep: a fill, the cover over a box (or a box a solid) of at most
+    // every smoke cell in dispatches of at least 65535 groups of 64 (the least
+    // maxComputeWorkGroupCount), then four dispatches; two fills when its stamps wrap.
     const std::int64_t boxDispatches = (smoke.cellCount() + 65535 * 64 - 1) / (65535 * 64);
     return std::uint32_t(kMaxSubsteps * stepper.dispatchesPerStep() + 64 +
-                         (boxDispatches + 5) * maxDisplacementSubsteps + 2);
+                         (boxDispatches * maxObstacles + 5) * maxDisplacementSubsteps + 2);
 }
 
 std::vector<double> widened(const std::vector<float>& values) {

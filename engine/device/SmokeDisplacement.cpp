@@ -67,7 +67,7 @@ void SmokeDisplacement::record(vulkan::CommandSequence& sequence, SmokeState& st
     mLattices.update(solids);
 
     std::vector<ObstaclePose> poses(solids.size());
-    std::vector<CellBox> boxes;
+    std::vector<std::vector<CellBox>> boxes;
     std::vector<shaders::ObstacleRecord> records;
     for (int k = 1; k <= substeps; ++k) {
         const double time = t + dt * double(k) / double(substeps);
@@ -75,7 +75,7 @@ void SmokeDisplacement::record(vulkan::CommandSequence& sequence, SmokeState& st
             poses[o] = solids[o].poseAt(time);
             records.push_back(obstacleRecord(solids[o], poses[o], mLattices));
         }
-        boxes.push_back(displacementBox(solids, poses, grid));
+        boxes.push_back(displacementBoxes(solids, poses, grid));
     }
     mPoses.upload<shaders::ObstacleRecord>(records);
 
@@ -104,21 +104,21 @@ void SmokeDisplacement::record(vulkan::CommandSequence& sequence, SmokeState& st
             sequence.fill(mTarget, mTarget.bytes(), 0u);
             mStamp = 1;
         }
-        const CellBox& box = boxes[std::size_t(k)];
-        if (box.cellCount() == 0) continue;
         params.stamp = mStamp;
         params.firstRecord = std::uint32_t(std::size_t(k) * solids.size());
-        params.boxCells = std::uint32_t(box.cellCount());
-        for (int a = 0; a < 3; ++a) {
-            params.boxFirst[a] = box.first[a];
-            params.boxCount[a] = std::uint32_t(box.count[a]);
-        }
         sequence.fill(mWork, mWork.bytes(), 0u);
-        for (std::int64_t first = 0; first < box.cellCount(); first += perDispatch) {
-            params.firstInvocation = std::uint32_t(first);
-            const std::int64_t chunk = std::min(perDispatch, box.cellCount() - first);
-            sequence.dispatch(mStages[0], buffers, params,
-                              std::uint32_t((chunk + kWorkgroupSize - 1) / kWorkgroupSize));
+        for (const CellBox& box : boxes[std::size_t(k)]) {
+            params.boxCells = std::uint32_t(box.cellCount());
+            for (int a = 0; a < 3; ++a) {
+                params.boxFirst[a] = box.first[a];
+                params.boxCount[a] = std::uint32_t(box.count[a]);
+            }
+            for (std::int64_t first = 0; first < box.cellCount(); first += perDispatch) {
+                params.firstInvocation = std::uint32_t(first);
+                const std::int64_t chunk = std::min(perDispatch, box.cellCount() - first);
+                sequence.dispatch(mStages[0], buffers, params,
+                                  std::uint32_t((chunk + kWorkgroupSize - 1) / kWorkgroupSize));
+            }
         }
         // Bytes 0 and 16 of mWork: the push's and the gather's group counts.
         sequence.dispatch(mStages[3], buffers, params, 1);

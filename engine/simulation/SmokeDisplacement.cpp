@@ -147,6 +147,20 @@ CellBox displacementBox(std::span<const MovingObstacle> solids, std::span<const 
     return box;
 }
 
+std::vector<CellBox> displacementBoxes(std::span<const MovingObstacle> solids,
+                                       std::span<const ObstaclePose> poses,
+                                       const MacGrid& smokeGrid) {
+    const CellBox all = displacementBox(solids, poses, smokeGrid);
+    std::vector<CellBox> each;
+    std::int64_t cells = 0;
+    for (std::size_t o = 0; o < solids.size(); ++o) {
+        each.push_back(displacementBox(solids.subspan(o, 1), poses.subspan(o, 1), smokeGrid));
+        cells += each.back().cellCount();
+    }
+    if (cells < all.cellCount()) return each;
+    return {all};
+}
+
 std::span<const std::array<int, 3>> pushOffsets(int dim) {
     static const std::vector<std::array<int, 3>> planar = offsetsOf(2), solid = offsetsOf(3);
     return dim == 3 ? solid : planar;

@@ -18,6 +18,7 @@
 #include <array>
 #include <cstdint>
 #include <span>
+#include <vector>
 
 #include "engine/core/MacGrid.h"
 #include "engine/simulation/MovingObstacle.h"
@@ -51,6 +52,12 @@ struct CellBox {
 /// lattice), turned, within its reach — with one cell around them (where their smoke goes).
 CellBox displacementBox(std::span<const MovingObstacle> solids, std::span<const ObstaclePose> poses,
                         const MacGrid& smokeGrid);
+
+/// The cells to cover as boxes: displacementBox of all the solids, or one box each where those
+/// hold fewer cells together (solids far apart).
+std::vector<CellBox> displacementBoxes(std::span<const MovingObstacle> solids,
+                                       std::span<const ObstaclePose> poses,
+                                       const MacGrid& smokeGrid);
 
 /// The neighbour offsets smoke may be pushed along, in the order ties are broken: 26 in 3D, 8
 /// in 2D (z = 0).

@@ -250,8 +250,9 @@ SmokeFields randomSmoke(const MacGrid& grid, const std::vector<MovingObstacle>& 
 class SmokeDisplacementKernelTest : public testing::VulkanTest {};
 
 TEST_P(SmokeDisplacementKernelTest, DeviceEqualsTheCpuReference) {
-    // A ball and a turning box in a walled 3D box, and a ball across the seam of a periodic 2D
-    // square (substeps: several), six steps each.
+    // A ball and a turning box in a walled 3D box, a ball across the seam of a periodic 2D
+    // square, and two balls far apart in a 3D box (covered box by box), several substeps a step,
+    // six steps each.
     struct Case {
         MacGrid grid;
         std::vector<MovingObstacle> solids;
@@ -265,8 +266,11 @@ TEST_P(SmokeDisplacementKernelTest, DeviceEqualsTheCpuReference) {
         {unitGrid(3, 24),
          {ball(0.17, {{0.0, {0.71, 0.33, 0.52}}, {1.0, {0.21, 0.71, 0.48}}}),
           MovingObstacle{paddle}}},
-        {unitGrid(2, 40, true),
-         {ball(0.13, {{0.0, {0.83, 0.47, 0.0}}, {1.0, {2.03, 0.62, 0.0}}})}}};
+        {unitGrid(2, 40, true), {ball(0.13, {{0.0, {0.83, 0.47, 0.0}}, {1.0, {2.03, 0.62, 0.0}}})}},
+        // Two balls in far corners, overlapping at the end: a box each, then one.
+        {unitGrid(3, 24),
+         {ball(0.1, {{0.0, {0.15, 0.15, 0.2}}, {1.0, {0.9, 0.8, 0.5}}}),
+          ball(0.12, {{0.0, {0.82, 0.81, 0.77}}, {1.0, {0.4, 0.6, 0.55}}})}}};
     for (const Case& c : cases) {
         const std::vector<std::uint8_t> fluid(std::size_t(c.grid.cellCount()), 1);
         SmokeFields cpu = randomSmoke(c.grid, c.solids, 7);
@@ -283,6 +287,10 @@ TEST_P(SmokeDisplacementKernelTest, DeviceEqualsTheCpuReference) {
             sequence.submitAndWait();
         }
         EXPECT_GT(displacementSubsteps(c.solids, 0.0, dt, c.grid), 1);
+        if (c.solids.size() == 2 && c.solids[1].spec.shape == ObstacleShape::Ball) {
+            const std::vector<ObstaclePose> start{c.solids[0].poseAt(0.0), c.solids[1].poseAt(0.0)};
+            EXPECT_EQ(displacementBoxes(c.solids, start, c.grid).size(), 2u) << "a box each";
+        }
         std::vector<float> density(cpu.density.size()), temperature(density.size());
         state.download(density, temperature);
         double worst = 0.0;
