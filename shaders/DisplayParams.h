@@ -79,8 +79,17 @@ struct DisplayParams {
     uint pad1;
 };
 
+/* display_dots.comp: particles as dots over the finished picture. */
+struct DisplayDotsParams {
+    uint count; /* dots: one (x, y) in window pixels each, y down */
+    uint width; /* window pixels */
+    uint height;
+    uint colour; /* the packed pixel, in the screen's byte order */
+};
+
 #ifdef __cplusplus
-static_assert(sizeof(DisplayParams) == 96, "push constants are scalars in 16-byte rows");
+static_assert(sizeof(DisplayParams) == 96 && sizeof(DisplayDotsParams) == 16,
+              "push constants are scalars in 16-byte rows");
 }  // namespace modeflow::shaders
 #endif
 

@@ -100,6 +100,66 @@ bool covers(ObstacleRecord o, vec3 r) {
     return dot(d, d) <= o.radius * o.radius;
 }
 
+// Where `r` (from the centre, covered) leaves the solid, `margin` past its surface, and the
+// outward normal there, both in the world frame (engine/simulation/SolidExit.cpp): the nearest
+// surface point of a ball, box or capsule; Newton steps down a mesh's depth gradient.
+vec3 solidExit(ObstacleRecord o, vec3 r, uint dim, float margin, out vec3 normal) {
+    vec3 d = intoShapeFrame(o, r);
+    vec3 place;
+    vec3 n;
+    if (o.shape == OBSTACLE_MESH) {
+        vec3 p = d / o.scale;
+        const float m = margin / o.scale;
+        n = vec3(0.0, 0.0, 1.0);
+        for (int step = 0; step < 4; ++step) {  // kMeshExitSteps
+            const float depthHere = meshDepth(o, p);
+            if (depthHere < 0.0) break;
+            const float h = 0.5 * o.latticeSpacing;
+            vec3 gradient;
+            for (int a = 0; a < 3; ++a) {
+                vec3 e = vec3(0.0);
+                e[a] = h;
+                gradient[a] = (meshDepth(o, p + e) - meshDepth(o, p - e)) / (2.0 * h);
+            }
+            if (length(gradient) > 0.0) n = -normalize(gradient);
+            p += n * (depthHere + m);
+        }
+        place = p * o.scale;
+    } else if (o.shape == OBSTACLE_BOX) {
+        const vec3 extent = v3(o.halfSize);
+        int nearest = 0;
+        for (int a = 1; a < int(dim); ++a)
+            if (extent[a] - abs(d[a]) < extent[nearest] - abs(d[nearest])) nearest = a;
+        const float side = d[nearest] >= 0.0 ? 1.0 : -1.0;
+        place = d;
+        place[nearest] = side * (extent[nearest] + margin);
+        n = vec3(0.0);
+        n[nearest] = side;
+    } else {
+        vec3 base = vec3(0.0);
+        const vec3 axis = v3(o.axis);
+        const float length2 = dot(axis, axis);
+        if (o.shape == OBSTACLE_CAPSULE && length2 > 0.0)
+            base = clamp(dot(d, axis) / length2, -1.0, 1.0) * axis;
+        const vec3 q = d - base;
+        const float len = length(q);
+        n = vec3(1.0, 0.0, 0.0);
+        if (len > 0.0) {
+            n = q / len;
+        } else if (o.shape == OBSTACLE_CAPSULE && length2 > 0.0) {
+            if (dim == 2u) {
+                n = normalize(vec3(-axis.y, axis.x, 0.0));
+            } else {
+                const vec3 helper = abs(axis.x) <= abs(axis.y) ? vec3(1.0, 0.0, 0.0) : vec3(0.0, 1.0, 0.0);
+                n = normalize(cross(axis, helper));
+            }
+        }
+        place = base + n * (o.radius + margin);
+    }
+    normal = orientationOf(o) * n;
+    return orientationOf(o) * (place - d);
+}
+
 // Whether `r` is within the obstacle's reach (most points are not: the shape's test is skipped).
 bool withinReach(ObstacleRecord o, vec3 r) { return dot(r, r) <= o.reach * o.reach; }
 

@@ -17,4 +17,11 @@ inline constexpr int maxObstacles = 64;
 /// that drives the air (`velocity`).
 inline constexpr int maxVelocityRegions = maxObstacles + maxSmokeEmitters;
 
+/// The most `[[particles]]` sets one scene takes.
+inline constexpr int maxParticleSets = 64;
+
+/// The most particles one run emits in all (2^24): every one lives on until the run ends, 32 bytes
+/// each on the device, and float32 positions still tell them apart.
+inline constexpr long long maxParticles = 1LL << 24;
+
 }  // namespace modeflow

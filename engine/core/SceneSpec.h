@@ -214,6 +214,23 @@ struct ForcingSpec {
     bool operator==(const ForcingSpec&) const = default;
 };
 
+/// `[[particles]]`: points the air carries, seeded in a ball or a box (`shape`, with a source's
+/// shape keys), either `count` of them at `start` or `rate` per simulated second from `start` until
+/// `end` (at most until the shot's last step). With `drag` = 0 they are tracers moving at the
+/// air's velocity; with `drag` > 0 inertial (a leaf, a spark): their velocity relaxes towards the
+/// air's at that rate while `gravity` pulls them down the buoyancy axis.
+struct ParticleSetSpec {
+    ShapeSpec region;  ///< ball or box
+    std::int64_t count = 0;
+    double rate = 0.0;
+    double start = 0.0;
+    double end = std::numeric_limits<double>::infinity();
+    double drag = 0.0;      ///< per unit time; 0: tracers
+    double gravity = 9.81;  ///< inertial sets: acceleration down the buoyancy axis
+    std::uint64_t seed = 1;
+    bool operator==(const ParticleSetSpec&) const = default;
+};
+
 struct OutputSpec {
     int frames = 48;
     int stepsPerFrame = 1;
@@ -240,6 +257,7 @@ struct SceneSpec {
     InitialSpec initial;
     std::vector<SourceSpec> sources;
     std::vector<ObstacleSpec> obstacles;
+    std::vector<ParticleSetSpec> particles;
     SmokeSpec smoke;
     ForcingSpec forcing;
     OutputSpec output;

@@ -6,6 +6,7 @@
 
 #include "engine/core/Error.h"
 #include "engine/core/FaceLocation.h"
+#include "engine/core/RuntimeLimits.h"
 #include "engine/dynamics/ModalDivergence.h"
 #include "engine/simulation/SmokeDisplacement.h"
 
@@ -29,8 +30,11 @@ std::uint32_t maxDispatchesPerStep(const ModalStepper& stepper, const SmokeState
     // every smoke cell in dispatches of at least 65535 groups of 64 (the least
     // maxComputeWorkGroupCount), then four dispatches; two fills when its stamps wrap.
     const std::int64_t boxDispatches = (smoke.cellCount() + 65535 * 64 - 1) / (65535 * 64);
+    // The particles: a dispatch per 65535 groups of 64.
+    const std::int64_t particleDispatches = (maxParticles + 65535 * 64 - 1) / (65535 * 64);
     return std::uint32_t(kMaxSubsteps * stepper.dispatchesPerStep() + 64 +
-                         (boxDispatches * maxObstacles + 5) * maxDisplacementSubsteps + 2);
+                         (boxDispatches * maxObstacles + 5) * maxDisplacementSubsteps + 2 +
+                         particleDispatches);
 }
 
 std::vector<double> widened(const std::vector<float>& values) {
@@ -64,6 +68,7 @@ Simulation::Simulation(const vulkan::VulkanContext& context, const BasisCache& c
       mSmoke(context, MacGrid::fromSpec(cache.grid), mSettings.smokeScale, smokeMask),
       mAdvection(context),
       mDisplacement(context, mSmoke),
+      mParticles(context, mSmoke, smokeMask, mSettings.particles, mSettings.shotEnd),
       mSequence(context, timestamps, maxDispatchesPerStep(mStepper, mSmoke)) {
     if (!(mSettings.dt > 0.0)) throw Error("simulation: dt must be positive");
     if (mSettings.stepsPerFrame < 1) throw Error("simulation: steps per frame must be at least 1");
@@ -75,6 +80,7 @@ void Simulation::restore(double time, const Eigen::VectorXd& v, const SmokeField
     const std::vector<float> density(smoke.density.begin(), smoke.density.end()),
         temperature(smoke.temperature.begin(), smoke.temperature.end());
     mSmoke.upload(density, temperature);
+    mParticles.restore({});
     mTime = time;
     mStep = std::lround(time / mSettings.dt);
     mSubsteps = 1;
@@ -178,6 +184,8 @@ void Simulation::recordStep(std::vector<std::size_t>& boundaries) {
     boundaries.push_back(mSequence.dispatchCount());
     mDisplacement.record(mSequence, mSmoke, mSettings.obstacles, mTime, dt);
     boundaries.push_back(mSequence.dispatchCount());
+    mParticles.record(mSequence, mSmoke, mSettings.obstacles, mTime, dt);
+    boundaries.push_back(mSequence.dispatchCount());
 }
 
 void Simulation::recordReconstruction() {
@@ -222,9 +230,9 @@ FrameStats Simulation::advanceSteps(int steps) {
         if (times.empty()) continue;
         ++stats.timedSteps;
         // The smoke pushed out of solids counts to the obstacles.
-        const std::array<double*, 6> stages{&stats.forcesMs,         &stats.modalMs,
-                                            &stats.reconstructionMs, &stats.obstaclesMs,
-                                            &stats.advectionMs,      &stats.obstaclesMs};
+        const std::array<double*, 7> stages{
+            &stats.forcesMs,    &stats.modalMs,     &stats.reconstructionMs, &stats.obstaclesMs,
+            &stats.advectionMs, &stats.obstaclesMs, &stats.particlesMs};
         for (std::size_t stage = 0; stage < stages.size(); ++stage)
             for (std::size_t d = boundaries[stage]; d < boundaries[stage + 1]; ++d)
                 *stages[stage] += times[d];

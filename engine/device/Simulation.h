@@ -7,6 +7,7 @@
 ///     → modal step (viscosity, LANS-α) → reconstruction u = Σ v_i Ψ_i
 ///     (the basis's columns, or a closed-form basis's separable transforms)
 ///     → moving obstacles (v −= projected mismatch, reconstruct again) → smoke advection + emitters
+///     → smoke pushed out of solids → particles
 ///
 /// with nothing read back; the host reads the velocity, smoke or grid velocity only when it asks
 /// (display, export). CPU reference of the whole chain: reference::Simulation.
@@ -20,6 +21,7 @@
 #include "engine/device/ModalStepper.h"
 #include "engine/device/ModeBuffer.h"
 #include "engine/device/ObstacleCorrection.h"
+#include "engine/device/ParticleAdvection.h"
 #include "engine/device/SeparableTransform.h"
 #include "engine/device/SmokeAdvection.h"
 #include "engine/device/SmokeDisplacement.h"
@@ -49,6 +51,8 @@ public:
     void setMagneticField(const Eigen::VectorXd& f) override { mStepper.setMagneticField(f); }
     std::vector<double> faceMagneticField() const override;
     void restore(double time, const Eigen::VectorXd& v, const SmokeFields& smoke) override;
+    Particles particles() const override { return mParticles.particles(); }
+    void setParticles(const Particles& particles) override { mParticles.restore(particles); }
     void setSplats(std::span<const ForceSplat> splats) override;
     /// Each step is its own submission.
     FrameStats advanceSteps(int steps) override;
@@ -95,6 +99,7 @@ private:
     SmokeState mSmoke;
     SmokeAdvectionKernels mAdvection;
     SmokeDisplacement mDisplacement;
+    ParticleAdvection mParticles;
     mutable vulkan::CommandSequence
         mSequence;                      ///< also records faceMagneticField()'s reconstruction
     std::vector<bool> mActiveEmitters;  ///< what the device's emitter list holds now

@@ -4,8 +4,10 @@
 #include <string>
 
 #include "engine/core/Error.h"
+#include "engine/preview/Palette.h"
 #include "engine/vulkan/VulkanContext.h"
 #include "shaders/DisplayParams.h"
+#include "shaders/display_dots.spv.h"
 #include "shaders/display_picture.spv.h"
 #include "shaders/display_smoke_2d.spv.h"
 
@@ -58,7 +60,8 @@ DisplayKernels::DisplayKernels(const vulkan::VulkanContext& context)
       mSmoke2D(context,
                {"display_smoke_2d", display_smoke_2d_spv, 5, sizeof(shaders::DisplayParams)}),
       mPicture(context,
-               {"display_picture", display_picture_spv, 3, sizeof(shaders::DisplayParams)}) {}
+               {"display_picture", display_picture_spv, 3, sizeof(shaders::DisplayParams)}),
+      mDots(context, {"display_dots", display_dots_spv, 2, sizeof(shaders::DisplayDotsParams)}) {}
 
 void DisplayKernels::recordSmoke2D(vulkan::CommandSequence& sequence, const FieldBuffers& fields,
                                    const Smoke2DLook& look, const vulkan::DeviceBuffer& overlay,
@@ -95,6 +98,25 @@ void DisplayKernels::recordPicture(vulkan::CommandSequence& sequence,
     const shaders::DisplayParams p = paramsFor(target, pictureWidth, pictureHeight, paddle);
     const std::array<const vulkan::DeviceBuffer*, 3> buffers{&picture, &overlay, &pixels};
     sequence.dispatch(mPicture, buffers, p, pixelGroups(mPicture, target, overlay, pixels));
+}
+
+void DisplayKernels::recordDots(vulkan::CommandSequence& sequence, const vulkan::DeviceBuffer& dots,
+                                std::uint32_t count, const DisplayTarget& target,
+                                const vulkan::DeviceBuffer& pixels) const {
+    if (count == 0) return;
+    requireBytes(dots, VkDeviceSize(count) * 2 * sizeof(float));
+    requireBytes(pixels, VkDeviceSize(target.width) * VkDeviceSize(target.height) * 4);
+    const preview::Rgba c = preview::palette::kParticle;
+    const std::uint32_t red = c[0], blue = c[2];
+    shaders::DisplayDotsParams p{};
+    p.count = count;
+    p.width = std::uint32_t(target.width);
+    p.height = std::uint32_t(target.height);
+    p.colour = (target.blueFirst ? blue : red) | std::uint32_t(c[1]) << 8 |
+               (target.blueFirst ? red : blue) << 16 | 0xffu << 24;
+    const std::array<const vulkan::DeviceBuffer*, 2> buffers{&dots, &pixels};
+    sequence.dispatch(mDots, buffers, p,
+                      (count + mDots.workgroupSize() - 1) / mDots.workgroupSize());
 }
 
 }  // namespace modeflow::display

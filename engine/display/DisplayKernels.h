@@ -71,10 +71,18 @@ public:
                        const vulkan::DeviceBuffer& overlay, const DisplayTarget& target,
                        const vulkan::DeviceBuffer& pixels) const;
 
+    /// Records `count` dots (particles; `dots` holds (x, y) window pixels per dot, y down, as
+    /// float32) over the picture in `pixels`, in the particle colour (preview/Palette.h).
+    /// @throw modeflow::Error when a buffer is too small.
+    void recordDots(vulkan::CommandSequence& sequence, const vulkan::DeviceBuffer& dots,
+                    std::uint32_t count, const DisplayTarget& target,
+                    const vulkan::DeviceBuffer& pixels) const;
+
 private:
     const vulkan::VulkanContext& mContext;
     vulkan::ComputeKernel mSmoke2D;
     vulkan::ComputeKernel mPicture;
+    vulkan::ComputeKernel mDots;
 };
 
 }  // namespace modeflow::display

@@ -6,24 +6,14 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
-#include <cstring>
 
 #include "engine/core/AtomicFile.h"
 #include "engine/core/Error.h"
-
-static_assert(__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__, "PLY frames are written little-endian");
+#include "engine/output/PlyBytes.h"
 
 namespace modeflow {
-namespace {
 
-template <typename T>
-void put(std::string& bytes, T value) {
-    char raw[sizeof(T)];
-    std::memcpy(raw, &value, sizeof(T));
-    bytes.append(raw, sizeof(T));
-}
-
-}  // namespace
+using ply::put;
 
 std::string plyFrameFileName(std::string_view sceneName, int frame) {
     if (sceneName.empty()) throw Error("a PLY frame file needs a scene name");

@@ -27,8 +27,13 @@ bool isRunFile(const std::string& file, const std::string& scene) {
     const std::string prefix = scene + "_";
     if (file.size() <= prefix.size() + 4 || file.compare(0, prefix.size(), prefix) != 0)
         return false;
-    const std::string_view rest = std::string_view(file).substr(prefix.size());
+    std::string_view rest = std::string_view(file).substr(prefix.size());
     const std::string_view extension = rest.substr(rest.size() - 4);
+    // NAME_particles_0001.ply: the particles of a frame.
+    constexpr std::string_view particles = "particles_";
+    if (extension == ".ply" && rest.substr(0, particles.size()) == particles &&
+        rest.size() > particles.size() + 4)
+        rest.remove_prefix(particles.size());
     return (extension == ".vdb" || extension == ".ply" || extension == ".png") &&
            allDigits(rest.substr(0, rest.size() - 4));
 }

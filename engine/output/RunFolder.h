@@ -35,8 +35,8 @@ public:
     /// Temporaries of gone processes removed when the folder was taken.
     int staleTemporariesRemoved() const { return mStaleRemoved; }
     /// Removes the files an earlier run of this scene left here (NAME_0001.vdb or .ply,
-    /// NAME_0001.png, NAME_contact.png, NAME.resume; other scenes' files stay) and returns how
-    /// many.
+    /// NAME_particles_0001.ply, NAME_0001.png, NAME_contact.png, NAME.resume; other scenes' files
+    /// stay) and returns how many.
     int removeEarlierRun() const;
 
 private:

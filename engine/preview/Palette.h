@@ -12,6 +12,8 @@ inline constexpr Rgba kBackground{14, 16, 22, 255};
 inline constexpr Rgba kWall{64, 70, 86, 255};
 inline constexpr Rgba kSmoke{236, 240, 250, 255};
 inline constexpr Rgba kHotSmoke{255, 168, 84, 255};
+/// Particles: a leaf green-gold that reads on dark background and white smoke alike.
+inline constexpr Rgba kParticle{214, 178, 40, 255};
 inline constexpr Rgba kSheetBackground{6, 7, 10, 255};
 inline constexpr Rgba kLabel{250, 250, 250, 255};
 

@@ -22,6 +22,8 @@ Simulation::Simulation(const BasisCache& cache, const StructuralCoefficients& co
       mStepper(coefficients, mSettings),
       mAdvection(MacGrid::fromSpec(cache.grid), mSettings.smokeScale, std::move(smokeMask)),
       mDisplacement(mAdvection.smokeGrid(), mAdvection.fluidMask()),
+      mParticles(MacGrid::fromSpec(cache.grid), mAdvection.smokeGrid(), mAdvection.fluidMask(),
+                 mSettings.particles, mSettings.shotEnd),
       mFaceVelocity(std::size_t(MacGrid::fromSpec(cache.grid).faceTotal()), 0.0) {
     if (!(mSettings.dt > 0.0)) throw Error("simulation: dt must be positive");
     if (mSettings.stepsPerFrame < 1) throw Error("simulation: steps per frame must be at least 1");
@@ -43,6 +45,7 @@ void Simulation::restore(double time, const Eigen::VectorXd& v, const SmokeField
         throw Error("simulation: saved smoke of " + std::to_string(smoke.density.size()) +
                     " cells, the smoke grid has " + std::to_string(mFields.density.size()));
     mFields = smoke;
+    mParticles.restore({});
     mTime = time;
     mStep = std::lround(time / mSettings.dt);
 }
@@ -92,6 +95,7 @@ FrameStats Simulation::advanceSteps(int steps) {
         mAdvection.step(std::span<const double>(mFaceVelocity), dt, mSettings.advection,
                         activeEmitters(mSettings.emitters, mTime), mFields);
         mDisplacement.step(mSettings.obstacles, mTime, dt, mFields);
+        mParticles.step(mFaceVelocity, mSettings.obstacles, mTime, dt);
         mTime += dt;
         ++stats.steps;
     }

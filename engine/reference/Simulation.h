@@ -1,8 +1,8 @@
 #pragma once
 /// @file Simulation.h
 /// The whole step on the CPU, in double precision: forces from the smoke, the modal step,
-/// reconstruction, moving obstacles, advection, smoke pushed out of solids — each stage this
-/// folder's reference of the device stage of the same name. What `--device cpu` runs and what
+/// reconstruction, moving obstacles, advection, smoke pushed out of solids, particles — each stage
+/// this folder's reference of the device stage of the same name. What `--device cpu` runs and what
 /// device::Simulation is compared with. It also runs MHD (seed §6.3.5): the modal state is then [v;
 /// F] (MhdSystem), forces and moving obstacles act on v alone, and the smoke is carried by v.
 
@@ -11,6 +11,7 @@
 
 #include "engine/basis/VelocityBasis.h"
 #include "engine/reference/ModalStepper.h"
+#include "engine/reference/ParticleAdvection.h"
 #include "engine/reference/SmokeAdvection.h"
 #include "engine/reference/SmokeDisplacement.h"
 #include "engine/simulation/Simulator.h"
@@ -31,6 +32,8 @@ public:
     void restore(double time, const Eigen::VectorXd& v, const SmokeFields& smoke) override;
     Eigen::VectorXd magneticField() const override { return mStepper.magneticField(); }
     void setMagneticField(const Eigen::VectorXd& f) override { mStepper.setMagneticField(f); }
+    Particles particles() const override { return mParticles.particles(); }
+    void setParticles(const Particles& particles) override { mParticles.restore(particles); }
     void setSplats(std::span<const ForceSplat> splats) override {
         mSplats.assign(splats.begin(), splats.end());
     }
@@ -52,6 +55,7 @@ private:
     ModalStepper mStepper;
     SmokeAdvection mAdvection;
     SmokeDisplacement mDisplacement;
+    ParticleAdvection mParticles;
     std::vector<ForceSplat> mSplats;
     std::vector<double> mFaceVelocity;
     SmokeFields mFields;

@@ -4,11 +4,13 @@
 #include <cmath>
 
 #include "engine/preview/ContactSheet.h"
+#include "engine/preview/ParticleDots.h"
 #include "engine/preview/PngReader.h"
 #include "engine/preview/PngWriter.h"
 #include "engine/preview/SmokeImage2D.h"
 #include "engine/preview/VolumeReference.h"
 #include "engine/preview/VolumeRenderer.h"
+#include "engine/preview/VolumeView.h"
 #include "engine/vulkan/DeviceBuffer.h"
 
 namespace modeflow {
@@ -41,7 +43,7 @@ FramePreview::FramePreview(const MacGrid& smokeGrid, std::span<const std::uint8_
 FramePreview::~FramePreview() = default;
 
 void FramePreview::write(const std::filesystem::path& file, const SmokeFields& smoke,
-                         bool temperature) {
+                         bool temperature, const Particles& particles) {
     // One exposure for the whole run, raised as the smoke thickens, so that pictures of one run
     // compare (a per-picture exposure would make every frame look alike).
     mExposure = std::max(mExposure, densityPercentile(smoke.density));
@@ -54,6 +56,9 @@ void FramePreview::write(const std::filesystem::path& file, const SmokeFields& s
             mGrid, std::span<const double>(smoke.density),
             temperature ? std::span<const double>(smoke.temperature) : std::span<const double>(),
             mMask, options);
+        preview::drawParticles2D(picture, mGrid,
+                                 preview::pixelsPerCell(mGrid.cells[0], options.targetWidth),
+                                 particles.position);
     } else {
         const std::vector<float> density(smoke.density.begin(), smoke.density.end());
         // Optical depth 6 across the box at the exposure density.
@@ -66,6 +71,9 @@ void FramePreview::write(const std::filesystem::path& file, const SmokeFields& s
             picture = preview::renderVolumeReference(mGrid, density, mMask, kVolumeSize,
                                                      kVolumeSize, scale);
         }
+        preview::drawParticles3D(picture, mGrid,
+                                 preview::volumeViewParams(mGrid, kVolumeSize, kVolumeSize, scale),
+                                 particles.position);
     }
     preview::writePng(file, picture);
 }

@@ -1,7 +1,8 @@
 #pragma once
 /// @file FramePreview.h
 /// `modeflow run --preview`: a PNG of the smoke every K frames (2D: the smoke grid as an image;
-/// 3D: ray-marched on the device, or by the CPU reference renderer with `--device cpu`) and a
+/// 3D: ray-marched on the device, or by the CPU reference renderer with `--device cpu`; particles
+/// as dots over it) and a
 /// contact sheet of them at the end, made from the files (so it covers a resumed run's earlier
 /// frames too, and memory stays flat however many previews a run writes). The exposure is the
 /// run's: the largest 99th-percentile density of the pictures so far.
@@ -16,6 +17,7 @@
 #include "engine/core/MacGrid.h"
 #include "engine/preview/Image.h"
 #include "engine/reference/SmokeAdvection.h"
+#include "engine/simulation/Particles.h"
 #include "engine/vulkan/VulkanContext.h"
 
 namespace modeflow::preview {
@@ -31,8 +33,9 @@ public:
                  const vulkan::VulkanContext* context);
     ~FramePreview();
 
-    /// Renders `smoke` and writes it to `file`.
-    void write(const std::filesystem::path& file, const SmokeFields& smoke, bool temperature);
+    /// Renders `smoke` with `particles` over it and writes it to `file`.
+    void write(const std::filesystem::path& file, const SmokeFields& smoke, bool temperature,
+               const Particles& particles = {});
 
 private:
     MacGrid mGrid;

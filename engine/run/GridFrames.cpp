@@ -4,6 +4,7 @@
 #include <utility>
 #include <vector>
 
+#include "engine/output/ParticleFrame.h"
 #include "engine/output/VdbFrame.h"
 
 namespace modeflow {
@@ -44,21 +45,33 @@ Checkpoint GridFrames::writeFrame(int frame, const std::filesystem::path& pictur
     vdb.modeflowVersion = MODEFLOW_VERSION;
     vdb.options.halfFloat = mFiles.halfFloat;
     bar.timed("VDB files", [&] { writeVdbFrame(frameFile(frame), vdb); });
+    Particles particles;
+    if (!settings().particles.empty()) {
+        particles = bar.timed("reading fields", [&] { return mSimulator.particles(); });
+        const ParticleFrame points{particles.position, particles.velocity, frame, mSimulator.time(),
+                                   mFiles.sceneHash};
+        bar.timed("particle files", [&] {
+            writeParticleFrame(mFiles.folder / particleFrameFileName(mFiles.sceneName, frame),
+                               points);
+        });
+    }
     if (!picture.empty() && mPreview)
-        bar.timed("previews", [&] { mPreview->write(picture, smoke, temperature); });
+        bar.timed("previews", [&] { mPreview->write(picture, smoke, temperature, particles); });
     return {frame,
             mSimulator.time(),
             0,
             mSimulator.velocity(),
             mSimulator.magneticField(),
             mSimulator.carry(),
-            std::move(smoke)};
+            std::move(smoke),
+            std::move(particles)};
 }
 
 void GridFrames::restore(const Checkpoint& from) {
     mSimulator.restore(from.time, from.velocity, from.smoke);
     if (settings().mhd) mSimulator.setMagneticField(from.magnetic);
     mSimulator.setCarry(from.carry);
+    mSimulator.setParticles(from.particles);
 }
 
 }  // namespace modeflow

@@ -1,8 +1,9 @@
 #pragma once
 /// @file GridFrames.h
 /// The frames of a grid scene's run: one OpenVDB file per frame (density, temperature, the face
-/// velocity and magnetic field, the fluid mask; engine/output/VdbFrame.h), a picture of the smoke
-/// when asked, and the checkpoint of the simulation's state and smoke.
+/// velocity and magnetic field, the fluid mask; engine/output/VdbFrame.h), the particles' PLY
+/// (engine/output/ParticleFrame.h) when the scene has any, a picture of the smoke (and the
+/// particles) when asked, and the checkpoint of the simulation's state, smoke and particles.
 
 #include <filesystem>
 #include <memory>

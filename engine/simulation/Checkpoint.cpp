@@ -16,6 +16,7 @@
 #include "engine/core/BinaryCodec.h"
 #include "engine/core/Error.h"
 #include "engine/core/InputFile.h"
+#include "engine/simulation/ParticleEmission.h"
 
 namespace modeflow {
 namespace {
@@ -23,8 +24,8 @@ namespace {
 constexpr char kMagic[16] = {'M', 'O', 'D', 'E', 'F', 'L', 'O', 'W',
                              '-', 'R', 'E', 'S', 'U', 'M', 'E', '\0'};
 /// 2: the magnetic field after the velocity; 3: XXH3; 4: the held rate after the field; 5: the
-/// whole step carry (warm start, substeps) in its place.
-constexpr std::uint32_t kVersion = 5;
+/// whole step carry (warm start, substeps) in its place; 6: the particles after the smoke.
+constexpr std::uint32_t kVersion = 6;
 /// The most warm-start vectors a stepper holds (StepCarry::warmRhs).
 constexpr std::uint64_t kMaxWarmRhs = 2;
 /// The most modal substeps a run takes per step (device::Simulation).
@@ -93,6 +94,9 @@ void writeCheckpoint(const std::filesystem::path& path, const Checkpoint& checkp
     w.pod(std::uint32_t(carry.easySteps));
     w.vector(checkpoint.smoke.density);
     w.vector(checkpoint.smoke.temperature);
+    w.vector(checkpoint.particles.position);
+    w.vector(checkpoint.particles.velocity);
+    w.vector(checkpoint.particles.set);
     ByteWriter checksum;
     checksum.pod(checksum64(w.bytes()));
     writeFileAtomically(path, {w.bytes(), checksum.bytes()}, "checkpoint");
@@ -150,7 +154,16 @@ Checkpoint readCheckpoint(const std::filesystem::path& path) {
                                       std::pair{&checkpoint.smoke.temperature, "temperature"}})
         if (!std::all_of(field->begin(), field->end(), [](double c) { return std::isfinite(c); }))
             fail(path, std::string("its smoke ") + what + " is not finite");
-    if (!reader.atEnd()) fail(path, "bytes follow its smoke fields");
+    Particles& particles = checkpoint.particles;
+    particles.position = reader.vector<double>();
+    particles.velocity = reader.vector<double>();
+    particles.set = reader.vector<std::uint8_t>();
+    try {
+        requireParticleValues(particles);
+    } catch (const Error& e) {
+        fail(path, std::string("its ") + e.what());
+    }
+    if (!reader.atEnd()) fail(path, "bytes follow its particles");
     return checkpoint;
 }
 

@@ -13,9 +13,10 @@ struct FrameStats {
     int timedSteps = 0;        ///< steps whose device times were measured (Simulation::setTiming)
     /// Device time per stage summed over the timed steps, milliseconds (0 on the CPU reference or
     /// without timestamps): forces (force field + projection), modal step, reconstruction, moving
-    /// obstacles (their correction and the reconstruction after it), advection.
+    /// obstacles (their correction and the reconstruction after it, and smoke pushed out of
+    /// them), advection, particles.
     double forcesMs = 0.0, modalMs = 0.0, reconstructionMs = 0.0, obstaclesMs = 0.0,
-           advectionMs = 0.0;
+           advectionMs = 0.0, particlesMs = 0.0;
 };
 
 }  // namespace modeflow

@@ -34,6 +34,8 @@ SimulationSettings SimulationSettings::fromScene(const SceneSpec& scene, const B
                     " [[obstacle]] entries; the runtime takes at most " +
                     std::to_string(maxObstacles));
     for (const ObstacleSpec& obstacle : scene.obstacles) settings.obstacles.push_back({obstacle});
+    settings.particles = scene.particles;
+    settings.shotEnd = double(scene.output.frames) * scene.output.stepsPerFrame * sim.dt;
     return settings;
 }
 

@@ -31,6 +31,10 @@ struct SimulationSettings {
     ModePrecision basisPrecision = ModePrecision::Float32;  ///< device only
     std::vector<SmokeEmitter> emitters;
     std::vector<MovingObstacle> obstacles;
+    /// `[[particles]]` sets (ParticleEmission.h, ParticleMotion.h), emitting until shotEnd at most:
+    /// frames × steps per frame × dt.
+    std::vector<ParticleSetSpec> particles;
+    double shotEnd = 0.0;
 
     /// What the velocity correction holds during the step starting at t (seed §6.3.5): the
     /// obstacles, then the sources with a `velocity` active at t, as regions of their shape whose

@@ -15,6 +15,7 @@
 #include "engine/core/MacGrid.h"
 #include "engine/simulation/ForceSplat.h"
 #include "engine/simulation/MovingObstacle.h"
+#include "engine/simulation/Particles.h"
 #include "engine/simulation/SimulationSettings.h"
 #include "engine/simulation/SmokeFields.h"
 #include "engine/simulation/StepCarry.h"
@@ -29,7 +30,8 @@ public:
     /// @throw modeflow::Error on a wrong size.
     virtual void setVelocity(const Eigen::VectorXd& v) = 0;
     virtual Eigen::VectorXd velocity() const = 0;
-    /// Continues from a saved state (a resumed run): the time, the modal velocity and the smoke.
+    /// Continues from a saved state (a resumed run): the time, the modal velocity and the smoke;
+    /// no particles until setParticles().
     /// @throw modeflow::Error on wrong sizes.
     virtual void restore(double time, const Eigen::VectorXd& v, const SmokeFields& smoke) = 0;
     /// What the simulator carries from one step to the next beyond its state (StepCarry.h);
@@ -46,6 +48,13 @@ public:
     virtual void setMagneticField(const Eigen::VectorXd&) {
         throw Error("simulation: this run simulates no magnetic field ([simulation].mhd)");
     }
+    /// The `[[particles]]` now, in emission order (Particles.h); none without sets.
+    virtual Particles particles() const = 0;
+    /// Continues from saved particles (a resumed run), after restore(): those the sets emitted
+    /// until then, as particles() gave them.
+    /// @throw modeflow::Error when they do not fit the scene's sets (ParticleEmission::restore)
+    ///        or hold a non-finite value.
+    virtual void setParticles(const Particles& particles) = 0;
     /// Stirring splats acting from the next step on (replacing earlier ones).
     virtual void setSplats(std::span<const ForceSplat> splats) = 0;
 
@@ -57,7 +66,7 @@ public:
     virtual void setIntegrator(Integrator integrator) = 0;
 
     /// `steps` steps, each: forces from the current smoke, the modal step, the grid velocity,
-    /// moving obstacles, smoke advection and emitters.
+    /// moving obstacles, smoke advection and emitters, smoke out of solids, particles.
     /// @throw ModalStateDiverged (engine/dynamics/ModalDivergence.h) when a step leaves the modal
     /// state non-finite.
     virtual FrameStats advanceSteps(int steps) = 0;

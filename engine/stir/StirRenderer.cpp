@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "engine/run/RunInputs.h"
 #include "engine/stir/StirSession.h"
 #include "engine/stir/StirView.h"
+#include "engine/vulkan/DeviceBuffer.h"
 
 namespace modeflow::stir {
 namespace {
@@ -46,7 +48,7 @@ display::PaddleOverlay paddleOverlay(const StirSession& session, const StirView&
 }  // namespace
 
 StirRenderer::StirRenderer(const vulkan::VulkanContext& context, const RunInputs& run)
-    : mFields(context, run), mPicture(context) {
+    : mContext(context), mFields(context, run), mPicture(context) {
     const MacGrid grid = MacGrid::fromSpec(run.cache.grid).refined(run.settings.smokeScale);
     if (grid.dim == 3)
         mVolume = std::make_unique<preview::VolumeRenderer>(
@@ -80,7 +82,40 @@ void StirRenderer::draw(const StirSession& session, const StirView& view,
         mPicture.kernels().recordSmoke2D(mPicture.sequence(), fields, look, mPicture.overlay(),
                                          target, mPicture.pixels());
     }
+    if (!session.settings().particles.empty())
+        mPicture.kernels().recordDots(mPicture.sequence(), *mDots,
+                                      uploadDots(session, view, target), target, mPicture.pixels());
     mPicture.finish();
+}
+
+std::uint32_t StirRenderer::uploadDots(const StirSession& session, const StirView& view,
+                                       const display::DisplayTarget& target) {
+    const Particles particles = session.simulation().particles();
+    const display::Viewport& port = target.viewport;
+    const MacGrid& grid = view.grid();
+    std::vector<float> dots;
+    dots.reserve(2 * particles.size());
+    for (std::size_t i = 0; i < particles.size(); ++i) {
+        const Vec3 p{particles.position[3 * i], particles.position[3 * i + 1],
+                     particles.position[3 * i + 2]};
+        double x = 0.0, y = 0.0;
+        if (grid.dim == 2) {
+            x = (p[0] - grid.origin[0]) / grid.length(0);
+            y = 1.0 - (p[1] - grid.origin[1]) / grid.length(1);
+        } else {
+            const auto seen = view.project(p);
+            if (!seen) continue;
+            x = seen->x / StirView::kPictureWidth;
+            y = seen->y / StirView::kPictureHeight;
+        }
+        dots.push_back(float(port.x + x * port.width));
+        dots.push_back(float(port.y + y * port.height));
+    }
+    const std::size_t bytes = std::max<std::size_t>(dots.size(), 2) * sizeof(float);
+    if (!mDots || mDots->bytes() < bytes)
+        mDots = std::make_unique<vulkan::DeviceBuffer>(mContext, bytes, "particle dots");
+    if (!dots.empty()) mDots->upload<float>(dots);
+    return std::uint32_t(dots.size() / 2);
 }
 
 }  // namespace modeflow::stir

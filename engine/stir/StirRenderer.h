@@ -3,8 +3,10 @@
 /// The stir window's picture, drawn on the display's device into a buffer of packed pixels that
 /// a Screen presents: a 2D scene's smoke straight from the field buffers (DisplayKernels), a 3D
 /// scene ray-marched from the view's camera (VolumeRenderer) and scaled into the window; the
-/// paddle, the velocity arrows and the text (statistics, key help) over it, in a WindowPicture.
+/// paddle, the velocity arrows, the particles and the text (statistics, key help) over it, in a
+/// WindowPicture.
 
+#include <cstdint>
 #include <memory>
 
 #include <vulkan/vulkan.h>
@@ -34,6 +36,13 @@ public:
     const WindowPicture& picture() const { return mPicture; }
 
 private:
+    /// The particles' places in the window (2D: the smoke grid's box in the viewport, y up; 3D:
+    /// the camera's picture scaled into it), uploaded as dots; their count.
+    std::uint32_t uploadDots(const StirSession& session, const StirView& view,
+                             const display::DisplayTarget& target);
+
+    const vulkan::VulkanContext& mContext;
+    std::unique_ptr<vulkan::DeviceBuffer> mDots;
     DisplayedFields mFields;
     WindowPicture mPicture;
     std::unique_ptr<preview::VolumeRenderer> mVolume;  ///< 3D scenes

@@ -48,7 +48,7 @@ SceneSpec readScene(std::string_view text, const std::filesystem::path& origin) 
     } else {
         scene.grid = readGrid(reader, {*reader.requireTable(root, "grid"), "[grid]"});
         reader.forEachEntry(root, "domain", [&](const toml::table& t, int index) {
-            scene.domain.push_back(readShape(reader, t, "[[domain]]", index, true));
+            scene.domain.push_back(readShape(reader, t, "[[domain]]", index, ShapeUse::Domain));
         });
     }
     const Section basis{*reader.requireTable(root, "basis"), "[basis]"};
@@ -93,6 +93,14 @@ SceneSpec readScene(std::string_view text, const std::filesystem::path& origin) 
     if (const toml::table* t = reader.optionalTable(root, "output")) {
         scene.output = readOutput(reader, {*t, "[output]"});
     }
+    // After [output] and [simulation]: a rate's particles are counted up to the shot's end.
+    checkEntryCount(reader, root, "particles", maxParticleSets, "particle sets");
+    const double shotEnd =
+        double(scene.output.frames) * scene.output.stepsPerFrame * scene.simulation.dt;
+    std::int64_t emitted = 0;
+    reader.forEachEntry(root, "particles", [&](const toml::table& t, int index) {
+        scene.particles.push_back(readParticleSet(reader, t, index, shotEnd, emitted));
+    });
     return scene;
 }
 

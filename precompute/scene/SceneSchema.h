@@ -18,8 +18,8 @@ using keywords::keywordOf;
 using namespace keywords;
 
 inline constexpr std::string_view kTopLevelTables[] = {
-    "grid",   "domain",   "surface", "basis",   "simulation", "initial",
-    "source", "obstacle", "smoke",   "forcing", "output"};
+    "grid",   "domain",   "surface",   "basis", "simulation", "initial",
+    "source", "obstacle", "particles", "smoke", "forcing",    "output"};
 inline constexpr std::string_view kGridKeys[] = {"resolution", "bounds_min", "bounds_max",
                                                  "periodic"};
 inline constexpr std::string_view kSurfaceKeys[] = {"mesh"};
@@ -57,6 +57,9 @@ inline constexpr std::string_view kForcingKeys[] = {"hold_modes", "hold_below_ka
 inline constexpr std::string_view kOutputKeys[] = {"frames", "steps_per_frame"};
 inline constexpr std::string_view kSourceExtraKeys[] = {
     "density", "temperature", "start", "end", "velocity", "thickness", "path", "rotation"};
+
+inline constexpr std::string_view kParticleExtraKeys[] = {"count", "rate",    "start", "end",
+                                                          "drag",  "gravity", "seed"};
 
 /// The `[initial]` keys each velocity choice reads besides `velocity`.
 std::span<const std::string_view> initialKeys(InitialVelocity velocity);

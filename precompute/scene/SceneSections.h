@@ -16,10 +16,15 @@ namespace modeflow::scene {
 /// `[grid]`; sets the reader's dimension, which every later vector has.
 GridSpec readGrid(TomlReader& reader, const Section& s);
 
-/// One `[[domain]]` entry (`isDomain`) or the shape of a `[[source]]`; `section` is "[[domain]]"
-/// or "[[source]]", `index` 1-based.
+/// What a shape read by readShape is for: a `[[domain]]` entry (any shape, combined by `op`), a
+/// `[[source]]` (a ball, box or mesh) or a `[[particles]]` set's seeding region (a ball or box);
+/// the entry's other keys are the source's or the set's.
+enum class ShapeUse { Domain, Source, Particles };
+
+/// The shape of one entry of `section` ("[[domain]]", "[[source]]" or "[[particles]]"), `index`
+/// 1-based.
 ShapeSpec readShape(const TomlReader& reader, const toml::table& table, const std::string& section,
-                    int index, bool isDomain);
+                    int index, ShapeUse use);
 
 /// An OBJ file named by `key` of `s`: resolved against the scene's folder, a regular file.
 std::filesystem::path readMeshFile(const TomlReader& reader, const Section& s, std::string_view key,
@@ -56,6 +61,11 @@ std::vector<std::pair<double, Vec3>> readPath(const TomlReader& reader, const Se
 std::vector<RotationKey> readRotation(const TomlReader& reader, const Section& s);
 
 SourceSpec readSource(const TomlReader& reader, const toml::table& table, int index);
+/// One `[[particles]]` set; `shotEnd` (the last step's end, frames x steps_per_frame x dt) bounds
+/// the particles a `rate` emits, which at most maxParticles may be (`emitted` holds those of the
+/// sets before it, and gains this one's).
+ParticleSetSpec readParticleSet(const TomlReader& reader, const toml::table& table, int index,
+                                double shotEnd, std::int64_t& emitted);
 ObstacleSpec readObstacle(const TomlReader& reader, const Section& s);
 SmokeSpec readSmoke(const TomlReader& reader, const Section& s);
 ForcingSpec readForcing(const TomlReader& reader, const Section& s);

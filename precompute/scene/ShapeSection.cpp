@@ -22,13 +22,16 @@ namespace fs = std::filesystem;
 constexpr std::size_t kShownPathChars = 240;
 
 /// Rejects every key the shape does not take, naming the shape when the key belongs to another.
-void checkShapeKeys(const TomlReader& reader, const Section& s, ShapeKind kind, bool isDomain) {
+void checkShapeKeys(const TomlReader& reader, const Section& s, ShapeKind kind, ShapeUse use) {
+    const bool isDomain = use == ShapeUse::Domain;
     const std::string_view kindName = keywordOf(Choices<ShapeKind>(kShapeKinds), kind);
-    // The shape's own keys, plus `shape`, `op` (domain) or density/temperature (source).
+    // The shape's own keys, plus `shape`, `op` (domain) or the source's or particle set's own.
     std::vector<std::string_view> allowed{"shape"};
     if (isDomain) allowed.push_back("op");
-    if (!isDomain)
+    if (use == ShapeUse::Source)
         allowed.insert(allowed.end(), std::begin(kSourceExtraKeys), std::end(kSourceExtraKeys));
+    if (use == ShapeUse::Particles)
+        allowed.insert(allowed.end(), std::begin(kParticleExtraKeys), std::end(kParticleExtraKeys));
     const auto own = shapeKeys(kind);
     allowed.insert(allowed.end(), own.begin(), own.end());
     for (const auto& [key, node] : s.table) {
@@ -45,8 +48,7 @@ void checkShapeKeys(const TomlReader& reader, const Section& s, ShapeKind kind, 
                         &node);
         }
         if (!isDomain && name == "op") {
-            reader.fail(s, name, "unknown key (sources are not combined: op belongs to [[domain]])",
-                        &node);
+            reader.fail(s, name, "unknown key (only [[domain]] entries are combined by op)", &node);
         }
         std::string what = "unknown key";
         if (auto guess = closest(name, allowed)) {
@@ -89,7 +91,8 @@ fs::path readMeshFile(const TomlReader& reader, const Section& s, std::string_vi
 }
 
 ShapeSpec readShape(const TomlReader& reader, const toml::table& table, const std::string& section,
-                    int index, bool isDomain) {
+                    int index, ShapeUse use) {
+    const bool isDomain = use == ShapeUse::Domain;
     const std::string entry = section + " #" + std::to_string(index);
     const toml::node* shapeNode = table.get("shape");
     if (shapeNode == nullptr) {
@@ -97,7 +100,8 @@ ShapeSpec readShape(const TomlReader& reader, const toml::table& table, const st
                     "missing required key (one of " +
                         std::string(isDomain ? "ball, box, ellipsoid, cylinder, "
                                                "torus or mesh"
-                                             : "ball, box or mesh") +
+                                    : use == ShapeUse::Particles ? "ball or box"
+                                                                 : "ball, box or mesh") +
                         ")",
                     &table);
     }
@@ -107,14 +111,20 @@ ShapeSpec readShape(const TomlReader& reader, const toml::table& table, const st
     const std::string_view kindName = keywordOf(Choices<ShapeKind>(kShapeKinds), shape.kind);
     const Section s{table, entry + " (" + std::string(kindName) + ")"};
 
-    if (!isDomain && shape.kind != ShapeKind::Ball && shape.kind != ShapeKind::Box &&
+    if (use == ShapeUse::Source && shape.kind != ShapeKind::Ball && shape.kind != ShapeKind::Box &&
         shape.kind != ShapeKind::Mesh) {
         reader.fail(s, "shape",
                     "a source must be a ball, a box or a mesh, got " + std::string(kindName),
                     shapeNode);
     }
+    if (use == ShapeUse::Particles && shape.kind != ShapeKind::Ball &&
+        shape.kind != ShapeKind::Box) {
+        reader.fail(s, "shape",
+                    "particles are seeded in a ball or a box, got " + std::string(kindName),
+                    shapeNode);
+    }
     checkShapeDimension(reader, s, shape.kind, shapeNode);
-    checkShapeKeys(reader, s, shape.kind, isDomain);
+    checkShapeKeys(reader, s, shape.kind, use);
 
     const int dim = reader.dimension();
     switch (shape.kind) {

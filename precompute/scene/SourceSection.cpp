@@ -12,7 +12,7 @@ namespace modeflow::scene {
 
 SourceSpec readSource(const TomlReader& reader, const toml::table& table, int index) {
     SourceSpec source;
-    source.shape = readShape(reader, table, "[[source]]", index, false);
+    source.shape = readShape(reader, table, "[[source]]", index, ShapeUse::Source);
     const Section s{table,
                     "[[source]] #" + std::to_string(index) + " (" +
                         std::string(keywordOf(Choices<ShapeKind>(kShapeKinds), source.shape.kind)) +

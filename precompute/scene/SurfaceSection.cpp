@@ -31,6 +31,11 @@ void checkSurfaceSceneTables(const TomlReader& reader, const toml::table& root) 
         reader.fail("[[obstacle]]",
                     "moving obstacles push on a grid's faces; a surface scene ([surface]) has none",
                     node);
+    if (const toml::node* node = root.get("particles"))
+        reader.fail("[[particles]]",
+                    "particles are carried by a grid's velocity; a surface scene ([surface]) has "
+                    "none",
+                    node);
     const toml::array* sources = root.get("source") ? root.get("source")->as_array() : nullptr;
     for (std::size_t i = 0; sources && i < sources->size(); ++i) {
         const toml::table* source = (*sources)[i].as_table();

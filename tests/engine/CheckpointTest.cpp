@@ -44,6 +44,9 @@ Checkpoint sample(std::size_t cells = 6) {
     c.carry.easySteps = 17;
     c.smoke.density.assign(cells, 0.25);
     c.smoke.temperature.assign(cells, 1.5);
+    c.particles.position = {0.1, 0.2, 0.3, -0.4, 0.5, 0.0};
+    c.particles.velocity = {1.0, 0.0, -1.0, 0.25, 0.5, 0.0};
+    c.particles.set = {0, 3};
     return c;
 }
 
@@ -93,6 +96,9 @@ TEST(CheckpointTest, RoundTripsBitForBit) {
     EXPECT_EQ(read.carry.easySteps, 17);
     EXPECT_EQ(read.smoke.density, sample().smoke.density);
     EXPECT_EQ(read.smoke.temperature, sample().smoke.temperature);
+    EXPECT_EQ(read.particles.position, sample().particles.position);
+    EXPECT_EQ(read.particles.velocity, sample().particles.velocity);
+    EXPECT_EQ(read.particles.set, sample().particles.set);
 }
 
 TEST(CheckpointTest, AHugeFileIsRefusedByItsHeaderWithoutReadingIt) {
@@ -133,9 +139,8 @@ TEST(CheckpointTest, WellFormedNonsenseIsRefused) {
                   std::memcpy(b.data() + 32, &nan, 8);
               }).find("its time is not a non-negative number"),
               std::string::npos);
-    EXPECT_NE(
-        damaged([](std::string& b) { b += "trailing"; }).find("bytes follow its smoke fields"),
-        std::string::npos);
+    EXPECT_NE(damaged([](std::string& b) { b += "trailing"; }).find("bytes follow its particles"),
+              std::string::npos);
     EXPECT_NE(damaged([](std::string& b) { b.resize(b.size() - 8); }).find("truncated"),
               std::string::npos);
     // A held rate is none or one value per mode; a warm start none, one or two of the state's.
@@ -178,6 +183,19 @@ TEST(CheckpointTest, WellFormedNonsenseIsRefused) {
         writeCheckpoint(file, withNan(sample(), part));
         EXPECT_NE(readError(file).find("is not finite"), std::string::npos) << readError(file);
     }
+    // Particles no step can continue from.
+    Checkpoint scattered = sample();
+    scattered.particles.velocity[4] = std::numeric_limits<double>::infinity();
+    writeCheckpoint(file, scattered);
+    EXPECT_NE(readError(file).find("its particles: a position or velocity is not finite"),
+              std::string::npos)
+        << readError(file);
+    scattered = sample();
+    scattered.particles.set.push_back(1);
+    writeCheckpoint(file, scattered);
+    EXPECT_NE(readError(file).find("3 particles with 6 position and 6 velocity values"),
+              std::string::npos)
+        << readError(file);
     // Smoke no step can continue from: refused naming the file, not blamed on a divergence later.
     for (std::vector<double> SmokeFields::*field :
          {&SmokeFields::density, &SmokeFields::temperature})

@@ -16,6 +16,7 @@
 #include "engine/dynamics/TensorFreeCoefficients.h"
 #include "engine/reference/Simulation.h"
 #include "engine/simulation/Checkpoint.h"
+#include "engine/simulation/ParticleEmission.h"
 #include "tests/support/SharedRuns.h"
 #include "tests/support/SmokeTestFields.h"
 #include "tests/support/TestFolder.h"
@@ -498,12 +499,87 @@ TEST_P(SimulationTest, EmittersFollowTheirTimeWindows) {
     expectNoValidationMessages();
 }
 
+/// Tracers in a ball low in the disk (or ball) and leaves blown in at a rate from a box.
+std::vector<ParticleSetSpec> tracersAndLeaves(int dim) {
+    ParticleSetSpec tracers;
+    tracers.region = testing::ball(dim == 2 ? Vec3{0.2, -0.3, 0.0} : Vec3{0.2, 0.0, -0.3}, 0.3);
+    tracers.count = 300;
+    ParticleSetSpec leaves;
+    leaves.region.kind = ShapeKind::Box;
+    leaves.region.min = {-0.4, -0.4, dim == 2 ? 0.0 : -0.4};
+    leaves.region.max = {0.4, 0.4, dim == 2 ? 0.0 : 0.4};
+    leaves.rate = 1500.0;
+    leaves.drag = 3.0;
+    leaves.gravity = 2.0;
+    leaves.seed = 5;
+    return {tracers, leaves};
+}
+
+TEST_P(SimulationTest, ParticlesFollowTheCpuReference) {
+    // Tracers and inertial leaves in the hot disk and ball, with a ball obstacle crossing them:
+    // the device's float32 steps stay with the CPU's double ones.
+    for (const RunInputs* run : {&hotDisk(), &hotBall()}) {
+        const int dim = run->scene.grid.dim;
+        SimulationSettings settings = run->settings;
+        settings.particles = tracersAndLeaves(dim);
+        ObstacleSpec ball;
+        ball.radius = 0.2;
+        ball.path = {{0.0, {-0.5, 0.1, 0.0}}, {1.0, {0.5, 0.1, 0.0}}};
+        settings.obstacles = {MovingObstacle{ball}};
+        {
+            device::Simulation device(context(), run->cache, *run->coefficients, settings,
+                                      run->smokeMask, true);
+            reference::Simulation cpu(run->cache, *run->coefficients, settings, run->smokeMask);
+            RandomVelocitySpec swirl;
+            swirl.energy = 0.05;
+            const Eigen::VectorXd v0 = randomVelocity(run->coefficients->size(), swirl);
+            device.setVelocity(v0);
+            cpu.setVelocity(v0);
+            FrameStats stats;
+            for (int frame = 0; frame < 2; ++frame) {
+                stats = device.advanceFrame();
+                cpu.advanceFrame();
+            }
+            const Particles onDevice = device.particles(), expected = cpu.particles();
+            // 300 tracers, and 1500 / s × 10 steps of 0.02.
+            ASSERT_EQ(expected.size(), 300u + 300u);
+            ASSERT_EQ(onDevice.size(), expected.size());
+            EXPECT_EQ(onDevice.set, expected.set);
+            double worst = 0.0, fastest = 0.0;
+            int apart = 0;
+            for (std::size_t i = 0; i < expected.size(); ++i) {
+                double distance = 0.0;
+                for (int a = 0; a < 3; ++a) {
+                    distance = std::max(distance, std::abs(onDevice.position[3 * i + a] -
+                                                           expected.position[3 * i + a]));
+                    fastest = std::max(fastest, std::abs(expected.velocity[3 * i + a]));
+                }
+                worst = std::max(worst, distance);
+                apart += distance > 1e-4 ? 1 : 0;
+                const Vec3 x{expected.position[3 * i], expected.position[3 * i + 1],
+                             expected.position[3 * i + 2]};
+                EXPECT_FALSE(settings.obstacles[0].covers(x, settings.obstacles[0].poseAt(0.2),
+                                                          cpu.smokeGrid()));
+                EXPECT_TRUE(inFluidCell(cpu.smokeGrid(), run->smokeMask, x));
+            }
+            std::cout << dim << "D, 10 steps, 600 particles: largest position difference " << worst
+                      << ", " << apart
+                      << " apart by more than 1e-4; device ms per frame: " << stats.particlesMs
+                      << "\n";
+            EXPECT_GT(fastest, 0.1) << "the air moved them";
+            // A step across a wall cell's edge may go either way in float and double.
+            EXPECT_LE(apart, 6);
+        }
+        expectNoValidationMessages();
+    }
+}
+
 /// What a run keeps after a frame, as a checkpoint file holds it.
 Checkpoint savedThroughAFile(const Simulator& simulator, int frame) {
     const testing::TestFolder folder;
     writeCheckpoint(folder / "run.resume",
                     {frame, simulator.time(), 0, simulator.velocity(), simulator.magneticField(),
-                     simulator.carry(), simulator.smoke()});
+                     simulator.carry(), simulator.smoke(), simulator.particles()});
     return readCheckpoint(folder / "run.resume");
 }
 
@@ -521,6 +597,8 @@ TEST(SimulationResume, EveryBackendAndIntegratorContinuesBitForBitFromAnyStep) {
     ball.radius = 0.15;
     ball.path = {{0.0, {-0.3, -0.5, 0.0}}, {1.0, {0.3, 0.2, 0.0}}};
     settings.obstacles = {MovingObstacle{ball}};
+    // Particles too: tracers from the start, leaves at a rate, both through the checkpoint.
+    settings.particles = tracersAndLeaves(2);
     RandomVelocitySpec swirl;
     swirl.energy = 0.05;
     const Eigen::VectorXd v0 = randomVelocity(disk.coefficients->size(), swirl);
@@ -569,6 +647,7 @@ TEST(SimulationResume, EveryBackendAndIntegratorContinuesBitForBitFromAnyStep) {
             const std::unique_ptr<Simulator> resumed = make();
             resumed->restore(from.time, from.velocity, from.smoke);
             resumed->setCarry(from.carry);
+            resumed->setParticles(from.particles);
             // The first step after the resume starts where the uninterrupted one did: as many
             // implicit iterations (a cold start takes more, and may still reach the same state).
             for (int step = stop + 1; step <= kSteps; ++step)
@@ -584,6 +663,13 @@ TEST(SimulationResume, EveryBackendAndIntegratorContinuesBitForBitFromAnyStep) {
             EXPECT_EQ(resumed->smoke().density, whole->smoke().density)
                 << name << ", resumed after " << stop;
             EXPECT_EQ(resumed->smoke().temperature, whole->smoke().temperature)
+                << name << ", resumed after " << stop;
+            const Particles particles = resumed->particles(),
+                            expectedParticles = whole->particles();
+            EXPECT_EQ(particles.size(), 300u + 8u * 30u) << name;
+            EXPECT_EQ(particles.position, expectedParticles.position)
+                << name << ", resumed after " << stop;
+            EXPECT_EQ(particles.velocity, expectedParticles.velocity)
                 << name << ", resumed after " << stop;
         }
     }

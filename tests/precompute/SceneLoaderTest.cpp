@@ -129,9 +129,40 @@ std::pair<std::string, std::string> periodicFlags(const std::string& flags) {
     return {"bounds_max = [1, 1]\n", "bounds_max = [1, 1]\nperiodic = " + flags + "\n"};
 }
 
+const std::string kParticleBall =
+    "[[particles]]\nshape = \"ball\"\ncenter = [0, 0]\nradius = 0.1\n";
+
 // One row a line or two, as a table reads.
 // clang-format off
 const std::vector<Refusal> kRefusals = {
+    // Particles.
+    {"ParticlesWithoutCountOrRate", k2d, {}, kParticleBall,
+     {"[[particles]] #1 (ball).count: missing: give count (particles at start) or rate"}},
+    {"ParticlesWithCountAndRate", k2d, {}, kParticleBall + "count = 10\nrate = 5\n",
+     {"[[particles]] #1 (ball).rate: give count (particles at start) or rate (per unit time), not both"}},
+    {"ParticlesInATorus", k3d, {},
+     "[[particles]]\nshape = \"torus\"\ncenter = [0, 0, 0]\nmajor_radius = 0.5\nminor_radius = 0.1\ncount = 1\n",
+     {"[[particles]] #1 (torus).shape: particles are seeded in a ball or a box"}},
+    {"ParticlesAtAHugeRate", k2d, {}, kParticleBall + "rate = 1e12\n",
+     {"[[particles]] #1 (ball).rate: the scene's sets would emit", "at most 16777216 fit"}},
+    {"ParticlesTooManyInAll", k2d, {},
+     kParticleBall + "count = 10000000\n" + kParticleBall + "count = 10000000\n",
+     {"[[particles]] #2 (ball).count: the scene's sets would emit 2e+07"}},
+    {"ParticlesCountZero", k2d, {}, kParticleBall + "count = 0\n", {"[[particles]] #1 (ball).count"}},
+    {"ParticlesGravityOnTracers", k2d, {}, kParticleBall + "count = 5\ngravity = 1\n",
+     {"[[particles]] #1 (ball).gravity: acts on inertial particles only (drag > 0)"}},
+    {"ParticlesEndOfACount", k2d, {}, kParticleBall + "count = 5\nend = 1\n",
+     {"[[particles]] #1 (ball).end: a set of count particles is seeded once"}},
+    {"ParticlesEndBeforeStart", k2d, {}, kParticleBall + "rate = 5\nstart = 2\nend = 1\n",
+     {"[[particles]] #1 (ball).end: must be later than start"}},
+    {"ParticlesFallTooFast", k2d, {}, kParticleBall + "count = 5\ndrag = 1e-12\n",
+     {"[[particles]] #1 (ball).gravity: falls at gravity / drag = 9.8e+12"}},
+    {"ParticlesNegativeDrag", k2d, {}, kParticleBall + "count = 5\ndrag = -1\n",
+     {"[[particles]] #1 (ball).drag"}},
+    {"ParticlesMisspelledKey", k2d, {}, kParticleBall + "count = 5\ndarg = 1\n",
+     {"[[particles]] #1 (ball).darg: unknown key (did you mean drag?)"}},
+    {"ParticlesWithDensity", k2d, {}, kParticleBall + "count = 5\ndensity = 1\n",
+     {"[[particles]] #1 (ball).density: unknown key"}},
     // Moving obstacles.
     {"ObstacleKeyFramesGoBack", k2d, {},
      kObstacleBall + "radius = 0.1\npath = [[1.0, 0.0, 0.0], [0.5, 0.1, 0.0]]\n",
@@ -632,6 +663,47 @@ rotation = [[0.0, 0, 0, 2, 0], [1.0, 0, 0, -1, 720]]
     EXPECT_EQ(keys[0].axis, (Vec3{0.0, 0.0, 1.0})) << "axes are normalized";
     EXPECT_EQ(keys[1].axis, (Vec3{0.0, 0.0, -1.0}));
     EXPECT_EQ(keys[1].degrees, 720.0);
+}
+
+TEST_F(SceneLoaderTest, ParticleSetsReadTheirKeys) {
+    const SceneSpec scene = parseScene(sceneFixture(k2d) + R"(
+[[particles]]
+shape = "ball"
+center = [0.1, -0.2]
+radius = 0.3
+count = 500
+
+[[particles]]
+shape = "box"
+min = [-0.5, -1.0]
+max = [0.5, -0.9]
+rate = 2000
+start = 0.25
+end = 0.75
+drag = 4
+gravity = 2
+seed = 9
+)",
+                                       "leaves.toml");
+    ASSERT_EQ(scene.particles.size(), 2u);
+    const ParticleSetSpec& tracers = scene.particles[0];
+    EXPECT_EQ(tracers.region.kind, ShapeKind::Ball);
+    EXPECT_EQ(tracers.region.center, (Vec3{0.1, -0.2, 0.0}));
+    EXPECT_EQ(tracers.count, 500);
+    EXPECT_EQ(tracers.rate, 0.0);
+    EXPECT_EQ(tracers.drag, 0.0);
+    EXPECT_EQ(tracers.seed, 1u);
+    const ParticleSetSpec& leaves = scene.particles[1];
+    EXPECT_EQ(leaves.region.kind, ShapeKind::Box);
+    EXPECT_EQ(leaves.region.max, (Vec3{0.5, -0.9, 0.0}));
+    EXPECT_EQ(leaves.rate, 2000.0);
+    EXPECT_EQ(leaves.start, 0.25);
+    EXPECT_EQ(leaves.end, 0.75);
+    EXPECT_EQ(leaves.drag, 4.0);
+    EXPECT_EQ(leaves.gravity, 2.0);
+    EXPECT_EQ(leaves.seed, 9u);
+    // A rate past the shot's end (48 frames of 0.02) counts only what the shot emits.
+    EXPECT_NO_THROW(parseScene(sceneFixture(k2d) + kParticleBall + "rate = 16000000\n", "x.toml"));
 }
 
 TEST_F(SceneLoaderTest, MinimalSceneGetsDefaults) {
@@ -1242,6 +1314,8 @@ TEST_F(SceneLoaderTest, SurfaceSceneRefusesTheGridsTablesAndKeys) {
         {surface + "[[obstacle]]\nshape = \"ball\"\nradius = 0.1\npath = [[0, 0, 0, 0]]\n",
          "[[obstacle]]: moving obstacles push on a grid's faces"},
         {surface + "[smoke]\nbuoyancy = 1.0\n", "[smoke]: buoyancy and the smoke grid"},
+        {surface + "[[particles]]\nshape = \"ball\"\ncenter = [0, 0, 1]\nradius = 0.2\ncount = 3\n",
+         "[[particles]]: particles are carried by a grid's velocity"},
         {surface + "[[source]]\nshape = \"ball\"\ncenter = [0, 0, 1]\nradius = 0.2\nvelocity = [1, "
                    "0, 0]\n",
          "[[source]] #1.velocity: a surface scene's sources add dye alone"},

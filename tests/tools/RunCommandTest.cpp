@@ -47,6 +47,18 @@ temperature = 1.0
 [smoke]
 buoyancy = 1.0
 resolution_scale = 2
+[[particles]]
+shape = "ball"
+center = [0.0, 0.3]
+radius = 0.3
+count = 200
+[[particles]]
+shape = "box"
+min = [-0.5, -0.2]
+max = [0.5, 0.2]
+rate = 500
+drag = 2
+gravity = 1
 [output]
 frames = 4
 steps_per_frame = 2
@@ -172,6 +184,14 @@ TEST_F(RunCommand, WritesVdbFramesThatReadBack) {
     EXPECT_NEAR(*info.time, 3 * 2 * 0.02, 1e-12);
     EXPECT_EQ(info.creator, "modeflow");
     EXPECT_NEAR(info.grid("density")->voxelSize[0], 2.2 / 48, 1e-12);
+    // The particles' point clouds: the 200 tracers and 500/s × 2 steps of 0.02 a frame.
+    for (int frame = 1; frame <= 4; ++frame) {
+        const std::string cloud =
+            testing::slurp(out / ("hot_particles_000" + std::to_string(frame) + ".ply"));
+        EXPECT_NE(cloud.find("element vertex " + std::to_string(200 + 20 * frame) + "\n"),
+                  std::string::npos)
+            << frame;
+    }
 
     // Smoke inside the disk only; none outside it (half a basis cell of slack for cut cells).
     const std::vector<Vec3> centres = smokeCentres();
@@ -234,6 +254,9 @@ TEST_F(RunCommand, ResumeGivesTheFramesOfAnUninterruptedRun) {
             const std::vector<Vec3> centres = smokeCentres();
             for (int frame = stop + 1; frame <= 4; ++frame) {
                 const std::string file = frameFileName("hot", frame);
+                const std::string cloud = "hot_particles_000" + std::to_string(frame) + ".ply";
+                EXPECT_EQ(testing::slurp(parts / cloud), testing::slurp(whole / cloud))
+                    << name << ", resumed after " << stop << ": " << cloud;
                 for (const char* grid : {"density", "temperature", "vel"}) {
                     const auto a = sampleVdbGrid(whole / file, grid, centres);
                     const auto b = sampleVdbGrid(parts / file, grid, centres);

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <tuple>
 
 #include "engine/vulkan/VulkanContext.h"
 #include "tests/support/CliFixture.h"
@@ -101,6 +102,42 @@ TEST_F(StirCommand, OffscreenNeedsNoDisplayAndKeepsItsScreenshot) {
     const bool drawn =
         std::any_of(png->rgba.begin(), png->rgba.end(), [](unsigned char c) { return c > 100; });
     EXPECT_TRUE(drawn) << "the screenshot is black: nothing was drawn offscreen";
+}
+
+/// Pixels of exactly the particle colour (preview/Palette.h kParticle) in a screenshot.
+long particlePixels(const PngPixels& png) {
+    long count = 0;
+    for (std::size_t p = 0; p + 3 < png.rgba.size(); p += 4)
+        count += png.rgba[p] == 214 && png.rgba[p + 1] == 178 && png.rgba[p + 2] == 40;
+    return count;
+}
+
+TEST_F(StirCommand, ParticlesAreDrawnOverTheSmokeIn2DAnd3D) {
+    unsetenv("DISPLAY");
+    unsetenv("WAYLAND_DISPLAY");
+    for (const auto& [name, fixture, centre] :
+         {std::tuple{"disk", kSmallDisk, "[0.0, 0.0]"},
+          std::tuple{"ball", sceneFixture("small_ball_3d"), "[0.0, 0.0, 0.0]"}}) {
+        const std::string text = fixture + "\n[[particles]]\nshape = \"ball\"\ncenter = " + centre +
+                                 "\nradius = 0.5\ncount = 400\n";
+        const fs::path s = scene(std::string(name) + ".toml", text), shot = mDir / "dots.png";
+        const RunResult r =
+            run("stir " + s.string() + " --offscreen --frames 3 --width 320 " +
+                "--height 240 --screenshot " + shot.string() + " --cache-dir " + mCache.string());
+        ASSERT_EQ(r.status, 0) << r.err;
+        const std::optional<PngPixels> png = readPng(shot);
+        ASSERT_TRUE(png) << name;
+        EXPECT_GT(particlePixels(*png), 400) << name << ": the particles are drawn";
+        // Without particles there are none of their colour.
+        const fs::path plain = scene(std::string(name) + "_plain.toml", fixture);
+        ASSERT_EQ(run("stir " + plain.string() +
+                      " --offscreen --frames 3 --width 320 --height 240 "
+                      "--screenshot " +
+                      shot.string() + " --cache-dir " + mCache.string())
+                      .status,
+                  0);
+        EXPECT_EQ(particlePixels(*readPng(shot)), 0) << name;
+    }
 }
 
 }  // namespace

@@ -18,9 +18,10 @@
 ///                     (lavapipe flushes its work at every timestamp, so device_step's sum of
 ///                     dispatch times is not the time a run sees)
 ///   device_obstacle   device_step of the box with a rigid mesh obstacle of 10 000 triangles (a
-///                     torus, makeTorus(100, 50, ...), turning once a second): obstacles_ms (the
-///                     mismatch on its level set, projection, correction, reconstruction again)
-///                     and obstacle_share, its part of the whole step
+///                     torus, makeTorus(100, 50, ...), turning once a second) and 100 000 tracer
+///                     particles: obstacles_ms (the mismatch on its level set, projection,
+///                     correction, reconstruction again, smoke pushed out), particles_ms, and
+///                     solids_particles_share, the two's part of the whole step
 /// The state is the torus scene's initial vortices, and for the box (which starts at rest) a swirl
 /// of a twentieth of a turnover per step, so the midpoint rule iterates as in a run. Run:
 /// bench_closed_form [--device N] [--benchmark_filter=...].
@@ -202,7 +203,8 @@ void deviceWall(benchmark::State& state, const char* file, Integrator integrator
     state.counters["iterations"] = iterations;
 }
 
-/// The box at `modes` with a turning 10 000-triangle torus mesh in its middle.
+/// The box at `modes` with a turning 10 000-triangle torus mesh in its middle and 100 000 tracer
+/// particles throughout.
 const RunInputs& boxWithMeshObstacle(int modes) {
     static std::map<int, std::unique_ptr<RunInputs>> runs;
     if (!runs.count(modes)) {
@@ -215,6 +217,12 @@ const RunInputs& boxWithMeshObstacle(int modes) {
         torus.path = {{0.0, {0.5, 0.5, 0.5}}};
         torus.rotation = {{0.0, {1.0, 0.0, 0.0}, 0.0}, {100.0, {1.0, 0.0, 0.0}, 36000.0}};
         scene.obstacles = {torus};
+        ParticleSetSpec tracers;
+        tracers.region.kind = ShapeKind::Box;
+        tracers.region.min = {0.05, 0.05, 0.05};
+        tracers.region.max = {0.95, 0.95, 0.95};
+        tracers.count = 100000;
+        scene.particles = {tracers};
         Progress quiet = Progress::silent();
         runs[modes] = std::make_unique<RunInputs>(prepareRun(scene, computeBasis(scene, quiet)));
     }
@@ -226,17 +234,19 @@ void deviceObstacleStep(benchmark::State& state) {
     const std::unique_ptr<Simulator> simulation = benchBackend().makeSimulator(run, true);
     simulation->setVelocity(startingVelocity(run));
     simulation->advanceSteps(3);
-    std::vector<double> obstacles, shares;
+    std::vector<double> obstacles, particles, shares;
     for (auto _ : state) {
         const FrameStats stats = simulation->advanceSteps(1);
         const double total = stats.forcesMs + stats.modalMs + stats.reconstructionMs +
-                             stats.obstaclesMs + stats.advectionMs;
+                             stats.obstaclesMs + stats.advectionMs + stats.particlesMs;
         state.SetIterationTime(total * 1e-3);
         obstacles.push_back(stats.obstaclesMs);
-        shares.push_back(stats.obstaclesMs / total);
+        particles.push_back(stats.particlesMs);
+        shares.push_back((stats.obstaclesMs + stats.particlesMs) / total);
     }
     setMedian(state, "obstacles_ms", obstacles);
-    setMedian(state, "obstacle_share", shares);
+    setMedian(state, "particles_ms", particles);
+    setMedian(state, "solids_particles_share", shares);
 }
 
 constexpr const char* kBox = "box_closed_form_3d.toml";

@@ -1,0 +1,105 @@
+/* ParticleStep.glsl: one step of every particle, one invocation each (the rule:
+   engine/simulation/ParticleMotion.h; CPU reference engine/reference/ParticleAdvection.cpp; host
+   side engine/device/ParticleAdvection.cpp). The includer defines MAC_DIM (2 or 3). The
+   velocity is the basis grid's face field as x-neighbour pairs (smoke_face_pairs.comp, written by
+   the step's smoke advection from the same velocity). */
+#include "FaceLocation.glsl"
+#include "ObstacleParams.h"
+#include "ParticleStepParams.h"
+
+layout(local_size_x = 64, local_size_x_id = 0) in;
+
+layout(std430, set = 0, binding = 0) readonly buffer Obstacles { ObstacleRecord obstacles[]; };
+layout(std430, set = 0, binding = 1) readonly buffer Lattices { float depth[]; };
+layout(std430, set = 0, binding = 2) readonly buffer Mask { uint mask[]; };  // 4 cells a word
+layout(std430, set = 0, binding = 3) readonly buffer Pairs { vec2 pairs[]; };
+layout(std430, set = 0, binding = 4) buffer Positions { vec4 positions[]; };  // xyz, w: set
+layout(std430, set = 0, binding = 5) buffer Velocities { vec4 velocities[]; };
+layout(std430, set = 0, binding = 6) readonly buffer Sets { ParticleSetRecord sets[]; };
+layout(push_constant) uniform Push { ParticleStepParams params; };
+
+vec2 macFacePair(uint face) { return pairs[face]; }
+#include "MacSampling.glsl"
+#include "ObstacleShape.glsl"
+
+vec3 velocityAt(vec3 world) {
+    vec3 g = (world - v3(params.origin)) / v3(params.spacing);
+    if (MAC_DIM == 2) g.z = 0.5;
+    const ivec3 cells = ivec3(params.cells[0], params.cells[1], params.cells[2]);
+    const uvec3 offsets = uvec3(params.faceStart[0], params.faceStart[1], params.faceStart[2]);
+    return sampleVelocityGrid(g, cells, offsets, params.periodic);
+}
+
+vec3 boxLength() {
+    return vec3(params.cells[0], params.cells[1], params.cells[2]) * v3(params.spacing);
+}
+
+// inFluidCell (engine/simulation/ParticleEmission.cpp).
+bool inFluid(vec3 p) {
+    ivec3 c = ivec3(0);
+    for (int a = 0; a < MAC_DIM; ++a) {
+        const float x = (p[a] - params.origin[a]) / params.smokeSpacing[a];
+        const float n = float(params.smokeCells[a]);
+        const float cell = isPeriodic(params.periodic, a) ? x - n * floor(x / n) : clamp(x, 0.0, n - 1.0);
+        c[a] = min(int(cell), int(params.smokeCells[a]) - 1);
+    }
+    const uint index = (uint(c.z) * params.smokeCells[1] + uint(c.y)) * params.smokeCells[0] + uint(c.x);
+    return ((mask[index >> 2u] >> ((index & 3u) * 8u)) & 0xffu) != 0u;
+}
+
+vec3 intoBox(vec3 p) {
+    const vec3 lo = v3(params.origin), len = boxLength();
+    for (int a = 0; a < MAC_DIM; ++a)
+        p[a] = isPeriodic(params.periodic, a) ? lo[a] + (p[a] - lo[a]) - len[a] * floor((p[a] - lo[a]) / len[a])
+                                              : clamp(p[a], lo[a], lo[a] + len[a]);
+    return p;
+}
+
+void main() {
+    const uint i = params.first + gl_GlobalInvocationID.x;
+    if (i >= params.count) return;
+    const vec4 stored = positions[i];
+    const vec3 x0 = stored.xyz;
+    const vec3 v0 = velocities[i].xyz;
+    const ParticleSetRecord r = sets[floatBitsToUint(stored.w)];
+    const float dt = params.dt;
+    vec3 x1, v1;
+    if (r.inertial == 0u) {
+        v1 = velocityAt(x0 + 0.5 * dt * velocityAt(x0));
+        x1 = x0 + dt * v1;
+    } else {
+        vec3 terminal = velocityAt(x0 + 0.5 * dt * v0);
+        terminal[params.up] -= r.fall;
+        const vec3 lag = v0 - terminal;
+        x1 = x0 + dt * terminal + lag * r.reach;
+        v1 = terminal + lag * r.decay;
+    }
+    const uint dim = uint(MAC_DIM);
+    for (uint o = 0u; o < params.obstacleCount; ++o) {
+        const ObstacleRecord solid = obstacles[o];
+        const vec3 r0 = obstacleOffset(solid, x1, dim, boxLength(), params.periodic);
+        if (!withinReach(solid, r0) || !covers(solid, r0)) continue;
+        vec3 normal;
+        x1 += solidExit(solid, r0, dim, params.margin, normal);
+        if (dim == 2u) x1.z = 0.0;
+        if (r.inertial == 0u) continue;
+        const vec3 r1 = obstacleOffset(solid, x1, dim, boxLength(), params.periodic);
+        const float into = dot(v1 - materialVelocity(solid, r1), normal);
+        if (into < 0.0) v1 -= into * normal;
+    }
+    x1 = intoBox(x1);
+    if (params.allFluid == 0u && !inFluid(x1)) {
+        vec3 slid = x0;
+        for (int a = 0; a < MAC_DIM; ++a) {
+            const float held = slid[a];
+            slid[a] = x1[a];
+            if (!inFluid(slid)) {
+                slid[a] = held;
+                if (r.inertial != 0u) v1[a] = 0.0;
+            }
+        }
+        x1 = slid;
+    }
+    positions[i] = vec4(x1, stored.w);
+    velocities[i] = vec4(v1, 0.0);
+}

@@ -1,0 +1,45 @@
+/* ParticleStepParams.h: push constants and set records of particle_step_{2d,3d}.comp, shared by
+   C++ and GLSL (ASCII, no C++-only syntax outside the __cplusplus blocks); padded to 16 bytes. */
+#ifndef MODEFLOW_SHADERS_PARTICLE_STEP_PARAMS_H
+#define MODEFLOW_SHADERS_PARTICLE_STEP_PARAMS_H
+
+#ifdef __cplusplus
+#include <cstdint>
+namespace modeflow::shaders {
+using uint = std::uint32_t;
+#endif
+
+/* A set's response over the step (engine/simulation/ParticleMotion.h). */
+struct ParticleSetRecord {
+    uint inertial; /* 0: a tracer */
+    float decay;   /* exp(-drag dt) */
+    float reach;   /* (1 - exp(-drag dt)) / drag */
+    float fall;    /* gravity / drag */
+};
+
+struct ParticleStepParams {
+    uint count; /* particles */
+    uint obstacleCount;
+    uint periodic;     /* bit a: axis a is periodic (MacGrid::periodic) */
+    uint allFluid;     /* every smoke cell is fluid: no slide along walls */
+    uint cells[3];     /* basis grid */
+    uint up;           /* the buoyancy axis */
+    uint faceStart[3]; /* first face of each normal axis */
+    float dt;
+    float origin[3];
+    float margin; /* past a solid's surface */
+    float spacing[3];
+    uint first; /* the dispatch's first particle */
+    uint smokeCells[3];
+    uint pad1;
+    float smokeSpacing[3];
+    uint pad2;
+};
+
+#ifdef __cplusplus
+static_assert(sizeof(ParticleSetRecord) == 16 && sizeof(ParticleStepParams) == 112,
+              "std430 and C++ layouts agree");
+} /* namespace modeflow::shaders */
+#endif
+
+#endif
