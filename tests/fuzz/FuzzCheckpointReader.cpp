@@ -22,7 +22,7 @@ constexpr std::string_view kMagic("MODEFLOW-RESUME\0", 16);
 std::string checkpointAround(std::string_view body) {
     ByteWriter file;
     file.values(kMagic.data(), kMagic.size());
-    file.pod(std::uint32_t{5});  // the version (Checkpoint.cpp)
+    file.pod(std::uint32_t{6});  // the version (Checkpoint.cpp)
     file.values(body.data(), body.size());
     file.pod(checksum64(file.bytes()));
     return file.bytes();
@@ -54,7 +54,10 @@ bool checkpointReader(std::string_view bytes) {
                 again.carry.substeps == checkpoint.carry.substeps &&
                 again.carry.easySteps == checkpoint.carry.easySteps &&
                 sameBytes(again.smoke.density, checkpoint.smoke.density) &&
-                sameBytes(again.smoke.temperature, checkpoint.smoke.temperature),
+                sameBytes(again.smoke.temperature, checkpoint.smoke.temperature) &&
+                sameBytes(again.particles.position, checkpoint.particles.position) &&
+                sameBytes(again.particles.velocity, checkpoint.particles.velocity) &&
+                again.particles.set == checkpoint.particles.set,
             "an accepted checkpoint does not survive a write and a read");
     for (std::size_t i = 0; i < again.carry.warmRhs.size(); ++i)
         require(sameBytes(again.carry.warmRhs[i], checkpoint.carry.warmRhs[i]),

@@ -41,7 +41,19 @@ density = 1.0
 temperature = 1.0
 [smoke]
 buoyancy = 1.0'
-scene disk "$disk" 3 "$smoke"
+# Particles: the checkpoint holds their positions, velocities and sets.
+scene disk "$disk" 3 "$smoke
+[[particles]]
+shape = \"ball\"
+center = [0.0, 0.3]
+radius = 0.3
+count = 6
+[[particles]]
+shape = \"box\"
+min = [-0.4, -0.2]
+max = [0.4, 0.2]
+rate = 100
+drag = 2"
 scene disk_mhd "$disk" 3 '[simulation]
 mhd = true
 [initial]
