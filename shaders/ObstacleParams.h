@@ -38,17 +38,23 @@ struct ObstacleRecord {
     uint latticeStart;
 };
 
+/* obstacle_mismatch.comp walks the faces of a box of cells around the regions (its faces along
+   each normal axis), not every face of the grid. */
 struct ObstacleMismatchParams {
-    uint dofCount;
+    uint boxFaces[3]; /* faces of the box per normal axis */
     uint obstacleCount;
-    uint faceStart1; /* first normal-y face */
-    uint faceStart2; /* first normal-z face (the face total in 2D) */
     uint cells[3];
     uint dim;
     float origin[3];
     uint periodic; /* bit a: axis a is periodic (MacGrid::periodic) */
     float spacing[3];
-    float pad1;
+    uint faceStart1;  /* first normal-y face */
+    int boxFirst[3];  /* the box's first cell (on a periodic axis it may wrap) */
+    uint faceStart2;  /* first normal-z face (the face total in 2D) */
+    uint boxCount[9]; /* per normal axis a, positions along each axis: boxCount[3 a + b] */
+    uint first;       /* the dispatch's first face of the box */
+    uint pad0;
+    uint pad1;
 };
 
 struct ModalCorrectParams {
@@ -59,7 +65,7 @@ struct ModalCorrectParams {
 };
 
 #ifdef __cplusplus
-static_assert(sizeof(ObstacleRecord) == 160 && sizeof(ObstacleMismatchParams) == 64 &&
+static_assert(sizeof(ObstacleRecord) == 160 && sizeof(ObstacleMismatchParams) == 128 &&
                   sizeof(ModalCorrectParams) == 16,
               "std430 and C++ layouts agree");
 } /* namespace modeflow::shaders */

@@ -1,18 +1,35 @@
 /* ObstacleShape.glsl: what an obstacle record covers (CPU reference MovingObstacle::covers in
-   engine/simulation/MovingObstacle.cpp), for obstacle_mismatch.comp and smoke_displace.comp. The
-   includer declares the mesh lattices' samples as `float depth[]` (a storage buffer) before
-   including it, and includes ObstacleParams.h and FaceLocation.glsl. */
+   engine/simulation/MovingObstacle.cpp), for obstacle_mismatch.comp, smoke_displace.comp and
+   ParticleStep.glsl. The includer declares the records as `ObstacleRecord obstacles[]` and the
+   mesh lattices' samples as `float depth[]` (storage buffers) before including it, and includes
+   ObstacleParams.h and FaceLocation.glsl. */
 #ifndef MODEFLOW_SHADERS_OBSTACLE_SHAPE_GLSL
 #define MODEFLOW_SHADERS_OBSTACLE_SHAPE_GLSL
 
 vec3 v3(float a[3]) { return vec3(a[0], a[1], a[2]); }
 
-// From the obstacle's centre to `point`, at the minimum-image offset along periodic axes of a
-// grid `box` long (z dropped in 2D).
-vec3 obstacleOffset(ObstacleRecord o, vec3 point, uint dim, vec3 box, uint periodic) {
-    vec3 d = point - v3(o.centre);
+// From `centre` to `point`, at the minimum-image offset along periodic axes of a grid `box` long
+// (z dropped in 2D).
+vec3 offsetFrom(vec3 centre, vec3 point, uint dim, vec3 box, uint periodic) {
+    vec3 d = point - centre;
     if (dim == 2u) d.z = 0.0;
     return minimumImage(d, box, periodic);
+}
+
+// From the obstacle's centre to `point` (offsetFrom).
+vec3 obstacleOffset(ObstacleRecord o, vec3 point, uint dim, vec3 box, uint periodic) {
+    return offsetFrom(v3(o.centre), point, dim, box, periodic);
+}
+
+// Whether `point` lies within reach of the includer's `obstacles[index]`, with the offset from
+// its centre: two fields read, where copying the record costs a load per field and lane on
+// lavapipe and most points are beyond every obstacle's reach (copy it after this says yes).
+bool withinReachOf(uint index, vec3 point, uint dim, vec3 box, uint periodic, out vec3 offset) {
+    offset = offsetFrom(vec3(obstacles[index].centre[0], obstacles[index].centre[1],
+                             obstacles[index].centre[2]),
+                        point, dim, box, periodic);
+    const float reach = obstacles[index].reach;
+    return dot(offset, offset) <= reach * reach;
 }
 
 // Its shape's frame to the world.
@@ -160,7 +177,5 @@ vec3 solidExit(ObstacleRecord o, vec3 r, uint dim, float margin, out vec3 normal
     return orientationOf(o) * (place - d);
 }
 
-// Whether `r` is within the obstacle's reach (most points are not: the shape's test is skipped).
-bool withinReach(ObstacleRecord o, vec3 r) { return dot(r, r) <= o.reach * o.reach; }
 
 #endif

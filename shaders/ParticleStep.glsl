@@ -76,9 +76,10 @@ void main() {
     }
     const uint dim = uint(MAC_DIM);
     for (uint o = 0u; o < params.obstacleCount; ++o) {
+        vec3 r0;
+        if (!withinReachOf(o, x1, dim, boxLength(), params.periodic, r0)) continue;
         const ObstacleRecord solid = obstacles[o];
-        const vec3 r0 = obstacleOffset(solid, x1, dim, boxLength(), params.periodic);
-        if (!withinReach(solid, r0) || !covers(solid, r0)) continue;
+        if (!covers(solid, r0)) continue;
         vec3 normal;
         x1 += solidExit(solid, r0, dim, params.margin, normal);
         if (dim == 2u) x1.z = 0.0;

@@ -3,47 +3,60 @@
 // every velocity DOF face whose centre an obstacle covers (in its turned frame), the fluid's face
 // velocity minus the velocity of the obstacle's material there (v + w x r, and a deforming mesh's
 // own) along the face normal,
-// written into a face field of the whole grid (other faces keep the 0 they were created with).
-// project_force.comp then projects it on the basis (face-field weights: the exact inverse of the
-// reconstruction) and modal_correct.comp subtracts the result from v. One invocation per DOF,
-// grid-stride; the first covering obstacle decides. Along periodic axes an obstacle covers at the
-// minimum-image offset (it reaches over the seam).
+// written into a face field of the whole grid (filled with 0 before). project_force.comp then
+// projects it on the basis (face-field weights: the exact inverse of the reconstruction; it reads
+// the DOF faces alone) and modal_correct.comp subtracts the result from v. One invocation per face
+// of the box of cells around the regions (the host's ObstacleCorrection: no face beyond it is in
+// any region's reach), wall faces left at 0; the first covering obstacle decides. Along periodic
+// axes an obstacle covers at the minimum-image offset (it reaches over the seam), and the box
+// wraps.
 #extension GL_GOOGLE_include_directive : require
 #include "FaceLocation.glsl"
 #include "ObstacleParams.h"
 
 layout(local_size_x = 64, local_size_x_id = 0) in;
 
-layout(std430, set = 0, binding = 0) readonly buffer Faces { uint faces[]; };
-layout(std430, set = 0, binding = 1) readonly buffer Velocity { float velocity[]; };
-layout(std430, set = 0, binding = 2) readonly buffer Obstacles { ObstacleRecord obstacles[]; };
-layout(std430, set = 0, binding = 3) writeonly buffer Mismatch { float mismatch[]; };
-layout(std430, set = 0, binding = 4) readonly buffer Lattices { float depth[]; };
+layout(std430, set = 0, binding = 0) readonly buffer Velocity { float velocity[]; };
+layout(std430, set = 0, binding = 1) readonly buffer Obstacles { ObstacleRecord obstacles[]; };
+layout(std430, set = 0, binding = 2) writeonly buffer Mismatch { float mismatch[]; };
+layout(std430, set = 0, binding = 3) readonly buffer Lattices { float depth[]; };
 layout(push_constant) uniform Push { ObstacleMismatchParams params; };
 #include "ObstacleShape.glsl"
 
 void main() {
-    const uint stride = gl_NumWorkGroups.x * gl_WorkGroupSize.x;
+    uint local = params.first + gl_GlobalInvocationID.x;
+    uint axis = 0u;
+    while (axis < 2u && local >= params.boxFaces[axis]) local -= params.boxFaces[axis++];
+    if (local >= params.boxFaces[axis]) return;
+    const uvec3 count = uvec3(params.boxCount[3u * axis], params.boxCount[3u * axis + 1u],
+                              params.boxCount[3u * axis + 2u]);
+    const uint z = quotientOf(local, count.x * count.y), inPlane = local - z * count.x * count.y;
+    const uint y = quotientOf(inPlane, count.x);
+    ivec3 p = ivec3(params.boxFirst[0], params.boxFirst[1], params.boxFirst[2]) +
+              ivec3(uvec3(inPlane - y * count.x, y, z));
     const uvec3 cells = uvec3(params.cells[0], params.cells[1], params.cells[2]);
-    for (uint dof = gl_GlobalInvocationID.x; dof < params.dofCount; dof += stride) {
-        const uint face = faces[dof];
-        const uint axis = faceAxis(face, params.faceStart1, params.faceStart2);
-        const uint start = axis == 0u ? 0u : (axis == 1u ? params.faceStart1 : params.faceStart2);
-        const uvec3 position = facePosition(face - start, axis, cells, params.periodic);
-        vec3 centre = v3(params.origin) + (vec3(position) + vec3(0.5)) * v3(params.spacing);
-        centre[axis] -= 0.5 * params.spacing[axis];
-        if (params.dim == 2u) centre.z = 0.0;
-        const vec3 box = vec3(cells) * v3(params.spacing);
-        float value = 0.0;
-        for (uint o = 0; o < params.obstacleCount; ++o) {
-            const vec3 r = obstacleOffset(obstacles[o], centre, params.dim, box, params.periodic);
-            if (!withinReach(obstacles[o], r)) continue;
-            if (covers(obstacles[o], r)) {
-                const vec3 solid = materialVelocity(obstacles[o], r);
-                value = velocity[face] - solid[axis];
-                break;
-            }
+    for (uint a = 0u; a < 3u; ++a)
+        if ((params.periodic & (1u << a)) != 0u) p[a] = (p[a] % int(cells[a]) + int(cells[a])) % int(cells[a]);
+    const bool periodicAxis = (params.periodic & (1u << axis)) != 0u;
+    if (!periodicAxis && (p[axis] == 0 || p[axis] == int(cells[axis]))) return;  // a wall
+    uvec3 extent = cells;
+    if (!periodicAxis) extent[axis] += 1u;
+    const uint start = axis == 0u ? 0u : (axis == 1u ? params.faceStart1 : params.faceStart2);
+    const uint face = start + (uint(p.z) * extent.y + uint(p.y)) * extent.x + uint(p.x);
+    vec3 centre = v3(params.origin) + (vec3(p) + vec3(0.5)) * v3(params.spacing);
+    centre[axis] -= 0.5 * params.spacing[axis];
+    if (params.dim == 2u) centre.z = 0.0;
+    const vec3 box = vec3(cells) * v3(params.spacing);
+    float value = 0.0;
+    for (uint o = 0; o < params.obstacleCount; ++o) {
+        vec3 r;
+        if (!withinReachOf(o, centre, params.dim, box, params.periodic, r)) continue;
+        const ObstacleRecord record = obstacles[o];
+        if (covers(record, r)) {
+            const vec3 solid = materialVelocity(record, r);
+            value = velocity[face] - solid[axis];
+            break;
         }
-        mismatch[face] = value;
     }
+    mismatch[face] = value;
 }

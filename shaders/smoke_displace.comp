@@ -84,9 +84,10 @@ void coverStage(uint cell, ivec3 p) {
     if (!isFluid(cell)) return;
     const vec3 centre = centreOf(p);
     for (uint o = 0u; o < params.obstacleCount; ++o) {
+        vec3 r;
+        if (!withinReachOf(params.firstRecord + o, centre, params.dim, gridBox(), params.periodic, r))
+            continue;
         const ObstacleRecord solid = obstacles[params.firstRecord + o];
-        const vec3 r = obstacleOffset(solid, centre, params.dim, gridBox(), params.periodic);
-        if (!withinReach(solid, r)) continue;
         if (covers(solid, r)) {
             // Boxes may overlap: a cell a box before covered already is listed once.
             const uint word = (params.stamp << 8u) | o;

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
+#include <utility>
 // The generated headers use uint32_t without including <cstdint>.
 #include <cstdint>
 #include <string>
@@ -13,6 +15,7 @@
 #include "engine/device/ObstacleRecords.h"
 #include "engine/device/SeparableTransform.h"
 #include "engine/vulkan/CommandSequence.h"
+#include "engine/vulkan/VulkanContext.h"
 #include "shaders/ObstacleParams.h"
 #include "shaders/modal_correct.spv.h"
 #include "shaders/obstacle_mismatch.spv.h"
@@ -25,21 +28,32 @@ vulkan::DeviceBuffer zeros(const vulkan::VulkanContext& context, std::size_t cou
     return vulkan::DeviceBuffer::fromValues<float>(context, std::vector<float>(count, 0.0f), name);
 }
 
+/// Cells [lo, hi] along `axis` of `grid`: clamped to it along a walled axis, the whole axis along
+/// a periodic one when they reach round it (else they may wrap: lo < 0 or hi ≥ n).
+std::pair<int, int> onAxis(const MacGrid& grid, int axis, double lo, double hi) {
+    const int n = grid.cells[axis];
+    const auto cell = [&](double x) {
+        return int(std::clamp(std::floor((x - grid.origin[axis]) / grid.spacing[axis]), -1e9, 1e9));
+    };
+    int first = cell(lo) - 1, last = cell(hi) + 1;
+    if (!grid.periodic[axis]) return {std::max(first, 0), std::min(last, n - 1)};
+    if (last - first + 1 >= n) return {0, n - 1};
+    return {first, last};
+}
+
 }  // namespace
 
 ObstacleCorrection::ObstacleCorrection(const vulkan::VulkanContext& context,
                                        const BasisCache& cache)
     : mContext(context),
       mGrid(MacGrid::fromSpec(cache.grid)),
-      mDofCount(std::uint32_t(cache.faces.size())),
       mModeCount(std::uint32_t(cache.velocity.eigenvalues.size())),
-      mFaces(uploadDofFaces(context, cache)),
       mObstacles(context, maxVelocityRegions * sizeof(shaders::ObstacleRecord), "obstacles"),
       mMismatch(zeros(context, std::size_t(mGrid.faceTotal()), "obstacle mismatch")),
       mCorrection(zeros(context, paddedSize(int(mModeCount)), "obstacle correction")),
       mLattices(context),
       mProjection(context, cache, FaceQuantity::FaceField),
-      mMismatchKernel(context, {"obstacle_mismatch", obstacle_mismatch_spv, 5,
+      mMismatchKernel(context, {"obstacle_mismatch", obstacle_mismatch_spv, 4,
                                 sizeof(shaders::ObstacleMismatchParams), 64}),
       mCorrectKernel(context, {"modal_correct", modal_correct_spv, 2,
                                sizeof(shaders::ModalCorrectParams), 64}) {}
@@ -56,6 +70,24 @@ void ObstacleCorrection::setObstacles(std::span<const MovingObstacle> obstacles,
         records.push_back(obstacleRecord(obstacle, obstacle.poseAt(t), mLattices));
     if (!records.empty()) mObstacles.upload<shaders::ObstacleRecord>(records);
     mObstacleCount = std::uint32_t(records.size());
+    // The union of the regions' reach spheres, centres brought into the box along periodic axes.
+    for (int a = 0; a < 3; ++a) {
+        mBoxFirst[a] = 0;
+        mBoxCount[a] = a < mGrid.dim ? 0 : 1;
+    }
+    for (int a = 0; a < mGrid.dim && !records.empty(); ++a) {
+        double lo = 0.0, hi = 0.0;
+        for (std::size_t r = 0; r < records.size(); ++r) {
+            double c = records[r].centre[a];
+            if (mGrid.periodic[a])
+                c -= mGrid.length(a) * std::floor((c - mGrid.origin[a]) / mGrid.length(a));
+            lo = r == 0 ? c - records[r].reach : std::min(lo, c - records[r].reach);
+            hi = r == 0 ? c + records[r].reach : std::max(hi, c + records[r].reach);
+        }
+        const auto [first, last] = onAxis(mGrid, a, lo, hi);
+        mBoxFirst[a] = first;
+        mBoxCount[a] = std::max(last - first + 1, 0);
+    }
 }
 
 template <typename Project>
@@ -66,7 +98,6 @@ void ObstacleCorrection::recordWith(vulkan::CommandSequence& sequence,
     requireWords("obstacle_mismatch", faceField, std::uint64_t(mGrid.faceTotal()));
     requireWords("modal_correct", v, mModeCount);
     shaders::ObstacleMismatchParams params{};
-    params.dofCount = mDofCount;
     params.obstacleCount = mObstacleCount;
     params.faceStart1 = std::uint32_t(mGrid.faceOffset(1));
     params.faceStart2 = std::uint32_t(mGrid.faceOffset(2));
@@ -77,9 +108,33 @@ void ObstacleCorrection::recordWith(vulkan::CommandSequence& sequence,
         params.origin[a] = float(mGrid.origin[a]);
         params.spacing[a] = float(mGrid.spacing[a]);
     }
-    const std::array<const vulkan::DeviceBuffer*, 5> mismatchBuffers{
-        &mFaces, &faceField, &mObstacles, &mMismatch, &mLattices.buffer()};
-    sequence.dispatch(mMismatchKernel, mismatchBuffers, params, groupsFor(mContext, mDofCount, 64));
+    // The box's faces per normal axis: one more position along the axis than cells, as many as
+    // the axis has along a periodic axis the box goes round.
+    std::uint64_t total = 0;
+    for (int axis = 0; axis < 3; ++axis) {
+        std::uint64_t faces = axis < mGrid.dim ? 1 : 0;
+        for (int b = 0; b < 3; ++b) {
+            int count = mBoxCount[b];
+            if (b == axis)
+                count = mGrid.periodic[b] ? std::min(count + 1, mGrid.cells[b]) : count + 1;
+            params.boxCount[3 * axis + b] = std::uint32_t(count);
+            faces *= std::uint64_t(count);
+        }
+        params.boxFaces[axis] = std::uint32_t(faces);
+        params.boxFirst[axis] = mBoxFirst[axis];
+        total += faces;
+    }
+    // The faces the box leaves out, and walls, hold 0.
+    sequence.fill(mMismatch, mMismatch.bytes(), 0u);
+    const std::array<const vulkan::DeviceBuffer*, 4> mismatchBuffers{
+        &faceField, &mObstacles, &mMismatch, &mLattices.buffer()};
+    const std::uint64_t perDispatch =
+        std::uint64_t(mContext.properties().limits.maxComputeWorkGroupCount[0]) * 64;
+    for (std::uint64_t first = 0; first < total; first += perDispatch) {
+        params.first = std::uint32_t(first);
+        sequence.dispatch(mMismatchKernel, mismatchBuffers, params,
+                          std::uint32_t((std::min(perDispatch, total - first) + 63) / 64));
+    }
     project();
     const std::array<const vulkan::DeviceBuffer*, 2> correctBuffers{&v, &mCorrection};
     sequence.dispatch(mCorrectKernel, correctBuffers,

@@ -2,8 +2,10 @@
 /// @file ObstacleCorrection.h
 /// Moving obstacles on the device (seed §6.3.5; CPU reference engine/simulation/MovingObstacle.h):
 /// records mismatch → projection → v −= Δv, where the mismatch is the fluid's face velocity
-/// minus the obstacle's normal velocity on the DOF faces an obstacle covers.
+/// minus the obstacle's normal velocity on the DOF faces an obstacle covers, found among the faces
+/// of the box of cells within the regions' reach.
 
+#include <array>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -54,10 +56,11 @@ private:
 
     const vulkan::VulkanContext& mContext;
     MacGrid mGrid;
-    std::uint32_t mDofCount = 0;
     std::uint32_t mModeCount = 0;
     std::uint32_t mObstacleCount = 0;
-    vulkan::DeviceBuffer mFaces, mObstacles, mMismatch, mCorrection;
+    /// The cells within reach of a region now: first cell and count per axis (setObstacles).
+    std::array<int, 3> mBoxFirst{0, 0, 0}, mBoxCount{1, 1, 1};
+    vulkan::DeviceBuffer mObstacles, mMismatch, mCorrection;
     ObstacleLattices mLattices;
     ForceProjectionKernel mProjection;
     vulkan::ComputeKernel mMismatchKernel, mCorrectKernel;

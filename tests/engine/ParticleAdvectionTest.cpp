@@ -140,8 +140,11 @@ TEST(ParticleAdvection, SetsEmitTheirCountAtStartOrAtTheirRateIntoTheFluid) {
         const Vec3 p{particles.position[3 * i], particles.position[3 * i + 1], 0.0};
         EXPECT_TRUE(inFluidCell(grid, fluid, p)) << i;
         EXPECT_GE(p[0], 0.5);
-        if (particles.set[i] == 0) EXPECT_LE(std::hypot(p[0] - 0.5, p[1] - 0.5), 0.3);
-        if (particles.set[i] == 1) EXPECT_TRUE(p[1] >= 0.1 && p[1] <= 0.2);
+        if (particles.set[i] == 0) {
+            EXPECT_LE(std::hypot(p[0] - 0.5, p[1] - 0.5), 0.3);
+        } else {
+            EXPECT_TRUE(p[1] >= 0.1 && p[1] <= 0.2);
+        }
         EXPECT_EQ(particles.velocity[3 * i], 0.0) << "they start at rest";
     }
     // The same draws again from a fresh emission: seeds depend on the set and number alone.
