@@ -8,13 +8,14 @@ double denseCoefficientBytes(int modes) {
 }
 
 RunMemory estimateRunMemory(std::int64_t smokeCells, double columnBytes, double coefficientBytes,
-                            bool device) {
+                            std::int64_t particles, bool device) {
     constexpr double kMiB = 1024.0 * 1024.0;
     RunMemory memory;
     memory.basisBytes = 3.0 * (columnBytes + coefficientBytes);
     memory.smokeBytes = double(smokeCells) * (device ? 200.0 : 150.0);
-    memory.peakBytes =
-        1.15 * ((device ? 150.0 : 48.0) * kMiB + memory.basisBytes + memory.smokeBytes);
+    memory.particleBytes = 256.0 * double(particles);
+    memory.peakBytes = 1.15 * ((device ? 150.0 : 48.0) * kMiB + memory.basisBytes +
+                               memory.smokeBytes + memory.particleBytes);
     return memory;
 }
 

@@ -12,6 +12,8 @@
 ///                 sparse, none tensor-free
 ///   smoke         150 (CPU reference: double fields, back-traces, MacCormack temporaries, frames)
 ///                 or 200 (device: float fields, their staging, frames) bytes per smoke cell
+///   particles     256 bytes per particle the shot emits (the state, its copy read back for a
+///                 frame, the checkpoint's and the PLY file's bytes)
 /// times 1.15. Measured peaks of `modeflow run` (2D disk 128² with 40 and 200 modes, smoke scales
 /// 1–8; 3D ball 32³ with 40 and 150 modes, scales 1–3; both devices) are 0.60–0.83 of it.
 /// A run's stages name themselves when an allocation fails despite it (inRunStage).
@@ -27,12 +29,14 @@ namespace modeflow {
 struct RunMemory {
     double basisBytes = 0.0;
     double smokeBytes = 0.0;
+    double particleBytes = 0.0;
     double peakBytes = 0.0;  ///< everything, with the margin
 };
 
-/// `device`: a Vulkan device runs it (else the CPU reference).
+/// `device`: a Vulkan device runs it (else the CPU reference); `particles`: the most the run
+/// holds (ParticleEmission::capacity).
 RunMemory estimateRunMemory(std::int64_t smokeCells, double columnBytes, double coefficientBytes,
-                            bool device);
+                            std::int64_t particles, bool device);
 
 /// The bytes of dense packed coefficients of `modes` modes, K²(K−1)/2·8.
 double denseCoefficientBytes(int modes);

@@ -55,6 +55,23 @@ TEST_F(Cli, ARunBeyondTheMemoryLimitIsRefusedBeforeThePrecompute) {
     EXPECT_FALSE(fs::exists(mDir / "frames"));
 }
 
+TEST_F(Cli, ARunWithMoreParticlesThanTheMemoryHoldsIsRefusedBeforeThePrecompute) {
+    const MemoryLimit limit("400000000");
+    const std::string text = std::string(testing::kSmallDisk) +
+                             "[[particles]]\nshape = \"ball\"\ncenter = [0, 0]\nradius = 0.5\n"
+                             "count = 4000000\n";
+    const RunResult r = run("run " + scene("disk.toml", text).string() + " --device cpu --out " +
+                            (mDir / "frames").string() + " --cache-dir " + mCache.string());
+    EXPECT_EQ(r.status, 1) << r.err;
+    EXPECT_NE(r.err.find("(576 smoke cells), 8 velocity modes and 4000000 particles: the run on "
+                         "the CPU reference needs about "),
+              std::string::npos)
+        << r.err;
+    EXPECT_NE(r.err.find("lower the count or rate of the [[particles]] sets"), std::string::npos)
+        << r.err;
+    EXPECT_EQ(cacheFiles(), 0);
+}
+
 TEST_F(Cli, AMemoryLimitThatIsNotAByteCountIsRefused) {
     const MemoryLimit limit("8G");
     expectRejected(precompute(scene("disk.toml", testing::kSmallDisk)),

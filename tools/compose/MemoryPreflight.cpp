@@ -1,9 +1,11 @@
 #include "tools/compose/MemoryPreflight.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <string>
 
 #include "engine/core/AvailableMemory.h"
+#include "engine/simulation/ParticleEmission.h"
 #include "precompute/PrecomputeMemory.h"
 #include "precompute/closedform/ClosedFormCoefficients.h"
 
@@ -27,16 +29,26 @@ RunMemory requireRunMemory(const SceneSpec& scene, BackendKind backend) {
                             : 0.0;  // tensor-free
     // An eigensolved basis: its columns and its vorticity quadrature (120 bytes a face).
     const double columnBytes = closedForm ? 8.0 * 8.0 * dofs : (8.0 * modes + 120.0) * dofs;
-    const RunMemory memory = estimateRunMemory(smokeCells, columnBytes, coefficientBytes, device);
+    // Every particle the shot emits (refused here, before any work, beyond maxParticles).
+    const std::int64_t particles =
+        ParticleEmission(scene.particles, double(scene.output.frames) * scene.output.stepsPerFrame *
+                                              scene.simulation.dt)
+            .capacity();
+    const RunMemory memory =
+        estimateRunMemory(smokeCells, columnBytes, coefficientBytes, particles, device);
     const bool smoke = memory.smokeBytes > memory.basisBytes;
+    const bool points = memory.particleBytes > std::max(memory.basisBytes, memory.smokeBytes);
     requireMemory(
         memory.peakBytes,
-        gridResolutionText(grid) + " with [smoke].resolution_scale = " +
-            std::to_string(scene.smoke.resolutionScale) + " (" + std::to_string(smokeCells) +
-            " smoke cells) and " + std::to_string(scene.basis.velocityCount()) + " velocity modes",
+        gridResolutionText(grid) +
+            " with [smoke].resolution_scale = " + std::to_string(scene.smoke.resolutionScale) +
+            " (" + std::to_string(smokeCells) + " smoke cells)" + (particles > 0 ? ", " : " and ") +
+            std::to_string(scene.basis.velocityCount()) + " velocity modes" +
+            (particles > 0 ? " and " + std::to_string(particles) + " particles" : ""),
         std::string("the run") + (device ? " on a Vulkan device" : " on the CPU reference"),
-        smoke ? "lower [smoke].resolution_scale or [grid].resolution"
-              : "lower the velocity modes in [basis] or [grid].resolution");
+        points  ? "lower the count or rate of the [[particles]] sets"
+        : smoke ? "lower [smoke].resolution_scale or [grid].resolution"
+                : "lower the velocity modes in [basis] or [grid].resolution");
     return memory;
 }
 
