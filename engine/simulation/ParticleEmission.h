@@ -7,7 +7,9 @@
 /// the sets have emitted by t + dt, set by set, so those particles move during it. A particle's
 /// seed is drawn from a counter-based hash of the set's seed, its set and its number in the set
 /// (no generator state: a resumed run seeds the same points), uniformly in the set's ball or box,
-/// drawn again until it falls in a fluid smoke cell. It starts at rest.
+/// drawn again until it falls in a fluid smoke cell. It starts at rest. The particles a set emits
+/// in one step get their ids (places) in the order of the smoke cells they start in, so that
+/// neighbours in space are neighbours in memory.
 
 #include <cstdint>
 #include <span>
@@ -56,6 +58,10 @@ private:
 /// Refuses particles of mismatched sizes or with a non-finite position or velocity.
 /// @throw modeflow::Error saying which.
 void requireParticleValues(const Particles& particles);
+
+/// The smoke cell holding the world point (the box clamped to its cells, periodic axes wrapped);
+/// −1 for a non-finite point.
+std::int64_t cellOf(const MacGrid& smokeGrid, const Vec3& point);
 
 /// Whether the world point lies in a fluid cell of `smokeGrid` (the box clamped to its cells).
 bool inFluidCell(const MacGrid& smokeGrid, std::span<const std::uint8_t> fluidMask,
