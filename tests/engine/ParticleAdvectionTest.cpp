@@ -265,6 +265,29 @@ TEST(ParticleAdvection, WallsKeepParticlesInTheBoxAndTheFluid) {
     }
 }
 
+TEST(ParticleAdvection, APeriodicAxisWrapsThem) {
+    MacGrid grid = unitGrid(2, 16);
+    grid.periodic[0] = true;
+    const std::vector<std::uint8_t> fluid(std::size_t(grid.cellCount()), 1);
+    // A uniform wind along the periodic x: one unit a unit of time.
+    std::vector<double> wind(std::size_t(grid.faceTotal()), 0.0);
+    for (std::int64_t f = 0; f < grid.faceCount(0); ++f) wind[std::size_t(f)] = 1.0;
+    reference::ParticleAdvection particles(grid, grid, fluid, {ballSet({0.5, 0.5, 0.0}, 0.2, 20)},
+                                           10.0);
+    particles.step(wind, {}, 0.0, 0.05);
+    const std::vector<double> start = particles.particles().position;
+    for (int s = 1; s <= 30; ++s) particles.step(wind, {}, s * 0.05, 0.05);
+    const Particles& p = particles.particles();
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        // 1.5 box lengths on: half a box from where they were, inside [0, 1).
+        const double expected = start[3 * i] + 0.5 - (start[3 * i] + 0.5 >= 1.0 ? 1.0 : 0.0);
+        EXPECT_NEAR(p.position[3 * i], expected, 1e-12) << i;
+        EXPECT_GE(p.position[3 * i], 0.0);
+        EXPECT_LT(p.position[3 * i], 1.0);
+        EXPECT_EQ(p.position[3 * i + 1], start[3 * i + 1]);
+    }
+}
+
 TEST(ParticleFrame, APlyPointCloudReadsBack) {
     const testing::TestFolder folder;
     const std::vector<double> position{0.1, 0.2, 0.3, -1.0, 2.5, 0.0};

@@ -473,12 +473,16 @@ TEST_F(RunCommand, AShorterRerunLeavesNoFramesOfTheEarlierRun) {
     ASSERT_EQ(simulate(s, out).status, 0);
     std::ofstream(out / "other_0003.vdb") << "another scene's frame";
     std::ofstream(out / "hot_notes.txt") << "the user's";
+    std::ofstream(out / "hot_particles_notes.ply") << "the user's too";
     const RunResult rerun = simulate(s, out, "--frames 2");
     ASSERT_EQ(rerun.status, 0) << rerun.err;
     EXPECT_NE(rerun.err.find("files of an earlier hot run"), std::string::npos) << rerun.err;
     EXPECT_TRUE(fs::exists(out / "hot_0002.vdb"));
     EXPECT_FALSE(fs::exists(out / "hot_0003.vdb")) << "a frame of the earlier, longer run is left";
     EXPECT_FALSE(fs::exists(out / "hot_0004.vdb")) << "a frame of the earlier, longer run is left";
+    EXPECT_TRUE(fs::exists(out / "hot_particles_0002.ply"));
+    EXPECT_FALSE(fs::exists(out / "hot_particles_0003.ply")) << "its particles are left";
+    EXPECT_TRUE(fs::exists(out / "hot_particles_notes.ply"));
     EXPECT_TRUE(fs::exists(out / "other_0003.vdb"));
     EXPECT_TRUE(fs::exists(out / "hot_notes.txt"));
 }
