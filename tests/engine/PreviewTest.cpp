@@ -19,11 +19,13 @@
 #include "engine/core/Error.h"
 #include "engine/preview/ContactSheet.h"
 #include "engine/preview/Palette.h"
+#include "engine/preview/ParticleDots.h"
 #include "engine/preview/PngReader.h"
 #include "engine/preview/PngWriter.h"
 #include "engine/preview/SmokeImage2D.h"
 #include "engine/preview/VolumeReference.h"
 #include "engine/preview/VolumeRenderer.h"
+#include "engine/preview/VolumeView.h"
 #include "engine/vulkan/CommandSequence.h"
 #include "engine/vulkan/DeviceBuffer.h"
 #include "tests/support/PngFile.h"
@@ -228,6 +230,44 @@ TEST(SmokeImage2DTest, RejectsWrongGridsSizesAndOptions) {
 }
 
 // ------------------------------------------------------------------------------ contact sheet
+
+TEST(ParticleDotsTest, ADotLandsWhereThePictureShowsItsPoint) {
+    // 2D: a 16 × 8 smoke grid over [0, 2] × [0, 1] at 4 pixels a cell, y up.
+    MacGrid flat;
+    flat.dim = 2;
+    flat.cells = {16, 8, 1};
+    flat.spacing = {0.125, 0.125, 1.0};
+    preview::Image picture(64, 32);
+    const std::vector<double> points{0.5, 0.25, 0.0, 5.0, 5.0, 0.0};  // the second off the picture
+    preview::drawParticles2D(picture, flat, 4, points);
+    const preview::Rgba dot = preview::palette::kParticle;
+    // x = 0.5 → pixel 16; y = 0.25 → 2 cells up from the bottom, pixel row 32 − 8 = 24.
+    EXPECT_EQ(picture.pixel(16, 24), dot);
+    EXPECT_NE(picture.pixel(16, 22), dot);
+    long coloured = 0;
+    for (int y = 0; y < 32; ++y)
+        for (int x = 0; x < 64; ++x) coloured += picture.pixel(x, y)[0] > 0;
+    EXPECT_EQ(coloured, 5) << "one dot: its pixel and four half-blended beside it";
+
+    // 3D: the box's centre is the middle of the camera's picture; a point behind it is not drawn.
+    MacGrid box;
+    box.dim = 3;
+    box.cells = {8, 8, 8};
+    box.spacing = {0.125, 0.125, 0.125};
+    const auto view = preview::volumeViewParams(box, 40, 30, 1.0f);
+    preview::Image solid(40, 30);
+    // The second point lies behind the camera (it looks along −(0.45, −0.78, 0.42)).
+    preview::drawParticles3D(solid, box, view,
+                             std::vector<double>{0.5, 0.5, 0.5, 45.5, -77.5, 42.5});
+    int centres = 0;  // the picture's middle is a pixel corner: the dot's pixel is one of four
+    for (int y = 14; y <= 15; ++y)
+        for (int x = 19; x <= 20; ++x) centres += solid.pixel(x, y) == dot;
+    EXPECT_EQ(centres, 1);
+    coloured = 0;
+    for (int y = 0; y < 30; ++y)
+        for (int x = 0; x < 40; ++x) coloured += solid.pixel(x, y)[0] > 0;
+    EXPECT_EQ(coloured, 5);
+}
 
 TEST(ContactSheetTest, GridOfThumbnailsWithNumbers) {
     std::vector<Image> frames;
