@@ -119,6 +119,13 @@ void Simulation::setObstacles(std::vector<MovingObstacle> obstacles) {
     mSettings.obstacles = std::move(obstacles);
 }
 
+void Simulation::setEmitters(std::vector<SmokeEmitter> emitters) {
+    requireEmitterCount(emitters);
+    mSettings.emitters = std::move(emitters);
+    // A list no step can match: the next one uploads the new emitters.
+    mActiveEmitters.assign(mSettings.emitters.size() + 1, false);
+}
+
 void Simulation::setViscosity(double viscosity) {
     FluidParameters fluid = mSettings.fluid;
     fluid.viscosity = viscosity;

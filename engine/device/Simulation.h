@@ -63,6 +63,7 @@ public:
     double time() const override { return mTime; }
 
     void setObstacles(std::vector<MovingObstacle> obstacles) override;
+    void setEmitters(std::vector<SmokeEmitter> emitters) override;
     void setViscosity(double viscosity) override;
     void setIntegrator(Integrator integrator) override;
     /// Timestamps (constructed with `timestamps`; on by default then) cost lavapipe about as much

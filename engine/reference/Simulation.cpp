@@ -58,6 +58,11 @@ void Simulation::setObstacles(std::vector<MovingObstacle> obstacles) {
     mSettings.obstacles = std::move(obstacles);
 }
 
+void Simulation::setEmitters(std::vector<SmokeEmitter> emitters) {
+    requireEmitterCount(emitters);
+    mSettings.emitters = std::move(emitters);
+}
+
 void Simulation::setViscosity(double viscosity) {
     mStepper.setViscosity(viscosity);
     mSettings.fluid.viscosity = viscosity;

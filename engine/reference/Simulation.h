@@ -38,6 +38,7 @@ public:
         mSplats.assign(splats.begin(), splats.end());
     }
     void setObstacles(std::vector<MovingObstacle> obstacles) override;
+    void setEmitters(std::vector<SmokeEmitter> emitters) override;
     void setViscosity(double viscosity) override;
     void setIntegrator(Integrator integrator) override;
     FrameStats advanceSteps(int steps) override;

@@ -5,7 +5,6 @@
 #include <vector>
 
 #include "engine/output/ParticleFrame.h"
-#include "engine/output/VdbFrame.h"
 
 namespace modeflow {
 
@@ -17,6 +16,27 @@ GridFrames::GridFrames(Simulator& simulator, const RunInputs& run, GridFrameFile
     if (mFiles.previews)
         mPreview = std::make_unique<FramePreview>(mSimulator.smokeGrid(), mRun.smokeMask,
                                                   mFiles.previewDevice);
+}
+
+VdbFrame gridVdbFrame(const Simulator& simulator, std::span<const std::uint8_t> fluidMask,
+                      const MacGrid& basisGrid, const SmokeFields& smoke,
+                      std::span<const double> faceVelocity, std::span<const double> faceMagnetic,
+                      int frame, std::string sceneHash, bool halfFloat) {
+    VdbFrame vdb;
+    vdb.smokeGrid = simulator.smokeGrid();
+    vdb.basisGrid = basisGrid;
+    vdb.density = std::span<const double>(smoke.density);
+    if (simulator.settings().simulatesTemperature())
+        vdb.temperature = std::span<const double>(smoke.temperature);
+    vdb.faceVelocity = faceVelocity;
+    vdb.faceMagnetic = faceMagnetic;
+    vdb.fluidMask = fluidMask;
+    vdb.frame = frame;
+    vdb.time = simulator.time();
+    vdb.sceneHash = std::move(sceneHash);
+    vdb.modeflowVersion = MODEFLOW_VERSION;
+    vdb.options.halfFloat = halfFloat;
+    return vdb;
 }
 
 std::filesystem::path GridFrames::frameFile(int frame) const {
@@ -31,19 +51,8 @@ Checkpoint GridFrames::writeFrame(int frame, const std::filesystem::path& pictur
         bar.timed("reading fields", [&] { return mSimulator.faceVelocity(); });
     const std::vector<double> faceMagnetic =
         bar.timed("reading fields", [&] { return mSimulator.faceMagneticField(); });
-    VdbFrame vdb;
-    vdb.smokeGrid = mSimulator.smokeGrid();
-    vdb.basisGrid = mBasisGrid;
-    vdb.density = std::span<const double>(smoke.density);
-    if (temperature) vdb.temperature = std::span<const double>(smoke.temperature);
-    vdb.faceVelocity = faceVelocity;
-    vdb.faceMagnetic = faceMagnetic;
-    vdb.fluidMask = mRun.smokeMask;
-    vdb.frame = frame;
-    vdb.time = mSimulator.time();
-    vdb.sceneHash = mFiles.sceneHash;
-    vdb.modeflowVersion = MODEFLOW_VERSION;
-    vdb.options.halfFloat = mFiles.halfFloat;
+    const VdbFrame vdb = gridVdbFrame(mSimulator, mRun.smokeMask, mBasisGrid, smoke, faceVelocity,
+                                      faceMagnetic, frame, mFiles.sceneHash, mFiles.halfFloat);
     bar.timed("VDB files", [&] { writeVdbFrame(frameFile(frame), vdb); });
     Particles particles;
     if (!settings().particles.empty()) {

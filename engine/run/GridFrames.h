@@ -5,11 +5,14 @@
 /// (engine/output/ParticleFrame.h) when the scene has any, a picture of the smoke (and the
 /// particles) when asked, and the checkpoint of the simulation's state, smoke and particles.
 
+#include <cstdint>
 #include <filesystem>
 #include <memory>
+#include <span>
 #include <string>
 
 #include "engine/core/MacGrid.h"
+#include "engine/output/VdbFrame.h"
 #include "engine/run/FramePreview.h"
 #include "engine/run/FramedRun.h"
 #include "engine/run/RunInputs.h"
@@ -27,6 +30,14 @@ struct GridFrameFiles {
     /// The device that ray-marches 3D pictures; null renders them on the CPU.
     const vulkan::VulkanContext* previewDevice = nullptr;
 };
+
+/// The VDB frame of `simulator`'s state now (the smoke and fields read from it beforehand): what
+/// every grid run writes per frame, and the Python module's Simulation.write_vdb. The spans must
+/// outlive the frame.
+VdbFrame gridVdbFrame(const Simulator& simulator, std::span<const std::uint8_t> fluidMask,
+                      const MacGrid& basisGrid, const SmokeFields& smoke,
+                      std::span<const double> faceVelocity, std::span<const double> faceMagnetic,
+                      int frame, std::string sceneHash, bool halfFloat);
 
 class GridFrames final : public FramedRun {
 public:

@@ -49,8 +49,8 @@ Checkpoint SurfaceFrames::writeFrame(int frame, const std::filesystem::path& pic
             preview::writePng(
                 picture, preview::surfaceImage(mRun.cache.surface.mesh, dye, mDyeScale, 512, 384));
         });
-    Checkpoint checkpoint{frame, mSimulation.time(),  0, mSimulation.velocity(),
-                          {},    mSimulation.carry(), {}};
+    Checkpoint checkpoint{frame, mSimulation.time(),  0,  mSimulation.velocity(),
+                          {},    mSimulation.carry(), {}, {}};
     const Eigen::VectorXd& state = mSimulation.dye().state();
     checkpoint.smoke.density.assign(state.data(), state.data() + state.size());
     checkpoint.smoke.temperature.assign(checkpoint.smoke.density.size(), 0.0);  // dye has none

@@ -17,6 +17,7 @@
 #include "engine/simulation/MovingObstacle.h"
 #include "engine/simulation/Particles.h"
 #include "engine/simulation/SimulationSettings.h"
+#include "engine/simulation/SmokeEmitter.h"
 #include "engine/simulation/SmokeFields.h"
 #include "engine/simulation/StepCarry.h"
 
@@ -62,6 +63,10 @@ public:
     /// following steps, the viscosity ν, and the integrator.
     /// @throw modeflow::Error for more than maxObstacles or a negative ν.
     virtual void setObstacles(std::vector<MovingObstacle> obstacles) = 0;
+    /// The smoke sources of the following steps, in place of the scene's (the Python module's
+    /// moving sources).
+    /// @throw modeflow::Error for more than maxSmokeEmitters.
+    virtual void setEmitters(std::vector<SmokeEmitter> emitters) = 0;
     virtual void setViscosity(double viscosity) = 0;
     virtual void setIntegrator(Integrator integrator) = 0;
 

@@ -5,6 +5,7 @@
 #include <Eigen/Core>
 
 #include "engine/core/Error.h"
+#include "engine/core/RuntimeLimits.h"
 
 namespace modeflow {
 
@@ -18,6 +19,12 @@ Vec3 SmokeEmitter::restCentre() const {
             break;
     }
     return centre;
+}
+
+void requireEmitterCount(std::span<const SmokeEmitter> emitters) {
+    if (emitters.size() > std::size_t(maxSmokeEmitters))
+        throw Error("simulation: " + std::to_string(emitters.size()) + " sources, at most " +
+                    std::to_string(maxSmokeEmitters));
 }
 
 SmokeEmitter SmokeEmitter::placedAt(double t) const {

@@ -68,6 +68,9 @@ struct SmokeEmitter {
 /// (SmokeEmitter::placedAt).
 std::vector<SmokeEmitter> activeEmitters(std::span<const SmokeEmitter> all, double t);
 
+/// @throw modeflow::Error for more than maxSmokeEmitters emitters.
+void requireEmitterCount(std::span<const SmokeEmitter> emitters);
+
 /// The emitter of a scene's `[[source]]`; a mesh source's level set is attached afterwards
 /// (attachSourceSolids).
 /// @throw modeflow::Error when its shape is not a ball, a box or a mesh.

@@ -24,5 +24,7 @@ struct Preflight {
 /// @throw modeflow::Error naming the option, the scene key or the memory that is refused.
 Preflight preflight(const std::filesystem::path& sceneFile, std::string_view deviceOption,
                     RunParts parts);
+/// The same for a scene already read (the Python module's Scene.from_dict, from_toml).
+Preflight preflight(SceneSpec scene, std::string_view deviceOption, RunParts parts);
 
 }  // namespace modeflow

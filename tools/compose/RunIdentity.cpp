@@ -27,8 +27,12 @@ std::string hex(std::uint64_t value) {
 }  // namespace
 
 RunIdentity runIdentity(const SceneSpec& scene, BackendKind backend) {
+    return runIdentity(scene, backend, fileBytes(scene.sourceFile));
+}
+
+RunIdentity runIdentity(const SceneSpec& scene, BackendKind backend, std::string_view sceneText) {
     RunIdentity id;
-    id.sceneHash = hex(fnv1a64(fileBytes(scene.sourceFile)));
+    id.sceneHash = hex(fnv1a64(sceneText));
     // Mesh obstacles' and sources' files are part of the run: changing one changes the frames.
     std::string meshes;
     const auto addMesh = [&](const std::filesystem::path& file) {

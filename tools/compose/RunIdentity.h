@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <string>
+#include <string_view>
 
 #include "engine/core/SceneSpec.h"
 #include "engine/simulation/BackendCapabilities.h"
@@ -19,5 +20,7 @@ struct RunIdentity {
 
 /// @throw modeflow::Error as basisKey when a mesh file of the scene cannot be read.
 RunIdentity runIdentity(const SceneSpec& scene, BackendKind backend);
+/// The same for a scene read from `sceneText` rather than its file (the Python module's).
+RunIdentity runIdentity(const SceneSpec& scene, BackendKind backend, std::string_view sceneText);
 
 }  // namespace modeflow

@@ -3,10 +3,7 @@
 /// The `modeflow` subcommands (tools/README.md, "Command line"). Each registers its options on the
 /// CLI11 app and returns the function that runs it; errors propagate as modeflow::Error to main().
 
-#include <filesystem>
 #include <functional>
-#include <optional>
-#include <string>
 
 #include <CLI/CLI.hpp>
 
@@ -20,8 +17,5 @@ Command addModes(CLI::App& app);
 Command addRun(CLI::App& app);
 Command addStir(CLI::App& app);
 Command addValidate(CLI::App& app);
-
-/// --cache-dir, else $MODEFLOW_CACHE_DIR, else $XDG_CACHE_HOME/modeflow, else ~/.cache/modeflow.
-std::filesystem::path resolveCacheDir(const std::optional<std::string>& option);
 
 }  // namespace modeflow::cli

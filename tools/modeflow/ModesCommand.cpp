@@ -15,6 +15,7 @@
 #include "engine/dynamics/ModalIntegrator.h"
 #include "engine/run/Backend.h"
 #include "precompute/scene/SceneLoader.h"
+#include "tools/compose/CacheDirectory.h"
 #include "tools/compose/Preflight.h"
 #include "tools/modeflow/Commands.h"
 #include "tools/modeflow/NumberOptions.h"

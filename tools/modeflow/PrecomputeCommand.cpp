@@ -3,6 +3,7 @@
 #include "precompute/Precompute.h"
 #include "precompute/scene/SceneLoader.h"
 #include "precompute/solve/ProcessGroup.h"
+#include "tools/compose/CacheDirectory.h"
 #include "tools/modeflow/Commands.h"
 
 namespace modeflow::cli {

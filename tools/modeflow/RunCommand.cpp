@@ -13,6 +13,7 @@
 #include "engine/run/FrameLoop.h"
 #include "engine/run/GridFrames.h"
 #include "engine/run/SurfaceFrames.h"
+#include "tools/compose/CacheDirectory.h"
 #include "tools/compose/Preflight.h"
 #include "tools/compose/RunIdentity.h"
 #include "tools/modeflow/Commands.h"

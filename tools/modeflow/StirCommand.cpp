@@ -7,6 +7,7 @@
 #include "engine/run/Backend.h"
 #include "engine/stir/StirApp.h"
 #include "engine/stir/WindowPicture.h"
+#include "tools/compose/CacheDirectory.h"
 #include "tools/compose/Preflight.h"
 #include "tools/modeflow/Commands.h"
 #include "tools/modeflow/NumberOptions.h"

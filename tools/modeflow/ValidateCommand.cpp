@@ -6,6 +6,7 @@
 #include "engine/core/AtomicFile.h"
 #include "engine/core/Error.h"
 #include "engine/core/WritableDirectory.h"
+#include "tools/compose/CacheDirectory.h"
 #include "tools/modeflow/Commands.h"
 #include "tools/validate/MantaflowPlume.h"
 #include "tools/validate/Report.h"

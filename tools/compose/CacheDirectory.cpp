@@ -1,9 +1,10 @@
+#include "tools/compose/CacheDirectory.h"
+
 #include <cstdlib>
 
 #include "engine/core/Error.h"
-#include "tools/modeflow/Commands.h"
 
-namespace modeflow::cli {
+namespace modeflow {
 
 std::filesystem::path resolveCacheDir(const std::optional<std::string>& option) {
     if (option) return *option;
@@ -15,7 +16,7 @@ std::filesystem::path resolveCacheDir(const std::optional<std::string>& option) 
     if (auto dir = env("MODEFLOW_CACHE_DIR")) return *dir;
     if (auto xdg = env("XDG_CACHE_HOME")) return std::filesystem::path(*xdg) / "modeflow";
     if (auto home = env("HOME")) return std::filesystem::path(*home) / ".cache" / "modeflow";
-    throw Error("no cache directory: pass --cache-dir DIR or set MODEFLOW_CACHE_DIR");
+    throw Error("no cache directory: name one (--cache-dir, cache_dir=) or set MODEFLOW_CACHE_DIR");
 }
 
-}  // namespace modeflow::cli
+}  // namespace modeflow
