@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Checks modeflow's module layering; exits 1 and lists every violation.
 
-A module is a folder with a CMakeLists.txt that defines one library or executable. Its declared
+A module is a folder with a CMakeLists.txt that defines one library, executable or Python module. Its declared
 dependencies are the modeflow_* targets it links (target_link_libraries, followed transitively).
 The rules:
   1. every `#include "..."` of a repository file belongs to the including module itself or to a
@@ -41,7 +41,7 @@ def modules():
             if "CMakeLists.txt" not in files:
                 continue
             text = strip_cmake_comments(read(os.path.join(folder, "CMakeLists.txt")))
-            targets = set(re.findall(r"add_(?:library|executable)\(\s*([\w-]+)", text))
+            targets = set(re.findall(r"(?:add_library|add_executable|pybind11_add_module)\(\s*([\w-]+)", text))
             if not targets:
                 continue
             links = set()

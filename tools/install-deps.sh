@@ -14,6 +14,8 @@ packages=(
     libstb-dev libgtest-dev libbenchmark-dev time bc python3 clang-format  # tools/check-layering.py, tools/check-format.sh
     clang libclang-rt-14-dev    # the fuzz targets (libFuzzer), tools/fuzz.sh
     python3-matplotlib          # modeflow validate draws its figures with it
+    pybind11-dev python3-dev python3-numpy python3-pytest python3-openvdb  # the Python module, its tests
+    blender                     # the add-on's test bakes and renders in it (headless)
 )
 
 missing=()

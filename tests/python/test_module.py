@@ -1,0 +1,192 @@
+"""The Python module against the command line and the files it writes."""
+
+import json
+import os
+import signal
+import subprocess
+import sys
+import time
+
+import numpy as np
+import pyopenvdb
+import pytest
+
+import modeflow
+from conftest import SCENE_DICT, SCENE_TOML, run_cli
+
+
+def vdb_grid(path, name):
+    return pyopenvdb.read(str(path), name)
+
+
+def dense(grid, shape, components=1):
+    """The grid's voxels from (0, 0, 0) (the first smoke cell; 2D: the one layer) as an array."""
+    array = np.zeros(shape + ((components,) if components > 1 else ()), dtype=np.float32)
+    grid.copyToArray(array, ijk=(0, 0, 0))
+    return array
+
+
+def test_from_dict_gives_the_cli_frames(modeflow_bin, cache_dir, tmp_path):
+    # The TOML text and the dict describe one scene: the CLI runs the text, Python the dict.
+    (tmp_path / "plume.toml").write_text(SCENE_TOML)
+    out = tmp_path / "frames"
+    run_cli(modeflow_bin, "run", tmp_path / "plume.toml", "--device", "cpu", "--out", out,
+            "--cache-dir", cache_dir)
+    sim = modeflow.Simulation(modeflow.Scene.from_dict(SCENE_DICT, name="plume"), device="cpu",
+                              cache_dir=str(cache_dir))
+    assert sim.steps_per_frame == 2
+    for frame in (1, 2, 3):
+        sim.step(sim.steps_per_frame)
+        assert sim.frame == frame
+        shape = sim.density.shape
+        written = dense(vdb_grid(out / f"plume_{frame:04d}.vdb", "density"), shape + (1,))[..., 0]
+        ours = sim.density.astype(np.float32)
+        # Voxels below the activity threshold (1e-4) are left out of the file.
+        ours[np.abs(ours) < 1e-4] = 0.0
+        assert np.count_nonzero(written) > 10
+        np.testing.assert_array_equal(ours, written)
+
+
+@pytest.mark.parametrize("device", ["cpu", "vulkan"])
+def test_fields_equal_the_vdb_written_at_the_same_step(cache_dir, tmp_path, device):
+    sim = modeflow.Simulation(modeflow.Scene.from_toml(SCENE_TOML), device=device,
+                              cache_dir=str(cache_dir))
+    sim.step(5)
+    sim.write_vdb(tmp_path / "now.vdb")
+    density = sim.density
+    assert density.shape == (16, 16) and density.max() > 0.1
+    written = dense(vdb_grid(tmp_path / "now.vdb", "density"), (16, 16, 1))[..., 0]
+    ours = density.astype(np.float32)
+    ours[np.abs(ours) < 1e-4] = 0.0
+    np.testing.assert_array_equal(ours, written)
+    # The smoke rises from the box at the bottom: indexed [i, j], x first.
+    assert density[8, 3] > density[3, 3] and density[8, 3] > density[8, 12]
+    velocity = sim.velocity
+    assert velocity.shape == (16, 16, 2)
+    vel = dense(vdb_grid(tmp_path / "now.vdb", "vel"), (16, 16, 1), 3)[:, :, 0, :]
+    ours = velocity.astype(np.float32)
+    active = np.linalg.norm(ours, axis=-1) >= 1e-4
+    np.testing.assert_array_equal(ours[active], vel[active][:, :2])
+    assert sim.temperature.shape == (16, 16)
+    assert sim.modal_velocity.shape == (12,)
+    assert sim.energy == pytest.approx(0.5 * float(np.dot(sim.modal_velocity, sim.modal_velocity)))
+    assert sim.time == pytest.approx(5 * 0.05)
+
+
+def test_errors_carry_the_cli_message(modeflow_bin, tmp_path):
+    bad = tmp_path / "bad.toml"
+    bad.write_text(SCENE_TOML.replace("velocity_modes = 12", "velocity_mode = 12"))
+    cli = run_cli(modeflow_bin, "run", bad, "--device", "cpu", "--out", tmp_path / "out", check=False)
+    assert cli.returncode == 1
+    message = cli.stderr.strip().splitlines()[-1]
+    assert message.startswith("modeflow: error: ")
+    with pytest.raises(modeflow.Error) as error:
+        modeflow.Scene.load(bad)
+    assert str(error.value) == message[len("modeflow: error: "):]
+    assert "velocity_mode" in str(error.value)
+    # The same check from a dict, naming the scene as given.
+    schema = json.loads(json.dumps(SCENE_DICT))
+    schema["basis"]["velocity_mode"] = schema["basis"].pop("velocity_modes")
+    with pytest.raises(modeflow.Error, match="bad.toml: .*velocity_mode"):
+        modeflow.Scene.from_dict(schema, name="bad")
+    with pytest.raises(modeflow.Error, match=r"from_dict: smoke.buoyancy: TOML holds no NoneType"):
+        modeflow.Scene.from_dict({**SCENE_DICT, "smoke": {"buoyancy": None}})
+    with pytest.raises(modeflow.Error, match="--device|device"):
+        modeflow.Simulation(modeflow.Scene.from_dict(SCENE_DICT), device="gpu7")
+
+
+def test_splats_act_for_one_call_and_obstacles_follow_poses(cache_dir):
+    still = {key: value for key, value in SCENE_DICT.items() if key not in ("source", "obstacle")}
+    sim = modeflow.Simulation(modeflow.Scene.from_dict(still), device="cpu", cache_dir=str(cache_dir))
+    sim.step(1)
+    assert sim.energy == 0.0
+    sim.add_splat(center=[0.5, 0.3], radius=0.15, force=[20.0, 0.0])
+    sim.step(1)
+    pushed = sim.energy
+    assert pushed > 1e-4
+    assert sim.velocity[8, 5, 0] > 0.0
+    # No force acts any more: the midpoint rule keeps the energy (no viscosity).
+    sim.step(3)
+    assert sim.energy == pytest.approx(pushed, rel=1e-9)
+    # The ball moves 0.05 along +x in one step: the air in it is pushed along.
+    scene = dict(still, obstacle=SCENE_DICT["obstacle"])
+    sim = modeflow.Simulation(modeflow.Scene.from_dict(scene), device="cpu", cache_dir=str(cache_dir))
+    sim.set_obstacle_pose(0, [0.55, 0.6])
+    sim.step(1)
+    assert sim.energy > 1e-4
+    assert sim.velocity[8, 9, 0] > 0.0
+    with pytest.raises(modeflow.Error, match="no obstacle 1 .the scene has 1"):
+        sim.set_obstacle_pose(1, [0.5, 0.5])
+    with pytest.raises(modeflow.Error, match="not finite"):
+        sim.set_obstacle_pose(0, [float("nan"), 0.5])
+
+
+def test_inspect_is_the_cli_json(modeflow_bin, cache_dir, scene_file):
+    ours = modeflow.inspect(modeflow.Scene.load(scene_file), cache_dir=str(cache_dir))
+    cli = json.loads(run_cli(modeflow_bin, "inspect", scene_file, "--json", "--cache-dir", cache_dir).stdout)
+    assert ours == cli
+    assert ours["velocity"]["count"] == 12
+    assert modeflow.inspect(str(scene_file), cache_dir=str(cache_dir)) == cli
+    assert modeflow.inspect(ours["cache"]["path"]) == cli
+
+
+def test_ctrl_c_stops_a_long_step(cache_dir):
+    script = f"""
+import modeflow, sys
+sys.path.insert(0, {os.path.dirname(__file__)!r})
+from conftest import SCENE_DICT
+sim = modeflow.Simulation(modeflow.Scene.from_dict(SCENE_DICT), device="cpu", cache_dir={str(cache_dir)!r})
+print("stepping", flush=True)
+sim.step(10**9)
+"""
+    process = subprocess.Popen([sys.executable, "-c", script], stdout=subprocess.PIPE,
+                               stderr=subprocess.PIPE, text=True)
+    assert process.stdout.readline().strip() == "stepping"
+    time.sleep(1.0)
+    process.send_signal(signal.SIGINT)
+    _, stderr = process.communicate(timeout=60)
+    assert process.returncode != 0
+    assert "KeyboardInterrupt" in stderr
+
+
+def test_progress_reports_the_precompute_stages(tmp_path):
+    lines = []
+    modeflow.Simulation(modeflow.Scene.from_toml(SCENE_TOML), device="cpu",
+                        cache_dir=str(tmp_path / "fresh"), progress=lines.append)
+    assert any("velocity" in line for line in lines), lines
+    assert all("\033" not in line and "\r" not in line for line in lines)
+
+
+def test_the_wedge_writes_a_folder_per_value(source_dir, cache_dir, tmp_path):
+    scene = tmp_path / "plume.toml"
+    scene.write_text(SCENE_TOML)
+    env = dict(os.environ)
+    result = subprocess.run([sys.executable, str(source_dir / "tools/python/examples/wedge.py"),
+                             str(scene), "--buoyancy", "0.5", "2", "--frames", "2", "--device", "cpu",
+                             "--out", str(tmp_path / "wedge"), "--cache-dir", str(cache_dir)],
+                            capture_output=True, text=True, env=env, timeout=600)
+    assert result.returncode == 0, result.stderr
+    velocities = []
+    for value in ("0.5", "2"):
+        folder = tmp_path / "wedge" / f"buoyancy_{value}"
+        assert sorted(p.name for p in folder.iterdir()) == ["plume_0001.vdb", "plume_0002.vdb"]
+        velocities.append(dense(vdb_grid(folder / "plume_0002.vdb", "vel"), (16, 16, 1), 3))
+    # Warm air rises faster with more buoyancy.
+    assert 0.0 < velocities[0][..., 1].max() < velocities[1][..., 1].max()
+
+
+def test_sources_follow_poses(cache_dir):
+    still = {key: value for key, value in SCENE_DICT.items() if key != "obstacle"}
+    still["smoke"] = {"buoyancy": 0.0}
+    sim = modeflow.Simulation(modeflow.Scene.from_dict(still), device="cpu", cache_dir=str(cache_dir))
+    sim.step(2)
+    assert sim.density[8, 2] > 0.0 and sim.density[2, 2] == 0.0
+    # From the box's middle (0.5, 0.175) to the left: smoke appears there from the next step.
+    sim.set_source_pose(0, [0.15, 0.175])
+    sim.step(3)
+    assert sim.density[2, 2] > 0.0
+    assert sim.velocity.max() == 0.0  # a source without a velocity moves no air
+    with pytest.raises(modeflow.Error, match="set_source_pose: no source 2 .the scene has 1"):
+        sim.set_source_pose(2, [0.5, 0.5])
+    with pytest.raises(modeflow.Error, match="rotation: expected .x, y, z, degrees., got 3"):
+        sim.set_source_pose(0, [0.5, 0.5], rotation=[0.0, 0.0, 1.0])
