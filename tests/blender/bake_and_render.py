@@ -1,0 +1,104 @@
+"""Run inside Blender (tests/CMakeLists.txt, CTest `BlenderAddon`):
+
+    blender -b --factory-startup --python bake_and_render.py -- ADDON_FOLDER OUT_FOLDER DEVICE
+
+The factory cube becomes the domain, an icosphere the emitter and an animated cube the obstacle;
+the add-on bakes 10 frames, which must come back as a 10-frame Volume sequence holding `density`,
+and a Cycles render of the last frame must show the smoke against the empty background."""
+
+import os
+import shutil
+import sys
+
+import bpy
+
+addon_folder, out, device = sys.argv[sys.argv.index("--") + 1:]
+sys.path.insert(0, addon_folder)
+sys.path.insert(0, os.path.join(addon_folder, "pictures"))
+import modeflow_blender  # noqa: E402
+from plume_shot import plume_shot  # noqa: E402
+
+modeflow_blender.register()
+# A cache of this run's own: the first bake precomputes, the re-bake must not.
+os.environ["MODEFLOW_CACHE_DIR"] = os.path.join(out, "cache")
+shutil.rmtree(os.environ["MODEFLOW_CACHE_DIR"], ignore_errors=True)
+
+
+def fail(message):
+    print(f"FAILED: {message}", flush=True)
+    sys.exit(1)
+
+
+scene = bpy.context.scene
+scene.render.fps = 8  # 10 frames: 1.25 s of rising smoke
+domain, emitter, obstacle = plume_shot(resolution=16, modes=32, frames=10, buoyancy=4.0,
+                                      emitter_radius=0.35, obstacle_size=0.4, obstacle_turn=1.2)
+domain.modeflow.device = device
+emitter.modeflow.density = emitter.modeflow.temperature = 10.0
+if bpy.ops.modeflow.bake() != {'FINISHED'}:
+    fail("the bake did not finish")
+
+smoke = bpy.data.objects.get("Cube_smoke")
+if smoke is None or smoke.type != 'VOLUME':
+    fail("no Volume object Cube_smoke")
+volume = smoke.data
+if not volume.is_sequence or volume.frame_duration != 10 or volume.frame_start != 1:
+    fail(f"sequence {volume.is_sequence}, {volume.frame_duration} frames from {volume.frame_start}")
+frames = sorted(f for f in os.listdir(os.path.dirname(bpy.path.abspath(volume.filepath))) if f.endswith(".vdb"))
+if len(frames) != 10:
+    fail(f"{len(frames)} frame files: {frames}")
+scene.frame_set(10)
+volume.grids.load()
+if "density" not in [grid.name for grid in volume.grids]:
+    fail(f"grids {[grid.name for grid in volume.grids]}")
+
+def bake_log():
+    with open(os.path.join(os.path.dirname(os.path.dirname(bpy.path.abspath(volume.filepath))), "bake.log")) as log:
+        return log.read()
+
+
+if "write cache" not in bake_log():
+    fail("the first bake did not precompute its basis")
+emitter.location.x += 0.2
+if bpy.ops.modeflow.bake() != {'FINISHED'}:
+    fail("the re-bake did not finish")
+if "write cache" in bake_log():
+    fail("the re-bake after moving the emitter precomputed the basis again")
+
+# Cycles, white background: the smoke darkens what it covers.
+scene.render.engine = 'CYCLES'
+scene.cycles.device = 'CPU'
+scene.cycles.samples = 16
+scene.cycles.use_denoising = False  # Debian's Blender has no OpenImageDenoise
+scene.render.resolution_x = scene.render.resolution_y = 96
+scene.render.resolution_percentage = 100
+scene.render.image_settings.file_format = 'PNG'
+world = scene.world
+world.use_nodes = True
+world.node_tree.nodes["Background"].inputs["Color"].default_value = (1.0, 1.0, 1.0, 1.0)
+camera = scene.camera
+camera.location = (3.0, -3.0, 1.5)
+camera.rotation_euler = (1.35, 0.0, 0.785)
+for obj in scene.objects:
+    if obj.type == 'MESH':
+        obj.hide_render = True  # the emitter and obstacle would be seen too
+
+
+def render(path):
+    scene.render.filepath = path
+    bpy.ops.render.render(write_still=True)
+    image = bpy.data.images.load(path)
+    pixels = list(image.pixels)
+    return [sum(pixels[i:i + 3]) / 3.0 for i in range(0, len(pixels), 4)]
+
+
+with_smoke = render(os.path.join(out, "with_smoke.png"))
+smoke.hide_render = True
+without = render(os.path.join(out, "empty.png"))
+background = sum(without) / len(without)
+changed = sum(1 for a, b in zip(with_smoke, without) if abs(a - b) > 0.1)
+darkest = min(with_smoke)
+print(f"background {background:.3f}, darkest smoke pixel {darkest:.3f}, {changed} of {len(without)} pixels changed")
+if changed < 0.01 * len(without) or background - darkest < 0.3:
+    fail("the render shows no smoke")
+print("PASSED", flush=True)

@@ -1,0 +1,57 @@
+"""obj.modeflow: an object's part in the simulation and, by part, its settings."""
+
+import bpy
+from bpy.props import EnumProperty, FloatProperty, IntProperty
+
+
+class ModeflowObjectSettings(bpy.types.PropertyGroup):
+    role: EnumProperty(
+        name="Role",
+        items=[
+            ('NONE', "None", "Not part of the simulation"),
+            ('DOMAIN', "Domain", "The box (its bounds) or the mesh the fluid fills"),
+            ('OBSTACLE', "Obstacle", "A solid the air flows around; moves and turns with its animation"),
+            ('EMITTER', "Emitter", "Emits smoke and heat from its volume; moves with its animation"),
+        ],
+        default='NONE',
+    )
+    # Domain
+    domain_shape: EnumProperty(
+        name="Shape",
+        items=[('BOX', "Bounds", "The object's bounding box"),
+               ('MESH', "Mesh", "The object's closed mesh (cut cells)")],
+        default='BOX',
+    )
+    modes: IntProperty(name="Modes", description="Velocity modes of the basis", default=64, min=4, max=20000)
+    resolution: IntProperty(name="Resolution", description="Cells on the longest axis", default=32, min=4, max=512)
+    frame_start: IntProperty(name="Start", default=1)
+    frame_end: IntProperty(name="End", default=50)
+    buoyancy: FloatProperty(name="Buoyancy", description="Lift per unit of temperature", default=1.0)
+    integrator: EnumProperty(
+        name="Integrator",
+        items=[('MIDPOINT', "Midpoint", "Energy-preserving (the default)"),
+               ('TRAPEZOIDAL', "Trapezoidal", ""),
+               ('LINEARIZED', "Linearized", "Fastest energy-preserving step"),
+               ('RK4', "RK4", ""),
+               ('EXPLICIT', "Explicit", "")],
+        default='MIDPOINT',
+    )
+    device: EnumProperty(
+        name="Device",
+        items=[('vulkan', "Vulkan", "The first suitable Vulkan device (a GPU, else lavapipe)"),
+               ('cpu', "CPU", "The double-precision reference")],
+        default='vulkan',
+    )
+    # Emitter
+    density: FloatProperty(name="Density", description="Smoke emitted per unit of time", default=4.0, min=0.0)
+    temperature: FloatProperty(name="Temperature", description="Heat emitted per unit of time", default=4.0)
+
+
+def register():
+    bpy.utils.register_class(ModeflowObjectSettings)
+    bpy.types.Object.modeflow = bpy.props.PointerProperty(type=ModeflowObjectSettings)
+
+
+def unregister():
+    del bpy.types.Object.modeflow
+    bpy.utils.unregister_class(ModeflowObjectSettings)
