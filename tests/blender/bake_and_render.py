@@ -34,6 +34,8 @@ scene.render.fps = 8  # 10 frames: 1.25 s of rising smoke
 domain, emitter, obstacle = plume_shot(resolution=16, modes=32, frames=10, buoyancy=4.0,
                                       emitter_radius=0.35, obstacle_size=0.4, obstacle_turn=1.2)
 domain.modeflow.device = device
+# Saved into this run's folder: the bake goes beside the .blend file (//modeflow_Cube).
+bpy.ops.wm.save_as_mainfile(filepath=os.path.join(out, "shot.blend"))
 emitter.modeflow.density = emitter.modeflow.temperature = 10.0
 if bpy.ops.modeflow.bake() != {'FINISHED'}:
     fail("the bake did not finish")
