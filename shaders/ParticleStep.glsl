@@ -63,17 +63,16 @@ void main() {
     const vec3 v0 = velocities[i].xyz;
     const ParticleSetRecord r = sets[floatBitsToUint(stored.w)];
     const float dt = params.dt;
-    vec3 x1, v1;
-    if (r.inertial == 0u) {
-        v1 = velocityAt(x0 + 0.5 * dt * velocityAt(x0));
-        x1 = x0 + dt * v1;
-    } else {
-        vec3 terminal = velocityAt(x0 + 0.5 * dt * v0);
-        terminal[params.up] -= r.fall;
-        const vec3 lag = v0 - terminal;
-        x1 = x0 + dt * terminal + lag * r.reach;
-        v1 = terminal + lag * r.decay;
-    }
+    // A tracer steps as an inertial particle that takes the air's velocity at once (decay = reach
+    // = fall = 0) whose predictor is the air's velocity rather than its own: the two kinds share
+    // their samples, since lavapipe runs both sides of a branch (two samples, not three).
+    const bool tracer = r.inertial == 0u;
+    const vec3 ahead = tracer ? velocityAt(x0) : v0;
+    vec3 terminal = velocityAt(x0 + 0.5 * dt * ahead);
+    terminal[params.up] -= tracer ? 0.0 : r.fall;
+    const vec3 lag = v0 - terminal;
+    vec3 x1 = x0 + dt * terminal + lag * (tracer ? 0.0 : r.reach);
+    vec3 v1 = terminal + lag * (tracer ? 0.0 : r.decay);
     const uint dim = uint(MAC_DIM);
     for (uint o = 0u; o < params.obstacleCount; ++o) {
         vec3 r0;
