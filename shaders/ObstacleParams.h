@@ -15,6 +15,12 @@ using uint = std::uint32_t;
 #define OBSTACLE_CAPSULE 2u
 #define OBSTACLE_MESH 3u
 #define OBSTACLE_RIGID 0xffffffffu
+/* obstacle_mismatch.comp's DOF of a face that is none. */
+#define OBSTACLE_NO_DOF 0xffffffffu
+/* The solid kinds a kernel is compiled for (engine/device/SolidKernels.h): bit 1 << shape for
+   each shape, and this bit for deforming meshes. */
+#define SOLID_KIND_DEFORMING 16u
+#define SOLID_KINDS_ALL 31u
 
 /* One obstacle at the step's time (std430: ten vec4s). */
 struct ObstacleRecord {

@@ -1,12 +1,52 @@
 /* ObstacleShape.glsl: what an obstacle record covers (CPU reference MovingObstacle::covers in
    engine/simulation/MovingObstacle.cpp), for obstacle_mismatch.comp, smoke_displace.comp and
-   ParticleStep.glsl. The includer declares the records as `ObstacleRecord obstacles[]` and the
-   mesh lattices' samples as `float depth[]` (storage buffers) before including it, and includes
-   ObstacleParams.h and FaceLocation.glsl. */
+   ParticleStep.glsl. The includer binds the records as `usamplerBuffer obstacleTexels` (RGBA32UI
+   texels, ten a record) and the mesh lattices' samples as `usamplerBuffer latticeValues` (R32UI,
+   one a texel) and declares `solidKinds`, its last specialization constant (the kinds of solid
+   its run holds, engine/device/SolidKernels.h: absent kinds' code folds away), before including
+   it, and includes ObstacleParams.h and FaceLocation.glsl.
+
+   Texels, not storage buffers: on lavapipe a storage-buffer read is a scalar load per lane and
+   component, a texel fetch one vector gather (shaders/TexelAccess.glsl), and every lane reads a
+   whole record and eight lattice samples per test whichever shape and branch it takes. */
 #ifndef MODEFLOW_SHADERS_OBSTACLE_SHAPE_GLSL
 #define MODEFLOW_SHADERS_OBSTACLE_SHAPE_GLSL
 
 vec3 v3(float a[3]) { return vec3(a[0], a[1], a[2]); }
+
+bool mayHold(uint kinds) { return (solidKinds & kinds) != 0u; }
+bool mayHoldShape(uint shape) { return mayHold(1u << shape); }
+
+vec4 obstacleTexel(uint index, int texel) {
+    return uintBitsToFloat(texelFetch(obstacleTexels, 10 * int(index) + texel));
+}
+
+// The includer's record `index` (ObstacleRecord's std430 layout, ten vec4s).
+ObstacleRecord obstacleAt(uint index) {
+    vec4 t[10];
+    for (int k = 0; k < 10; ++k) t[k] = obstacleTexel(index, k);
+    ObstacleRecord o;
+    o.centre = float[3](t[0].x, t[0].y, t[0].z);
+    o.radius = t[0].w;
+    o.halfSize = float[3](t[1].x, t[1].y, t[1].z);
+    o.shape = floatBitsToUint(t[1].w);
+    o.axis = float[3](t[2].x, t[2].y, t[2].z);
+    o.scale = t[2].w;
+    o.velocity = float[3](t[3].x, t[3].y, t[3].z);
+    o.reach = t[3].w;
+    o.spin = float[3](t[4].x, t[4].y, t[4].z);
+    o.velocityStart = floatBitsToUint(t[4].w);
+    for (int k = 0; k < 12; ++k) o.orientation[k] = t[5 + k / 4][k % 4];
+    o.latticeOrigin = float[3](t[8].x, t[8].y, t[8].z);
+    o.latticeSpacing = t[8].w;
+    const uvec4 samples = floatBitsToUint(t[9]);
+    o.latticeSamples = uint[3](samples.x, samples.y, samples.z);
+    o.latticeStart = samples.w;
+    return o;
+}
+
+// Value `index` of the lattices (SolidLevelSet's depth and velocity samples).
+float latticeValue(uint index) { return uintBitsToFloat(texelFetch(latticeValues, int(index)).x); }
 
 // From `centre` to `point`, at the minimum-image offset along periodic axes of a grid `box` long
 // (z dropped in 2D).
@@ -21,14 +61,12 @@ vec3 obstacleOffset(ObstacleRecord o, vec3 point, uint dim, vec3 box, uint perio
     return offsetFrom(v3(o.centre), point, dim, box, periodic);
 }
 
-// Whether `point` lies within reach of the includer's `obstacles[index]`, with the offset from
-// its centre: two fields read, where copying the record costs a load per field and lane on
-// lavapipe and most points are beyond every obstacle's reach (copy it after this says yes).
+// Whether `point` lies within reach of the includer's record `index`, with the offset from its
+// centre: two texels read, where most points are beyond every obstacle's reach (read the whole
+// record after this says yes).
 bool withinReachOf(uint index, vec3 point, uint dim, vec3 box, uint periodic, out vec3 offset) {
-    offset = offsetFrom(vec3(obstacles[index].centre[0], obstacles[index].centre[1],
-                             obstacles[index].centre[2]),
-                        point, dim, box, periodic);
-    const float reach = obstacles[index].reach;
+    offset = offsetFrom(obstacleTexel(index, 0).xyz, point, dim, box, periodic);
+    const float reach = obstacleTexel(index, 3).w;
     return dot(offset, offset) <= reach * reach;
 }
 
@@ -74,7 +112,7 @@ float meshDepth(ObstacleRecord o, vec3 p) {
     for (uint corner = 0u; corner < 8u; ++corner) {
         uvec3 d;
         const vec3 w = cornerWeights(f, corner, d);
-        sum += w.x * w.y * w.z * depth[o.latticeStart + latticeSample(o, i + d)];
+        sum += w.x * w.y * w.z * latticeValue(o.latticeStart + latticeSample(o, i + d));
     }
     return sum;
 }
@@ -90,7 +128,7 @@ vec3 meshVelocity(ObstacleRecord o, vec3 p) {
         uvec3 d;
         const vec3 w = cornerWeights(f, corner, d);
         const uint s = o.velocityStart + 3u * latticeSample(o, i + d);
-        sum += w.x * w.y * w.z * vec3(depth[s], depth[s + 1u], depth[s + 2u]);
+        sum += w.x * w.y * w.z * vec3(latticeValue(s), latticeValue(s + 1u), latticeValue(s + 2u));
     }
     return sum;
 }
@@ -99,7 +137,7 @@ vec3 meshVelocity(ObstacleRecord o, vec3 p) {
 // v + w x r, plus a deforming mesh's own, turned and scaled into the world.
 vec3 materialVelocity(ObstacleRecord o, vec3 r) {
     vec3 v = v3(o.velocity) + cross(v3(o.spin), r);
-    if (o.velocityStart != OBSTACLE_RIGID)
+    if (mayHold(SOLID_KIND_DEFORMING) && o.velocityStart != OBSTACLE_RIGID)
         v += orientationOf(o) * (o.scale * meshVelocity(o, intoShapeFrame(o, r) / o.scale));
     return v;
 }
@@ -107,9 +145,10 @@ vec3 materialVelocity(ObstacleRecord o, vec3 r) {
 // Whether the obstacle covers the point `r` from its centre (obstacleOffset).
 bool covers(ObstacleRecord o, vec3 r) {
     vec3 d = intoShapeFrame(o, r);
-    if (o.shape == OBSTACLE_MESH) return meshDepth(o, d / o.scale) >= 0.0;
-    if (o.shape == OBSTACLE_BOX) return all(lessThanEqual(abs(d), v3(o.halfSize)));
-    if (o.shape == OBSTACLE_CAPSULE) {
+    if (mayHoldShape(OBSTACLE_MESH) && o.shape == OBSTACLE_MESH) return meshDepth(o, d / o.scale) >= 0.0;
+    if (mayHoldShape(OBSTACLE_BOX) && o.shape == OBSTACLE_BOX) return all(lessThanEqual(abs(d), v3(o.halfSize)));
+    if (!mayHoldShape(OBSTACLE_BALL) && !mayHoldShape(OBSTACLE_CAPSULE)) return false;
+    if (mayHoldShape(OBSTACLE_CAPSULE) && o.shape == OBSTACLE_CAPSULE) {
         const vec3 axis = v3(o.axis);
         const float length2 = dot(axis, axis);
         d -= (length2 > 0.0 ? clamp(dot(d, axis) / length2, -1.0, 1.0) : 0.0) * axis;
@@ -122,9 +161,9 @@ bool covers(ObstacleRecord o, vec3 r) {
 // surface point of a ball, box or capsule; Newton steps down a mesh's depth gradient.
 vec3 solidExit(ObstacleRecord o, vec3 r, uint dim, float margin, out vec3 normal) {
     vec3 d = intoShapeFrame(o, r);
-    vec3 place;
-    vec3 n;
-    if (o.shape == OBSTACLE_MESH) {
+    vec3 place = d;
+    vec3 n = vec3(0.0, 0.0, 1.0);
+    if (mayHoldShape(OBSTACLE_MESH) && o.shape == OBSTACLE_MESH) {
         vec3 p = d / o.scale;
         const float m = margin / o.scale;
         n = vec3(0.0, 0.0, 1.0);
@@ -142,7 +181,7 @@ vec3 solidExit(ObstacleRecord o, vec3 r, uint dim, float margin, out vec3 normal
             p += n * (depthHere + m);
         }
         place = p * o.scale;
-    } else if (o.shape == OBSTACLE_BOX) {
+    } else if (mayHoldShape(OBSTACLE_BOX) && o.shape == OBSTACLE_BOX) {
         const vec3 extent = v3(o.halfSize);
         int nearest = 0;
         for (int a = 1; a < int(dim); ++a)
@@ -152,18 +191,18 @@ vec3 solidExit(ObstacleRecord o, vec3 r, uint dim, float margin, out vec3 normal
         place[nearest] = side * (extent[nearest] + margin);
         n = vec3(0.0);
         n[nearest] = side;
-    } else {
+    } else if (mayHoldShape(OBSTACLE_BALL) || mayHoldShape(OBSTACLE_CAPSULE)) {
         vec3 base = vec3(0.0);
         const vec3 axis = v3(o.axis);
         const float length2 = dot(axis, axis);
-        if (o.shape == OBSTACLE_CAPSULE && length2 > 0.0)
+        if (mayHoldShape(OBSTACLE_CAPSULE) && o.shape == OBSTACLE_CAPSULE && length2 > 0.0)
             base = clamp(dot(d, axis) / length2, -1.0, 1.0) * axis;
         const vec3 q = d - base;
         const float len = length(q);
         n = vec3(1.0, 0.0, 0.0);
         if (len > 0.0) {
             n = q / len;
-        } else if (o.shape == OBSTACLE_CAPSULE && length2 > 0.0) {
+        } else if (mayHoldShape(OBSTACLE_CAPSULE) && o.shape == OBSTACLE_CAPSULE && length2 > 0.0) {
             if (dim == 2u) {
                 n = normalize(vec3(-axis.y, axis.x, 0.0));
             } else {

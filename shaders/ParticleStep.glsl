@@ -8,17 +8,18 @@
 #include "ParticleStepParams.h"
 
 layout(local_size_x = 64, local_size_x_id = 0) in;
+layout(constant_id = 1) const uint solidKinds = SOLID_KINDS_ALL;  // ObstacleShape.glsl
 
-layout(std430, set = 0, binding = 0) readonly buffer Obstacles { ObstacleRecord obstacles[]; };
-layout(std430, set = 0, binding = 1) readonly buffer Lattices { float depth[]; };
-layout(std430, set = 0, binding = 2) readonly buffer Mask { uint mask[]; };  // 4 cells a word
-layout(std430, set = 0, binding = 3) readonly buffer Pairs { vec2 pairs[]; };
+layout(set = 0, binding = 0) uniform usamplerBuffer obstacleTexels;  // ten texels a record
+layout(set = 0, binding = 1) uniform usamplerBuffer latticeValues;   // one value a texel
+layout(set = 0, binding = 2) uniform usamplerBuffer maskWords;  // 4 cells a (R32UI) texel
+layout(set = 0, binding = 3) uniform usamplerBuffer facePairs;  // one pair a word texel
 layout(std430, set = 0, binding = 4) buffer Positions { vec4 positions[]; };  // xyz, w: set
 layout(std430, set = 0, binding = 5) buffer Velocities { vec4 velocities[]; };
 layout(std430, set = 0, binding = 6) readonly buffer Sets { ParticleSetRecord sets[]; };
 layout(push_constant) uniform Push { ParticleStepParams params; };
 
-vec2 macFacePair(uint face) { return pairs[face]; }
+vec2 macFacePair(uint face) { return uintBitsToFloat(texelFetch(facePairs, int(face)).xy); }
 #include "MacSampling.glsl"
 #include "ObstacleShape.glsl"
 
@@ -44,7 +45,7 @@ bool inFluid(vec3 p) {
         c[a] = min(int(cell), int(params.smokeCells[a]) - 1);
     }
     const uint index = (uint(c.z) * params.smokeCells[1] + uint(c.y)) * params.smokeCells[0] + uint(c.x);
-    return ((mask[index >> 2u] >> ((index & 3u) * 8u)) & 0xffu) != 0u;
+    return ((texelFetch(maskWords, int(index >> 2u)).x >> ((index & 3u) * 8u)) & 0xffu) != 0u;
 }
 
 vec3 intoBox(vec3 p) {
@@ -77,7 +78,7 @@ void main() {
     for (uint o = 0u; o < params.obstacleCount; ++o) {
         vec3 r0;
         if (!withinReachOf(o, x1, dim, boxLength(), params.periodic, r0)) continue;
-        const ObstacleRecord solid = obstacles[o];
+        const ObstacleRecord solid = obstacleAt(o);
         if (!covers(solid, r0)) continue;
         vec3 normal;
         x1 += solidExit(solid, r0, dim, params.margin, normal);

@@ -3,9 +3,10 @@
 // every velocity DOF face whose centre an obstacle covers (in its turned frame), the fluid's face
 // velocity minus the velocity of the obstacle's material there (v + w x r, and a deforming mesh's
 // own) along the face normal,
-// written into a face field of the whole grid (filled with 0 before). project_force.comp then
-// projects it on the basis (face-field weights: the exact inverse of the reconstruction; it reads
-// the DOF faces alone) and modal_correct.comp subtracts the result from v. One invocation per face
+// written at the face's DOF (DOF order, filled with 0 before; faces that are not DOFs are
+// skipped). The projection (project_force.comp or the separable passes, face-field weights: the
+// exact inverse of the reconstruction) reads it as it is, with no gather over the whole grid,
+// and modal_correct.comp subtracts the result from v. One invocation per face
 // of the box of cells around the regions (the host's ObstacleCorrection: no face beyond it is in
 // any region's reach), wall faces left at 0; the first covering obstacle decides. Along periodic
 // axes an obstacle covers at the minimum-image offset (it reaches over the seam), and the box
@@ -15,11 +16,14 @@
 #include "ObstacleParams.h"
 
 layout(local_size_x = 64, local_size_x_id = 0) in;
+layout(constant_id = 1) const uint solidKinds = SOLID_KINDS_ALL;  // ObstacleShape.glsl
 
-layout(std430, set = 0, binding = 0) readonly buffer Velocity { float velocity[]; };
-layout(std430, set = 0, binding = 1) readonly buffer Obstacles { ObstacleRecord obstacles[]; };
-layout(std430, set = 0, binding = 2) writeonly buffer Mismatch { float mismatch[]; };
-layout(std430, set = 0, binding = 3) readonly buffer Lattices { float depth[]; };
+// Read-only inputs as texels (ObstacleShape.glsl says why).
+layout(set = 0, binding = 0) uniform usamplerBuffer velocity;        // the face field, R32UI
+layout(set = 0, binding = 1) uniform usamplerBuffer obstacleTexels;  // ten texels a record
+layout(std430, set = 0, binding = 2) writeonly buffer Mismatch { float mismatch[]; };  // DOF order
+layout(set = 0, binding = 3) uniform usamplerBuffer latticeValues;   // one value a texel
+layout(set = 0, binding = 4) uniform usamplerBuffer dofOfFace;       // OBSTACLE_NO_DOF: none
 layout(push_constant) uniform Push { ObstacleMismatchParams params; };
 #include "ObstacleShape.glsl"
 
@@ -43,6 +47,8 @@ void main() {
     if (!periodicAxis) extent[axis] += 1u;
     const uint start = axis == 0u ? 0u : (axis == 1u ? params.faceStart1 : params.faceStart2);
     const uint face = start + (uint(p.z) * extent.y + uint(p.y)) * extent.x + uint(p.x);
+    const uint dof = texelFetch(dofOfFace, int(face)).x;
+    if (dof == OBSTACLE_NO_DOF) return;
     vec3 centre = v3(params.origin) + (vec3(p) + vec3(0.5)) * v3(params.spacing);
     centre[axis] -= 0.5 * params.spacing[axis];
     if (params.dim == 2u) centre.z = 0.0;
@@ -51,12 +57,12 @@ void main() {
     for (uint o = 0; o < params.obstacleCount; ++o) {
         vec3 r;
         if (!withinReachOf(o, centre, params.dim, box, params.periodic, r)) continue;
-        const ObstacleRecord record = obstacles[o];
+        const ObstacleRecord record = obstacleAt(o);
         if (covers(record, r)) {
             const vec3 solid = materialVelocity(record, r);
-            value = velocity[face] - solid[axis];
+            value = uintBitsToFloat(texelFetch(velocity, int(face)).x) - solid[axis];
             break;
         }
     }
-    mismatch[face] = value;
+    mismatch[dof] = value;
 }

@@ -21,10 +21,11 @@
 
 layout(local_size_x = 64, local_size_x_id = 0) in;
 layout(constant_id = 1) const uint stage = SMOKE_DISPLACE_COVER;
+layout(constant_id = 2) const uint solidKinds = SOLID_KINDS_ALL;  // ObstacleShape.glsl
 
-layout(std430, set = 0, binding = 0) readonly buffer Obstacles { ObstacleRecord obstacles[]; };
-layout(std430, set = 0, binding = 1) readonly buffer Lattices { float depth[]; };
-layout(std430, set = 0, binding = 2) readonly buffer Mask { uint mask[]; };  // 4 cells a word
+layout(set = 0, binding = 0) uniform usamplerBuffer obstacleTexels;  // ten texels a record
+layout(set = 0, binding = 1) uniform usamplerBuffer latticeValues;   // one value a texel
+layout(set = 0, binding = 2) uniform usamplerBuffer maskWords;  // 4 cells a (R32UI) texel
 layout(std430, set = 0, binding = 3) buffer Cover { uint cover[]; };
 layout(std430, set = 0, binding = 4) buffer Target { uint target[]; };
 layout(std430, set = 0, binding = 5) buffer Fields { vec2 fields[]; };  // (density, temperature)
@@ -42,7 +43,9 @@ layout(std430, set = 0, binding = 10) buffer Receivers { uint receivers[]; };
 layout(push_constant) uniform Push { SmokeDisplaceParams params; };
 #include "ObstacleShape.glsl"
 
-bool isFluid(uint cell) { return ((mask[cell >> 2u] >> ((cell & 3u) * 8u)) & 0xffu) != 0u; }
+bool isFluid(uint cell) {
+    return ((texelFetch(maskWords, int(cell >> 2u)).x >> ((cell & 3u) * 8u)) & 0xffu) != 0u;
+}
 bool isCovered(uint cell) { return (cover[cell] >> 8u) == params.stamp; }
 
 ivec3 gridCells() { return ivec3(params.cells[0], params.cells[1], params.cells[2]); }
@@ -87,7 +90,7 @@ void coverStage(uint cell, ivec3 p) {
         vec3 r;
         if (!withinReachOf(params.firstRecord + o, centre, params.dim, gridBox(), params.periodic, r))
             continue;
-        const ObstacleRecord solid = obstacles[params.firstRecord + o];
+        const ObstacleRecord solid = obstacleAt(params.firstRecord + o);
         if (covers(solid, r)) {
             // Boxes may overlap: a cell a box before covered already is listed once.
             const uint word = (params.stamp << 8u) | o;
@@ -99,7 +102,7 @@ void coverStage(uint cell, ivec3 p) {
 
 void pushStage(uint cell, ivec3 p) {
     if (!isCovered(cell)) return;
-    const ObstacleRecord solid = obstacles[params.firstRecord + (cover[cell] & 0xffu)];
+    const ObstacleRecord solid = obstacleAt(params.firstRecord + (cover[cell] & 0xffu));
     const vec3 r = obstacleOffset(solid, centreOf(p), params.dim, gridBox(), params.periodic);
     // The solid's material velocity there in cells, else outward.
     vec3 d = materialVelocity(solid, r) / spacing();

@@ -90,7 +90,7 @@ vulkan::DeviceBuffer weightBuffer(const vulkan::VulkanContext& context, const Ba
 ForceProjectionKernel::ForceProjectionKernel(const vulkan::VulkanContext& context,
                                              const BasisCache& cache, FaceQuantity quantity,
                                              const ForceProjectionOptions& options)
-    : mQuantity(quantity),
+    : mGather(quantity == FaceQuantity::FaceField && !options.dofOrder),
       mDofCount(std::uint32_t(cache.faces.size())),
       mModeCount(std::uint32_t(cache.velocity.eigenvalues.size())),
       mFaceTotal(std::uint64_t(MacGrid::fromSpec(cache.grid).faceTotal())),
@@ -131,7 +131,7 @@ void ForceProjectionKernel::record(vulkan::CommandSequence& sequence, const Mode
         throw Error("project_force: the modes are " + std::to_string(modes.modeCount()) + " on " +
                     std::to_string(modes.dofCount()) + " DOFs, the kernel's basis " +
                     std::to_string(mModeCount) + " on " + std::to_string(mDofCount));
-    requireWords("project_force", q, mQuantity == FaceQuantity::FaceField ? mFaceTotal : mDofCount);
+    requireWords("project_force", q, mGather ? mFaceTotal : mDofCount);
     requireWords("project_force", f, mModeCount);
 
     shaders::ProjectForceParams params{};
@@ -159,9 +159,8 @@ void ForceProjectionKernel::record(vulkan::CommandSequence& sequence, const Mode
 
 const vulkan::ComputeKernel& ForceProjectionKernel::partialKernel(ModePrecision precision,
                                                                   std::uint32_t slots) const {
-    const std::uint32_t gather = mQuantity == FaceQuantity::FaceField;
     return mPartialKernels.with(
-        {std::uint32_t(precision == ModePrecision::Float16), gather, slots});
+        {std::uint32_t(precision == ModePrecision::Float16), mGather ? 1u : 0u, slots});
 }
 
 }  // namespace modeflow::device

@@ -37,6 +37,9 @@ struct ForceProjectionOptions {
     /// count would pass the device limit); 0: 2048 on a GPU, on a CPU device 4096 to 32768 for
     /// about 16 workgroups (ForceProjection.cpp).
     std::uint32_t dofsPerGroup = 0;
+    /// FaceQuantity::FaceField given as the face field's values at the DOFs (DOF order), not as
+    /// a whole-grid face field: no gather (a moving obstacle's mismatch is written so).
+    bool dofOrder = false;
 };
 
 class ForceProjectionKernel {
@@ -44,7 +47,8 @@ public:
     /// For the DOFs, grid and mode count of `cache`. `quantity` says what the input is:
     /// Density: one force density per DOF (ForceFieldKernel's output), weights h_axis;
     /// FaceField: a whole-grid face field (ReconstructionKernel's layout) read at the DOF faces,
-    /// weights area × ⋆ (the exact inverse of the reconstruction).
+    /// or its values at the DOFs with options.dofOrder, weights area × ⋆ (the exact inverse of
+    /// the reconstruction).
     /// @throw modeflow::Error if there are more modes than the
     /// device's group count limit, the workgroup needs more shared memory than the device has
     /// (64 floats per invocation), or a creation call fails.
@@ -68,7 +72,7 @@ private:
     /// constants), built on first use: a basis's chunks need one or two.
     const vulkan::ComputeKernel& partialKernel(ModePrecision precision, std::uint32_t slots) const;
 
-    FaceQuantity mQuantity;
+    bool mGather = false;  ///< q is a whole-grid face field read at the DOF faces
     std::uint32_t mDofCount = 0;
     std::uint32_t mModeCount = 0;
     std::uint64_t mFaceTotal = 0;

@@ -28,6 +28,20 @@ vulkan::DeviceBuffer zeros(const vulkan::VulkanContext& context, std::size_t cou
     return vulkan::DeviceBuffer::fromValues<float>(context, std::vector<float>(count, 0.0f), name);
 }
 
+/// Per face of `grid` the DOF of `cache` on it, OBSTACLE_NO_DOF where there is none.
+vulkan::DeviceBuffer dofOfFace(const vulkan::VulkanContext& context, const BasisCache& cache,
+                               const MacGrid& grid) {
+    std::vector<std::uint32_t> dofs(std::size_t(grid.faceTotal()), OBSTACLE_NO_DOF);
+    for (std::size_t d = 0; d < cache.faces.size(); ++d) {
+        if (cache.faces[d] < 0 || cache.faces[d] >= grid.faceTotal())
+            throw Error("obstacle correction: DOF " + std::to_string(d) + " names face " +
+                        std::to_string(cache.faces[d]) + ", outside the grid's " +
+                        std::to_string(grid.faceTotal()) + " faces");
+        dofs[std::size_t(cache.faces[d])] = std::uint32_t(d);
+    }
+    return vulkan::DeviceBuffer::fromValues<std::uint32_t>(context, dofs, "DOF of each face");
+}
+
 /// Cells [lo, hi] along `axis` of `grid`: clamped to it along a walled axis, the whole axis along
 /// a periodic one when they reach round it (else they may wrap: lo < 0 or hi ≥ n).
 std::pair<int, int> onAxis(const MacGrid& grid, int axis, double lo, double hi) {
@@ -49,12 +63,23 @@ ObstacleCorrection::ObstacleCorrection(const vulkan::VulkanContext& context,
       mGrid(MacGrid::fromSpec(cache.grid)),
       mModeCount(std::uint32_t(cache.velocity.eigenvalues.size())),
       mObstacles(context, maxVelocityRegions * sizeof(shaders::ObstacleRecord), "obstacles"),
-      mMismatch(zeros(context, std::size_t(mGrid.faceTotal()), "obstacle mismatch")),
+      mDofOfFace(dofOfFace(context, cache, mGrid)),
+      mMismatch(zeros(context, cache.faces.size(), "obstacle mismatch")),
       mCorrection(zeros(context, paddedSize(int(mModeCount)), "obstacle correction")),
       mLattices(context),
-      mProjection(context, cache, FaceQuantity::FaceField),
-      mMismatchKernel(context, {"obstacle_mismatch", obstacle_mismatch_spv, 4,
-                                sizeof(shaders::ObstacleMismatchParams), 64}),
+      mProjection(context, cache, FaceQuantity::FaceField,
+                  ForceProjectionOptions{.dofOrder = true}),
+      // Records as texels (binding 1); the velocity, lattices and DOFs as values (0, 3, 4):
+      // shaders/ObstacleShape.glsl.
+      mMismatchKernels(context, {"obstacle_mismatch",
+                                 obstacle_mismatch_spv,
+                                 5,
+                                 sizeof(shaders::ObstacleMismatchParams),
+                                 64,
+                                 {},
+                                 {1},
+                                 {},
+                                 {0, 3, 4}}),
       mCorrectKernel(context, {"modal_correct", modal_correct_spv, 2,
                                sizeof(shaders::ModalCorrectParams), 64}) {}
 
@@ -70,6 +95,7 @@ void ObstacleCorrection::setObstacles(std::span<const MovingObstacle> obstacles,
         records.push_back(obstacleRecord(obstacle, obstacle.poseAt(t), mLattices));
     if (!records.empty()) mObstacles.upload<shaders::ObstacleRecord>(records);
     mObstacleCount = std::uint32_t(records.size());
+    mKinds = solidKinds(obstacles);
     // The union of the regions' reach spheres, centres brought into the box along periodic axes.
     for (int a = 0; a < 3; ++a) {
         mBoxFirst[a] = 0;
@@ -124,15 +150,15 @@ void ObstacleCorrection::recordWith(vulkan::CommandSequence& sequence,
         params.boxFirst[axis] = mBoxFirst[axis];
         total += faces;
     }
-    // The faces the box leaves out, and walls, hold 0.
+    // The DOFs the box leaves out hold 0.
     sequence.fill(mMismatch, mMismatch.bytes(), 0u);
-    const std::array<const vulkan::DeviceBuffer*, 4> mismatchBuffers{
-        &faceField, &mObstacles, &mMismatch, &mLattices.buffer()};
+    const std::array<const vulkan::DeviceBuffer*, 5> mismatchBuffers{
+        &faceField, &mObstacles, &mMismatch, &mLattices.buffer(), &mDofOfFace};
     const std::uint64_t perDispatch =
         std::uint64_t(mContext.properties().limits.maxComputeWorkGroupCount[0]) * 64;
     for (std::uint64_t first = 0; first < total; first += perDispatch) {
         params.first = std::uint32_t(first);
-        sequence.dispatch(mMismatchKernel, mismatchBuffers, params,
+        sequence.dispatch(mMismatchKernels.with({mKinds}), mismatchBuffers, params,
                           std::uint32_t((std::min(perDispatch, total - first) + 63) / 64));
     }
     project();

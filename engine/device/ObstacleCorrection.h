@@ -17,6 +17,7 @@
 #include "engine/simulation/MovingObstacle.h"
 #include "engine/vulkan/ComputeKernel.h"
 #include "engine/vulkan/DeviceBuffer.h"
+#include "engine/vulkan/KernelVariants.h"
 
 namespace modeflow::vulkan {
 class CommandSequence;
@@ -58,12 +59,17 @@ private:
     MacGrid mGrid;
     std::uint32_t mModeCount = 0;
     std::uint32_t mObstacleCount = 0;
+    std::uint32_t mKinds = 0;  ///< solidKinds of the obstacles now
     /// The cells within reach of a region now: first cell and count per axis (setObstacles).
     std::array<int, 3> mBoxFirst{0, 0, 0}, mBoxCount{1, 1, 1};
-    vulkan::DeviceBuffer mObstacles, mMismatch, mCorrection;
+    vulkan::DeviceBuffer mObstacles;
+    vulkan::DeviceBuffer mDofOfFace;  ///< per grid face its DOF, OBSTACLE_NO_DOF for none
+    vulkan::DeviceBuffer mMismatch;   ///< per DOF (DOF order)
+    vulkan::DeviceBuffer mCorrection;
     ObstacleLattices mLattices;
     ForceProjectionKernel mProjection;
-    vulkan::ComputeKernel mMismatchKernel, mCorrectKernel;
+    vulkan::KernelVariants mMismatchKernels;  ///< by solid kinds
+    vulkan::ComputeKernel mCorrectKernel;
 };
 
 }  // namespace modeflow::device

@@ -5,13 +5,24 @@
 #include <string>
 
 #include "engine/core/Error.h"
+#include "engine/vulkan/VulkanContext.h"
 
 namespace modeflow::device {
+namespace {
+
+/// `values` padded with zeros to whole texels (at least one: the kernels bind the texel view).
+vulkan::DeviceBuffer latticeBuffer(const vulkan::VulkanContext& context,
+                                   std::vector<float> values) {
+    constexpr std::size_t perTexel = vulkan::DeviceBuffer::kTexelBytes / sizeof(float);
+    values.resize(std::max<std::size_t>((values.size() + perTexel - 1) / perTexel, 1) * perTexel,
+                  0.0f);
+    return vulkan::DeviceBuffer::fromValues<float>(context, values, "obstacle lattices");
+}
+
+}  // namespace
 
 ObstacleLattices::ObstacleLattices(const vulkan::VulkanContext& context)
-    : mContext(context),
-      mBuffer(vulkan::DeviceBuffer::fromValues<float>(context, std::vector<float>{0.0f},
-                                                      "obstacle lattices")) {}
+    : mContext(context), mBuffer(latticeBuffer(context, {})) {}
 
 void ObstacleLattices::update(std::span<const MovingObstacle> obstacles) {
     std::vector<const SolidLevelSet*> sets;
@@ -23,10 +34,16 @@ void ObstacleLattices::update(std::span<const MovingObstacle> obstacles) {
     if (sets == mUploaded) return;
     std::size_t total = 0;
     for (const SolidLevelSet* set : sets) total += set->depth.size() + set->velocity.size();
-    if (total > std::size_t(std::numeric_limits<std::uint32_t>::max()))
-        throw Error("the mesh obstacles' level sets hold " + std::to_string(total) +
-                    " samples; the device takes at most " +
-                    std::to_string(std::numeric_limits<std::uint32_t>::max()));
+    // One value a texel of the R32UI view, within a storage buffer, less the padding.
+    const std::size_t limit =
+        std::min<std::size_t>({std::numeric_limits<std::uint32_t>::max(),
+                               mContext.properties().limits.maxTexelBufferElements,
+                               std::size_t(mContext.storageBufferLimit() / sizeof(float))}) -
+        4;
+    if (total > limit)
+        throw Error("the mesh obstacles' level sets hold " + std::to_string(total) + " samples; " +
+                    mContext.deviceName() + " takes at most " + std::to_string(limit) +
+                    " (coarser lattices: fewer or smaller meshes)");
     std::vector<float> values;
     values.reserve(std::max<std::size_t>(total, 1));
     mPlaces.clear();
@@ -40,8 +57,7 @@ void ObstacleLattices::update(std::span<const MovingObstacle> obstacles) {
         }
         mPlaces.emplace(set, place);
     }
-    if (values.empty()) values.push_back(0.0f);
-    mBuffer = vulkan::DeviceBuffer::fromValues<float>(mContext, values, "obstacle lattices");
+    mBuffer = latticeBuffer(mContext, std::move(values));
     mUploaded = std::move(sets);
 }
 

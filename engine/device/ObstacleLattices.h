@@ -2,7 +2,8 @@
 /// @file ObstacleLattices.h
 /// The mesh obstacles' level sets on the device, one after the other in one buffer
 /// (SolidLevelSet::depth, then a deforming file's velocity, as float32; read through
-/// shaders/ObstacleShape.glsl), uploaded when the set of level sets changes. ObstacleCorrection and
+/// shaders/ObstacleShape.glsl through the buffer's R32UI texel view, so padded to whole 16-byte
+/// texels), uploaded when the set of level sets changes. ObstacleCorrection and
 /// SmokeDisplacement each keep one.
 
 #include <cstdint>
@@ -33,7 +34,7 @@ public:
 
     /// Uploads every level set of the obstacles (a deforming one's every file) unless they are
     /// those already there.
-    /// @throw modeflow::Error when they hold 2^32 floats or more.
+    /// @throw modeflow::Error when they hold more values than the device's texel buffers take.
     void update(std::span<const MovingObstacle> obstacles);
     /// Where `set` lies (one of the last update's; null: {0, kNoVelocity}).
     LatticePlace placeOf(const SolidLevelSet* set) const;

@@ -7,7 +7,24 @@ void copy3(float to[3], const Vec3& from) {
     for (int a = 0; a < 3; ++a) to[a] = float(from[a]);
 }
 
+/// The shape's OBSTACLE_* code.
+std::uint32_t shapeCode(ObstacleShape shape) {
+    return shape == ObstacleShape::Box       ? OBSTACLE_BOX
+           : shape == ObstacleShape::Capsule ? OBSTACLE_CAPSULE
+           : shape == ObstacleShape::Mesh    ? OBSTACLE_MESH
+                                             : OBSTACLE_BALL;
+}
+
 }  // namespace
+
+std::uint32_t solidKinds(std::span<const MovingObstacle> solids) {
+    std::uint32_t kinds = 0;
+    for (const MovingObstacle& solid : solids) {
+        kinds |= 1u << shapeCode(solid.spec.shape);
+        if (!solid.sequence.empty()) kinds |= SOLID_KIND_DEFORMING;
+    }
+    return kinds;
+}
 
 shaders::ObstacleRecord obstacleRecord(const MovingObstacle& obstacle, const ObstaclePose& pose,
                                        const ObstacleLattices& lattices) {
@@ -25,10 +42,7 @@ shaders::ObstacleRecord obstacleRecord(const MovingObstacle& obstacle, const Obs
     r.scale = float(spec.scale);
     // Rounded up a little: float's rounding must not cut off a covered point.
     r.reach = float(1.0001 * obstacle.reach() + 1e-6);
-    r.shape = spec.shape == ObstacleShape::Box       ? OBSTACLE_BOX
-              : spec.shape == ObstacleShape::Capsule ? OBSTACLE_CAPSULE
-              : spec.shape == ObstacleShape::Mesh    ? OBSTACLE_MESH
-                                                     : OBSTACLE_BALL;
+    r.shape = shapeCode(spec.shape);
     r.velocityStart = LatticePlace::kNoVelocity;
     if (const SolidLevelSet* lattice = pose.shape ? pose.shape : obstacle.levelSet.get()) {
         copy3(r.latticeOrigin, lattice->origin);

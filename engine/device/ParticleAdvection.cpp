@@ -62,7 +62,15 @@ ParticleAdvection::ParticleAdvection(const vulkan::VulkanContext& context, const
                                  flat ? "particle_step_2d" : "particle_step_3d",
                                  flat ? std::span<const std::uint32_t>(particle_step_2d_spv)
                                       : std::span<const std::uint32_t>(particle_step_3d_spv),
-                                 7, sizeof(shaders::ParticleStepParams), kWorkgroupSize});
+                                 7,
+                                 sizeof(shaders::ParticleStepParams),
+                                 kWorkgroupSize,
+                                 // Records as texels, lattices and mask as values, the
+                                 // velocity's pairs as words: shaders/ObstacleShape.glsl.
+                                 {},
+                                 {0},
+                                 {3},
+                                 {1, 2}});
 }
 
 void ParticleAdvection::record(vulkan::CommandSequence& sequence, const SmokeState& state,
@@ -118,10 +126,11 @@ void ParticleAdvection::record(vulkan::CommandSequence& sequence, const SmokeSta
         &mPositions, &mVelocities,        &mSets};
     const std::uint32_t maxGroups = mContext.properties().limits.maxComputeWorkGroupCount[0];
     const std::uint32_t perDispatch = maxGroups * kWorkgroupSize;
+    const vulkan::ComputeKernel& kernel = mKernel->with({solidKinds(solids)});
     for (std::uint32_t first = 0; first < mCount; first += perDispatch) {
         params.first = first;
         const std::uint32_t chunk = std::min(perDispatch, mCount - first);
-        sequence.dispatch(*mKernel, buffers, params, (chunk + kWorkgroupSize - 1) / kWorkgroupSize);
+        sequence.dispatch(kernel, buffers, params, (chunk + kWorkgroupSize - 1) / kWorkgroupSize);
     }
 }
 

@@ -15,8 +15,8 @@
 #include "engine/simulation/MovingObstacle.h"
 #include "engine/simulation/ParticleEmission.h"
 #include "engine/simulation/Particles.h"
-#include "engine/vulkan/ComputeKernel.h"
 #include "engine/vulkan/DeviceBuffer.h"
+#include "engine/vulkan/KernelVariants.h"
 
 namespace modeflow::vulkan {
 class CommandSequence;
@@ -57,8 +57,9 @@ private:
     vulkan::DeviceBuffer mPositions, mVelocities;  ///< vec4 each: xyz, a position's w its set
     vulkan::DeviceBuffer mSets, mPoses;
     ObstacleLattices mLattices;
-    std::optional<vulkan::ComputeKernel> mKernel;  ///< of the grid's dimension; none without sets
-    double mSetsDt = 0.0;                          ///< the step the set records are for
+    /// Of the grid's dimension, by solid kinds; none without sets.
+    std::optional<vulkan::KernelVariants> mKernel;
+    double mSetsDt = 0.0;  ///< the step the set records are for
 };
 
 }  // namespace modeflow::device

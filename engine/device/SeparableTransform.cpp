@@ -52,12 +52,9 @@ SeparableTransformKernels::SeparableTransformKernels(const vulkan::VulkanContext
       mScatterWeight(context, 4),
       mGatherIndex(context, 4),
       mGatherWeights{vulkan::DeviceBuffer(context, 4), vulkan::DeviceBuffer(context, 4)},
-      mFaces(context, 4),
-      mOnes(context, 4),
       mSlots(context, 4),
       mScratchA(context, 4),
       mScratchB(context, 4),
-      mDofInput(context, 4),
       mPassKernel(context, {"separable_pass",
                             separable_pass_spv,
                             3,
@@ -127,8 +124,6 @@ SeparableTransformKernels::SeparableTransformKernels(const vulkan::VulkanContext
     mScratchB = vulkan::DeviceBuffer(context, scratch * sizeof(float), "separable scratch B");
     mSlots = vulkan::DeviceBuffer(context, std::uint64_t(mDim) * mSlotCount * sizeof(float),
                                   "separable slots");
-    mDofInput = vulkan::DeviceBuffer(context, std::uint64_t(mDofCount) * sizeof(float),
-                                     "separable DOF input");
 
     // Modes ↔ slots: a slot holds at most two modes of one component (the two polarizations of
     // a 3D wave vector; on periodic axes the phases are slots of their own).
@@ -197,8 +192,6 @@ SeparableTransformKernels::SeparableTransformKernels(const vulkan::VulkanContext
     for (int q = 0; q < 2; ++q)
         mGatherWeights[std::size_t(q)] =
             upload(context, weightsByMode[std::size_t(q)], "separable gather weight");
-    mFaces = uploadDofFaces(context, cache);
-    mOnes = upload(context, std::vector<float>(mDofCount, 1.0f), "ones");
 }
 
 void SeparableTransformKernels::recordPasses(vulkan::CommandSequence& sequence, int normal,
@@ -282,13 +275,9 @@ void SeparableTransformKernels::recordComponentProjection(vulkan::CommandSequenc
 }
 
 void SeparableTransformKernels::recordFaceFieldProjection(vulkan::CommandSequence& sequence,
-                                                          const vulkan::DeviceBuffer& faceField,
+                                                          const vulkan::DeviceBuffer& q,
                                                           const vulkan::DeviceBuffer& f) const {
-    requireWords("separable_gather", faceField, mFaceTotal);
-    const std::array<const vulkan::DeviceBuffer*, 4> read{&mFaces, &mOnes, &faceField, &mDofInput};
-    sequence.dispatch(mGatherKernel, read, shaders::SeparableGatherParams{mDofCount, 1, 0, 0},
-                      groupsFor(mContext, mDofCount, kWorkgroup));
-    recordAnalysis(sequence, mDofInput, FaceQuantity::FaceField, f);
+    recordAnalysis(sequence, q, FaceQuantity::FaceField, f);
 }
 
 }  // namespace modeflow::device

@@ -49,9 +49,9 @@ public:
     /// @throw modeflow::Error for a component outside the grid's dimensions.
     void recordComponentProjection(vulkan::CommandSequence& sequence, const vulkan::DeviceBuffer& q,
                                    int component, const vulkan::DeviceBuffer& f) const;
-    /// The same for a whole-grid face field read at the DOF faces, w for FaceQuantity::FaceField.
-    void recordFaceFieldProjection(vulkan::CommandSequence& sequence,
-                                   const vulkan::DeviceBuffer& faceField,
+    /// The same for q a face field's values at the DOFs (DOF order), w for
+    /// FaceQuantity::FaceField: the exact inverse of the reconstruction.
+    void recordFaceFieldProjection(vulkan::CommandSequence& sequence, const vulkan::DeviceBuffer& q,
                                    const vulkan::DeviceBuffer& f) const;
 
     std::uint32_t modeCount() const { return mModeCount; }
@@ -86,10 +86,8 @@ private:
     vulkan::DeviceBuffer mScatterIndex, mScatterWeight;  ///< modes → slots: 2 terms a slot
     vulkan::DeviceBuffer mGatherIndex;                   ///< slots → modes: a term per component
     std::array<vulkan::DeviceBuffer, 2> mGatherWeights;  ///< by FaceQuantity
-    vulkan::DeviceBuffer mFaces, mOnes;                  ///< DOF faces; weight 1 a DOF
     vulkan::DeviceBuffer mSlots;                         ///< the components' tensors of slots
     vulkan::DeviceBuffer mScratchA, mScratchB;           ///< between passes
-    vulkan::DeviceBuffer mDofInput;                      ///< a face field read at the DOF faces
     vulkan::ComputeKernel mPassKernel, mGatherKernel;
 };
 

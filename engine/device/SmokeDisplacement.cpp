@@ -21,16 +21,6 @@ constexpr std::uint32_t kWorkgroupSize = 64;
 /// Stamps live in the top 24 bits of the cover and target words.
 constexpr std::uint32_t kStampLimit = 1u << 24;
 
-vulkan::ComputeKernel stageKernel(const vulkan::VulkanContext& context, std::uint32_t stage) {
-    return vulkan::ComputeKernel(context,
-                                 vulkan::ComputeKernelSpec{"smoke_displace",
-                                                           smoke_displace_spv,
-                                                           11,
-                                                           sizeof(shaders::SmokeDisplaceParams),
-                                                           kWorkgroupSize,
-                                                           {stage}});
-}
-
 vulkan::DeviceBuffer zeroWords(const vulkan::VulkanContext& context, std::int64_t count,
                                const char* name) {
     return vulkan::DeviceBuffer::fromValues<std::uint32_t>(
@@ -51,9 +41,17 @@ SmokeDisplacement::SmokeDisplacement(const vulkan::VulkanContext& context, const
       mCovered(zeroWords(context, state.cellCount(), "covered smoke cells")),
       mReceivers(zeroWords(context, state.cellCount(), "smoke cells receiving")),
       mLattices(context),
-      mStages{stageKernel(context, SMOKE_DISPLACE_COVER), stageKernel(context, SMOKE_DISPLACE_PUSH),
-              stageKernel(context, SMOKE_DISPLACE_GATHER),
-              stageKernel(context, SMOKE_DISPLACE_ARGS)} {}
+      // Constants: the stage, the solid kinds. Records as texels (binding 0), lattices and mask
+      // as values (1, 2): shaders/ObstacleShape.glsl.
+      mStages(context, {"smoke_displace",
+                        smoke_displace_spv,
+                        11,
+                        sizeof(shaders::SmokeDisplaceParams),
+                        kWorkgroupSize,
+                        {},
+                        {0},
+                        {},
+                        {1, 2}}) {}
 
 void SmokeDisplacement::record(vulkan::CommandSequence& sequence, SmokeState& state,
                                std::span<const MovingObstacle> solids, double t, double dt) {
@@ -64,6 +62,7 @@ void SmokeDisplacement::record(vulkan::CommandSequence& sequence, SmokeState& st
     requireLevelSets(solids);
     const MacGrid& grid = state.smokeGrid();
     const int substeps = displacementSubsteps(solids, t, dt, grid);
+    const std::uint32_t kinds = solidKinds(solids);
     mLattices.update(solids);
 
     std::vector<ObstaclePose> poses(solids.size());
@@ -116,15 +115,17 @@ void SmokeDisplacement::record(vulkan::CommandSequence& sequence, SmokeState& st
             for (std::int64_t first = 0; first < box.cellCount(); first += perDispatch) {
                 params.firstInvocation = std::uint32_t(first);
                 const std::int64_t chunk = std::min(perDispatch, box.cellCount() - first);
-                sequence.dispatch(mStages[0], buffers, params,
+                sequence.dispatch(mStages.with({SMOKE_DISPLACE_COVER, kinds}), buffers, params,
                                   std::uint32_t((chunk + kWorkgroupSize - 1) / kWorkgroupSize));
             }
         }
         // Bytes 0 and 16 of mWork: the push's and the gather's group counts.
-        sequence.dispatch(mStages[3], buffers, params, 1);
-        sequence.dispatchIndirect(mStages[1], buffers, params, mWork, 0);
-        sequence.dispatch(mStages[3], buffers, params, 1);
-        sequence.dispatchIndirect(mStages[2], buffers, params, mWork, 16);
+        sequence.dispatch(mStages.with({SMOKE_DISPLACE_ARGS, kinds}), buffers, params, 1);
+        sequence.dispatchIndirect(mStages.with({SMOKE_DISPLACE_PUSH, kinds}), buffers, params,
+                                  mWork, 0);
+        sequence.dispatch(mStages.with({SMOKE_DISPLACE_ARGS, kinds}), buffers, params, 1);
+        sequence.dispatchIndirect(mStages.with({SMOKE_DISPLACE_GATHER, kinds}), buffers, params,
+                                  mWork, 16);
     }
 }
 

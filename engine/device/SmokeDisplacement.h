@@ -13,8 +13,8 @@
 
 #include "engine/device/ObstacleLattices.h"
 #include "engine/simulation/MovingObstacle.h"
-#include "engine/vulkan/ComputeKernel.h"
 #include "engine/vulkan/DeviceBuffer.h"
+#include "engine/vulkan/KernelVariants.h"
 
 namespace modeflow::vulkan {
 class CommandSequence;
@@ -46,8 +46,8 @@ private:
     /// The lists' dispatch arguments and lengths, the covered cells, the receiving cells.
     vulkan::DeviceBuffer mWork, mCovered, mReceivers;
     ObstacleLattices mLattices;
-    std::array<vulkan::ComputeKernel, 4> mStages;  ///< cover, push, gather, args
-    std::uint32_t mStamp = 0;                      ///< the last substep's
+    vulkan::KernelVariants mStages;  ///< by stage and solid kinds
+    std::uint32_t mStamp = 0;        ///< the last substep's
 };
 
 }  // namespace modeflow::device
