@@ -7,6 +7,7 @@
 #include "engine/core/SceneKeywords.h"
 #include "engine/dynamics/ModalDivergence.h"
 #include "engine/run/FramePreview.h"
+#include "engine/run/FrameWriter.h"
 
 namespace modeflow {
 
@@ -36,6 +37,7 @@ void runFrames(FramedRun& run, const FrameLoopOptions& o) {
     };
     const SimulationSettings& settings = run.settings();
     FrameProgress bar(first, o.frames, settings.stepsPerFrame);
+    FrameWriter writer(o.folder.checkpointPath(), bar);
     for (int frame = first + 1; frame <= o.frames; ++frame) {
         const std::string stage = "frame " + std::to_string(frame);
         FrameStats stats;
@@ -47,17 +49,18 @@ void runFrames(FramedRun& run, const FrameLoopOptions& o) {
             throw Error(divergenceAdvice(e, sceneKeyword(settings.integrator), "[simulation].dt"));
         }
         const bool picture = o.previewEvery > 0 && previewed(frame, o.frames, o.previewEvery);
-        Checkpoint checkpoint = inRunStage(stage, o.memory, [&] {
-            return run.writeFrame(frame, picture ? pictureOf(frame) : std::filesystem::path(), bar);
+        FrameOutput output = inRunStage(stage, o.memory, [&] {
+            return run.readFrame(frame, picture ? pictureOf(frame) : std::filesystem::path(), bar);
         });
-        checkpoint.runHash = o.runHash;
-        bar.timed("checkpoint", [&] { writeCheckpoint(o.folder.checkpointPath(), checkpoint); });
+        output.checkpoint.runHash = o.runHash;
+        inRunStage(stage, o.memory, [&] { writer.start(std::move(output)); });
         std::string detail;
         if (stats.unconvergedSteps)
             detail += std::to_string(stats.unconvergedSteps) + " unconverged steps ";
         if (stats.substeps > 1) detail += std::to_string(stats.substeps) + " modal substeps";
         bar.frameDone(frame, run.time(), detail);
     }
+    inRunStage("frame " + std::to_string(o.frames), o.memory, [&] { writer.finish(); });
     bar.finish();
     if (o.previewEvery > 0)
         writeContactSheet(o.folder.path() / (o.sceneName + "_contact.png"), o.frames,

@@ -44,6 +44,7 @@ void FrameProgress::frameDone(int frame, double time, const std::string& detail)
 void FrameProgress::addTime(const char* stage, std::chrono::steady_clock::time_point start) {
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const std::lock_guard lock(mStagesMutex);
     for (auto& [name, total] : mStageSeconds)
         if (name == stage) {
             total += seconds;
@@ -55,6 +56,7 @@ void FrameProgress::addTime(const char* stage, std::chrono::steady_clock::time_p
 void FrameProgress::finish() {
     if (mTerminal) std::fprintf(stderr, "\n");
     const int frames = mLast - mFirst;
+    const std::lock_guard lock(mStagesMutex);
     if (frames <= 0 || mStageSeconds.empty()) return;
     std::string line = "per frame:";
     const char* separator = "";

@@ -6,6 +6,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <mutex>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -21,6 +22,7 @@ public:
     /// Frame `frame` is written; `detail` (e.g. the device's stage times) is added to plain lines.
     void frameDone(int frame, double time, const std::string& detail = {});
     /// Runs `work` and adds its wall time to `stage`'s total (stages print in first-use order).
+    /// From any thread (FrameWriter times the files it writes beside the simulation).
     template <typename Work>
     decltype(auto) timed(const char* stage, Work&& work) {
         const auto start = std::chrono::steady_clock::now();
@@ -39,6 +41,7 @@ public:
 private:
     void addTime(const char* stage, std::chrono::steady_clock::time_point start);
 
+    std::mutex mStagesMutex;  ///< over mStageSeconds
     std::vector<std::pair<std::string, double>> mStageSeconds;
     int mFirst, mLast, mStepsPerFrame;
     bool mTerminal;

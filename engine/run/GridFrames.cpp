@@ -43,37 +43,49 @@ std::filesystem::path GridFrames::frameFile(int frame) const {
     return mFiles.folder / frameFileName(mFiles.sceneName, frame);
 }
 
-Checkpoint GridFrames::writeFrame(int frame, const std::filesystem::path& picture,
+FrameOutput GridFrames::readFrame(int frame, const std::filesystem::path& picture,
                                   FrameProgress& bar) {
     const bool temperature = settings().simulatesTemperature();
-    SmokeFields smoke = bar.timed("reading fields", [&] { return mSimulator.smoke(); });
-    const std::vector<double> faceVelocity =
+    FrameOutput out;
+    Checkpoint& state = out.checkpoint;
+    state.frame = frame;
+    state.time = mSimulator.time();
+    bar.timed("reading fields", [&] {
+        state.smoke = mSimulator.smoke();
+        state.velocity = mSimulator.velocity();
+        state.magnetic = mSimulator.magneticField();
+        state.carry = mSimulator.carry();
+        if (!settings().particles.empty()) state.particles = mSimulator.particles();
+    });
+    std::vector<double> faceVelocity =
         bar.timed("reading fields", [&] { return mSimulator.faceVelocity(); });
-    const std::vector<double> faceMagnetic =
+    std::vector<double> faceMagnetic =
         bar.timed("reading fields", [&] { return mSimulator.faceMagneticField(); });
-    const VdbFrame vdb = gridVdbFrame(mSimulator, mRun.smokeMask, mBasisGrid, smoke, faceVelocity,
-                                      faceMagnetic, frame, mFiles.sceneHash, mFiles.halfFloat);
-    bar.timed("VDB files", [&] { writeVdbFrame(frameFile(frame), vdb); });
-    Particles particles;
-    if (!settings().particles.empty()) {
-        particles = bar.timed("reading fields", [&] { return mSimulator.particles(); });
-        const ParticleFrame points{particles.position, particles.velocity, frame, mSimulator.time(),
-                                   mFiles.sceneHash};
-        bar.timed("particle files", [&] {
-            writeParticleFrame(mFiles.folder / particleFrameFileName(mFiles.sceneName, frame),
-                               points);
-        });
-    }
     if (!picture.empty() && mPreview)
-        bar.timed("previews", [&] { mPreview->write(picture, smoke, temperature, particles); });
-    return {frame,
-            mSimulator.time(),
-            0,
-            mSimulator.velocity(),
-            mSimulator.magneticField(),
-            mSimulator.carry(),
-            std::move(smoke),
-            std::move(particles)};
+        bar.timed("previews",
+                  [&] { mPreview->write(picture, state.smoke, temperature, state.particles); });
+    // The VDB frame's metadata now (the simulation steps on), its fields pointed at again where
+    // they then lie when it is written.
+    VdbFrame vdb = gridVdbFrame(mSimulator, mRun.smokeMask, mBasisGrid, state.smoke, faceVelocity,
+                                faceMagnetic, frame, mFiles.sceneHash, mFiles.halfFloat);
+    const bool particles = !settings().particles.empty();
+    out.writeFiles =
+        [vdb = std::move(vdb), faceVelocity = std::move(faceVelocity),
+         faceMagnetic = std::move(faceMagnetic), particles, temperature, file = frameFile(frame),
+         particleFile = mFiles.folder / particleFrameFileName(mFiles.sceneName, frame),
+         sceneHash = mFiles.sceneHash](const Checkpoint& state, FrameProgress& bar) mutable {
+            vdb.density = state.smoke.density;
+            if (temperature) vdb.temperature = state.smoke.temperature;
+            vdb.faceVelocity = faceVelocity;
+            vdb.faceMagnetic = faceMagnetic;
+            bar.timed("VDB files", [&] { writeVdbFrame(file, vdb); });
+            if (particles) {
+                const ParticleFrame points{state.particles.position, state.particles.velocity,
+                                           state.frame, state.time, sceneHash};
+                bar.timed("particle files", [&] { writeParticleFrame(particleFile, points); });
+            }
+        };
+    return out;
 }
 
 void GridFrames::restore(const Checkpoint& from) {

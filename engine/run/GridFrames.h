@@ -48,7 +48,7 @@ public:
     double time() const override { return mSimulator.time(); }
     FrameStats advanceFrame() override { return mSimulator.advanceFrame(); }
     std::filesystem::path frameFile(int frame) const override;
-    Checkpoint writeFrame(int frame, const std::filesystem::path& picture,
+    FrameOutput readFrame(int frame, const std::filesystem::path& picture,
                           FrameProgress& bar) override;
     void restore(const Checkpoint& from) override;
 

@@ -29,32 +29,36 @@ std::filesystem::path SurfaceFrames::frameFile(int frame) const {
     return mFolder / plyFrameFileName(mSceneName, frame);
 }
 
-Checkpoint SurfaceFrames::writeFrame(int frame, const std::filesystem::path& picture,
+FrameOutput SurfaceFrames::readFrame(int frame, const std::filesystem::path& picture,
                                      FrameProgress& bar) {
-    const std::vector<double> dye =
+    FrameOutput out;
+    std::vector<double> dye =
         bar.timed("reading fields", [&] { return mSimulation.dye().vertexValues(); });
-    const std::vector<double> velocity =
+    std::vector<double> velocity =
         bar.timed("reading fields", [&] { return mSimulation.vertexVelocity(); });
-    PlyFrame ply;
-    ply.mesh = &mRun.cache.surface.mesh;
-    ply.dye = dye;
-    ply.velocity = velocity;
-    ply.dyeScale = mDyeScale;
-    ply.frame = frame;
-    ply.time = mSimulation.time();
-    ply.sceneHash = mSceneHash;
-    bar.timed("PLY files", [&] { writePlyFrame(frameFile(frame), ply); });
-    if (!picture.empty())
-        bar.timed("previews", [&] {
-            preview::writePng(
-                picture, preview::surfaceImage(mRun.cache.surface.mesh, dye, mDyeScale, 512, 384));
-        });
-    Checkpoint checkpoint{frame, mSimulation.time(),  0,  mSimulation.velocity(),
-                          {},    mSimulation.carry(), {}, {}};
+    out.checkpoint = {frame, mSimulation.time(),  0,  mSimulation.velocity(),
+                      {},    mSimulation.carry(), {}, {}};
     const Eigen::VectorXd& state = mSimulation.dye().state();
-    checkpoint.smoke.density.assign(state.data(), state.data() + state.size());
-    checkpoint.smoke.temperature.assign(checkpoint.smoke.density.size(), 0.0);  // dye has none
-    return checkpoint;
+    out.checkpoint.smoke.density.assign(state.data(), state.data() + state.size());
+    out.checkpoint.smoke.temperature.assign(state.size(), 0.0);  // dye has none
+    out.writeFiles = [this, dye = std::move(dye), velocity = std::move(velocity), picture,
+                      file = frameFile(frame)](const Checkpoint& state, FrameProgress& bar) {
+        PlyFrame ply;
+        ply.mesh = &mRun.cache.surface.mesh;  // the run's, never changed while it runs
+        ply.dye = dye;
+        ply.velocity = velocity;
+        ply.dyeScale = mDyeScale;
+        ply.frame = state.frame;
+        ply.time = state.time;
+        ply.sceneHash = mSceneHash;
+        bar.timed("PLY files", [&] { writePlyFrame(file, ply); });
+        if (!picture.empty())
+            bar.timed("previews", [&] {
+                preview::writePng(picture, preview::surfaceImage(mRun.cache.surface.mesh, dye,
+                                                                 mDyeScale, 512, 384));
+            });
+    };
+    return out;
 }
 
 void SurfaceFrames::restore(const Checkpoint& from) {

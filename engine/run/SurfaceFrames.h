@@ -25,7 +25,7 @@ public:
     double time() const override { return mSimulation.time(); }
     FrameStats advanceFrame() override;
     std::filesystem::path frameFile(int frame) const override;
-    Checkpoint writeFrame(int frame, const std::filesystem::path& picture,
+    FrameOutput readFrame(int frame, const std::filesystem::path& picture,
                           FrameProgress& bar) override;
     void restore(const Checkpoint& from) override;
 
