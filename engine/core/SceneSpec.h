@@ -156,6 +156,7 @@ struct SourceSpec {
     ShapeSpec shape;
     double density = 1.0;      ///< injected per unit time
     double temperature = 0.0;  ///< injected per unit time
+    double fuel = 0.0;         ///< injected per unit time; burns where `[fire]` says
     double start = 0.0;        ///< emits while start ≤ t < end (simulated seconds)
     double end = std::numeric_limits<double>::infinity();
     /// The emitted air's velocity (`velocity`): while the source emits, the fluid inside it is
@@ -202,6 +203,17 @@ struct SmokeSpec {
     double buoyancy = 0.0;
     int resolutionScale = 1;
     AdvectionScheme advection = AdvectionScheme::MacCormack;
+};
+
+/// `[fire]`: fuel (a source's `fuel`) burns where the air is hotter than `ignition`, at
+/// `burnRate` of what is there per unit time (first order: dF/dt = −burnRate·F), each unit burned
+/// adding `heat` to the temperature and `smoke` to the density; the fuel burned per unit time is
+/// the `flame` field (engine/simulation/Combustion.h).
+struct FireSpec {
+    double ignition = 1.0;
+    double burnRate = 4.0;
+    double heat = 2.0;
+    double smoke = 0.5;
 };
 
 /// `[forcing]`: velocity modes held at their initial amplitudes for the whole run. Held low modes
@@ -259,6 +271,7 @@ struct SceneSpec {
     std::vector<ObstacleSpec> obstacles;
     std::vector<ParticleSetSpec> particles;
     SmokeSpec smoke;
+    std::optional<FireSpec> fire;  ///< none: no `[fire]`, no fuel
     ForcingSpec forcing;
     OutputSpec output;
 

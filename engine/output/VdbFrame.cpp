@@ -58,10 +58,14 @@ void validate(const VdbFrame& frame) {
     if (size(frame.density) != cells)
         throw Error("density has " + count(size(frame.density)) + " values for " + count(cells) +
                     " smoke cells");
-    const std::size_t temperature = size(frame.temperature);
-    if (temperature != 0 && temperature != cells)
-        throw Error("temperature has " + count(temperature) + " values for " + count(cells) +
-                    " smoke cells");
+    for (const auto& [values, name] :
+         {std::pair{&frame.temperature, "temperature"}, std::pair{&frame.fuel, "fuel"},
+          std::pair{&frame.flame, "flame"}}) {
+        const std::size_t n = size(*values);
+        if (n != 0 && n != cells)
+            throw Error(std::string(name) + " has " + count(n) + " values for " + count(cells) +
+                        " smoke cells");
+    }
     if (!frame.fluidMask.empty() && frame.fluidMask.size() != cells)
         throw Error("the fluid mask has " + count(frame.fluidMask.size()) + " entries for " +
                     count(cells) + " smoke cells");
@@ -246,8 +250,10 @@ void writeVdbFrame(const fs::path& file, const VdbFrame& frame) {
         validate(frame);
         initializeOpenVdb();
         grids.push_back(scalarGrid(frame, frame.density, "density"));
-        if (size(frame.temperature) != 0)
-            grids.push_back(scalarGrid(frame, frame.temperature, "temperature"));
+        for (const auto& [values, name] :
+             {std::pair{&frame.temperature, "temperature"}, std::pair{&frame.fuel, "fuel"},
+              std::pair{&frame.flame, "flame"}})
+            if (size(*values) != 0) grids.push_back(scalarGrid(frame, *values, name));
         grids.push_back(vectorGrid(frame, frame.faceVelocity, "vel"));
         if (!frame.faceMagnetic.empty())
             grids.push_back(vectorGrid(frame, frame.faceMagnetic, "magnetic"));

@@ -6,6 +6,8 @@
 /// One file per frame holds the grids
 /// - `density`: FloatGrid, class fog volume;
 /// - `temperature`: FloatGrid, class fog volume, only when the frame carries one;
+/// - `fuel` and `flame`: FloatGrids, class fog volume, only with fire (`[fire]`): the unburnt
+///   fuel, and the fuel burned per unit time (Blender's Principled Volume reads `flame` by name);
 /// - `vel`: Vec3SGrid, vector type "contravariant relative" (a velocity: transforms with the
 ///   map's linear part, ignores its translation), values in world units per unit time. The MAC
 ///   face field is sampled at the smoke cell centres (MacSampling.h), so all grids share one
@@ -61,6 +63,8 @@ struct VdbFrame {
     MacGrid basisGrid;                        ///< the grid of the face velocity
     CellValues density;                       ///< one per smoke cell (concentration)
     CellValues temperature;                   ///< one per smoke cell; empty: no temperature grid
+    CellValues fuel;                          ///< one per smoke cell; empty: no fuel grid
+    CellValues flame;                         ///< one per smoke cell; empty: no flame grid
     std::span<const double> faceVelocity;     ///< face field of basisGrid (MacGrid face numbering)
     std::span<const double> faceMagnetic;     ///< face field of basisGrid; empty: no magnetic grid
     std::span<const std::uint8_t> fluidMask;  ///< one per smoke cell, non-zero in Ω; empty: all

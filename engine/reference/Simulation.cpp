@@ -10,6 +10,7 @@
 #include "engine/reference/ForceProjection.h"
 #include "engine/reference/ObstacleCorrection.h"
 #include "engine/reference/VelocityReconstruction.h"
+#include "engine/simulation/Combustion.h"
 #include "engine/simulation/SmokeDisplacement.h"
 
 namespace modeflow::reference {
@@ -31,6 +32,10 @@ Simulation::Simulation(const BasisCache& cache, const StructuralCoefficients& co
     const auto cells = std::size_t(mAdvection.smokeGrid().cellCount());
     mFields.density.assign(cells, 0.0);
     mFields.temperature.assign(cells, 0.0);
+    if (mSettings.fire) {
+        mFields.fuel.assign(cells, 0.0);
+        mFields.flame.assign(cells, 0.0);
+    }
 }
 
 std::vector<double> Simulation::faceMagneticField() const {
@@ -44,6 +49,11 @@ void Simulation::restore(double time, const Eigen::VectorXd& v, const SmokeField
         smoke.temperature.size() != mFields.temperature.size())
         throw Error("simulation: saved smoke of " + std::to_string(smoke.density.size()) +
                     " cells, the smoke grid has " + std::to_string(mFields.density.size()));
+    if (smoke.fuel.size() != mFields.fuel.size() || smoke.flame.size() != mFields.flame.size())
+        throw Error(mSettings.fire ? "simulation: the saved smoke carries no fuel and flame; the "
+                                     "run burns fuel ([fire])"
+                                   : "simulation: the saved smoke carries fuel; the run has no "
+                                     "[fire]");
     mFields = smoke;
     mParticles.restore({});
     mTime = time;
@@ -100,6 +110,7 @@ FrameStats Simulation::advanceSteps(int steps) {
         mAdvection.step(std::span<const double>(mFaceVelocity), dt, mSettings.advection,
                         activeEmitters(mSettings.emitters, mTime), mFields);
         mDisplacement.step(mSettings.obstacles, mTime, dt, mFields);
+        if (mSettings.fire) burn(*mSettings.fire, mAdvection.fluidMask(), dt, mFields);
         mParticles.step(mFaceVelocity, mSettings.obstacles, mTime, dt);
         mTime += dt;
         ++stats.steps;

@@ -121,7 +121,11 @@ void SmokeAdvection::step(std::span<const double> velocity, double dt, Advection
         scheme == AdvectionScheme::MacCormack ? backtrace(velocity, -dt) : std::vector<Vec3>{};
     fields.density = advectAlong(fields.density, back, ahead, scheme);
     fields.temperature = advectAlong(fields.temperature, back, ahead, scheme);
-    applyEmitters(mSmoke, mMask, emitters, dt, fields.density, fields.temperature);
+    if (!fields.fuel.empty()) {
+        requireCellField(fields.fuel.size(), "the fuel");
+        fields.fuel = advectAlong(fields.fuel, back, ahead, scheme);
+    }
+    applyEmitters(mSmoke, mMask, emitters, dt, fields.density, fields.temperature, fields.fuel);
 }
 
 void SmokeAdvection::step(std::span<const float> velocity, double dt, AdvectionScheme scheme,

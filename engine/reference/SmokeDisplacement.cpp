@@ -55,7 +55,8 @@ std::int64_t SmokeDisplacement::neighbour(const std::array<int, 3>& at,
 void SmokeDisplacement::step(std::span<const MovingObstacle> solids, double t, double dt,
                              SmokeFields& fields) {
     if (solids.empty()) return;
-    if (fields.density.size() != mFluid.size() || fields.temperature.size() != mFluid.size())
+    if (fields.density.size() != mFluid.size() || fields.temperature.size() != mFluid.size() ||
+        (!fields.fuel.empty() && fields.fuel.size() != mFluid.size()))
         throw Error("smoke displacement: fields of " + std::to_string(fields.density.size()) +
                     " cells for a smoke grid of " + std::to_string(mFluid.size()));
     const int substeps = displacementSubsteps(solids, t, dt, mGrid);
@@ -123,12 +124,15 @@ void SmokeDisplacement::substep(std::span<const MovingObstacle> solids,
             if (from < 0 || !isCovered(from) || mTarget[std::size_t(from)] != int(i)) continue;
             fields.density[std::size_t(cell)] += fields.density[std::size_t(from)];
             fields.temperature[std::size_t(cell)] += fields.temperature[std::size_t(from)];
+            if (!fields.fuel.empty())
+                fields.fuel[std::size_t(cell)] += fields.fuel[std::size_t(from)];
         }
     });
     forEachCell(mGrid, box, [&](std::int64_t cell, const std::array<int, 3>&) {
         if (!isCovered(cell)) return;
         fields.density[std::size_t(cell)] = 0.0;
         fields.temperature[std::size_t(cell)] = 0.0;
+        if (!fields.fuel.empty()) fields.fuel[std::size_t(cell)] = 0.0;
     });
 }
 

@@ -28,6 +28,8 @@ VdbFrame gridVdbFrame(const Simulator& simulator, std::span<const std::uint8_t> 
     vdb.density = std::span<const double>(smoke.density);
     if (simulator.settings().simulatesTemperature())
         vdb.temperature = std::span<const double>(smoke.temperature);
+    vdb.fuel = std::span<const double>(smoke.fuel);  // empty without fire
+    vdb.flame = std::span<const double>(smoke.flame);
     vdb.faceVelocity = faceVelocity;
     vdb.faceMagnetic = faceMagnetic;
     vdb.fluidMask = fluidMask;

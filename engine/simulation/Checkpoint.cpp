@@ -24,8 +24,9 @@ namespace {
 constexpr char kMagic[16] = {'M', 'O', 'D', 'E', 'F', 'L', 'O', 'W',
                              '-', 'R', 'E', 'S', 'U', 'M', 'E', '\0'};
 /// 2: the magnetic field after the velocity; 3: XXH3; 4: the held rate after the field; 5: the
-/// whole step carry (warm start, substeps) in its place; 6: the particles after the smoke.
-constexpr std::uint32_t kVersion = 6;
+/// whole step carry (warm start, substeps) in its place; 6: the particles after the smoke; 7: the
+/// fuel and flame after the temperature (empty without fire).
+constexpr std::uint32_t kVersion = 7;
 /// The most warm-start vectors a stepper holds (StepCarry::warmRhs).
 constexpr std::uint64_t kMaxWarmRhs = 2;
 /// The most modal substeps a run takes per step (device::Simulation).
@@ -94,6 +95,8 @@ void writeCheckpoint(const std::filesystem::path& path, const Checkpoint& checkp
     w.pod(std::uint32_t(carry.easySteps));
     w.vector(checkpoint.smoke.density);
     w.vector(checkpoint.smoke.temperature);
+    w.vector(checkpoint.smoke.fuel);
+    w.vector(checkpoint.smoke.flame);
     w.vector(checkpoint.particles.position);
     w.vector(checkpoint.particles.velocity);
     w.vector(checkpoint.particles.set);
@@ -148,10 +151,18 @@ Checkpoint readCheckpoint(const std::filesystem::path& path) {
         if (!values->allFinite()) fail(path, "its modal " + what + " is not finite");
     checkpoint.smoke.density = reader.vector<double>();
     checkpoint.smoke.temperature = reader.vector<double>();
+    checkpoint.smoke.fuel = reader.vector<double>();
+    checkpoint.smoke.flame = reader.vector<double>();
     if (checkpoint.smoke.density.size() != checkpoint.smoke.temperature.size())
         fail(path, "density and temperature sizes differ");
-    for (const auto& [field, what] : {std::pair{&checkpoint.smoke.density, "density"},
-                                      std::pair{&checkpoint.smoke.temperature, "temperature"}})
+    if (checkpoint.smoke.fuel.size() != checkpoint.smoke.flame.size() ||
+        (!checkpoint.smoke.fuel.empty() &&
+         checkpoint.smoke.fuel.size() != checkpoint.smoke.density.size()))
+        fail(path, "its fuel and flame do not hold a value per smoke cell");
+    for (const auto& [field, what] :
+         {std::pair{&checkpoint.smoke.density, "density"},
+          std::pair{&checkpoint.smoke.temperature, "temperature"},
+          std::pair{&checkpoint.smoke.fuel, "fuel"}, std::pair{&checkpoint.smoke.flame, "flame"}})
         if (!std::all_of(field->begin(), field->end(), [](double c) { return std::isfinite(c); }))
             fail(path, std::string("its smoke ") + what + " is not finite");
     Particles& particles = checkpoint.particles;

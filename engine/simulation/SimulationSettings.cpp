@@ -25,6 +25,7 @@ SimulationSettings SimulationSettings::fromScene(const SceneSpec& scene, const B
     settings.buoyancy = scene.smoke.buoyancy;
     settings.smokeScale = scene.smoke.resolutionScale;
     settings.advection = scene.smoke.advection;
+    settings.fire = scene.fire;
     settings.basisPrecision =
         sim.halfPrecisionBasis ? ModePrecision::Float16 : ModePrecision::Float32;
     for (const SourceSpec& source : scene.sources)
@@ -101,7 +102,7 @@ std::vector<MovingObstacle> SimulationSettings::velocityRegions(double t) const 
 }
 
 bool SimulationSettings::simulatesTemperature() const {
-    if (buoyancy != 0.0) return true;
+    if (buoyancy != 0.0 || fire) return true;
     for (const SmokeEmitter& emitter : emitters)
         if (emitter.temperatureRate != 0.0) return true;
     return false;

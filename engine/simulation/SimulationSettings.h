@@ -4,6 +4,7 @@
 /// fluid's parameters, forces and smoke. Built from a scene and its basis, so the device
 /// device::Simulation and the CPU reference::Simulation of one scene run the same model.
 
+#include <optional>
 #include <vector>
 
 #include "engine/core/ModePrecision.h"
@@ -28,6 +29,7 @@ struct SimulationSettings {
     double buoyancy = 0.0;  ///< upward acceleration per unit temperature
     int smokeScale = 1;     ///< smoke cells per basis cell and axis
     AdvectionScheme advection = AdvectionScheme::MacCormack;
+    std::optional<FireSpec> fire;  ///< `[fire]`: fuel and flame are carried (Combustion.h)
     ModePrecision basisPrecision = ModePrecision::Float32;  ///< device only
     std::vector<SmokeEmitter> emitters;
     std::vector<MovingObstacle> obstacles;
@@ -42,8 +44,8 @@ struct SimulationSettings {
     /// sets its velocity, so a solid wins over a jet.
     std::vector<MovingObstacle> velocityRegions(double t) const;
 
-    /// Whether the run simulates temperature: a source heats, or buoyancy reads it. Frames then
-    /// carry a temperature grid and pictures tint hot smoke.
+    /// Whether the run simulates temperature: a source heats, buoyancy reads it, or a fire burns.
+    /// Frames then carry a temperature grid and pictures tint hot smoke.
     bool simulatesTemperature() const;
 
     /// The scene's [simulation], [smoke], [[source]] and [output] values on this basis (both

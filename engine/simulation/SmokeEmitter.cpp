@@ -94,6 +94,7 @@ SmokeEmitter emitterFromSource(const SourceSpec& source) {
     }
     emitter.densityRate = source.density;
     emitter.temperatureRate = source.temperature;
+    emitter.fuelRate = source.fuel;
     emitter.start = source.start;
     emitter.end = source.end;
     emitter.velocity = source.velocity;
@@ -111,11 +112,12 @@ std::vector<SmokeEmitter> activeEmitters(std::span<const SmokeEmitter> all, doub
 
 void applyEmitters(const MacGrid& smokeGrid, std::span<const std::uint8_t> fluidMask,
                    std::span<const SmokeEmitter> emitters, double dt, std::span<double> density,
-                   std::span<double> temperature) {
+                   std::span<double> temperature, std::span<double> fuel) {
     const std::size_t cells = std::size_t(smokeGrid.cellCount());
-    if (fluidMask.size() != cells || density.size() != cells || temperature.size() != cells)
-        throw Error("applyEmitters: mask, density and temperature need " + std::to_string(cells) +
-                    " values (one per smoke cell)");
+    if (fluidMask.size() != cells || density.size() != cells || temperature.size() != cells ||
+        (!fuel.empty() && fuel.size() != cells))
+        throw Error("applyEmitters: mask, density, temperature (and fuel) need " +
+                    std::to_string(cells) + " values (one per smoke cell)");
     for (int z = 0; z < smokeGrid.cells[2]; ++z)
         for (int y = 0; y < smokeGrid.cells[1]; ++y)
             for (int x = 0; x < smokeGrid.cells[0]; ++x) {
@@ -127,6 +129,7 @@ void applyEmitters(const MacGrid& smokeGrid, std::span<const std::uint8_t> fluid
                     if (emitter.contains(centre, smokeGrid)) {
                         density[c] += emitter.densityRate * dt;
                         temperature[c] += emitter.temperatureRate * dt;
+                        if (!fuel.empty()) fuel[c] += emitter.fuelRate * dt;
                     }
             }
 }

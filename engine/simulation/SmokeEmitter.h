@@ -31,6 +31,7 @@ struct SmokeEmitter {
     Vec3 max{0.0, 0.0, 0.0};       ///< box
     double densityRate = 0.0;      ///< concentration added per unit time
     double temperatureRate = 0.0;  ///< temperature added per unit time
+    double fuelRate = 0.0;         ///< fuel added per unit time (a fire's: SmokeFields::fuel)
     double start = 0.0;            ///< emits while start ≤ t < end (simulated time)
     double end = std::numeric_limits<double>::infinity();
     /// mesh: its level set in world coordinates (tools/compose/MeshSolids.h builds it), and
@@ -77,9 +78,10 @@ void requireEmitterCount(std::span<const SmokeEmitter> emitters);
 SmokeEmitter emitterFromSource(const SourceSpec& source);
 
 /// Adds each emitter's rates · dt to the fluid cells (fluidMask ≠ 0) of `smokeGrid` whose centre
-/// it contains; `density` and `temperature` hold one value per smoke cell.
+/// it contains; `density` and `temperature` hold one value per smoke cell, `fuel` as many or
+/// none (no fire: the fuel rates are not applied).
 void applyEmitters(const MacGrid& smokeGrid, std::span<const std::uint8_t> fluidMask,
                    std::span<const SmokeEmitter> emitters, double dt, std::span<double> density,
-                   std::span<double> temperature);
+                   std::span<double> temperature, std::span<double> fuel = {});
 
 }  // namespace modeflow

@@ -85,6 +85,19 @@ SceneSpec readScene(std::string_view text, const std::filesystem::path& origin) 
         scene.smoke = readSmoke(reader, smoke);
         checkSmokeGridSize(reader, smoke, scene.smoke, scene.grid);
     }
+    if (const toml::table* t = reader.optionalTable(root, "fire")) {
+        if (scene.isSurface())
+            reader.fail({root, "scene"}, "fire", "a surface scene carries dye, nothing burns", t);
+        scene.fire = readFire(reader, {*t, "[fire]"});
+    }
+    for (std::size_t i = 0; i < scene.sources.size() && !scene.fire; ++i)
+        if (scene.sources[i].fuel > 0.0) {
+            const toml::table& source = *root["source"].as_array()->at(i).as_table();
+            reader.fail({source, "[[source]] #" + std::to_string(i + 1)}, "fuel",
+                        "fuel burns by a [fire] table (ignition, burn_rate, heat, smoke), which "
+                        "the scene lacks",
+                        source.get("fuel"));
+        }
     if (const toml::table* t = reader.optionalTable(root, "forcing")) {
         const Section forcing{*t, "[forcing]"};
         scene.forcing = readForcing(reader, forcing);

@@ -18,8 +18,8 @@ using keywords::keywordOf;
 using namespace keywords;
 
 inline constexpr std::string_view kTopLevelTables[] = {
-    "grid",   "domain",   "surface",   "basis", "simulation", "initial",
-    "source", "obstacle", "particles", "smoke", "forcing",    "output"};
+    "grid",     "domain",    "surface", "basis", "simulation", "initial", "source",
+    "obstacle", "particles", "smoke",   "fire",  "forcing",    "output"};
 inline constexpr std::string_view kGridKeys[] = {"resolution", "bounds_min", "bounds_max",
                                                  "periodic"};
 inline constexpr std::string_view kSurfaceKeys[] = {"mesh"};
@@ -53,10 +53,11 @@ inline constexpr std::string_view kVortexKeys3d[] = {"center", "normal", "ring_r
 inline constexpr std::string_view kObstacleKeys[] = {
     "shape", "radius", "half_size", "axis", "file", "scale", "path", "sequence_rate", "rotation"};
 inline constexpr std::string_view kSmokeKeys[] = {"buoyancy", "resolution_scale", "advection"};
+inline constexpr std::string_view kFireKeys[] = {"ignition", "burn_rate", "heat", "smoke"};
 inline constexpr std::string_view kForcingKeys[] = {"hold_modes", "hold_below_kappa"};
 inline constexpr std::string_view kOutputKeys[] = {"frames", "steps_per_frame"};
 inline constexpr std::string_view kSourceExtraKeys[] = {
-    "density", "temperature", "start", "end", "velocity", "thickness", "path", "rotation"};
+    "density", "temperature", "fuel", "start", "end", "velocity", "thickness", "path", "rotation"};
 
 inline constexpr std::string_view kParticleExtraKeys[] = {"count", "rate",    "start", "end",
                                                           "drag",  "gravity", "seed"};

@@ -68,6 +68,7 @@ ParticleSetSpec readParticleSet(const TomlReader& reader, const toml::table& tab
                                 double shotEnd, std::int64_t& emitted);
 ObstacleSpec readObstacle(const TomlReader& reader, const Section& s);
 SmokeSpec readSmoke(const TomlReader& reader, const Section& s);
+FireSpec readFire(const TomlReader& reader, const Section& s);
 ForcingSpec readForcing(const TomlReader& reader, const Section& s);
 OutputSpec readOutput(const TomlReader& reader, const Section& s);
 

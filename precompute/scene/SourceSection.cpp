@@ -19,6 +19,7 @@ SourceSpec readSource(const TomlReader& reader, const toml::table& table, int in
                         ")"};
     source.density = reader.readNumber(s, "density", source.density, Sign::NonNegative);
     source.temperature = reader.readNumber(s, "temperature", source.temperature);
+    source.fuel = reader.readNumber(s, "fuel", source.fuel, Sign::NonNegative);
     source.start = reader.readNumber(s, "start", source.start, Sign::NonNegative);
     source.end = reader.readNumber(s, "end", source.end, Sign::Positive);
     source.velocity = reader.vector(s, "velocity");

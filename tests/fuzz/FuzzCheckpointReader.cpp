@@ -22,7 +22,7 @@ constexpr std::string_view kMagic("MODEFLOW-RESUME\0", 16);
 std::string checkpointAround(std::string_view body) {
     ByteWriter file;
     file.values(kMagic.data(), kMagic.size());
-    file.pod(std::uint32_t{6});  // the version (Checkpoint.cpp)
+    file.pod(std::uint32_t{7});  // the version (Checkpoint.cpp)
     file.values(body.data(), body.size());
     file.pod(checksum64(file.bytes()));
     return file.bytes();
@@ -55,6 +55,8 @@ bool checkpointReader(std::string_view bytes) {
                 again.carry.easySteps == checkpoint.carry.easySteps &&
                 sameBytes(again.smoke.density, checkpoint.smoke.density) &&
                 sameBytes(again.smoke.temperature, checkpoint.smoke.temperature) &&
+                sameBytes(again.smoke.fuel, checkpoint.smoke.fuel) &&
+                sameBytes(again.smoke.flame, checkpoint.smoke.flame) &&
                 sameBytes(again.particles.position, checkpoint.particles.position) &&
                 sameBytes(again.particles.velocity, checkpoint.particles.velocity) &&
                 again.particles.set == checkpoint.particles.set,
@@ -63,7 +65,8 @@ bool checkpointReader(std::string_view bytes) {
         require(sameBytes(again.carry.warmRhs[i], checkpoint.carry.warmRhs[i]),
                 "an accepted warm start does not survive a write and a read");
     // What a resumed run relies on: every value it continues from is a number.
-    for (const std::vector<double>* field : {&again.smoke.density, &again.smoke.temperature})
+    for (const std::vector<double>* field :
+         {&again.smoke.density, &again.smoke.temperature, &again.smoke.fuel, &again.smoke.flame})
         for (const double c : *field) require(std::isfinite(c), "an accepted smoke is not finite");
     return true;
 }

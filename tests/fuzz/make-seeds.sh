@@ -65,6 +65,15 @@ scene disk_linearized "$disk" 3 "$smoke
 integrator = \"linearized\"
 [initial]
 velocity = \"random\""
+# Fire: its checkpoints hold the fuel and the flame.
+scene disk_fire "$disk" 3 '[[source]]
+shape = "ball"
+center = [0.0, -0.5]
+radius = 0.3
+temperature = 1.0
+fuel = 4.0
+[fire]
+ignition = 0.1'
 scene box "$box" 4 ""
 scene wholebox "$wholebox" 6 ""
 # A fluid on an icosahedron's surface: a surface basis (mesh, edges, advection, vertex velocities).
@@ -92,7 +101,7 @@ done
 # The device's midpoint rule (lavapipe will do): its checkpoints hold the warm start's R and the
 # substep schedule.
 cp "$work/disk.toml" "$work/disk_device.toml"
-for name in disk disk_mhd disk_linearized disk_device; do
+for name in disk disk_mhd disk_linearized disk_device disk_fire; do
     device=cpu
     [ "$name" = disk_device ] && device=vulkan
     "$modeflow" run "$work/$name.toml" --device $device --cache-dir "$work/cache" --out "$work/$name" >/dev/null 2>&1

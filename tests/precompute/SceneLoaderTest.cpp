@@ -199,6 +199,15 @@ const std::vector<Refusal> kRefusals = {
      {"[[obstacle]] #1.radius: not used by a mesh"}},
     {"ObstacleBallWithScale", k2d, {}, kObstacleBall + "radius = 0.1\nscale = 2\npath = [[0, 0, 0]]\n",
      {"[[obstacle]] #1.scale: not used by a ball"}},
+    {"FuelWithoutFire", k2d, {},
+     "[[source]]\nshape = \"ball\"\ncenter = [0, 0]\nradius = 0.1\nfuel = 1\n",
+     {"[[source]] #1.fuel: fuel burns by a [fire] table"}},
+    {"NegativeFuel", k2d, {},
+     "[[source]]\nshape = \"ball\"\ncenter = [0, 0]\nradius = 0.1\nfuel = -1\n",
+     {"fuel", "-1"}},
+    {"FireBurnRateZero", k2d, {}, "[fire]\nburn_rate = 0\n", {"[fire].burn_rate"}},
+    {"FireHeatNaN", k2d, {}, "[fire]\nheat = nan\n", {"[fire].heat"}},
+    {"FireUnknownKey", k2d, {}, "[fire]\nignite = 1\n", {"[fire]", "ignite", "ignition"}},
     {"ObstacleBallWithSequenceRate", k2d, {},
      kObstacleBall + "radius = 0.1\nsequence_rate = 24\npath = [[0, 0, 0]]\n",
      {"[[obstacle]] #1.sequence_rate: not used by a ball"}},
@@ -622,6 +631,37 @@ TEST_F(SceneLoaderTest, FullSceneRoundTripsEveryField) {
     EXPECT_EQ(scene.smoke.advection, AdvectionScheme::SemiLagrangian);
     EXPECT_EQ(scene.output.frames, 10);
     EXPECT_EQ(scene.output.stepsPerFrame, 5);
+}
+
+TEST_F(SceneLoaderTest, AFireBurnsTheFuelOfItsSources) {
+    const std::string source = R"(
+[[source]]
+shape = "ball"
+center = [0.0, -0.5]
+radius = 0.1
+temperature = 2
+fuel = 3
+)";
+    const SceneSpec scene = parseScene(sceneFixture(k2d) + source + R"(
+[fire]
+ignition = 0.5
+burn_rate = 6
+heat = 1.5
+smoke = 0.2
+)",
+                                       "fire.toml");
+    ASSERT_EQ(scene.sources.size(), 1u);
+    EXPECT_EQ(scene.sources[0].fuel, 3.0);
+    ASSERT_TRUE(scene.fire.has_value());
+    EXPECT_EQ(scene.fire->ignition, 0.5);
+    EXPECT_EQ(scene.fire->burnRate, 6.0);
+    EXPECT_EQ(scene.fire->heat, 1.5);
+    EXPECT_EQ(scene.fire->smoke, 0.2);
+    // Every key has a default; without [fire] there is none (and no fuel may be given).
+    const SceneSpec defaults = parseScene(sceneFixture(k2d) + "[fire]\n", "fire.toml");
+    ASSERT_TRUE(defaults.fire.has_value());
+    EXPECT_EQ(defaults.fire->burnRate, FireSpec{}.burnRate);
+    EXPECT_FALSE(parseScene(sceneFixture(k2d), "plain.toml").fire.has_value());
 }
 
 TEST_F(SceneLoaderTest, ObstaclesFollowKeyFramedPaths) {

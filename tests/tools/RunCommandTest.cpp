@@ -275,6 +275,76 @@ TEST_F(RunCommand, ResumeGivesTheFramesOfAnUninterruptedRun) {
     EXPECT_NE(refused.err.find("another scene"), std::string::npos) << refused.err;
 }
 
+/// A hot torch on the small disk burning its fuel: the flame rises with the hot air.
+const std::string kTorch = std::string(testing::kSmallDisk) + R"(
+[simulation]
+dt = 0.02
+[[source]]
+shape = "ball"
+center = [0.0, -0.5]
+radius = 0.2
+density = 0.5
+temperature = 4.0
+fuel = 6.0
+[fire]
+ignition = 0.3
+burn_rate = 3.0
+heat = 1.0
+smoke = 0.5
+[smoke]
+buoyancy = 1.0
+resolution_scale = 2
+[output]
+frames = 4
+steps_per_frame = 2
+)";
+
+TEST_F(RunCommand, AFireWritesFuelAndFlameGridsAndResumes) {
+    const fs::path s = scene("torch.toml", kTorch);
+    // The device does not burn fuel yet: refused before any work, naming the backend that does.
+    const RunResult refused = simulate(s, mDir / "device");
+    EXPECT_NE(refused.status, 0);
+    EXPECT_NE(refused.err.find("[fire] (fuel and flame) runs on the CPU reference only"),
+              std::string::npos)
+        << refused.err;
+
+    const fs::path whole = mDir / "whole", parts = mDir / "parts";
+    const RunResult r = simulate(s, whole, "--device cpu");
+    ASSERT_EQ(r.status, 0) << r.err;
+    const VdbFrameInfo info = readVdbFrameInfo(whole / "torch_0004.vdb");
+    for (const char* grid : {"density", "temperature", "fuel", "flame"}) {
+        ASSERT_NE(info.grid(grid), nullptr) << grid;
+        EXPECT_EQ(info.grid(grid)->gridClass, "fog volume") << grid;
+    }
+    // Fuel burns where it is hot: a flame in the torch, and no cell holds more fuel than four
+    // frames of the source's rate with nothing burnt.
+    const std::vector<Vec3> centres = smokeCentres();
+    const auto fuel = sampleVdbGrid(whole / "torch_0004.vdb", "fuel", centres);
+    const auto flame = sampleVdbGrid(whole / "torch_0004.vdb", "flame", centres);
+    double mostFlame = 0.0, mostFuel = 0.0;
+    for (std::size_t c = 0; c < centres.size(); ++c) {
+        // A scalar grid's sample is its value in x.
+        mostFlame = std::max(mostFlame, flame[c].value[0]);
+        mostFuel = std::max(mostFuel, fuel[c].value[0]);
+        EXPECT_GE(fuel[c].value[0], 0.0) << c;
+        EXPECT_GE(flame[c].value[0], 0.0) << c;
+    }
+    EXPECT_GT(mostFlame, 0.1);
+    EXPECT_GT(mostFuel, 0.0);
+    EXPECT_LT(mostFuel, 6.0 * 8 * 0.02);
+
+    // Stopped after frame 2 and resumed: the same fuel and flame, value for value.
+    ASSERT_EQ(simulate(s, parts, "--device cpu --frames 2").status, 0);
+    ASSERT_EQ(simulate(s, parts, "--device cpu --resume").status, 0);
+    EXPECT_EQ(testing::slurp(parts / "torch.resume"), testing::slurp(whole / "torch.resume"));
+    for (const char* grid : {"fuel", "flame", "temperature"}) {
+        const auto a = sampleVdbGrid(whole / "torch_0004.vdb", grid, centres);
+        const auto b = sampleVdbGrid(parts / "torch_0004.vdb", grid, centres);
+        for (std::size_t c = 0; c < centres.size(); ++c)
+            ASSERT_EQ(a[c].value, b[c].value) << grid << " cell " << c;
+    }
+}
+
 /// Peak resident memory of `command` in MiB (GNU time's %M), its status asserted 0.
 long peakMiB(const std::string& command, const fs::path& report) {
     const int raw = std::system(("/usr/bin/time -f %M -o " + report.string() + " " + command +
