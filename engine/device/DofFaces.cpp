@@ -17,8 +17,10 @@ constexpr std::uint64_t kCpuGroupsPerThread = 16;
 
 }  // namespace
 
-vulkan::DeviceBuffer uploadDofFaces(const vulkan::VulkanContext& context, const BasisCache& cache) {
-    const MacGrid grid = MacGrid::fromSpec(cache.grid);
+namespace {
+
+/// cache.faces as uint32 face numbers, checked against the grid.
+std::vector<std::uint32_t> checkedDofFaces(const BasisCache& cache, const MacGrid& grid) {
     if (cache.faces.empty()) throw Error("velocity DOFs: the basis has no face DOFs");
     if (grid.faceTotal() > std::int64_t(std::numeric_limits<std::uint32_t>::max()))
         throw Error("velocity DOFs: " + std::to_string(grid.faceTotal()) +
@@ -31,7 +33,23 @@ vulkan::DeviceBuffer uploadDofFaces(const vulkan::VulkanContext& context, const 
                         std::to_string(grid.faceTotal()) + " faces");
         faces[d] = std::uint32_t(cache.faces[d]);
     }
+    return faces;
+}
+
+}  // namespace
+
+vulkan::DeviceBuffer uploadDofFaces(const vulkan::VulkanContext& context, const BasisCache& cache) {
+    const std::vector<std::uint32_t> faces = checkedDofFaces(cache, MacGrid::fromSpec(cache.grid));
     return vulkan::DeviceBuffer::fromValues<std::uint32_t>(context, faces, "DOF faces");
+}
+
+vulkan::DeviceBuffer uploadFaceDofs(const vulkan::VulkanContext& context, const BasisCache& cache,
+                                    std::uint32_t none) {
+    const MacGrid grid = MacGrid::fromSpec(cache.grid);
+    const std::vector<std::uint32_t> faces = checkedDofFaces(cache, grid);
+    std::vector<std::uint32_t> dofs(std::size_t(grid.faceTotal()), none);
+    for (std::size_t d = 0; d < faces.size(); ++d) dofs[faces[d]] = std::uint32_t(d);
+    return vulkan::DeviceBuffer::fromValues<std::uint32_t>(context, dofs, "DOF of each face");
 }
 
 std::uint32_t groupCap(const vulkan::VulkanContext& context) {

@@ -19,6 +19,11 @@ namespace modeflow::device {
 /// @throw modeflow::Error when there are no DOFs or the grid has 2^32 faces or more.
 vulkan::DeviceBuffer uploadDofFaces(const vulkan::VulkanContext& context, const BasisCache& cache);
 
+/// The inverse table: per grid face its DOF, `none` where it has none (a wall, a solid face).
+/// @throw modeflow::Error as uploadDofFaces.
+vulkan::DeviceBuffer uploadFaceDofs(const vulkan::VulkanContext& context, const BasisCache& cache,
+                                    std::uint32_t none);
+
 /// The most workgroups a dispatch of a grid-stride kernel takes: the device's group count
 /// limit, and on a CPU device a few per CPU thread.
 std::uint32_t groupCap(const vulkan::VulkanContext& context);

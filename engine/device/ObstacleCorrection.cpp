@@ -28,20 +28,6 @@ vulkan::DeviceBuffer zeros(const vulkan::VulkanContext& context, std::size_t cou
     return vulkan::DeviceBuffer::fromValues<float>(context, std::vector<float>(count, 0.0f), name);
 }
 
-/// Per face of `grid` the DOF of `cache` on it, OBSTACLE_NO_DOF where there is none.
-vulkan::DeviceBuffer dofOfFace(const vulkan::VulkanContext& context, const BasisCache& cache,
-                               const MacGrid& grid) {
-    std::vector<std::uint32_t> dofs(std::size_t(grid.faceTotal()), OBSTACLE_NO_DOF);
-    for (std::size_t d = 0; d < cache.faces.size(); ++d) {
-        if (cache.faces[d] < 0 || cache.faces[d] >= grid.faceTotal())
-            throw Error("obstacle correction: DOF " + std::to_string(d) + " names face " +
-                        std::to_string(cache.faces[d]) + ", outside the grid's " +
-                        std::to_string(grid.faceTotal()) + " faces");
-        dofs[std::size_t(cache.faces[d])] = std::uint32_t(d);
-    }
-    return vulkan::DeviceBuffer::fromValues<std::uint32_t>(context, dofs, "DOF of each face");
-}
-
 /// Cells [lo, hi] along `axis` of `grid`: clamped to it along a walled axis, the whole axis along
 /// a periodic one when they reach round it (else they may wrap: lo < 0 or hi ≥ n).
 std::pair<int, int> onAxis(const MacGrid& grid, int axis, double lo, double hi) {
@@ -63,7 +49,7 @@ ObstacleCorrection::ObstacleCorrection(const vulkan::VulkanContext& context,
       mGrid(MacGrid::fromSpec(cache.grid)),
       mModeCount(std::uint32_t(cache.velocity.eigenvalues.size())),
       mObstacles(context, maxVelocityRegions * sizeof(shaders::ObstacleRecord), "obstacles"),
-      mDofOfFace(dofOfFace(context, cache, mGrid)),
+      mDofOfFace(uploadFaceDofs(context, cache, OBSTACLE_NO_DOF)),
       mMismatch(zeros(context, cache.faces.size(), "obstacle mismatch")),
       mCorrection(zeros(context, paddedSize(int(mModeCount)), "obstacle correction")),
       mLattices(context),
