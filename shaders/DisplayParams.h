@@ -36,6 +36,10 @@ using uint = std::uint32_t;
 #define DISPLAY_HOT_R 1.0
 #define DISPLAY_HOT_G 0.6588
 #define DISPLAY_HOT_B 0.3294
+/* Where fuel burns (Palette.h kFlame: 255, 196, 64). */
+#define DISPLAY_FLAME_R 1.0
+#define DISPLAY_FLAME_G 0.7686
+#define DISPLAY_FLAME_B 0.2510
 #define DISPLAY_TONE 2.5
 /* Outside the viewport, a shade darker than the background, with a frame of the wall colour
    this many pixels wide around the picture (the box's walls; not on the sides of a periodic
@@ -74,9 +78,9 @@ struct DisplayParams {
     float arrowScale;   /* window pixels per unit of velocity, */
     uint basisX;        /* from the face velocity of the basis grid of basisX x basisY cells */
     uint basisY;
-    uint periodic; /* display_smoke_2d: bit a, axis a is periodic (MacGrid::periodic): the
-                      smoke and velocity wrap, and no wall frame is drawn on its sides */
-    uint pad1;
+    uint periodic;    /* display_smoke_2d: bit a, axis a is periodic (MacGrid::periodic): the
+                         smoke and velocity wrap, and no wall frame is drawn on its sides */
+    float flameScale; /* display_smoke_2d: the flame shown fully glowing (0: no flame) */
 };
 
 /* display_dots.comp: particles as dots over the finished picture. */

@@ -48,6 +48,11 @@ using uint = std::uint32_t;
 #define RENDER_VOLUME_GLASS_R 0.0003
 #define RENDER_VOLUME_GLASS_G 0.0004
 #define RENDER_VOLUME_GLASS_B 0.0006
+/* Flames glow (render_volume's flame variant): a sample adds flameScale * flame * dt of this
+   colour, dimmed by the smoke in front of it as any light is. */
+#define RENDER_VOLUME_FLAME_R 1.0
+#define RENDER_VOLUME_FLAME_G 0.42
+#define RENDER_VOLUME_FLAME_B 0.08
 /* Rays stop once less than this fraction of the background still shows through. */
 #define RENDER_VOLUME_MIN_TRANSMITTANCE 0.001
 
@@ -79,9 +84,9 @@ struct RenderVolumeParams {
     float cellsPerTX;   /* cells per unit t along each axis: L / spacing */
     float cellsPerTY;
     float cellsPerTZ;
-    float glassT;  /* the glass adds its colour per this much t of wall crossed (half a cell) */
-    uint periodic; /* bit a: axis a wraps (MacGrid::periodic), so sampling wraps across it */
-    uint padding0;
+    float glassT;     /* the glass adds its colour per this much t of wall crossed (half a cell) */
+    uint periodic;    /* bit a: axis a wraps (MacGrid::periodic), so sampling wraps across it */
+    float flameScale; /* glow per unit t of flame 1 (the flame variant; 0 elsewhere) */
     uint padding1;
     uint padding2;
 };

@@ -1,7 +1,7 @@
 #version 450
 // display_smoke_2d.comp: the stir window's picture of a 2D scene, each window pixel: the smoke sampled bilinearly between cell centres (the walls nearest-cell, so the
 // domain's boundary shows as it is discretized), toned like the PNG previews, tinted where hot,
-// with the text overlay on top; along a periodic axis the smoke and the arrows' velocity are
+// glowing where fuel burns, with the text overlay on top; along a periodic axis the smoke and the arrows' velocity are
 // sampled across the seam. Wrapper: engine/display/DisplayKernels.cpp.
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_control_flow_attributes : require
@@ -14,6 +14,7 @@ layout(std430, set = 0, binding = 1) readonly buffer Mask { uint maskWords[]; };
 layout(std430, set = 0, binding = 2) readonly buffer Overlay { uint overlayWords[]; };
 layout(std430, set = 0, binding = 3) writeonly buffer Pixels { uint pixels[]; };
 layout(std430, set = 0, binding = 4) readonly buffer Faces { float faces[]; };  // basis face velocity
+layout(std430, set = 0, binding = 5) readonly buffer Flame { float flame[]; };  // read when flameScale > 0
 layout(push_constant) uniform Push { DisplayParams params; };
 
 #include "DisplayView.glsl"
@@ -93,6 +94,12 @@ vec3 pixelColour(uint x, uint y) {
                                    vec3(DISPLAY_HOT_R, DISPLAY_HOT_G, DISPLAY_HOT_B), 0.6 * heat);
             colour = mix(vec3(DISPLAY_BACKGROUND_R, DISPLAY_BACKGROUND_G, DISPLAY_BACKGROUND_B),
                          smoke, tone);
+            if (params.flameScale > 0.0) {
+                const float burning = mix(mix(flame[lo.y * n.x + lo.x], flame[lo.y * n.x + hi.x], f.x),
+                                          mix(flame[hi.y * n.x + lo.x], flame[hi.y * n.x + hi.x], f.x), f.y);
+                colour = mix(colour, vec3(DISPLAY_FLAME_R, DISPLAY_FLAME_G, DISPLAY_FLAME_B),
+                             clamp(burning / params.flameScale, 0.0, 1.0));
+            }
         }
         if (params.arrows != 0u) colour = withArrow(colour, x, y);
         colour = withPaddle(colour, p);

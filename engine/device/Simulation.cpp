@@ -32,9 +32,11 @@ std::uint32_t maxDispatchesPerStep(const ModalStepper& stepper, const SmokeState
     const std::int64_t boxDispatches = (smoke.cellCount() + 65535 * 64 - 1) / (65535 * 64);
     // The particles: a dispatch per 65535 groups of 64.
     const std::int64_t particleDispatches = (maxParticles + 65535 * 64 - 1) / (65535 * 64);
+    // The fuel's push and gather a substep, and the burn a dispatch per 65535 groups of 128.
+    const std::int64_t burnDispatches = (smoke.cellCount() + 65535 * 128 - 1) / (65535 * 128);
     return std::uint32_t(kMaxSubsteps * stepper.dispatchesPerStep() + 64 +
-                         (boxDispatches * maxObstacles + 5) * maxDisplacementSubsteps + 2 +
-                         particleDispatches);
+                         (boxDispatches * maxObstacles + 7) * maxDisplacementSubsteps + 2 +
+                         particleDispatches + burnDispatches);
 }
 
 std::vector<double> widened(const std::vector<float>& values) {
@@ -65,7 +67,8 @@ Simulation::Simulation(const vulkan::VulkanContext& context, const BasisCache& c
       mForceDensity(context, std::max<std::size_t>(cache.faces.size(), 1) * sizeof(float),
                     "force density"),
       mObstacles(context, cache),
-      mSmoke(context, MacGrid::fromSpec(cache.grid), mSettings.smokeScale, smokeMask),
+      mSmoke(context, MacGrid::fromSpec(cache.grid), mSettings.smokeScale, smokeMask,
+             mSettings.fire.has_value()),
       mAdvection(context),
       mDisplacement(context, mSmoke),
       mParticles(context, mSmoke, smokeMask, mSettings.particles, mSettings.shotEnd),
@@ -73,13 +76,21 @@ Simulation::Simulation(const vulkan::VulkanContext& context, const BasisCache& c
     if (!(mSettings.dt > 0.0)) throw Error("simulation: dt must be positive");
     if (mSettings.stepsPerFrame < 1) throw Error("simulation: steps per frame must be at least 1");
     requireDisplaceableMotion(mSettings.obstacles, mSettings.dt, mSmoke.smokeGrid());
+    if (mSettings.fire) mBurn.emplace(context);
 }
 
 void Simulation::restore(double time, const Eigen::VectorXd& v, const SmokeFields& smoke) {
     mStepper.setVelocity(v);
-    const std::vector<float> density(smoke.density.begin(), smoke.density.end()),
-        temperature(smoke.temperature.begin(), smoke.temperature.end());
-    mSmoke.upload(density, temperature);
+    if (smoke.fuel.empty() == mSmoke.fire())
+        throw Error(mSmoke.fire() ? "simulation: the saved smoke carries no fuel and flame; the "
+                                    "run burns fuel ([fire])"
+                                  : "simulation: the saved smoke carries fuel; the run has no "
+                                    "[fire]");
+    const auto narrowed = [](const std::vector<double>& values) {
+        return std::vector<float>(values.begin(), values.end());
+    };
+    mSmoke.upload(narrowed(smoke.density), narrowed(smoke.temperature));
+    if (mSmoke.fire()) mSmoke.upload(narrowed(smoke.fuel), narrowed(smoke.flame), SmokePair::Fuel);
     mParticles.restore({});
     mTime = time;
     mStep = std::lround(time / mSettings.dt);
@@ -191,6 +202,8 @@ void Simulation::recordStep(std::vector<std::size_t>& boundaries) {
     boundaries.push_back(mSequence.dispatchCount());
     mDisplacement.record(mSequence, mSmoke, mSettings.obstacles, mTime, dt);
     boundaries.push_back(mSequence.dispatchCount());
+    if (mBurn) mBurn->record(mSequence, mSmoke, *mSettings.fire, dt);
+    boundaries.push_back(mSequence.dispatchCount());
     mParticles.record(mSequence, mSmoke, mSettings.obstacles, mTime, dt);
     boundaries.push_back(mSequence.dispatchCount());
 }
@@ -236,10 +249,10 @@ FrameStats Simulation::advanceSteps(int steps) {
         const std::vector<double>& times = mSequence.dispatchTimesMs();
         if (times.empty()) continue;
         ++stats.timedSteps;
-        // The smoke pushed out of solids counts to the obstacles.
-        const std::array<double*, 7> stages{
+        // The smoke pushed out of solids counts to the obstacles, the burn to the advection.
+        const std::array<double*, 8> stages{
             &stats.forcesMs,    &stats.modalMs,     &stats.reconstructionMs, &stats.obstaclesMs,
-            &stats.advectionMs, &stats.obstaclesMs, &stats.particlesMs};
+            &stats.advectionMs, &stats.obstaclesMs, &stats.advectionMs,      &stats.particlesMs};
         for (std::size_t stage = 0; stage < stages.size(); ++stage)
             for (std::size_t d = boundaries[stage]; d < boundaries[stage + 1]; ++d)
                 *stages[stage] += times[d];
@@ -262,9 +275,15 @@ std::vector<double> Simulation::faceMagneticField() const {
 }
 
 SmokeFields Simulation::smoke() const {
-    std::vector<float> density(std::size_t(mSmoke.cellCount())), temperature(density.size());
-    mSmoke.download(density, temperature);
-    return {widened(density), widened(temperature)};
+    std::vector<float> first(std::size_t(mSmoke.cellCount())), second(first.size());
+    mSmoke.download(first, second);
+    SmokeFields fields{widened(first), widened(second)};
+    if (mSmoke.fire()) {
+        mSmoke.download(first, second, SmokePair::Fuel);
+        fields.fuel = widened(first);
+        fields.flame = widened(second);
+    }
+    return fields;
 }
 
 std::vector<double> Simulation::faceVelocity() const {

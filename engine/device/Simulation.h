@@ -7,15 +7,17 @@
 ///     → modal step (viscosity, LANS-α) → reconstruction u = Σ v_i Ψ_i
 ///     (the basis's columns, or a closed-form basis's separable transforms)
 ///     → moving obstacles (v −= projected mismatch, reconstruct again) → smoke advection + emitters
-///     → smoke pushed out of solids → particles
+///     → smoke pushed out of solids → fuel burning ([fire]) → particles
 ///
 /// with nothing read back; the host reads the velocity, smoke or grid velocity only when it asks
 /// (display, export). CPU reference of the whole chain: reference::Simulation.
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <vector>
 
+#include "engine/device/FireBurn.h"
 #include "engine/device/ForceField.h"
 #include "engine/device/ForceProjection.h"
 #include "engine/device/ModalStepper.h"
@@ -101,6 +103,7 @@ private:
     SmokeAdvectionKernels mAdvection;
     SmokeDisplacement mDisplacement;
     ParticleAdvection mParticles;
+    std::optional<FireBurnKernel> mBurn;  ///< with [fire]
     mutable vulkan::CommandSequence
         mSequence;                      ///< also records faceMagneticField()'s reconstruction
     std::vector<bool> mActiveEmitters;  ///< what the device's emitter list holds now

@@ -169,19 +169,29 @@ void SmokeAdvectionKernels::record(vulkan::CommandSequence& sequence, SmokeState
                 (faces + 3) / 4, 4);
 
     shaders::SmokeAdvectParams params = stepParams(state, dt);
-    // Bindings 0-7 of shaders/SmokeAdvect.glsl.
-    const std::array<const vulkan::DeviceBuffer*, 8> buffers{
-        &state.facePairs(), &state.fluidCells(), &state.stencilMask(), &state.fields(),
-        &state.hat(),       &state.record(),     &state.nextFields(),  &state.temperature()};
-    const auto stage = [&](std::uint32_t s) {
-        dispatchAll(sequence, stageKernel(s, state.smokeGrid().dim, state.scale() == 1), buffers,
-                    params, &shaders::SmokeAdvectParams::firstCell, state.fluidCellCount());
-    };
-    if (scheme == AdvectionScheme::SemiLagrangian) {
-        stage(SMOKE_STAGE_SEMI_LAGRANGIAN);
-    } else {
-        stage(SMOKE_STAGE_MACCORMACK_FORWARD);
-        stage(SMOKE_STAGE_MACCORMACK_CORRECT);
+    // Each pair in turn, through the shared MacCormack buffers.
+    for (int p = 0; p < state.pairCount(); ++p) {
+        const auto pair = SmokePair(p);
+        // Bindings 0-7 of shaders/SmokeAdvect.glsl.
+        const std::array<const vulkan::DeviceBuffer*, 8> buffers{&state.facePairs(),
+                                                                 &state.fluidCells(pair),
+                                                                 &state.stencilMask(),
+                                                                 &state.fields(pair),
+                                                                 &state.hat(),
+                                                                 &state.record(),
+                                                                 &state.nextFields(pair),
+                                                                 &state.second(pair)};
+        const auto stage = [&](std::uint32_t s) {
+            dispatchAll(sequence, stageKernel(s, state.smokeGrid().dim, state.scale() == 1),
+                        buffers, params, &shaders::SmokeAdvectParams::firstCell,
+                        state.fluidCellCount());
+        };
+        if (scheme == AdvectionScheme::SemiLagrangian) {
+            stage(SMOKE_STAGE_SEMI_LAGRANGIAN);
+        } else {
+            stage(SMOKE_STAGE_MACCORMACK_FORWARD);
+            stage(SMOKE_STAGE_MACCORMACK_CORRECT);
+        }
     }
     state.flip();
 }

@@ -1,11 +1,13 @@
 #pragma once
 /// @file SmokeAdvection.h
-/// One smoke advection step of density and temperature on the device, float32
-/// (shaders/SmokeAdvect.glsl; CPU reference and the rules: engine/reference/SmokeAdvection.h).
+/// One smoke advection step of density and temperature (and fuel and flame with fire) on the
+/// device, float32 (shaders/SmokeAdvect.glsl; CPU reference and the rules:
+/// engine/reference/SmokeAdvection.h).
 /// Each step first pairs the velocity faces (shaders/smoke_face_pairs.comp); then
 /// semi-Lagrangian is one dispatch, MacCormack two (forward and backward traces with the forward
 /// sample, then the backward sample and the clamped correction), over the fluid cells only, both
-/// fields in each. Emitters are added in the step's last dispatch.
+/// fields in each; with fire the (fuel, flame) pair after the (density, temperature) one,
+/// through the same kernels. Emitters are added in the step's last dispatch.
 ///
 /// Its speed on lavapipe, layout by layout: engine/README.md "Speed" (shaders/SmokeAdvect.glsl
 /// says what changed and why).

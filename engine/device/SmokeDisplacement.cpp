@@ -90,11 +90,14 @@ void SmokeDisplacement::record(vulkan::CommandSequence& sequence, SmokeState& st
     params.dt = float(dt);
     const std::uint32_t maxGroups = mContext.properties().limits.maxComputeWorkGroupCount[0];
     params.maxGroups = maxGroups;
-    // Bindings 0-10 of shaders/smoke_displace.comp.
-    const std::array<const vulkan::DeviceBuffer*, 11> buffers{
-        &mPoses,  &mLattices.buffer(), &state.mask(),        &mCover,
-        &mTarget, &state.fields(),     &state.temperature(), &state.hat(),
-        &mWork,   &mCovered,           &mReceivers};
+    // Bindings 0-10 of shaders/smoke_displace.comp, for each pair of fields.
+    const auto buffersOf = [&](SmokePair pair) {
+        return std::array<const vulkan::DeviceBuffer*, 11>{
+            &mPoses,  &mLattices.buffer(), &state.mask(),       &mCover,
+            &mTarget, &state.fields(pair), &state.second(pair), &state.hat(),
+            &mWork,   &mCovered,           &mReceivers};
+    };
+    const auto buffers = buffersOf(SmokePair::Smoke);
     const std::int64_t perDispatch = std::int64_t(maxGroups) * kWorkgroupSize;
     for (int k = 0; k < substeps; ++k) {
         if (++mStamp == kStampLimit) {
@@ -126,6 +129,15 @@ void SmokeDisplacement::record(vulkan::CommandSequence& sequence, SmokeState& st
         sequence.dispatch(mStages.with({SMOKE_DISPLACE_ARGS, kinds}), buffers, params, 1);
         sequence.dispatchIndirect(mStages.with({SMOKE_DISPLACE_GATHER, kinds}), buffers, params,
                                   mWork, 16);
+        if (state.fire()) {
+            // The fuel moves as the smoke did: the push finds the same targets (the lists and
+            // the dispatch arguments stand, every receiver already listed) and stashes the fuel.
+            const auto fuel = buffersOf(SmokePair::Fuel);
+            sequence.dispatchIndirect(mStages.with({SMOKE_DISPLACE_PUSH, kinds}), fuel, params,
+                                      mWork, 0);
+            sequence.dispatchIndirect(mStages.with({SMOKE_DISPLACE_GATHER, kinds}), fuel, params,
+                                      mWork, 16);
+        }
     }
 }
 

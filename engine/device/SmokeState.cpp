@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <bit>
 #include <string>
+#include <utility>
 
 #include "engine/core/Error.h"
 #include "engine/vulkan/VulkanContext.h"
@@ -104,50 +105,71 @@ std::vector<std::uint32_t> cellList(const MacGrid& smoke, const std::vector<std:
 }  // namespace
 
 SmokeState::SmokeState(const vulkan::VulkanContext& context, const MacGrid& basisGrid, int scale,
-                       std::span<const std::uint8_t> fluidMask)
+                       std::span<const std::uint8_t> fluidMask, bool fire)
     : mBasis(basisGrid),
       mScale(scale),
       mSmoke(basisGrid.refined(scale)),
       mFluid(fluidFlags(mSmoke, fluidMask)),
       mFluidIndex(fluidIndices(mFluid)),
       mFluidCount(std::uint32_t(mFluidIndex.size())),
-      mFields{zeroBuffer(context, std::size_t(mSmoke.cellCount()) * 8, "smoke fields 0"),
-              zeroBuffer(context, std::size_t(mSmoke.cellCount()) * 8, "smoke fields 1")},
-      mTemperature(zeroBuffer(context, std::size_t(mSmoke.cellCount()) * 4, "smoke temperature")),
       mMask(texelBuffer(context, mFluid, "smoke fluid mask")),
-      mFluidCells(texelBuffer(context, cellList(mSmoke, mFluidIndex, {}), "smoke fluid cells")),
       mStencilMask(texelBuffer(context, stencilFlags(mSmoke, mFluid), "smoke stencil mask")),
       mHat(zeroBuffer(context, std::size_t(mSmoke.cellCount()) * 8, "MacCormack fields")),
       mRecord(zeroBuffer(context, std::size_t(mFluidCount) * SMOKE_RECORD_WORDS * 8,
                          "MacCormack record")),
       mFacePairs(
-          zeroBuffer(context, std::size_t(mBasis.faceTotal() + 3) / 4 * 32, "smoke face pairs")) {}
-
-void SmokeState::upload(std::span<const float> density, std::span<const float> temperature) {
-    if (density.size() != std::size_t(cellCount()) ||
-        temperature.size() != std::size_t(cellCount()))
-        throw Error("smoke state upload: density and temperature need " +
-                    std::to_string(cellCount()) + " values each, got " +
-                    std::to_string(density.size()) + " and " + std::to_string(temperature.size()));
-    std::vector<float> pairs(2 * density.size(), 0.0f), alone(temperature.size(), 0.0f);
-    for (const std::int64_t c : mFluidIndex) {
-        pairs[2 * c] = density[c];
-        pairs[2 * c + 1] = alone[c] = temperature[c];
+          zeroBuffer(context, std::size_t(mBasis.faceTotal() + 3) / 4 * 32, "smoke face pairs")) {
+    // Each pair's fields 0, its emitters' rates none yet.
+    const auto cells = std::size_t(mSmoke.cellCount());
+    for (const std::string name : {"smoke", "fuel"}) {
+        if (name == "fuel" && !fire) break;
+        mPairs.push_back(
+            {{zeroBuffer(context, cells * 8, name + " fields 0"),
+              zeroBuffer(context, cells * 8, name + " fields 1")},
+             zeroBuffer(context, cells * 4, name + " second field"),
+             texelBuffer(context, cellList(mSmoke, mFluidIndex, {}), name + " fluid cells")});
     }
-    mFields[mCurrent].upload<float>(pairs);
-    mTemperature.upload<float>(alone);
 }
 
-void SmokeState::download(std::span<float> densityOut, std::span<float> temperatureOut) const {
-    if (densityOut.size() != std::size_t(cellCount()) ||
-        temperatureOut.size() != std::size_t(cellCount()))
-        throw Error("smoke state download: density and temperature need room for " +
+const SmokeState::Pair& SmokeState::at(SmokePair pair) const {
+    const auto p = std::size_t(pair);
+    if (p >= mPairs.size())
+        throw Error("smoke state: fuel and flame asked of a state without fire");
+    return mPairs[p];
+}
+
+SmokeState::Pair& SmokeState::at(SmokePair pair) {
+    return const_cast<Pair&>(std::as_const(*this).at(pair));
+}
+
+void SmokeState::upload(std::span<const float> first, std::span<const float> second,
+                        SmokePair pair) {
+    if (first.size() != std::size_t(cellCount()) || second.size() != std::size_t(cellCount()))
+        throw Error(
+            "smoke state upload: " +
+            std::string(pair == SmokePair::Smoke ? "density and temperature" : "fuel and flame") +
+            " need " + std::to_string(cellCount()) + " values each, got " +
+            std::to_string(first.size()) + " and " + std::to_string(second.size()));
+    Pair& target = at(pair);
+    std::vector<float> pairs(2 * first.size(), 0.0f), alone(second.size(), 0.0f);
+    for (const std::int64_t c : mFluidIndex) {
+        pairs[2 * c] = first[c];
+        pairs[2 * c + 1] = alone[c] = second[c];
+    }
+    target.fields[mCurrent].upload<float>(pairs);
+    target.second.upload<float>(alone);
+}
+
+void SmokeState::download(std::span<float> firstOut, std::span<float> secondOut,
+                          SmokePair pair) const {
+    if (firstOut.size() != std::size_t(cellCount()) || secondOut.size() != std::size_t(cellCount()))
+        throw Error("smoke state download: the two fields need room for " +
                     std::to_string(cellCount()) + " values each");
-    std::vector<float> pairs(2 * densityOut.size());
-    fields().download<float>(pairs);
-    for (std::size_t c = 0; c < densityOut.size(); ++c) {
-        densityOut[c] = pairs[2 * c];
-        temperatureOut[c] = pairs[2 * c + 1];
+    std::vector<float> pairs(2 * firstOut.size());
+    fields(pair).download<float>(pairs);
+    for (std::size_t c = 0; c < firstOut.size(); ++c) {
+        firstOut[c] = pairs[2 * c];
+        secondOut[c] = pairs[2 * c + 1];
     }
 }
 
@@ -156,14 +178,18 @@ void SmokeState::setEmitters(std::span<const SmokeEmitter> emitters) {
         throw Error("smoke: " + std::to_string(emitters.size()) +
                     " emitters, the device step takes at most " + std::to_string(maxSmokeEmitters));
     // The rates per unit time: the reference's emitters over a step of 1.
-    std::vector<double> density(mFluid.size(), 0.0), temperature(mFluid.size(), 0.0);
-    applyEmitters(mSmoke, mFluid, emitters, 1.0, density, temperature);
-    std::vector<float> rates(2 * mFluidIndex.size());
+    std::vector<double> density(mFluid.size(), 0.0), temperature(mFluid.size(), 0.0),
+        fuel(fire() ? mFluid.size() : 0, 0.0);
+    applyEmitters(mSmoke, mFluid, emitters, 1.0, density, temperature, fuel);
+    std::vector<float> rates(2 * mFluidIndex.size()), fuelRates(fire() ? rates.size() : 0, 0.0f);
     for (std::size_t e = 0; e < mFluidIndex.size(); ++e) {
-        rates[2 * e] = float(density[mFluidIndex[e]]);
-        rates[2 * e + 1] = float(temperature[mFluidIndex[e]]);
+        const auto c = std::size_t(mFluidIndex[e]);
+        rates[2 * e] = float(density[c]);
+        rates[2 * e + 1] = float(temperature[c]);
+        if (fire()) fuelRates[2 * e] = float(fuel[c]);  // the flame has no source
     }
-    mFluidCells.upload<std::uint32_t>(cellList(mSmoke, mFluidIndex, rates));
+    mPairs[0].cells.upload<std::uint32_t>(cellList(mSmoke, mFluidIndex, rates));
+    if (fire()) mPairs[1].cells.upload<std::uint32_t>(cellList(mSmoke, mFluidIndex, fuelRates));
     mEmitterCount = std::uint32_t(emitters.size());
 }
 

@@ -3,6 +3,10 @@
 /// The smoke on the device: density and temperature as float32 ping-pong buffers on the smoke
 /// grid (basisGrid.refined(scale)), the fluid mask, the emitters, and what the advection kernels
 /// read and write on the way (layouts: shaders/SmokeAdvectParams.h; why: shaders/SmokeAdvect.glsl).
+/// With fire, a second pair of fields rides along: (fuel, flame), carried by the same kernels as
+/// (density, temperature), its own list of the emitters' (fuel) rates, and the flame alone as the
+/// temperature is (SmokePair::Fuel). The kernels carry the flame as they carry the fuel; the
+/// burn (shaders/fire_burn.comp), the step's last stage, writes every cell's flame anew.
 /// SmokeAdvectionKernels::record() reads the current fields, writes the others and flips: after
 /// recording, current() names what the step will have written, so several steps can be recorded
 /// into one submission with no host round trip. Read the fields back only after the submission's
@@ -28,14 +32,18 @@ class VulkanContext;
 
 namespace modeflow::device {
 
+/// The pairs of fields a step carries: (density, temperature) always, (fuel, flame) with fire.
+enum class SmokePair { Smoke = 0, Fuel = 1 };
+
 class SmokeState {
 public:
-    /// Fields start at 0. `fluidMask`: one entry per smoke cell, non-zero inside Ω.
+    /// Fields start at 0. `fluidMask`: one entry per smoke cell, non-zero inside Ω. `fire`: the
+    /// state carries fuel and flame too.
     /// @throw modeflow::Error when scale < 1, the mask has the wrong size, the smoke grid has more
     /// than 65535 cells along x or y, or a buffer would exceed the device's texel or storage
     /// buffer limit.
     SmokeState(const vulkan::VulkanContext& context, const MacGrid& basisGrid, int scale,
-               std::span<const std::uint8_t> fluidMask);
+               std::span<const std::uint8_t> fluidMask, bool fire = false);
 
     const MacGrid& basisGrid() const { return mBasis; }
     const MacGrid& smokeGrid() const { return mSmoke; }
@@ -44,32 +52,47 @@ public:
     /// Cells inside Ω: the advection's invocations.
     std::uint32_t fluidCellCount() const { return mFluidCount; }
 
-    /// Replaces the current fields (one value per smoke cell each; cells outside Ω become 0).
-    /// Between submissions only.
-    /// @throw modeflow::Error on a wrong size.
-    void upload(std::span<const float> density, std::span<const float> temperature);
-    /// Copies the current fields out. After the writing submission's fence only.
-    void download(std::span<float> densityOut, std::span<float> temperatureOut) const;
+    bool fire() const { return mPairs.size() == 2; }
+    /// The pairs carried: Smoke, then Fuel with fire.
+    int pairCount() const { return int(mPairs.size()); }
 
-    /// The emitters of the following steps: their rates, summed per fluid cell in double
-    /// precision with the CPU reference's inside test (applyEmitters), go to the device as
-    /// float32. Between submissions only.
+    /// Replaces the current fields of `pair` (one value per smoke cell each; cells outside Ω
+    /// become 0). Between submissions only.
+    /// @throw modeflow::Error on a wrong size, or for the fuel of a state without fire.
+    void upload(std::span<const float> first, std::span<const float> second,
+                SmokePair pair = SmokePair::Smoke);
+    /// Copies the current fields of `pair` out. After the writing submission's fence only.
+    void download(std::span<float> firstOut, std::span<float> secondOut,
+                  SmokePair pair = SmokePair::Smoke) const;
+
+    /// The emitters of the following steps: their rates (fuel too with fire), summed per fluid
+    /// cell in double precision with the CPU reference's inside test (applyEmitters), go to the
+    /// device as float32. Between submissions only.
     /// @throw modeflow::Error when there are more than maxSmokeEmitters.
     void setEmitters(std::span<const SmokeEmitter> emitters);
     std::uint32_t emitterCount() const { return mEmitterCount; }
 
-    /// Density and temperature interleaved, (density, temperature) per cell: now and next.
-    const vulkan::DeviceBuffer& fields() const { return mFields[mCurrent]; }
-    const vulkan::DeviceBuffer& nextFields() const { return mFields[1 - mCurrent]; }
-    /// The current temperature alone, one float per cell (e.g. for ForceFieldKernel).
-    const vulkan::DeviceBuffer& temperature() const { return mTemperature; }
+    /// A pair's two fields interleaved, e.g. (density, temperature) per cell: now and next.
+    const vulkan::DeviceBuffer& fields(SmokePair pair = SmokePair::Smoke) const {
+        return at(pair).fields[mCurrent];
+    }
+    const vulkan::DeviceBuffer& nextFields(SmokePair pair = SmokePair::Smoke) const {
+        return at(pair).fields[1 - mCurrent];
+    }
+    /// A pair's current second field alone, one float per cell: the temperature (e.g. for
+    /// ForceFieldKernel), or the flame.
+    const vulkan::DeviceBuffer& second(SmokePair pair) const { return at(pair).second; }
+    const vulkan::DeviceBuffer& temperature() const { return second(SmokePair::Smoke); }
     /// The fluid mask, one byte per cell packed four to a 32-bit word.
     const vulkan::DeviceBuffer& mask() const { return mMask; }
 
     /// Buffers of the advection kernels (shaders/SmokeAdvectParams.h gives their layouts): the
-    /// fluid cells' list with their emitters' rates, the stencil mask, MacCormack's intermediate
-    /// fields and per-cell record, and the basis velocity as face pairs.
-    const vulkan::DeviceBuffer& fluidCells() const { return mFluidCells; }
+    /// fluid cells' list with the emitters' rates of a pair, the stencil mask, MacCormack's
+    /// intermediate fields and per-cell record (shared by the pairs, carried one after the
+    /// other), and the basis velocity as face pairs.
+    const vulkan::DeviceBuffer& fluidCells(SmokePair pair = SmokePair::Smoke) const {
+        return at(pair).cells;
+    }
     const vulkan::DeviceBuffer& stencilMask() const { return mStencilMask; }
     const vulkan::DeviceBuffer& hat() const { return mHat; }
     const vulkan::DeviceBuffer& record() const { return mRecord; }
@@ -79,16 +102,25 @@ public:
     void flip() { mCurrent = 1 - mCurrent; }
 
 private:
+    /// One pair: its fields now and next, its second field alone, and the fluid cell list with
+    /// the emitters' rates of its two fields.
+    struct Pair {
+        std::array<vulkan::DeviceBuffer, 2> fields;
+        vulkan::DeviceBuffer second;
+        vulkan::DeviceBuffer cells;
+    };
+    /// @throw modeflow::Error for the fuel of a state without fire.
+    const Pair& at(SmokePair pair) const;
+    Pair& at(SmokePair pair);
+
     MacGrid mBasis;
     int mScale;
     MacGrid mSmoke;
     std::vector<std::uint8_t> mFluid;       ///< the mask as 0 and 1, for setEmitters
     std::vector<std::int64_t> mFluidIndex;  ///< cellIndex of each fluid cell, list order
     std::uint32_t mFluidCount = 0;
-    std::array<vulkan::DeviceBuffer, 2> mFields;
-    vulkan::DeviceBuffer mTemperature;
+    std::vector<Pair> mPairs;
     vulkan::DeviceBuffer mMask;
-    vulkan::DeviceBuffer mFluidCells;
     vulkan::DeviceBuffer mStencilMask;
     vulkan::DeviceBuffer mHat;
     vulkan::DeviceBuffer mRecord;

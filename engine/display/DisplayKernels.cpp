@@ -58,7 +58,7 @@ std::uint32_t pixelGroups(const vulkan::ComputeKernel& kernel, const DisplayTarg
 DisplayKernels::DisplayKernels(const vulkan::VulkanContext& context)
     : mContext(context),
       mSmoke2D(context,
-               {"display_smoke_2d", display_smoke_2d_spv, 5, sizeof(shaders::DisplayParams)}),
+               {"display_smoke_2d", display_smoke_2d_spv, 6, sizeof(shaders::DisplayParams)}),
       mPicture(context,
                {"display_picture", display_picture_spv, 3, sizeof(shaders::DisplayParams)}),
       mDots(context, {"display_dots", display_dots_spv, 2, sizeof(shaders::DisplayDotsParams)}) {}
@@ -74,6 +74,8 @@ void DisplayKernels::recordSmoke2D(vulkan::CommandSequence& sequence, const Fiel
     shaders::DisplayParams p = paramsFor(target, grid.cells[0], grid.cells[1], look.paddle);
     p.densityScale = look.densityScale;
     p.hotScale = look.hotScale;
+    p.flameScale = fields.flame ? look.flameScale : 0.0f;
+    if (fields.flame) requireBytes(*fields.flame, VkDeviceSize(grid.cellCount()) * sizeof(float));
     const MacGrid& basis = fields.basisGrid;
     requireBytes(fields.smoke, VkDeviceSize(grid.cellCount()) * 2 * sizeof(float));
     requireBytes(fields.mask, VkDeviceSize(grid.cellCount() + 3) / 4 * 4);
@@ -84,8 +86,10 @@ void DisplayKernels::recordSmoke2D(vulkan::CommandSequence& sequence, const Fiel
     p.basisX = std::uint32_t(basis.cells[0]);
     p.basisY = std::uint32_t(basis.cells[1]);
     p.periodic = basis.periodicBits();
-    const std::array<const vulkan::DeviceBuffer*, 5> buffers{&fields.smoke, &fields.mask, &overlay,
-                                                             &pixels, &fields.faceVelocity};
+    // Without flame binding 5 is never read: any buffer will do.
+    const std::array<const vulkan::DeviceBuffer*, 6> buffers{
+        &fields.smoke, &fields.mask,         &overlay,
+        &pixels,       &fields.faceVelocity, fields.flame ? fields.flame : &fields.smoke};
     sequence.dispatch(mSmoke2D, buffers, p, pixelGroups(mSmoke2D, target, overlay, pixels));
 }
 

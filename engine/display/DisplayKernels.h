@@ -22,6 +22,7 @@ struct FieldBuffers {
     const vulkan::DeviceBuffer& faceVelocity;  ///< float32 per face of the basis grid
     const MacGrid& smokeGrid;
     const MacGrid& basisGrid;
+    const vulkan::DeviceBuffer* flame = nullptr;  ///< float32 per smoke cell with [fire]
 };
 
 /// What a picture is drawn into: the window size, the viewport and the byte order.
@@ -44,6 +45,7 @@ struct PaddleOverlay {
 struct Smoke2DLook {
     float densityScale = 1.0f;  ///< the density shown fully bright
     float hotScale = 0.0f;      ///< the temperature shown fully hot (0: no tint)
+    float flameScale = 0.0f;    ///< the flame shown fully glowing (0 or no flame: no glow)
     PaddleOverlay paddle;       ///< in smoke cells, y up
     /// Velocity arrows, one per square of `arrowSpacing` window pixels, `arrowScale` pixels
     /// per unit of velocity.

@@ -33,6 +33,7 @@ struct Volume {
     const RenderVolumeParams& p;
     std::vector<float> extinction;  // −1 marks a wall cell
     std::vector<float> depth;       // optical depth from the cell centre up to the box top
+    std::span<const float> flame;   // empty: the variant without flame
 };
 
 void lightPass(Volume& v, std::span<const float> density, std::span<const std::uint8_t> mask) {
@@ -123,6 +124,7 @@ Rgba renderPixel(const Volume& v, std::uint32_t px, std::uint32_t py) {
     const V3 lightColour{RENDER_VOLUME_LIGHT_R, RENDER_VOLUME_LIGHT_G, RENDER_VOLUME_LIGHT_B};
     const V3 ambient{RENDER_VOLUME_AMBIENT_R, RENDER_VOLUME_AMBIENT_G, RENDER_VOLUME_AMBIENT_B};
     const V3 glass{RENDER_VOLUME_GLASS_R, RENDER_VOLUME_GLASS_G, RENDER_VOLUME_GLASS_B};
+    const V3 flameColour{RENDER_VOLUME_FLAME_R, RENDER_VOLUME_FLAME_G, RENDER_VOLUME_FLAME_B};
     const V3 outline{RENDER_VOLUME_OUTLINE_R, RENDER_VOLUME_OUTLINE_G, RENDER_VOLUME_OUTLINE_B};
     V3 background{RENDER_VOLUME_BACKGROUND_R, RENDER_VOLUME_BACKGROUND_G,
                   RENDER_VOLUME_BACKGROUND_B};
@@ -146,6 +148,11 @@ Rgba renderPixel(const Volume& v, std::uint32_t px, std::uint32_t py) {
             }
             light =
                 light + (transmittance * (glassPerStep * 4.0f * fluid * (1.0f - fluid))) * glass;
+            if (!v.flame.empty()) {
+                float f = 0.0f;
+                for (int k = 0; k < 8; ++k) f += st.weight[k] * v.flame[st.cell[k]];
+                light = light + (transmittance * (p.flameScale * f * dt)) * flameColour;
+            }
             if (sigma > 0.0f) {
                 float tau = 0.0f;
                 for (int k = 0; k < 8; ++k) tau += st.weight[k] * v.depth[st.cell[k]];
@@ -176,14 +183,18 @@ Rgba renderPixel(const Volume& v, std::uint32_t px, std::uint32_t py) {
 
 Image renderVolumeReference(const MacGrid& grid, std::span<const float> density,
                             std::span<const std::uint8_t> mask, int width, int height,
-                            float densityScale) {
-    const RenderVolumeParams params = volumeViewParams(grid, width, height, densityScale);
+                            float densityScale, std::span<const float> flame, float flameScale) {
+    RenderVolumeParams params = volumeViewParams(grid, width, height, densityScale);
     const auto cells = std::size_t(grid.cellCount());
     if (density.size() != cells || mask.size() != cells)
         throw Error("3D preview: " + std::to_string(density.size()) + " densities and " +
                     std::to_string(mask.size()) + " mask bytes for " + std::to_string(cells) +
                     " smoke cells");
-    Volume volume{params, std::vector<float>(cells), std::vector<float>(cells)};
+    if (!flame.empty() && flame.size() != cells)
+        throw Error("3D preview: " + std::to_string(flame.size()) + " flame values for " +
+                    std::to_string(cells) + " smoke cells");
+    params.flameScale = flame.empty() ? 0.0f : checkedFlameScale(flameScale);
+    Volume volume{params, std::vector<float>(cells), std::vector<float>(cells), flame};
     lightPass(volume, density, mask);
     Image image(width, height);
     for (int y = 0; y < height; ++y)

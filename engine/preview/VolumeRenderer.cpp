@@ -42,6 +42,22 @@ DeviceBuffer maskBuffer(const vulkan::VulkanContext& context, std::span<const st
     return DeviceBuffer::fromValues<std::uint8_t>(context, bytes, "volume preview mask");
 }
 
+/// render_volume, with its flame glow compiled in or out.
+vulkan::ComputeKernelSpec kernelSpec(std::uint32_t workgroupSize, bool flame) {
+    return {"render_volume", render_volume_spv, 6, sizeof(shaders::RenderVolumeParams),
+            workgroupSize,   {flame ? 1u : 0u}};
+}
+
+/// Throws unless `buffer` holds `floats` floats.
+void requireFloats(const DeviceBuffer& buffer, VkDeviceSize floats, const char* what,
+                   std::int64_t cells) {
+    const VkDeviceSize needed = floats * sizeof(float);
+    if (buffer.bytes() < needed)
+        throw Error(std::string("3D preview: ") + what + " buffer \"" + buffer.name() +
+                    "\" holds " + std::to_string(buffer.bytes()) + " bytes, the smoke grid's " +
+                    std::to_string(cells) + " cells need " + std::to_string(needed));
+}
+
 }  // namespace
 
 VolumeRenderer::VolumeRenderer(const vulkan::VulkanContext& context, const MacGrid& smokeGrid,
@@ -51,9 +67,7 @@ VolumeRenderer::VolumeRenderer(const vulkan::VulkanContext& context, const MacGr
       mGrid(checkedGrid(smokeGrid, fluidMask.size(), width, height)),
       mWidth(width),
       mHeight(height),
-      mKernel(context,
-              vulkan::ComputeKernelSpec{"render_volume", render_volume_spv, 5,
-                                        sizeof(shaders::RenderVolumeParams), workgroupSize}),
+      mKernel(context, kernelSpec(workgroupSize, false)),
       mMask(maskBuffer(context, fluidMask, std::size_t(smokeGrid.cellCount()))),
       mExtinction(context, VkDeviceSize(smokeGrid.cellCount()) * sizeof(float),
                   "volume preview extinction"),
@@ -65,29 +79,34 @@ VolumeRenderer::VolumeRenderer(const vulkan::VulkanContext& context, const MacGr
 
 void VolumeRenderer::record(vulkan::CommandSequence& sequence, const DeviceBuffer& density,
                             float densityScale, std::uint32_t densityStride,
-                            const VolumeCamera& camera) const {
+                            const VolumeCamera& camera, const DeviceBuffer* flame,
+                            float flameScale) const {
     const std::int64_t cells = mGrid.cellCount();
-    const VkDeviceSize needed = VkDeviceSize(cells) * std::max(densityStride, 1u) * sizeof(float);
-    if (density.bytes() < needed)
-        throw Error("3D preview: density buffer \"" + density.name() + "\" holds " +
-                    std::to_string(density.bytes()) + " bytes, the smoke grid's " +
-                    std::to_string(cells) + " cells need " + std::to_string(needed));
+    requireFloats(density, VkDeviceSize(cells) * std::max(densityStride, 1u), "density", cells);
     shaders::RenderVolumeParams params =
         volumeViewParams(mGrid, mWidth, mHeight, densityScale, camera, std::max(densityStride, 1u));
-    const std::array<const DeviceBuffer*, 5> buffers{&density, &mMask, &mExtinction, &mDepth,
-                                                     &mPixels};
+    if (flame) {
+        requireFloats(*flame, VkDeviceSize(cells), "flame", cells);
+        params.flameScale = checkedFlameScale(flameScale);
+        if (!mFlameKernel)
+            mFlameKernel.emplace(mContext, kernelSpec(mKernel.workgroupSize(), true));
+    }
+    const vulkan::ComputeKernel& kernel = flame ? *mFlameKernel : mKernel;
+    // Without flame binding 5 is never read: any buffer will do.
+    const std::array<const DeviceBuffer*, 6> buffers{&density, &mMask,   &mExtinction,
+                                                     &mDepth,  &mPixels, flame ? flame : &density};
     // Grid-stride loops in the shader: any item count fits in the largest group count.
     const auto groups = [&](std::uint32_t items) {
-        const std::uint32_t size = mKernel.workgroupSize();
+        const std::uint32_t size = kernel.workgroupSize();
         return std::min((items + size - 1) / size,
                         mContext.properties().limits.maxComputeWorkGroupCount[0]);
     };
     params.stage = RENDER_VOLUME_STAGE_LIGHT;
     params.itemCount = params.cellsX * params.cellsY;
-    sequence.dispatch(mKernel, buffers, params, groups(params.itemCount));
+    sequence.dispatch(kernel, buffers, params, groups(params.itemCount));
     params.stage = RENDER_VOLUME_STAGE_IMAGE;
     params.itemCount = params.width * params.height;
-    sequence.dispatch(mKernel, buffers, params, groups(params.itemCount));
+    sequence.dispatch(kernel, buffers, params, groups(params.itemCount));
 }
 
 Image VolumeRenderer::picture() const {
@@ -96,8 +115,9 @@ Image VolumeRenderer::picture() const {
     return unpackImage(words, mWidth, mHeight);
 }
 
-Image VolumeRenderer::render(const DeviceBuffer& density, float densityScale) {
-    record(mSequence, density, densityScale);
+Image VolumeRenderer::render(const DeviceBuffer& density, float densityScale,
+                             const DeviceBuffer* flame, float flameScale) {
+    record(mSequence, density, densityScale, 1, {}, flame, flameScale);
     mSequence.submitAndWait();
     return picture();
 }

@@ -7,6 +7,7 @@
 /// (e.g. SmokeState::density()), read as one float per smoke cell, so nothing is copied.
 
 #include <cstdint>
+#include <optional>
 #include <span>
 
 #include "engine/core/MacGrid.h"
@@ -31,18 +32,21 @@ public:
 
     /// Renders `density` (at least one float per smoke cell) with `densityScale`, the optical
     /// depth across the box's largest side at density 1: records both passes, submits, waits and
-    /// reads the picture back.
-    /// @throw modeflow::Error when the buffer is too small, the scale is negative or not finite,
-    ///        or the submission fails.
-    Image render(const vulkan::DeviceBuffer& density, float densityScale);
+    /// reads the picture back. `flame` (one float per smoke cell; null: none) glows with
+    /// `flameScale` (RenderVolumeParams.h).
+    /// @throw modeflow::Error when a buffer is too small, a scale is negative or not finite, or
+    ///        the submission fails.
+    Image render(const vulkan::DeviceBuffer& density, float densityScale,
+                 const vulkan::DeviceBuffer* flame = nullptr, float flameScale = 0.0f);
 
     /// Records both passes into `sequence` (to share a submission with a simulation step, after
     /// the step's dispatches); picture() reads the result once the sequence was submitted.
     /// `densityStride`: floats from one cell's density to the next (2 reads the density of
-    /// SmokeState::fields() in place).
+    /// SmokeState::fields() in place); `flame` as in render() (e.g. SmokeState::second(Fuel)).
     void record(vulkan::CommandSequence& sequence, const vulkan::DeviceBuffer& density,
                 float densityScale, std::uint32_t densityStride = 1,
-                const VolumeCamera& camera = {}) const;
+                const VolumeCamera& camera = {}, const vulkan::DeviceBuffer* flame = nullptr,
+                float flameScale = 0.0f) const;
     /// The picture of the last submitted record(). After the submission's fence only.
     Image picture() const;
     /// The picture on the device: width × height packed RGBA8 words (red in the low byte), rows
@@ -58,6 +62,8 @@ private:
     int mWidth;
     int mHeight;
     vulkan::ComputeKernel mKernel;
+    /// render_volume's flame variant, made when a picture first glows.
+    mutable std::optional<vulkan::ComputeKernel> mFlameKernel;
     vulkan::DeviceBuffer mMask;
     vulkan::DeviceBuffer mExtinction;
     vulkan::DeviceBuffer mDepth;

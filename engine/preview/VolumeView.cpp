@@ -93,4 +93,11 @@ shaders::RenderVolumeParams volumeViewParams(const MacGrid& grid, int width, int
     return p;
 }
 
+float checkedFlameScale(float flameScale) {
+    if (!(flameScale >= 0.0f) || !std::isfinite(flameScale))
+        throw Error("3D preview: flame scale " + std::to_string(flameScale) +
+                    " is negative or not finite");
+    return flameScale;
+}
+
 }  // namespace modeflow::preview

@@ -30,4 +30,8 @@ shaders::RenderVolumeParams volumeViewParams(const MacGrid& smokeGrid, int width
                                              float densityScale, const VolumeCamera& camera = {},
                                              std::uint32_t densityStride = 1);
 
+/// `flameScale` (a flame's glow per unit t at flame 1: RenderVolumeParams.h), checked.
+/// @throw modeflow::Error when it is negative or not finite.
+float checkedFlameScale(float flameScale);
+
 }  // namespace modeflow::preview

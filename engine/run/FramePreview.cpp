@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "engine/preview/ContactSheet.h"
 #include "engine/preview/ParticleDots.h"
@@ -17,6 +18,9 @@ namespace modeflow {
 namespace {
 
 constexpr int kVolumeSize = 512;
+/// The glow of the largest flame per unit of the box's largest side: a ray through a tenth of
+/// the box at that flame gathers 0.8, a bright flame.
+constexpr double kFlameGlow = 8.0;
 
 /// The 99th percentile of the positive densities (0 without smoke): bright enough to read as
 /// smoke, whatever the scene's emission rates, without a few dense cells setting the exposure.
@@ -48,28 +52,40 @@ void FramePreview::write(const std::filesystem::path& file, const SmokeFields& s
     // compare (a per-picture exposure would make every frame look alike).
     mExposure = std::max(mExposure, densityPercentile(smoke.density));
     const double exposure = mExposure > 0.0 ? std::max(mExposure, 1e-6) : 1.0;
+    // Flames likewise: the largest so far glows fully.
+    for (const double f : smoke.flame) mFlame = std::max(mFlame, std::isfinite(f) ? f : 0.0);
+    const bool glows = mFlame > 0.0;
     preview::Image picture;
     if (mGrid.dim == 2) {
         preview::Smoke2DOptions options;
         options.densityScale = exposure;
+        if (glows) options.flameScale = mFlame;
         picture = preview::renderSmoke2D(
             mGrid, std::span<const double>(smoke.density),
             temperature ? std::span<const double>(smoke.temperature) : std::span<const double>(),
-            mMask, options);
+            smoke.flame, mMask, options);
         preview::drawParticles2D(picture, mGrid,
                                  preview::pixelsPerCell(mGrid.cells[0], options.targetWidth),
                                  particles.position);
     } else {
         const std::vector<float> density(smoke.density.begin(), smoke.density.end());
+        const std::vector<float> flame =
+            glows ? std::vector<float>(smoke.flame.begin(), smoke.flame.end())
+                  : std::vector<float>();
         // Optical depth 6 across the box at the exposure density.
         const float scale = float(6.0 / exposure);
+        const float glow = glows ? float(kFlameGlow / mFlame) : 0.0f;
         if (mRenderer) {
             const vulkan::DeviceBuffer buffer =
                 vulkan::DeviceBuffer::fromValues<float>(*mContext, density, "preview density");
-            picture = mRenderer->render(buffer, scale);
+            const std::optional<vulkan::DeviceBuffer> flameBuffer =
+                glows ? std::optional(vulkan::DeviceBuffer::fromValues<float>(*mContext, flame,
+                                                                              "preview flame"))
+                      : std::nullopt;
+            picture = mRenderer->render(buffer, scale, flameBuffer ? &*flameBuffer : nullptr, glow);
         } else {
             picture = preview::renderVolumeReference(mGrid, density, mMask, kVolumeSize,
-                                                     kVolumeSize, scale);
+                                                     kVolumeSize, scale, flame, glow);
         }
         preview::drawParticles3D(picture, mGrid,
                                  preview::volumeViewParams(mGrid, kVolumeSize, kVolumeSize, scale),

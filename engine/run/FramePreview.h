@@ -5,7 +5,8 @@
 /// as dots over it) and a
 /// contact sheet of them at the end, made from the files (so it covers a resumed run's earlier
 /// frames too, and memory stays flat however many previews a run writes). The exposure is the
-/// run's: the largest 99th-percentile density of the pictures so far.
+/// run's: the largest 99th-percentile density of the pictures so far; with fire, flames glow,
+/// the largest flame so far fully.
 
 #include <cstddef>
 #include <filesystem>
@@ -43,6 +44,7 @@ private:
     std::unique_ptr<preview::VolumeRenderer> mRenderer;
     const vulkan::VulkanContext* mContext;
     double mExposure = 0.0;  ///< the largest 99th-percentile density of the pictures so far
+    double mFlame = 0.0;     ///< the largest flame of the pictures so far: full glow
 };
 
 /// The most previews a contact sheet shows (8 rows of 6).

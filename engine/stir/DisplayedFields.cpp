@@ -27,7 +27,8 @@ DisplayedFields::Uploaded& DisplayedFields::uploaded() {
             vulkan::DeviceBuffer(mContext, cells * 2 * sizeof(float), "displayed smoke"),
             vulkan::DeviceBuffer::fromValues<std::uint8_t>(mContext, mMask, "displayed smoke mask"),
             vulkan::DeviceBuffer(mContext, VkDeviceSize(mBasisGrid.faceTotal()) * sizeof(float),
-                                 "displayed face velocity")});
+                                 "displayed face velocity"),
+            vulkan::DeviceBuffer(mContext, cells * sizeof(float), "displayed flame")});
     }
     return *mUploaded;
 }
@@ -44,8 +45,12 @@ display::FieldBuffers DisplayedFields::of(const Simulator& simulation, bool with
     // its fields over through the interface.
     if (const auto* onDevice = dynamic_cast<const device::Simulation*>(&simulation)) {
         const device::SmokeState& smoke = onDevice->smokeState();
-        return {smoke.fields(), smoke.mask(), onDevice->faceVelocityBuffer(), smoke.smokeGrid(),
-                smoke.basisGrid()};
+        return {smoke.fields(),
+                smoke.mask(),
+                onDevice->faceVelocityBuffer(),
+                smoke.smokeGrid(),
+                smoke.basisGrid(),
+                smoke.fire() ? &smoke.second(device::SmokePair::Fuel) : nullptr};
     }
     Uploaded& buffers = uploaded();
     const SmokeFields smoke = simulation.smoke();
@@ -58,6 +63,12 @@ display::FieldBuffers DisplayedFields::of(const Simulator& simulation, bool with
             pairs[2 * c + 1] = float(smoke.temperature[c]);
         }
     buffers.smoke.upload<float>(pairs);
+    if (!smoke.flame.empty()) {
+        std::vector<float> flame(smoke.flame.size(), 0.0f);
+        for (std::size_t c = 0; c < flame.size(); ++c)
+            if (mMask[c]) flame[c] = float(smoke.flame[c]);
+        buffers.flame.upload<float>(flame);
+    }
     if (withVelocity) {
         const std::vector<double> faces = simulation.faceVelocity();
         if (faces.size() != std::size_t(mBasisGrid.faceTotal()))
@@ -67,7 +78,8 @@ display::FieldBuffers DisplayedFields::of(const Simulator& simulation, bool with
         const std::vector<float> narrow(faces.begin(), faces.end());
         buffers.faceVelocity.upload<float>(narrow);
     }
-    return {buffers.smoke, buffers.mask, buffers.faceVelocity, mSmokeGrid, mBasisGrid};
+    return {buffers.smoke, buffers.mask, buffers.faceVelocity,
+            mSmokeGrid,    mBasisGrid,   smoke.flame.empty() ? nullptr : &buffers.flame};
 }
 
 }  // namespace modeflow::stir

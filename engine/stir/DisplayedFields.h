@@ -36,7 +36,7 @@ public:
 private:
     /// The display-side buffers, made for the first simulation that needs them.
     struct Uploaded {
-        vulkan::DeviceBuffer smoke, mask, faceVelocity;
+        vulkan::DeviceBuffer smoke, mask, faceVelocity, flame;
     };
     Uploaded& uploaded();
 

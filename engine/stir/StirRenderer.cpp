@@ -14,6 +14,10 @@ namespace {
 
 /// 3D: optical depth across the box at density 1.
 constexpr float kOpticalDepth = 6.0f;
+/// Flames, fixed scales as the density's (a window's frames compare): 2D, the flame shown fully
+/// glowing; 3D, the glow per unit of the box's largest side at flame 1.
+constexpr float kFlameShown = 2.0f;
+constexpr float kFlameGlow = 4.0f;
 
 /// The paddle in the picture's source units, when paddle mode is on.
 display::PaddleOverlay paddleOverlay(const StirSession& session, const StirView& view) {
@@ -62,13 +66,15 @@ void StirRenderer::draw(const StirSession& session, const StirView& view,
     const display::FieldBuffers fields =
         mFields.of(session.simulation(), !mVolume && extras.arrows);
     if (mVolume) {
-        mVolume->record(mPicture.sequence(), fields.smoke, kOpticalDepth, 2, view.camera());
+        mVolume->record(mPicture.sequence(), fields.smoke, kOpticalDepth, 2, view.camera(),
+                        fields.flame, kFlameGlow);
         mPicture.kernels().recordPicture(
             mPicture.sequence(), mVolume->pictureBuffer(), mVolume->width(), mVolume->height(),
             paddleOverlay(session, view), mPicture.overlay(), target, mPicture.pixels());
     } else {
         display::Smoke2DLook look;
         look.hotScale = session.settings().simulatesTemperature() ? 1.0f : 0.0f;
+        look.flameScale = kFlameShown;
         look.paddle = paddleOverlay(session, view);
         look.arrows = extras.arrows;
         if (extras.arrows) {

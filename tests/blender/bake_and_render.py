@@ -3,8 +3,9 @@
     blender -b --factory-startup --python bake_and_render.py -- ADDON_FOLDER OUT_FOLDER DEVICE
 
 The factory cube becomes the domain, an icosphere the emitter and an animated cube the obstacle;
-the add-on bakes 10 frames, which must come back as a 10-frame Volume sequence holding `density`,
-and a Cycles render of the last frame must show the smoke against the empty background."""
+the emitter also feeds fuel that burns; the add-on bakes 10 frames, which must come back as a
+10-frame Volume sequence holding `density` and `flame`, and a Cycles render of the last frame must
+show the smoke against the empty background, glowing flame-coloured where it burns."""
 
 import os
 import shutil
@@ -37,6 +38,8 @@ domain.modeflow.device = device
 # Saved into this run's folder: the bake goes beside the .blend file (//modeflow_Cube).
 bpy.ops.wm.save_as_mainfile(filepath=os.path.join(out, "shot.blend"))
 emitter.modeflow.density = emitter.modeflow.temperature = 10.0
+emitter.modeflow.fuel = 10.0
+domain.modeflow.ignition = 0.5
 if bpy.ops.modeflow.bake() != {'FINISHED'}:
     fail("the bake did not finish")
 
@@ -51,7 +54,7 @@ if len(frames) != 10:
     fail(f"{len(frames)} frame files: {frames}")
 scene.frame_set(10)
 volume.grids.load()
-if "density" not in [grid.name for grid in volume.grids]:
+if not {"density", "fuel", "flame"} <= {grid.name for grid in volume.grids}:
     fail(f"grids {[grid.name for grid in volume.grids]}")
 
 def bake_log():
@@ -91,12 +94,28 @@ def render(path):
     bpy.ops.render.render(write_still=True)
     image = bpy.data.images.load(path)
     pixels = list(image.pixels)
-    return [sum(pixels[i:i + 3]) / 3.0 for i in range(0, len(pixels), 4)]
+    return [tuple(pixels[i:i + 3]) for i in range(0, len(pixels), 4)]
 
 
-with_smoke = render(os.path.join(out, "with_smoke.png"))
+def grey(pixels):
+    return [sum(p) / 3.0 for p in pixels]
+
+
+# The flame glows orange over the grey smoke: red above blue, which neither the smoke nor the
+# white background has.
+fiery = render(os.path.join(out, "with_smoke.png"))
+warmest = max(r - b for r, g, b in fiery)
+links = smoke.data.materials[0].node_tree.links
+for link in [link for link in links if link.to_socket.name == "Emission Strength"]:
+    links.remove(link)
+plain = render(os.path.join(out, "without_flame.png"))
+coolest = max(r - b for r, g, b in plain)
+with_smoke = grey(plain)
+print(f"red above blue: {warmest:.3f} with the flame's glow, {coolest:.3f} without")
+if warmest < 0.15 or warmest < coolest + 0.1:
+    fail("the render shows no flame")
 smoke.hide_render = True
-without = render(os.path.join(out, "empty.png"))
+without = grey(render(os.path.join(out, "empty.png")))
 background = sum(without) / len(without)
 changed = sum(1 for a, b in zip(with_smoke, without) if abs(a - b) > 0.1)
 darkest = min(with_smoke)

@@ -9,19 +9,11 @@
 #include <vector>
 
 #include "engine/simulation/Combustion.h"
+#include "tests/support/SmokeTestFields.h"
 #include "tests/support/ThrownMessage.h"
 
 namespace modeflow {
 namespace {
-
-FireSpec testFire() {
-    FireSpec fire;
-    fire.ignition = 1.0;
-    fire.burnRate = 3.0;
-    fire.heat = 2.0;
-    fire.smoke = 0.25;
-    return fire;
-}
 
 /// Four cells: cold, at the ignition, hot, hot but outside the fluid.
 SmokeFields fourCells() {
@@ -36,7 +28,7 @@ SmokeFields fourCells() {
 const std::vector<std::uint8_t> kMask{1, 1, 1, 0};
 
 TEST(Combustion, OnlyFuelHotterThanTheIgnitionBurnsAtTheExactFirstOrderRate) {
-    const FireSpec fire = testFire();
+    const FireSpec fire = testing::testFire();
     SmokeFields f = fourCells();
     const double dt = 0.1;
     burn(fire, kMask, dt, f);
@@ -55,7 +47,7 @@ TEST(Combustion, OnlyFuelHotterThanTheIgnitionBurnsAtTheExactFirstOrderRate) {
 }
 
 TEST(Combustion, FuelIsConservedIntoFlameAndTwoHalfStepsMakeOneStep) {
-    const FireSpec fire = testFire();
+    const FireSpec fire = testing::testFire();
     SmokeFields whole = fourCells(), halves = fourCells();
     burn(fire, kMask, 0.2, whole);
     double flameTimesDt = 0.0;
@@ -74,7 +66,7 @@ TEST(Combustion, FuelIsConservedIntoFlameAndTwoHalfStepsMakeOneStep) {
 }
 
 TEST(Combustion, BadFieldsAndStepsAreRefused) {
-    const FireSpec fire = testFire();
+    const FireSpec fire = testing::testFire();
     SmokeFields f = fourCells();
     f.flame.clear();
     EXPECT_NE(testing::thrownMessage([&] { burn(fire, kMask, 0.1, f); }).find("fuel and flame"),

@@ -1,6 +1,7 @@
 /// @file DisplayKernelTest.cpp
 /// The stir window's 2D picture (DisplayKernels::recordSmoke2D, shaders/display_smoke_2d.comp)
-/// along periodic axes: the smoke is drawn across the seam and the box has no wall on that side.
+/// along periodic axes: the smoke is drawn across the seam and the box has no wall on that side;
+/// flames glow.
 
 #include <array>
 #include <cstdint>
@@ -30,9 +31,11 @@ MacGrid stripeGrid(bool periodicX) {
 }
 
 /// The picture of stripeGrid in a window of `width` × 80 pixels, its viewport 160 × 80 in the
-/// middle (20 pixels a cell): packed RGBA8 words, red in the low byte.
+/// middle (20 pixels a cell): packed RGBA8 words, red in the low byte; `flame` (per cell,
+/// empty: none) glows with `flameScale`.
 std::vector<std::uint32_t> drawStripe(const vulkan::VulkanContext& context, bool periodicX,
-                                      int width) {
+                                      int width, const std::vector<float>& flame = {},
+                                      float flameScale = 0.0f) {
     const MacGrid grid = stripeGrid(periodicX);
     std::vector<float> smoke(2 * std::size_t(grid.cellCount()), 0.0f);
     for (int y = 0; y < grid.cells[1]; ++y) smoke[2 * std::size_t(grid.cellIndex(7, y, 0))] = 1.0f;
@@ -51,8 +54,14 @@ std::vector<std::uint32_t> drawStripe(const vulkan::VulkanContext& context, bool
     target.viewport = Viewport::letterbox(width, 80, 2.0);
     const DisplayKernels kernels(context);
     vulkan::CommandSequence sequence(context);
-    kernels.recordSmoke2D(sequence, FieldBuffers{smokeBuffer, mask, velocity, grid, grid},
-                          Smoke2DLook{}, overlay, target, pixels);
+    const DeviceBuffer flameBuffer = DeviceBuffer::fromValues<float>(
+        context, flame.empty() ? std::vector<float>(1, 0.0f) : flame, "flame");
+    Smoke2DLook look;
+    look.flameScale = flameScale;
+    kernels.recordSmoke2D(sequence,
+                          FieldBuffers{smokeBuffer, mask, velocity, grid, grid,
+                                       flame.empty() ? nullptr : &flameBuffer},
+                          look, overlay, target, pixels);
     sequence.submitAndWait();
     std::vector<std::uint32_t> words(pixelCount);
     pixels.download<std::uint32_t>(words);
@@ -84,6 +93,24 @@ TEST_P(DisplayKernelTest, NoWallIsDrawnBesideAPeriodicAxis) {
     const std::size_t besideLeft = 40 * 200 + 18;
     EXPECT_EQ(red(drawStripe(context(), false, 200)[besideLeft]), wall);
     EXPECT_LT(red(drawStripe(context(), true, 200)[besideLeft]), wall - 30);
+}
+
+TEST_P(DisplayKernelTest, FlamesGlowInProportionToTheirScale) {
+    // A flame of 4 in the first column. Pixel 10 samples a fortieth of a cell right of its
+    // centre: a flame of 3.9, 0.975 of full glow at scale 4, half that at scale 8; without flame
+    // values, the smoke alone.
+    const MacGrid grid = stripeGrid(false);
+    std::vector<float> flame(std::size_t(grid.cellCount()), 0.0f);
+    for (int y = 0; y < grid.cells[1]; ++y) flame[std::size_t(grid.cellIndex(0, y, 0))] = 4.0f;
+    const std::size_t middle = 40 * 160 + 10;
+    const int background = int(DISPLAY_BACKGROUND_R * 255.0 + 0.5);
+    const int full = int(DISPLAY_FLAME_R * 255.0 + 0.5);
+    const auto glowing = [&](double fraction) {
+        return background + fraction * (full - background);
+    };
+    EXPECT_NEAR(red(drawStripe(context(), false, 160, flame, 4.0f)[middle]), glowing(0.975), 1.0);
+    EXPECT_NEAR(red(drawStripe(context(), false, 160, flame, 8.0f)[middle]), glowing(0.4875), 1.0);
+    EXPECT_EQ(red(drawStripe(context(), false, 160)[middle]), background);
 }
 
 INSTANTIATE_TEST_SUITE_P(Vulkan, DisplayKernelTest, ::testing::Bool(), testing::validationName);

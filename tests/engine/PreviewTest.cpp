@@ -174,7 +174,7 @@ struct Disk2D {
 
 TEST(SmokeImage2DTest, BrightBlobDarkFluidWallsOutsideAndYUp) {
     const Disk2D s;
-    const Image image = preview::renderSmoke2D(s.g, s.density, {}, s.mask);
+    const Image image = preview::renderSmoke2D(s.g, s.density, {}, {}, s.mask);
     EXPECT_EQ(s.p, 8);
     EXPECT_EQ(image.width, 512);
     EXPECT_EQ(image.height, 512);
@@ -185,48 +185,83 @@ TEST(SmokeImage2DTest, BrightBlobDarkFluidWallsOutsideAndYUp) {
     EXPECT_EQ(image.pixel(0, 0), palette::kWall);
     // y up: the blob at y = 0.45 is in the top half, at row (1 − 0.45) / 2 of the height.
     const double row = brightRowCentre(
-        image, preview::renderSmoke2D(s.g, std::vector<float>(s.density.size(), 0.0f), {}, s.mask));
+        image,
+        preview::renderSmoke2D(s.g, std::vector<float>(s.density.size(), 0.0f), {}, {}, s.mask));
     EXPECT_NEAR(row / image.height, (1.0 - 0.45) / 2.0, 0.02);
     preview::writePng(
         testing::artifactFolder() / "preview_2d.png",
-        preview::renderSmoke2D(s.g, s.density, blob(s.g, 0.2, 0.5, 0.0, 0.12, 2.0), s.mask));
+        preview::renderSmoke2D(s.g, s.density, blob(s.g, 0.2, 0.5, 0.0, 0.12, 2.0), {}, s.mask));
 }
 
 TEST(SmokeImage2DTest, TemperatureTintsWarmAndFixedScaleSetsExposure) {
     const Disk2D s;
     const std::vector<float> hot(s.density.size(), 1.0f);
-    const Rgba plain = s.at(preview::renderSmoke2D(s.g, s.density, {}, s.mask), 0.1, 0.45);
-    const Rgba warm = s.at(preview::renderSmoke2D(s.g, s.density, hot, s.mask), 0.1, 0.45);
+    const Rgba plain = s.at(preview::renderSmoke2D(s.g, s.density, {}, {}, s.mask), 0.1, 0.45);
+    const Rgba warm = s.at(preview::renderSmoke2D(s.g, s.density, hot, {}, s.mask), 0.1, 0.45);
     EXPECT_LE(plain[0], plain[2]);               // white-blue
     EXPECT_GT(int(warm[0]) - int(warm[2]), 80);  // orange
     preview::Smoke2DOptions dim;
     dim.densityScale = 10.0;  // the blob's peak is 1: a tenth of full exposure
-    const Rgba faint = s.at(preview::renderSmoke2D(s.g, s.density, {}, s.mask, dim), 0.1, 0.45);
+    const Rgba faint = s.at(preview::renderSmoke2D(s.g, s.density, {}, {}, s.mask, dim), 0.1, 0.45);
     EXPECT_LT(brightness(faint), brightness(plain) / 2);
     EXPECT_GT(brightness(faint), brightness(palette::kBackground));
     // Doubles give the same picture as floats.
     const std::vector<double> asDouble(s.density.begin(), s.density.end());
-    EXPECT_EQ(preview::renderSmoke2D(s.g, asDouble, {}, s.mask).rgba,
-              preview::renderSmoke2D(s.g, s.density, {}, s.mask).rgba);
+    EXPECT_EQ(preview::renderSmoke2D(s.g, asDouble, {}, {}, s.mask).rgba,
+              preview::renderSmoke2D(s.g, s.density, {}, {}, s.mask).rgba);
+}
+
+TEST(SmokeImage2DTest, FlameGlowsOverTheSmokeInProportion) {
+    const Disk2D s;
+    std::vector<float> flame(s.density.size(), 0.0f);
+    const auto cellOf = [&](double x, double y) {
+        return std::size_t(
+            s.g.cellIndex(int((x + 1.0) / s.g.spacing[0]), int((y + 1.0) / s.g.spacing[1]), 0));
+    };
+    flame[cellOf(0.1, 0.45)] = 4.0f;  // in the smoke: the largest flame, full glow
+    flame[cellOf(0.0, -0.6)] = 1.0f;  // in clear air: a quarter glow
+    const Image image = preview::renderSmoke2D(s.g, s.density, {}, flame, s.mask);
+    EXPECT_EQ(s.at(image, 0.1, 0.45), palette::kFlame);
+    const Rgba faint = s.at(image, 0.0, -0.6);
+    for (int k = 0; k < 3; ++k)
+        EXPECT_NEAR(faint[k],
+                    palette::kBackground[k] + 0.25 * (palette::kFlame[k] - palette::kBackground[k]),
+                    1.0)
+            << k;
+    // A fixed scale: the same flame glows half as much at twice the scale.
+    preview::Smoke2DOptions fixed;
+    fixed.flameScale = 8.0;
+    const Rgba half =
+        s.at(preview::renderSmoke2D(s.g, s.density, {}, flame, s.mask, fixed), 0.0, -0.6);
+    EXPECT_LT(brightness(half), brightness(faint));
+    EXPECT_GT(brightness(half), brightness(palette::kBackground));
+    // Without flame the picture is the smoke's alone.
+    EXPECT_EQ(
+        preview::renderSmoke2D(s.g, s.density, {}, std::vector<float>(flame.size(), 0.0f), s.mask)
+            .rgba,
+        preview::renderSmoke2D(s.g, s.density, {}, {}, s.mask).rgba);
+    fixed.flameScale = -1.0;
+    EXPECT_THROW(preview::renderSmoke2D(s.g, s.density, {}, flame, s.mask, fixed), Error);
+    EXPECT_THROW(preview::renderSmoke2D(s.g, s.density, {}, std::vector<float>(3), s.mask), Error);
 }
 
 TEST(SmokeImage2DTest, CellsKeepTheirShape) {
     MacGrid g = grid(2, 32);
     g.cells[1] = 8;
     g.spacing[1] = 2.0 * g.spacing[0];  // cells twice as tall as wide
-    const Image image = preview::renderSmoke2D(g, std::vector<float>(32 * 8, 0.0f), {}, {});
+    const Image image = preview::renderSmoke2D(g, std::vector<float>(32 * 8, 0.0f), {}, {}, {});
     EXPECT_EQ(image.width, 512);
     EXPECT_EQ(image.height, 8 * 32);
 }
 
 TEST(SmokeImage2DTest, RejectsWrongGridsSizesAndOptions) {
     const Disk2D s;
-    EXPECT_THROW(preview::renderSmoke2D(grid(3, 4), std::vector<float>(64), {}, {}), Error);
-    EXPECT_THROW(preview::renderSmoke2D(s.g, std::vector<float>(10), {}, s.mask), Error);
-    EXPECT_THROW(preview::renderSmoke2D(s.g, s.density, std::vector<float>(3), s.mask), Error);
+    EXPECT_THROW(preview::renderSmoke2D(grid(3, 4), std::vector<float>(64), {}, {}, {}), Error);
+    EXPECT_THROW(preview::renderSmoke2D(s.g, std::vector<float>(10), {}, {}, s.mask), Error);
+    EXPECT_THROW(preview::renderSmoke2D(s.g, s.density, std::vector<float>(3), {}, s.mask), Error);
     preview::Smoke2DOptions bad;
     bad.densityScale = 0.0;
-    EXPECT_THROW(preview::renderSmoke2D(s.g, s.density, {}, s.mask, bad), Error);
+    EXPECT_THROW(preview::renderSmoke2D(s.g, s.density, {}, {}, s.mask, bad), Error);
 }
 
 // ------------------------------------------------------------------------------ contact sheet
@@ -369,6 +404,53 @@ TEST_P(VolumePreviewTest, DeviceEqualsTheCpuReference) {
         EXPECT_LE(d.overTwo, 0.005);
         EXPECT_LE(d.maxAbs, 16);
     }
+}
+
+TEST_P(VolumePreviewTest, FlamesGlowOnTheDeviceAsOnTheCpuReference) {
+    // A flame low in the smoke: it glows orange (red well above blue) where it shows, dimmed by
+    // the smoke in front; without flame values nothing glows; device = CPU reference.
+    const MacGrid g = grid(3, 24);
+    const std::vector<std::uint8_t> mask = ballMask(g, 0.85);
+    const std::vector<float> density = blob(g, 0.0, 0.0, 0.2, 0.4, 1.0);
+    const std::vector<float> flame = blob(g, 0.0, 0.0, -0.3, 0.25, 4.0);
+    const float glow = 2.0f;
+    {
+        preview::VolumeRenderer renderer(context(), g, mask, 120, 90);
+        const vulkan::DeviceBuffer densityBuffer =
+            vulkan::DeviceBuffer::fromValues<float>(context(), density, "density");
+        const vulkan::DeviceBuffer flameBuffer =
+            vulkan::DeviceBuffer::fromValues<float>(context(), flame, "flame");
+        const Image device = renderer.render(densityBuffer, 12.0f, &flameBuffer, glow);
+        const Image reference =
+            preview::renderVolumeReference(g, density, mask, 120, 90, 12.0f, flame, glow);
+        const PixelDifference d = compare(device, reference);
+        std::cout << "flame: max channel difference " << d.maxAbs
+                  << ", pixels over 2: " << 100 * d.overTwo << "%\n";
+        EXPECT_LE(d.overTwo, 0.005);
+        EXPECT_LE(d.maxAbs, 16);
+        const Image plain = preview::renderVolumeReference(g, density, mask, 120, 90, 12.0f);
+        int warmest = 0, warmestPlain = 0;
+        for (int y = 0; y < 90; ++y)
+            for (int x = 0; x < 120; ++x) {
+                warmest = std::max(warmest,
+                                   int(reference.pixel(x, y)[0]) - int(reference.pixel(x, y)[2]));
+                warmestPlain =
+                    std::max(warmestPlain, int(plain.pixel(x, y)[0]) - int(plain.pixel(x, y)[2]));
+            }
+        std::cout << "red above blue: " << warmest << " with flame, " << warmestPlain
+                  << " without\n";
+        EXPECT_GT(warmest, 60);
+        EXPECT_LT(warmestPlain, 30);
+        // No flame buffer: the picture without glow.
+        EXPECT_EQ(compare(renderer.render(densityBuffer, 12.0f), plain).maxAbs <= 16, true);
+        EXPECT_THROW(renderer.render(densityBuffer, 12.0f, &flameBuffer, -1.0f), Error);
+        const vulkan::DeviceBuffer small = vulkan::DeviceBuffer::fromValues<float>(
+            context(), std::vector<float>(10, 1.0f), "small flame");
+        EXPECT_THROW(renderer.render(densityBuffer, 12.0f, &small, glow), Error);
+    }
+    EXPECT_THROW(preview::renderVolumeReference(g, density, mask, 120, 90, 12.0f,
+                                                std::vector<float>(10), glow),
+                 Error);
 }
 
 TEST_P(VolumePreviewTest, PeriodicAxesWrapOnTheDeviceAsOnTheCpuReference) {

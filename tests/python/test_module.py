@@ -73,6 +73,35 @@ def test_fields_equal_the_vdb_written_at_the_same_step(cache_dir, tmp_path, devi
     assert sim.time == pytest.approx(5 * 0.05)
 
 
+@pytest.mark.parametrize("device", ["cpu", "vulkan"])
+def test_a_fire_gives_fuel_and_flame_as_written(cache_dir, tmp_path, device):
+    # The plume's source also feeds fuel that burns above 0.3: the flame is the fuel burned per
+    # unit time; both arrays are the VDB's grids. Without [fire] they are None.
+    plain = modeflow.Simulation(modeflow.Scene.from_toml(SCENE_TOML), device=device,
+                                cache_dir=str(cache_dir))
+    assert plain.fuel is None and plain.flame is None
+    fiery = SCENE_TOML.replace("temperature = 4.0\n", "temperature = 4.0\nfuel = 3.0\n") + (
+        "\n[fire]\nignition = 0.3\nburn_rate = 2.0\n")
+    sim = modeflow.Simulation(modeflow.Scene.from_toml(fiery), device=device,
+                              cache_dir=str(cache_dir))
+    sim.step(5)
+    sim.write_vdb(tmp_path / "fire.vdb")
+    fuel, flame = sim.fuel, sim.flame
+    assert fuel.shape == (16, 16) and flame.shape == (16, 16)
+    assert flame.max() > 0.1 and fuel.min() >= 0.0 and flame.min() >= 0.0
+    # Burning at 2 per unit time where it is hot: the flame is twice the fuel left, to first
+    # order in dt (exactly 2 F e^{...} (1 - e^{-2 dt}) / (dt e^{-2 dt}) per cell).
+    hot = flame > 0.0
+    ratio = flame[hot] / fuel[hot]
+    expected = np.expm1(2.0 * sim.dt) / sim.dt
+    np.testing.assert_allclose(ratio, expected, rtol=1e-4)
+    for name, ours in (("fuel", fuel), ("flame", flame)):
+        written = dense(vdb_grid(tmp_path / "fire.vdb", name), (16, 16, 1))[..., 0]
+        ours = ours.astype(np.float32)
+        ours[np.abs(ours) < 1e-4] = 0.0
+        np.testing.assert_array_equal(ours, written)
+
+
 def test_errors_carry_the_cli_message(modeflow_bin, tmp_path):
     bad = tmp_path / "bad.toml"
     bad.write_text(SCENE_TOML.replace("velocity_modes = 12", "velocity_mode = 12"))

@@ -29,6 +29,15 @@ std::vector<std::uint8_t> ballMask(const MacGrid& grid, double radius) {
     });
 }
 
+FireSpec testFire() {
+    FireSpec fire;
+    fire.ignition = 1.0;
+    fire.burnRate = 3.0;
+    fire.heat = 2.0;
+    fire.smoke = 0.25;
+    return fire;
+}
+
 std::vector<std::uint8_t> wholeMask(const MacGrid& grid) {
     return std::vector<std::uint8_t>(std::size_t(grid.cellCount()), 1);
 }

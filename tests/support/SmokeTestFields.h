@@ -38,6 +38,9 @@ std::vector<std::uint8_t> ballMask(const MacGrid& grid, double radius);
 
 std::vector<std::uint8_t> wholeMask(const MacGrid& grid);
 
+/// The fire of the burn tests: ignition 1, burn rate 3, heat 2, smoke 0.25.
+FireSpec testFire();
+
 /// A Gaussian bump of height 1 and width σ around `centre` (at the minimum-image distance along
 /// periodic axes, so a bump near the seam continues across it).
 std::vector<double> gaussianBlob(const MacGrid& grid, const Vec3& centre, double sigma);

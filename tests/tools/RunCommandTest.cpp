@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -299,49 +300,63 @@ frames = 4
 steps_per_frame = 2
 )";
 
-TEST_F(RunCommand, AFireWritesFuelAndFlameGridsAndResumes) {
+TEST_F(RunCommand, AFireWritesFuelAndFlameGridsAndResumesOnBothBackends) {
     const fs::path s = scene("torch.toml", kTorch);
-    // The device does not burn fuel yet: refused before any work, naming the backend that does.
-    const RunResult refused = simulate(s, mDir / "device");
-    EXPECT_NE(refused.status, 0);
-    EXPECT_NE(refused.err.find("[fire] (fuel and flame) runs on the CPU reference only"),
-              std::string::npos)
-        << refused.err;
-
-    const fs::path whole = mDir / "whole", parts = mDir / "parts";
-    const RunResult r = simulate(s, whole, "--device cpu");
-    ASSERT_EQ(r.status, 0) << r.err;
-    const VdbFrameInfo info = readVdbFrameInfo(whole / "torch_0004.vdb");
-    for (const char* grid : {"density", "temperature", "fuel", "flame"}) {
-        ASSERT_NE(info.grid(grid), nullptr) << grid;
-        EXPECT_EQ(info.grid(grid)->gridClass, "fog volume") << grid;
-    }
-    // Fuel burns where it is hot: a flame in the torch, and no cell holds more fuel than four
-    // frames of the source's rate with nothing burnt.
     const std::vector<Vec3> centres = smokeCentres();
-    const auto fuel = sampleVdbGrid(whole / "torch_0004.vdb", "fuel", centres);
-    const auto flame = sampleVdbGrid(whole / "torch_0004.vdb", "flame", centres);
-    double mostFlame = 0.0, mostFuel = 0.0;
-    for (std::size_t c = 0; c < centres.size(); ++c) {
-        // A scalar grid's sample is its value in x.
-        mostFlame = std::max(mostFlame, flame[c].value[0]);
-        mostFuel = std::max(mostFuel, fuel[c].value[0]);
-        EXPECT_GE(fuel[c].value[0], 0.0) << c;
-        EXPECT_GE(flame[c].value[0], 0.0) << c;
-    }
-    EXPECT_GT(mostFlame, 0.1);
-    EXPECT_GT(mostFuel, 0.0);
-    EXPECT_LT(mostFuel, 6.0 * 8 * 0.02);
+    std::map<std::string, std::vector<VdbSample>> cpuGrids;
+    for (const std::string device : {"--device cpu", "--device vulkan"}) {
+        const fs::path whole = mDir / ("whole" + device.substr(9)),
+                       parts = mDir / ("parts" + device.substr(9));
+        const RunResult r = simulate(s, whole, device);
+        ASSERT_EQ(r.status, 0) << device << ": " << r.err;
+        const VdbFrameInfo info = readVdbFrameInfo(whole / "torch_0004.vdb");
+        for (const char* grid : {"density", "temperature", "fuel", "flame"}) {
+            ASSERT_NE(info.grid(grid), nullptr) << grid;
+            EXPECT_EQ(info.grid(grid)->gridClass, "fog volume") << grid;
+        }
+        // Fuel burns where it is hot: a flame in the torch, and no cell holds more fuel than
+        // four frames of the source's rate with nothing burnt.
+        const auto fuel = sampleVdbGrid(whole / "torch_0004.vdb", "fuel", centres);
+        const auto flame = sampleVdbGrid(whole / "torch_0004.vdb", "flame", centres);
+        double mostFlame = 0.0, mostFuel = 0.0;
+        for (std::size_t c = 0; c < centres.size(); ++c) {
+            // A scalar grid's sample is its value in x.
+            mostFlame = std::max(mostFlame, flame[c].value[0]);
+            mostFuel = std::max(mostFuel, fuel[c].value[0]);
+            EXPECT_GE(fuel[c].value[0], 0.0) << device << " " << c;
+            EXPECT_GE(flame[c].value[0], 0.0) << device << " " << c;
+        }
+        EXPECT_GT(mostFlame, 0.1) << device;
+        EXPECT_GT(mostFuel, 0.0) << device;
+        EXPECT_LT(mostFuel, 6.0 * 8 * 0.02) << device;
 
-    // Stopped after frame 2 and resumed: the same fuel and flame, value for value.
-    ASSERT_EQ(simulate(s, parts, "--device cpu --frames 2").status, 0);
-    ASSERT_EQ(simulate(s, parts, "--device cpu --resume").status, 0);
-    EXPECT_EQ(testing::slurp(parts / "torch.resume"), testing::slurp(whole / "torch.resume"));
-    for (const char* grid : {"fuel", "flame", "temperature"}) {
-        const auto a = sampleVdbGrid(whole / "torch_0004.vdb", grid, centres);
-        const auto b = sampleVdbGrid(parts / "torch_0004.vdb", grid, centres);
-        for (std::size_t c = 0; c < centres.size(); ++c)
-            ASSERT_EQ(a[c].value, b[c].value) << grid << " cell " << c;
+        // The device burns as the CPU reference does, to float32's precision.
+        for (const char* grid : {"fuel", "flame", "temperature", "density"}) {
+            const auto values = sampleVdbGrid(whole / "torch_0004.vdb", grid, centres);
+            if (device == "--device cpu") {
+                cpuGrids[grid] = values;
+                continue;
+            }
+            double most = 0.0, difference = 0.0;
+            for (std::size_t c = 0; c < centres.size(); ++c) {
+                most = std::max(most, std::abs(cpuGrids[grid][c].value[0]));
+                difference =
+                    std::max(difference, std::abs(values[c].value[0] - cpuGrids[grid][c].value[0]));
+            }
+            EXPECT_LE(difference, 1e-4 * most) << grid;
+        }
+
+        // Stopped after frame 2 and resumed: the same fuel and flame, value for value.
+        ASSERT_EQ(simulate(s, parts, device + " --frames 2").status, 0) << device;
+        ASSERT_EQ(simulate(s, parts, device + " --resume").status, 0) << device;
+        EXPECT_EQ(testing::slurp(parts / "torch.resume"), testing::slurp(whole / "torch.resume"))
+            << device;
+        for (const char* grid : {"fuel", "flame", "temperature"}) {
+            const auto a = sampleVdbGrid(whole / "torch_0004.vdb", grid, centres);
+            const auto b = sampleVdbGrid(parts / "torch_0004.vdb", grid, centres);
+            for (std::size_t c = 0; c < centres.size(); ++c)
+                ASSERT_EQ(a[c].value, b[c].value) << device << " " << grid << " cell " << c;
+        }
     }
 }
 

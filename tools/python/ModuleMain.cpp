@@ -113,6 +113,10 @@ PYBIND11_MODULE(_modeflow, m) {
         .def_property_readonly("modal_velocity", &PythonSimulation::modalVelocity)
         .def_property_readonly("density", &PythonSimulation::density)
         .def_property_readonly("temperature", &PythonSimulation::temperature)
+        .def_property_readonly("fuel", &PythonSimulation::fuel,
+                               "The fuel per smoke cell with [fire], else None.")
+        .def_property_readonly("flame", &PythonSimulation::flame,
+                               "Fuel burned per unit time per smoke cell with [fire], else None.")
         .def_property_readonly("velocity", &PythonSimulation::velocity)
         .def("add_splat", &PythonSimulation::addSplat, py::arg("center"), py::arg("radius"),
              py::arg("force"))

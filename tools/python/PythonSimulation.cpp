@@ -163,6 +163,16 @@ py::array_t<double> PythonSimulation::temperature() const {
     return cellValues(mSimulator->smokeGrid(), mSimulator->smoke().temperature);
 }
 
+std::optional<py::array_t<double>> PythonSimulation::fuel() const {
+    if (!mSimulator->settings().fire) return std::nullopt;
+    return cellValues(mSimulator->smokeGrid(), mSimulator->smoke().fuel);
+}
+
+std::optional<py::array_t<double>> PythonSimulation::flame() const {
+    if (!mSimulator->settings().fire) return std::nullopt;
+    return cellValues(mSimulator->smokeGrid(), mSimulator->smoke().flame);
+}
+
 py::array_t<double> PythonSimulation::velocity() const {
     const MacGrid& smoke = mSimulator->smokeGrid();
     const std::vector<double> faces = mSimulator->faceVelocity();

@@ -46,6 +46,10 @@ public:
     /// One value per smoke cell, indexed [i, j] or [i, j, k] (x first: the VDB's ijk).
     pybind11::array_t<double> density() const;
     pybind11::array_t<double> temperature() const;
+    /// With [fire], the fuel and the flame (fuel burned per unit time) as density(); without,
+    /// None.
+    std::optional<pybind11::array_t<double>> fuel() const;
+    std::optional<pybind11::array_t<double>> flame() const;
     /// The velocity at the smoke cell centres (as the VDB's `vel`), the last axis the component.
     pybind11::array_t<double> velocity() const;
 

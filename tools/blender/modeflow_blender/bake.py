@@ -48,6 +48,9 @@ def find_domain(context):
     return None
 
 
+FLAME_COLOUR = (1.0, 0.45, 0.08, 1.0)
+
+
 def smoke_material():
     material = bpy.data.materials.get("modeflow smoke")
     if material is not None:
@@ -60,8 +63,15 @@ def smoke_material():
     volume.inputs["Density"].default_value = 5.0
     # It reads the grids by name: "density" and "temperature" are its defaults.
     volume.inputs["Density Attribute"].default_value = "density"
+    # Flames glow: the `flame` grid (fuel burned per unit time; 0 without [fire]) drives the
+    # emission, in a flame's colour.
+    flame = nodes.new("ShaderNodeAttribute")
+    flame.attribute_name = "flame"
+    volume.inputs["Emission Color"].default_value = FLAME_COLOUR
     output = nodes.new("ShaderNodeOutputMaterial")
-    material.node_tree.links.new(volume.outputs["Volume"], output.inputs["Volume"])
+    links = material.node_tree.links
+    links.new(flame.outputs["Fac"], volume.inputs["Emission Strength"])
+    links.new(volume.outputs["Volume"], output.inputs["Volume"])
     return material
 
 

@@ -27,11 +27,18 @@ class MODEFLOW_PT_physics(bpy.types.Panel):
             row.prop(settings, "frame_end")
             layout.prop(settings, "buoyancy")
             layout.prop(settings, "integrator")
+            fire = layout.column(align=True)
+            fire.label(text="Fire (with an emitter's fuel)")
+            fire.prop(settings, "ignition")
+            fire.prop(settings, "burn_rate")
+            fire.prop(settings, "heat")
+            fire.prop(settings, "smoke")
             layout.prop(settings, "device")
             layout.operator("modeflow.bake", icon='PHYSICS')
         elif settings.role == 'EMITTER':
             layout.prop(settings, "density")
             layout.prop(settings, "temperature")
+            layout.prop(settings, "fuel")
 
 
 def register():

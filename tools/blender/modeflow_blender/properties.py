@@ -36,6 +36,13 @@ class ModeflowObjectSettings(bpy.types.PropertyGroup):
                ('EXPLICIT', "Explicit", "")],
         default='MIDPOINT',
     )
+    # Fire (written as [fire] when an emitter feeds fuel)
+    ignition: FloatProperty(name="Ignition", description="Temperature above which fuel burns", default=1.0)
+    burn_rate: FloatProperty(name="Burn Rate", description="Part of the fuel burnt per unit of time",
+                             default=4.0, min=0.001)
+    heat: FloatProperty(name="Heat", description="Temperature released per unit of fuel burnt", default=2.0)
+    smoke: FloatProperty(name="Smoke", description="Smoke released per unit of fuel burnt", default=0.5,
+                         min=0.0)
     device: EnumProperty(
         name="Device",
         items=[('vulkan', "Vulkan", "The first suitable Vulkan device (a GPU, else lavapipe)"),
@@ -45,6 +52,8 @@ class ModeflowObjectSettings(bpy.types.PropertyGroup):
     # Emitter
     density: FloatProperty(name="Density", description="Smoke emitted per unit of time", default=4.0, min=0.0)
     temperature: FloatProperty(name="Temperature", description="Heat emitted per unit of time", default=4.0)
+    fuel: FloatProperty(name="Fuel", description="Fuel emitted per unit of time (it burns where hot)",
+                        default=0.0, min=0.0)
 
 
 def register():

@@ -145,11 +145,16 @@ def scene_of(domain, context, folder):
         else:
             entry["density"] = obj.modeflow.density
             entry["temperature"] = obj.modeflow.temperature
+            if obj.modeflow.fuel > 0.0:
+                entry["fuel"] = obj.modeflow.fuel
             sources.append(entry)
     if obstacles:
         description["obstacle"] = obstacles
     if sources:
         description["source"] = sources
+    if any("fuel" in source for source in sources):
+        description["fire"] = {"ignition": settings.ignition, "burn_rate": settings.burn_rate,
+                               "heat": settings.heat, "smoke": settings.smoke}
     description["output"] = {"frames": last - first + 1, "steps_per_frame": STEPS_PER_FRAME}
     return description, last - first + 1
 
