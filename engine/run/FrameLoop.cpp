@@ -1,11 +1,13 @@
 #include "engine/run/FrameLoop.h"
 
+#include <chrono>
 #include <filesystem>
 #include <iostream>
 
 #include "engine/core/Error.h"
 #include "engine/core/SceneKeywords.h"
 #include "engine/dynamics/ModalDivergence.h"
+#include "engine/run/CheckpointSchedule.h"
 #include "engine/run/FramePreview.h"
 #include "engine/run/FrameWriter.h"
 
@@ -38,6 +40,8 @@ void runFrames(FramedRun& run, const FrameLoopOptions& o) {
     const SimulationSettings& settings = run.settings();
     FrameProgress bar(first, o.frames, settings.stepsPerFrame);
     FrameWriter writer(o.folder.checkpointPath(), bar);
+    CheckpointSchedule checkpoints(o.checkpointEvery, o.frames);
+    const auto begin = std::chrono::steady_clock::now();
     for (int frame = first + 1; frame <= o.frames; ++frame) {
         const std::string stage = "frame " + std::to_string(frame);
         FrameStats stats;
@@ -53,7 +57,12 @@ void runFrames(FramedRun& run, const FrameLoopOptions& o) {
             return run.readFrame(frame, picture ? pictureOf(frame) : std::filesystem::path(), bar);
         });
         output.checkpoint.runHash = o.runHash;
-        inRunStage(stage, o.memory, [&] { writer.start(std::move(output)); });
+        const double now =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+        const bool checkpoint = checkpoints.due(frame, now);
+        inRunStage(stage, o.memory, [&] { writer.start(std::move(output), checkpoint); });
+        // start() waited for the frame before: its checkpoint's cost is known now.
+        checkpoints.written(writer.lastCheckpointSeconds());
         std::string detail;
         if (stats.unconvergedSteps)
             detail += std::to_string(stats.unconvergedSteps) + " unconverged steps ";

@@ -1,9 +1,9 @@
 #pragma once
 /// @file FrameLoop.h
 /// The frame loop of `modeflow run` (and of every other composition root that writes frames):
-/// resume or a clean folder, then per frame the step, the frame file, the picture and the
-/// checkpoint, with progress on stderr; a contact sheet of the pictures at the end. The stir
-/// window has its loop beside it (engine/stir/StirApp.h).
+/// resume or a clean folder, then per frame the step, the frame file, the picture and, on
+/// CheckpointSchedule's frames, the checkpoint, with progress on stderr; a contact sheet of the
+/// pictures at the end. The stir window has its loop beside it (engine/stir/StirApp.h).
 
 #include <cstdint>
 #include <optional>
@@ -24,6 +24,9 @@ struct FrameLoopOptions {
     std::optional<Checkpoint> resumeFrom;  ///< readResumePoint's; empty: start afresh
     int previewEvery = 0;                  ///< a picture every this many frames; 0: none
     const RunMemory& memory;               ///< the estimate named when an allocation fails
+    /// A checkpoint every this many frames (and the last); empty: CheckpointSchedule's
+    /// automatic schedule.
+    std::optional<int> checkpointEvery = {};
 };
 
 /// The checkpoint of an interrupted run in `folder` when `resume` and there is one; empty

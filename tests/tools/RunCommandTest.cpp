@@ -2,11 +2,16 @@
 /// `modeflow run`: a scene in, OpenVDB frames out (read back with OpenVDB), resumable, and bad
 /// input refused before any work.
 
+#include <chrono>
 #include <cmath>
+#include <csignal>
 #include <cstdlib>
 #include <fstream>
+#include <iostream>
 #include <map>
+#include <random>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -586,6 +591,63 @@ TEST_F(RunCommand, ASecondRunIntoTheSameFolderIsRefused) {
     ::close(held);  // the first run ends: the folder is free again
     const RunResult after = simulate(s, out, "--frames 1");
     EXPECT_EQ(after.status, 0) << after.err;
+}
+
+TEST_F(RunCommand, RunsKilledAtRandomPointsResumeToTheUninterruptedFrames) {
+    // Checkpoints every 3 frames: a run killed anywhere resumes after the last multiple of 3 it
+    // checkpointed and writes the frames after it again, the same to the bit; killed twice
+    // (after a random frame file shows, then again) and resumed to the end, the folder holds what
+    // an uninterrupted run writes.
+    const fs::path s = scene("hot.toml", kHotDisk);
+    const fs::path whole = mDir / "whole", parts = mDir / "parts";
+    ASSERT_EQ(simulate(s, whole, "--frames 12 --checkpoint-every 3").status, 0);
+    std::mt19937 random(29);
+    std::string args = "--frames 12 --checkpoint-every 3";
+    for (int kill = 0; kill < 2; ++kill) {
+        const int seen = 2 + int(random() % 5) + 4 * kill;  // frame 2…6, then 6…10
+        const std::string command = "exec " + testing::cliPath() + " run " + s.string() +
+                                    " --out " + parts.string() + " --cache-dir " + mCache.string() +
+                                    " " + args + " >/dev/null 2>&1";
+        const pid_t child = ::fork();
+        ASSERT_GE(child, 0);
+        if (child == 0) {
+            ::execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
+            ::_exit(127);
+        }
+        const fs::path shows = parts / frameFileName("hot", seen);
+        int status = 0;
+        while (!fs::exists(shows) && ::waitpid(child, &status, WNOHANG) == 0)
+            std::this_thread::sleep_for(std::chrono::milliseconds(1));
+        ::kill(child, SIGKILL);
+        ::waitpid(child, &status, 0);
+        args += " --resume";
+        if (fs::exists(parts / "hot.resume")) {
+            const int frame = readCheckpoint(parts / "hot.resume").frame;
+            std::cout << "killed once frame " << seen << " showed: checkpoint of frame " << frame
+                      << "\n";
+            EXPECT_TRUE(frame % 3 == 0 || frame == 12) << "checkpoint of frame " << frame;
+        } else {
+            std::cout << "killed once frame " << seen << " showed: no checkpoint yet\n";
+        }
+    }
+    const RunResult resumed = simulate(s, parts, args);
+    ASSERT_EQ(resumed.status, 0) << resumed.err;
+    EXPECT_EQ(testing::slurp(parts / "hot.resume"), testing::slurp(whole / "hot.resume"));
+    const std::vector<Vec3> centres = smokeCentres();
+    for (int frame = 1; frame <= 12; ++frame) {
+        const std::string file = frameFileName("hot", frame);
+        for (const char* grid : {"density", "vel"}) {
+            const auto a = sampleVdbGrid(whole / file, grid, centres);
+            const auto b = sampleVdbGrid(parts / file, grid, centres);
+            for (std::size_t cell = 0; cell < centres.size(); ++cell)
+                ASSERT_EQ(a[cell].value, b[cell].value) << file << " " << grid << " " << cell;
+        }
+    }
+    // A count that is not one is refused before any work.
+    const RunResult zero = simulate(s, mDir / "zero", "--checkpoint-every 0");
+    EXPECT_NE(zero.status, 0);
+    EXPECT_NE(zero.err.find("--checkpoint-every"), std::string::npos) << zero.err;
+    EXPECT_FALSE(fs::exists(mDir / "zero" / "hot_0001.vdb"));
 }
 
 TEST_F(RunCommand, PartialFilesOfKilledRunsAreRemoved) {

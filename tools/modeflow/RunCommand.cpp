@@ -32,6 +32,7 @@ Command addRun(CLI::App& app) {
         bool half = false;
         bool preview = false;
         std::optional<int> previewEvery;
+        std::optional<int> checkpointEvery;
     };
     auto opts = std::make_shared<Options>();
     CLI::App* sub =
@@ -43,7 +44,12 @@ Command addRun(CLI::App& app) {
                     "output folder (default: NAME_frames beside the current folder)");
     sub->add_option("--device", opts->device, kDeviceOptionHelp);
     sub->add_flag("--resume", opts->resume,
-                  "continue an interrupted run from its last complete frame");
+                  "continue an interrupted run from its last checkpoint (the frames after it are "
+                  "written again, the same to the bit)");
+    sub->add_option("--checkpoint-every", opts->checkpointEvery,
+                    "write the resume checkpoint every K frames and after the last (default: as "
+                    "often as keeps it under 5% of the run's time)")
+        ->check(countUpTo(kMaxFrames));
     sub->add_flag("--half", opts->half, "store VDB values as 16-bit floats");
     sub->add_flag(
         "--preview", opts->preview,
@@ -87,7 +93,8 @@ Command addRun(CLI::App& app) {
             id.runHash,
             readResumePoint(folder, opts->resume, id.runHash),
             previews ? opts->previewEvery.value_or(std::max(1, frames / 24)) : 0,
-            checked.memory};
+            checked.memory,
+            opts->checkpointEvery};
         if (backend) std::cerr << backend->describe();
 
         Progress progress = Progress::toStderr();
