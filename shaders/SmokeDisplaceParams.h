@@ -15,6 +15,9 @@ using uint = std::uint32_t;
 #define SMOKE_DISPLACE_PUSH 1u   /* covered cells: where their smoke goes, stashed, then 0 */
 #define SMOKE_DISPLACE_GATHER 2u /* receiving cells: what their covered neighbours push to them */
 #define SMOKE_DISPLACE_ARGS 3u   /* the lists' stages' indirect dispatch arguments */
+#define SMOKE_DISPLACE_STASH                                           \
+    4u /* covered cells: a second pair's values stashed, then 0, to go \
+          where the push sent the first pair's (its target words) */
 /* A target word's low byte when a covered cell has no free neighbour: its smoke is removed. */
 #define SMOKE_DISPLACE_NOWHERE 255u
 /* A free cell's target word's low byte once it is listed to receive smoke in the substep. */

@@ -12,6 +12,8 @@
 //           marked with the stamp by an atomic exchange);
 //   gather: over the receivers' list: each adds what its covered neighbours pushed to it, in
 //           offset order (the sums do not depend on the lists' order).
+//   stash:  over the covered cells' list, after a push: a second pair of fields (fire's fuel and
+//           flame) stashed and held 0, bound for the targets the push chose; its gather follows.
 // Words carrying another substep's stamp are stale: nothing clears them between substeps. The
 // lists' stages loop grid-stride, so lists longer than one dispatch's groups are covered.
 #extension GL_GOOGLE_include_directive : require
@@ -100,6 +102,13 @@ void coverStage(uint cell, ivec3 p) {
     }
 }
 
+// A covered cell's values stashed for its target, and held 0.
+void stashStage(uint cell) {
+    stash[cell] = fields[cell];
+    fields[cell] = vec2(0.0);
+    temperature[cell] = 0.0;
+}
+
 void pushStage(uint cell, ivec3 p) {
     if (!isCovered(cell)) return;
     const ObstacleRecord solid = obstacleAt(params.firstRecord + (cover[cell] & 0xffu));
@@ -128,9 +137,7 @@ void pushStage(uint cell, ivec3 p) {
         const uint mark = (params.stamp << 8u) | SMOKE_DISPLACE_RECEIVES;
         if (atomicExchange(target[to], mark) != mark) receivers[atomicAdd(receiverCount, 1u)] = to;
     }
-    stash[cell] = fields[cell];
-    fields[cell] = vec2(0.0);
-    temperature[cell] = 0.0;
+    stashStage(cell);
 }
 
 void gatherStage(uint cell, ivec3 p) {
@@ -178,6 +185,9 @@ void main() {
     if (stage == SMOKE_DISPLACE_PUSH) {
         for (uint i = gl_GlobalInvocationID.x; i < coveredCount; i += stride)
             pushStage(covered[i], positionOf(covered[i]));
+    } else if (stage == SMOKE_DISPLACE_STASH) {
+        for (uint i = gl_GlobalInvocationID.x; i < coveredCount; i += stride)
+            stashStage(covered[i]);
     } else {
         for (uint i = gl_GlobalInvocationID.x; i < receiverCount; i += stride)
             gatherStage(receivers[i], positionOf(receivers[i]));

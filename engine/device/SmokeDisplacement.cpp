@@ -130,10 +130,10 @@ void SmokeDisplacement::record(vulkan::CommandSequence& sequence, SmokeState& st
         sequence.dispatchIndirect(mStages.with({SMOKE_DISPLACE_GATHER, kinds}), buffers, params,
                                   mWork, 16);
         if (state.fire()) {
-            // The fuel moves as the smoke did: the push finds the same targets (the lists and
-            // the dispatch arguments stand, every receiver already listed) and stashes the fuel.
+            // The fuel moves as the smoke did, to the targets the push chose (the lists and the
+            // dispatch arguments stand): stashed, then gathered.
             const auto fuel = buffersOf(SmokePair::Fuel);
-            sequence.dispatchIndirect(mStages.with({SMOKE_DISPLACE_PUSH, kinds}), fuel, params,
+            sequence.dispatchIndirect(mStages.with({SMOKE_DISPLACE_STASH, kinds}), fuel, params,
                                       mWork, 0);
             sequence.dispatchIndirect(mStages.with({SMOKE_DISPLACE_GATHER, kinds}), fuel, params,
                                       mWork, 16);

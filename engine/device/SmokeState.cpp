@@ -121,14 +121,15 @@ SmokeState::SmokeState(const vulkan::VulkanContext& context, const MacGrid& basi
           zeroBuffer(context, std::size_t(mBasis.faceTotal() + 3) / 4 * 32, "smoke face pairs")) {
     // Each pair's fields 0, its emitters' rates none yet.
     const auto cells = std::size_t(mSmoke.cellCount());
-    for (const std::string name : {"smoke", "fuel"}) {
-        if (name == "fuel" && !fire) break;
+    const auto addPair = [&](const std::string& name) {
         mPairs.push_back(
             {{zeroBuffer(context, cells * 8, name + " fields 0"),
               zeroBuffer(context, cells * 8, name + " fields 1")},
              zeroBuffer(context, cells * 4, name + " second field"),
              texelBuffer(context, cellList(mSmoke, mFluidIndex, {}), name + " fluid cells")});
-    }
+    };
+    addPair("smoke");
+    if (fire) addPair("fuel");
 }
 
 const SmokeState::Pair& SmokeState::at(SmokePair pair) const {
