@@ -28,6 +28,10 @@ struct MacGrid {
     std::array<double, 3> spacing{1.0, 1.0, 1.0};  ///< cell size per axis
     /// Per axis: the box wraps (at least 2 cells along it).
     std::array<bool, 3> periodic{false, false, false};
+    /// Per axis: the box's two sides across it let the air through (a wind blows along it,
+    /// engine/simulation/WindTransport.h): the faces there are no walls, and sampling reads the
+    /// velocity they carry.
+    std::array<bool, 3> flowThrough{false, false, false};
 
     static MacGrid fromSpec(const GridSpec& grid);
     /// The same box with `scale` cells per cell along each used axis (the smoke grid).
@@ -72,9 +76,9 @@ struct MacGrid {
         return faceIndex(axis, p[0], p[1], p[2]);
     }
     /// Whether the normal-`axis` faces at `position` are a wall of the box: positions 0 and n
-    /// along a non-periodic axis.
+    /// along a non-periodic axis the air does not flow through.
     bool isWallFace(int axis, int position) const {
-        return !periodic[axis] && (position == 0 || position == cells[axis]);
+        return !periodic[axis] && !flowThrough[axis] && (position == 0 || position == cells[axis]);
     }
     /// Bit a set when axis a is periodic: the `periodic` word of the device kernels' parameters.
     std::uint32_t periodicBits() const {

@@ -216,6 +216,14 @@ struct FireSpec {
     double smoke = 0.5;
 };
 
+/// `[wind]`: the air far from solids moves at `velocity`, entering through the grid box's upstream
+/// sides and leaving through its downstream ones (engine/README.md, "Wind"): a held base flow U
+/// under the modes, u = U + Σ v_k Ψ_k. Grid scenes whose domain is the whole box.
+struct WindSpec {
+    Vec3 velocity{0.0, 0.0, 0.0};
+    bool operator==(const WindSpec&) const = default;
+};
+
 /// `[forcing]`: velocity modes held at their initial amplitudes for the whole run. Held low modes
 /// keep feeding energy to the others, the forcing of turbulence studies (seed §6.4, Fig. 6.9).
 struct ForcingSpec {
@@ -272,6 +280,7 @@ struct SceneSpec {
     std::vector<ParticleSetSpec> particles;
     SmokeSpec smoke;
     std::optional<FireSpec> fire;  ///< none: no `[fire]`, no fuel
+    std::optional<WindSpec> wind;  ///< none: still air, sealed in the box
     ForcingSpec forcing;
     OutputSpec output;
 

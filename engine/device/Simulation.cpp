@@ -21,6 +21,8 @@ constexpr int kEasyStepsToHalve = 50;
 SimulationSettings supported(SimulationSettings settings) {
     if (settings.mhd && settings.fluid.alpha > 0.0)
         throw Error("simulation: LANS-alpha and MHD cannot be combined");
+    if (settings.wind || settings.fluid.linear)
+        throw Error("simulation: a wind ([wind]) runs on the CPU reference only");
     return settings;
 }
 

@@ -54,7 +54,19 @@ FluidSystem::FluidSystem(const StructuralCoefficients& coefficients, FluidParame
       mFiltered(parameters.alpha != 0.0),
       mMass(massOf(parameters, coefficients.size())),
       mDecay(decayRatesOf(parameters, coefficients.size())),
-      mHeld(std::move(parameters.held)) {}
+      mHeld(std::move(parameters.held)),
+      mLinear(std::move(parameters.linear)) {
+    if (mLinear && mLinear->size() != coefficients.size())
+        throw Error("fluid dynamics: a linear term over " + std::to_string(mLinear->size()) +
+                    " modes for " + std::to_string(coefficients.size()) + " modes");
+}
+
+void FluidSystem::addLinear(const Eigen::VectorXd& v, Eigen::VectorXd& out) const {
+    if (!mLinear) return;
+    Eigen::VectorXd dv;
+    mLinear->apply(v, dv);
+    out += dv;
+}
 
 void FluidSystem::rhs(const Eigen::VectorXd& v, Eigen::VectorXd& out) const {
     if (mFiltered) {
@@ -62,17 +74,20 @@ void FluidSystem::rhs(const Eigen::VectorXd& v, Eigen::VectorXd& out) const {
     } else {
         mCoefficients.apply(v, v, out);
     }
+    addLinear(v, out);
     for (const int k : mHeld) out[k] = 0.0;
 }
 
 void FluidSystem::frozenRhs(const Eigen::VectorXd& p, const Eigen::VectorXd& u,
                             Eigen::VectorXd& out) const {
-    // uᵀC(m, u) = 0 for any m (the k↔j antisymmetry), so L(p) conserves ½uᵀMu as R does.
+    // uᵀC(m, u) = 0 for any m (the k↔j antisymmetry), so L(p) changes ½uᵀMu as R does: by the
+    // linear term's uᵀDu alone.
     if (mFiltered) {
         mCoefficients.apply(mMass.cwiseProduct(p), u, out);
     } else {
         mCoefficients.apply(p, u, out);
     }
+    addLinear(u, out);
     for (const int k : mHeld) out[k] = 0.0;
 }
 
@@ -88,6 +103,10 @@ void FluidSystem::linearize(const Eigen::VectorXd& v, Eigen::VectorXd& out,
         mCoefficients.linearize(v, v, jac, byJ);
         out.noalias() = jac * v;
         jac += byJ;
+    }
+    if (mLinear) {
+        out.noalias() += mLinear->matrix() * v;
+        jac += mLinear->matrix();
     }
     for (const int k : mHeld) {
         out[k] = 0.0;
@@ -107,6 +126,7 @@ void FluidSystem::jacobianProduct(const Eigen::VectorXd& v, const Eigen::VectorX
         mCoefficients.apply(v, u, second);
     }
     out += second;
+    addLinear(u, out);
 }
 
 }  // namespace modeflow

@@ -9,11 +9,17 @@
 /// is the momentum m_k = (1 + α²κ_k²) v_k, forces act on m, and the energy ½Σ(1 + α²κ_i²)v_i² is
 /// conserved because vᵀ apply(m, v) = 0 by the k↔j antisymmetry — for the midpoint rule too, as the
 /// identity holds at the midpoint state. κ² may come in any order (frequency-shaped bases).
+///
+/// A linear term D v (a wind's advection of the modes, LinearModalTerm.h) joins the right-hand
+/// side: (1 + α²κ_k²) v̇_k = … + (D v)_k. The energy then changes by exactly h v̄ᵀ D v̄ a midpoint
+/// step (v̄ the midpoint state), what D's boundary puts in or takes out.
 
+#include <memory>
 #include <vector>
 
 #include <Eigen/Core>
 
+#include "engine/dynamics/LinearModalTerm.h"
 #include "engine/dynamics/ModalSystem.h"
 #include "engine/dynamics/StructuralCoefficients.h"
 
@@ -28,6 +34,8 @@ struct FluidParameters {
     /// 0-based modes held at their amplitudes ([forcing]): v̇_k = 0 and no viscous decay for
     /// them, while they keep acting on the others (a forcing that feeds energy in).
     std::vector<int> held{};
+    /// A constant linear term D v of the right-hand side (a wind), or none.
+    std::shared_ptr<const LinearModalTerm> linear{};
 };
 
 class FluidSystem final : public ModalSystem {
@@ -40,7 +48,8 @@ public:
     static Eigen::VectorXd decayRatesOf(const FluidParameters& parameters, int n);
 
     /// Keeps a reference to `coefficients`, which must outlive the system. Throws
-    /// modeflow::Error for negative parameters or a κ² list of the wrong length.
+    /// modeflow::Error for negative parameters, a κ² list of the wrong length, or a linear term
+    /// of another size than the coefficients.
     FluidSystem(const StructuralCoefficients& coefficients, FluidParameters parameters = {});
 
     int dimension() const override { return mCoefficients.size(); }
@@ -52,17 +61,21 @@ public:
     void jacobianProduct(const Eigen::VectorXd& v, const Eigen::VectorXd& u,
                          Eigen::VectorXd& out) const override;
     bool freezesRhs() const override { return true; }
-    /// L(p)·u = C(Mp, u), held modes' rows 0.
+    /// L(p)·u = C(Mp, u) + D u, held modes' rows 0.
     void frozenRhs(const Eigen::VectorXd& p, const Eigen::VectorXd& u,
                    Eigen::VectorXd& out) const override;
     bool formsJacobiansCheaply() const override { return mCoefficients.linearizesCheaply(); }
 
 private:
+    /// out += D v, when there is a linear term.
+    void addLinear(const Eigen::VectorXd& v, Eigen::VectorXd& out) const;
+
     const StructuralCoefficients& mCoefficients;
     bool mFiltered = false;  ///< α > 0, so the mass is not the identity
     Eigen::VectorXd mMass;
     Eigen::VectorXd mDecay;
     std::vector<int> mHeld;
+    std::shared_ptr<const LinearModalTerm> mLinear;
 };
 
 }  // namespace modeflow

@@ -37,7 +37,8 @@ public:
     /// engine/dynamics/ModalIntegrator.h).
     virtual bool freezesRhs() const { return false; }
     /// out = L(p)·u, the right-hand side with its first factor frozen at p: a linear operator in u
-    /// with L(x)·x = R(x) and uᵀL(p)u = 0 for every u. One contraction.
+    /// with L(x)·x = R(x) and uᵀL(p)u = 0 for every u (uᵀDu with a linear term D, FluidSystem.h).
+    /// One contraction.
     /// @throw modeflow::Error unless freezesRhs().
     virtual void frozenRhs(const Eigen::VectorXd& p, const Eigen::VectorXd& u,
                            Eigen::VectorXd& out) const;

@@ -12,14 +12,26 @@
 #include "engine/reference/VelocityReconstruction.h"
 #include "engine/simulation/Combustion.h"
 #include "engine/simulation/SmokeDisplacement.h"
+#include "engine/simulation/WindTransport.h"
 
 namespace modeflow::reference {
+namespace {
+
+/// `settings` with the wind's advection of the modes over `cache`'s basis as the fluid's linear
+/// term (made here, where the cache is known to outlive it).
+SimulationSettings withWind(SimulationSettings settings, const BasisCache& cache) {
+    if (settings.wind)
+        settings.fluid.linear = std::make_shared<WindTransport>(cache, *settings.wind);
+    return settings;
+}
+
+}  // namespace
 
 Simulation::Simulation(const BasisCache& cache, const StructuralCoefficients& coefficients,
                        SimulationSettings settings, std::vector<std::uint8_t> smokeMask)
     : mCache(cache),
       mBasis(cache),
-      mSettings(std::move(settings)),
+      mSettings(withWind(std::move(settings), cache)),
       mStepper(coefficients, mSettings),
       mAdvection(MacGrid::fromSpec(cache.grid), mSettings.smokeScale, std::move(smokeMask)),
       mDisplacement(mAdvection.smokeGrid(), mAdvection.fluidMask()),
@@ -29,6 +41,10 @@ Simulation::Simulation(const BasisCache& cache, const StructuralCoefficients& co
     if (!(mSettings.dt > 0.0)) throw Error("simulation: dt must be positive");
     if (mSettings.stepsPerFrame < 1) throw Error("simulation: steps per frame must be at least 1");
     setObstacles(mSettings.obstacles);
+    if (mSettings.wind) {
+        mAdvection.setWind(*mSettings.wind);
+        addWind(MacGrid::fromSpec(cache.grid), *mSettings.wind, mFaceVelocity);
+    }
     const auto cells = std::size_t(mAdvection.smokeGrid().cellCount());
     mFields.density.assign(cells, 0.0);
     mFields.temperature.assign(cells, 0.0);
@@ -83,6 +99,11 @@ void Simulation::setIntegrator(Integrator integrator) {
     mSettings.integrator = integrator;
 }
 
+void Simulation::reconstructAirVelocity() {
+    mFaceVelocity = reconstructFaceField(mBasis, velocity());
+    if (mSettings.wind) addWind(MacGrid::fromSpec(mCache.grid), *mSettings.wind, mFaceVelocity);
+}
+
 FrameStats Simulation::advanceSteps(int steps) {
     FrameStats stats;
     const double dt = mSettings.dt;
@@ -100,12 +121,13 @@ FrameStats Simulation::advanceSteps(int steps) {
         requireFiniteModalState(mStepper.state(), ++mStep, mTime + dt);
         stats.maxIterations = std::max(stats.maxIterations, report.iterations);
         stats.unconvergedSteps += report.converged ? 0 : 1;
-        mFaceVelocity = reconstructFaceField(mBasis, velocity());
+        reconstructAirVelocity();
         const std::vector<MovingObstacle> regions = mSettings.velocityRegions(mTime);
         if (!regions.empty()) {
+            // The solids hold the air's velocity, the wind's included, to their own.
             mStepper.correctVelocity(
                 -obstacleCorrection(mBasis, mFaceVelocity, regions, mTime + dt));
-            mFaceVelocity = reconstructFaceField(mBasis, velocity());
+            reconstructAirVelocity();
         }
         mAdvection.step(std::span<const double>(mFaceVelocity), dt, mSettings.advection,
                         activeEmitters(mSettings.emitters, mTime), mFields);

@@ -50,6 +50,9 @@ public:
     double time() const override { return mTime; }
 
 private:
+    /// mFaceVelocity = Ψ v, plus the wind.
+    void reconstructAirVelocity();
+
     const BasisCache& mCache;
     VelocityBasis mBasis;  ///< Ψ v and Ψᵀ q: the columns, or a closed-form basis's transforms
     SimulationSettings mSettings;

@@ -1,11 +1,13 @@
 #include "engine/reference/SmokeAdvection.h"
 
 #include <algorithm>
+#include <array>
 #include <limits>
 #include <string>
 
 #include "engine/core/Error.h"
 #include "engine/core/MacSampling.h"
+#include "engine/simulation/WindTransport.h"
 
 namespace modeflow::reference {
 namespace {
@@ -19,8 +21,21 @@ struct FluidSample {
     bool anyFluid = false;
 };
 
+/// The share of a sample at `gridPoint` that its in-box stencil gives: below 1 within a cell of
+/// an inflow side, where ghost cells beyond the side (centres half a cell out) hold the inflow's
+/// clean air and the trilinear weights reach them.
+double inBoxShare(const MacGrid& grid, const std::array<int, 3>& inflow, const Vec3& gridPoint) {
+    double share = 1.0;
+    for (int a = 0; a < grid.dim; ++a) {
+        if (inflow[a] < 0) share *= std::clamp(gridPoint[a] + 0.5, 0.0, 1.0);
+        if (inflow[a] > 0) share *= std::clamp(grid.cells[a] + 0.5 - gridPoint[a], 0.0, 1.0);
+    }
+    return share;
+}
+
 FluidSample sampleFluid(const MacGrid& grid, std::span<const std::uint8_t> mask,
-                        std::span<const double> field, const Vec3& gridPoint, double fallback) {
+                        std::span<const double> field, const Vec3& gridPoint, double fallback,
+                        const std::array<int, 3>& inflow) {
     const CellStencil stencil = cellStencil(grid, gridPoint);
     FluidSample sample;
     double sum = 0.0, weight = 0.0;
@@ -34,6 +49,12 @@ FluidSample sampleFluid(const MacGrid& grid, std::span<const std::uint8_t> mask,
         sample.anyFluid = true;
     }
     sample.value = weight > 0.0 ? sum / weight : fallback;
+    const double share = inBoxShare(grid, inflow, gridPoint);
+    if (share < 1.0) {  // the inflow's value is 0
+        sample.value *= share;
+        sample.lo = std::min(sample.lo, 0.0);
+        sample.hi = std::max(sample.hi, 0.0);
+    }
     return sample;
 }
 
@@ -46,6 +67,14 @@ SmokeAdvection::SmokeAdvection(const MacGrid& basisGrid, int scale,
       mSmoke(basisGrid.refined(scale)),
       mMask(std::move(fluidMask)) {
     requireCellField(mMask.size(), "the fluid mask");
+}
+
+void SmokeAdvection::setWind(const Vec3& wind) {
+    mBasis = withWindThrough(mBasis, wind);
+    for (int a = 0; a < 3; ++a)
+        mInflow[a] = a >= mSmoke.dim || mSmoke.periodic[a] || wind[a] == 0.0 ? 0
+                     : wind[a] > 0.0                                         ? -1
+                                                                             : 1;
 }
 
 void SmokeAdvection::requireCellField(std::size_t size, const char* what) const {
@@ -89,7 +118,8 @@ std::vector<double> SmokeAdvection::semiLagrangian(std::span<const double> field
     const auto cells = std::int64_t(field.size());
 #pragma omp parallel for schedule(static)
     for (std::int64_t c = 0; c < cells; ++c)
-        if (mMask[c]) result[c] = sampleFluid(mSmoke, mMask, field, traces[c], field[c]).value;
+        if (mMask[c])
+            result[c] = sampleFluid(mSmoke, mMask, field, traces[c], field[c], mInflow).value;
     return result;
 }
 
@@ -105,7 +135,7 @@ std::vector<double> SmokeAdvection::advectAlong(std::span<const double> field,
 #pragma omp parallel for schedule(static)
     for (std::int64_t c = 0; c < cells; ++c) {
         if (!mMask[c]) continue;
-        const FluidSample bounds = sampleFluid(mSmoke, mMask, field, back[c], field[c]);
+        const FluidSample bounds = sampleFluid(mSmoke, mMask, field, back[c], field[c], mInflow);
         const double corrected = forward[c] + 0.5 * (field[c] - backward[c]);
         result[c] = bounds.anyFluid ? std::clamp(corrected, bounds.lo, bounds.hi) : forward[c];
     }

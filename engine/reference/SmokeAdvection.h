@@ -18,6 +18,11 @@
 ///   φ̂ + (φ − φ̃)/2, clamped to the min and max of φ over the fluid cells of the forward trace's
 ///   stencil: second order where the field is smooth, and no new extrema where it is not.
 ///
+/// With a wind (setWind), the box's upstream sides let clean air in: ghost cells half a cell
+/// beyond them hold 0 and take their trilinear share of a trace that ends within a cell of the
+/// side (and of MacCormack's clamp range). Downstream, traces come from inside the box and the
+/// smoke leaves; the clamp to the box there is a zero-gradient outflow.
+///
 /// Cells outside Ω always come out exactly 0 (nothing leaks out of Ω). Emitters are applied
 /// after the advection. Backtraces run in smoke-grid units, as on the device, so both pick the
 /// same stencils where the velocity vanishes.
@@ -27,6 +32,7 @@
 /// it gains mass on features only a few cells wide (tests/engine/SmokeAdvectionTest.cpp
 /// measures both).
 
+#include <array>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -61,6 +67,10 @@ public:
     std::vector<double> advect(std::span<const double> velocity, std::span<const double> field,
                                double dt, AdvectionScheme scheme) const;
 
+    /// The wind blowing through the box ([wind]): the sides it crosses carry the velocity they
+    /// hold (MacGrid::flowThrough), and its upstream sides become inflows of clean air.
+    void setWind(const Vec3& wind);
+
     /// Σ concentration × smoke cell volume.
     double mass(std::span<const double> field) const;
 
@@ -78,6 +88,8 @@ private:
     int mScale;
     MacGrid mSmoke;
     std::vector<std::uint8_t> mMask;
+    /// Per axis, the inflow side: −1 the min side, +1 the max side, 0 none.
+    std::array<int, 3> mInflow{0, 0, 0};
 };
 
 }  // namespace modeflow::reference

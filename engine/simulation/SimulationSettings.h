@@ -30,6 +30,10 @@ struct SimulationSettings {
     int smokeScale = 1;     ///< smoke cells per basis cell and axis
     AdvectionScheme advection = AdvectionScheme::MacCormack;
     std::optional<FireSpec> fire;  ///< `[fire]`: fuel and flame are carried (Combustion.h)
+    /// `[wind]`: the base flow U under the modes (WindTransport.h): a simulation makes its
+    /// advection of the modes fluid.linear over its basis; grid velocities and smoke see U + Ψ v,
+    /// the smoke arriving clean upstream.
+    std::optional<Vec3> wind;
     ModePrecision basisPrecision = ModePrecision::Float32;  ///< device only
     std::vector<SmokeEmitter> emitters;
     std::vector<MovingObstacle> obstacles;
@@ -48,8 +52,8 @@ struct SimulationSettings {
     /// Frames then carry a temperature grid and pictures tint hot smoke.
     bool simulatesTemperature() const;
 
-    /// The scene's [simulation], [smoke], [[source]] and [output] values on this basis (both
-    /// backends run every one of them).
+    /// The scene's [simulation], [smoke], [[source]], [wind] and [output] values on this basis
+    /// (both backends run every one they take, BackendCapabilities.h).
     /// @throw modeflow::Error for more emitters or obstacles than the runtime takes.
     static SimulationSettings fromScene(const SceneSpec& scene, const BasisCache& cache);
 };

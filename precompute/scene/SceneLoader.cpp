@@ -98,6 +98,9 @@ SceneSpec readScene(std::string_view text, const std::filesystem::path& origin) 
                         "the scene lacks",
                         source.get("fuel"));
         }
+    if (const toml::table* t = reader.optionalTable(root, "wind")) {
+        scene.wind = readWind(reader, {*t, "[wind]"}, scene);
+    }
     if (const toml::table* t = reader.optionalTable(root, "forcing")) {
         const Section forcing{*t, "[forcing]"};
         scene.forcing = readForcing(reader, forcing);

@@ -19,7 +19,7 @@ using namespace keywords;
 
 inline constexpr std::string_view kTopLevelTables[] = {
     "grid",     "domain",    "surface", "basis", "simulation", "initial", "source",
-    "obstacle", "particles", "smoke",   "fire",  "forcing",    "output"};
+    "obstacle", "particles", "smoke",   "fire",  "wind",       "forcing", "output"};
 inline constexpr std::string_view kGridKeys[] = {"resolution", "bounds_min", "bounds_max",
                                                  "periodic"};
 inline constexpr std::string_view kSurfaceKeys[] = {"mesh"};
@@ -54,6 +54,7 @@ inline constexpr std::string_view kObstacleKeys[] = {
     "shape", "radius", "half_size", "axis", "file", "scale", "path", "sequence_rate", "rotation"};
 inline constexpr std::string_view kSmokeKeys[] = {"buoyancy", "resolution_scale", "advection"};
 inline constexpr std::string_view kFireKeys[] = {"ignition", "burn_rate", "heat", "smoke"};
+inline constexpr std::string_view kWindKeys[] = {"velocity"};
 inline constexpr std::string_view kForcingKeys[] = {"hold_modes", "hold_below_kappa"};
 inline constexpr std::string_view kOutputKeys[] = {"frames", "steps_per_frame"};
 inline constexpr std::string_view kSourceExtraKeys[] = {

@@ -69,6 +69,8 @@ ParticleSetSpec readParticleSet(const TomlReader& reader, const toml::table& tab
 ObstacleSpec readObstacle(const TomlReader& reader, const Section& s);
 SmokeSpec readSmoke(const TomlReader& reader, const Section& s);
 FireSpec readFire(const TomlReader& reader, const Section& s);
+/// `[wind]` of a grid scene whose domain is the whole box (`scene` read up to [fire]).
+WindSpec readWind(const TomlReader& reader, const Section& s, const SceneSpec& scene);
 ForcingSpec readForcing(const TomlReader& reader, const Section& s);
 OutputSpec readOutput(const TomlReader& reader, const Section& s);
 

@@ -70,6 +70,23 @@ if bpy.ops.modeflow.bake() != {'FINISHED'}:
 if "write cache" in bake_log():
     fail("the re-bake after moving the emitter precomputed the basis again")
 
+# A wind is written as [wind] for a box domain, and refused for a mesh domain.
+domain.modeflow.wind = (1.5, 0.0, -0.25)
+written, _ = modeflow_blender.scene_export.scene_of(domain, bpy.context, os.path.join(out, "windy"))
+if written.get("wind") != {"velocity": [1.5, 0.0, -0.25]}:
+    fail(f"the wind was written as {written.get('wind')}")
+domain.modeflow.domain_shape = 'MESH'
+try:
+    modeflow_blender.scene_export.scene_of(domain, bpy.context, os.path.join(out, "windy"))
+    fail("a wind through a mesh domain was written")
+except ValueError as error:
+    if "wind" not in str(error):
+        fail(f"the mesh domain's wind was refused as: {error}")
+domain.modeflow.domain_shape = 'BOX'
+domain.modeflow.wind = (0.0, 0.0, 0.0)
+if "wind" in modeflow_blender.scene_export.scene_of(domain, bpy.context, os.path.join(out, "windy"))[0]:
+    fail("still air was written as a wind")
+
 # Cycles, white background: the smoke darkens what it covers.
 scene.render.engine = 'CYCLES'
 scene.cycles.device = 'CPU'

@@ -208,6 +208,20 @@ const std::vector<Refusal> kRefusals = {
     {"FireBurnRateZero", k2d, {}, "[fire]\nburn_rate = 0\n", {"[fire].burn_rate"}},
     {"FireHeatNaN", k2d, {}, "[fire]\nheat = nan\n", {"[fire].heat"}},
     {"FireUnknownKey", k2d, {}, "[fire]\nignite = 1\n", {"[fire]", "ignite", "ignition"}},
+    // Wind.
+    {"WindWithoutVelocity", k2d, {}, "[wind]\n", {"[wind].velocity: missing required key"}},
+    {"WindOfAnotherDimension", k2d, {}, "[wind]\nvelocity = [1, 0, 0]\n", {"[wind].velocity"}},
+    {"WindNaN", k2d, {}, "[wind]\nvelocity = [nan, 0]\n", {"[wind].velocity"}},
+    {"WindHuge", k2d, {}, "[wind]\nvelocity = [1e300, 1e300]\n",
+     {"[wind].velocity: speed 1.4e+300 is beyond 1e+06"}},
+    {"WindUnknownKey", k2d, {}, "[wind]\nvelocity = [1, 0]\nprofil = 1\n",
+     {"[wind]", "profil"}},
+    {"WindAroundADomain", k2d, {},
+     "[[domain]]\nshape = \"ball\"\ncenter = [0, 0]\nradius = 1\n[wind]\nvelocity = [1, 0]\n",
+     {"[wind]: the wind blows through a whole grid box", "[[obstacle]]"}},
+    {"WindWithMhd", k2d, {}, "[simulation]\nmhd = true\n[wind]\nvelocity = [1, 0]\n",
+     {"[wind]: a wind does not carry a magnetic field"}},
+    {"WindMisspelledTable", k2d, {}, "[wnd]\nvelocity = [1, 0]\n", {"wnd", "did you mean wind?"}},
     {"ObstacleBallWithSequenceRate", k2d, {},
      kObstacleBall + "radius = 0.1\nsequence_rate = 24\npath = [[0, 0, 0]]\n",
      {"[[obstacle]] #1.sequence_rate: not used by a ball"}},
@@ -631,6 +645,18 @@ TEST_F(SceneLoaderTest, FullSceneRoundTripsEveryField) {
     EXPECT_EQ(scene.smoke.advection, AdvectionScheme::SemiLagrangian);
     EXPECT_EQ(scene.output.frames, 10);
     EXPECT_EQ(scene.output.stepsPerFrame, 5);
+}
+
+TEST_F(SceneLoaderTest, AWindBlowsThroughTheWholeBox) {
+    const SceneSpec scene =
+        parseScene(sceneFixture(k2d) + "[wind]\nvelocity = [1.5, -0.25]\n", "wind.toml");
+    ASSERT_TRUE(scene.wind.has_value());
+    EXPECT_EQ(scene.wind->velocity, (Vec3{1.5, -0.25, 0.0}));
+    EXPECT_FALSE(parseScene(sceneFixture(k2d), "still.toml").wind.has_value());
+    const SceneSpec three =
+        parseScene(sceneFixture(k3d) + "[wind]\nvelocity = [0, 0, 2]\n", "wind.toml");
+    ASSERT_TRUE(three.wind.has_value());
+    EXPECT_EQ(three.wind->velocity, (Vec3{0.0, 0.0, 2.0}));
 }
 
 TEST_F(SceneLoaderTest, AFireBurnsTheFuelOfItsSources) {
@@ -1366,6 +1392,7 @@ TEST_F(SceneLoaderTest, SurfaceSceneRefusesTheGridsTablesAndKeys) {
          "[[source]] #1.shape: a surface scene's sources are balls or boxes in space"},
         {std::string(kSurface) + "[basis]\nvelocity_modes = 4\nwall = \"no-slip\"\n",
          "[basis].wall: only for grid scenes"},
+        {surface + "[wind]\nvelocity = [1, 0, 0]\n", "[wind]: a surface is closed"},
         {surface + "[simulation]\nmhd = true\n",
          "[simulation].mhd: MHD is simulated in grid scenes only"},
         {surface + "[initial]\nvelocity = \"vortices\"\n",

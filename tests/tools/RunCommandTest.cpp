@@ -498,6 +498,22 @@ TEST_F(RunCommand, WhatTheBackendCannotDoIsRefusedBeforeThePrecompute) {
     expectRejected("run " + forced.string() + " --out " + (mDir / "h").string() + " --cache-dir " +
                        mCache.string(),
                    "[forcing] (held modes) runs on the CPU reference only; use --device cpu");
+    const fs::path windy = scene("windy.toml", R"([grid]
+resolution = [16, 8]
+bounds_min = [0.0, 0.0]
+bounds_max = [2.0, 1.0]
+[basis]
+velocity_modes = 12
+[wind]
+velocity = [1.0, 0.0]
+)");
+    expectRejected("run " + windy.string() + " --out " + (mDir / "w").string() + " --cache-dir " +
+                       mCache.string(),
+                   "[wind] runs on the CPU reference only; use --device cpu");
+    const RunResult r = run("run " + windy.string() + " --device cpu --frames 2 --out " +
+                            (mDir / "w").string() + " --cache-dir " + mCache.string());
+    EXPECT_EQ(r.status, 0) << r.err;
+    EXPECT_TRUE(fs::exists(mDir / "w" / "windy_0002.vdb"));
 }
 
 TEST_F(RunCommand, HeldModesRunOnTheCpuReferenceAndWakeStillFluid) {

@@ -9,6 +9,7 @@
 #include "engine/core/MacSampling.h"
 #include "engine/dynamics/Diagnostics.h"
 #include "engine/run/GridFrames.h"
+#include "engine/simulation/WindTransport.h"
 #include "tools/compose/CacheDirectory.h"
 #include "tools/compose/Preflight.h"
 #include "tools/compose/RunIdentity.h"
@@ -123,6 +124,7 @@ PythonSimulation::PythonSimulation(const SceneText& scene, const std::string& de
     mRun = std::make_unique<RunInputs>(prepareRun(checked.scene, cache, report.progress()));
     mSimulator = mBackend->makeSimulator(*mRun);
     mBasisGrid = MacGrid::fromSpec(mRun->cache.grid);
+    if (mRun->settings.wind) mBasisGrid = withWindThrough(mBasisGrid, *mRun->settings.wind);
     mObstacles = mSimulator->settings().obstacles;
     mSources = mSimulator->settings().emitters;
 }

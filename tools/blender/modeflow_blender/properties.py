@@ -1,7 +1,7 @@
 """obj.modeflow: an object's part in the simulation and, by part, its settings."""
 
 import bpy
-from bpy.props import EnumProperty, FloatProperty, IntProperty
+from bpy.props import EnumProperty, FloatProperty, FloatVectorProperty, IntProperty
 
 
 class ModeflowObjectSettings(bpy.types.PropertyGroup):
@@ -36,6 +36,9 @@ class ModeflowObjectSettings(bpy.types.PropertyGroup):
                ('EXPLICIT', "Explicit", "")],
         default='MIDPOINT',
     )
+    wind: FloatVectorProperty(name="Wind", size=3, subtype='VELOCITY', default=(0.0, 0.0, 0.0),
+                              description="Velocity of the air blowing through the box (written as "
+                                          "[wind] when not zero; runs on the CPU device)")
     # Fire (written as [fire] when an emitter feeds fuel)
     ignition: FloatProperty(name="Ignition", description="Temperature above which fuel burns", default=1.0)
     burn_rate: FloatProperty(name="Burn Rate", description="Part of the fuel burnt per unit of time",

@@ -127,6 +127,11 @@ def scene_of(domain, context, folder):
         "initial": {"velocity": "zero"},
         "smoke": {"buoyancy": settings.buoyancy},
     }
+    if any(settings.wind):
+        if settings.domain_shape == 'MESH':
+            raise ValueError("modeflow: a wind blows through a box domain (Shape: Bounds), not "
+                             "through a mesh domain's walls")
+        description["wind"] = {"velocity": [float(u) for u in settings.wind]}
     if settings.domain_shape == 'MESH':
         name = _file_name(domain)
         write_obj(os.path.join(meshes, name), domain, depsgraph, in_world=True)
