@@ -6,6 +6,7 @@
 /// than Navier–Stokes'. Speed is reported, never asserted. Label `slow` (its time:
 /// tools/validate/README.md).
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <numbers>
@@ -33,7 +34,7 @@ const json& study(const json& results, const std::string& key) {
 /// A progress line per study, every headline met, every figure inline in the report.
 void checkProgressAndReport(const json& results, const std::string& err, const std::string& html) {
     for (const char* key : {"convergence", "integrators", "mhd", "coefficients", "resolution",
-                            "speed", "reduced_vs_full", "lans_alpha"}) {
+                            "speed", "reduced_vs_full", "lans_alpha", "wake"}) {
         EXPECT_NE(err.find(std::string("] ") + key + ": "), std::string::npos) << key << "\n"
                                                                                << err;
         EXPECT_NE(err.find(std::string("validate: ") + key + " done in "), std::string::npos)
@@ -222,6 +223,23 @@ void checkLansAlpha(const json& results) {
     }
 }
 
+/// The wake sheds (the probe swings both ways, several periods) at Roshko's Strouhal number
+/// within 20% at Re 100 and 150.
+void checkWake(const json& results) {
+    const json& wake = study(results, "wake");
+    for (const char* key : {"re_100", "re_150"}) {
+        const json& runs = wake[key]["runs"];
+        const double roshko = wake[key]["roshko"];
+        const json& last = runs.back();
+        EXPECT_GE(last["periods"].get<int>(), 4) << key;
+        EXPECT_NEAR(last["strouhal"].get<double>(), roshko, 0.2 * roshko) << key;
+        const json& probe = last["probe"];
+        const auto [low, high] = std::minmax_element(probe.begin(), probe.end());
+        EXPECT_LT(low->get<double>(), -0.1) << key;
+        EXPECT_GT(high->get<double>(), 0.1) << key;
+    }
+}
+
 class ValidateQuick : public Cli {};
 
 TEST_F(ValidateQuick, EveryStudyMeetsTheSeedsClaims) {
@@ -238,6 +256,7 @@ TEST_F(ValidateQuick, EveryStudyMeetsTheSeedsClaims) {
     checkMhd(results);
     checkCoefficients(results);
     checkResolution(results);
+    checkWake(results);
     checkSpeed(results);
     checkReducedVsFull(results);
     checkLansAlpha(results);

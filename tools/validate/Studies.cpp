@@ -25,6 +25,9 @@ const std::vector<Study>& allStudies() {
          reducedVsFullStudy},
         {"lans_alpha", "the energy spectrum of a forced flow, Navier–Stokes against LANS-α",
          lansAlphaStudy},
+        {"wake",
+         "vortex shedding behind a cylinder in a wind: the Strouhal number against Roshko's",
+         wakeStudy},
     };
     return studies;
 }

@@ -15,6 +15,7 @@ StudyResult resolutionStudy(const StudyOptions& options);
 StudyResult speedStudy(const StudyOptions& options);
 StudyResult reducedVsFullStudy(const StudyOptions& options);
 StudyResult lansAlphaStudy(const StudyOptions& options);
+StudyResult wakeStudy(const StudyOptions& options);
 
 /// reduced_vs_full's periodic band-limited experiment (PeriodicReducedVsFull.cpp): its JSON.
 nlohmann::json periodicBandLimited(const StudyOptions& options);

@@ -439,6 +439,43 @@ def draw_lans_alpha(data, folder):
              f'{scene["alpha"]}: the average energy spectrum (seed Fig. 6.9) and the energy over time.')]
 
 
+def draw_wake(data, folder):
+    scene = data["scene"]
+    fig, (by_modes, by_re, probe) = plt.subplots(1, 3, figsize=(15, 4.2))
+    colours = {"re_100": "tab:blue", "re_150": "tab:red"}
+    for key, colour in colours.items():
+        series = data[key]
+        modes = [run["modes"] for run in series["runs"]]
+        strouhal = [run["strouhal"] for run in series["runs"]]
+        by_modes.plot(modes, strouhal, "o-", color=colour, label=f'Re {series["re"]:g}')
+        by_modes.axhline(series["roshko"], color=colour, ls="--", lw=1)
+        by_modes.axhspan(0.8 * series["roshko"], 1.2 * series["roshko"], color=colour, alpha=0.08)
+        by_re.plot([series["re"]], [strouhal[-1]], "o", color=colour,
+                   label=f'Re {series["re"]:g}, {modes[-1]} modes: St {strouhal[-1]:.3f}')
+        last = series["runs"][-1]
+        probe.plot(last["time"], last["probe"], color=colour, lw=0.8, label=f'Re {series["re"]:g}')
+    res = [50 + 2 * i for i in range(76)]
+    by_re.plot(res, [0.212 * (1 - 21.2 / r) for r in res], "k-", label="Roshko: 0.212 (1 − 21.2/Re)")
+    by_re.fill_between(res, [0.8 * 0.212 * (1 - 21.2 / r) for r in res],
+                       [1.2 * 0.212 * (1 - 21.2 / r) for r in res], color="grey", alpha=0.15, label="± 20%")
+    by_modes.set_xscale("log")
+    by_modes.set_xlabel("velocity modes")
+    by_modes.set_ylabel("Strouhal number f D / U (dashed: Roshko; band: ± 20%)")
+    by_re.set_xlabel("Re = U D / ν")
+    by_re.set_ylabel("Strouhal number")
+    probe.set_xlabel("time")
+    probe.set_ylabel("transverse velocity two diameters behind")
+    probe.axvline(scene["measured_from"], color="grey", lw=1)
+    for ax in (by_modes, by_re, probe):
+        ax.legend(fontsize=8)
+        ax.grid(True, alpha=0.3)
+    return [(save(fig, folder, "wake"),
+             f'A cylinder of diameter {scene["diameter"]} in a wind of {scene["wind"]} through a closed-form box '
+             f'{scene["box"]} ({scene["resolution"][0]} × {scene["resolution"][1]} cells), a still ball obstacle: '
+             f'the Strouhal number of its wake from the transverse velocity two diameters behind it (zero crossings '
+             f'after t = {scene["measured_from"]:g}), against the number of modes and Roshko\'s fit.')]
+
+
 DRAWERS = {
     "convergence": draw_convergence,
     "integrators": draw_integrators,
@@ -448,6 +485,7 @@ DRAWERS = {
     "speed": draw_speed,
     "reduced_vs_full": draw_reduced_vs_full,
     "lans_alpha": draw_lans_alpha,
+    "wake": draw_wake,
 }
 
 
