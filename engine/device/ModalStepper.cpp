@@ -126,6 +126,9 @@ void ModalStepper::uploadModel(const DeviceModel& model) {
             throw Error(
                 "modal step: held modes ([forcing]) run on the CPU reference only; use --device "
                 "cpu");
+        if (fluid->linear)
+            throw Error(
+                "modal step: a wind ([wind]) runs on the CPU reference only; use --device cpu");
         const Eigen::VectorXd mass = FluidSystem::massOf(*fluid, n);
         mFiltered = (mass.array() != 1.0).any();
         upload(mMass, mass, 0, "mass");

@@ -15,23 +15,12 @@
 #include "engine/simulation/WindTransport.h"
 
 namespace modeflow::reference {
-namespace {
-
-/// `settings` with the wind's advection of the modes over `cache`'s basis as the fluid's linear
-/// term (made here, where the cache is known to outlive it).
-SimulationSettings withWind(SimulationSettings settings, const BasisCache& cache) {
-    if (settings.wind)
-        settings.fluid.linear = std::make_shared<WindTransport>(cache, *settings.wind);
-    return settings;
-}
-
-}  // namespace
 
 Simulation::Simulation(const BasisCache& cache, const StructuralCoefficients& coefficients,
                        SimulationSettings settings, std::vector<std::uint8_t> smokeMask)
     : mCache(cache),
       mBasis(cache),
-      mSettings(withWind(std::move(settings), cache)),
+      mSettings(withWindTransport(std::move(settings), cache)),
       mStepper(coefficients, mSettings),
       mAdvection(MacGrid::fromSpec(cache.grid), mSettings.smokeScale, std::move(smokeMask)),
       mDisplacement(mAdvection.smokeGrid(), mAdvection.fluidMask()),

@@ -11,6 +11,7 @@
 #include "engine/reference/ModalStepper.h"
 #include "engine/reference/Simulation.h"
 #include "engine/run/RunInputs.h"
+#include "engine/simulation/WindTransport.h"
 
 namespace modeflow {
 
@@ -83,7 +84,7 @@ std::unique_ptr<ModalStepping> Backend::makeModalStepper(const RunInputs& run,
         if (run.settings.mhd) device->setMagneticField(run.initialMagneticField);
         stepper = std::move(device);
     } else {
-        SimulationSettings settings = run.settings;
+        SimulationSettings settings = withWindTransport(run.settings, run.cache);
         settings.integrator = scheme;
         auto reference = std::make_unique<reference::ModalStepper>(*run.coefficients, settings);
         reference->setVelocity(run.initialVelocity);

@@ -115,6 +115,12 @@ double WindTransport::outflowPower(const Eigen::VectorXd& v) const {
     return power;
 }
 
+SimulationSettings withWindTransport(SimulationSettings settings, const BasisCache& cache) {
+    if (settings.wind)
+        settings.fluid.linear = std::make_shared<WindTransport>(cache, *settings.wind);
+    return settings;
+}
+
 MacGrid withWindThrough(MacGrid grid, const Vec3& wind) {
     for (const int a : windAxes(grid, wind)) grid.flowThrough[a] = !grid.periodic[a];
     return grid;

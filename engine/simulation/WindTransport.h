@@ -29,6 +29,7 @@
 #include "engine/core/MacGrid.h"
 #include "engine/dynamics/LinearModalTerm.h"
 #include "engine/format/BasisCache.h"
+#include "engine/simulation/SimulationSettings.h"
 
 namespace modeflow {
 
@@ -57,6 +58,11 @@ private:
     Vec3 mWind;
     mutable Eigen::MatrixXd mMatrix;  ///< D, formed by matrix()
 };
+
+/// `settings` with their wind's advection of the modes over `cache`'s basis as the fluid's linear
+/// term (none without a wind). What a CPU simulation or modal stepper of a run is made with;
+/// `cache` must outlive what uses the settings.
+SimulationSettings withWindTransport(SimulationSettings settings, const BasisCache& cache);
 
 /// `grid` with the sides the wind crosses open to the air (MacGrid::flowThrough): every
 /// non-periodic axis along which it blows.
