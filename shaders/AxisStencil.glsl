@@ -38,5 +38,8 @@ AxisStencil axisStencil(float coordinate, float offset, int n, bool periodic) {
 }
 
 bool isPeriodic(uint periodic, int axis) { return (periodic & (1u << uint(axis))) != 0u; }
+/* Whether the air flows through the sides across `axis` (a wind, MacGrid::boundaryBits: bit
+   3 + axis): their faces are no walls. */
+bool flowsThrough(uint boundary, int axis) { return (boundary & (8u << uint(axis))) != 0u; }
 
 #endif

@@ -12,7 +12,10 @@
    whatever the field holds. Where the reference skips a wall corner this adds weight x 0, and on
    an axis of one position (hi == lo) the second corner of a pair has weight 0: the same sums.
 
-   Periodic axes (bit a of `periodic`, MacGrid::periodic) clamp nothing: the stencil wraps (lo the
+   Sides the air flows through (a wind: MacGrid::flowThrough, `boundary`'s flowsThrough) have no
+   wall either: their faces read what the field holds, the wind's velocity.
+
+   Periodic axes (bit a of `boundary`, MacGrid::periodic) clamp nothing: the stencil wraps (lo the
    last position, hi the first), their faces have no wall, and on a periodic x the includer's
    pair of the row's last face holds the row's first face as its second value (the x-neighbour
    across the seam). Corner offsets that wrap are negative; uint arithmetic takes them modulo
@@ -24,14 +27,15 @@
 
 /* The normal-`axis` component at gridPoint on a grid of `cells`, whose normal-`axis` faces start
    at number `faceOffset`. */
-float sampleFaceComponent(const int axis, vec3 gridPoint, ivec3 cells, uint faceOffset, uint periodic) {
-    const bool wraps = isPeriodic(periodic, axis);
+float sampleFaceComponent(const int axis, vec3 gridPoint, ivec3 cells, uint faceOffset, uint boundary) {
+    const bool wraps = isPeriodic(boundary, axis);
+    const bool walled = !wraps && !flowsThrough(boundary, axis);
     ivec3 extent = cells;
     extent[axis] += wraps ? 0 : 1;
     AxisStencil s[3];
     s[2] = AxisStencil(0, 0, 0.0);
     [[unroll]] for (int a = 0; a < MAC_DIM; ++a)
-        s[a] = axisStencil(gridPoint[a], a == axis ? 0.0 : 0.5, extent[a], isPeriodic(periodic, a));
+        s[a] = axisStencil(gridPoint[a], a == axis ? 0.0 : 0.5, extent[a], isPeriodic(boundary, a));
     const uint row = faceOffset + uint((s[2].lo * extent.y + s[1].lo) * extent.x + s[0].lo);
     const uint rowY = uint((s[1].hi - s[1].lo) * extent.x);
     const uint rowZ = uint((s[2].hi - s[2].lo) * extent.y * extent.x);
@@ -41,8 +45,8 @@ float sampleFaceComponent(const int axis, vec3 gridPoint, ivec3 cells, uint face
             const vec2 pair = macFacePair(row + uint(cy) * rowY + uint(cz) * rowZ);
             const ivec3 lo = ivec3(s[0].lo, cy != 0 ? s[1].hi : s[1].lo, cz != 0 ? s[2].hi : s[2].lo);
             const ivec3 hi = ivec3(s[0].hi, lo.yz);
-            const bool wallLo = !wraps && (lo[axis] == 0 || lo[axis] == cells[axis]);
-            const bool wallHi = !wraps && (hi[axis] == 0 || hi[axis] == cells[axis]);
+            const bool wallLo = walled && (lo[axis] == 0 || lo[axis] == cells[axis]);
+            const bool wallHi = walled && (hi[axis] == 0 || hi[axis] == cells[axis]);
             const float wy = cy != 0 ? s[1].f : 1.0 - s[1].f;
             float wz = 1.0;
 #if MAC_DIM == 3
@@ -55,10 +59,10 @@ float sampleFaceComponent(const int axis, vec3 gridPoint, ivec3 cells, uint face
 }
 
 /* All components (0 beyond MAC_DIM), in world units per unit time. */
-vec3 sampleVelocityGrid(vec3 gridPoint, ivec3 cells, uvec3 faceOffsets, uint periodic) {
+vec3 sampleVelocityGrid(vec3 gridPoint, ivec3 cells, uvec3 faceOffsets, uint boundary) {
     vec3 u = vec3(0.0);
     [[unroll]] for (int axis = 0; axis < MAC_DIM; ++axis)
-        u[axis] = sampleFaceComponent(axis, gridPoint, cells, faceOffsets[axis], periodic);
+        u[axis] = sampleFaceComponent(axis, gridPoint, cells, faceOffsets[axis], boundary);
     return u;
 }
 

@@ -19,7 +19,9 @@
    component picked by a run-time index (faster). Not one read of U for both products: every
    row's part then needs a sum across lanes in every tile of columns (a subgroup sum per row and
    tile, slower than the two passes), or each lane keeps the parts of a block of rows and texels,
-   which on lavapipe (a value per lane is a SIMD register) spill. */
+   which on lavapipe (a value per lane is a SIMD register) spill.
+   DENSE_ADD (modal_linear.comp): out += D b for a full N x N matrix D in the same rows of texels
+   (a wind's linear term, engine/device/ModalStepper.h), the rows pass over every texel. */
 #ifndef MODEFLOW_SHADERS_MODAL_COMBINE_GLSL
 #define MODEFLOW_SHADERS_MODAL_COMBINE_GLSL
 
@@ -61,10 +63,19 @@ void main() {
     const uint stride = gl_NumWorkGroups.x * gl_NumSubgroups;
     for (uint k = gl_WorkGroupID.x * gl_NumSubgroups + gl_SubgroupID; k < params.n; k += stride) {
         float sum = 0.0;
-        for (uint q = k / 4u + gl_SubgroupInvocationID; q < rowTexels; q += gl_SubgroupSize)
+#ifdef DENSE_ADD
+        const uint firstTexel = 0u;
+#else
+        const uint firstTexel = k / 4u;  // U[k][j] = 0 for j <= k
+#endif
+        for (uint q = firstTexel + gl_SubgroupInvocationID; q < rowTexels; q += gl_SubgroupSize)
             sum += dot(floatTexel(sums, k * rowTexels + q), floatTexel(b, q));
         sum = subgroupAdd(sum);
+#ifdef DENSE_ADD
+        if (subgroupElect()) result[k] += sum;
+#else
         if (subgroupElect()) result[k] = sum;
+#endif
     }
 #endif
 }

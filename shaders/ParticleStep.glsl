@@ -28,7 +28,7 @@ vec3 velocityAt(vec3 world) {
     if (MAC_DIM == 2) g.z = 0.5;
     const ivec3 cells = ivec3(params.cells[0], params.cells[1], params.cells[2]);
     const uvec3 offsets = uvec3(params.faceStart[0], params.faceStart[1], params.faceStart[2]);
-    return sampleVelocityGrid(g, cells, offsets, params.periodic);
+    return sampleVelocityGrid(g, cells, offsets, params.boundary);
 }
 
 vec3 boxLength() {
@@ -41,7 +41,7 @@ bool inFluid(vec3 p) {
     for (int a = 0; a < MAC_DIM; ++a) {
         const float x = (p[a] - params.origin[a]) / params.smokeSpacing[a];
         const float n = float(params.smokeCells[a]);
-        const float cell = isPeriodic(params.periodic, a) ? x - n * floor(x / n) : clamp(x, 0.0, n - 1.0);
+        const float cell = isPeriodic(params.boundary, a) ? x - n * floor(x / n) : clamp(x, 0.0, n - 1.0);
         c[a] = min(int(cell), int(params.smokeCells[a]) - 1);
     }
     const uint index = (uint(c.z) * params.smokeCells[1] + uint(c.y)) * params.smokeCells[0] + uint(c.x);
@@ -51,7 +51,7 @@ bool inFluid(vec3 p) {
 vec3 intoBox(vec3 p) {
     const vec3 lo = v3(params.origin), len = boxLength();
     for (int a = 0; a < MAC_DIM; ++a)
-        p[a] = isPeriodic(params.periodic, a) ? lo[a] + (p[a] - lo[a]) - len[a] * floor((p[a] - lo[a]) / len[a])
+        p[a] = isPeriodic(params.boundary, a) ? lo[a] + (p[a] - lo[a]) - len[a] * floor((p[a] - lo[a]) / len[a])
                                               : clamp(p[a], lo[a], lo[a] + len[a]);
     return p;
 }
@@ -77,14 +77,14 @@ void main() {
     const uint dim = uint(MAC_DIM);
     for (uint o = 0u; o < params.obstacleCount; ++o) {
         vec3 r0;
-        if (!withinReachOf(o, x1, dim, boxLength(), params.periodic, r0)) continue;
+        if (!withinReachOf(o, x1, dim, boxLength(), params.boundary, r0)) continue;
         const ObstacleRecord solid = obstacleAt(o);
         if (!covers(solid, r0)) continue;
         vec3 normal;
         x1 += solidExit(solid, r0, dim, params.margin, normal);
         if (dim == 2u) x1.z = 0.0;
         if (r.inertial == 0u) continue;
-        const vec3 r1 = obstacleOffset(solid, x1, dim, boxLength(), params.periodic);
+        const vec3 r1 = obstacleOffset(solid, x1, dim, boxLength(), params.boundary);
         const float into = dot(v1 - materialVelocity(solid, r1), normal);
         if (into < 0.0) v1 -= into * normal;
     }

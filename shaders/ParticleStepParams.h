@@ -20,7 +20,7 @@ struct ParticleSetRecord {
 struct ParticleStepParams {
     uint count; /* particles */
     uint obstacleCount;
-    uint periodic;     /* bit a: axis a is periodic (MacGrid::periodic) */
+    uint boundary;     /* MacGrid::boundaryBits: periodic axes, sides the air flows through */
     uint allFluid;     /* every smoke cell is fluid: no slide along walls */
     uint cells[3];     /* basis grid */
     uint up;           /* the buoyancy axis */

@@ -12,6 +12,8 @@
    grid, in smoke-grid units; trilinear sample over the fluid cells of the stencil only, weights
    renormalized; no fluid weight left: the cell keeps its own value. Along periodic axes traces
    leave through one end and come in through the other: the stencils wrap (MacSampling.glsl).
+   With a wind the sides it crosses are open (their faces carry its velocity) and the upstream
+   ones bring in clean air: ghost cells beyond them hold 0 in the sample and its clamp range.
    smoke_face_pairs.comp runs first each step. Cells outside the fluid mask are never written:
    SmokeState keeps them 0.
 
@@ -95,7 +97,7 @@ vec3 velocityAt(vec3 g) {
     vec3 basisPoint = g;
     [[unroll]] for (int a = 0; a < SMOKE_DIM; ++a) basisPoint[a] = g[a] / float(params.scale);
     return sampleVelocityGrid(basisPoint, ivec3(params.basisX, params.basisY, params.basisZ),
-                              uvec3(0u, params.faceOffsetY, params.faceOffsetZ), params.periodic);
+                              uvec3(0u, params.faceOffsetY, params.faceOffsetZ), params.boundary);
 }
 
 // With the smoke grid the basis grid (scale 1), a trace starts at a basis cell's centre, where
@@ -110,18 +112,19 @@ vec3 cellCentreVelocity(ivec3 cell) {
     const uvec3 offsets = uvec3(0u, params.faceOffsetY, params.faceOffsetZ);
     vec3 u = vec3(0.0);
     [[unroll]] for (int a = 0; a < SMOKE_DIM; ++a) {
-        const bool wraps = isPeriodic(params.periodic, a);
+        const bool wraps = isPeriodic(params.boundary, a);
         ivec3 extent = cells;
         extent[a] += wraps ? 0 : 1;
         const uint face = offsets[a] + uint((cell.z * extent.y + cell.y) * extent.x + cell.x);
         vec2 faces = macFacePair(face);  // along x the pair is the two faces
         if (a > 0) {
             const int rowStride = a == 1 ? extent.x : extent.x * extent.y;
-            const int across = cell[a] + 1 == cells[a] ? -(cells[a] - 1) * rowStride : rowStride;
+            const int across = wraps && cell[a] + 1 == cells[a] ? -(cells[a] - 1) * rowStride : rowStride;
             faces.y = macFacePair(face + uint(across)).x;  // negative across a seam: wraps
         }
-        const bool wallLo = !wraps && cell[a] == 0;
-        const bool wallHi = !wraps && cell[a] + 1 == cells[a];
+        const bool walled = !wraps && !flowsThrough(params.boundary, a);
+        const bool wallLo = walled && cell[a] == 0;
+        const bool wallHi = walled && cell[a] + 1 == cells[a];
         u[a] = 0.5 * (wallLo ? 0.0 : faces.x) + 0.5 * (wallHi ? 0.0 : faces.y);
     }
     return u;
@@ -151,7 +154,7 @@ FluidSample sampleFluid(usamplerBuffer fields, vec3 g, vec2 fallback) {
     AxisStencil s[3];
     s[2] = AxisStencil(0, 0, 0.0);
     [[unroll]] for (int a = 0; a < SMOKE_DIM; ++a)
-        s[a] = axisStencil(g[a], 0.5, cells[a], isPeriodic(params.periodic, a));
+        s[a] = axisStencil(g[a], 0.5, cells[a], isPeriodic(params.boundary, a));
     const uint base = cellIndex(ivec3(s[0].lo, s[1].lo, s[2].lo));
     const uint fluid = stencilBits(base);
     // Offsets of the hi corners: 0 on a one-cell axis, whose hi corner is the lo one (its bit is 0);
@@ -178,6 +181,22 @@ FluidSample sampleFluid(usamplerBuffer fields, vec3 g, vec2 fallback) {
                 taken.hi = max(taken.hi, v);
             }
     taken.value = weight > 0.0 ? sum / weight : fallback;
+    // Within a cell of an inflow side the trilinear weights reach the ghost cells beyond it,
+    // which hold the inflow's clean air (0): the in-box share of the sample, as on the CPU.
+    float share = 1.0;
+    [[unroll]] for (int a = 0; a < SMOKE_DIM; ++a) {
+        if ((params.boundary & (1u << (SMOKE_INFLOW_LOW + uint(a)))) != 0u)
+            share *= clamp(g[a] + 0.5, 0.0, 1.0);
+        if ((params.boundary & (1u << (SMOKE_INFLOW_HIGH + uint(a)))) != 0u)
+            share *= clamp(float(cells[a]) + 0.5 - g[a], 0.0, 1.0);
+    }
+    if (share < 1.0) {
+        taken.value *= share;
+        if (weight > 0.0) {  // the clamp range takes the inflow's 0 in (none without fluid)
+            taken.lo = min(taken.lo, vec2(0.0));
+            taken.hi = max(taken.hi, vec2(0.0));
+        }
+    }
     return taken;
 }
 

@@ -35,6 +35,11 @@ using uint = std::uint32_t;
    (x, y) and, in 3D, (z, 0): two texels, which the correction fetches. */
 #define SMOKE_RECORD_WORDS 4u
 
+/* Bits of SmokeAdvectParams::boundary: a side across axis a where the wind brings in clean air
+   (engine/reference/SmokeAdvection.h: ghost cells half a cell out hold 0). */
+#define SMOKE_INFLOW_LOW 6u
+#define SMOKE_INFLOW_HIGH 9u
+
 struct SmokeAdvectParams {
     uint cellsX; /* smoke grid cells per axis (1 on the unused axis of a 2D grid) */
     uint cellsY;
@@ -48,7 +53,9 @@ struct SmokeAdvectParams {
     uint faceOffsetZ;
     uint firstCell; /* this dispatch handles list entries firstCell ... firstCell + invocations - 1
                      */
-    uint periodic;  /* bit a: axis a is periodic (both grids; MacGrid::periodic) */
+    uint boundary;  /* MacGrid::boundaryBits of the basis grid (periodic axes, both grids; sides
+                       the air flows through), and the smoke's inflow sides: bit
+                       SMOKE_INFLOW_LOW + a (the low side across axis a) and SMOKE_INFLOW_HIGH + a */
     float stepX; /* dt / smoke spacing per axis (0 on an unused axis): velocity to cells per step */
     float stepY;
     float stepZ;

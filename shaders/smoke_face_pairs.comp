@@ -11,8 +11,8 @@
 // from the velocity's texels k and k + 1, fetched (faster than a 64-bit and a float storage load
 // per two faces: engine/README.md "Speed"), and stores 64-bit words: one scalar access per
 // lane on lavapipe, where a uvec2 takes two. f + 1 past a row's end pairs with the next row's
-// first face, which no stencil uses with a non-zero weight. The last face is a wall, which the
-// sampling reads as 0: it stands in for the faces past it. Along a periodic x (wrapX: the row
+// first face, which no stencil uses with a non-zero weight. The last face stands in for the faces
+// past it. Along a periodic x (wrapX: the row
 // length of every face group) the stencil of a row's last face reaches across the seam to the
 // row's first face, which it pairs with instead.
 #extension GL_GOOGLE_include_directive : require
@@ -36,12 +36,13 @@ void main() {
     if (4u * k >= faces) return;
     uvec4 u = texelFetch(velocityTexels, int(k));           // faces 4k ... 4k + 3
     uint next = texelFetch(velocityTexels, int(k + 1u)).x;  // face 4k + 4
-    // The last invocation: the texel view holds whole texels only, and past the last face the
-    // last one (a wall) stands in.
-    if (4u * k + 4u >= faces) {
+    // The last two invocations: the texel view holds whole texels only (a partial texel k + 1
+    // would read as 0, and a side the air flows through reads it), and past the last face the
+    // last one stands in (no stencil weighs it).
+    if (4u * k + 8u > faces) {
         [[unroll]] for (uint c = 0u; c < 4u; ++c)
             u[c] = floatBitsToUint(velocity[min(4u * k + c, faces - 1u)]);
-        next = floatBitsToUint(velocity[faces - 1u]);
+        next = floatBitsToUint(velocity[min(4u * k + 4u, faces - 1u)]);
     }
     uvec4 second = uvec4(u.yzw, next);
     if (WRAP_X) {

@@ -85,6 +85,15 @@ struct MacGrid {
         return std::uint32_t(periodic[0]) | std::uint32_t(periodic[1]) << 1 |
                std::uint32_t(periodic[2]) << 2;
     }
+    /// periodicBits(), and bit 3 + a set when the air flows through the sides across axis a
+    /// (flowThrough): the `boundary` word of the kernels that sample the air's velocity
+    /// (shaders/AxisStencil.glsl's isPeriodic and flowsThrough).
+    std::uint32_t boundaryBits() const {
+        return periodicBits() |
+               (std::uint32_t(flowThrough[0]) | std::uint32_t(flowThrough[1]) << 1 |
+                std::uint32_t(flowThrough[2]) << 2)
+                   << 3;
+    }
     /// Length of the box along `axis`.
     double length(int axis) const { return cells[axis] * spacing[axis]; }
     /// `position` along `axis` brought into 0 … cells − 1 on a periodic axis; as is on others.

@@ -11,6 +11,7 @@
 #include "shaders/modal_advect_sum.spv.h"
 #include "shaders/modal_combine.spv.h"
 #include "shaders/modal_combine_columns.spv.h"
+#include "shaders/modal_linear.spv.h"
 #include "shaders/modal_pair_sums.spv.h"
 #include "shaders/modal_pair_sums_sparse.spv.h"
 #include "shaders/modal_pair_weights.spv.h"
@@ -76,6 +77,8 @@ ModalKernels::ModalKernels(const vulkan::VulkanContext& context)
                           sizeof(shaders::AdvectSumParams), 64}),
       advectSparse(context, {"modal_advect_sparse", modal_advect_sparse_spv, 5,
                              sizeof(shaders::CombineParams), 64}),
+      linear(context,
+             {"modal_linear", modal_linear_spv, 3, sizeof(shaders::CombineParams), 64, {}, {0, 1}}),
       mUpdates(context, {"modal_update", modal_update_spv, 11, sizeof(shaders::ModalUpdateParams),
                          updateWorkgroupSize(context)}) {}
 

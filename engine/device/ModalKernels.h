@@ -29,6 +29,7 @@ struct ModalKernels {
     vulkan::ComputeKernel advectDense;     ///< dense advection: partial sums over groups of tiles
     vulkan::ComputeKernel advectSum;       ///< dense advection: the partial sums added
     vulkan::ComputeKernel advectSparse;    ///< sparse advection: one gather per mode
+    vulkan::ComputeKernel linear;  ///< out += D b, D dense (a wind's term), a subgroup per k
 
     /// The integrators' state update `op` (MODAL_OP_*; one workgroup), with the linearized rule's
     /// frozen point (`frozen`) and MHD's Lorentz force (`lorentz`) fixed at compile time: made on

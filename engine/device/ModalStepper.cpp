@@ -1,13 +1,16 @@
 #include "engine/device/ModalStepper.h"
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <string>
 #include <vector>
 
 #include "engine/core/Error.h"
+#include "engine/device/DofFaces.h"
 #include "engine/dynamics/ModalIntegrator.h"
 #include "engine/vulkan/CommandSequence.h"
+#include "engine/vulkan/VulkanContext.h"
 #include "shaders/ModalStepParams.h"
 
 namespace modeflow::device {
@@ -115,6 +118,30 @@ vulkan::DeviceBuffer ModalStepper::part(const vulkan::DeviceBuffer& whole, int i
                                 VkDeviceSize(mStride) * sizeof(float), name);
 }
 
+void ModalStepper::uploadLinear(const LinearModalTerm* linear) {
+    if (!linear) {
+        mLinear.reset();
+        return;
+    }
+    const int n = size();
+    if (linear->size() != n)
+        throw Error("modal step: a linear term of " + std::to_string(linear->size()) +
+                    " modes for a basis of " + std::to_string(n));
+    const Eigen::MatrixXd& d = linear->matrix();
+    if (!d.allFinite()) throw Error("modal step: the linear term is not finite");
+    const std::size_t bytes = std::size_t(n) * mStride * sizeof(float);
+    if (bytes > mContext.texelBufferLimit())
+        throw Error("modal step: the wind's " + std::to_string(n) + " x " + std::to_string(n) +
+                    " matrix of " + std::to_string(bytes) + " bytes exceeds the " +
+                    std::to_string(mContext.texelBufferLimit()) + "-byte buffer limit of " +
+                    mContext.deviceName() + "; use fewer modes or --device cpu");
+    std::vector<float> rows(std::size_t(n) * mStride, 0.0f);  // zero-padded rows
+    for (int k = 0; k < n; ++k)
+        for (int j = 0; j < n; ++j)
+            rows[std::size_t(k) * mStride + std::size_t(j)] = float(d(k, j));
+    mLinear.emplace(vulkan::DeviceBuffer::fromValues<float>(mContext, rows, "modal linear term"));
+}
+
 void ModalStepper::uploadModel(const DeviceModel& model) {
     if (modelIsMhd(model) != mMhd)
         throw Error(std::string("modal step: parameters of ") +
@@ -126,9 +153,7 @@ void ModalStepper::uploadModel(const DeviceModel& model) {
             throw Error(
                 "modal step: held modes ([forcing]) run on the CPU reference only; use --device "
                 "cpu");
-        if (fluid->linear)
-            throw Error(
-                "modal step: a wind ([wind]) runs on the CPU reference only; use --device cpu");
+        uploadLinear(fluid->linear.get());
         const Eigen::VectorXd mass = FluidSystem::massOf(*fluid, n);
         mFiltered = (mass.array() != 1.0).any();
         upload(mMass, mass, 0, "mass");
@@ -328,8 +353,26 @@ DeviceStepStatus ModalStepper::status() const {
     return {int(raw.iterations), double(raw.residual), raw.converged != 0, int(raw.unconverged)};
 }
 
+std::vector<std::uint32_t> ModalStepper::linearGroups() const {
+    if (!mLinear) return {};
+    // A subgroup per row, as modal_combine.comp.
+    return {
+        groupsFor(mContext, std::uint64_t(size()), std::max(1u, 64u / mContext.subgroupSize()))};
+}
+
+void ModalStepper::recordLinear(vulkan::CommandSequence& sequence,
+                                IndirectArguments indirect) const {
+    if (!mLinear) return;
+    const std::array<const vulkan::DeviceBuffer*, 3> buffers{&*mLinear, &mPoint, &mRhs};
+    indirect.dispatch(sequence, mKernels.linear, buffers,
+                      shaders::CombineParams{std::uint32_t(size()), mStride / 4, 0, 0},
+                      linearGroups()[0]);
+}
+
 std::vector<std::uint32_t> ModalStepper::evaluationGroups() const {
     std::vector<std::uint32_t> groups = mCoefficients.dispatchGroups(!mFiltered);
+    const std::vector<std::uint32_t> linear = linearGroups();
+    groups.insert(groups.end(), linear.begin(), linear.end());
     if (!mMhd) return groups;
     const std::vector<std::uint32_t> apply = groups, advect = mCoefficients.advectGroups();
     if (mLorentz) groups.insert(groups.end(), apply.begin(), apply.end());
@@ -339,18 +382,28 @@ std::vector<std::uint32_t> ModalStepper::evaluationGroups() const {
 
 std::vector<std::uint32_t> ModalStepper::iterationGroups() const {
     if (mSettings.scheme != Integrator::Linearized) return evaluationGroups();
-    if (mCoefficients.isTensorFree()) return mCoefficients.dispatchGroups(false);
-    return mCoefficients.combineGroups();
+    std::vector<std::uint32_t> groups = mCoefficients.isTensorFree()
+                                            ? mCoefficients.dispatchGroups(false)
+                                            : mCoefficients.combineGroups();
+    const std::vector<std::uint32_t> linear = linearGroups();
+    groups.insert(groups.end(), linear.begin(), linear.end());
+    return groups;
 }
 
 void ModalStepper::recordFrozenEvaluation(vulkan::CommandSequence& sequence,
                                           IndirectArguments indirect) const {
     // r = L(x~) y = C(a, y) with a = M x~ left in place by the iterations (modal_update.comp):
     // the pair sums of a were recorded once for the step; tensor-free coefficients contract anew.
-    if (mCoefficients.isTensorFree())
+    // The linear term's Jacobian is D itself: L(x~) y gains D y.
+    std::uint32_t contraction = 0;
+    if (mCoefficients.isTensorFree()) {
         mCoefficients.recordApply(sequence, mKernels, mWeighted, mPoint, mRhs, indirect);
-    else
+        contraction = std::uint32_t(mCoefficients.dispatchGroups(false).size());
+    } else {
         mCoefficients.recordCombine(sequence, mKernels, mPoint, mRhs, indirect);
+        contraction = std::uint32_t(mCoefficients.combineGroups().size());
+    }
+    recordLinear(sequence, indirect.after(contraction));
 }
 
 void ModalStepper::recordEvaluation(vulkan::CommandSequence& sequence,
@@ -360,6 +413,8 @@ void ModalStepper::recordEvaluation(vulkan::CommandSequence& sequence,
         // once.
         mCoefficients.recordApply(sequence, mKernels, mFiltered ? mWeighted : mPoint, mPoint, mRhs,
                                   indirect);
+        recordLinear(sequence, indirect.after(
+                                   std::uint32_t(mCoefficients.dispatchGroups(!mFiltered).size())));
         return;
     }
     // r = [C(v, v); advect(v, F); C(F, F)] at y = [v; F] (the mass is 1).

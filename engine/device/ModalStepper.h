@@ -24,6 +24,10 @@
 /// coefficients have no pair sums to keep and contract C(M x~, y) in every iteration. Fluids only.
 /// Viscosity (and the magnetic diffusivity) is applied exactly, Strang-split as on the CPU.
 ///
+/// A constant linear term D v of the fluid (a wind, FluidParameters::linear) joins every
+/// evaluation of R and of the frozen L(x~) y: D is formed once on the host and read as a dense
+/// matrix (modal_linear.comp, one pass over N² floats an evaluation).
+///
 /// MHD's state is two parts of `stride` floats, v then F; its right-hand side is three
 /// contractions a step evaluation: C(v, v), advect(v, F) and, with the Lorentz force, C(F, F).
 
@@ -158,6 +162,10 @@ private:
     /// Group counts of an implicit iteration's contraction: recordEvaluation's, or for the
     /// linearized rule recordFrozenEvaluation's.
     std::vector<std::uint32_t> iterationGroups() const;
+    /// rhs += D y (y the evaluation point), when the fluid has a linear term.
+    void recordLinear(vulkan::CommandSequence& sequence, IndirectArguments indirect) const;
+    /// Group counts of recordLinear's dispatch (none without a linear term).
+    std::vector<std::uint32_t> linearGroups() const;
     /// `frozen`: a linearized iteration, which leaves the weighted point (M x~) alone.
     void recordUpdate(vulkan::CommandSequence& sequence, std::uint32_t op, std::uint32_t stage,
                       double h, bool indirect, bool frozen = false) const;
@@ -171,6 +179,10 @@ private:
                              VkDeviceSize offset = 0) const;
     /// Mass and decay rates of `model` as state-shaped float vectors.
     void uploadModel(const DeviceModel& model);
+    /// The fluid's linear term as mLinear (none: dropped).
+    /// @throw modeflow::Error for a term of another size, a non-finite one, or one larger than
+    ///        a texel buffer may be.
+    void uploadLinear(const LinearModalTerm* linear);
     /// The indirect arguments of an implicit iteration (its dispatches' group counts, twice).
     void buildArguments();
     /// The state, the mass in R or the scheme was changed from the host: the next step starts
@@ -199,6 +211,9 @@ private:
     std::uint32_t mIterationDispatches = 0;   ///< contraction dispatches of an implicit iteration
     vulkan::DeviceBuffer mState, mPoint, mWeighted, mRhs, mForce, mMass, mDecay, mAccumulator,
         mHistory, mStatus, mArguments;
+    /// The fluid's linear term D (FluidParameters::linear): N rows of `mStride` floats, read as
+    /// texels; none without one.
+    std::optional<vulkan::DeviceBuffer> mLinear;
     /// MHD: the field parts of the state and point, and the induction and Lorentz parts of r.
     std::optional<vulkan::DeviceBuffer> mField, mPointField, mInduction, mLorentzForce;
 };

@@ -107,7 +107,7 @@ void ParticleAdvection::record(vulkan::CommandSequence& sequence, const SmokeSta
     shaders::ParticleStepParams params{};
     params.count = mCount;
     params.obstacleCount = std::uint32_t(solids.size());
-    params.periodic = basis.periodicBits();
+    params.boundary = basis.boundaryBits();
     params.allFluid = state.fluidCellCount() == std::uint32_t(smoke.cellCount()) ? 1u : 0u;
     params.up = std::uint32_t(upAxis(basis));
     params.dt = float(dt);

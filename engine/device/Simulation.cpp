@@ -9,6 +9,7 @@
 #include "engine/core/RuntimeLimits.h"
 #include "engine/dynamics/ModalDivergence.h"
 #include "engine/simulation/SmokeDisplacement.h"
+#include "engine/simulation/WindTransport.h"
 
 namespace modeflow::device {
 namespace {
@@ -21,8 +22,6 @@ constexpr int kEasyStepsToHalve = 50;
 SimulationSettings supported(SimulationSettings settings) {
     if (settings.mhd && settings.fluid.alpha > 0.0)
         throw Error("simulation: LANS-alpha and MHD cannot be combined");
-    if (settings.wind || settings.fluid.linear)
-        throw Error("simulation: a wind ([wind]) runs on the CPU reference only");
     return settings;
 }
 
@@ -50,7 +49,7 @@ std::vector<double> widened(const std::vector<float>& values) {
 Simulation::Simulation(const vulkan::VulkanContext& context, const BasisCache& cache,
                        const StructuralCoefficients& coefficients, SimulationSettings settings,
                        std::span<const std::uint8_t> smokeMask, bool timestamps)
-    : mSettings(supported(std::move(settings))),
+    : mSettings(supported(withWindTransport(std::move(settings), cache))),
       mModes(cache.velocity.source == BasisSource::ClosedForm
                  ? nullptr
                  : std::make_unique<ModeBuffer>(context, cache.velocity.modes,
@@ -79,6 +78,13 @@ Simulation::Simulation(const vulkan::VulkanContext& context, const BasisCache& c
     if (mSettings.stepsPerFrame < 1) throw Error("simulation: steps per frame must be at least 1");
     requireDisplaceableMotion(mSettings.obstacles, mSettings.dt, mSmoke.smokeGrid());
     if (mSettings.fire) mBurn.emplace(context);
+    if (mSettings.wind) {
+        mWind.emplace(context, mReconstruction.grid(), *mSettings.wind);
+        mSmoke.setWind(*mSettings.wind);
+        // The air before the first step: the wind alone, as on the CPU.
+        mWind->record(mSequence, mFaceVelocity);
+        mSequence.submitAndWait();
+    }
 }
 
 void Simulation::restore(double time, const Eigen::VectorXd& v, const SmokeFields& smoke) {
@@ -212,6 +218,7 @@ void Simulation::recordStep(std::vector<std::size_t>& boundaries) {
 
 void Simulation::recordReconstruction() {
     recordReconstruction(mStepper.stateBuffer(), mFaceVelocity);
+    if (mWind) mWind->record(mSequence, mFaceVelocity);
 }
 
 void Simulation::recordReconstruction(const vulkan::DeviceBuffer& modal,

@@ -4,8 +4,8 @@
 /// grid velocity and the smoke all live in device buffers, and each step is one queue submission
 ///
 ///     force field (buoyancy from the smoke temperature + stirring splats) → projection f = Ψᵀ⋆F
-///     → modal step (viscosity, LANS-α) → reconstruction u = Σ v_i Ψ_i
-///     (the basis's columns, or a closed-form basis's separable transforms)
+///     → modal step (viscosity, LANS-α; a wind's D v) → reconstruction u = Σ v_i Ψ_i
+///     (the basis's columns, or a closed-form basis's separable transforms) + the wind U
 ///     → moving obstacles (v −= projected mismatch, reconstruct again) → smoke advection + emitters
 ///     → smoke pushed out of solids → fuel burning ([fire]) → particles
 ///
@@ -29,6 +29,7 @@
 #include "engine/device/SmokeDisplacement.h"
 #include "engine/device/SmokeState.h"
 #include "engine/device/VelocityReconstruction.h"
+#include "engine/device/WindField.h"
 #include "engine/simulation/Simulator.h"
 #include "engine/vulkan/CommandSequence.h"
 #include "engine/vulkan/DeviceBuffer.h"
@@ -104,6 +105,7 @@ private:
     SmokeDisplacement mDisplacement;
     ParticleAdvection mParticles;
     std::optional<FireBurnKernel> mBurn;  ///< with [fire]
+    std::optional<WindField> mWind;       ///< with [wind]: U added to each reconstruction
     mutable vulkan::CommandSequence
         mSequence;                      ///< also records faceMagneticField()'s reconstruction
     std::vector<bool> mActiveEmitters;  ///< what the device's emitter list holds now

@@ -41,7 +41,7 @@ shaders::SmokeAdvectParams stepParams(const SmokeState& state, double dt) {
     p.scale = std::uint32_t(state.scale());
     p.faceOffsetY = std::uint32_t(basis.faceOffset(1));
     p.faceOffsetZ = std::uint32_t(basis.faceOffset(2));
-    p.periodic = basis.periodicBits();
+    p.boundary = basis.boundaryBits() | state.inflowBits();
     // Velocity times dt / spacing: smoke cells per step, as in the CPU reference.
     p.stepX = float(dt / smoke.spacing[0]);
     p.stepY = float(dt / smoke.spacing[1]);

@@ -1,11 +1,13 @@
 #include "engine/device/SmokeState.h"
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <string>
 #include <utility>
 
 #include "engine/core/Error.h"
+#include "engine/simulation/WindTransport.h"
 #include "engine/vulkan/VulkanContext.h"
 #include "shaders/SmokeAdvectParams.h"
 
@@ -103,6 +105,15 @@ std::vector<std::uint32_t> cellList(const MacGrid& smoke, const std::vector<std:
 }
 
 }  // namespace
+
+void SmokeState::setWind(const Vec3& wind) {
+    mBasis = withWindThrough(mBasis, wind);
+    const std::array<int, 3> sides = inflowSides(mSmoke, wind);
+    mInflowBits = 0;
+    for (std::uint32_t a = 0; a < 3; ++a)
+        if (sides[a] != 0)
+            mInflowBits |= 1u << ((sides[a] < 0 ? SMOKE_INFLOW_LOW : SMOKE_INFLOW_HIGH) + a);
+}
 
 SmokeState::SmokeState(const vulkan::VulkanContext& context, const MacGrid& basisGrid, int scale,
                        std::span<const std::uint8_t> fluidMask, bool fire)

@@ -45,6 +45,13 @@ public:
     SmokeState(const vulkan::VulkanContext& context, const MacGrid& basisGrid, int scale,
                std::span<const std::uint8_t> fluidMask, bool fire = false);
 
+    /// The wind blowing through the box ([wind]), as reference::SmokeAdvection::setWind: the
+    /// basis grid's sides it crosses open (MacGrid::flowThrough), its upstream sides inflows of
+    /// clean air (inflowBits).
+    void setWind(const Vec3& wind);
+    /// The inflow sides as SmokeAdvectParams::boundary's SMOKE_INFLOW_* bits.
+    std::uint32_t inflowBits() const { return mInflowBits; }
+
     const MacGrid& basisGrid() const { return mBasis; }
     const MacGrid& smokeGrid() const { return mSmoke; }
     int scale() const { return mScale; }
@@ -119,6 +126,7 @@ private:
     std::vector<std::uint8_t> mFluid;       ///< the mask as 0 and 1, for setEmitters
     std::vector<std::int64_t> mFluidIndex;  ///< cellIndex of each fluid cell, list order
     std::uint32_t mFluidCount = 0;
+    std::uint32_t mInflowBits = 0;  ///< SMOKE_INFLOW_* bits of the wind's upstream sides
     std::vector<Pair> mPairs;
     vulkan::DeviceBuffer mMask;
     vulkan::DeviceBuffer mStencilMask;

@@ -24,8 +24,8 @@ Simulation::Simulation(const BasisCache& cache, const StructuralCoefficients& co
       mStepper(coefficients, mSettings),
       mAdvection(MacGrid::fromSpec(cache.grid), mSettings.smokeScale, std::move(smokeMask)),
       mDisplacement(mAdvection.smokeGrid(), mAdvection.fluidMask()),
-      mParticles(MacGrid::fromSpec(cache.grid), mAdvection.smokeGrid(), mAdvection.fluidMask(),
-                 mSettings.particles, mSettings.shotEnd),
+      mParticles(airGridOf(cache.grid, mSettings.wind), mAdvection.smokeGrid(),
+                 mAdvection.fluidMask(), mSettings.particles, mSettings.shotEnd),
       mFaceVelocity(std::size_t(MacGrid::fromSpec(cache.grid).faceTotal()), 0.0) {
     if (!(mSettings.dt > 0.0)) throw Error("simulation: dt must be positive");
     if (mSettings.stepsPerFrame < 1) throw Error("simulation: steps per frame must be at least 1");

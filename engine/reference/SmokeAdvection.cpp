@@ -71,10 +71,7 @@ SmokeAdvection::SmokeAdvection(const MacGrid& basisGrid, int scale,
 
 void SmokeAdvection::setWind(const Vec3& wind) {
     mBasis = withWindThrough(mBasis, wind);
-    for (int a = 0; a < 3; ++a)
-        mInflow[a] = a >= mSmoke.dim || mSmoke.periodic[a] || wind[a] == 0.0 ? 0
-                     : wind[a] > 0.0                                         ? -1
-                                                                             : 1;
+    mInflow = inflowSides(mSmoke, wind);
 }
 
 void SmokeAdvection::requireCellField(std::size_t size, const char* what) const {

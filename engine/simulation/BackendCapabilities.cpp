@@ -7,8 +7,8 @@
 namespace modeflow {
 namespace {
 
-constexpr BackendCapabilities kCpuReference{"the CPU reference", "cpu", true, false, true, true};
-constexpr BackendCapabilities kVulkan{"a Vulkan device", "vulkan", false, true, false, false};
+constexpr BackendCapabilities kCpuReference{"the CPU reference", "cpu", true, false, true};
+constexpr BackendCapabilities kVulkan{"a Vulkan device", "vulkan", false, true, false};
 
 }  // namespace
 
@@ -23,8 +23,6 @@ void requireSupport(const SceneSpec& scene, BackendKind kind) {
     if (scene.forcing.holds() && !capabilitiesOf(kind).forcing)
         throw Error(file +
                     ": [forcing] (held modes) runs on the CPU reference only; use --device cpu");
-    if (scene.wind && !capabilitiesOf(kind).wind)
-        throw Error(file + ": [wind] runs on the CPU reference only; use --device cpu");
 }
 
 }  // namespace modeflow

@@ -2,8 +2,7 @@
 /// @file BackendCapabilities.h
 /// The two backends a scene runs on, and what tells them apart. Both simulate every grid scene
 /// (MHD, every integrator, every coefficient storage); they differ in precision, in what they
-/// report, and in that surface scenes, held modes ([forcing]) and wind run on the CPU reference
-/// only.
+/// report, and in that surface scenes and held modes ([forcing]) run on the CPU reference only.
 /// Every command checks a scene against this one table before any precompute or device work, so
 /// a scene a backend cannot run is refused in a second, naming the key and the backend that runs
 /// it.
@@ -24,7 +23,6 @@ struct BackendCapabilities {
     bool forcing = false;     ///< [forcing]: held modes
     bool stageTimes = false;  ///< per-stage times in FrameStats
     bool surfaces = false;    ///< surface scenes ([surface])
-    bool wind = false;        ///< [wind]
 };
 
 /// The row of the table for `kind`.
@@ -33,7 +31,7 @@ const BackendCapabilities& capabilitiesOf(BackendKind kind);
 /// Both backends, in the table's order.
 inline constexpr BackendKind kBackends[] = {BackendKind::CpuReference, BackendKind::Vulkan};
 
-/// Refuses what `kind` does not simulate (today: a [surface] scene, held modes or a wind on the
+/// Refuses what `kind` does not simulate (today: a [surface] scene or held modes on the
 /// device).
 /// @throw modeflow::Error naming the scene file and key, and the backend that runs it.
 void requireSupport(const SceneSpec& scene, BackendKind kind);

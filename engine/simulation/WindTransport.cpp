@@ -126,6 +126,18 @@ MacGrid withWindThrough(MacGrid grid, const Vec3& wind) {
     return grid;
 }
 
+std::array<int, 3> inflowSides(const MacGrid& grid, const Vec3& wind) {
+    std::array<int, 3> sides{0, 0, 0};
+    for (int a = 0; a < grid.dim; ++a)
+        if (!grid.periodic[a] && wind[a] != 0.0) sides[a] = wind[a] > 0.0 ? -1 : 1;
+    return sides;
+}
+
+MacGrid airGridOf(const GridSpec& spec, const std::optional<Vec3>& wind) {
+    const MacGrid grid = MacGrid::fromSpec(spec);
+    return wind ? withWindThrough(grid, *wind) : grid;
+}
+
 void addWind(const MacGrid& grid, const Vec3& wind, std::span<double> faceField) {
     requireFaceField(grid, faceField.size(), "wind face field");
     for (const int a : windAxes(grid, wind))

@@ -19,7 +19,9 @@
 /// a periodic axis is a Galilean shift, D antisymmetric). The faces normal to a are the box's
 /// walls along a, where the modes' u'_a vanishes: there the sum telescopes to 0.
 
+#include <array>
 #include <memory>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -67,6 +69,14 @@ SimulationSettings withWindTransport(SimulationSettings settings, const BasisCac
 /// `grid` with the sides the wind crosses open to the air (MacGrid::flowThrough): every
 /// non-periodic axis along which it blows.
 MacGrid withWindThrough(MacGrid grid, const Vec3& wind);
+
+/// The sides across each axis where the wind brings air into the box `grid`: −1 the low side,
+/// +1 the high side, 0 none (an axis it does not blow along, a periodic one, or one beyond dim).
+std::array<int, 3> inflowSides(const MacGrid& grid, const Vec3& wind);
+
+/// The basis grid of a run's air: `spec`'s box, with the sides a wind crosses open
+/// (withWindThrough), what the smoke and the particles sample the air velocity on.
+MacGrid airGridOf(const GridSpec& spec, const std::optional<Vec3>& wind);
 
 /// Adds the wind to a face field of `grid` (face-normal velocities): U_a on every face normal to
 /// a, the box's walls along a included (where the wind enters and leaves).

@@ -14,6 +14,7 @@
 #include "engine/core/Error.h"
 #include "engine/device/ModalStepper.h"
 #include "engine/dynamics/Diagnostics.h"
+#include "engine/dynamics/LinearModalTerm.h"
 #include "engine/dynamics/MhdSystem.h"
 #include "engine/dynamics/ModalIntegrator.h"
 #include "engine/dynamics/SparseCoefficients.h"
@@ -93,6 +94,105 @@ TEST_P(ModalStepKernelTest, OneStepOfEverySchemeEqualsTheCpuReference) {
             }
             expectNoValidationMessages();
         }
+    }
+}
+
+/// A linear term D v given as its matrix (a wind's term, WindTransport, is one such).
+class MatrixTerm final : public LinearModalTerm {
+public:
+    explicit MatrixTerm(Eigen::MatrixXd d) : mD(std::move(d)) {}
+    int size() const override { return int(mD.rows()); }
+    void apply(const Eigen::VectorXd& v, Eigen::VectorXd& out) const override { out = mD * v; }
+    const Eigen::MatrixXd& matrix() const override { return mD; }
+
+private:
+    Eigen::MatrixXd mD;
+};
+
+/// A random D of float-exact entries, as strong as the contraction at `v` (|D v| ≈ |C(v, v)|),
+/// and not antisymmetric (a wind takes energy out).
+std::shared_ptr<const LinearModalTerm> randomTerm(const StructuralCoefficients& c,
+                                                  const Eigen::VectorXd& v, unsigned seed) {
+    const int n = c.size();
+    Eigen::MatrixXd d(n, n);
+    for (int j = 0; j < n; ++j) d.col(j) = testing::randomVector(n, seed + unsigned(j));
+    Eigen::VectorXd r;
+    c.apply(v, v, r);
+    d *= r.norm() / (d * v).norm();
+    return std::make_shared<MatrixTerm>(d.cast<float>().cast<double>());
+}
+
+TEST_P(ModalStepKernelTest, ALinearTermStepsLikeTheCpuReferenceInEveryScheme) {
+    // R(v) = C(v, v) + D v (a wind): the device adds D y to every evaluation, and to the
+    // linearized rule's frozen L(x~) y, whose Jacobian part it is.
+    FluidParameters windy;
+    windy.linear = randomTerm(mC, mV0, 31);
+    FluidParameters windyLans = windy;
+    windyLans.kappaSquared = testing::shapedKappaSquared(kModes) / 100.0;
+    windyLans.viscosity = 0.05;
+    windyLans.alpha = 0.1;
+    for (const FluidParameters& parameters : {windy, windyLans}) {
+        const FluidSystem system(mC, parameters);
+        for (const Integrator scheme : {Integrator::Explicit, Integrator::Rk4, Integrator::Midpoint,
+                                        Integrator::Trapezoidal, Integrator::Linearized}) {
+            ModalIntegrator cpu(system, {scheme});
+            Eigen::VectorXd expected = mV0;
+            for (int s = 0; s < 10; ++s) cpu.step(expected, mH);
+            {
+                ModalStepper stepper(context(), mC, parameters, {scheme});
+                stepper.setState(mV0);
+                runDevice(context(), stepper, mH, 10);
+                const double error = relativeDifference(stepper.state(), expected);
+                std::cout << sceneKeyword(scheme)
+                          << (parameters.alpha > 0 ? " viscous LANS" : " Euler")
+                          << " with a linear term, 10 steps: relative error " << error << "\n";
+                EXPECT_LE(error, 1e-5) << sceneKeyword(scheme);
+                EXPECT_EQ(stepper.status().unconvergedSteps, 0);
+            }
+            expectNoValidationMessages();
+        }
+    }
+    // Tensor-free coefficients contract in their own dispatches; the term follows them.
+    const BasisCache cache = testing::withDeviceModes(testing::disk2d(), ModePrecision::Float32);
+    const TensorFreeCoefficients free(cache.velocity.modes, cache.quadrature);
+    const Eigen::VectorXd v0 = roundedToFloat(testing::randomVector(free.size(), 14));
+    const double h = stepFor(free, v0, 0.05);
+    FluidParameters freeWindy;
+    freeWindy.linear = randomTerm(free, v0, 41);
+    for (const Integrator scheme : {Integrator::Midpoint, Integrator::Linearized}) {
+        const FluidSystem system(free, freeWindy);
+        ModalIntegrator cpu(system, {scheme});
+        Eigen::VectorXd expected = v0;
+        for (int s = 0; s < 10; ++s) cpu.step(expected, h);
+        ModalStepper stepper(context(), free, freeWindy, {scheme}, &cache);
+        stepper.setState(v0);
+        runDevice(context(), stepper, h, 10);
+        EXPECT_LE(relativeDifference(stepper.state(), expected), 1e-5)
+            << "tensor-free " << sceneKeyword(scheme);
+    }
+    // The term changes what the steps do (not a test that passes without it), and a stepper
+    // whose parameters drop it steps as one made without it.
+    ModalStepper windless(context(), mC, FluidParameters{}), dropped(context(), mC, windy);
+    dropped.setParameters(FluidParameters{});
+    for (ModalStepper* stepper : {&windless, &dropped}) {
+        stepper->setState(mV0);
+        runDevice(context(), *stepper, mH, 10);
+    }
+    const FluidSystem windySystem(mC, windy);
+    ModalIntegrator cpu(windySystem, {Integrator::Midpoint});
+    Eigen::VectorXd withWind = mV0;
+    for (int s = 0; s < 10; ++s) cpu.step(withWind, mH);
+    EXPECT_GT(relativeDifference(windless.state(), withWind), 1e-2);
+    EXPECT_EQ(dropped.state(), windless.state());
+    // A term for another basis is refused by name.
+    FluidParameters wrong;
+    wrong.linear = std::make_shared<MatrixTerm>(Eigen::MatrixXd::Zero(kModes + 1, kModes + 1));
+    try {
+        ModalStepper refused(context(), mC, wrong);
+        ADD_FAILURE() << "a linear term of another size was accepted";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("linear term of 41 modes"), std::string::npos)
+            << e.what();
     }
 }
 

@@ -507,13 +507,15 @@ velocity_modes = 12
 [wind]
 velocity = [1.0, 0.0]
 )");
-    expectRejected("run " + windy.string() + " --out " + (mDir / "w").string() + " --cache-dir " +
-                       mCache.string(),
-                   "[wind] runs on the CPU reference only; use --device cpu");
-    const RunResult r = run("run " + windy.string() + " --device cpu --frames 2 --out " +
-                            (mDir / "w").string() + " --cache-dir " + mCache.string());
-    EXPECT_EQ(r.status, 0) << r.err;
-    EXPECT_TRUE(fs::exists(mDir / "w" / "windy_0002.vdb"));
+    // A wind runs on both.
+    for (const char* device : {"cpu", "vulkan"}) {
+        const fs::path out = mDir / (std::string("w_") + device);
+        const RunResult r =
+            run("run " + windy.string() + " --device " + device + " --frames 2 --out " +
+                out.string() + " --cache-dir " + mCache.string());
+        EXPECT_EQ(r.status, 0) << device << ": " << r.err;
+        EXPECT_TRUE(fs::exists(out / "windy_0002.vdb")) << device;
+    }
 }
 
 TEST_F(RunCommand, HeldModesRunOnTheCpuReferenceAndWakeStillFluid) {

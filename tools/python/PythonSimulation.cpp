@@ -123,8 +123,7 @@ PythonSimulation::PythonSimulation(const SceneText& scene, const std::string& de
     mBackend->requireFits(checked.scene);
     mRun = std::make_unique<RunInputs>(prepareRun(checked.scene, cache, report.progress()));
     mSimulator = mBackend->makeSimulator(*mRun);
-    mBasisGrid = MacGrid::fromSpec(mRun->cache.grid);
-    if (mRun->settings.wind) mBasisGrid = withWindThrough(mBasisGrid, *mRun->settings.wind);
+    mBasisGrid = airGridOf(mRun->cache.grid, mRun->settings.wind);
     mObstacles = mSimulator->settings().obstacles;
     mSources = mSimulator->settings().emitters;
 }

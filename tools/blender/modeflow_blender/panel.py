@@ -28,8 +28,6 @@ class MODEFLOW_PT_physics(bpy.types.Panel):
             layout.prop(settings, "buoyancy")
             layout.prop(settings, "integrator")
             layout.prop(settings, "wind")
-            if any(settings.wind) and settings.device != 'cpu':
-                layout.label(text="A wind runs on the CPU device", icon='ERROR')
             fire = layout.column(align=True)
             fire.label(text="Fire (with an emitter's fuel)")
             fire.prop(settings, "ignition")

@@ -38,7 +38,7 @@ class ModeflowObjectSettings(bpy.types.PropertyGroup):
     )
     wind: FloatVectorProperty(name="Wind", size=3, subtype='VELOCITY', default=(0.0, 0.0, 0.0),
                               description="Velocity of the air blowing through the box (written as "
-                                          "[wind] when not zero; runs on the CPU device)")
+                                          "[wind] when not zero)")
     # Fire (written as [fire] when an emitter feeds fuel)
     ignition: FloatProperty(name="Ignition", description="Temperature above which fuel burns", default=1.0)
     burn_rate: FloatProperty(name="Burn Rate", description="Part of the fuel burnt per unit of time",
