@@ -16,12 +16,10 @@ struct WindParams {
     uint periodic; /* bit a: axis a is periodic (its faces have no wall) */
     uint cells[3];
     uint pad0;
-    float wind[3]; /* the wind's velocity, added to every face normal to each axis */
-    uint pad1;
 };
 
 #ifdef __cplusplus
-static_assert(sizeof(WindParams) == 48, "push constants are padded to 16 bytes");
+static_assert(sizeof(WindParams) == 32, "push constants are padded to 16 bytes");
 }  // namespace modeflow::shaders
 #endif
 

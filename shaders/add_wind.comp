@@ -1,9 +1,9 @@
 #version 450
-// The wind's held base flow added to a reconstructed face field (engine/device/WindField.h; CPU
-// reference addWind, engine/simulation/WindTransport.cpp): field[f] += U_a on every face normal to
-// axis a, the box's sides included (where the wind enters and leaves). A reconstruction writes
-// the DOF faces alone and leaves the sides as they were, so the sides are set to U_a, not added
-// to: what the CPU's fresh field (0 there) plus U gives.
+// The wind's held base flow B added to a reconstructed face field (engine/device/WindField.h;
+// CPU reference addWind, engine/simulation/WindTransport.cpp): field[f] += B[f], the box's sides
+// included (where the wind enters and leaves). A reconstruction writes the DOF faces alone and
+// leaves the sides as they were, so the sides are set to B, not added to: what the CPU's fresh
+// field (0 there) plus B gives.
 #extension GL_GOOGLE_include_directive : require
 #include "FaceLocation.glsl"
 #include "WindParams.h"
@@ -11,6 +11,7 @@
 layout(local_size_x = 64, local_size_x_id = 0) in;
 
 layout(std430, set = 0, binding = 0) buffer Field { float field[]; };
+layout(set = 0, binding = 1) uniform usamplerBuffer base;  // B, one float a (R32UI) texel
 layout(push_constant) uniform Push { WindParams params; };
 
 void main() {
@@ -22,6 +23,6 @@ void main() {
                                      params.periodic);
         const bool side = (params.periodic & (1u << axis)) == 0u &&
                           (p[axis] == 0u || p[axis] == params.cells[axis]);
-        field[f] = (side ? 0.0 : field[f]) + params.wind[axis];
+        field[f] = (side ? 0.0 : field[f]) + uintBitsToFloat(texelFetch(base, int(f)).x);
     }
 }

@@ -24,6 +24,8 @@ inline constexpr std::pair<std::string_view, CsgOp> kCsgOps[] = {
     {"union", CsgOp::Union}, {"subtract", CsgOp::Subtract}, {"intersect", CsgOp::Intersect}};
 inline constexpr std::pair<std::string_view, ScalarBoundary> kScalarBoundaries[] = {
     {"neumann", ScalarBoundary::Neumann}, {"dirichlet", ScalarBoundary::Dirichlet}};
+inline constexpr std::pair<std::string_view, WindProfile> kWindProfiles[] = {
+    {"uniform", WindProfile::Uniform}, {"boundary-layer", WindProfile::BoundaryLayer}};
 inline constexpr std::pair<std::string_view, WallKind> kWalls[] = {
     {"free-slip", WallKind::FreeSlip}, {"no-slip", WallKind::NoSlip}};
 inline constexpr std::pair<std::string_view, BoundaryTreatment> kBoundaries[] = {

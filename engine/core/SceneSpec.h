@@ -216,11 +216,18 @@ struct FireSpec {
     double smoke = 0.5;
 };
 
+/// How a wind's speed changes with the height h over the floor (the box's low side along the up
+/// axis): the same everywhere, or a boundary layer U (h / thickness)^exponent below `thickness`.
+enum class WindProfile { Uniform, BoundaryLayer };
+
 /// `[wind]`: the air far from solids moves at `velocity`, entering through the grid box's upstream
 /// sides and leaving through its downstream ones (engine/README.md, "Wind"): a held base flow U
 /// under the modes, u = U + Σ v_k Ψ_k. Grid scenes whose domain is the whole box.
 struct WindSpec {
     Vec3 velocity{0.0, 0.0, 0.0};
+    WindProfile profile = WindProfile::Uniform;
+    double thickness = 0.0;       ///< boundary layer: where the wind reaches `velocity`
+    double exponent = 1.0 / 7.0;  ///< boundary layer: of the power law (1/7: a turbulent one)
     bool operator==(const WindSpec&) const = default;
 };
 

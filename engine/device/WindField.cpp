@@ -3,9 +3,11 @@
 #include <array>
 #include <cmath>
 #include <cstdint>  // the generated header uses uint32_t without including it
+#include <vector>
 
 #include "engine/core/Error.h"
 #include "engine/device/DofFaces.h"
+#include "engine/simulation/WindTransport.h"
 #include "engine/vulkan/CommandSequence.h"
 #include "engine/vulkan/DeviceBuffer.h"
 #include "shaders/WindParams.h"
@@ -16,19 +18,28 @@ namespace {
 
 constexpr std::uint32_t kWorkgroup = 64;
 
-const Vec3& finite(const Vec3& wind) {
-    for (const double u : wind)
+/// B as floats, one a face.
+vulkan::DeviceBuffer baseField(const vulkan::VulkanContext& context, const MacGrid& grid,
+                               const WindSpec& wind) {
+    for (const double u : wind.velocity)
         if (!std::isfinite(u)) throw Error("wind: the velocity is not finite");
-    return wind;
+    std::vector<double> base(std::size_t(grid.faceTotal()), 0.0);
+    addWind(grid, wind, base);
+    return vulkan::DeviceBuffer::fromValues<float>(
+        context, std::vector<float>(base.begin(), base.end()), "wind base flow");
 }
 
 }  // namespace
 
-WindField::WindField(const vulkan::VulkanContext& context, const MacGrid& grid, const Vec3& wind)
+WindField::WindField(const vulkan::VulkanContext& context, const MacGrid& grid,
+                     const WindSpec& wind)
     : mGrid(grid),
-      mWind(finite(wind)),
+      mBase(baseField(context, grid, wind)),
       mGroups(groupsFor(context, std::uint64_t(grid.faceTotal()), kWorkgroup)),
-      mKernel(context, {"add_wind", add_wind_spv, 1, sizeof(shaders::WindParams), kWorkgroup}) {}
+      mKernel(
+          context,
+          {"add_wind", add_wind_spv, 2, sizeof(shaders::WindParams), kWorkgroup, {}, {}, {}, {1}}) {
+}
 
 void WindField::record(vulkan::CommandSequence& sequence,
                        const vulkan::DeviceBuffer& faceField) const {
@@ -39,8 +50,7 @@ void WindField::record(vulkan::CommandSequence& sequence,
     params.faceTotal = std::uint32_t(mGrid.faceTotal());
     params.periodic = mGrid.periodicBits();
     for (int a = 0; a < 3; ++a) params.cells[a] = std::uint32_t(mGrid.cells[a]);
-    for (int a = 0; a < 3; ++a) params.wind[a] = a < mGrid.dim ? float(mWind[a]) : 0.0f;
-    const std::array<const vulkan::DeviceBuffer*, 1> buffers{&faceField};
+    const std::array<const vulkan::DeviceBuffer*, 2> buffers{&faceField, &mBase};
     sequence.dispatch(mKernel, buffers, params, mGroups);
 }
 

@@ -1,19 +1,19 @@
 #pragma once
 /// @file WindField.h
-/// A wind's held base flow on the device (shaders/add_wind.comp): U added to the reconstructed
-/// face field after each reconstruction, as the CPU reference's addWind
-/// (engine/simulation/WindTransport.h) does, so the obstacles, the smoke and the particles see
-/// the whole air velocity U + Ψ v.
+/// A wind's held base flow on the device (shaders/add_wind.comp): B = U f(h) (addWind's face
+/// field, engine/simulation/WindTransport.h, uploaded once) added to the reconstructed face field
+/// after each reconstruction, as the CPU reference does, so the obstacles, the smoke and the
+/// particles see the whole air velocity B + Ψ v.
 
 #include <cstdint>
 
-#include "engine/core/GridSpec.h"
 #include "engine/core/MacGrid.h"
+#include "engine/core/SceneSpec.h"
 #include "engine/vulkan/ComputeKernel.h"
+#include "engine/vulkan/DeviceBuffer.h"
 
 namespace modeflow::vulkan {
 class CommandSequence;
-class DeviceBuffer;
 class VulkanContext;
 }  // namespace modeflow::vulkan
 
@@ -22,15 +22,15 @@ namespace modeflow::device {
 class WindField {
 public:
     /// @throw modeflow::Error for a non-finite wind, or a creation call that fails.
-    WindField(const vulkan::VulkanContext& context, const MacGrid& grid, const Vec3& wind);
+    WindField(const vulkan::VulkanContext& context, const MacGrid& grid, const WindSpec& wind);
 
-    /// Records faceField += U on every face normal to each axis of `grid`.
+    /// Records faceField += B (the box's sides, which a reconstruction leaves alone, set to B).
     /// @throw modeflow::Error when `faceField` is not one float per face.
     void record(vulkan::CommandSequence& sequence, const vulkan::DeviceBuffer& faceField) const;
 
 private:
     MacGrid mGrid;
-    Vec3 mWind;
+    vulkan::DeviceBuffer mBase;  ///< B, one float a face
     std::uint32_t mGroups = 1;
     vulkan::ComputeKernel mKernel;
 };

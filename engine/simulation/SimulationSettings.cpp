@@ -26,7 +26,7 @@ SimulationSettings SimulationSettings::fromScene(const SceneSpec& scene, const B
     settings.smokeScale = scene.smoke.resolutionScale;
     settings.advection = scene.smoke.advection;
     settings.fire = scene.fire;
-    if (scene.wind) settings.wind = scene.wind->velocity;
+    settings.wind = scene.wind;
     settings.basisPrecision =
         sim.halfPrecisionBasis ? ModePrecision::Float16 : ModePrecision::Float32;
     for (const SourceSpec& source : scene.sources)

@@ -33,7 +33,7 @@ struct SimulationSettings {
     /// `[wind]`: the base flow U under the modes (WindTransport.h): a simulation makes its
     /// advection of the modes fluid.linear over its basis; grid velocities and smoke see U + Ψ v,
     /// the smoke arriving clean upstream.
-    std::optional<Vec3> wind;
+    std::optional<WindSpec> wind;
     ModePrecision basisPrecision = ModePrecision::Float32;  ///< device only
     std::vector<SmokeEmitter> emitters;
     std::vector<MovingObstacle> obstacles;

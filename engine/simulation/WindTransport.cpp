@@ -4,6 +4,7 @@
 #include <string>
 
 #include "engine/core/Error.h"
+#include "engine/core/FaceLocation.h"
 #include "engine/core/MacSampling.h"
 
 namespace modeflow {
@@ -15,6 +16,12 @@ std::vector<int> windAxes(const MacGrid& grid, const Vec3& wind) {
     for (int a = 0; a < grid.dim; ++a)
         if (wind[a] != 0.0) axes.push_back(a);
     return axes;
+}
+
+/// The height over the floor of the faces normal to `normal` at lattice position `p`.
+double heightOf(const MacGrid& grid, int normal, const std::array<int, 3>& p) {
+    const int up = upAxis(grid);
+    return (p[up] + (normal == up ? 0.0 : 0.5)) * grid.spacing[up];
 }
 
 /// Calls visit(face, position) for every face normal to `normal`.
@@ -29,11 +36,19 @@ void forEachFace(const MacGrid& grid, int normal, Visit&& visit) {
 
 }  // namespace
 
-WindTransport::WindTransport(const BasisCache& cache, const Vec3& wind)
+WindTransport::WindTransport(const BasisCache& cache, const WindSpec& wind)
     : mCache(cache), mBasis(cache), mGrid(MacGrid::fromSpec(cache.grid)), mWind(wind) {
     if (cache.kind != BasisKind::Grid) throw Error("wind: a surface basis has no wind");
-    for (const double u : wind)
+    for (const double u : wind.velocity)
         if (!std::isfinite(u)) throw Error("wind: the velocity is not finite");
+    if (wind.profile == WindProfile::BoundaryLayer) {
+        const int up = upAxis(mGrid);
+        if (mGrid.periodic[up] || wind.velocity[up] != 0.0)
+            throw Error("wind: a boundary layer needs a floor and a wind along it");
+        if (!(wind.thickness > 0.0) || !(wind.exponent > 0.0 && wind.exponent <= 1.0))
+            throw Error(
+                "wind: a boundary layer needs a positive thickness and an exponent in (0, 1]");
+    }
     for (const std::int64_t face : cache.faces)
         if (face < 0 || face >= mGrid.faceTotal())
             throw Error("wind: face DOF " + std::to_string(face) + " is not a face of the grid");
@@ -47,12 +62,34 @@ std::vector<double> WindTransport::gridFluxes(const Eigen::VectorXd& v) const {
     return fluxes;
 }
 
+double WindTransport::upVelocityBeside(const std::vector<double>& fluxes, int a,
+                                       const std::array<int, 3>& p) const {
+    const int up = upAxis(mGrid);
+    double sum = 0.0;
+    for (const int cell : {p[a] - 1, p[a]})
+        for (const int level : {p[up], p[up] + 1}) {
+            std::array<int, 3> q = p;
+            q[a] = mGrid.wrap(a, cell);
+            q[up] = level;
+            sum += fluxes[std::size_t(mGrid.faceIndex(up, q[0], q[1], q[2]))];
+        }
+    return 0.25 * sum / mGrid.faceArea(up);
+}
+
 void WindTransport::apply(const Eigen::VectorXd& v, Eigen::VectorXd& out) const {
     const std::vector<double> fluxes = gridFluxes(v);
     std::vector<double> change(fluxes.size(), 0.0);
-    for (const int a : windAxes(mGrid, mWind)) {
-        const double u = mWind[a];
+    const bool layer = mWind.profile == WindProfile::BoundaryLayer;
+    for (const int a : windAxes(mGrid, mWind.velocity)) {
+        const double u = mWind.velocity[a];
         const double scale = -u / (2.0 * mGrid.spacing[a]);
+        // The shear: −U_a f' u'_up on the faces normal to a, in flux units.
+        if (layer)
+            forEachFace(mGrid, a, [&](std::int64_t face, std::array<int, 3> p) {
+                if (mGrid.isWallFace(a, p[a])) return;  // no DOF
+                change[std::size_t(face)] -= u * windSlope(mWind, heightOf(mGrid, a, p)) *
+                                             upVelocityBeside(fluxes, a, p) * mGrid.faceArea(a);
+            });
         for (int c = 0; c < mGrid.dim; ++c) {
             const int last = mGrid.faceExtent(c)[a] - 1;
             forEachFace(mGrid, c, [&](std::int64_t face, std::array<int, 3> p) {
@@ -69,7 +106,8 @@ void WindTransport::apply(const Eigen::VectorXd& v, Eigen::VectorXd& out) const 
                     n[a] = q;
                     return fluxes[std::size_t(mGrid.faceIndex(c, n[0], n[1], n[2]))];
                 };
-                change[std::size_t(face)] += scale * (at(p[a] + 1) - at(p[a] - 1));
+                change[std::size_t(face)] += scale * windFactor(mWind, heightOf(mGrid, c, p)) *
+                                             (at(p[a] + 1) - at(p[a] - 1));
             });
         }
     }
@@ -99,20 +137,46 @@ const Eigen::MatrixXd& WindTransport::matrix() const {
 double WindTransport::outflowPower(const Eigen::VectorXd& v) const {
     const std::vector<double> fluxes = gridFluxes(v);
     double power = 0.0;
-    for (const int a : windAxes(mGrid, mWind)) {
+    for (const int a : windAxes(mGrid, mWind.velocity)) {
         if (mGrid.periodic[a]) continue;
         const double sideArea = mGrid.cellVolume() / mGrid.spacing[a];  // of one cell's side
         for (int c = 0; c < mGrid.dim; ++c) {
             if (c == a) continue;  // the walls along a: no disturbance crosses them
-            const int downstream = mWind[a] > 0.0 ? mGrid.faceExtent(c)[a] - 1 : 0;
+            const int downstream = mWind.velocity[a] > 0.0 ? mGrid.faceExtent(c)[a] - 1 : 0;
             forEachFace(mGrid, c, [&](std::int64_t face, std::array<int, 3> p) {
                 if (p[a] != downstream) return;
                 const double velocity = fluxes[std::size_t(face)] / mGrid.faceArea(c);
-                power += 0.5 * std::abs(mWind[a]) * velocity * velocity * sideArea;
+                power += 0.5 * std::abs(mWind.velocity[a]) *
+                         windFactor(mWind, heightOf(mGrid, c, p)) * velocity * velocity * sideArea;
             });
         }
     }
     return power;
+}
+
+double WindTransport::shearPower(const Eigen::VectorXd& v) const {
+    if (mWind.profile != WindProfile::BoundaryLayer) return 0.0;
+    const std::vector<double> fluxes = gridFluxes(v);
+    double power = 0.0;
+    for (const int a : windAxes(mGrid, mWind.velocity))
+        forEachFace(mGrid, a, [&](std::int64_t face, std::array<int, 3> p) {
+            if (mGrid.isWallFace(a, p[a])) return;
+            const double along = fluxes[std::size_t(face)] / mGrid.faceArea(a);
+            power += mWind.velocity[a] * windSlope(mWind, heightOf(mGrid, a, p)) * along *
+                     upVelocityBeside(fluxes, a, p) * mGrid.cellVolume();
+        });
+    return power;
+}
+
+double windFactor(const WindSpec& wind, double height) {
+    if (wind.profile == WindProfile::Uniform || height >= wind.thickness) return 1.0;
+    return std::pow(std::max(height, 0.0) / wind.thickness, wind.exponent);
+}
+
+double windSlope(const WindSpec& wind, double height) {
+    if (wind.profile == WindProfile::Uniform || height >= wind.thickness || height <= 0.0)
+        return 0.0;
+    return wind.exponent / wind.thickness * std::pow(height / wind.thickness, wind.exponent - 1.0);
 }
 
 SimulationSettings withWindTransport(SimulationSettings settings, const BasisCache& cache) {
@@ -133,16 +197,17 @@ std::array<int, 3> inflowSides(const MacGrid& grid, const Vec3& wind) {
     return sides;
 }
 
-MacGrid airGridOf(const GridSpec& spec, const std::optional<Vec3>& wind) {
+MacGrid airGridOf(const GridSpec& spec, const std::optional<WindSpec>& wind) {
     const MacGrid grid = MacGrid::fromSpec(spec);
-    return wind ? withWindThrough(grid, *wind) : grid;
+    return wind ? withWindThrough(grid, wind->velocity) : grid;
 }
 
-void addWind(const MacGrid& grid, const Vec3& wind, std::span<double> faceField) {
+void addWind(const MacGrid& grid, const WindSpec& wind, std::span<double> faceField) {
     requireFaceField(grid, faceField.size(), "wind face field");
-    for (const int a : windAxes(grid, wind))
-        forEachFace(grid, a, [&](std::int64_t face, std::array<int, 3>) {
-            faceField[std::size_t(face)] += wind[a];
+    for (const int a : windAxes(grid, wind.velocity))
+        forEachFace(grid, a, [&](std::int64_t face, std::array<int, 3> p) {
+            faceField[std::size_t(face)] +=
+                wind.velocity[a] * windFactor(wind, heightOf(grid, a, p));
         });
 }
 

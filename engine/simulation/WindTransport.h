@@ -1,23 +1,27 @@
 #pragma once
 /// @file WindTransport.h
 /// A wind (`[wind] velocity = U`) over a whole grid box (engine/README.md, "Wind"): the air moves
-/// as u = U + Σ v_k Ψ_k, U a held base flow entering through the box's upstream sides and leaving
+/// as u = B + Σ v_k Ψ_k, B a held base flow entering through the box's upstream sides and leaving
 /// through the downstream ones, the closed-box modes Ψ_k the disturbance solids and forces make.
-/// U is constant and divergence-free, so the momentum equation of the disturbance u' gains the
-/// linear term −(U·∇)u' ((u'·∇)U = 0), whose projection on the modes is
+/// B = U f(h), f = 1 (a uniform wind) or a boundary layer's power law of the height h over the
+/// floor, is divergence-free and steady ((B·∇)B = 0: it varies across itself only), so the
+/// momentum equation of the disturbance u' gains the linear terms −(B·∇)u' − (u'·∇)B, whose
+/// projection on the modes is
 ///
-///     (D v)_k = −Σ_a U_a ⟨Ψ_k, ∂_a u'⟩,   u' = Ψ v.
+///     (D v)_k = −Σ_a U_a ⟨Ψ_k, f ∂_a u' + f' u'_up e_a⟩,   u' = Ψ v.
 ///
-/// ∂_a is the centred difference of the face fluxes along a, within each face lattice. Beyond the
-/// box a lattice reads the inflow's disturbance upstream (0: the wind arrives undisturbed) and its
-/// last value downstream (the disturbance leaves unchanged); along a periodic axis it wraps. Then
-/// Σ_f F ⋆ ∂_a F telescopes to the downstream ends alone, and
+/// ∂_a is the centred difference of the face fluxes along a, within each face lattice (f is
+/// constant along a row of it). Beyond the box a lattice reads the inflow's disturbance upstream
+/// (0: the wind arrives undisturbed) and its last value downstream (the disturbance leaves
+/// unchanged); along a periodic axis it wraps. Then Σ_f F ⋆ f ∂_a F telescopes to the downstream
+/// ends alone, and
 ///
-///     vᵀ D v = −½ Σ_a |U_a| ∫_{downstream side of a} |u'|² dA,
+///     vᵀ D v = −½ Σ_a |U_a| ∫_{downstream side of a} f |u'|² dA − Σ_a U_a ∫ f' u'_a u'_up dV,
 ///
-/// exactly the kinetic energy the wind carries out (nothing numerically dissipated; a wind along
-/// a periodic axis is a Galilean shift, D antisymmetric). The faces normal to a are the box's
-/// walls along a, where the modes' u'_a vanishes: there the sum telescopes to 0.
+/// the kinetic energy the wind carries out and, in a boundary layer, the shear's production (the
+/// energy the disturbance draws from the held flow, or gives it): nothing numerically dissipated.
+/// u'_up on a face normal to a is the mean of the four up faces beside it. The faces normal to a
+/// at the box's sides along a are the modes' walls, where u'_a vanishes.
 
 #include <array>
 #include <memory>
@@ -29,6 +33,7 @@
 
 #include "engine/basis/VelocityBasis.h"
 #include "engine/core/MacGrid.h"
+#include "engine/core/SceneSpec.h"
 #include "engine/dynamics/LinearModalTerm.h"
 #include "engine/format/BasisCache.h"
 #include "engine/simulation/SimulationSettings.h"
@@ -38,26 +43,33 @@ namespace modeflow {
 class WindTransport final : public LinearModalTerm {
 public:
     /// Keeps a reference to `cache`, which must outlive it.
-    /// @throw modeflow::Error for a surface basis, a non-finite wind, or a face DOF that is not a
-    ///        grid face.
-    WindTransport(const BasisCache& cache, const Vec3& wind);
+    /// @throw modeflow::Error for a surface basis, a non-finite wind, a boundary layer without a
+    ///        floor, or a face DOF that is not a grid face.
+    WindTransport(const BasisCache& cache, const WindSpec& wind);
 
     int size() const override { return mBasis.modeCount(); }
     void apply(const Eigen::VectorXd& v, Eigen::VectorXd& out) const override;
     const Eigen::MatrixXd& matrix() const override;
 
-    /// ½ Σ_a |U_a| ∫_{downstream side of a} |u'|² dA for u' = Ψ v: the power the wind carries
-    /// out, −vᵀ D v (computed from the grid, independently of apply).
+    /// ½ Σ_a |U_a| ∫_{downstream side of a} f |u'|² dA for u' = Ψ v: the power the wind
+    /// carries out (computed from the grid, independently of apply).
     double outflowPower(const Eigen::VectorXd& v) const;
+    /// Σ_a U_a ∫ f' u'_a u'_up dV: the power the disturbance gives the held shear flow (negative:
+    /// draws from it); 0 in a uniform wind. vᵀ D v = −outflowPower − shearPower.
+    double shearPower(const Eigen::VectorXd& v) const;
 
 private:
     /// The fluxes Ψ v on every face of the grid (0 on faces that are not DOFs).
     std::vector<double> gridFluxes(const Eigen::VectorXd& v) const;
+    /// The mean up-velocity of the four up faces beside the normal-`a` face at `p` (a ≠ up,
+    /// p inside the box along a).
+    double upVelocityBeside(const std::vector<double>& fluxes, int a,
+                            const std::array<int, 3>& p) const;
 
     const BasisCache& mCache;
     VelocityBasis mBasis;
     MacGrid mGrid;
-    Vec3 mWind;
+    WindSpec mWind;
     mutable Eigen::MatrixXd mMatrix;  ///< D, formed by matrix()
 };
 
@@ -76,11 +88,16 @@ std::array<int, 3> inflowSides(const MacGrid& grid, const Vec3& wind);
 
 /// The basis grid of a run's air: `spec`'s box, with the sides a wind crosses open
 /// (withWindThrough), what the smoke and the particles sample the air velocity on.
-MacGrid airGridOf(const GridSpec& spec, const std::optional<Vec3>& wind);
+MacGrid airGridOf(const GridSpec& spec, const std::optional<WindSpec>& wind);
 
-/// Adds the wind to a face field of `grid` (face-normal velocities): U_a on every face normal to
-/// a, the box's walls along a included (where the wind enters and leaves).
+/// The wind's speed over the floor of `grid` at height h, relative to `velocity`: f(h) = 1 for a
+/// uniform wind, min(1, (h / thickness)^exponent) in a boundary layer; and its slope f'(h).
+double windFactor(const WindSpec& wind, double height);
+double windSlope(const WindSpec& wind, double height);
+
+/// Adds the wind to a face field of `grid` (face-normal velocities): U_a f(h) on every face
+/// normal to a, the box's walls along a included (where the wind enters and leaves).
 /// @throw modeflow::Error when `faceField` is not one value per face of `grid`.
-void addWind(const MacGrid& grid, const Vec3& wind, std::span<double> faceField);
+void addWind(const MacGrid& grid, const WindSpec& wind, std::span<double> faceField);
 
 }  // namespace modeflow

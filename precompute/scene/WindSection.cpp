@@ -2,7 +2,9 @@
 /// `[wind]`: the velocity of the air far from solids, blowing through a whole grid box.
 
 #include <cmath>
+#include <string>
 
+#include "engine/core/SceneKeywords.h"
 #include "precompute/scene/SceneLoader.h"
 #include "precompute/scene/SceneSections.h"
 #include "precompute/scene/SceneWording.h"
@@ -31,6 +33,35 @@ WindSpec readWind(const TomlReader& reader, const Section& s, const SceneSpec& s
                     "speed " + roughNumber(speed) + " is beyond " + roughNumber(kMaxInitialSpeed) +
                         " scene units per unit time",
                     s.table.get("velocity"));
+    wind.profile =
+        reader.readChoice(s, "profile", WindProfile::Uniform, Choices<WindProfile>(kWindProfiles));
+    if (wind.profile == WindProfile::Uniform) {
+        for (const char* key : {"thickness", "exponent"})
+            if (s.table.contains(key))
+                reader.fail(s, key, "only a profile = \"boundary-layer\" has one",
+                            s.table.get(key));
+        return wind;
+    }
+    // The floor is the box's low side along the up axis (y in 2D, z in 3D): the layer needs one,
+    // and a wind that blows along it.
+    const int up = scene.grid.dim - 1;
+    if (scene.grid.periodic[std::size_t(up)])
+        reader.fail(s, "profile",
+                    std::string("a boundary layer grows over the floor, and this scene's ") +
+                        (up == 1 ? "y" : "z") + " axis (up) is periodic: it has none",
+                    s.table.get("profile"));
+    if (v[std::size_t(up)] != 0.0)
+        reader.fail(s, "velocity",
+                    std::string("a boundary layer's wind blows along the floor: its ") +
+                        (up == 1 ? "y" : "z") + " (up) component must be 0",
+                    s.table.get("velocity"));
+    wind.thickness = reader.requireNumber(s, "thickness", Sign::Positive);
+    wind.exponent = reader.readNumber(s, "exponent", wind.exponent, Sign::Positive);
+    if (wind.exponent > 1.0)
+        reader.fail(s, "exponent",
+                    "is " + roughNumber(wind.exponent) +
+                        "; a boundary layer's power law has an exponent in (0, 1]",
+                    s.table.get("exponent"));
     return wind;
 }
 

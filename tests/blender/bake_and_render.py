@@ -71,20 +71,34 @@ if "write cache" in bake_log():
     fail("the re-bake after moving the emitter precomputed the basis again")
 
 # A wind is written as [wind] for a box domain, and refused for a mesh domain.
+def windy_scene():
+    return modeflow_blender.scene_export.scene_of(domain, bpy.context, os.path.join(out, "windy"))[0]
+
+
+def expect_refused(what, words):
+    try:
+        windy_scene()
+        fail(f"{what} was written")
+    except ValueError as error:
+        if words not in str(error):
+            fail(f"{what} was refused as: {error}")
+
+
 domain.modeflow.wind = (1.5, 0.0, -0.25)
-written, _ = modeflow_blender.scene_export.scene_of(domain, bpy.context, os.path.join(out, "windy"))
-if written.get("wind") != {"velocity": [1.5, 0.0, -0.25]}:
-    fail(f"the wind was written as {written.get('wind')}")
+if windy_scene().get("wind") != {"velocity": [1.5, 0.0, -0.25]}:
+    fail(f"the wind was written as {windy_scene().get('wind')}")
+# Wind Layer adds a boundary layer over the floor, for a wind along it.
+domain.modeflow.wind_layer = 0.5
+expect_refused("a boundary layer under a rising wind", "boundary layer")
+domain.modeflow.wind = (1.5, 0.0, 0.0)
+if windy_scene().get("wind") != {"velocity": [1.5, 0.0, 0.0], "profile": "boundary-layer", "thickness": 0.5}:
+    fail(f"the boundary layer was written as {windy_scene().get('wind')}")
+domain.modeflow.wind_layer = 0.0
 domain.modeflow.domain_shape = 'MESH'
-try:
-    modeflow_blender.scene_export.scene_of(domain, bpy.context, os.path.join(out, "windy"))
-    fail("a wind through a mesh domain was written")
-except ValueError as error:
-    if "wind" not in str(error):
-        fail(f"the mesh domain's wind was refused as: {error}")
+expect_refused("a wind through a mesh domain", "wind")
 domain.modeflow.domain_shape = 'BOX'
 domain.modeflow.wind = (0.0, 0.0, 0.0)
-if "wind" in modeflow_blender.scene_export.scene_of(domain, bpy.context, os.path.join(out, "windy"))[0]:
+if "wind" in windy_scene():
     fail("still air was written as a wind")
 
 # Cycles, white background: the smoke darkens what it covers.

@@ -537,8 +537,9 @@ TEST_P(SimulationTest, AWindMatchesTheCpuReference) {
     // A still ball in a wind through a closed-form box full of smoke, a source upstream and
     // tracers: the modes' D v, the wind added to each reconstruction, the open sides and the
     // clean air coming in upstream, on the device as on the CPU. The wind crosses two axes, so
-    // inflow and outflow meet at the corners.
-    for (const int dim : {2, 3}) {
+    // inflow and outflow meet at the corners; and a boundary layer over the floor.
+    for (const int variant : {0, 1, 2}) {
+        const int dim = variant == 1 ? 3 : 2;
         SceneSpec scene =
             dim == 2 ? testing::gridScene({32, 16, 1}, {0.0, 0.0, 0.0}, {2.0, 1.0, 0.0}, 2)
                      : testing::gridScene({12, 10, 9}, {0.0, 0.0, 0.0}, {1.2, 1.0, 0.9}, 3);
@@ -547,7 +548,9 @@ TEST_P(SimulationTest, AWindMatchesTheCpuReference) {
         scene.basis.scalarModes = 0;
         scene.simulation.dt = 0.02;
         scene.output.stepsPerFrame = 5;
-        scene.wind = WindSpec{dim == 2 ? Vec3{0.8, -0.3, 0.0} : Vec3{0.5, 0.0, -0.4}};
+        scene.wind = variant == 0   ? WindSpec{{0.8, -0.3, 0.0}}
+                     : variant == 1 ? WindSpec{{0.5, 0.0, -0.4}}
+                                    : WindSpec{{0.8, 0.0, 0.0}, WindProfile::BoundaryLayer, 0.4};
         SourceSpec source;
         source.shape = testing::ball(dim == 2 ? Vec3{0.3, 0.5, 0.0} : Vec3{0.25, 0.5, 0.6}, 0.12);
         source.density = source.temperature = 1.0;
@@ -597,7 +600,8 @@ TEST_P(SimulationTest, AWindMatchesTheCpuReference) {
             double worst = 0.0;
             for (std::size_t i = 0; i < 3 * tracked.size(); ++i)
                 worst = std::max(worst, std::abs(onDevice.position[i] - tracked.position[i]));
-            std::cout << dim << "D wind, 10 steps: relative max differences: modes " << error
+            std::cout << dim << "D wind" << (variant == 2 ? " in a boundary layer" : "")
+                      << ", 10 steps: relative max differences: modes " << error
                       << ", grid velocity " << faceError << ", density " << densityError
                       << "; particles " << worst << "\n";
             EXPECT_LE(error, 1e-4);

@@ -101,7 +101,7 @@ SmokeRun runSmoke(const vulkan::VulkanContext& context, const SmokeSetup& s, dou
     }
     if (s.wind) {
         for (double& u : velocity) u *= 0.5;
-        addWind(basis, *s.wind, velocity);
+        addWind(basis, WindSpec{*s.wind}, velocity);
     }
     roundToFloat(velocity);
     SmokeFields fields{

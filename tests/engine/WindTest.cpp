@@ -53,7 +53,7 @@ TEST(Wind, AlongAPeriodicAxisItTurnsEachWaveAtItsDiscreteFrequency) {
     // the centred difference; a Galilean shift, so D is antisymmetric.
     const RunInputs run = prepared(windBox(40, {true, true, false}));
     const double u = 1.5, dx = 2.0 / 32;
-    const WindTransport wind(run.cache, {u, 0.0, 0.0});
+    const WindTransport wind(run.cache, WindSpec{{u, 0.0, 0.0}});
     const Eigen::MatrixXd& d = wind.matrix();
     EXPECT_LE((d + d.transpose()).cwiseAbs().maxCoeff(), 1e-12 * d.cwiseAbs().maxCoeff());
     int waves = 0;
@@ -74,10 +74,13 @@ TEST(Wind, AlongAPeriodicAxisItTurnsEachWaveAtItsDiscreteFrequency) {
 }
 
 TEST(Wind, TheEnergyChangesByWhatTheWindCarriesOutToRoundOff) {
-    // Midpoint: E_{n+1} − E_n = h v̄ᵀ(C(v̄, v̄) + D v̄) = h v̄ᵀ D v̄ = −h·(outflow power at v̄).
+    // Midpoint: E_{n+1} − E_n = h v̄ᵀ(C(v̄, v̄) + D v̄) = h v̄ᵀ D v̄ = −h·(outflow + shear power at
+    // v̄): the outflow's kinetic energy flux, and in a boundary layer the shear's production.
     const RunInputs run = prepared(windBox(60));
-    for (const Vec3 u : {Vec3{1.0, 0.0, 0.0}, Vec3{-0.6, 0.35, 0.0}}) {
-        auto wind = std::make_shared<WindTransport>(run.cache, u);
+    WindSpec layer{{0.8, 0.0, 0.0}, WindProfile::BoundaryLayer, 0.4};
+    for (const WindSpec& spec : {WindSpec{{1.0, 0.0, 0.0}}, WindSpec{{-0.6, 0.35, 0.0}}, layer}) {
+        const Vec3& u = spec.velocity;
+        auto wind = std::make_shared<WindTransport>(run.cache, spec);
         FluidParameters parameters;
         parameters.linear = wind;
         const FluidSystem system(*run.coefficients, parameters);
@@ -93,23 +96,28 @@ TEST(Wind, TheEnergyChangesByWhatTheWindCarriesOutToRoundOff) {
             wind->apply(mid, dMid);
             const double budget = h * mid.dot(dMid),
                          change = 0.5 * (v.squaredNorm() - before.squaredNorm());
-            const double power = wind->outflowPower(mid);
+            const double outflow = wind->outflowPower(mid), shear = wind->shearPower(mid),
+                         power = outflow + shear;
             worstStep = std::max(worstStep, std::abs(change - budget) / e0);
-            worstPower =
-                std::max(worstPower, std::abs(mid.dot(dMid) + power) / std::max(power, 1e-300));
+            worstPower = std::max(worstPower, std::abs(mid.dot(dMid) + power) /
+                                                  std::max(outflow + std::abs(shear), 1e-300));
+            if (spec.profile == WindProfile::Uniform) {
+                EXPECT_EQ(shear, 0.0);
+            }
             carriedOut += h * power;
             drift += change - budget;
         }
         const double e1 = 0.5 * v.squaredNorm();
         EXPECT_LE(worstStep, 1e-13);
         EXPECT_LE(std::abs(drift) / e0, 1e-11);
-        EXPECT_LE(worstPower, 1e-10) << "vᵀDv is the outflow's kinetic energy flux";
+        EXPECT_LE(worstPower, 1e-10) << "vᵀDv is the outflow's kinetic energy flux and the shear's";
         EXPECT_NEAR(e0 - e1, carriedOut, 1e-10 * e0);
         EXPECT_LT(e1, 0.8 * e0) << "the wind carries the disturbance out";
         std::printf(
-            "[ measured ] wind (%g, %g), 1000 midpoint steps: energy %.4f -> %.4f, carried out "
-            "%.4f; worst step |dE - h v.Dv| %.1e E0, drift %.1e E0\n",
-            u[0], u[1], e0, e1, carriedOut, worstStep, std::abs(drift) / e0);
+            "[ measured ] wind (%g, %g)%s, 1000 midpoint steps: energy %.4f -> %.4f, carried "
+            "out and given to the shear %.4f; worst step |dE - h v.Dv| %.1e E0, drift %.1e E0\n",
+            u[0], u[1], spec.profile == WindProfile::Uniform ? "" : " in a boundary layer", e0, e1,
+            carriedOut, worstStep, std::abs(drift) / e0);
     }
 }
 
@@ -124,7 +132,7 @@ TEST(Wind, ARunsModalStepperCarriesIt) {
     const std::unique_ptr<ModalStepping> stepper =
         backend.makeModalStepper(run, Integrator::Midpoint);
     FluidParameters parameters;
-    parameters.linear = std::make_shared<WindTransport>(run.cache, Vec3{1.0, 0.0, 0.0});
+    parameters.linear = std::make_shared<WindTransport>(run.cache, WindSpec{{1.0, 0.0, 0.0}});
     const FluidSystem system(*run.coefficients, parameters);
     ModalIntegrator integrator(system, IntegratorSettings{Integrator::Midpoint});
     Eigen::VectorXd v = run.initialVelocity;
@@ -141,7 +149,7 @@ TEST(Wind, EveryIntegratorAdvancesTheWindsTerm) {
     // reference): the term is in R, its Jacobian, its products and the frozen right-hand side.
     const RunInputs run = prepared(windBox(30));
     FluidParameters parameters;
-    parameters.linear = std::make_shared<WindTransport>(run.cache, Vec3{1.2, -0.4, 0.0});
+    parameters.linear = std::make_shared<WindTransport>(run.cache, WindSpec{{1.2, -0.4, 0.0}});
     const FluidSystem system(*run.coefficients, parameters);
     const Eigen::VectorXd start = randomState(system.dimension(), 3);
     const auto advance = [&](Integrator scheme, double h, int steps) {
@@ -171,7 +179,7 @@ TEST(Wind, TheSidesItCrossesCarryItAndTheOthersStayWalls) {
     const MacGrid grid = MacGrid::fromSpec(windBox(10).grid);
     const Vec3 u{0.8, 0.0, 0.0};
     std::vector<double> velocity(std::size_t(grid.faceTotal()), 0.0);
-    addWind(grid, u, velocity);
+    addWind(grid, WindSpec{u}, velocity);
     const MacGrid open = withWindThrough(grid, u);
     EXPECT_TRUE(open.flowThrough[0]);
     EXPECT_FALSE(open.flowThrough[1]);
@@ -187,6 +195,39 @@ TEST(Wind, TheSidesItCrossesCarryItAndTheOthersStayWalls) {
     EXPECT_FALSE(withWindThrough(torus, u).flowThrough[0]);
 }
 
+TEST(Wind, ABoundaryLayerSlowsTheAirOverTheFloorAndItsShearWorksOnTheDisturbance) {
+    // U (h / δ)^(1/7) below δ = 0.5 over the floor of [0, 2] × [0, 1] (32 × 16 cells), U above.
+    const RunInputs run = prepared(windBox(60));
+    const MacGrid grid = MacGrid::fromSpec(run.cache.grid);
+    const WindSpec layer{{1.0, 0.0, 0.0}, WindProfile::BoundaryLayer, 0.5};
+    std::vector<double> velocity(std::size_t(grid.faceTotal()), 0.0);
+    addWind(grid, layer, velocity);
+    for (int y = 0; y < 16; ++y) {
+        const double h = (y + 0.5) / 16.0;
+        const double expected = h < 0.5 ? std::pow(h / 0.5, 1.0 / 7.0) : 1.0;
+        for (const int x : {0, 17, 32})  // the inflow side, inside, the outflow side
+            EXPECT_DOUBLE_EQ(velocity[std::size_t(grid.faceIndex(0, x, y, 0))], expected) << y;
+    }
+    for (std::int64_t f = grid.faceOffset(1); f < grid.faceTotal(); ++f)
+        EXPECT_EQ(velocity[std::size_t(f)], 0.0);
+    EXPECT_EQ(windSlope(layer, 0.7), 0.0);
+    EXPECT_NEAR(windSlope(layer, 0.25), (1.0 / 7.0) / 0.5 * std::pow(0.5, -6.0 / 7.0), 1e-15);
+    // The shear's term is there: D differs from the uniform wind's with the same factors, and
+    // works on a disturbance (the energy identity with it: TheEnergyChangesByWhatTheWindCarries…).
+    const WindTransport sheared(run.cache, layer);
+    const Eigen::VectorXd v = randomState(60, 9);
+    EXPECT_GT(std::abs(sheared.shearPower(v)), 1e-3 * sheared.outflowPower(v));
+    WindSpec uniform = layer;
+    uniform.profile = WindProfile::Uniform;
+    const WindTransport plain(run.cache, uniform);
+    EXPECT_EQ(plain.shearPower(v), 0.0);
+    EXPECT_GT((sheared.matrix() - plain.matrix()).norm(), 0.01 * plain.matrix().norm());
+    // A boundary layer needs a floor and a wind along it.
+    WindSpec upward = layer;
+    upward.velocity = {1.0, 0.5, 0.0};
+    EXPECT_THROW(WindTransport(run.cache, upward), Error);
+}
+
 TEST(Wind, SmokeArrivesCleanUpstreamAndLeavesDownstream) {
     const MacGrid grid = MacGrid::fromSpec(windBox(10).grid);
     const std::vector<std::uint8_t> mask(std::size_t(grid.cellCount()), 1);
@@ -196,7 +237,7 @@ TEST(Wind, SmokeArrivesCleanUpstreamAndLeavesDownstream) {
             reference::SmokeAdvection still(grid, 1, mask), windy(grid, 1, mask);
             windy.setWind(u);
             std::vector<double> velocity(std::size_t(grid.faceTotal()), 0.0);
-            addWind(grid, u, velocity);
+            addWind(grid, WindSpec{u}, velocity);
             // A box full of smoke is flushed: once the air has crossed it three times (the fronts'
             // numerical tails gone), none is left.
             std::vector<double> full(mask.size(), 1.0), kept = full;

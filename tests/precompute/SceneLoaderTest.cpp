@@ -222,6 +222,23 @@ const std::vector<Refusal> kRefusals = {
     {"WindWithMhd", k2d, {}, "[simulation]\nmhd = true\n[wind]\nvelocity = [1, 0]\n",
      {"[wind]: a wind does not carry a magnetic field"}},
     {"WindMisspelledTable", k2d, {}, "[wnd]\nvelocity = [1, 0]\n", {"wnd", "did you mean wind?"}},
+    {"WindUnknownProfile", k2d, {}, "[wind]\nvelocity = [1, 0]\nprofile = \"log\"\n",
+     {"[wind].profile", "boundary-layer"}},
+    {"WindThicknessWithoutALayer", k2d, {}, "[wind]\nvelocity = [1, 0]\nthickness = 0.3\n",
+     {"[wind].thickness: only a profile = \"boundary-layer\" has one"}},
+    {"WindLayerWithoutThickness", k2d, {},
+     "[wind]\nvelocity = [1, 0]\nprofile = \"boundary-layer\"\n",
+     {"[wind].thickness: missing required key"}},
+    {"WindLayerOfNegativeThickness", k2d, {},
+     "[wind]\nvelocity = [1, 0]\nprofile = \"boundary-layer\"\nthickness = -0.2\n",
+     {"[wind].thickness"}},
+    {"WindLayerExponentAboveOne", k2d, {},
+     "[wind]\nvelocity = [1, 0]\nprofile = \"boundary-layer\"\nthickness = 0.2\nexponent = 2\n",
+     {"[wind].exponent: is 2; a boundary layer's power law has an exponent in (0, 1]"}},
+    {"WindLayerBlowingUp", k2d, {},
+     "[wind]\nvelocity = [1, 0.5]\nprofile = \"boundary-layer\"\nthickness = 0.2\n",
+     {"[wind].velocity: a boundary layer's wind blows along the floor: its y (up) component "
+      "must be 0"}},
     {"ObstacleBallWithSequenceRate", k2d, {},
      kObstacleBall + "radius = 0.1\nsequence_rate = 24\npath = [[0, 0, 0]]\n",
      {"[[obstacle]] #1.sequence_rate: not used by a ball"}},
@@ -657,6 +674,22 @@ TEST_F(SceneLoaderTest, AWindBlowsThroughTheWholeBox) {
         parseScene(sceneFixture(k3d) + "[wind]\nvelocity = [0, 0, 2]\n", "wind.toml");
     ASSERT_TRUE(three.wind.has_value());
     EXPECT_EQ(three.wind->velocity, (Vec3{0.0, 0.0, 2.0}));
+    EXPECT_EQ(three.wind->profile, WindProfile::Uniform);
+    const SceneSpec layer = parseScene(sceneFixture(k3d) + R"([wind]
+velocity = [1, 0.5, 0]
+profile = "boundary-layer"
+thickness = 0.3
+)",
+                                       "layer.toml");
+    ASSERT_TRUE(layer.wind.has_value());
+    EXPECT_EQ(layer.wind->profile, WindProfile::BoundaryLayer);
+    EXPECT_EQ(layer.wind->thickness, 0.3);
+    EXPECT_EQ(layer.wind->exponent, 1.0 / 7.0);
+    const SceneSpec linear = parseScene(sceneFixture(k2d) +
+                                            "[wind]\nvelocity = [1, 0]\nprofile = "
+                                            "\"boundary-layer\"\nthickness = 0.5\nexponent = 1\n",
+                                        "linear.toml");
+    EXPECT_EQ(linear.wind->exponent, 1.0);
 }
 
 TEST_F(SceneLoaderTest, AFireBurnsTheFuelOfItsSources) {

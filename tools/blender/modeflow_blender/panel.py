@@ -28,6 +28,7 @@ class MODEFLOW_PT_physics(bpy.types.Panel):
             layout.prop(settings, "buoyancy")
             layout.prop(settings, "integrator")
             layout.prop(settings, "wind")
+            layout.prop(settings, "wind_layer")
             fire = layout.column(align=True)
             fire.label(text="Fire (with an emitter's fuel)")
             fire.prop(settings, "ignition")

@@ -39,6 +39,10 @@ class ModeflowObjectSettings(bpy.types.PropertyGroup):
     wind: FloatVectorProperty(name="Wind", size=3, subtype='VELOCITY', default=(0.0, 0.0, 0.0),
                               description="Velocity of the air blowing through the box (written as "
                                           "[wind] when not zero)")
+    wind_layer: FloatProperty(name="Wind Layer", subtype='DISTANCE', default=0.0, min=0.0,
+                              description="Thickness of the boundary layer over the domain's floor, "
+                                          "where the wind slows towards the ground (0: the same "
+                                          "wind at every height)")
     # Fire (written as [fire] when an emitter feeds fuel)
     ignition: FloatProperty(name="Ignition", description="Temperature above which fuel burns", default=1.0)
     burn_rate: FloatProperty(name="Burn Rate", description="Part of the fuel burnt per unit of time",

@@ -132,6 +132,11 @@ def scene_of(domain, context, folder):
             raise ValueError("modeflow: a wind blows through a box domain (Shape: Bounds), not "
                              "through a mesh domain's walls")
         description["wind"] = {"velocity": [float(u) for u in settings.wind]}
+        if settings.wind_layer > 0.0:
+            if settings.wind[2] != 0.0:
+                raise ValueError("modeflow: a wind over a boundary layer blows along the floor: "
+                                 "its Z must be 0")
+            description["wind"].update(profile="boundary-layer", thickness=float(settings.wind_layer))
     if settings.domain_shape == 'MESH':
         name = _file_name(domain)
         write_obj(os.path.join(meshes, name), domain, depsgraph, in_world=True)
