@@ -75,17 +75,18 @@ std::unique_ptr<Simulator> Backend::makeSimulator(const RunInputs& run, bool sta
 std::unique_ptr<ModalStepping> Backend::makeModalStepper(const RunInputs& run,
                                                          Integrator scheme) const {
     requireSupport(run.scene, mKind);
+    // A wind's advection of the modes is part of the dynamics on either backend.
+    SimulationSettings settings = withWindTransport(run.settings, run.cache);
+    settings.integrator = scheme;
     std::unique_ptr<ModalStepping> stepper;
     if (mKind == BackendKind::Vulkan) {
         auto device = std::make_unique<device::ModalStepper>(
-            *mContext, *run.coefficients, device::modelOf(run.settings),
+            *mContext, *run.coefficients, device::modelOf(settings),
             device::DeviceStepSettings{scheme}, &run.cache);
         device->setVelocity(run.initialVelocity);
-        if (run.settings.mhd) device->setMagneticField(run.initialMagneticField);
+        if (settings.mhd) device->setMagneticField(run.initialMagneticField);
         stepper = std::move(device);
     } else {
-        SimulationSettings settings = withWindTransport(run.settings, run.cache);
-        settings.integrator = scheme;
         auto reference = std::make_unique<reference::ModalStepper>(*run.coefficients, settings);
         reference->setVelocity(run.initialVelocity);
         if (settings.mhd) reference->setMagneticField(run.initialMagneticField);
