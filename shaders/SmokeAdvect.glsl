@@ -13,7 +13,8 @@
    renormalized; no fluid weight left: the cell keeps its own value. Along periodic axes traces
    leave through one end and come in through the other: the stencils wrap (MacSampling.glsl).
    With a wind the sides it crosses are open (their faces carry its velocity) and the upstream
-   ones bring in clean air: ghost cells beyond them hold 0 in the sample and its clamp range.
+   ones bring in its air: ghost cells beyond them hold the inflow's values in the sample and its
+   clamp range.
    smoke_face_pairs.comp runs first each step. Cells outside the fluid mask are never written:
    SmokeState keeps them 0.
 
@@ -182,7 +183,7 @@ FluidSample sampleFluid(usamplerBuffer fields, vec3 g, vec2 fallback) {
             }
     taken.value = weight > 0.0 ? sum / weight : fallback;
     // Within a cell of an inflow side the trilinear weights reach the ghost cells beyond it,
-    // which hold the inflow's clean air (0): the in-box share of the sample, as on the CPU.
+    // which hold what the inflow brings: the in-box share of the sample, as on the CPU.
     float share = 1.0;
     [[unroll]] for (int a = 0; a < SMOKE_DIM; ++a) {
         if ((params.boundary & (1u << (SMOKE_INFLOW_LOW + uint(a)))) != 0u)
@@ -191,10 +192,11 @@ FluidSample sampleFluid(usamplerBuffer fields, vec3 g, vec2 fallback) {
             share *= clamp(float(cells[a]) + 0.5 - g[a], 0.0, 1.0);
     }
     if (share < 1.0) {
-        taken.value *= share;
-        if (weight > 0.0) {  // the clamp range takes the inflow's 0 in (none without fluid)
-            taken.lo = min(taken.lo, vec2(0.0));
-            taken.hi = max(taken.hi, vec2(0.0));
+        const vec2 inflow = vec2(params.inflowFirst, params.inflowSecond);
+        taken.value = share * taken.value + (1.0 - share) * inflow;
+        if (weight > 0.0) {  // the clamp range takes the inflow's value in (none without fluid)
+            taken.lo = min(taken.lo, inflow);
+            taken.hi = max(taken.hi, inflow);
         }
     }
     return taken;

@@ -60,6 +60,10 @@ struct SmokeAdvectParams {
     float stepY;
     float stepZ;
     float dt;
+    float inflowFirst;  /* what the ghost cells beyond the inflow sides hold: the pair's first */
+    float inflowSecond; /* and second field (the wind's density and temperature; no fuel) */
+    uint pad0;
+    uint pad1;
 };
 
 struct SmokeFacePairsParams {
@@ -72,7 +76,7 @@ struct SmokeFacePairsParams {
 };
 
 #ifdef __cplusplus
-static_assert(sizeof(SmokeAdvectParams) == 64, "push constants are scalars padded to 16 bytes");
+static_assert(sizeof(SmokeAdvectParams) == 80, "push constants are scalars padded to 16 bytes");
 static_assert(sizeof(SmokeFacePairsParams) == 16, "push constants are scalars padded to 16 bytes");
 }  // namespace modeflow::shaders
 #endif

@@ -228,6 +228,9 @@ struct WindSpec {
     WindProfile profile = WindProfile::Uniform;
     double thickness = 0.0;       ///< boundary layer: where the wind reaches `velocity`
     double exponent = 1.0 / 7.0;  ///< boundary layer: of the power law (1/7: a turbulent one)
+    /// What the air brings in through the upstream sides (0: clean, cool air).
+    double density = 0.0;
+    double temperature = 0.0;
     bool operator==(const WindSpec&) const = default;
 };
 

@@ -80,7 +80,7 @@ Simulation::Simulation(const vulkan::VulkanContext& context, const BasisCache& c
     if (mSettings.fire) mBurn.emplace(context);
     if (mSettings.wind) {
         mWind.emplace(context, mReconstruction.grid(), *mSettings.wind);
-        mSmoke.setWind(mSettings.wind->velocity);
+        mSmoke.setWind(*mSettings.wind);
         // The air before the first step: the wind alone, as on the CPU.
         mWind->record(mSequence, mFaceVelocity);
         mSequence.submitAndWait();

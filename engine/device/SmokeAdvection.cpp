@@ -172,6 +172,9 @@ void SmokeAdvectionKernels::record(vulkan::CommandSequence& sequence, SmokeState
     // Each pair in turn, through the shared MacCormack buffers.
     for (int p = 0; p < state.pairCount(); ++p) {
         const auto pair = SmokePair(p);
+        const std::array<float, 2> inflow = state.inflowValues(pair);
+        params.inflowFirst = inflow[0];
+        params.inflowSecond = inflow[1];
         // Bindings 0-7 of shaders/SmokeAdvect.glsl.
         const std::array<const vulkan::DeviceBuffer*, 8> buffers{&state.facePairs(),
                                                                  &state.fluidCells(pair),

@@ -106,9 +106,14 @@ std::vector<std::uint32_t> cellList(const MacGrid& smoke, const std::vector<std:
 
 }  // namespace
 
-void SmokeState::setWind(const Vec3& wind) {
-    mBasis = withWindThrough(mBasis, wind);
-    const std::array<int, 3> sides = inflowSides(mSmoke, wind);
+std::array<float, 2> SmokeState::inflowValues(SmokePair pair) const {
+    return pair == SmokePair::Smoke ? mInflowSmoke : std::array<float, 2>{0.0f, 0.0f};
+}
+
+void SmokeState::setWind(const WindSpec& wind) {
+    mBasis = withWindThrough(mBasis, wind.velocity);
+    mInflowSmoke = {float(wind.density), float(wind.temperature)};
+    const std::array<int, 3> sides = inflowSides(mSmoke, wind.velocity);
     mInflowBits = 0;
     for (std::uint32_t a = 0; a < 3; ++a)
         if (sides[a] != 0)

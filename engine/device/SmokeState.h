@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "engine/core/MacGrid.h"
+#include "engine/core/SceneSpec.h"
 #include "engine/simulation/SmokeEmitter.h"
 #include "engine/vulkan/DeviceBuffer.h"
 
@@ -47,10 +48,12 @@ public:
 
     /// The wind blowing through the box ([wind]), as reference::SmokeAdvection::setWind: the
     /// basis grid's sides it crosses open (MacGrid::flowThrough), its upstream sides inflows of
-    /// clean air (inflowBits).
-    void setWind(const Vec3& wind);
-    /// The inflow sides as SmokeAdvectParams::boundary's SMOKE_INFLOW_* bits.
+    /// its air (inflowBits, inflowValues).
+    void setWind(const WindSpec& wind);
+    /// The inflow sides as SmokeAdvectParams::boundary's SMOKE_INFLOW_* bits, and what comes in
+    /// through them: `pair`'s two fields (the wind's density and temperature; no fuel).
     std::uint32_t inflowBits() const { return mInflowBits; }
+    std::array<float, 2> inflowValues(SmokePair pair) const;
 
     const MacGrid& basisGrid() const { return mBasis; }
     const MacGrid& smokeGrid() const { return mSmoke; }
@@ -127,6 +130,7 @@ private:
     std::vector<std::int64_t> mFluidIndex;  ///< cellIndex of each fluid cell, list order
     std::uint32_t mFluidCount = 0;
     std::uint32_t mInflowBits = 0;  ///< SMOKE_INFLOW_* bits of the wind's upstream sides
+    std::array<float, 2> mInflowSmoke{0.0f, 0.0f};  ///< the wind's density and temperature
     std::vector<Pair> mPairs;
     vulkan::DeviceBuffer mMask;
     vulkan::DeviceBuffer mStencilMask;

@@ -31,7 +31,7 @@ Simulation::Simulation(const BasisCache& cache, const StructuralCoefficients& co
     if (mSettings.stepsPerFrame < 1) throw Error("simulation: steps per frame must be at least 1");
     setObstacles(mSettings.obstacles);
     if (mSettings.wind) {
-        mAdvection.setWind(mSettings.wind->velocity);
+        mAdvection.setWind(*mSettings.wind);
         addWind(MacGrid::fromSpec(cache.grid), *mSettings.wind, mFaceVelocity);
     }
     const auto cells = std::size_t(mAdvection.smokeGrid().cellCount());

@@ -35,7 +35,7 @@ double inBoxShare(const MacGrid& grid, const std::array<int, 3>& inflow, const V
 
 FluidSample sampleFluid(const MacGrid& grid, std::span<const std::uint8_t> mask,
                         std::span<const double> field, const Vec3& gridPoint, double fallback,
-                        const std::array<int, 3>& inflow) {
+                        const std::array<int, 3>& inflow, double inflowValue) {
     const CellStencil stencil = cellStencil(grid, gridPoint);
     FluidSample sample;
     double sum = 0.0, weight = 0.0;
@@ -50,10 +50,10 @@ FluidSample sampleFluid(const MacGrid& grid, std::span<const std::uint8_t> mask,
     }
     sample.value = weight > 0.0 ? sum / weight : fallback;
     const double share = inBoxShare(grid, inflow, gridPoint);
-    if (share < 1.0) {  // the inflow's value is 0
-        sample.value *= share;
-        sample.lo = std::min(sample.lo, 0.0);
-        sample.hi = std::max(sample.hi, 0.0);
+    if (share < 1.0) {  // the ghost cells hold the inflow's value
+        sample.value = share * sample.value + (1.0 - share) * inflowValue;
+        sample.lo = std::min(sample.lo, inflowValue);
+        sample.hi = std::max(sample.hi, inflowValue);
     }
     return sample;
 }
@@ -69,9 +69,11 @@ SmokeAdvection::SmokeAdvection(const MacGrid& basisGrid, int scale,
     requireCellField(mMask.size(), "the fluid mask");
 }
 
-void SmokeAdvection::setWind(const Vec3& wind) {
-    mBasis = withWindThrough(mBasis, wind);
-    mInflow = inflowSides(mSmoke, wind);
+void SmokeAdvection::setWind(const WindSpec& wind) {
+    mBasis = withWindThrough(mBasis, wind.velocity);
+    mInflow = inflowSides(mSmoke, wind.velocity);
+    mInflowDensity = wind.density;
+    mInflowTemperature = wind.temperature;
 }
 
 void SmokeAdvection::requireCellField(std::size_t size, const char* what) const {
@@ -110,29 +112,32 @@ std::vector<Vec3> SmokeAdvection::backtrace(std::span<const double> velocity, do
 }
 
 std::vector<double> SmokeAdvection::semiLagrangian(std::span<const double> field,
-                                                   const std::vector<Vec3>& traces) const {
+                                                   const std::vector<Vec3>& traces,
+                                                   double inflowValue) const {
     std::vector<double> result(field.size(), 0.0);
     const auto cells = std::int64_t(field.size());
 #pragma omp parallel for schedule(static)
     for (std::int64_t c = 0; c < cells; ++c)
         if (mMask[c])
-            result[c] = sampleFluid(mSmoke, mMask, field, traces[c], field[c], mInflow).value;
+            result[c] =
+                sampleFluid(mSmoke, mMask, field, traces[c], field[c], mInflow, inflowValue).value;
     return result;
 }
 
 std::vector<double> SmokeAdvection::advectAlong(std::span<const double> field,
                                                 const std::vector<Vec3>& back,
                                                 const std::vector<Vec3>& ahead,
-                                                AdvectionScheme scheme) const {
-    std::vector<double> forward = semiLagrangian(field, back);
+                                                AdvectionScheme scheme, double inflowValue) const {
+    std::vector<double> forward = semiLagrangian(field, back, inflowValue);
     if (scheme == AdvectionScheme::SemiLagrangian) return forward;
-    const std::vector<double> backward = semiLagrangian(forward, ahead);
+    const std::vector<double> backward = semiLagrangian(forward, ahead, inflowValue);
     std::vector<double> result(field.size(), 0.0);
     const auto cells = std::int64_t(field.size());
 #pragma omp parallel for schedule(static)
     for (std::int64_t c = 0; c < cells; ++c) {
         if (!mMask[c]) continue;
-        const FluidSample bounds = sampleFluid(mSmoke, mMask, field, back[c], field[c], mInflow);
+        const FluidSample bounds =
+            sampleFluid(mSmoke, mMask, field, back[c], field[c], mInflow, inflowValue);
         const double corrected = forward[c] + 0.5 * (field[c] - backward[c]);
         result[c] = bounds.anyFluid ? std::clamp(corrected, bounds.lo, bounds.hi) : forward[c];
     }
@@ -146,11 +151,11 @@ void SmokeAdvection::step(std::span<const double> velocity, double dt, Advection
     const std::vector<Vec3> back = backtrace(velocity, dt);
     const std::vector<Vec3> ahead =
         scheme == AdvectionScheme::MacCormack ? backtrace(velocity, -dt) : std::vector<Vec3>{};
-    fields.density = advectAlong(fields.density, back, ahead, scheme);
-    fields.temperature = advectAlong(fields.temperature, back, ahead, scheme);
-    if (!fields.fuel.empty()) {
+    fields.density = advectAlong(fields.density, back, ahead, scheme, mInflowDensity);
+    fields.temperature = advectAlong(fields.temperature, back, ahead, scheme, mInflowTemperature);
+    if (!fields.fuel.empty()) {  // the wind brings in no fuel
         requireCellField(fields.fuel.size(), "the fuel");
-        fields.fuel = advectAlong(fields.fuel, back, ahead, scheme);
+        fields.fuel = advectAlong(fields.fuel, back, ahead, scheme, 0.0);
     }
     applyEmitters(mSmoke, mMask, emitters, dt, fields.density, fields.temperature, fields.fuel);
 }
@@ -168,7 +173,7 @@ std::vector<double> SmokeAdvection::advect(std::span<const double> velocity,
     const std::vector<Vec3> back = backtrace(velocity, dt);
     const std::vector<Vec3> ahead =
         scheme == AdvectionScheme::MacCormack ? backtrace(velocity, -dt) : std::vector<Vec3>{};
-    return advectAlong(field, back, ahead, scheme);
+    return advectAlong(field, back, ahead, scheme, 0.0);
 }
 
 double SmokeAdvection::mass(std::span<const double> field) const {

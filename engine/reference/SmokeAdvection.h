@@ -18,9 +18,10 @@
 ///   φ̂ + (φ − φ̃)/2, clamped to the min and max of φ over the fluid cells of the forward trace's
 ///   stencil: second order where the field is smooth, and no new extrema where it is not.
 ///
-/// With a wind (setWind), the box's upstream sides let clean air in: ghost cells half a cell
-/// beyond them hold 0 and take their trilinear share of a trace that ends within a cell of the
-/// side (and of MacCormack's clamp range). Downstream, traces come from inside the box and the
+/// With a wind (setWind), the box's upstream sides let its air in: ghost cells half a cell
+/// beyond them hold what it brings (WindSpec::density and temperature: 0, clean air, unless
+/// set; no fuel) and take their trilinear share of a trace that ends within a cell of the side
+/// (and of MacCormack's clamp range). Downstream, traces come from inside the box and the
 /// smoke leaves; the clamp to the box there is a zero-gradient outflow.
 ///
 /// Cells outside Ω always come out exactly 0 (nothing leaks out of Ω). Emitters are applied
@@ -38,6 +39,7 @@
 #include <vector>
 
 #include "engine/core/MacGrid.h"
+#include "engine/core/SceneSpec.h"
 #include "engine/simulation/SmokeEmitter.h"
 #include "engine/simulation/SmokeFields.h"
 
@@ -63,13 +65,13 @@ public:
     void step(std::span<const float> velocity, double dt, AdvectionScheme scheme,
               std::span<const SmokeEmitter> emitters, SmokeFields& fields) const;
 
-    /// One field advected (no emitters).
+    /// One field advected (no emitters; a wind's inflow brings 0).
     std::vector<double> advect(std::span<const double> velocity, std::span<const double> field,
                                double dt, AdvectionScheme scheme) const;
 
     /// The wind blowing through the box ([wind]): the sides it crosses carry the velocity they
-    /// hold (MacGrid::flowThrough), and its upstream sides become inflows of clean air.
-    void setWind(const Vec3& wind);
+    /// hold (MacGrid::flowThrough), and its upstream sides become inflows of its air.
+    void setWind(const WindSpec& wind);
 
     /// Σ concentration × smoke cell volume.
     double mass(std::span<const double> field) const;
@@ -77,11 +79,13 @@ public:
 private:
     /// Where the RK2 trace from each fluid cell centre ends after −dt·u (smoke-grid units).
     std::vector<Vec3> backtrace(std::span<const double> velocity, double dt) const;
+    /// `inflowValue`: what the ghost cells beyond the inflow sides hold.
     std::vector<double> semiLagrangian(std::span<const double> field,
-                                       const std::vector<Vec3>& traces) const;
+                                       const std::vector<Vec3>& traces, double inflowValue) const;
     /// `ahead`: the traces over −dt (MacCormack's backward step), unused by semi-Lagrangian.
     std::vector<double> advectAlong(std::span<const double> field, const std::vector<Vec3>& back,
-                                    const std::vector<Vec3>& ahead, AdvectionScheme scheme) const;
+                                    const std::vector<Vec3>& ahead, AdvectionScheme scheme,
+                                    double inflowValue) const;
     void requireCellField(std::size_t size, const char* what) const;
 
     MacGrid mBasis;
@@ -90,6 +94,7 @@ private:
     std::vector<std::uint8_t> mMask;
     /// Per axis, the inflow side: −1 the min side, +1 the max side, 0 none.
     std::array<int, 3> mInflow{0, 0, 0};
+    double mInflowDensity = 0.0, mInflowTemperature = 0.0;  ///< what the inflow brings
 };
 
 }  // namespace modeflow::reference

@@ -54,7 +54,8 @@ inline constexpr std::string_view kObstacleKeys[] = {
     "shape", "radius", "half_size", "axis", "file", "scale", "path", "sequence_rate", "rotation"};
 inline constexpr std::string_view kSmokeKeys[] = {"buoyancy", "resolution_scale", "advection"};
 inline constexpr std::string_view kFireKeys[] = {"ignition", "burn_rate", "heat", "smoke"};
-inline constexpr std::string_view kWindKeys[] = {"velocity", "profile", "thickness", "exponent"};
+inline constexpr std::string_view kWindKeys[] = {"velocity", "profile", "thickness",
+                                                 "exponent", "density", "temperature"};
 inline constexpr std::string_view kForcingKeys[] = {"hold_modes", "hold_below_kappa"};
 inline constexpr std::string_view kOutputKeys[] = {"frames", "steps_per_frame"};
 inline constexpr std::string_view kSourceExtraKeys[] = {

@@ -62,8 +62,8 @@ struct SmokeSetup {
     /// the swirl plus a uniform flow across the seams, and a blob lies on them.
     std::array<bool, 3> periodic{false, false, false};
     /// A wind through the box ([wind]): the swirl halved plus the wind, its sides open and the
-    /// upstream ones inflows of clean air (SmokeState::setWind, SmokeAdvection::setWind).
-    std::optional<Vec3> wind{};
+    /// upstream ones inflows of its air (SmokeState::setWind, SmokeAdvection::setWind).
+    std::optional<WindSpec> wind{};
 };
 
 /// Emitters with binary-fraction parameters (exact in float32), one crossing the wall of Ω.
@@ -101,7 +101,7 @@ SmokeRun runSmoke(const vulkan::VulkanContext& context, const SmokeSetup& s, dou
     }
     if (s.wind) {
         for (double& u : velocity) u *= 0.5;
-        addWind(basis, WindSpec{*s.wind}, velocity);
+        addWind(basis, *s.wind, velocity);
     }
     roundToFloat(velocity);
     SmokeFields fields{
@@ -224,21 +224,30 @@ TEST_P(SmokeKernelTest, AWindsOpenSidesEqualTheCpuReferenceInFloat32) {
     // The sides a wind crosses read the velocity they carry, its upstream sides bring in clean
     // air: along x and y in 2D (every side open), along x and z in 3D beside y's walls, and
     // along a periodic axis (no side to open).
+    // The last two bring smoke and heat in.
     struct Case {
         int dim;
-        Vec3 wind;
+        WindSpec wind;
         std::array<bool, 3> periodic;
     };
-    const std::vector<Case> cases{{2, {0.8, -0.6, 0.0}, {false, false, false}},
-                                  {3, {0.7, 0.0, -0.5}, {false, false, false}},
-                                  {3, {0.7, 0.4, -0.5}, {true, false, false}}};
+    WindSpec hazy{{0.7, 0.4, -0.5}};
+    hazy.density = 0.625;
+    hazy.temperature = -0.375;
+    WindSpec warm{{0.8, -0.6, 0.0}};
+    warm.temperature = 0.5;
+    const std::vector<Case> cases{{2, WindSpec{{0.8, -0.6, 0.0}}, {false, false, false}},
+                                  {3, WindSpec{{0.7, 0.0, -0.5}}, {false, false, false}},
+                                  {3, hazy, {true, false, false}},
+                                  {2, warm, {false, false, false}}};
     for (const Case& c : cases)
         for (const int scale : {1, 2})
             for (const AdvectionScheme scheme : kAdvectionSchemes) {
                 const std::string what =
-                    std::to_string(c.dim) + "D wind " + std::to_string(c.wind[0]) + "," +
-                    std::to_string(c.wind[1]) + "," + std::to_string(c.wind[2]) + " x" +
-                    std::to_string(scale) + " " + schemeName(scheme);
+                    std::to_string(c.dim) + "D wind " + std::to_string(c.wind.velocity[0]) + "," +
+                    std::to_string(c.wind.velocity[1]) + "," + std::to_string(c.wind.velocity[2]) +
+                    " bringing " + std::to_string(c.wind.density) + "," +
+                    std::to_string(c.wind.temperature) + " x" + std::to_string(scale) + " " +
+                    schemeName(scheme);
                 {
                     // 11 x 11 x 10 in 3D: a face total that is no whole number of texels, so
                     // the last faces' pairs (on an open side) come from a partial texel.

@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
@@ -230,6 +231,35 @@ TEST(Wind, ABoundaryLayerSlowsTheAirOverTheFloorAndItsShearWorksOnTheDisturbance
     EXPECT_THROW(WindTransport(run.cache, upward), Error);
 }
 
+TEST(Wind, ItsAirBringsItsSmokeAndHeatIn) {
+    // A box of clean, cool air in a wind of hazy, warm air: after three crossings the box holds
+    // the wind's density and temperature everywhere, and no fuel comes in with it.
+    const MacGrid grid = MacGrid::fromSpec(windBox(10).grid);
+    const std::vector<std::uint8_t> mask(std::size_t(grid.cellCount()), 1);
+    WindSpec hazy{{-0.5, 0.7, 0.0}};
+    hazy.density = 0.3;
+    hazy.temperature = -0.2;
+    for (const AdvectionScheme scheme :
+         {AdvectionScheme::SemiLagrangian, AdvectionScheme::MacCormack}) {
+        reference::SmokeAdvection windy(grid, 1, mask);
+        windy.setWind(hazy);
+        std::vector<double> velocity(std::size_t(grid.faceTotal()), 0.0);
+        addWind(grid, hazy, velocity);
+        const std::vector<double> clean(mask.size(), 0.0);
+        SmokeFields fields{clean, clean, clean, clean};
+        for (int s = 0; s < int(std::ceil(3.0 * 2.0 / 0.5 / 0.02)); ++s)
+            windy.step(velocity, 0.02, scheme, {}, fields);
+        const auto [lo, hi] = std::minmax_element(fields.density.begin(), fields.density.end());
+        const auto [cold, warm] =
+            std::minmax_element(fields.temperature.begin(), fields.temperature.end());
+        EXPECT_NEAR(*lo, 0.3, 1e-6);
+        EXPECT_NEAR(*hi, 0.3, 1e-6);
+        EXPECT_NEAR(*cold, -0.2, 1e-6);
+        EXPECT_NEAR(*warm, -0.2, 1e-6);
+        EXPECT_EQ(*std::max_element(fields.fuel.begin(), fields.fuel.end()), 0.0);
+    }
+}
+
 TEST(Wind, SmokeArrivesCleanUpstreamAndLeavesDownstream) {
     const MacGrid grid = MacGrid::fromSpec(windBox(10).grid);
     const std::vector<std::uint8_t> mask(std::size_t(grid.cellCount()), 1);
@@ -237,7 +267,7 @@ TEST(Wind, SmokeArrivesCleanUpstreamAndLeavesDownstream) {
          {AdvectionScheme::SemiLagrangian, AdvectionScheme::MacCormack}) {
         for (const Vec3 u : {Vec3{1.0, 0.0, 0.0}, Vec3{-0.5, 0.7, 0.0}}) {
             reference::SmokeAdvection still(grid, 1, mask), windy(grid, 1, mask);
-            windy.setWind(u);
+            windy.setWind(WindSpec{u});
             std::vector<double> velocity(std::size_t(grid.faceTotal()), 0.0);
             addWind(grid, WindSpec{u}, velocity);
             // A box full of smoke is flushed: once the air has crossed it three times (the fronts'

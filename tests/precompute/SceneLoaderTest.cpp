@@ -222,6 +222,10 @@ const std::vector<Refusal> kRefusals = {
     {"WindWithMhd", k2d, {}, "[simulation]\nmhd = true\n[wind]\nvelocity = [1, 0]\n",
      {"[wind]: a wind does not carry a magnetic field"}},
     {"WindMisspelledTable", k2d, {}, "[wnd]\nvelocity = [1, 0]\n", {"wnd", "did you mean wind?"}},
+    {"WindBringingNegativeSmoke", k2d, {}, "[wind]\nvelocity = [1, 0]\ndensity = -0.5\n",
+     {"[wind].density"}},
+    {"WindBringingNaNHeat", k2d, {}, "[wind]\nvelocity = [1, 0]\ntemperature = nan\n",
+     {"[wind].temperature"}},
     {"WindUnknownProfile", k2d, {}, "[wind]\nvelocity = [1, 0]\nprofile = \"log\"\n",
      {"[wind].profile", "boundary-layer"}},
     {"WindThicknessWithoutALayer", k2d, {}, "[wind]\nvelocity = [1, 0]\nthickness = 0.3\n",
@@ -675,6 +679,13 @@ TEST_F(SceneLoaderTest, AWindBlowsThroughTheWholeBox) {
     ASSERT_TRUE(three.wind.has_value());
     EXPECT_EQ(three.wind->velocity, (Vec3{0.0, 0.0, 2.0}));
     EXPECT_EQ(three.wind->profile, WindProfile::Uniform);
+    EXPECT_EQ(three.wind->density, 0.0) << "clean air by default";
+    EXPECT_EQ(three.wind->temperature, 0.0);
+    const SceneSpec hazy = parseScene(
+        sceneFixture(k2d) + "[wind]\nvelocity = [1, 0]\ndensity = 0.2\ntemperature = -1.5\n",
+        "hazy.toml");
+    EXPECT_EQ(hazy.wind->density, 0.2);
+    EXPECT_EQ(hazy.wind->temperature, -1.5);
     const SceneSpec layer = parseScene(sceneFixture(k3d) + R"([wind]
 velocity = [1, 0.5, 0]
 profile = "boundary-layer"
