@@ -371,9 +371,11 @@ void ModalStepper::recordLinear(vulkan::CommandSequence& sequence,
 
 std::vector<std::uint32_t> ModalStepper::evaluationGroups() const {
     std::vector<std::uint32_t> groups = mCoefficients.dispatchGroups(!mFiltered);
-    const std::vector<std::uint32_t> linear = linearGroups();
-    groups.insert(groups.end(), linear.begin(), linear.end());
-    if (!mMhd) return groups;
+    if (!mMhd) {
+        const std::vector<std::uint32_t> linear = linearGroups();
+        groups.insert(groups.end(), linear.begin(), linear.end());
+        return groups;
+    }
     const std::vector<std::uint32_t> apply = groups, advect = mCoefficients.advectGroups();
     if (mLorentz) groups.insert(groups.end(), apply.begin(), apply.end());
     groups.insert(groups.end(), advect.begin(), advect.end());
