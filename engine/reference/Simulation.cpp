@@ -32,7 +32,9 @@ Simulation::Simulation(const BasisCache& cache, const StructuralCoefficients& co
     setObstacles(mSettings.obstacles);
     if (mSettings.wind) {
         mAdvection.setWind(*mSettings.wind);
-        addWind(MacGrid::fromSpec(cache.grid), *mSettings.wind, mFaceVelocity);
+        mWindField.assign(mFaceVelocity.size(), 0.0);
+        addWind(MacGrid::fromSpec(cache.grid), *mSettings.wind, mWindField);
+        mFaceVelocity = mWindField;
     }
     const auto cells = std::size_t(mAdvection.smokeGrid().cellCount());
     mFields.density.assign(cells, 0.0);
@@ -90,7 +92,7 @@ void Simulation::setIntegrator(Integrator integrator) {
 
 void Simulation::reconstructAirVelocity() {
     mFaceVelocity = reconstructFaceField(mBasis, velocity());
-    if (mSettings.wind) addWind(MacGrid::fromSpec(mCache.grid), *mSettings.wind, mFaceVelocity);
+    for (std::size_t f = 0; f < mWindField.size(); ++f) mFaceVelocity[f] += mWindField[f];
 }
 
 FrameStats Simulation::advanceSteps(int steps) {

@@ -50,7 +50,7 @@ public:
     double time() const override { return mTime; }
 
 private:
-    /// mFaceVelocity = Ψ v, plus the wind.
+    /// mFaceVelocity = Ψ v, plus the wind's B.
     void reconstructAirVelocity();
 
     const BasisCache& mCache;
@@ -62,6 +62,8 @@ private:
     ParticleAdvection mParticles;
     std::vector<ForceSplat> mSplats;
     std::vector<double> mFaceVelocity;
+    /// A wind's base flow B on the faces (addWind, made once; empty without a wind).
+    std::vector<double> mWindField;
     SmokeFields mFields;
     double mTime = 0.0;
     long mStep = 0;  ///< steps since t = 0, for the divergence message

@@ -52,6 +52,15 @@ WindTransport::WindTransport(const BasisCache& cache, const WindSpec& wind)
     for (const std::int64_t face : cache.faces)
         if (face < 0 || face >= mGrid.faceTotal())
             throw Error("wind: face DOF " + std::to_string(face) + " is not a face of the grid");
+    // f and f' at each row height, per face lattice: the evaluations read these, not pow().
+    const int up = upAxis(mGrid);
+    for (int c = 0; c < mGrid.dim; ++c)
+        for (int j = 0; j < mGrid.faceExtent(c)[up]; ++j) {
+            std::array<int, 3> p{0, 0, 0};
+            p[up] = j;
+            mFactor[c].push_back(windFactor(wind, heightOf(mGrid, c, p)));
+            mSlope[c].push_back(windSlope(wind, heightOf(mGrid, c, p)));
+        }
 }
 
 std::vector<double> WindTransport::gridFluxes(const Eigen::VectorXd& v) const {
@@ -79,6 +88,7 @@ double WindTransport::upVelocityBeside(const std::vector<double>& fluxes, int a,
 void WindTransport::apply(const Eigen::VectorXd& v, Eigen::VectorXd& out) const {
     const std::vector<double> fluxes = gridFluxes(v);
     std::vector<double> change(fluxes.size(), 0.0);
+    const int up = upAxis(mGrid);
     const bool layer = mWind.profile == WindProfile::BoundaryLayer;
     for (const int a : windAxes(mGrid, mWind.velocity)) {
         const double u = mWind.velocity[a];
@@ -87,7 +97,7 @@ void WindTransport::apply(const Eigen::VectorXd& v, Eigen::VectorXd& out) const 
         if (layer)
             forEachFace(mGrid, a, [&](std::int64_t face, std::array<int, 3> p) {
                 if (mGrid.isWallFace(a, p[a])) return;  // no DOF
-                change[std::size_t(face)] -= u * windSlope(mWind, heightOf(mGrid, a, p)) *
+                change[std::size_t(face)] -= u * mSlope[a][std::size_t(p[up])] *
                                              upVelocityBeside(fluxes, a, p) * mGrid.faceArea(a);
             });
         for (int c = 0; c < mGrid.dim; ++c) {
@@ -106,8 +116,8 @@ void WindTransport::apply(const Eigen::VectorXd& v, Eigen::VectorXd& out) const 
                     n[a] = q;
                     return fluxes[std::size_t(mGrid.faceIndex(c, n[0], n[1], n[2]))];
                 };
-                change[std::size_t(face)] += scale * windFactor(mWind, heightOf(mGrid, c, p)) *
-                                             (at(p[a] + 1) - at(p[a] - 1));
+                change[std::size_t(face)] +=
+                    scale * mFactor[c][std::size_t(p[up])] * (at(p[a] + 1) - at(p[a] - 1));
             });
         }
     }
@@ -137,6 +147,7 @@ const Eigen::MatrixXd& WindTransport::matrix() const {
 double WindTransport::outflowPower(const Eigen::VectorXd& v) const {
     const std::vector<double> fluxes = gridFluxes(v);
     double power = 0.0;
+    const int up = upAxis(mGrid);
     for (const int a : windAxes(mGrid, mWind.velocity)) {
         if (mGrid.periodic[a]) continue;
         const double sideArea = mGrid.cellVolume() / mGrid.spacing[a];  // of one cell's side
@@ -146,8 +157,8 @@ double WindTransport::outflowPower(const Eigen::VectorXd& v) const {
             forEachFace(mGrid, c, [&](std::int64_t face, std::array<int, 3> p) {
                 if (p[a] != downstream) return;
                 const double velocity = fluxes[std::size_t(face)] / mGrid.faceArea(c);
-                power += 0.5 * std::abs(mWind.velocity[a]) *
-                         windFactor(mWind, heightOf(mGrid, c, p)) * velocity * velocity * sideArea;
+                power += 0.5 * std::abs(mWind.velocity[a]) * mFactor[c][std::size_t(p[up])] *
+                         velocity * velocity * sideArea;
             });
         }
     }
@@ -158,11 +169,12 @@ double WindTransport::shearPower(const Eigen::VectorXd& v) const {
     if (mWind.profile != WindProfile::BoundaryLayer) return 0.0;
     const std::vector<double> fluxes = gridFluxes(v);
     double power = 0.0;
+    const int up = upAxis(mGrid);
     for (const int a : windAxes(mGrid, mWind.velocity))
         forEachFace(mGrid, a, [&](std::int64_t face, std::array<int, 3> p) {
             if (mGrid.isWallFace(a, p[a])) return;
             const double along = fluxes[std::size_t(face)] / mGrid.faceArea(a);
-            power += mWind.velocity[a] * windSlope(mWind, heightOf(mGrid, a, p)) * along *
+            power += mWind.velocity[a] * mSlope[a][std::size_t(p[up])] * along *
                      upVelocityBeside(fluxes, a, p) * mGrid.cellVolume();
         });
     return power;

@@ -70,6 +70,8 @@ private:
     VelocityBasis mBasis;
     MacGrid mGrid;
     WindSpec mWind;
+    /// Per face lattice, f and f' at the heights of its rows along the up axis.
+    std::array<std::vector<double>, 3> mFactor, mSlope;
     mutable Eigen::MatrixXd mMatrix;  ///< D, formed by matrix()
 };
 

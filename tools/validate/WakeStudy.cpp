@@ -60,8 +60,7 @@ Shedding shedding(const SceneSpec& scene, double duration, double from,
     const RunInputs run = prepareStudyRun(scene, options);
     const Backend backend(BackendChoice{BackendKind::CpuReference, {}});
     const std::unique_ptr<Simulator> simulation = backend.makeSimulator(run);
-    const MacGrid grid =
-        withWindThrough(MacGrid::fromSpec(run.cache.grid), run.settings.wind->velocity);
+    const MacGrid grid = airGridOf(run.cache.grid, run.settings.wind);
     const Vec3 probe{kCentre[0] + 2.0 * kDiameter, kCentre[1], 0.5};
     Shedding s;
     const int steps = int(std::lround(duration / kStep));
