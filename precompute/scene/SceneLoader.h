@@ -46,6 +46,10 @@ inline constexpr double kMaxCellsFromOrigin = 1e12;
 /// Example scenes use about 1; 1e300 overflowed the squares of the dynamics into "energy = inf".
 /// A source's `velocity` is held to the same limit (a jet of 1e300 blew up the first step).
 inline constexpr double kMaxInitialSpeed = 1e6;
+/// Largest accepted magnitude of a smoke value a scene sets: a source's or the wind's `density`,
+/// `temperature`, `fuel`, and `[fire]` `ignition`, `heat`, `smoke`. The device holds the smoke in
+/// 32-bit floats: a source of density 1e300 ran into infinity in the frames.
+inline constexpr double kMaxSmokeValue = 1e6;
 /// Largest accepted `sequence_rate` of a deforming mesh obstacle, files per unit of time.
 inline constexpr double kMaxSequenceRate = 1e6;
 /// Largest accepted cell count of the basis grid (2^27): beyond it no eigensolve finishes anyway.

@@ -67,6 +67,10 @@ SourceSpec readSource(const TomlReader& reader, const toml::table& table, int in
 ParticleSetSpec readParticleSet(const TomlReader& reader, const toml::table& table, int index,
                                 double shotEnd, std::int64_t& emitted);
 ObstacleSpec readObstacle(const TomlReader& reader, const Section& s);
+/// A smoke value (density, temperature, fuel, heat) as readNumber reads it, at most kMaxSmokeValue
+/// in magnitude.
+double readSmokeValue(const TomlReader& reader, const Section& s, std::string_view key,
+                      double fallback, Sign sign = Sign::Any);
 SmokeSpec readSmoke(const TomlReader& reader, const Section& s);
 FireSpec readFire(const TomlReader& reader, const Section& s);
 /// `[wind]` of a grid scene whose domain is the whole box (`scene` read up to [fire]).

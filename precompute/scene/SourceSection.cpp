@@ -17,9 +17,9 @@ SourceSpec readSource(const TomlReader& reader, const toml::table& table, int in
                     "[[source]] #" + std::to_string(index) + " (" +
                         std::string(keywordOf(Choices<ShapeKind>(kShapeKinds), source.shape.kind)) +
                         ")"};
-    source.density = reader.readNumber(s, "density", source.density, Sign::NonNegative);
-    source.temperature = reader.readNumber(s, "temperature", source.temperature);
-    source.fuel = reader.readNumber(s, "fuel", source.fuel, Sign::NonNegative);
+    source.density = readSmokeValue(reader, s, "density", source.density, Sign::NonNegative);
+    source.temperature = readSmokeValue(reader, s, "temperature", source.temperature);
+    source.fuel = readSmokeValue(reader, s, "fuel", source.fuel, Sign::NonNegative);
     source.start = reader.readNumber(s, "start", source.start, Sign::NonNegative);
     source.end = reader.readNumber(s, "end", source.end, Sign::Positive);
     source.velocity = reader.vector(s, "velocity");

@@ -34,8 +34,8 @@ WindSpec readWind(const TomlReader& reader, const Section& s, const SceneSpec& s
                         " scene units per unit time",
                     s.table.get("velocity"));
     // What comes in with the air, as a source's rates are read.
-    wind.density = reader.readNumber(s, "density", 0.0, Sign::NonNegative);
-    wind.temperature = reader.readNumber(s, "temperature", 0.0);
+    wind.density = readSmokeValue(reader, s, "density", 0.0, Sign::NonNegative);
+    wind.temperature = readSmokeValue(reader, s, "temperature", 0.0);
     wind.profile =
         reader.readChoice(s, "profile", WindProfile::Uniform, Choices<WindProfile>(kWindProfiles));
     if (wind.profile == WindProfile::Uniform) {

@@ -3,6 +3,10 @@
 import bpy
 from bpy.props import EnumProperty, FloatProperty, FloatVectorProperty, IntProperty
 
+# The most a smoke value (density, temperature, fuel, heat) may be in a scene: modeflow's loader
+# refuses more (its smoke is held in 32-bit floats on the device).
+SMOKE_LIMIT = 1e6
+
 
 class ModeflowObjectSettings(bpy.types.PropertyGroup):
     role: EnumProperty(
@@ -44,12 +48,14 @@ class ModeflowObjectSettings(bpy.types.PropertyGroup):
                                           "where the wind slows towards the ground (0: the same "
                                           "wind at every height)")
     # Fire (written as [fire] when an emitter feeds fuel)
-    ignition: FloatProperty(name="Ignition", description="Temperature above which fuel burns", default=1.0)
+    ignition: FloatProperty(name="Ignition", description="Temperature above which fuel burns", default=1.0,
+                            min=-SMOKE_LIMIT, max=SMOKE_LIMIT)
     burn_rate: FloatProperty(name="Burn Rate", description="Part of the fuel burnt per unit of time",
                              default=4.0, min=0.001)
-    heat: FloatProperty(name="Heat", description="Temperature released per unit of fuel burnt", default=2.0)
+    heat: FloatProperty(name="Heat", description="Temperature released per unit of fuel burnt", default=2.0,
+                        min=0.0, max=SMOKE_LIMIT)
     smoke: FloatProperty(name="Smoke", description="Smoke released per unit of fuel burnt", default=0.5,
-                         min=0.0)
+                         min=0.0, max=SMOKE_LIMIT)
     device: EnumProperty(
         name="Device",
         items=[('vulkan', "Vulkan", "The first suitable Vulkan device (a GPU, else lavapipe)"),
@@ -57,10 +63,12 @@ class ModeflowObjectSettings(bpy.types.PropertyGroup):
         default='vulkan',
     )
     # Emitter
-    density: FloatProperty(name="Density", description="Smoke emitted per unit of time", default=4.0, min=0.0)
-    temperature: FloatProperty(name="Temperature", description="Heat emitted per unit of time", default=4.0)
+    density: FloatProperty(name="Density", description="Smoke emitted per unit of time", default=4.0, min=0.0,
+                           max=SMOKE_LIMIT)
+    temperature: FloatProperty(name="Temperature", description="Heat emitted per unit of time", default=4.0,
+                               min=-SMOKE_LIMIT, max=SMOKE_LIMIT)
     fuel: FloatProperty(name="Fuel", description="Fuel emitted per unit of time (it burns where hot)",
-                        default=0.0, min=0.0)
+                        default=0.0, min=0.0, max=SMOKE_LIMIT)
 
 
 def register():
