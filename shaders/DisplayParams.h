@@ -43,7 +43,7 @@ using uint = std::uint32_t;
 #define DISPLAY_TONE 2.5
 /* Outside the viewport, a shade darker than the background, with a frame of the wall colour
    this many pixels wide around the picture (the box's walls; not on the sides of a periodic
-   axis, which have none). */
+   axis or those a wind flows through, which have none). */
 #define DISPLAY_MARGIN 0.6
 #define DISPLAY_FRAME_PIXELS 3
 /* Velocity arrows. */
@@ -78,8 +78,9 @@ struct DisplayParams {
     float arrowScale;   /* window pixels per unit of velocity, */
     uint basisX;        /* from the face velocity of the basis grid of basisX x basisY cells */
     uint basisY;
-    uint periodic;    /* display_smoke_2d: bit a, axis a is periodic (MacGrid::periodic): the
-                         smoke and velocity wrap, and no wall frame is drawn on its sides */
+    uint boundary;    /* display_smoke_2d: MacGrid::boundaryBits: bit a, axis a is periodic (the
+                         smoke and velocity wrap); bit 3 + a, a wind flows through its sides (the
+                         velocity is sampled there as in the air); neither has a wall frame */
     float flameScale; /* display_smoke_2d: the flame shown fully glowing (0: no flame) */
 };
 

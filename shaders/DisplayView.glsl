@@ -3,13 +3,14 @@
 // declaring `params`; Display.glsl then completes the kernel.
 
 // Outside the viewport: the wall colour in a frame around it, darker background beyond. The
-// sides of a periodic axis (params.periodic: x left and right, y top and bottom) have no wall.
+// sides of a periodic axis and those a wind flows through (params.boundary's bits 0 and 3: x left
+// and right, 1 and 4: y top and bottom) have no wall.
 vec3 marginColour(uint x, uint y) {
     const ivec2 p = ivec2(x, y), lo = ivec2(params.viewX, params.viewY);
     const ivec2 hi = lo + ivec2(params.viewWidth, params.viewHeight);
     const ivec2 outside = max(lo - p, p - hi + 1);
     const bool besideX = outside.x > 0 && outside.y <= 0, besideY = outside.y > 0 && outside.x <= 0;
-    const bool open = (besideX && (params.periodic & 1u) != 0u) || (besideY && (params.periodic & 2u) != 0u);
+    const bool open = (besideX && (params.boundary & 9u) != 0u) || (besideY && (params.boundary & 18u) != 0u);
     if (max(outside.x, outside.y) <= DISPLAY_FRAME_PIXELS && !open)
         return vec3(DISPLAY_WALL_R, DISPLAY_WALL_G, DISPLAY_WALL_B);
     return DISPLAY_MARGIN * vec3(DISPLAY_BACKGROUND_R, DISPLAY_BACKGROUND_G, DISPLAY_BACKGROUND_B);

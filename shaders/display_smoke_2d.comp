@@ -23,7 +23,7 @@ layout(push_constant) uniform Push { DisplayParams params; };
 // The face and its x-neighbour; on a periodic x the last face of a row pairs with the row's first
 // (every face group's rows are basisX long then).
 vec2 macFacePair(uint face) {
-    const bool wrapX = (params.periodic & 1u) != 0u && face % params.basisX == params.basisX - 1u;
+    const bool wrapX = (params.boundary & 1u) != 0u && face % params.basisX == params.basisX - 1u;
     const uint next = wrapX ? face + 1u - params.basisX : min(face + 1u, uint(faces.length()) - 1u);
     return vec2(faces[face], faces[next]);
 }
@@ -45,9 +45,9 @@ vec3 withArrow(vec3 colour, uint x, uint y) {
     const vec2 basis = vec2(params.basisX, params.basisY);
     const vec3 point = vec3(centre.x / view.x * basis.x, (1.0 - centre.y / view.y) * basis.y, 0.0);
     const ivec3 cells = ivec3(params.basisX, params.basisY, 1);
-    const uint yOffset = (params.basisX + ((params.periodic & 1u) != 0u ? 0u : 1u)) * params.basisY;
-    const vec2 u = vec2(sampleFaceComponent(0, point, cells, 0u, params.periodic),
-                        sampleFaceComponent(1, point, cells, yOffset, params.periodic));
+    const uint yOffset = (params.basisX + ((params.boundary & 1u) != 0u ? 0u : 1u)) * params.basisY;
+    const vec2 u = vec2(sampleFaceComponent(0, point, cells, 0u, params.boundary),
+                        sampleFaceComponent(1, point, cells, yOffset, params.boundary));
     vec2 d = vec2(u.x, -u.y) * params.arrowScale;
     const float limit = 0.9 * params.arrowSpacing;
     if (length(d) > limit) d *= limit / length(d);
@@ -78,7 +78,7 @@ vec3 pixelColour(uint x, uint y) {
             ivec2 hi = min(lo + 1, n - 1);
             // Along a periodic axis the edge pixels blend with the other end's cells.
             [[unroll]] for (int a = 0; a < 2; ++a)
-                if ((params.periodic & (1u << a)) != 0u) {
+                if ((params.boundary & (1u << a)) != 0u) {
                     s[a] = mod(p[a] - 0.5, float(n[a]));
                     lo[a] = clamp(int(floor(s[a])), 0, n[a] - 1);
                     hi[a] = (lo[a] + 1) % n[a];

@@ -5,12 +5,13 @@
 #include "engine/core/Error.h"
 #include "engine/device/Simulation.h"
 #include "engine/run/RunInputs.h"
+#include "engine/simulation/WindTransport.h"
 
 namespace modeflow::stir {
 
 DisplayedFields::DisplayedFields(const vulkan::VulkanContext& context, const RunInputs& run)
     : mContext(context),
-      mBasisGrid(MacGrid::fromSpec(run.cache.grid)),
+      mBasisGrid(airGridOf(run.cache.grid, run.settings.wind)),
       mSmokeGrid(mBasisGrid.refined(run.settings.smokeScale)) {
     const std::size_t cells = std::size_t(mSmokeGrid.cellCount());
     if (run.smokeMask.size() != cells)

@@ -1,7 +1,7 @@
 /// @file DisplayKernelTest.cpp
 /// The stir window's 2D picture (DisplayKernels::recordSmoke2D, shaders/display_smoke_2d.comp)
-/// along periodic axes: the smoke is drawn across the seam and the box has no wall on that side;
-/// flames glow.
+/// along periodic axes: the smoke is drawn across the seam and the box has no wall on that side
+/// (nor on the sides a wind flows through); flames glow.
 
 #include <array>
 #include <cstdint>
@@ -20,23 +20,26 @@ namespace {
 
 using vulkan::DeviceBuffer;
 
+enum class SidesX { Walls, Periodic, Wind };
+
 /// An 8 × 4 grid of [0, 2] × [0, 1] whose only smoke is a density of 1 in the last column.
-MacGrid stripeGrid(bool periodicX) {
+MacGrid stripeGrid(SidesX sides) {
     MacGrid grid;
     grid.dim = 2;
     grid.cells = {8, 4, 1};
     grid.spacing = {0.25, 0.25, 1.0};
-    grid.periodic = {periodicX, false, false};
+    grid.periodic = {sides == SidesX::Periodic, false, false};
+    grid.flowThrough = {sides == SidesX::Wind, false, false};
     return grid;
 }
 
 /// The picture of stripeGrid in a window of `width` × 80 pixels, its viewport 160 × 80 in the
 /// middle (20 pixels a cell): packed RGBA8 words, red in the low byte; `flame` (per cell,
 /// empty: none) glows with `flameScale`.
-std::vector<std::uint32_t> drawStripe(const vulkan::VulkanContext& context, bool periodicX,
-                                      int width, const std::vector<float>& flame = {},
+std::vector<std::uint32_t> drawStripe(const vulkan::VulkanContext& context, SidesX sides, int width,
+                                      const std::vector<float>& flame = {},
                                       float flameScale = 0.0f) {
-    const MacGrid grid = stripeGrid(periodicX);
+    const MacGrid grid = stripeGrid(sides);
     std::vector<float> smoke(2 * std::size_t(grid.cellCount()), 0.0f);
     for (int y = 0; y < grid.cells[1]; ++y) smoke[2 * std::size_t(grid.cellIndex(7, y, 0))] = 1.0f;
     const DeviceBuffer smokeBuffer = DeviceBuffer::fromValues<float>(context, smoke, "smoke");
@@ -78,8 +81,8 @@ TEST_P(DisplayKernelTest, TheSmokeOfTheLastColumnShowsAtTheFirstAcrossAPeriodicS
     // The leftmost pixels lie a quarter cell left of the first cell's centre: along a periodic x
     // they blend in the last column (about half of it), between walls they hold the first's 0.
     const int background = int(DISPLAY_BACKGROUND_R * 255.0 + 0.5);
-    const std::vector<std::uint32_t> periodic = drawStripe(context(), true, 160);
-    const std::vector<std::uint32_t> walled = drawStripe(context(), false, 160);
+    const std::vector<std::uint32_t> periodic = drawStripe(context(), SidesX::Periodic, 160);
+    const std::vector<std::uint32_t> walled = drawStripe(context(), SidesX::Walls, 160);
     const std::size_t leftmost = 40 * 160, rightmost = leftmost + 159;
     EXPECT_GT(red(periodic[leftmost]), background + 60) << "periodic: smoke across the seam";
     EXPECT_EQ(red(walled[leftmost]), background) << "walled: no smoke at the first column";
@@ -91,15 +94,24 @@ TEST_P(DisplayKernelTest, NoWallIsDrawnBesideAPeriodicAxis) {
     // wall frame 3 pixels wide in them between walls, none along a periodic x.
     const int wall = int(DISPLAY_WALL_R * 255.0 + 0.5);
     const std::size_t besideLeft = 40 * 200 + 18;
-    EXPECT_EQ(red(drawStripe(context(), false, 200)[besideLeft]), wall);
-    EXPECT_LT(red(drawStripe(context(), true, 200)[besideLeft]), wall - 30);
+    EXPECT_EQ(red(drawStripe(context(), SidesX::Walls, 200)[besideLeft]), wall);
+    EXPECT_LT(red(drawStripe(context(), SidesX::Periodic, 200)[besideLeft]), wall - 30);
+}
+
+TEST_P(DisplayKernelTest, NoWallIsDrawnBesideTheSidesAWindFlowsThrough) {
+    // The sides a wind crosses (MacGrid::flowThrough, the stir window's air grid) are open as a
+    // periodic axis's are; the top and bottom keep their walls.
+    const int wall = int(DISPLAY_WALL_R * 255.0 + 0.5);
+    const std::vector<std::uint32_t> windy = drawStripe(context(), SidesX::Wind, 200);
+    EXPECT_LT(red(windy[40 * 200 + 18]), wall - 30) << "left side";
+    EXPECT_LT(red(windy[40 * 200 + 181]), wall - 30) << "right side";
 }
 
 TEST_P(DisplayKernelTest, FlamesGlowInProportionToTheirScale) {
     // A flame of 4 in the first column. Pixel 10 samples a fortieth of a cell right of its
     // centre: a flame of 3.9, 0.975 of full glow at scale 4, half that at scale 8; without flame
     // values, the smoke alone.
-    const MacGrid grid = stripeGrid(false);
+    const MacGrid grid = stripeGrid(SidesX::Walls);
     std::vector<float> flame(std::size_t(grid.cellCount()), 0.0f);
     for (int y = 0; y < grid.cells[1]; ++y) flame[std::size_t(grid.cellIndex(0, y, 0))] = 4.0f;
     const std::size_t middle = 40 * 160 + 10;
@@ -108,9 +120,11 @@ TEST_P(DisplayKernelTest, FlamesGlowInProportionToTheirScale) {
     const auto glowing = [&](double fraction) {
         return background + fraction * (full - background);
     };
-    EXPECT_NEAR(red(drawStripe(context(), false, 160, flame, 4.0f)[middle]), glowing(0.975), 1.0);
-    EXPECT_NEAR(red(drawStripe(context(), false, 160, flame, 8.0f)[middle]), glowing(0.4875), 1.0);
-    EXPECT_EQ(red(drawStripe(context(), false, 160)[middle]), background);
+    EXPECT_NEAR(red(drawStripe(context(), SidesX::Walls, 160, flame, 4.0f)[middle]), glowing(0.975),
+                1.0);
+    EXPECT_NEAR(red(drawStripe(context(), SidesX::Walls, 160, flame, 8.0f)[middle]),
+                glowing(0.4875), 1.0);
+    EXPECT_EQ(red(drawStripe(context(), SidesX::Walls, 160)[middle]), background);
 }
 
 INSTANTIATE_TEST_SUITE_P(Vulkan, DisplayKernelTest, ::testing::Bool(), testing::validationName);
