@@ -54,6 +54,9 @@ layout(std430, set = 0, binding = 8) buffer Status { ModalStatus status; };
 layout(std430, set = 0, binding = 9) buffer Arguments { uint arguments[]; };
 // The implicit iterations' history (Anderson acceleration, see iterate).
 layout(std430, set = 0, binding = 10) buffer History { float history[]; };
+// 1 / mass, and 0 for the modes [forcing] holds: their rates are 0, so they keep their amplitude
+// (their decay rates are 0 too) while their weighted values a = M y still act on the others.
+layout(std430, set = 0, binding = 11) readonly buffer InverseMass { float inverseMass[]; };
 layout(push_constant) uniform Push { ModalUpdateParams params; };
 // What a dispatch does, fixed at compile time, one pipeline each (engine/device/ModalKernels):
 // lavapipe runs every branch of an `if`, loads included, whichever lanes take it, so with the
@@ -83,12 +86,12 @@ float rhs(uint k) {
 }
 
 // The midpoint rule's fixed-point map g(y)_k with r = R(y) (see the header).
-float midpointMap(uint k) { return x[k] + 0.5 * params.h * (rhs(k) + f[k]) / mass[k]; }
+float midpointMap(uint k) { return x[k] + 0.5 * params.h * (rhs(k) + f[k]) * inverseMass[k]; }
 
 // The fixed-point map g(y)_k of the implicit rules (see the header).
 float fixedPointMap(uint k) {
     if (OP == MODAL_OP_MIDPOINT) return midpointMap(k);
-    return x[k] + (0.5 * params.h * (acc[k] + rhs(k)) + params.h * f[k]) / mass[k];
+    return x[k] + (0.5 * params.h * (acc[k] + rhs(k)) + params.h * f[k]) * inverseMass[k];
 }
 
 // Entry k of history vector `slot` (history layout: see iterate).
@@ -247,28 +250,28 @@ void main() {
             x[k] *= halfDecay;
             const uint before = at(2u * ANDERSON_DEPTH + 2u, k);
             const float extrapolated = held >= 2u ? 2.0 * rk - history[before] : rk;
-            setPoint(k, warm ? x[k] + 0.5 * h * (extrapolated + f[k]) / mass[k] : x[k]);
+            setPoint(k, warm ? x[k] + 0.5 * h * (extrapolated + f[k]) * inverseMass[k] : x[k]);
             if (held >= 1u) history[before] = rk;
         } else if (op == MODAL_OP_EXPLICIT) {
-            x[k] = halfDecay * (x[k] + h * (rk + f[k]) / mass[k]);
+            x[k] = halfDecay * (x[k] + h * (rk + f[k]) * inverseMass[k]);
         } else if (op == MODAL_OP_RK4_STAGE) {
-            const float slope = (rk + f[k]) / mass[k];
+            const float slope = (rk + f[k]) * inverseMass[k];
             const uint s = params.stage;
             acc[k] = (s == 0 ? 0.0 : acc[k]) + (s == 0 || s == 3 ? 1.0 : 2.0) * slope;
             if (s < 3) setPoint(k, x[k] + (s == 2 ? 1.0 : 0.5) * h * slope);
             else x[k] = halfDecay * (x[k] + h / 6.0 * acc[k]);
         } else if (op == MODAL_OP_LINEARIZED_START) {
-            const float rate = status.heldRate != 0u ? history[at(HELD_RATE_SLOT, k)] : rk / mass[k];
-            setPoint(k, x[k] + 0.5 * h * (rate + f[k] / mass[k]));
+            const float rate = status.heldRate != 0u ? history[at(HELD_RATE_SLOT, k)] : rk * inverseMass[k];
+            setPoint(k, x[k] + 0.5 * h * (rate + f[k] * inverseMass[k]));
         } else if (op == MODAL_OP_MIDPOINT_END || op == MODAL_OP_LINEARIZED_END) {
             if (op == MODAL_OP_LINEARIZED_END)
-                history[at(HELD_RATE_SLOT, k)] = 2.0 * (y[k] - x[k]) / h - f[k] / mass[k];
+                history[at(HELD_RATE_SLOT, k)] = 2.0 * (y[k] - x[k]) / h - f[k] * inverseMass[k];
             // An iteration that did not converge may be diverging (h |dR/dv| / 2 > 1): keep the
             // state rather than step to a wild iterate; the host then takes smaller substeps.
             x[k] = halfDecay * (status.converged != 0u ? 2.0 * y[k] - x[k] : x[k]);
         } else if (op == MODAL_OP_TRAPEZOIDAL_START) {
             acc[k] = rk;
-            setPoint(k, x[k] + h * (rk + f[k]) / mass[k]);
+            setPoint(k, x[k] + h * (rk + f[k]) * inverseMass[k]);
         } else if (op == MODAL_OP_TRAPEZOIDAL_END) {
             x[k] = halfDecay * (status.converged != 0u ? y[k] : x[k]);  // as MIDPOINT_END
         }

@@ -79,7 +79,7 @@ ModalKernels::ModalKernels(const vulkan::VulkanContext& context)
                              sizeof(shaders::CombineParams), 64}),
       linear(context,
              {"modal_linear", modal_linear_spv, 3, sizeof(shaders::CombineParams), 64, {}, {0, 1}}),
-      mUpdates(context, {"modal_update", modal_update_spv, 11, sizeof(shaders::ModalUpdateParams),
+      mUpdates(context, {"modal_update", modal_update_spv, 12, sizeof(shaders::ModalUpdateParams),
                          updateWorkgroupSize(context)}) {}
 
 const vulkan::ComputeKernel& ModalKernels::update(std::uint32_t op, bool frozen,

@@ -84,6 +84,7 @@ ModalStepper::ModalStepper(const vulkan::VulkanContext& context,
       mForce(zeros(context, mParts * mStride, "modal force")),
       mMass(zeros(context, mParts * mStride, "modal mass")),
       mDecay(zeros(context, mParts * mStride, "modal decay rates")),
+      mInverseMass(zeros(context, mParts * mStride, "modal inverse mass")),
       mAccumulator(zeros(context, mParts * mStride, "modal accumulator")),
       // Anderson's 2 ANDERSON_DEPTH + 2 vectors, the warm start's R and the linearized rule's
       // held rate (modal_update.comp).
@@ -149,14 +150,14 @@ void ModalStepper::uploadModel(const DeviceModel& model) {
                     (mMhd ? "MHD" : "a fluid"));
     const int n = size();
     if (const auto* fluid = std::get_if<FluidParameters>(&model)) {
-        if (!fluid->held.empty())
-            throw Error(
-                "modal step: held modes ([forcing]) run on the CPU reference only; use --device "
-                "cpu");
         uploadLinear(fluid->linear.get());
         const Eigen::VectorXd mass = FluidSystem::massOf(*fluid, n);
         mFiltered = (mass.array() != 1.0).any();
         upload(mMass, mass, 0, "mass");
+        // Held modes ([forcing]) move at rate 0: v̇_k = 0, forces included, as FluidSystem's.
+        Eigen::VectorXd inverse = mass.cwiseInverse();
+        for (const int k : fluid->held) inverse[k] = 0.0;
+        upload(mInverseMass, inverse, 0, "inverse mass");
         upload(mDecay, FluidSystem::decayRatesOf(*fluid, n), 0, "decay rates");
         return;
     }
@@ -169,7 +170,10 @@ void ModalStepper::uploadModel(const DeviceModel& model) {
     };
     const Eigen::VectorXd velocityRates = rates(mhd.viscosity),
                           fieldRates = rates(mhd.magneticDiffusivity);
-    for (int p = 0; p < 2; ++p) upload(mMass, Eigen::VectorXd::Ones(n), p, "mass");
+    for (int p = 0; p < 2; ++p) {
+        upload(mMass, Eigen::VectorXd::Ones(n), p, "mass");
+        upload(mInverseMass, Eigen::VectorXd::Ones(n), p, "inverse mass");
+    }
     upload(mDecay, velocityRates, 0, "decay rates");
     upload(mDecay, fieldRates, 1, "decay rates");
 }
@@ -436,9 +440,9 @@ void ModalStepper::recordUpdate(vulkan::CommandSequence& sequence, std::uint32_t
                                 std::uint32_t stage, double h, bool indirect, bool frozen) const {
     const bool warm =
         op == MODAL_OP_BEGIN && mSettings.scheme == Integrator::Midpoint && mSettings.warmStart;
-    const std::array<const vulkan::DeviceBuffer*, 11> buffers{
-        &mState, &mPoint,       &mWeighted, &mRhs,       &mForce,  &mMass,
-        &mDecay, &mAccumulator, &mStatus,   &mArguments, &mHistory};
+    const std::array<const vulkan::DeviceBuffer*, 12> buffers{
+        &mState, &mPoint,       &mWeighted, &mRhs,       &mForce,   &mMass,
+        &mDecay, &mAccumulator, &mStatus,   &mArguments, &mHistory, &mInverseMass};
     const shaders::ModalUpdateParams params{std::uint32_t(size()),
                                             stage,
                                             mIterationDispatches + 1,

@@ -209,8 +209,8 @@ private:
     DeviceCoefficients mCoefficients;
     std::uint32_t mEvaluationDispatches = 0;  ///< dispatches of one evaluation of R
     std::uint32_t mIterationDispatches = 0;   ///< contraction dispatches of an implicit iteration
-    vulkan::DeviceBuffer mState, mPoint, mWeighted, mRhs, mForce, mMass, mDecay, mAccumulator,
-        mHistory, mStatus, mArguments;
+    vulkan::DeviceBuffer mState, mPoint, mWeighted, mRhs, mForce, mMass, mDecay, mInverseMass,
+        mAccumulator, mHistory, mStatus, mArguments;
     /// The fluid's linear term D (FluidParameters::linear): N rows of `mStride` floats, read as
     /// texels; none without one.
     std::optional<vulkan::DeviceBuffer> mLinear;

@@ -7,8 +7,8 @@
 namespace modeflow {
 namespace {
 
-constexpr BackendCapabilities kCpuReference{"the CPU reference", "cpu", true, false, true};
-constexpr BackendCapabilities kVulkan{"a Vulkan device", "vulkan", false, true, false};
+constexpr BackendCapabilities kCpuReference{"the CPU reference", "cpu", false, true};
+constexpr BackendCapabilities kVulkan{"a Vulkan device", "vulkan", true, false};
 
 }  // namespace
 
@@ -20,9 +20,6 @@ void requireSupport(const SceneSpec& scene, BackendKind kind) {
     const std::string file = scene.sourceFile.empty() ? scene.name : scene.sourceFile.string();
     if (scene.isSurface() && !capabilitiesOf(kind).surfaces)
         throw Error(file + ": [surface] scenes run on the CPU reference only; use --device cpu");
-    if (scene.forcing.holds() && !capabilitiesOf(kind).forcing)
-        throw Error(file +
-                    ": [forcing] (held modes) runs on the CPU reference only; use --device cpu");
 }
 
 }  // namespace modeflow

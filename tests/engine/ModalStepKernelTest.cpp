@@ -122,6 +122,35 @@ std::shared_ptr<const LinearModalTerm> randomTerm(const StructuralCoefficients& 
     return std::make_shared<MatrixTerm>(d.cast<float>().cast<double>());
 }
 
+TEST_P(ModalStepKernelTest, HeldModesStepLikeTheCpuReferenceInEveryScheme) {
+    // [forcing]: held modes keep their amplitude (rate and decay 0) while they drive the others.
+    FluidParameters held;
+    held.held = {0, 3, 7};
+    FluidParameters heldLans = held;
+    heldLans.kappaSquared = testing::shapedKappaSquared(kModes) / 100.0;
+    heldLans.viscosity = 0.05;
+    heldLans.alpha = 0.1;
+    for (const FluidParameters& parameters : {held, heldLans}) {
+        const FluidSystem system(mC, parameters);
+        for (const Integrator scheme : {Integrator::Explicit, Integrator::Rk4, Integrator::Midpoint,
+                                        Integrator::Trapezoidal, Integrator::Linearized}) {
+            ModalIntegrator cpu(system, {scheme});
+            Eigen::VectorXd expected = mV0;
+            for (int s = 0; s < 10; ++s) cpu.step(expected, mH);
+            ModalStepper stepper(context(), mC, parameters, {scheme});
+            stepper.setState(mV0);
+            runDevice(context(), stepper, mH, 10);
+            const Eigen::VectorXd state = stepper.state();
+            EXPECT_LE(relativeDifference(state, expected), 1e-5) << sceneKeyword(scheme);
+            for (const int k : parameters.held)
+                EXPECT_EQ(state[k], mV0[k]) << sceneKeyword(scheme) << ": held mode " << k;
+            EXPECT_GT((state - mV0).norm(), 1e-2 * mV0.norm()) << "nothing moved";
+            EXPECT_EQ(stepper.status().unconvergedSteps, 0);
+            expectNoValidationMessages();
+        }
+    }
+}
+
 TEST_P(ModalStepKernelTest, ALinearTermStepsLikeTheCpuReferenceInEveryScheme) {
     // R(v) = C(v, v) + D v (a wind): the device adds D y to every evaluation, and to the
     // linearized rule's frozen L(x~) y, whose Jacobian part it is.

@@ -492,12 +492,6 @@ TEST_F(RunCommand, WhatTheBackendCannotDoIsRefusedBeforeThePrecompute) {
                        " --device 7 --cache-dir " + mCache.string(),
                    "device");
     EXPECT_FALSE(fs::exists(mCache)) << "the precompute ran before the device was opened";
-    // Held modes run on the CPU reference only (the capability table).
-    const fs::path forced =
-        scene("forced.toml", std::string(kHotDisk) + "[forcing]\nhold_modes = \"1-2\"\n");
-    expectRejected("run " + forced.string() + " --out " + (mDir / "h").string() + " --cache-dir " +
-                       mCache.string(),
-                   "[forcing] (held modes) runs on the CPU reference only; use --device cpu");
     const fs::path windy = scene("windy.toml", R"([grid]
 resolution = [16, 8]
 bounds_min = [0.0, 0.0]
@@ -518,24 +512,30 @@ velocity = [1.0, 0.0]
     }
 }
 
-TEST_F(RunCommand, HeldModesRunOnTheCpuReferenceAndWakeStillFluid) {
-    // From rest, with two modes held at amplitude: they set the rest moving.
+TEST_F(RunCommand, HeldModesRunOnBothBackendsAndWakeStillFluid) {
+    // From rest, with two modes held at amplitude: they set the rest moving, alike on both.
     std::string text =
         std::string(testing::kSmallDisk) +
         "[simulation]\ndt = 0.02\n[initial]\nvelocity = \"modes\"\namplitudes = [[1, 0.5], [2, "
         "0.5]]\n"
         "[forcing]\nhold_modes = \"1-2\"\n[output]\nframes = 2\nsteps_per_frame = 5\n";
-    const RunResult still = run("modes " + scene("still.toml", text).string() +
-                                " --csv --cache-dir " + mCache.string());
-    ASSERT_EQ(still.status, 0) << still.err;
-    const RunResult r = run("run " + scene("forced.toml", text).string() + " --device cpu --out " +
-                            (mDir / "f").string() + " --cache-dir " + mCache.string());
-    EXPECT_EQ(r.status, 0) << r.err;
-    EXPECT_TRUE(fs::exists(mDir / "f" / "forced_0002.vdb"));
-    // Energy grows from the held modes' 0.25 as the others pick up motion.
-    const std::string last = still.out.substr(still.out.rfind('\n', still.out.size() - 2) + 1);
-    const double energy = std::stod(last.substr(last.find(',', last.find(',') + 1) + 1));
-    EXPECT_GT(energy, 0.25) << still.out;
+    const fs::path forced = scene("forced.toml", text);
+    std::vector<double> energies;
+    for (const char* device : {"cpu", "vulkan"}) {
+        const RunResult still = run("modes " + forced.string() + " --csv --device " + device +
+                                    " --cache-dir " + mCache.string());
+        ASSERT_EQ(still.status, 0) << device << ": " << still.err;
+        const fs::path out = mDir / (std::string("f_") + device);
+        const RunResult r = run("run " + forced.string() + " --device " + device + " --out " +
+                                out.string() + " --cache-dir " + mCache.string());
+        EXPECT_EQ(r.status, 0) << device << ": " << r.err;
+        EXPECT_TRUE(fs::exists(out / "forced_0002.vdb")) << device;
+        // Energy grows from the held modes' 0.25 as the others pick up motion.
+        const std::string last = still.out.substr(still.out.rfind('\n', still.out.size() - 2) + 1);
+        energies.push_back(std::stod(last.substr(last.find(',', last.find(',') + 1) + 1)));
+        EXPECT_GT(energies.back(), 0.25) << device << "\n" << still.out;
+    }
+    EXPECT_NEAR(energies[1], energies[0], 1e-5 * energies[0]);
 }
 
 TEST_F(RunCommand, ASourceOutsideTheDomainIsRefusedNamingIt) {
