@@ -597,7 +597,7 @@ TEST_P(ModalStepKernelTest, RefusesStatesAndParametersOfTheWrongShape) {
     EXPECT_THROW(stepper.setParameters(MhdParameters{}), Error);
     EXPECT_THROW(stepper.magneticField(), Error);
     FluidParameters held;
-    held.held = {0};  // [forcing] holds modes on the CPU reference only
+    held.held = {kModes};  // a held mode beyond the basis
     EXPECT_THROW(stepper.setParameters(held), Error);
     EXPECT_THROW(ModalStepper(context(), mC, held), Error);
     ModalStepper mhd(context(), mC, MhdParameters{});
