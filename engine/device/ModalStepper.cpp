@@ -150,15 +150,17 @@ void ModalStepper::uploadModel(const DeviceModel& model) {
                     (mMhd ? "MHD" : "a fluid"));
     const int n = size();
     if (const auto* fluid = std::get_if<FluidParameters>(&model)) {
-        uploadLinear(fluid->linear.get());
+        // Checked (decayRatesOf refuses a held mode outside the basis) before anything changes.
+        const Eigen::VectorXd decay = FluidSystem::decayRatesOf(*fluid, n);
         const Eigen::VectorXd mass = FluidSystem::massOf(*fluid, n);
-        mFiltered = (mass.array() != 1.0).any();
-        upload(mMass, mass, 0, "mass");
         // Held modes ([forcing]) move at rate 0: v̇_k = 0, forces included, as FluidSystem's.
         Eigen::VectorXd inverse = mass.cwiseInverse();
         for (const int k : fluid->held) inverse[k] = 0.0;
+        uploadLinear(fluid->linear.get());
+        mFiltered = (mass.array() != 1.0).any();
+        upload(mMass, mass, 0, "mass");
         upload(mInverseMass, inverse, 0, "inverse mass");
-        upload(mDecay, FluidSystem::decayRatesOf(*fluid, n), 0, "decay rates");
+        upload(mDecay, decay, 0, "decay rates");
         return;
     }
     const MhdParameters& mhd = std::get<MhdParameters>(model);
