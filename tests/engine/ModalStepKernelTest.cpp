@@ -4,6 +4,7 @@
 /// tensor-free coefficients; MHD with every storage; trajectories; midpoint energy (and MHD's
 /// cross helicity) conservation; warm starts; convergence reporting; split coefficients.
 
+#include <array>
 #include <cmath>
 #include <memory>
 #include <string>
@@ -64,6 +65,23 @@ protected:
     /// 0.02 of a turnover per step, so 200 steps span 4 turnovers: random coefficient tensors are
     /// strongly chaotic, and float32 round-off (1e-7 per step) grows about e-fold per turnover.
     double mH = stepFor(mC, mV0, 0.02);
+
+    /// `parameters` and the same with viscous LANS-α: the two cases of the every-scheme tests.
+    static std::array<FluidParameters, 2> withViscousLans(const FluidParameters& parameters) {
+        FluidParameters lans = parameters;
+        lans.kappaSquared = testing::shapedKappaSquared(kModes) / 100.0;
+        lans.viscosity = 0.05;
+        lans.alpha = 0.1;
+        return {parameters, lans};
+    }
+    /// 10 CPU-reference steps of `parameters` from mV0 in `scheme`.
+    Eigen::VectorXd cpuSteps(const FluidParameters& parameters, Integrator scheme) const {
+        const FluidSystem system(mC, parameters);
+        ModalIntegrator cpu(system, {scheme});
+        Eigen::VectorXd v = mV0;
+        for (int s = 0; s < 10; ++s) cpu.step(v, mH);
+        return v;
+    }
 };
 
 TEST_P(ModalStepKernelTest, OneStepOfEverySchemeEqualsTheCpuReference) {
@@ -126,17 +144,10 @@ TEST_P(ModalStepKernelTest, HeldModesStepLikeTheCpuReferenceInEveryScheme) {
     // [forcing]: held modes keep their amplitude (rate and decay 0) while they drive the others.
     FluidParameters held;
     held.held = {0, 3, 7};
-    FluidParameters heldLans = held;
-    heldLans.kappaSquared = testing::shapedKappaSquared(kModes) / 100.0;
-    heldLans.viscosity = 0.05;
-    heldLans.alpha = 0.1;
-    for (const FluidParameters& parameters : {held, heldLans}) {
-        const FluidSystem system(mC, parameters);
+    for (const FluidParameters& parameters : withViscousLans(held)) {
         for (const Integrator scheme : {Integrator::Explicit, Integrator::Rk4, Integrator::Midpoint,
                                         Integrator::Trapezoidal, Integrator::Linearized}) {
-            ModalIntegrator cpu(system, {scheme});
-            Eigen::VectorXd expected = mV0;
-            for (int s = 0; s < 10; ++s) cpu.step(expected, mH);
+            const Eigen::VectorXd expected = cpuSteps(parameters, scheme);
             ModalStepper stepper(context(), mC, parameters, {scheme});
             stepper.setState(mV0);
             runDevice(context(), stepper, mH, 10);
@@ -156,17 +167,10 @@ TEST_P(ModalStepKernelTest, ALinearTermStepsLikeTheCpuReferenceInEveryScheme) {
     // linearized rule's frozen L(x~) y, whose Jacobian part it is.
     FluidParameters windy;
     windy.linear = randomTerm(mC, mV0, 31);
-    FluidParameters windyLans = windy;
-    windyLans.kappaSquared = testing::shapedKappaSquared(kModes) / 100.0;
-    windyLans.viscosity = 0.05;
-    windyLans.alpha = 0.1;
-    for (const FluidParameters& parameters : {windy, windyLans}) {
-        const FluidSystem system(mC, parameters);
+    for (const FluidParameters& parameters : withViscousLans(windy)) {
         for (const Integrator scheme : {Integrator::Explicit, Integrator::Rk4, Integrator::Midpoint,
                                         Integrator::Trapezoidal, Integrator::Linearized}) {
-            ModalIntegrator cpu(system, {scheme});
-            Eigen::VectorXd expected = mV0;
-            for (int s = 0; s < 10; ++s) cpu.step(expected, mH);
+            const Eigen::VectorXd expected = cpuSteps(parameters, scheme);
             {
                 ModalStepper stepper(context(), mC, parameters, {scheme});
                 stepper.setState(mV0);
