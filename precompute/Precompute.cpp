@@ -88,7 +88,13 @@ std::string basisKey(const SceneSpec& scene) {
     writeVec(s, g.boundsMax, g.dim);
     s << " periodic=[";
     for (int a = 0; a < g.dim; ++a) s << (a ? "," : "") << int(g.periodic[a]);
-    s << "]\n";
+    s << "]";
+    if (g.anyOpen()) {
+        s << " open=[";
+        for (int side = 0; side < 2 * g.dim; ++side) s << (side ? "," : "") << int(g.open[side]);
+        s << "]";
+    }
+    s << "\n";
     int index = 0;
     for (const ShapeSpec& d : scene.domain) {
         ++index;

@@ -48,6 +48,18 @@ bool inFluid(vec3 p) {
     return ((texelFetch(maskWords, int(index >> 2u)).x >> ((index & 3u) * 8u)) & 0xffu) != 0u;
 }
 
+// Beyond a side the air crosses (open, or a wind's) the particle leaves the run
+// (engine/simulation/ParticleMotion.h).
+bool beyondOpenSide(vec3 p) {
+    const vec3 lo = v3(params.origin), hi = lo + boxLength();
+    bool beyond = false;
+    for (int a = 0; a < MAC_DIM; ++a) {
+        beyond = beyond || (p[a] < lo[a] && (params.openSides & (1u << uint(2 * a))) != 0u);
+        beyond = beyond || (p[a] > hi[a] && (params.openSides & (2u << uint(2 * a))) != 0u);
+    }
+    return beyond;
+}
+
 vec3 intoBox(vec3 p) {
     const vec3 lo = v3(params.origin), len = boxLength();
     for (int a = 0; a < MAC_DIM; ++a)
@@ -60,6 +72,7 @@ void main() {
     const uint i = params.first + gl_GlobalInvocationID.x;
     if (i >= params.count) return;
     const vec4 stored = positions[i];
+    if (isnan(stored.x)) return;  // it left through an open side
     const vec3 x0 = stored.xyz;
     const vec3 v0 = velocities[i].xyz;
     const ParticleSetRecord r = sets[floatBitsToUint(stored.w)];
@@ -87,6 +100,12 @@ void main() {
         const vec3 r1 = obstacleOffset(solid, x1, dim, boxLength(), params.boundary);
         const float into = dot(v1 - materialVelocity(solid, r1), normal);
         if (into < 0.0) v1 -= into * normal;
+    }
+    if (beyondOpenSide(x1)) {
+        const float left = uintBitsToFloat(0x7fc00000u);  // a quiet NaN, kParticleLeft
+        positions[i] = vec4(left, left, left, stored.w);
+        velocities[i] = vec4(0.0);
+        return;
     }
     x1 = intoBox(x1);
     if (params.allFluid == 0u && !inFluid(x1)) {

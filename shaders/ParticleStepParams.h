@@ -31,7 +31,8 @@ struct ParticleStepParams {
     float spacing[3];
     uint first; /* the dispatch's first particle */
     uint smokeCells[3];
-    uint pad1;
+    uint openSides; /* MacGrid::crossableSideBits: bit 2 axis + (0 low, 1 high), the air crosses
+                       that side (open, or a wind's) and what it carries across leaves */
     float smokeSpacing[3];
     uint pad2;
 };

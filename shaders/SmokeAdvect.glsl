@@ -14,7 +14,8 @@
    leave through one end and come in through the other: the stencils wrap (MacSampling.glsl).
    With a wind the sides it crosses are open (their faces carry its velocity) and the upstream
    ones bring in its air: ghost cells beyond them hold the inflow's values in the sample and its
-   clamp range.
+   clamp range. Open sides ([grid] open) are inflow sides of clean air. MacCormack's traces ahead
+   read no ghosts: they leave the box only where the air leaves it.
    smoke_face_pairs.comp runs first each step. Cells outside the fluid mask are never written:
    SmokeState keeps them 0.
 
@@ -150,7 +151,7 @@ struct FluidSample {
     vec2 hi;
 };
 
-FluidSample sampleFluid(usamplerBuffer fields, vec3 g, vec2 fallback) {
+FluidSample sampleFluid(usamplerBuffer fields, vec3 g, vec2 fallback, bool ghosts) {
     const ivec3 cells = ivec3(params.cellsX, params.cellsY, params.cellsZ);
     AxisStencil s[3];
     s[2] = AxisStencil(0, 0, 0.0);
@@ -185,10 +186,11 @@ FluidSample sampleFluid(usamplerBuffer fields, vec3 g, vec2 fallback) {
     // Within a cell of an inflow side the trilinear weights reach the ghost cells beyond it,
     // which hold what the inflow brings: the in-box share of the sample, as on the CPU.
     float share = 1.0;
+    const uint inflowSides = ghosts ? params.boundary : 0u;
     [[unroll]] for (int a = 0; a < SMOKE_DIM; ++a) {
-        if ((params.boundary & (1u << (SMOKE_INFLOW_LOW + uint(a)))) != 0u)
+        if ((inflowSides & (1u << (SMOKE_INFLOW_LOW + uint(a)))) != 0u)
             share *= clamp(g[a] + 0.5, 0.0, 1.0);
-        if ((params.boundary & (1u << (SMOKE_INFLOW_HIGH + uint(a)))) != 0u)
+        if ((inflowSides & (1u << (SMOKE_INFLOW_HIGH + uint(a)))) != 0u)
             share *= clamp(float(cells[a]) + 0.5 - g[a], 0.0, 1.0);
     }
     if (share < 1.0) {
@@ -214,7 +216,7 @@ void main() {
 
 #if SMOKE_STAGE == SMOKE_STAGE_MACCORMACK_FORWARD
     const vec3 u0 = velocityAtCentre(cell);
-    const FluidSample forward = sampleFluid(fieldsIn, traceEnd(start, u0, step), old);
+    const FluidSample forward = sampleFluid(fieldsIn, traceEnd(start, u0, step), old, true);
     const vec3 ahead = traceEnd(start, u0, -step);
     const uint r = entry * SMOKE_RECORD_WORDS;
     hat[id] = packPair(forward.value);
@@ -226,12 +228,13 @@ void main() {
 #endif
 #else
 #if SMOKE_STAGE == SMOKE_STAGE_SEMI_LAGRANGIAN
-    vec2 result = sampleFluid(fieldsIn, traceEnd(start, velocityAtCentre(cell), step), old).value;
+    vec2 result = sampleFluid(fieldsIn, traceEnd(start, velocityAtCentre(cell), step), old, true).value;
 #else
     const vec4 range = uintBitsToFloat(texelFetch(record, int(2u * entry)));  // lo, hi
     const vec3 ahead = uintBitsToFloat(texelFetch(record, int(2u * entry + 1u)).xyz);  // z unused in 2D
     const vec2 forward = wordAt(hat, id);
-    const vec2 backward = sampleFluid(hat, ahead, forward).value;
+    // The traces ahead read no ghosts: they leave the box where the air leaves it (as on the CPU).
+    const vec2 backward = sampleFluid(hat, ahead, forward, false).value;
     vec2 result = range.x <= range.z ? clamp(forward + 0.5 * (old - backward), range.xy, range.zw) : forward;
 #endif
     result += uintBitsToFloat(listed.zw) * params.dt;

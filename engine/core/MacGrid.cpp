@@ -15,6 +15,7 @@ MacGrid MacGrid::fromSpec(const GridSpec& grid) {
         mac.spacing[a] = grid.spacing(a);
         mac.periodic[a] = grid.isPeriodic(a);
     }
+    mac.open = grid.open;
     return mac;
 }
 

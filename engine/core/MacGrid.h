@@ -32,6 +32,10 @@ struct MacGrid {
     /// engine/simulation/WindTransport.h): the faces there are no walls, and sampling reads the
     /// velocity they carry.
     std::array<bool, 3> flowThrough{false, false, false};
+    /// Per side, 2·axis + (0 low, 1 high): the side is open (GridSpec::open): its faces are
+    /// degrees of freedom of the basis, no walls, and the smoke's ghost cells beyond it hold
+    /// clean air.
+    std::array<bool, 6> open{false, false, false, false, false, false};
 
     static MacGrid fromSpec(const GridSpec& grid);
     /// The same box with `scale` cells per cell along each used axis (the smoke grid).
@@ -76,22 +80,37 @@ struct MacGrid {
         return faceIndex(axis, p[0], p[1], p[2]);
     }
     /// Whether the normal-`axis` faces at `position` are a wall of the box: positions 0 and n
-    /// along a non-periodic axis the air does not flow through.
+    /// along a non-periodic axis the air does not flow through, on a side that is not open.
     bool isWallFace(int axis, int position) const {
-        return !periodic[axis] && !flowThrough[axis] && (position == 0 || position == cells[axis]);
+        if (periodic[axis] || flowThrough[axis]) return false;
+        if (position == 0) return !open[std::size_t(2 * axis)];
+        return position == cells[axis] && !open[std::size_t(2 * axis + 1)];
     }
     /// Bit a set when axis a is periodic: the `periodic` word of the device kernels' parameters.
     std::uint32_t periodicBits() const {
         return std::uint32_t(periodic[0]) | std::uint32_t(periodic[1]) << 1 |
                std::uint32_t(periodic[2]) << 2;
     }
-    /// periodicBits(), and bit 3 + a set when the air flows through the sides across axis a
-    /// (flowThrough): the `boundary` word of the kernels that sample the air's velocity
-    /// (shaders/AxisStencil.glsl's isPeriodic and flowsThrough).
+    /// Whether the air may cross a side across `axis`: a wind blows along it, or one is open.
+    bool crossesSide(int axis) const {
+        return flowThrough[axis] || open[std::size_t(2 * axis)] || open[std::size_t(2 * axis + 1)];
+    }
+    /// Bit 2·axis + (0 low, 1 high) set when the air may cross that side (open, or a wind's): what
+    /// is carried across it leaves the box (particles, engine/simulation/ParticleMotion.h).
+    std::uint32_t crossableSideBits() const {
+        std::uint32_t bits = 0;
+        for (int side = 0; side < 2 * dim; ++side)
+            if (open[std::size_t(side)] || flowThrough[std::size_t(side / 2)]) bits |= 1u << side;
+        return bits;
+    }
+    /// periodicBits(), and bit 3 + a set when the air may cross a side across axis a
+    /// (crossesSide): the `boundary` word of the kernels that sample the air's velocity
+    /// (shaders/AxisStencil.glsl's isPeriodic and flowsThrough). The kernels then read the faces
+    /// of both sides as the field holds them: 0 on a side that stays a wall, as no DOF writes it.
     std::uint32_t boundaryBits() const {
         return periodicBits() |
-               (std::uint32_t(flowThrough[0]) | std::uint32_t(flowThrough[1]) << 1 |
-                std::uint32_t(flowThrough[2]) << 2)
+               (std::uint32_t(crossesSide(0)) | std::uint32_t(crossesSide(1)) << 1 |
+                std::uint32_t(crossesSide(2)) << 2)
                    << 3;
     }
     /// Length of the box along `axis`.

@@ -304,7 +304,8 @@ inline bool hasWholeBoxDomain(const SceneSpec& scene) {
 /// The velocity basis comes in closed form: a whole box with free-slip walls (no-slip walls keep
 /// the wall vorticity, whose eigenfields are not separable).
 inline bool hasClosedFormVelocity(const SceneSpec& scene) {
-    return hasWholeBoxDomain(scene) && scene.basis.wall == WallKind::FreeSlip;
+    return hasWholeBoxDomain(scene) && scene.basis.wall == WallKind::FreeSlip &&
+           !scene.grid.anyOpen();
 }
 
 }  // namespace modeflow

@@ -108,6 +108,7 @@ void ParticleAdvection::record(vulkan::CommandSequence& sequence, const SmokeSta
     params.count = mCount;
     params.obstacleCount = std::uint32_t(solids.size());
     params.boundary = basis.boundaryBits();
+    params.openSides = basis.crossableSideBits();
     params.allFluid = state.fluidCellCount() == std::uint32_t(smoke.cellCount()) ? 1u : 0u;
     params.up = std::uint32_t(upAxis(basis));
     params.dt = float(dt);

@@ -104,6 +104,16 @@ std::vector<std::uint32_t> cellList(const MacGrid& smoke, const std::vector<std:
     return words;
 }
 
+/// Per-side inflow flags (inflowSides) as SmokeAdvectParams::boundary's SMOKE_INFLOW_* bits.
+std::uint32_t inflowBitsOf(const std::array<bool, 6>& sides) {
+    std::uint32_t bits = 0;
+    for (std::uint32_t a = 0; a < 3; ++a) {
+        if (sides[2 * a]) bits |= 1u << (SMOKE_INFLOW_LOW + a);
+        if (sides[2 * a + 1]) bits |= 1u << (SMOKE_INFLOW_HIGH + a);
+    }
+    return bits;
+}
+
 }  // namespace
 
 std::array<float, 2> SmokeState::inflowValues(SmokePair pair) const {
@@ -113,11 +123,7 @@ std::array<float, 2> SmokeState::inflowValues(SmokePair pair) const {
 void SmokeState::setWind(const WindSpec& wind) {
     mBasis = withWindThrough(mBasis, wind.velocity);
     mInflowSmoke = {float(wind.density), float(wind.temperature)};
-    const std::array<int, 3> sides = inflowSides(mSmoke, wind.velocity);
-    mInflowBits = 0;
-    for (std::uint32_t a = 0; a < 3; ++a)
-        if (sides[a] != 0)
-            mInflowBits |= 1u << ((sides[a] < 0 ? SMOKE_INFLOW_LOW : SMOKE_INFLOW_HIGH) + a);
+    mInflowBits = inflowBitsOf(inflowSides(mSmoke, wind.velocity));
 }
 
 SmokeState::SmokeState(const vulkan::VulkanContext& context, const MacGrid& basisGrid, int scale,
@@ -128,6 +134,7 @@ SmokeState::SmokeState(const vulkan::VulkanContext& context, const MacGrid& basi
       mFluid(fluidFlags(mSmoke, fluidMask)),
       mFluidIndex(fluidIndices(mFluid)),
       mFluidCount(std::uint32_t(mFluidIndex.size())),
+      mInflowBits(inflowBitsOf(mSmoke.open)),  // open sides take in clean air
       mMask(texelBuffer(context, mFluid, "smoke fluid mask")),
       mStencilMask(texelBuffer(context, stencilFlags(mSmoke, mFluid), "smoke stencil mask")),
       mHat(zeroBuffer(context, std::size_t(mSmoke.cellCount()) * 8, "MacCormack fields")),

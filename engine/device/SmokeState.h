@@ -129,7 +129,7 @@ private:
     std::vector<std::uint8_t> mFluid;       ///< the mask as 0 and 1, for setEmitters
     std::vector<std::int64_t> mFluidIndex;  ///< cellIndex of each fluid cell, list order
     std::uint32_t mFluidCount = 0;
-    std::uint32_t mInflowBits = 0;  ///< SMOKE_INFLOW_* bits of the wind's upstream sides
+    std::uint32_t mInflowBits = 0;  ///< SMOKE_INFLOW_* bits: open sides, a wind's upstream ones
     std::array<float, 2> mInflowSmoke{0.0f, 0.0f};  ///< the wind's density and temperature
     std::vector<Pair> mPairs;
     vulkan::DeviceBuffer mMask;

@@ -178,6 +178,10 @@ void requireConsistentGrid(const BasisCache& c, const Require& require) {
         require(std::isfinite(c.grid.boundsMin[axis]) && std::isfinite(c.grid.boundsMax[axis]) &&
                     c.grid.boundsMin[axis] < c.grid.boundsMax[axis],
                 "its grid bounds are not an increasing pair of numbers on every axis");
+    bool sidesHold = true;  // open sides: not across a periodic axis, none beyond dim
+    for (int axis = 0; axis < 3; ++axis)
+        if (c.grid.opensAxis(axis)) sidesHold &= axis < c.grid.dim && !c.grid.isPeriodic(axis);
+    require(sidesHold, "an open side lies across a periodic axis or beyond the grid's dimension");
     require(known(c.wall) && known(c.boundary) && known(c.scalar.boundary) &&
                 known(c.coefficients.storage),
             "a choice (wall, boundary or coefficient storage) is out of range");

@@ -148,6 +148,7 @@ void serialize(const BasisCache& c, Payload& p) {
     for (double x : c.grid.boundsMin) p.small().pod(x);
     for (double x : c.grid.boundsMax) p.small().pod(x);
     for (bool periodic : c.grid.periodic) p.small().pod<std::uint8_t>(periodic);
+    for (bool open : c.grid.open) p.small().pod<std::uint8_t>(open);
     p.small().pod<std::int32_t>(int(c.wall));
     p.small().pod<std::int32_t>(int(c.boundary));
     p.array(c.cellFraction.data(), c.cellFraction.size());
@@ -223,6 +224,7 @@ BasisCache deserialize(ByteReader& r) {
     for (double& x : c.grid.boundsMin) x = r.pod<double>();
     for (double& x : c.grid.boundsMax) x = r.pod<double>();
     for (bool& periodic : c.grid.periodic) periodic = r.pod<std::uint8_t>() != 0;
+    for (bool& open : c.grid.open) open = r.pod<std::uint8_t>() != 0;
     c.wall = WallKind(r.pod<std::int32_t>());
     c.boundary = BoundaryTreatment(r.pod<std::int32_t>());
     c.cellFraction = r.vector<double>();

@@ -20,6 +20,12 @@ void writeParticleFrame(const std::filesystem::path& path, const ParticleFrame& 
     if (frame.position.size() != 3 * count || frame.velocity.size() != 3 * count)
         throw Error(where + ": positions and velocities are not three values per particle each");
     if (count > std::size_t(INT32_MAX)) throw Error(where + ": more particles than ids");
+    const auto left = [&](std::size_t i) {
+        const double* v = &frame.velocity[3 * i];
+        return std::isnan(frame.position[3 * i]) && v[0] == 0.0 && v[1] == 0.0 && v[2] == 0.0;
+    };
+    std::size_t written = 0;
+    for (std::size_t i = 0; i < count; ++i) written += !left(i);
     char header[384];
     std::snprintf(header, sizeof header,
                   "ply\nformat binary_little_endian 1.0\ncomment creator modeflow\n"
@@ -27,10 +33,11 @@ void writeParticleFrame(const std::filesystem::path& path, const ParticleFrame& 
                   "element vertex %zu\nproperty float x\nproperty float y\nproperty float z\n"
                   "property float vx\nproperty float vy\nproperty float vz\nproperty int id\n"
                   "end_header\n",
-                  frame.frame, frame.time, frame.sceneHash.c_str(), count);
+                  frame.frame, frame.time, frame.sceneHash.c_str(), written);
     std::string bytes = header;
-    bytes.reserve(bytes.size() + count * 28);
+    bytes.reserve(bytes.size() + written * 28);
     for (std::size_t i = 0; i < count; ++i) {
+        if (left(i)) continue;
         for (int a = 0; a < 3; ++a) {
             const double x = frame.position[3 * i + std::size_t(a)];
             const double v = frame.velocity[3 * i + std::size_t(a)];

@@ -24,9 +24,11 @@ struct ParticleFrame {
 /// NAME_particles_0001.ply.
 std::string particleFrameFileName(std::string_view sceneName, int frame);
 
-/// Writes `frame` to `path` atomically (engine/core/AtomicFile.h).
-/// @throw modeflow::Error naming the file when a value is not finite (a diverged run), the sizes
-///        differ, or it cannot be written.
+/// Writes `frame` to `path` atomically (engine/core/AtomicFile.h), each particle with its place
+/// as its `id`. A particle that has left through an open side (its position NaN, its velocity 0:
+/// engine/simulation/ParticleMotion.h) is left out; the others keep their ids.
+/// @throw modeflow::Error naming the file when another value is not finite (a diverged run), the
+///        sizes differ, or it cannot be written.
 void writeParticleFrame(const std::filesystem::path& path, const ParticleFrame& frame);
 
 }  // namespace modeflow

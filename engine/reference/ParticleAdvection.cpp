@@ -26,6 +26,18 @@ Vec3 intoBox(const MacGrid& grid, Vec3 to) {
     return to;
 }
 
+/// Whether `to` lies beyond a side of `air`'s box the air crosses (ParticleMotion.h: it leaves
+/// the run).
+bool beyondCrossedSide(const MacGrid& air, const Vec3& to) {
+    const std::uint32_t sides = air.crossableSideBits();
+    for (int a = 0; a < air.dim; ++a) {
+        const double lo = air.origin[a], hi = lo + air.length(a);
+        if ((to[a] < lo && (sides >> (2 * a)) & 1u) || (to[a] > hi && (sides >> (2 * a + 1)) & 1u))
+            return true;
+    }
+    return false;
+}
+
 }  // namespace
 
 ParticleAdvection::ParticleAdvection(const MacGrid& basisGrid, const MacGrid& smokeGrid,
@@ -55,6 +67,7 @@ void ParticleAdvection::step(std::span<const double> faceVelocity,
         Vec3 x0, v0;
         std::copy_n(&mParticles.position[3 * i], 3, x0.begin());
         std::copy_n(&mParticles.velocity[3 * i], 3, v0.begin());
+        if (std::isnan(x0[0])) continue;  // it has left the box (as on the device)
         Vec3 x1, v1;
         if (!r.inertial) {
             v1 = u(axpy(x0, 0.5 * dt, u(x0)));
@@ -79,19 +92,24 @@ void ParticleAdvection::step(std::span<const double> faceVelocity,
             if (into < 0.0)
                 for (int a = 0; a < 3; ++a) v1[a] -= into * exit->normal[a];
         }
-        x1 = intoBox(mSmoke, x1);
-        if (!mAllFluid && !inFluidCell(mSmoke, mMask, x1)) {
-            // Slide: keep each axis's move where it stays in the fluid.
-            Vec3 slid = x0;
-            for (int a = 0; a < mSmoke.dim; ++a) {
-                const double held = slid[a];
-                slid[a] = x1[a];
-                if (!inFluidCell(mSmoke, mMask, slid)) {
-                    slid[a] = held;
-                    if (r.inertial) v1[a] = 0.0;
+        if (beyondCrossedSide(mBasis, x1)) {  // it leaves the run
+            x1.fill(kParticleLeft);
+            v1.fill(0.0);
+        } else {
+            x1 = intoBox(mSmoke, x1);
+            if (!mAllFluid && !inFluidCell(mSmoke, mMask, x1)) {
+                // Slide: keep each axis's move where it stays in the fluid.
+                Vec3 slid = x0;
+                for (int a = 0; a < mSmoke.dim; ++a) {
+                    const double held = slid[a];
+                    slid[a] = x1[a];
+                    if (!inFluidCell(mSmoke, mMask, slid)) {
+                        slid[a] = held;
+                        if (r.inertial) v1[a] = 0.0;
+                    }
                 }
+                x1 = slid;
             }
-            x1 = slid;
         }
         std::copy_n(x1.begin(), 3, &mParticles.position[3 * i]);
         std::copy_n(v1.begin(), 3, &mParticles.velocity[3 * i]);

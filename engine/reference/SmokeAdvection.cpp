@@ -24,18 +24,19 @@ struct FluidSample {
 /// The share of a sample at `gridPoint` that its in-box stencil gives: below 1 within a cell of
 /// an inflow side, where ghost cells beyond the side (centres half a cell out) hold the inflow's
 /// clean air and the trilinear weights reach them.
-double inBoxShare(const MacGrid& grid, const std::array<int, 3>& inflow, const Vec3& gridPoint) {
+double inBoxShare(const MacGrid& grid, const std::array<bool, 6>& inflow, const Vec3& gridPoint) {
     double share = 1.0;
     for (int a = 0; a < grid.dim; ++a) {
-        if (inflow[a] < 0) share *= std::clamp(gridPoint[a] + 0.5, 0.0, 1.0);
-        if (inflow[a] > 0) share *= std::clamp(grid.cells[a] + 0.5 - gridPoint[a], 0.0, 1.0);
+        if (inflow[std::size_t(2 * a)]) share *= std::clamp(gridPoint[a] + 0.5, 0.0, 1.0);
+        if (inflow[std::size_t(2 * a + 1)])
+            share *= std::clamp(grid.cells[a] + 0.5 - gridPoint[a], 0.0, 1.0);
     }
     return share;
 }
 
 FluidSample sampleFluid(const MacGrid& grid, std::span<const std::uint8_t> mask,
                         std::span<const double> field, const Vec3& gridPoint, double fallback,
-                        const std::array<int, 3>& inflow, double inflowValue) {
+                        const std::array<bool, 6>& inflow, double inflowValue) {
     const CellStencil stencil = cellStencil(grid, gridPoint);
     FluidSample sample;
     double sum = 0.0, weight = 0.0;
@@ -65,7 +66,8 @@ SmokeAdvection::SmokeAdvection(const MacGrid& basisGrid, int scale,
     : mBasis(basisGrid),
       mScale(scale),
       mSmoke(basisGrid.refined(scale)),
-      mMask(std::move(fluidMask)) {
+      mMask(std::move(fluidMask)),
+      mInflow(mSmoke.open) {  // open sides take in clean air
     requireCellField(mMask.size(), "the fluid mask");
 }
 
@@ -113,14 +115,15 @@ std::vector<Vec3> SmokeAdvection::backtrace(std::span<const double> velocity, do
 
 std::vector<double> SmokeAdvection::semiLagrangian(std::span<const double> field,
                                                    const std::vector<Vec3>& traces,
-                                                   double inflowValue) const {
+                                                   double inflowValue, bool ghosts) const {
     std::vector<double> result(field.size(), 0.0);
     const auto cells = std::int64_t(field.size());
+    const std::array<bool, 6> inflow = ghosts ? mInflow : std::array<bool, 6>{};
 #pragma omp parallel for schedule(static)
     for (std::int64_t c = 0; c < cells; ++c)
         if (mMask[c])
             result[c] =
-                sampleFluid(mSmoke, mMask, field, traces[c], field[c], mInflow, inflowValue).value;
+                sampleFluid(mSmoke, mMask, field, traces[c], field[c], inflow, inflowValue).value;
     return result;
 }
 
@@ -128,9 +131,11 @@ std::vector<double> SmokeAdvection::advectAlong(std::span<const double> field,
                                                 const std::vector<Vec3>& back,
                                                 const std::vector<Vec3>& ahead,
                                                 AdvectionScheme scheme, double inflowValue) const {
-    std::vector<double> forward = semiLagrangian(field, back, inflowValue);
+    std::vector<double> forward = semiLagrangian(field, back, inflowValue, true);
     if (scheme == AdvectionScheme::SemiLagrangian) return forward;
-    const std::vector<double> backward = semiLagrangian(forward, ahead, inflowValue);
+    // The traces ahead leave the box where the air leaves it, and the air there has no ghost
+    // of outside air: they read the box's own edge (where the air comes in they point inwards).
+    const std::vector<double> backward = semiLagrangian(forward, ahead, inflowValue, false);
     std::vector<double> result(field.size(), 0.0);
     const auto cells = std::int64_t(field.size());
 #pragma omp parallel for schedule(static)

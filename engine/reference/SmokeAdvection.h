@@ -79,9 +79,11 @@ public:
 private:
     /// Where the RK2 trace from each fluid cell centre ends after −dt·u (smoke-grid units).
     std::vector<Vec3> backtrace(std::span<const double> velocity, double dt) const;
-    /// `inflowValue`: what the ghost cells beyond the inflow sides hold.
+    /// `inflowValue`: what the ghost cells beyond the inflow sides hold, when `ghosts`; without,
+    /// the stencils clamp to the box on every side.
     std::vector<double> semiLagrangian(std::span<const double> field,
-                                       const std::vector<Vec3>& traces, double inflowValue) const;
+                                       const std::vector<Vec3>& traces, double inflowValue,
+                                       bool ghosts) const;
     /// `ahead`: the traces over −dt (MacCormack's backward step), unused by semi-Lagrangian.
     std::vector<double> advectAlong(std::span<const double> field, const std::vector<Vec3>& back,
                                     const std::vector<Vec3>& ahead, AdvectionScheme scheme,
@@ -92,8 +94,8 @@ private:
     int mScale;
     MacGrid mSmoke;
     std::vector<std::uint8_t> mMask;
-    /// Per axis, the inflow side: −1 the min side, +1 the max side, 0 none.
-    std::array<int, 3> mInflow{0, 0, 0};
+    /// Per side, 2·axis + (0 min, 1 max): outside air comes in there (inflowSides).
+    std::array<bool, 6> mInflow{};
     double mInflowDensity = 0.0, mInflowTemperature = 0.0;  ///< what the inflow brings
 };
 

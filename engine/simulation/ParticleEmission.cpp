@@ -10,6 +10,7 @@
 
 #include "engine/core/Error.h"
 #include "engine/core/RuntimeLimits.h"
+#include "engine/simulation/ParticleMotion.h"
 
 namespace modeflow {
 namespace {
@@ -143,11 +144,15 @@ void requireParticleValues(const Particles& particles) {
         throw Error("particles: " + std::to_string(n) + " particles with " +
                     std::to_string(particles.position.size()) + " position and " +
                     std::to_string(particles.velocity.size()) + " velocity values (3 each)");
-    const auto finite = [](const std::vector<double>& values) {
-        return std::all_of(values.begin(), values.end(), [](double x) { return std::isfinite(x); });
+    const auto finite = [](const double* values) {
+        return std::isfinite(values[0]) && std::isfinite(values[1]) && std::isfinite(values[2]);
     };
-    if (!finite(particles.position) || !finite(particles.velocity))
-        throw Error("particles: a position or velocity is not finite");
+    for (std::size_t i = 0; i < n; ++i) {
+        const double *x = &particles.position[3 * i], *v = &particles.velocity[3 * i];
+        if (!particleLeft(x, v) && !(finite(x) && finite(v)))
+            throw Error("particles: particle " + std::to_string(i) +
+                        "'s position or velocity is not finite");
+    }
 }
 
 std::int64_t cellOf(const MacGrid& smokeGrid, const Vec3& point) {

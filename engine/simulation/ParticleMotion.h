@@ -13,17 +13,32 @@
 /// - then each solid that covers x' (at the step's end) puts it `margin` past its surface
 ///   (SolidExit.h), and an inertial particle loses its velocity into that solid, relative to the
 ///   solid's material there;
-/// - then the domain: periodic axes wrap, walled ones clamp to the box, and a particle whose smoke
-///   cell is not fluid (a cut-cell domain's walls) moves axis by axis, x then y then z, keeping
-///   each axis's move only where it stays in the fluid (it slides along walls); an inertial one
-///   loses its velocity along each axis it could not move.
+/// - then the domain: a particle beyond a side the air crosses (`[grid] open`, or a wind's:
+///   MacGrid::crossableSideBits) leaves the run: its position
+///   becomes kParticleLeft (NaN) and its velocity 0, and it stays so, never stepped, drawn or
+///   written again, its id (its place) kept by no other; otherwise periodic axes wrap, walled ones
+///   clamp to the box, and a particle whose smoke cell is not fluid (a cut-cell domain's walls)
+///   moves axis by axis, x then y then z, keeping each axis's move only where it stays in the
+///   fluid (it slides along walls); an inertial one loses its velocity along each axis it could
+///   not move.
 
 #include <cmath>
+#include <limits>
 
 #include "engine/core/MacGrid.h"
 #include "engine/core/SceneSpec.h"
 
 namespace modeflow {
+
+/// The position of a particle that has left through an open side, every coordinate.
+inline constexpr double kParticleLeft = std::numeric_limits<double>::quiet_NaN();
+
+/// Whether a particle (its x, y, z position and velocity) has left through an open side: its
+/// position kParticleLeft, its velocity 0 (a diverged run's values are not finite otherwise).
+inline bool particleLeft(const double* position, const double* velocity) {
+    return std::isnan(position[0]) && std::isnan(position[1]) && std::isnan(position[2]) &&
+           velocity[0] == 0.0 && velocity[1] == 0.0 && velocity[2] == 0.0;
+}
 
 /// A set's response over one step of dt.
 struct ParticleResponse {

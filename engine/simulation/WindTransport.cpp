@@ -202,10 +202,10 @@ MacGrid withWindThrough(MacGrid grid, const Vec3& wind) {
     return grid;
 }
 
-std::array<int, 3> inflowSides(const MacGrid& grid, const Vec3& wind) {
-    std::array<int, 3> sides{0, 0, 0};
+std::array<bool, 6> inflowSides(const MacGrid& grid, const Vec3& wind) {
+    std::array<bool, 6> sides = grid.open;
     for (int a = 0; a < grid.dim; ++a)
-        if (!grid.periodic[a] && wind[a] != 0.0) sides[a] = wind[a] > 0.0 ? -1 : 1;
+        if (!grid.periodic[a] && wind[a] != 0.0) sides[std::size_t(2 * a + (wind[a] < 0.0))] = true;
     return sides;
 }
 

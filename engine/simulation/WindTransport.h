@@ -84,9 +84,10 @@ SimulationSettings withWindTransport(SimulationSettings settings, const BasisCac
 /// non-periodic axis along which it blows.
 MacGrid withWindThrough(MacGrid grid, const Vec3& wind);
 
-/// The sides across each axis where the wind brings air into the box `grid`: −1 the low side,
-/// +1 the high side, 0 none (an axis it does not blow along, a periodic one, or one beyond dim).
-std::array<int, 3> inflowSides(const MacGrid& grid, const Vec3& wind);
+/// The sides where outside air comes into the box `grid`'s smoke, per side 2·axis + (0 low,
+/// 1 high): its open sides (MacGrid::open), and the upstream side of every non-periodic axis
+/// the wind blows along (none for a wind of 0).
+std::array<bool, 6> inflowSides(const MacGrid& grid, const Vec3& wind);
 
 /// The basis grid of a run's air: `spec`'s box, with the sides a wind crosses open
 /// (withWindThrough), what the smoke and the particles sample the air velocity on.

@@ -57,10 +57,12 @@ Element CubicalComplex::element(int k, std::int64_t index) const {
     return {};
 }
 
-bool CubicalComplex::onBoxBoundary(const Element& e) const {
+bool CubicalComplex::onWall(const Element& e) const {
     for (int a = 0; a < mGrid.dim; ++a) {
         if ((e.axes >> a) & 1u || mGrid.isPeriodic(a)) continue;
-        if (e.pos[a] == 0 || e.pos[a] == mGrid.resolution[a]) return true;
+        if ((e.pos[a] == 0 && !mGrid.isOpen(a, false)) ||
+            (e.pos[a] == mGrid.resolution[a] && !mGrid.isOpen(a, true)))
+            return true;
     }
     return false;
 }

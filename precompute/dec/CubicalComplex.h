@@ -12,6 +12,9 @@
 /// type has n_a positions 0 … n_a − 1, the plane at n_a being the plane at 0; the incidence
 /// matrices wrap (the upper face of the last cell is the lower face of the first), and nothing
 /// on that axis lies on the box boundary.
+///
+/// Open sides (GridSpec::open): their faces have one cell, inside the box; the cell beyond is
+/// no element (its pressure is held at 0).
 
 #include <array>
 #include <cstdint>
@@ -50,9 +53,10 @@ public:
     std::int64_t index(const Element& e) const;
     Element element(int k, std::int64_t index) const;
 
-    /// True when the element lies in the grid box's boundary (it is then on a wall): at position
-    /// 0 or n_a along a non-periodic axis it does not extend along.
-    bool onBoxBoundary(const Element& e) const;
+    /// True when the element lies on a wall of the grid box: at position 0 or n_a along a
+    /// non-periodic axis it does not extend along, on a side that is not open (an element on an
+    /// open side and on no wall is inside the air).
+    bool onWall(const Element& e) const;
     /// `position` along `axis` brought into 0 … n_a − 1 on a periodic axis (a neighbour across
     /// the seam); unchanged on other axes.
     int wrap(int axis, int position) const;

@@ -27,7 +27,7 @@ struct CutCellDec {
     GridSpec grid;
     WallKind wall = WallKind::FreeSlip;
     DofMap cells;      ///< n-cells with positive measure
-    DofMap faces;      ///< (n-1)-cells with positive measure, not on the grid box
+    DofMap faces;      ///< (n-1)-cells with positive measure, not on a wall of the grid box
     DofMap vorticity;  ///< (n-2)-cells with a non-zero ⋆⁻¹ (see buildCutCellDec)
 
     SparseMatrix div;   ///< d_{n-1}: faces → cells ("d2" in 3D), DOFs only

@@ -157,18 +157,22 @@ void measureStaircase(const CubicalComplex& cx, const Domain& domain, CutCellMea
 #pragma omp parallel for schedule(static)
         for (std::int64_t id = 0; id < cx.count(k); ++id) {
             const Element e = cx.element(k, id);
-            if (cx.onBoxBoundary(e)) continue;
-            // All 2^(n-k) cells whose closure holds e must be inside.
+            if (cx.onWall(e)) continue;
+            // All 2^(n-k) cells whose closure holds e must be inside (beyond an open side there
+            // is no cell: the air goes on).
             std::vector<int> free;
             for (int a = 0; a < n; ++a)
                 if (!((e.axes >> a) & 1u)) free.push_back(a);
             bool inside = true;
             for (unsigned corner = 0; corner < (1u << free.size()) && inside; ++corner) {
                 Element cell{(1u << n) - 1, e.pos};
-                for (size_t i = 0; i < free.size(); ++i)
-                    if ((corner >> i) & 1u)
-                        cell.pos[free[i]] = cx.wrap(free[i], cell.pos[free[i]] - 1);
-                inside = cells[cx.index(cell)] > 0.0;
+                bool beyond = false;
+                for (size_t i = 0; i < free.size(); ++i) {
+                    const int a = free[i];
+                    if ((corner >> i) & 1u) cell.pos[a] = cx.wrap(a, cell.pos[a] - 1);
+                    beyond |= cell.pos[a] < 0 || cell.pos[a] == grid.resolution[a];
+                }
+                if (!beyond) inside = cells[cx.index(cell)] > 0.0;
             }
             f[id] = inside ? 1.0 : 0.0;
         }
@@ -203,7 +207,7 @@ void measureCut(const CubicalComplex& cx, const Domain& domain, int subsamples,
 #pragma omp for schedule(dynamic, 256)
                 for (std::int64_t id = begin; id < end; ++id) {
                     const Element e = cx.element(k, id);
-                    if (k < grid.dim && cx.onBoxBoundary(e)) continue;
+                    if (k < grid.dim && cx.onWall(e)) continue;
                     const double chi = domain.chi(elementCentre(grid, e));
                     if (chi > radius + tol)
                         f[id] = 1.0;

@@ -1,5 +1,6 @@
 /// @file GridSection.cpp
-/// `[grid]`: resolution (2 or 3 entries, which sets the scene's dimension) and bounds.
+/// `[grid]`: resolution (2 or 3 entries, which sets the scene's dimension), bounds, periodic axes
+/// and open sides.
 
 #include <cmath>
 #include <cstdint>
@@ -94,6 +95,45 @@ void readPeriodicAxes(const TomlReader& reader, const Section& s, GridSpec& grid
     }
 }
 
+/// `open = ["y_max"]`: the sides the air may cross, by name; none by default.
+void readOpenSides(const TomlReader& reader, const Section& s, GridSpec& grid) {
+    const toml::node* node = s.table.get("open");
+    if (node == nullptr) return;
+    const toml::array* array = node->as_array();
+    if (array == nullptr)
+        reader.fail(s, "open",
+                    "expected an array of side names (\"x_min\" ... \"" +
+                        std::string(grid.dim == 2 ? "y_max" : "z_max") + "\"), got " +
+                        describeType(*node),
+                    node);
+    for (std::size_t i = 0; i < array->size(); ++i) {
+        const toml::node& entry = (*array)[i];
+        const std::string where = s.name + ".open[" + std::to_string(i) + "]";
+        const std::optional<std::string> name = entry.value<std::string>();
+        int side = -1;
+        for (int a = 0; a < grid.dim && name; ++a)
+            for (int high = 0; high < 2; ++high)
+                if (*name == std::string(axisName(a)) + (high ? "_max" : "_min"))
+                    side = 2 * a + high;
+        if (side < 0)
+            reader.fail(where,
+                        "expected a side of the " + std::to_string(grid.dim) +
+                            "D box: x_min, x_max, y_min, y_max" +
+                            (grid.dim == 3 ? ", z_min or z_max" : "") + ", got " +
+                            (name ? "\"" + *name + "\"" : describeType(entry)),
+                        &entry);
+        if (grid.open[std::size_t(side)])
+            reader.fail(where, "\"" + *name + "\" is listed twice", &entry);
+        if (grid.isPeriodic(side / 2))
+            reader.fail(where,
+                        "\"" + *name +
+                            "\" lies across a periodic axis, whose ends are one plane "
+                            "with no side to open",
+                        &entry);
+        grid.open[std::size_t(side)] = true;
+    }
+}
+
 }  // namespace
 
 GridSpec readGrid(TomlReader& reader, const Section& s) {
@@ -153,6 +193,7 @@ GridSpec readGrid(TomlReader& reader, const Section& s) {
     }
     checkCellSizes(reader, s, grid);
     readPeriodicAxes(reader, s, grid);
+    readOpenSides(reader, s, grid);
     return grid;
 }
 

@@ -21,7 +21,7 @@ inline constexpr std::string_view kTopLevelTables[] = {
     "grid",     "domain",    "surface", "basis", "simulation", "initial", "source",
     "obstacle", "particles", "smoke",   "fire",  "wind",       "forcing", "output"};
 inline constexpr std::string_view kGridKeys[] = {"resolution", "bounds_min", "bounds_max",
-                                                 "periodic"};
+                                                 "periodic", "open"};
 inline constexpr std::string_view kSurfaceKeys[] = {"mesh"};
 /// [basis] keys that only a grid scene takes.
 inline constexpr std::string_view kGridBasisKeys[] = {"scalar_boundary", "wall", "boundary",

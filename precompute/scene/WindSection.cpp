@@ -22,6 +22,12 @@ WindSpec readWind(const TomlReader& reader, const Section& s, const SceneSpec& s
                     "the wind blows through a whole grid box: this scene's [[domain]] shapes "
                     "make walls inside it; stand solids in the wind as [[obstacle]]s",
                     &s.table);
+    // The wind's modes are a closed box's: its own sides are where it enters and leaves.
+    if (scene.grid.anyOpen())
+        reader.fail(s.name,
+                    "a wind opens the box's upstream and downstream sides itself: leave out "
+                    "[grid].open",
+                    &s.table);
     if (scene.simulation.mhd)
         reader.fail(s.name, "a wind does not carry a magnetic field ([simulation] mhd)", &s.table);
     WindSpec wind;

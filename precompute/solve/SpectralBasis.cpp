@@ -57,26 +57,30 @@ double referenceEigenvalue(const GridSpec& grid) {
     return (M_PI / l) * (M_PI / l);
 }
 
-int connectedComponents(const CutCellDec& dec) {
+int closedComponents(const CutCellDec& dec) {
     std::vector<int> parent(size_t(dec.cells.size()));
     std::iota(parent.begin(), parent.end(), 0);
     const SparseMatrix faceRows = dec.div.transpose();
+    std::vector<int> openFaceCells;  // a face on an open side has one cell
     for (std::int64_t f = 0; f < faceRows.outerSize(); ++f) {
-        int first = -1;
-        for (SparseMatrix::InnerIterator it(faceRows, f); it; ++it) {
+        int first = -1, cells = 0;
+        for (SparseMatrix::InnerIterator it(faceRows, f); it; ++it, ++cells) {
             if (first < 0)
                 first = int(it.col());
             else
                 parent[find(parent, int(it.col()))] = find(parent, first);
         }
+        if (cells == 1) openFaceCells.push_back(first);
     }
+    std::vector<bool> open(parent.size(), false);
+    for (int c : openFaceCells) open[size_t(find(parent, c))] = true;
     int count = 0;
-    for (size_t i = 0; i < parent.size(); ++i) count += find(parent, int(i)) == int(i);
+    for (size_t i = 0; i < parent.size(); ++i) count += find(parent, int(i)) == int(i) && !open[i];
     return count;
 }
 
 std::int64_t divergenceFreeDimension(const CutCellDec& dec) {
-    return dec.faces.size() - dec.cells.size() + connectedComponents(dec);
+    return dec.faces.size() - dec.cells.size() + closedComponents(dec);
 }
 
 namespace {
@@ -148,7 +152,7 @@ void projectAndRefine(const CutCellDec& dec, EigenPairs& pairs) {
 ScalarBasisResult solveNeumannScalarBasis(const CutCellDec& dec, int count,
                                           const SolveProgress& progress, EigensolverChoice choice,
                                           const IntervalCheckpoints& checkpoints) {
-    const int constants = connectedComponents(dec);
+    const int constants = closedComponents(dec);
     const std::int64_t available = dec.cells.size() - constants;
     if (count > available)
         throw Error("[basis].scalar_modes = " + std::to_string(count) + ": the domain holds only " +

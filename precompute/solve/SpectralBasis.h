@@ -43,11 +43,13 @@ inline constexpr int kSlicingFromCount = 200;
 /// |Ω| as the DOF cells measure it (Σ 1/⋆n).
 double domainMeasure(const Eigen::VectorXd& cellStar);
 
-/// Number of connected components of the DOF cells, linked through DOF faces.
-int connectedComponents(const CutCellDec& dec);
+/// Number of connected components of the DOF cells, linked through DOF faces, that touch no
+/// open side: the constants in the Neumann Laplacian's kernel (an open side holds the pressure
+/// at 0, so a component that reaches one has no constant mode).
+int closedComponents(const CutCellDec& dec);
 
-/// Dimension of the divergence-free space: faces − cells + components (rank of d is
-/// cells − components because walls carry no flux).
+/// Dimension of the divergence-free space: faces − cells + closed components (rank of d is
+/// cells − closed components because walls carry no flux).
 std::int64_t divergenceFreeDimension(const CutCellDec& dec);
 
 /// The first `count` non-constant Neumann scalar modes. `checkpoints`: where sliced solves keep

@@ -100,6 +100,16 @@ domain.modeflow.domain_shape = 'BOX'
 domain.modeflow.wind = (0.0, 0.0, 0.0)
 if "wind" in windy_scene():
     fail("still air was written as a wind")
+# Open Sides are written as [grid] open, in the box's order; not with a wind.
+if "open" in windy_scene()["grid"]:
+    fail("a closed box was written with open sides")
+domain.modeflow.open_sides = {'z_max', 'x_min'}
+if windy_scene()["grid"].get("open") != ["x_min", "z_max"]:
+    fail(f"the open sides were written as {windy_scene()['grid'].get('open')}")
+domain.modeflow.wind = (1.0, 0.0, 0.0)
+expect_refused("open sides with a wind", "Open Sides")
+domain.modeflow.wind = (0.0, 0.0, 0.0)
+domain.modeflow.open_sides = set()
 
 # Cycles, white background: the smoke darkens what it covers.
 scene.render.engine = 'CYCLES'

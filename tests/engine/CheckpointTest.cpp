@@ -19,6 +19,7 @@
 #include "engine/core/BinaryCodec.h"
 #include "engine/core/Error.h"
 #include "engine/simulation/Checkpoint.h"
+#include "engine/simulation/ParticleMotion.h"
 #include "tests/support/PeakMemory.h"
 #include "tests/support/TestFolder.h"
 
@@ -187,7 +188,21 @@ TEST(CheckpointTest, WellFormedNonsenseIsRefused) {
     Checkpoint scattered = sample();
     scattered.particles.velocity[4] = std::numeric_limits<double>::infinity();
     writeCheckpoint(file, scattered);
-    EXPECT_NE(readError(file).find("its particles: a position or velocity is not finite"),
+    EXPECT_NE(
+        readError(file).find("its particles: particle 1's position or velocity is not finite"),
+        std::string::npos)
+        << readError(file);
+    // A particle that left through an open side (its position NaN, at rest) is no such particle.
+    Checkpoint left = sample();
+    for (int a = 0; a < 3; ++a) {
+        left.particles.position[std::size_t(a)] = kParticleLeft;
+        left.particles.velocity[std::size_t(a)] = 0.0;
+    }
+    writeCheckpoint(file, left);
+    EXPECT_NO_THROW(readCheckpoint(file));
+    left.particles.velocity[0] = 1.0;  // moving, nowhere: diverged
+    writeCheckpoint(file, left);
+    EXPECT_NE(readError(file).find("particle 0's position or velocity is not finite"),
               std::string::npos)
         << readError(file);
     scattered = sample();

@@ -317,5 +317,22 @@ TEST(ParticleFrame, APlyPointCloudReadsBack) {
     EXPECT_FALSE(std::filesystem::exists(folder / "bad.ply"));
 }
 
+TEST(ParticleFrame, AParticleThatLeftIsLeftOutAndTheOthersKeepTheirIds) {
+    const testing::TestFolder folder;
+    const double gone = kParticleLeft;
+    const std::vector<double> position{gone, gone, gone, -1.0, 2.5, 0.0};
+    const std::vector<double> velocity{0.0, 0.0, 0.0, 0.0, 0.0, 3.0};
+    writeParticleFrame(folder / "open.ply", {position, velocity, 1, 0.0, ""});
+    std::ifstream in(folder / "open.ply", std::ios::binary);
+    std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::string end = "end_header\n";
+    const std::size_t body = bytes.find(end) + end.size();
+    EXPECT_NE(bytes.substr(0, body).find("element vertex 1\n"), std::string::npos);
+    ASSERT_EQ(bytes.size() - body, 28u);
+    std::int32_t id;
+    std::memcpy(&id, bytes.data() + body + 24, sizeof id);
+    EXPECT_EQ(id, 1);
+}
+
 }  // namespace
 }  // namespace modeflow

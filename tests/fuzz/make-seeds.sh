@@ -76,6 +76,9 @@ fuel = 4.0
 ignition = 0.1'
 scene box "$box" 4 ""
 scene wholebox "$wholebox" 6 ""
+# Open sides: the grid's open flags, an eigensolved whole box.
+scene openbox "$wholebox
+open = [\"x_min\", \"z_max\"]" 6 ""
 # A fluid on an icosahedron's surface: a surface basis (mesh, edges, advection, vertex velocities).
 t=1.618033988749895
 printf 'v %s\n' "-1 $t 0" "1 $t 0" "-1 -$t 0" "1 -$t 0" "0 -1 $t" "0 1 $t" "0 -1 -$t" "0 1 -$t" \
@@ -90,7 +93,7 @@ scene disk_tensor_free "$disk" 3 'coefficients = "tensor-free"'
 
 caches="$here/corpus/CacheReader" checkpoints="$here/corpus/CheckpointReader"
 mkdir -p "$caches" "$checkpoints"
-for name in disk box wholebox surface disk_tensor_free; do
+for name in disk box wholebox openbox surface disk_tensor_free; do
     # A folder per scene: disk and disk_tensor_free share their basis key.
     cache=$("$modeflow" precompute "$work/$name.toml" --cache-dir "$work/cache_$name" 2>/dev/null | tail -n 1)
     cp "$cache" "$caches/$name.mfbasis"

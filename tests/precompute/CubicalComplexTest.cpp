@@ -97,10 +97,10 @@ TEST(CubicalComplexPeriodic, IncidenceWrapsAcrossTheSeam) {
         // Every cell has 2·dim faces, every face two cells along a periodic normal.
         for (std::int64_t cell = 0; cell < c.count(dim); ++cell)
             ASSERT_EQ(SparseMatrix(d.row(cell)).nonZeros(), 2 * dim) << dim << "D cell " << cell;
-        EXPECT_FALSE(c.onBoxBoundary(seam));
+        EXPECT_FALSE(c.onWall(seam));
         const unsigned wallFace =
             ((1u << dim) - 1) & ~(1u << (dim - 1));  // the last axis is walled
-        EXPECT_TRUE(c.onBoxBoundary(Element{wallFace, {0, 0, 0}}));
+        EXPECT_TRUE(c.onWall(Element{wallFace, {0, 0, 0}}));
         for (int k = 0; k + 2 <= dim; ++k)
             EXPECT_EQ((c.incidence(k + 1) * c.incidence(k)).norm(), 0.0)
                 << dim << "D, d" << k + 1 << " d" << k;
@@ -111,7 +111,7 @@ TEST(CubicalComplexPeriodic, IncidenceWrapsAcrossTheSeam) {
 std::vector<std::int64_t> interior(const CubicalComplex& c, int k) {
     std::vector<std::int64_t> ids;
     for (std::int64_t i = 0; i < c.count(k); ++i)
-        if (!c.onBoxBoundary(c.element(k, i))) ids.push_back(i);
+        if (!c.onWall(c.element(k, i))) ids.push_back(i);
     return ids;
 }
 

@@ -129,6 +129,11 @@ std::pair<std::string, std::string> periodicFlags(const std::string& flags) {
     return {"bounds_max = [1, 1]\n", "bounds_max = [1, 1]\nperiodic = " + flags + "\n"};
 }
 
+/// `open = SIDES` added to the unit square's [grid].
+std::pair<std::string, std::string> openSides(const std::string& sides) {
+    return {"bounds_max = [1, 1]\n", "bounds_max = [1, 1]\nopen = " + sides + "\n"};
+}
+
 const std::string kParticleBall =
     "[[particles]]\nshape = \"ball\"\ncenter = [0, 0]\nradius = 0.1\n";
 
@@ -561,6 +566,26 @@ const std::vector<Refusal> kRefusals = {
      {"expected 2 booleans"}},
     {"PeriodicNumbers", kSquare, {periodicFlags("[1, 0]"), basis("velocity_modes = 4")}, "",
      {"[grid].periodic[0]: expected true or false"}},
+    // Open sides.
+    {"OpenNotAnArray", kSquare, {openSides("\"y_max\""), basis("velocity_modes = 4")}, "",
+     {"[grid].open: expected an array of side names (\"x_min\" ... \"y_max\"), got a string"}},
+    {"OpenUnknownSide", kSquare, {openSides("[\"top\"]"), basis("velocity_modes = 4")}, "",
+     {"[grid].open[0]: expected a side of the 2D box: x_min, x_max, y_min, y_max, got \"top\""}},
+    {"OpenZSideIn2D", kSquare, {openSides("[\"y_max\", \"z_max\"]"), basis("velocity_modes = 4")},
+     "", {"[grid].open[1]: expected a side of the 2D box"}},
+    {"OpenNotAString", kSquare, {openSides("[1]"), basis("velocity_modes = 4")}, "",
+     {"[grid].open[0]: expected a side of the 2D box: x_min, x_max, y_min, y_max, got an integer"}},
+    {"OpenTwice", kSquare, {openSides("[\"y_max\", \"y_max\"]"), basis("velocity_modes = 4")},
+     "", {"[grid].open[1]: \"y_max\" is listed twice"}},
+    {"OpenAcrossAPeriodicAxis", kSquare,
+     {{"bounds_max = [1, 1]\n", "bounds_max = [1, 1]\nperiodic = [true, false]\n"
+                               "open = [\"x_min\"]\n"},
+      basis("velocity_modes = 4")},
+     "", {"[grid].open[0]: \"x_min\" lies across a periodic axis"}},
+    {"OpenWithWind", kSquare, {openSides("[\"y_max\"]"), basis("velocity_modes = 4")},
+     "[wind]\nvelocity = [1, 0]\n",
+     {"[wind]: a wind opens the box's upstream and downstream sides itself: leave out "
+      "[grid].open"}},
     // A 4 × 4 torus has 32 faces (a walled 4 × 4 box 40): mode 36 lies beyond it.
     {"ModeBeyondTheFacesOfATorus", kSquare,
      {{"[8, 8]", "[4, 4]"}, periodicFlags("[true, true]"),
@@ -1387,6 +1412,22 @@ TEST(SceneLoaderPeriodic, PeriodicAxesAreAcceptedAndCountTheirFacesOnce) {
     EXPECT_NO_THROW(parseScene(
         replaced(square, {{"[8, 8]", "[4, 4]"}, basis("velocity_modes = 36\nscalar_modes = 0")}),
         "box.toml"));
+}
+
+TEST(SceneLoaderOpen, OpenSidesAreNamedAndDefaultToWalls) {
+    // The refusals are rows of RefusedScene (OpenNotAnArray and the next six).
+    const std::string square = replaced(sceneFixture(kSquare), {basis("velocity_modes = 4")});
+    EXPECT_FALSE(parseScene(square, "walls.toml").grid.anyOpen());
+    const SceneSpec top =
+        parseScene(replaced(square, {openSides("[\"y_max\", \"x_min\"]")}), "top.toml");
+    EXPECT_EQ(top.grid.open, (std::array<bool, 6>{true, false, false, true, false, false}));
+    EXPECT_FALSE(hasClosedFormVelocity(top));  // eigensolved: quarter waves have no closed form
+    const SceneSpec box = parseScene(
+        replaced(square, {{"[8, 8]", "[4, 4, 4]"},
+                          {"[0, 0]", "[0, 0, 0]"},
+                          {"bounds_max = [1, 1]", "bounds_max = [1, 1, 1]\nopen = [\"z_min\"]"}}),
+        "box.toml");
+    EXPECT_EQ(box.grid.open, (std::array<bool, 6>{false, false, false, false, true, false}));
 }
 
 // ---- surface scenes ([surface]) -----------------------------------------------------------------

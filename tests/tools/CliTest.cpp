@@ -94,6 +94,7 @@ TEST_F(Cli, InspectJsonReportsTheContractKeys) {
     EXPECT_EQ(j["dim"], 2);
     EXPECT_EQ(j["resolution"], nlohmann::json({24, 24}));
     EXPECT_EQ(j["periodic"], nlohmann::json({false, false}));
+    EXPECT_EQ(j["open"], nlohmann::json::array());
     EXPECT_EQ(j["velocity"]["count"], 8);
     EXPECT_EQ(j["velocity"]["eigenvalues"].size(), 8u);
     EXPECT_EQ(j["velocity"]["harmonic"], 0);

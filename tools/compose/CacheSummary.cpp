@@ -41,6 +41,11 @@ nlohmann::ordered_json summary(const BasisCache& c, const std::filesystem::path&
         j["bounds_max"] =
             std::vector<double>(c.grid.boundsMax.begin(), c.grid.boundsMax.begin() + n);
         j["periodic"] = std::vector<bool>(c.grid.periodic.begin(), c.grid.periodic.begin() + n);
+        std::vector<std::string> open;
+        for (int side = 0; side < 2 * n; ++side)
+            if (c.grid.open[std::size_t(side)])
+                open.push_back(std::string(1, "xyz"[side / 2]) + (side % 2 ? "_max" : "_min"));
+        j["open"] = open;
         j["wall"] = sceneKeyword(c.wall);
         j["boundary"] = sceneKeyword(c.boundary);
         j["dofs"] = {{"faces", c.faces.size()}, {"cells", c.cells.size()}};

@@ -20,6 +20,14 @@ std::string periodicAxes(const nlohmann::ordered_json& flags) {
     return axes;
 }
 
+/// ", open y_max" for the open sides; nothing when there are none.
+std::string openSides(const nlohmann::ordered_json& sides) {
+    std::string text;
+    for (const auto& side : sides)
+        text += (text.empty() ? ", open " : ", ") + side.get<std::string>();
+    return text;
+}
+
 void printText(const nlohmann::ordered_json& j) {
     if (j["kind"] == "surface") {
         const auto& m = j["surface"];
@@ -29,8 +37,9 @@ void printText(const nlohmann::ordered_json& j) {
                   << j["dofs"]["triangles"] << " triangles\n";
     } else {
         std::cout << "grid       " << j["dim"] << "D " << j["resolution"].dump()
-                  << periodicAxes(j["periodic"]) << ", " << j["boundary"].get<std::string>() << ", "
-                  << j["wall"].get<std::string>() << "\n"
+                  << periodicAxes(j["periodic"]) << openSides(j["open"]) << ", "
+                  << j["boundary"].get<std::string>() << ", " << j["wall"].get<std::string>()
+                  << "\n"
                   << "dofs       " << j["dofs"]["faces"] << " faces, " << j["dofs"]["cells"]
                   << " cells\n";
     }

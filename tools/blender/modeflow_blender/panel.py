@@ -29,6 +29,7 @@ class MODEFLOW_PT_physics(bpy.types.Panel):
             layout.prop(settings, "integrator")
             layout.prop(settings, "wind")
             layout.prop(settings, "wind_layer")
+            layout.prop(settings, "open_sides")
             fire = layout.column(align=True)
             fire.label(text="Fire (with an emitter's fuel)")
             fire.prop(settings, "ignition")

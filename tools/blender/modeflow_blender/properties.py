@@ -47,6 +47,19 @@ class ModeflowObjectSettings(bpy.types.PropertyGroup):
                               description="Thickness of the boundary layer over the domain's floor, "
                                           "where the wind slows towards the ground (0: the same "
                                           "wind at every height)")
+    open_sides: EnumProperty(
+        name="Open Sides",
+        description="Sides of the domain's box the air may cross (written as [grid] open): an "
+                    "open top over a fire lets its smoke out",
+        items=[('x_min', "-X", "The box's low side along X"),
+               ('x_max', "+X", "The box's high side along X"),
+               ('y_min', "-Y", "The box's low side along Y"),
+               ('y_max', "+Y", "The box's high side along Y"),
+               ('z_min', "-Z", "The box's floor"),
+               ('z_max', "+Z", "The box's top")],
+        options={'ENUM_FLAG'},
+        default=set(),
+    )
     # Fire (written as [fire] when an emitter feeds fuel)
     ignition: FloatProperty(name="Ignition", description="Temperature above which fuel burns", default=1.0,
                             min=-SMOKE_LIMIT, max=SMOKE_LIMIT)

@@ -137,6 +137,12 @@ def scene_of(domain, context, folder):
                 raise ValueError("modeflow: a wind over a boundary layer blows along the floor: "
                                  "its Z must be 0")
             description["wind"].update(profile="boundary-layer", thickness=float(settings.wind_layer))
+    if settings.open_sides:
+        if any(settings.wind):
+            raise ValueError("modeflow: a wind opens the box's upstream and downstream sides "
+                             "itself: clear Open Sides, or the wind")
+        order = ["x_min", "x_max", "y_min", "y_max", "z_min", "z_max"]
+        description["grid"]["open"] = [side for side in order if side in settings.open_sides]
     if settings.domain_shape == 'MESH':
         name = _file_name(domain)
         write_obj(os.path.join(meshes, name), domain, depsgraph, in_world=True)
