@@ -79,8 +79,10 @@ struct DisplayParams {
     uint basisX;        /* from the face velocity of the basis grid of basisX x basisY cells */
     uint basisY;
     uint boundary;    /* display_smoke_2d: MacGrid::boundaryBits: bit a, axis a is periodic (the
-                         smoke and velocity wrap); bit 3 + a, a wind flows through its sides (the
-                         velocity is sampled there as in the air); neither has a wall frame */
+                         smoke and velocity wrap); bit 3 + a, the air crosses a side across it
+                         (the velocity is sampled there as in the air); and bit 6 + side,
+                         MacGrid::crossableSideBits: that side (open or a wind's) has no wall
+                         frame, nor have a periodic axis's */
     float flameScale; /* display_smoke_2d: the flame shown fully glowing (0: no flame) */
 };
 

@@ -3,14 +3,17 @@
 // declaring `params`; Display.glsl then completes the kernel.
 
 // Outside the viewport: the wall colour in a frame around it, darker background beyond. The
-// sides of a periodic axis and those a wind flows through (params.boundary's bits 0 and 3: x left
-// and right, 1 and 4: y top and bottom) have no wall.
+// sides of a periodic axis (params.boundary's bits 0: x, 1: y) and those the air crosses, open
+// or a wind's (bits 6 + side, MacGrid::crossableSideBits: 6 left, 7 right, 8 bottom, 9 top; the
+// picture's y runs down) have no wall.
 vec3 marginColour(uint x, uint y) {
     const ivec2 p = ivec2(x, y), lo = ivec2(params.viewX, params.viewY);
     const ivec2 hi = lo + ivec2(params.viewWidth, params.viewHeight);
     const ivec2 outside = max(lo - p, p - hi + 1);
     const bool besideX = outside.x > 0 && outside.y <= 0, besideY = outside.y > 0 && outside.x <= 0;
-    const bool open = (besideX && (params.boundary & 9u) != 0u) || (besideY && (params.boundary & 18u) != 0u);
+    const uint sideX = p.x < lo.x ? 6u : 7u, sideY = p.y < lo.y ? 9u : 8u;
+    const bool open = (besideX && (params.boundary & (1u | (1u << sideX))) != 0u) ||
+                      (besideY && (params.boundary & (2u | (1u << sideY))) != 0u);
     if (max(outside.x, outside.y) <= DISPLAY_FRAME_PIXELS && !open)
         return vec3(DISPLAY_WALL_R, DISPLAY_WALL_G, DISPLAY_WALL_B);
     return DISPLAY_MARGIN * vec3(DISPLAY_BACKGROUND_R, DISPLAY_BACKGROUND_G, DISPLAY_BACKGROUND_B);

@@ -44,6 +44,17 @@ inline Vec3 faceCentre(const MacGrid& grid, const FaceLocation& face) {
     return centre;
 }
 
+/// Calls visit(face, position) for every face normal to `normal`, in MacGrid::faceIndex order,
+/// `position` its lower corner.
+template <typename Visit>
+void forEachFace(const MacGrid& grid, int normal, Visit&& visit) {
+    const std::array<int, 3> extent = grid.faceExtent(normal);
+    for (int z = 0; z < extent[2]; ++z)
+        for (int y = 0; y < extent[1]; ++y)
+            for (int x = 0; x < extent[0]; ++x)
+                visit(grid.faceIndex(normal, x, y, z), std::array<int, 3>{x, y, z});
+}
+
 /// The "up" axis of buoyancy (scenes/README.md, "Scene files"): +y in 2D, +z in 3D.
 inline int upAxis(const MacGrid& grid) {
     return grid.dim - 1;

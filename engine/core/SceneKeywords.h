@@ -59,7 +59,8 @@ inline constexpr std::pair<std::string_view, ObstacleShape> kObstacleShapes[] = 
     {"mesh", ObstacleShape::Mesh}};
 inline constexpr std::pair<std::string_view, AdvectionScheme> kAdvectionSchemes[] = {
     {"maccormack", AdvectionScheme::MacCormack},
-    {"semi-lagrangian", AdvectionScheme::SemiLagrangian}};
+    {"semi-lagrangian", AdvectionScheme::SemiLagrangian},
+    {"conservative", AdvectionScheme::Conservative}};
 inline constexpr std::pair<std::string_view, bool> kBasisPrecisions[] = {{"float32", false},
                                                                          {"float16", true}};
 

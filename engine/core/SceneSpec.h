@@ -171,9 +171,10 @@ struct SourceSpec {
     std::vector<RotationKey> rotation;
 };
 
-/// How smoke is carried (engine/README.md): RK2 semi-Lagrangian, or MacCormack with clamping (less
-/// diffusive; engine/reference/SmokeAdvection.h).
-enum class AdvectionScheme { SemiLagrangian, MacCormack };
+/// How smoke is carried (engine/README.md): RK2 semi-Lagrangian, MacCormack with clamping (less
+/// diffusive; engine/reference/SmokeAdvection.h), or the flux form that keeps the smoke's mass
+/// (engine/reference/ConservativeTransport.h; the CPU reference only).
+enum class AdvectionScheme { SemiLagrangian, MacCormack, Conservative };
 
 /// A solid moving through the fluid on a key-framed path (`[[obstacle]]`); the fluid's normal
 /// velocity on the faces it covers is made to match its own (seed §6.3.5).

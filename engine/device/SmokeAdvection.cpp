@@ -154,6 +154,10 @@ void SmokeAdvectionKernels::record(vulkan::CommandSequence& sequence, SmokeState
                     std::to_string(faces) + " faces need " + std::to_string(faces * sizeof(float)));
     if (!std::isfinite(dt))
         throw Error("smoke_advect: time step " + std::to_string(dt) + " is not finite");
+    if (scheme == AdvectionScheme::Conservative)
+        throw Error(
+            "smoke_advect: the conservative scheme runs on the CPU reference only "
+            "(BackendCapabilities)");
     const std::int64_t cells = state.cellCount();
     if (cells >= (std::int64_t(1) << 32))
         throw Error("smoke_advect: " + std::to_string(cells) +

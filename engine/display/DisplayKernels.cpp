@@ -85,7 +85,7 @@ void DisplayKernels::recordSmoke2D(vulkan::CommandSequence& sequence, const Fiel
     p.arrowScale = look.arrowScale;
     p.basisX = std::uint32_t(basis.cells[0]);
     p.basisY = std::uint32_t(basis.cells[1]);
-    p.boundary = basis.boundaryBits();
+    p.boundary = basis.boundaryBits() | basis.crossableSideBits() << 6;
     // Without flame binding 5 is never read: any buffer will do.
     const std::array<const vulkan::DeviceBuffer*, 6> buffers{
         &fields.smoke, &fields.mask,         &overlay,

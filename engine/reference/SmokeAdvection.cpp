@@ -7,6 +7,7 @@
 
 #include "engine/core/Error.h"
 #include "engine/core/MacSampling.h"
+#include "engine/reference/ConservativeTransport.h"
 #include "engine/simulation/WindTransport.h"
 
 namespace modeflow::reference {
@@ -153,15 +154,24 @@ void SmokeAdvection::step(std::span<const double> velocity, double dt, Advection
                           std::span<const SmokeEmitter> emitters, SmokeFields& fields) const {
     requireCellField(fields.density.size(), "the density");
     requireCellField(fields.temperature.size(), "the temperature");
+    if (!fields.fuel.empty()) requireCellField(fields.fuel.size(), "the fuel");
+    if (scheme == AdvectionScheme::Conservative) {
+        const ConservativeTransport transport(mBasis, mSmoke, mMask, mInflow);
+        const std::vector<double> u = transport.faceVelocity(velocity);
+        const int substeps = transport.substeps(u, dt);
+        transport.advect(u, dt, substeps, fields.density, mInflowDensity);
+        transport.advect(u, dt, substeps, fields.temperature, mInflowTemperature);
+        if (!fields.fuel.empty()) transport.advect(u, dt, substeps, fields.fuel, 0.0);
+        applyEmitters(mSmoke, mMask, emitters, dt, fields.density, fields.temperature, fields.fuel);
+        return;
+    }
     const std::vector<Vec3> back = backtrace(velocity, dt);
     const std::vector<Vec3> ahead =
         scheme == AdvectionScheme::MacCormack ? backtrace(velocity, -dt) : std::vector<Vec3>{};
     fields.density = advectAlong(fields.density, back, ahead, scheme, mInflowDensity);
     fields.temperature = advectAlong(fields.temperature, back, ahead, scheme, mInflowTemperature);
-    if (!fields.fuel.empty()) {  // the wind brings in no fuel
-        requireCellField(fields.fuel.size(), "the fuel");
+    if (!fields.fuel.empty())  // the wind brings in no fuel
         fields.fuel = advectAlong(fields.fuel, back, ahead, scheme, 0.0);
-    }
     applyEmitters(mSmoke, mMask, emitters, dt, fields.density, fields.temperature, fields.fuel);
 }
 
@@ -173,8 +183,16 @@ void SmokeAdvection::step(std::span<const float> velocity, double dt, AdvectionS
 
 std::vector<double> SmokeAdvection::advect(std::span<const double> velocity,
                                            std::span<const double> field, double dt,
-                                           AdvectionScheme scheme) const {
+                                           AdvectionScheme scheme, double* crossed) const {
     requireCellField(field.size(), "the advected field");
+    if (scheme == AdvectionScheme::Conservative) {
+        const ConservativeTransport transport(mBasis, mSmoke, mMask, mInflow);
+        const std::vector<double> u = transport.faceVelocity(velocity);
+        std::vector<double> result(field.begin(), field.end());
+        const double out = transport.advect(u, dt, transport.substeps(u, dt), result, 0.0);
+        if (crossed) *crossed = out;
+        return result;
+    }
     const std::vector<Vec3> back = backtrace(velocity, dt);
     const std::vector<Vec3> ahead =
         scheme == AdvectionScheme::MacCormack ? backtrace(velocity, -dt) : std::vector<Vec3>{};

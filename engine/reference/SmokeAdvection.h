@@ -31,7 +31,7 @@
 /// Neither scheme conserves mass: interpolation is not a flux form, the interpolated MAC
 /// velocity is divergence-free only cell by cell, and MacCormack's clamp lifts undershoots, so
 /// it gains mass on features only a few cells wide (tests/engine/SmokeAdvectionTest.cpp
-/// measures both).
+/// measures both). The third, `conservative`, is a flux form (ConservativeTransport.h).
 
 #include <array>
 #include <cstdint>
@@ -65,9 +65,10 @@ public:
     void step(std::span<const float> velocity, double dt, AdvectionScheme scheme,
               std::span<const SmokeEmitter> emitters, SmokeFields& fields) const;
 
-    /// One field advected (no emitters; a wind's inflow brings 0).
+    /// One field advected (no emitters; a wind's inflow brings 0). `crossed`, with the
+    /// conservative scheme: where the mass that crossed the box's sides outwards is put.
     std::vector<double> advect(std::span<const double> velocity, std::span<const double> field,
-                               double dt, AdvectionScheme scheme) const;
+                               double dt, AdvectionScheme scheme, double* crossed = nullptr) const;
 
     /// The wind blowing through the box ([wind]): the sides it crosses carry the velocity they
     /// hold (MacGrid::flowThrough), and its upstream sides become inflows of its air.

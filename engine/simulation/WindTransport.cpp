@@ -24,16 +24,6 @@ double heightOf(const MacGrid& grid, int normal, const std::array<int, 3>& p) {
     return (p[up] + (normal == up ? 0.0 : 0.5)) * grid.spacing[up];
 }
 
-/// Calls visit(face, position) for every face normal to `normal`.
-template <typename Visit>
-void forEachFace(const MacGrid& grid, int normal, Visit&& visit) {
-    const std::array<int, 3> extent = grid.faceExtent(normal);
-    for (int z = 0; z < extent[2]; ++z)
-        for (int y = 0; y < extent[1]; ++y)
-            for (int x = 0; x < extent[0]; ++x)
-                visit(grid.faceIndex(normal, x, y, z), std::array<int, 3>{x, y, z});
-}
-
 }  // namespace
 
 WindTransport::WindTransport(const BasisCache& cache, const WindSpec& wind)

@@ -20,7 +20,7 @@ namespace {
 
 using vulkan::DeviceBuffer;
 
-enum class SidesX { Walls, Periodic, Wind };
+enum class SidesX { Walls, Periodic, Wind, OpenRight };
 
 /// An 8 × 4 grid of [0, 2] × [0, 1] whose only smoke is a density of 1 in the last column.
 MacGrid stripeGrid(SidesX sides) {
@@ -30,6 +30,7 @@ MacGrid stripeGrid(SidesX sides) {
     grid.spacing = {0.25, 0.25, 1.0};
     grid.periodic = {sides == SidesX::Periodic, false, false};
     grid.flowThrough = {sides == SidesX::Wind, false, false};
+    grid.open[1] = sides == SidesX::OpenRight;  // x_max
     return grid;
 }
 
@@ -105,6 +106,10 @@ TEST_P(DisplayKernelTest, NoWallIsDrawnBesideTheSidesAWindFlowsThrough) {
     const std::vector<std::uint32_t> windy = drawStripe(context(), SidesX::Wind, 200);
     EXPECT_LT(red(windy[40 * 200 + 18]), wall - 30) << "left side";
     EXPECT_LT(red(windy[40 * 200 + 181]), wall - 30) << "right side";
+    // An open side ([grid] open) has no wall; the other side of its axis keeps its own.
+    const std::vector<std::uint32_t> open = drawStripe(context(), SidesX::OpenRight, 200);
+    EXPECT_EQ(red(open[40 * 200 + 18]), wall) << "left side, a wall";
+    EXPECT_LT(red(open[40 * 200 + 181]), wall - 30) << "right side, open";
 }
 
 TEST_P(DisplayKernelTest, FlamesGlowInProportionToTheirScale) {

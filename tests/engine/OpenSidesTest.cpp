@@ -35,16 +35,11 @@ SceneSpec openBox(std::array<bool, 6> open, int modes) {
     return scene;
 }
 
-RunInputs prepared(const SceneSpec& scene) {
-    Progress quiet = Progress::silent();
-    return prepareRun(scene, computeBasis(scene, quiet), RunParts::Dynamics);
-}
-
 TEST(OpenSides, TheMidpointRuleKeepsTheEnergyExactly) {
     // vᵀC(v, v) = ⟨u, ω × u⟩ = 0 whatever the sides: the open side holds the total pressure
     // p + ½|u|² at 0, so the energy it lets through is ∮(p + ½|u|²) u·n = 0.
     for (const auto& open : {kTop, kBottomAndTop}) {
-        const RunInputs run = prepared(openBox(open, 30));
+        const RunInputs run = testing::sharedRun(openBox(open, 30));
         const FluidSystem system(*run.coefficients, FluidParameters{});
         ModalIntegrator integrator(system, IntegratorSettings{Integrator::Midpoint});
         std::mt19937 random(3);
@@ -68,7 +63,7 @@ TEST(OpenSides, TheMidpointRuleKeepsTheEnergyExactly) {
 TEST(OpenSides, ABoxOpenAtBothEndsLetsAFlowStraightThrough) {
     // The harmonic field of a box open at its bottom and top is the uniform upward flow: every
     // face normal to y (the open sides' included) carries the same flux, no other face any.
-    const RunInputs run = prepared(openBox(kBottomAndTop, 10));
+    const RunInputs run = testing::sharedRun(openBox(kBottomAndTop, 10));
     ASSERT_EQ(run.cache.velocity.harmonic, 1);
     const VelocityBasis basis(run.cache);
     Eigen::VectorXd first = Eigen::VectorXd::Zero(basis.modeCount());

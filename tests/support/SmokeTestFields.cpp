@@ -140,7 +140,9 @@ std::vector<float> mushroomCloud(const MacGrid& grid) {
 }
 
 const char* schemeName(AdvectionScheme scheme) {
-    return scheme == AdvectionScheme::SemiLagrangian ? "semi-Lagrangian" : "MacCormack";
+    return scheme == AdvectionScheme::SemiLagrangian ? "semi-Lagrangian"
+           : scheme == AdvectionScheme::MacCormack   ? "MacCormack"
+                                                     : "conservative";
 }
 
 Vec3 centroid(const MacGrid& grid, const std::vector<double>& field) {

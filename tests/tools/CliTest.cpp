@@ -219,6 +219,41 @@ TEST_F(Cli, InspectSaysWhichAxesArePeriodic) {
     EXPECT_NE(text.out.find("grid       2D [16,8], periodic x, "), std::string::npos) << text.out;
 }
 
+TEST_F(Cli, InspectNamesTheOpenSidesOfAnEigensolvedBox) {
+    const fs::path s =
+        scene("open.toml",
+              "[grid]\nresolution = [8, 6]\nbounds_min = [0, 0]\nbounds_max = [1, 0.75]\n"
+              "open = [\"y_max\", \"x_min\"]\n[basis]\nvelocity_modes = 6\n"
+              "scalar_modes = 0\n");
+    const RunResult json =
+        run("inspect " + s.string() + " --cache-dir " + mCache.string() + " --json");
+    ASSERT_EQ(json.status, 0) << json.err;
+    const auto j = nlohmann::json::parse(json.out);
+    EXPECT_EQ(j["open"], nlohmann::json({"x_min", "y_max"}));
+    EXPECT_EQ(j["velocity"]["source"], "eigensolve");
+    const RunResult text = run("inspect " + s.string() + " --cache-dir " + mCache.string());
+    ASSERT_EQ(text.status, 0) << text.err;
+    EXPECT_NE(text.out.find("grid       2D [8,6], open x_min, y_max, "), std::string::npos)
+        << text.out;
+}
+
+TEST_F(Cli, ConservativeSmokeRunsOnTheCpuReferenceAndIsRefusedOnTheDevice) {
+    const fs::path s = scene("kept.toml", kSmallDisk +
+                                              "[[source]]\nshape = \"ball\"\ncenter = [0, -0.4]\n"
+                                              "radius = 0.2\n[smoke]\nbuoyancy = 1.0\n"
+                                              "advection = \"conservative\"\n");
+    expectRejected("run " + s.string() + " --device vulkan --frames 2 --out " +
+                       (mDir / "device").string() + " --cache-dir " + mCache.string(),
+                   s.string() +
+                       ": [smoke].advection = \"conservative\" runs on the CPU reference only; "
+                       "use --device cpu");
+    EXPECT_FALSE(fs::exists(mCache) && !fs::is_empty(mCache)) << "a cache was written first";
+    const RunResult r = run("run " + s.string() + " --device cpu --frames 2 --out " +
+                            (mDir / "cpu").string() + " --cache-dir " + mCache.string());
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_TRUE(fs::exists(mDir / "cpu" / "kept_0002.vdb"));
+}
+
 TEST_F(Cli, InspectNamesTheClosedFormBasesOfAWholeBox) {
     // No [[domain]] and free-slip walls: both bases in closed form, sparse coefficients.
     const fs::path s = scene("box.toml", sceneFixture("unit_box_3d"));
