@@ -17,6 +17,7 @@
 #include "engine/reference/SmokeAdvection.h"
 #include "precompute/Precompute.h"
 #include "tests/support/SharedRuns.h"
+#include "tests/support/SmokeTestFields.h"
 #include "tests/support/TestScenes.h"
 #include "tools/compose/RunPreparation.h"
 
@@ -108,12 +109,7 @@ TEST(OpenSides, SmokeLeavesWithoutPilingUpAndCleanAirComesIn) {
         for (int s = 0; s < steps; ++s) full = chimney.advect(velocity, full, 0.02, scheme);
         EXPECT_LE(chimney.mass(full), 1e-6 * volume);
         // A puff crosses the top without piling up against it.
-        std::vector<double> puff(mask.size(), 0.0);
-        for (int y = 0; y < open.cells[1]; ++y)
-            for (int x = 0; x < open.cells[0]; ++x) {
-                const double px = open.cellCentre(0, x) - 0.5, py = open.cellCentre(1, y) - 0.6;
-                puff[std::size_t(open.cellIndex(x, y, 0))] = std::exp(-(px * px + py * py) / 0.02);
-            }
+        std::vector<double> puff = testing::gaussianBlob(open, {0.5, 0.6, 0.0}, 0.1);
         double peak = 0.0;
         for (int s = 0; s < steps; ++s) {
             puff = chimney.advect(velocity, puff, 0.02, scheme);

@@ -21,6 +21,7 @@
 #include "engine/run/Backend.h"
 #include "engine/simulation/WindTransport.h"
 #include "precompute/Precompute.h"
+#include "tests/support/SmokeTestFields.h"
 #include "tests/support/TestScenes.h"
 #include "tools/compose/RunPreparation.h"
 
@@ -284,13 +285,7 @@ TEST(Wind, SmokeArrivesCleanUpstreamAndLeavesDownstream) {
                         int(scheme), u[0], u[1], windy.mass(full) / 2.0);
             EXPECT_GE(still.mass(kept), 0.99 * 2.0) << "without setWind the inflow is closed";
             // A puff crosses the downstream side without piling up against it.
-            std::vector<double> puff(mask.size(), 0.0);
-            for (int y = 0; y < grid.cells[1]; ++y)
-                for (int x = 0; x < grid.cells[0]; ++x) {
-                    const double px = grid.cellCentre(0, x) - 1.0, py = grid.cellCentre(1, y) - 0.5;
-                    puff[std::size_t(grid.cellIndex(x, y, 0))] =
-                        std::exp(-(px * px + py * py) / 0.02);
-                }
+            std::vector<double> puff = testing::gaussianBlob(grid, {1.0, 0.5, 0.0}, 0.1);
             double peak = 0.0;
             for (int s = 0; s < steps; ++s) {
                 puff = windy.advect(velocity, puff, 0.02, scheme);
