@@ -28,6 +28,7 @@
 #include "precompute/solve/ProcessGroup.h"
 #include "precompute/solve/SliceCheckpoint.h"
 #include "precompute/solve/SpectralBasis.h"
+#include "precompute/solve/WindBaseFlows.h"
 
 namespace modeflow {
 namespace {
@@ -281,6 +282,12 @@ BasisCache computeStages(const SceneSpec& scene, std::string key, Progress& prog
             choice.reason + ")");
     }
     cache.timings.emplace_back("coefficients", progress.end());
+    // Walls inside the box: the held flow a wind makes around them, for a run with a [wind].
+    if (!scene.domain.empty()) {
+        progress.begin("wind base flows");
+        cache.windBase = windBaseFlows(complex, measures, dec);
+        cache.timings.emplace_back("wind_base_flows", progress.end());
+    }
     return cache;
 }
 

@@ -79,7 +79,7 @@ Simulation::Simulation(const vulkan::VulkanContext& context, const BasisCache& c
     requireDisplaceableMotion(mSettings.obstacles, mSettings.dt, mSmoke.smokeGrid());
     if (mSettings.fire) mBurn.emplace(context);
     if (mSettings.wind) {
-        mWind.emplace(context, mReconstruction.grid(), *mSettings.wind);
+        mWind.emplace(context, mReconstruction.grid(), windBaseFlow(cache, *mSettings.wind));
         mSmoke.setWind(*mSettings.wind);
         // The air before the first step: the wind alone, as on the CPU.
         mWind->record(mSequence, mFaceVelocity);

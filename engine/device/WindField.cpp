@@ -1,13 +1,12 @@
 #include "engine/device/WindField.h"
 
 #include <array>
-#include <cmath>
 #include <cstdint>  // the generated header uses uint32_t without including it
 #include <vector>
 
 #include "engine/core/Error.h"
+#include "engine/core/MacSampling.h"
 #include "engine/device/DofFaces.h"
-#include "engine/simulation/WindTransport.h"
 #include "engine/vulkan/CommandSequence.h"
 #include "engine/vulkan/DeviceBuffer.h"
 #include "shaders/WindParams.h"
@@ -18,27 +17,18 @@ namespace {
 
 constexpr std::uint32_t kWorkgroup = 64;
 
-/// B as floats, one a face.
-vulkan::DeviceBuffer baseField(const vulkan::VulkanContext& context, const MacGrid& grid,
-                               const WindSpec& wind) {
-    for (const double u : wind.velocity)
-        if (!std::isfinite(u)) throw Error("wind: the velocity is not finite");
-    std::vector<double> base(std::size_t(grid.faceTotal()), 0.0);
-    addWind(grid, wind, base);
-    return vulkan::DeviceBuffer::fromValues<float>(
-        context, std::vector<float>(base.begin(), base.end()), "wind base flow");
-}
-
 }  // namespace
 
 WindField::WindField(const vulkan::VulkanContext& context, const MacGrid& grid,
-                     const WindSpec& wind)
+                     std::span<const double> base)
     : mGrid(grid),
-      mBase(baseField(context, grid, wind)),
+      mBase(vulkan::DeviceBuffer::fromValues<float>(
+          context, std::vector<float>(base.begin(), base.end()), "wind base flow")),
       mGroups(groupsFor(context, std::uint64_t(grid.faceTotal()), kWorkgroup)),
       mKernel(
           context,
           {"add_wind", add_wind_spv, 2, sizeof(shaders::WindParams), kWorkgroup, {}, {}, {}, {1}}) {
+    requireFaceField(grid, base.size(), "wind base flow");
 }
 
 void WindField::record(vulkan::CommandSequence& sequence,

@@ -87,6 +87,13 @@ struct BasisCache {
         SparseRows curl, velocityB, velocityC;
     } quadrature;
 
+    /// A wind's held flows around [[domain]] walls (precompute/solve/WindBaseFlows.h): entry
+    /// 2a + 0 for a unit wind along +a, 2a + 1 along −a, the face-normal velocities on every grid
+    /// face of its potential flow (0 on faces with no fluid; empty where the walls let no such
+    /// wind through). Bases with [[domain]] shapes hold 2·dim; a whole box none (its flow is the
+    /// constant wind).
+    std::vector<std::vector<double>> windBase;
+
     /// Structural coefficients C[k][i][j] of the velocity modes (seed eq. 6.7), k < j only.
     struct Coefficients {
         /// None: not assembled (`[basis] coefficients = "tensor-free"`, or chosen by "auto").

@@ -164,8 +164,9 @@ void requireConsistentSurface(const BasisCache& c, const Require& require) {
     const auto& q = c.quadrature;
     require(wellFormed(q.curl, 0) && wellFormed(q.velocityB, 0) && wellFormed(q.velocityC, 0) &&
                 q.curl.rows() == 0 && q.velocityB.rows() == 0 && q.velocityC.rows() == 0 &&
-                c.coefficients.storage != BasisCache::Coefficients::Storage::None,
-            "its surface basis holds a vorticity quadrature or no coefficients");
+                c.coefficients.storage != BasisCache::Coefficients::Storage::None &&
+                c.windBase.empty(),
+            "its surface basis holds a vorticity quadrature, wind base flows or no coefficients");
     requireConsistentSpectrum(c, n, require);
 }
 
@@ -219,6 +220,16 @@ void requireConsistentGrid(const BasisCache& c, const Require& require) {
                 wellFormed(q.velocityC, faces) && q.velocityB.rows() == q.curl.rows() &&
                 q.velocityC.rows() == q.curl.rows(),
             "its vorticity quadrature is not three maps of the same elements to its faces");
+    // Wind base flows: none, or one finite face field (or none) per axis and direction of an
+    // eigensolved basis, whose transport the quadrature evaluates.
+    bool flowsHold = c.windBase.empty() || (c.windBase.size() == std::size_t(2 * c.grid.dim) &&
+                                            !closed && q.curl.rows() > 0);
+    for (const std::vector<double>& flow : c.windBase) {
+        flowsHold &=
+            flow.empty() || flow.size() == std::size_t(MacGrid::fromSpec(c.grid).faceTotal());
+        for (const double u : flow) flowsHold &= std::isfinite(u);
+    }
+    require(flowsHold, "its wind base flows are not one finite face field per axis and direction");
     requireConsistentSpectrum(c, n, require);
 }
 

@@ -174,6 +174,8 @@ void serialize(const BasisCache& c, Payload& p) {
     putRows(p, c.quadrature.curl);
     putRows(p, c.quadrature.velocityB);
     putRows(p, c.quadrature.velocityC);
+    p.small().pod<std::uint64_t>(c.windBase.size());
+    for (const std::vector<double>& flow : c.windBase) p.array(flow.data(), flow.size());
     p.small().pod<std::int32_t>(int(c.coefficients.storage));
     p.array(c.coefficients.packed.data(), c.coefficients.packed.size());
     p.array(c.coefficients.k.data(), c.coefficients.k.size());
@@ -250,6 +252,9 @@ BasisCache deserialize(ByteReader& r) {
     c.quadrature.curl = takeRows(r);
     c.quadrature.velocityB = takeRows(r);
     c.quadrature.velocityC = takeRows(r);
+    const auto windFlows = r.pod<std::uint64_t>();
+    if (windFlows > 6) r.fail("it holds wind base flows for more than three axes");
+    for (std::uint64_t a = 0; a < windFlows; ++a) c.windBase.push_back(r.vector<double>());
     c.coefficients.storage = BasisCache::Coefficients::Storage(r.pod<std::int32_t>());
     c.coefficients.packed = r.vector<double>();
     c.coefficients.k = r.vector<std::int32_t>();

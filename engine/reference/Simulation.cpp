@@ -32,8 +32,7 @@ Simulation::Simulation(const BasisCache& cache, const StructuralCoefficients& co
     setObstacles(mSettings.obstacles);
     if (mSettings.wind) {
         mAdvection.setWind(*mSettings.wind);
-        mWindField.assign(mFaceVelocity.size(), 0.0);
-        addWind(MacGrid::fromSpec(cache.grid), *mSettings.wind, mWindField);
+        mWindField = windBaseFlow(cache, *mSettings.wind);
         mFaceVelocity = mWindField;
     }
     const auto cells = std::size_t(mAdvection.smokeGrid().cellCount());

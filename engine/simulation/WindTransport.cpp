@@ -6,6 +6,7 @@
 #include "engine/core/Error.h"
 #include "engine/core/FaceLocation.h"
 #include "engine/core/MacSampling.h"
+#include "engine/dynamics/QuadratureSampling.h"
 
 namespace modeflow {
 namespace {
@@ -39,9 +40,21 @@ WindTransport::WindTransport(const BasisCache& cache, const WindSpec& wind)
             throw Error(
                 "wind: a boundary layer needs a positive thickness and an exponent in (0, 1]");
     }
-    for (const std::int64_t face : cache.faces)
+    mStar.assign(std::size_t(mGrid.faceTotal()), 0.0);
+    for (std::size_t d = 0; d < cache.faces.size(); ++d) {
+        const std::int64_t face = cache.faces[d];
         if (face < 0 || face >= mGrid.faceTotal())
             throw Error("wind: face DOF " + std::to_string(face) + " is not a face of the grid");
+        mStar[std::size_t(face)] = cache.faceStar[Eigen::Index(d)];
+    }
+    if (!cache.windBase.empty()) {
+        if (wind.profile != WindProfile::Uniform)
+            throw Error(
+                "wind: a boundary layer over [[domain]] walls is not built (its held flow is "
+                "not a potential flow); blow a uniform wind, or stand the solids in it as "
+                "[[obstacle]]s");
+        samplePotentialPart(windBaseFlow(cache, wind));
+    }
     // f and f' at each row height, per face lattice: the evaluations read these, not pow().
     const int up = upAxis(mGrid);
     for (int c = 0; c < mGrid.dim; ++c)
@@ -75,9 +88,22 @@ double WindTransport::upVelocityBeside(const std::vector<double>& fluxes, int a,
     return 0.25 * sum / mGrid.faceArea(up);
 }
 
+void WindTransport::samplePotentialPart(const std::vector<double>& base) {
+    // The fluxes of B − U through the face DOFs (none lies on a wall: |face ∩ Ω| = h_c / ⋆).
+    Eigen::VectorXd potential(Eigen::Index(mCache.faces.size()));
+    for (std::size_t d = 0; d < mCache.faces.size(); ++d) {
+        const std::int64_t face = mCache.faces[d];
+        const int c = locateFace(mGrid, face).axis;
+        potential[Eigen::Index(d)] = (base[std::size_t(face)] - mWind.velocity[c]) *
+                                     mGrid.spacing[c] / mCache.faceStar[Eigen::Index(d)];
+    }
+    mPotentialB = sample(mCache.quadrature.velocityB, potential);
+    mPotentialC = sample(mCache.quadrature.velocityC, potential);
+}
+
 void WindTransport::apply(const Eigen::VectorXd& v, Eigen::VectorXd& out) const {
     const std::vector<double> fluxes = gridFluxes(v);
-    std::vector<double> change(fluxes.size(), 0.0);
+    std::vector<double> starred(fluxes.size(), 0.0);  // ⋆·(the change), per grid face
     const int up = upAxis(mGrid);
     const bool layer = mWind.profile == WindProfile::BoundaryLayer;
     for (const int a : windAxes(mGrid, mWind.velocity)) {
@@ -87,35 +113,50 @@ void WindTransport::apply(const Eigen::VectorXd& v, Eigen::VectorXd& out) const 
         if (layer)
             forEachFace(mGrid, a, [&](std::int64_t face, std::array<int, 3> p) {
                 if (mGrid.isWallFace(a, p[a])) return;  // no DOF
-                change[std::size_t(face)] -= u * mSlope[a][std::size_t(p[up])] *
-                                             upVelocityBeside(fluxes, a, p) * mGrid.faceArea(a);
+                starred[std::size_t(face)] -= mStar[std::size_t(face)] * u *
+                                              mSlope[a][std::size_t(p[up])] *
+                                              upVelocityBeside(fluxes, a, p) * mGrid.faceArea(a);
             });
         for (int c = 0; c < mGrid.dim; ++c) {
             const int last = mGrid.faceExtent(c)[a] - 1;
             forEachFace(mGrid, c, [&](std::int64_t face, std::array<int, 3> p) {
-                // The lattice's value at position q along a: wrapped on a periodic axis; beyond
-                // the box, 0 upstream (the undisturbed inflow) and the last value downstream.
-                const auto at = [&](int q) {
+                // The lattice's face at position q along a: wrapped on a periodic axis; beyond
+                // the box, none upstream (the undisturbed inflow) and the last downstream.
+                const auto at = [&](int q) -> std::int64_t {
                     if (mGrid.periodic[a]) q = (q + last + 1) % (last + 1);
                     if (q < 0 || q > last) {
                         const bool downstream = (q > last) == (u > 0.0);
-                        if (!downstream) return 0.0;
+                        if (!downstream) return -1;
                         q = q < 0 ? 0 : last;
                     }
                     std::array<int, 3> n = p;
                     n[a] = q;
-                    return fluxes[std::size_t(mGrid.faceIndex(c, n[0], n[1], n[2]))];
+                    return mGrid.faceIndex(c, n[0], n[1], n[2]);
                 };
-                change[std::size_t(face)] +=
-                    scale * mFactor[c][std::size_t(p[up])] * (at(p[a] + 1) - at(p[a] - 1));
+                // ⋆ between two faces is their mean, so the pairs cancel in vᵀDv (cut faces
+                // differ in ⋆; along a whole box's rows it is one value).
+                const auto term = [&](std::int64_t other) {
+                    if (other < 0) return 0.0;
+                    return 0.5 * (mStar[std::size_t(face)] + mStar[std::size_t(other)]) *
+                           fluxes[std::size_t(other)];
+                };
+                starred[std::size_t(face)] += scale * mFactor[c][std::size_t(p[up])] *
+                                              (term(at(p[a] + 1)) - term(at(p[a] - 1)));
             });
         }
     }
-    Eigen::VectorXd starred(Eigen::Index(mCache.faces.size()));
+    Eigen::VectorXd dofs(Eigen::Index(mCache.faces.size()));
     for (std::size_t d = 0; d < mCache.faces.size(); ++d)
-        starred[Eigen::Index(d)] =
-            mCache.faceStar[Eigen::Index(d)] * change[std::size_t(mCache.faces[d])];
-    out = mBasis.transposed(starred);
+        dofs[Eigen::Index(d)] = starred[std::size_t(mCache.faces[d])];
+    if (mPotentialB.size() > 0) {
+        // Around domain walls, the potential part G = B − U in vorticity form (the structural
+        // coefficients' quadrature with G in the velocity slot): −⟨Ψ_k, ω' × G⟩.
+        const auto& q = mCache.quadrature;
+        const Eigen::VectorXd omega = sample(q.curl, mBasis.fluxes(v));
+        addTransposed(q.velocityB, omega.cwiseProduct(mPotentialC), dofs);
+        addTransposed(q.velocityC, -omega.cwiseProduct(mPotentialB), dofs);
+    }
+    out = mBasis.transposed(dofs);
 }
 
 const Eigen::MatrixXd& WindTransport::matrix() const {
@@ -140,15 +181,15 @@ double WindTransport::outflowPower(const Eigen::VectorXd& v) const {
     const int up = upAxis(mGrid);
     for (const int a : windAxes(mGrid, mWind.velocity)) {
         if (mGrid.periodic[a]) continue;
-        const double sideArea = mGrid.cellVolume() / mGrid.spacing[a];  // of one cell's side
         for (int c = 0; c < mGrid.dim; ++c) {
             if (c == a) continue;  // the walls along a: no disturbance crosses them
             const int downstream = mWind.velocity[a] > 0.0 ? mGrid.faceExtent(c)[a] - 1 : 0;
             forEachFace(mGrid, c, [&](std::int64_t face, std::array<int, 3> p) {
                 if (p[a] != downstream) return;
-                const double velocity = fluxes[std::size_t(face)] / mGrid.faceArea(c);
+                // ⋆F²/h_a = u²·|face ∩ Ω|: the face's share of the side.
+                const double flux = fluxes[std::size_t(face)];
                 power += 0.5 * std::abs(mWind.velocity[a]) * mFactor[c][std::size_t(p[up])] *
-                         velocity * velocity * sideArea;
+                         mStar[std::size_t(face)] * flux * flux / mGrid.spacing[a];
             });
         }
     }
@@ -179,6 +220,44 @@ double windSlope(const WindSpec& wind, double height) {
     if (wind.profile == WindProfile::Uniform || height >= wind.thickness || height <= 0.0)
         return 0.0;
     return wind.exponent / wind.thickness * std::pow(height / wind.thickness, wind.exponent - 1.0);
+}
+
+std::vector<double> windBaseFlow(const BasisCache& cache, const WindSpec& wind) {
+    for (const double u : wind.velocity)
+        if (!std::isfinite(u)) throw Error("wind: the velocity is not finite");
+    const MacGrid grid = MacGrid::fromSpec(cache.grid);
+    std::vector<double> base(std::size_t(grid.faceTotal()), 0.0);
+    if (cache.windBase.empty()) {
+        addWind(grid, wind, base);
+        return base;
+    }
+    if (wind.profile != WindProfile::Uniform)
+        throw Error("wind: a boundary layer over [[domain]] walls is not built");
+    const char* axisName[] = {"x", "y", "z"};
+    for (int a = 0; a < grid.dim; ++a) {
+        if (wind.velocity[a] == 0.0) continue;
+        const bool reversed = wind.velocity[a] < 0.0;
+        const std::string along = std::string(reversed ? "-" : "+") + axisName[a];
+        const std::vector<double>& flow = cache.windBase[std::size_t(2 * a + reversed)];
+        if (flow.empty())
+            throw Error("wind: the [[domain]] walls let no wind blow along " + along +
+                        ": air entering its upstream side finds no way to the downstream one");
+        if (flow.size() != base.size())
+            throw Error("wind: the cache's base flow along " + along +
+                        " is not one value per face");
+        // Domain walls that seal the box's sides along a leave the wind no way through.
+        bool crosses = grid.periodic[a];
+        forEachFace(grid, a, [&](std::int64_t face, std::array<int, 3> p) {
+            crosses |= (p[a] == 0 || p[a] == grid.cells[a]) && flow[std::size_t(face)] != 0.0;
+        });
+        if (!crosses)
+            throw Error(std::string("wind: its ") + axisName[a] +
+                        " component blows at the box's sides along " + axisName[a] +
+                        ", and the [[domain]] walls seal them: no air crosses them");
+        const double speed = std::abs(wind.velocity[a]);
+        for (std::size_t f = 0; f < base.size(); ++f) base[f] += speed * flow[f];
+    }
+    return base;
 }
 
 SimulationSettings withWindTransport(SimulationSettings settings, const BasisCache& cache) {

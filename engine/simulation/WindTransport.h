@@ -1,6 +1,6 @@
 #pragma once
 /// @file WindTransport.h
-/// A wind (`[wind] velocity = U`) over a whole grid box (engine/README.md, "Wind"): the air moves
+/// A wind (`[wind] velocity = U`) through the grid box (engine/README.md, "Wind"): the air moves
 /// as u = B + Σ v_k Ψ_k, B a held base flow entering through the box's upstream sides and leaving
 /// through the downstream ones, the closed-box modes Ψ_k the disturbance solids and forces make.
 /// B = U f(h), f = 1 (a uniform wind) or a boundary layer's power law of the height h over the
@@ -21,7 +21,19 @@
 /// the kinetic energy the wind carries out and, in a boundary layer, the shear's production (the
 /// energy the disturbance draws from the held flow, or gives it): nothing numerically dissipated.
 /// u'_up on a face normal to a is the mean of the four up faces beside it. The faces normal to a
-/// at the box's sides along a are the modes' walls, where u'_a vanishes.
+/// at the box's sides along a are the modes' walls, where u'_a vanishes. Between two faces the
+/// term weighs by the mean of their ⋆ (one value along a whole box's rows; cut faces differ), so
+/// the pairs still cancel.
+///
+/// Around [[domain]] walls the held flow is the potential flow B = Σ_a U_a B_a the cache holds
+/// (precompute/solve/WindBaseFlows.h), and its part G = B − U enters in vorticity form: G is
+/// irrotational, so (G·∇)u' + (u'·∇)G = ω' × G + ∇(G·u'), whose gradient the divergence-free
+/// modes do not see:
+///
+///     (D v)_k += −⟨Ψ_k, ω' × G⟩,
+///
+/// evaluated with the structural coefficients' quadrature (G in the velocity slot). Its share of
+/// vᵀDv is the energy the disturbance exchanges with the flow's strain round the walls.
 
 #include <array>
 #include <memory>
@@ -44,7 +56,7 @@ class WindTransport final : public LinearModalTerm {
 public:
     /// Keeps a reference to `cache`, which must outlive it.
     /// @throw modeflow::Error for a surface basis, a non-finite wind, a boundary layer without a
-    ///        floor, or a face DOF that is not a grid face.
+    ///        floor or over [[domain]] walls, or a face DOF that is not a grid face.
     WindTransport(const BasisCache& cache, const WindSpec& wind);
 
     int size() const override { return mBasis.modeCount(); }
@@ -55,12 +67,15 @@ public:
     /// carries out (computed from the grid, independently of apply).
     double outflowPower(const Eigen::VectorXd& v) const;
     /// Σ_a U_a ∫ f' u'_a u'_up dV: the power the disturbance gives the held shear flow (negative:
-    /// draws from it); 0 in a uniform wind. vᵀ D v = −outflowPower − shearPower.
+    /// draws from it); 0 in a uniform wind. In a whole box vᵀ D v = −outflowPower − shearPower;
+    /// around domain walls the potential part's exchange adds to it.
     double shearPower(const Eigen::VectorXd& v) const;
 
 private:
     /// The fluxes Ψ v on every face of the grid (0 on faces that are not DOFs).
     std::vector<double> gridFluxes(const Eigen::VectorXd& v) const;
+    /// Samples G = `base` − U at the vorticity elements (mPotentialB, mPotentialC).
+    void samplePotentialPart(const std::vector<double>& base);
     /// The mean up-velocity of the four up faces beside the normal-`a` face at `p` (a ≠ up,
     /// p inside the box along a).
     double upVelocityBeside(const std::vector<double>& fluxes, int a,
@@ -72,8 +87,17 @@ private:
     WindSpec mWind;
     /// Per face lattice, f and f' at the heights of its rows along the up axis.
     std::array<std::vector<double>, 3> mFactor, mSlope;
+    std::vector<double> mStar;  ///< ⋆ of every grid face (0 where no DOF)
+    /// Around domain walls: G's components u_b, u_c at the quadrature's elements (else empty).
+    Eigen::VectorXd mPotentialB, mPotentialC;
     mutable Eigen::MatrixXd mMatrix;  ///< D, formed by matrix()
 };
+
+/// The wind's held flow B on every face of `cache`'s grid (face-normal velocities): Σ_a U_a B_a
+/// from the cache's flows around [[domain]] walls when it holds them, else addWind's U f(h).
+/// What the grid velocity adds to Ψ v, on both backends.
+/// @throw modeflow::Error for a non-finite wind, or a boundary layer over domain walls.
+std::vector<double> windBaseFlow(const BasisCache& cache, const WindSpec& wind);
 
 /// `settings` with their wind's advection of the modes over `cache`'s basis as the fluid's linear
 /// term (none without a wind). What a CPU simulation or modal stepper of a run is made with;

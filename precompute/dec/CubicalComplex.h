@@ -61,6 +61,29 @@ public:
     /// the seam); unchanged on other axes.
     int wrap(int axis, int position) const;
 
+    /// Calls fn(face, cell) for every face normal to `axis` on the box's two sides along it
+    /// (none along a periodic axis), `cell` the cell inside beside it.
+    template <typename Fn>
+    void forEachSideFace(int axis, Fn&& fn) const {
+        if (mGrid.isPeriodic(axis)) return;
+        const int n = mGrid.dim;
+        const unsigned faceAxes = ((1u << n) - 1) & ~(1u << axis);
+        const Index3 extent = this->extent(faceAxes);
+        for (const int side : {0, mGrid.resolution[axis]}) {
+            Index3 first{0, 0, 0}, end = extent;  // the side's plane of faces
+            first[axis] = side;
+            end[axis] = side + 1;
+            for (int k = first[2]; k < end[2]; ++k)
+                for (int j = first[1]; j < end[1]; ++j)
+                    for (int i = first[0]; i < end[0]; ++i) {
+                        const Element face{faceAxes, {i, j, k}};
+                        Element cell{(1u << n) - 1, face.pos};
+                        if (side != 0) --cell.pos[axis];
+                        fn(face, cell);
+                    }
+        }
+    }
+
     /// Signed incidence d_k from k-cells to (k+1)-cells, d_{k+1} d_k = 0. Faces are oriented so a
     /// positive value is a flux along +normal: (d_{n-1} Ψ)_cell = Σ outflow through its faces.
     SparseMatrix incidence(int k) const;

@@ -222,6 +222,32 @@ void measureCut(const CubicalComplex& cx, const Domain& domain, int subsamples,
     dropFacesBesideEmptyCells(cx, m);
 }
 
+/// Fills m.sideFraction: each face on a side of the box along its normal, measured as the faces
+/// inside are (cut: sampled; staircase: as the one cell beside it), and 0 beside an empty cell.
+void measureSideFaces(const CubicalComplex& cx, const Domain& domain, BoundaryTreatment treatment,
+                      int subsamples, CutCellMeasures& m) {
+    const GridSpec& grid = cx.grid();
+    const int n = grid.dim;
+    const double tol = insideTolerance(grid);
+    m.sideFraction.assign(std::size_t(cx.count(n - 1)), 0.0);
+    for (int a = 0; a < n; ++a) {
+        const unsigned axes = cx.types(n - 1)[std::size_t(a)];  // type a has normal a
+        const double radius = circumradius(grid, axes);
+        ElementSampler sampler(grid, domain, axes, subsamples);
+        cx.forEachSideFace(a, [&](const Element& face, const Element& cell) {
+            if (m.fraction[n][cx.index(cell)] <= 0.0) return;
+            double f = 1.0;
+            if (treatment != BoundaryTreatment::Staircase) {
+                const double chi = domain.chi(elementCentre(grid, face));
+                f = chi > radius + tol ? 1.0 : chi < -(radius + tol) ? 0.0 : sampler.fraction(face);
+            }
+            if (f > 0.0)
+                m.sideFraction[std::size_t(cx.index(face))] =
+                    std::max(f, CutCellMeasures::kMinFraction);
+        });
+    }
+}
+
 }  // namespace
 
 CutCellMeasures measureCutCells(const CubicalComplex& complex, const Domain& domain,
@@ -236,6 +262,7 @@ CutCellMeasures measureCutCells(const CubicalComplex& complex, const Domain& dom
     for (auto& f : m.fraction)
         for (double& x : f)
             if (x > 0.0) x = std::max(x, CutCellMeasures::kMinFraction);
+    measureSideFaces(complex, domain, treatment, subsamples, m);
     return m;
 }
 

@@ -15,6 +15,10 @@ namespace modeflow {
 /// (the element is not a degree of freedom) or at least `kMinFraction`.
 struct CutCellMeasures {
     std::array<std::vector<double>, 4> fraction;
+    /// Per face ((n-1)-cell), the fraction inside Ω of the faces lying on the grid box's sides
+    /// along their normal (non-periodic axes), measured as the faces inside are; 0 elsewhere.
+    /// The sides are walls, so `fraction` holds 0 there; this is what a wind crosses.
+    std::vector<double> sideFraction;
 
     /// Positive fractions are clamped from below: they enter the curl term inverted.
     static constexpr double kMinFraction = 1e-4;

@@ -1,5 +1,6 @@
 /// @file WindSection.cpp
-/// `[wind]`: the velocity of the air far from solids, blowing through a whole grid box.
+/// `[wind]`: the velocity of the air far from solids, blowing through the grid box (round its
+/// [[domain]] walls as a potential flow).
 
 #include <cmath>
 #include <string>
@@ -15,13 +16,6 @@ WindSpec readWind(const TomlReader& reader, const Section& s, const SceneSpec& s
     reader.checkKeys(s, kWindKeys);
     if (scene.isSurface())
         reader.fail(s.name, "a surface is closed: no wind blows through it", &s.table);
-    // The base flow is the constant U only on a whole box; around [[domain]] solids it is a
-    // potential flow, not built yet.
-    if (!scene.domain.empty())
-        reader.fail(s.name,
-                    "the wind blows through a whole grid box: this scene's [[domain]] shapes "
-                    "make walls inside it; stand solids in the wind as [[obstacle]]s",
-                    &s.table);
     // The wind's modes are a closed box's: its own sides are where it enters and leaves.
     if (scene.grid.anyOpen())
         reader.fail(s.name,
@@ -51,6 +45,13 @@ WindSpec readWind(const TomlReader& reader, const Section& s, const SceneSpec& s
                             s.table.get(key));
         return wind;
     }
+    // Round [[domain]] walls the held flow is a potential flow, which a layer's shear is not.
+    if (!scene.domain.empty())
+        reader.fail(s, "profile",
+                    "a boundary layer blows through a whole grid box: this scene's [[domain]] "
+                    "shapes make walls inside it (blow a uniform wind round them, or stand "
+                    "solids in the layer as [[obstacle]]s)",
+                    s.table.get("profile"));
     // The floor is the box's low side along the up axis (y in 2D, z in 3D): the layer needs one,
     // and a wind that blows along it.
     const int up = scene.grid.dim - 1;

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
@@ -47,6 +49,8 @@ TEST(CacheFileTest, ARealBasisRoundTrips) {
     EXPECT_EQ(read.faces, smallBasis().faces);
     EXPECT_EQ(read.velocity.modes, smallBasis().velocity.modes);
     EXPECT_EQ(read.coefficients.packed, smallBasis().coefficients.packed);
+    ASSERT_EQ(smallBasis().windBase.size(), 4u);  // a disk is [[domain]] walls
+    EXPECT_EQ(read.windBase, smallBasis().windBase);
     EXPECT_EQ(readCacheKeyHash(folder / "disk.mfbasis"), fnv1a64(smallBasis().key));
 }
 
@@ -187,6 +191,14 @@ TEST(CacheFileTest, AQuadratureOrStorageThatDoesNotFitIsRefused) {
     }));
     EXPECT_TRUE(quadrature(
         [](BasisCache& c) { c.quadrature.curl.start[1] = c.quadrature.curl.start[2] + 1; }));
+    const auto windFlows = [](const std::function<void(BasisCache&)>& damage) {
+        return errorOfDamaged(damage).find(
+                   "its wind base flows are not one finite face field per axis and direction") !=
+               std::string::npos;
+    };
+    EXPECT_TRUE(windFlows([](BasisCache& c) { c.windBase.pop_back(); }));
+    EXPECT_TRUE(windFlows([](BasisCache& c) { c.windBase[1].pop_back(); }));
+    EXPECT_TRUE(windFlows([](BasisCache& c) { c.windBase[0][3] = std::nan(""); }));
     EXPECT_NE(errorOfDamaged([](BasisCache& c) {
                   c.coefficients.storage = BasisCache::Coefficients::Storage(7);
               }).find("coefficient storage"),

@@ -11,7 +11,6 @@
 #include <cmath>
 #include <cstdio>
 #include <numbers>
-#include <random>
 
 #include "engine/core/MacSampling.h"
 #include "engine/dynamics/FluidSystem.h"
@@ -21,6 +20,7 @@
 #include "engine/run/Backend.h"
 #include "engine/simulation/WindTransport.h"
 #include "precompute/Precompute.h"
+#include "tests/support/EnergyBudget.h"
 #include "tests/support/SmokeTestFields.h"
 #include "tests/support/TestScenes.h"
 #include "tools/compose/RunPreparation.h"
@@ -40,14 +40,6 @@ SceneSpec windBox(int modes, std::array<bool, 3> periodic = {false, false, false
 RunInputs prepared(const SceneSpec& scene) {
     Progress quiet = Progress::silent();
     return prepareRun(scene, computeBasis(scene, quiet), RunParts::Dynamics);
-}
-
-Eigen::VectorXd randomState(int n, unsigned seed) {
-    std::mt19937 random(seed);
-    std::normal_distribution<double> normal;
-    Eigen::VectorXd v(n);
-    for (int k = 0; k < n; ++k) v[k] = normal(random);
-    return v * std::sqrt(2.0 / v.squaredNorm());  // energy ½|v|² = 1
 }
 
 TEST(Wind, AlongAPeriodicAxisItTurnsEachWaveAtItsDiscreteFrequency) {
@@ -87,31 +79,24 @@ TEST(Wind, TheEnergyChangesByWhatTheWindCarriesOutToRoundOff) {
         parameters.linear = wind;
         const FluidSystem system(*run.coefficients, parameters);
         ModalIntegrator integrator(system, IntegratorSettings{Integrator::Midpoint});
-        Eigen::VectorXd v = randomState(system.dimension(), 7);
+        Eigen::VectorXd v = testing::unitEnergyState(system.dimension(), 7);
         const double h = 0.01, e0 = 0.5 * v.squaredNorm();
-        double worstStep = 0.0, worstPower = 0.0, carriedOut = 0.0, drift = 0.0;
-        for (int step = 0; step < 1000; ++step) {
-            const Eigen::VectorXd before = v;
-            integrator.step(v, h);
-            const Eigen::VectorXd mid = 0.5 * (before + v);
-            Eigen::VectorXd dMid;
-            wind->apply(mid, dMid);
-            const double budget = h * mid.dot(dMid),
-                         change = 0.5 * (v.squaredNorm() - before.squaredNorm());
-            const double outflow = wind->outflowPower(mid), shear = wind->shearPower(mid),
-                         power = outflow + shear;
-            worstStep = std::max(worstStep, std::abs(change - budget) / e0);
-            worstPower = std::max(worstPower, std::abs(mid.dot(dMid) + power) /
-                                                  std::max(outflow + std::abs(shear), 1e-300));
-            if (spec.profile == WindProfile::Uniform) {
-                EXPECT_EQ(shear, 0.0);
-            }
-            carriedOut += h * power;
-            drift += change - budget;
-        }
+        double worstPower = 0.0, carriedOut = 0.0;
+        const testing::EnergyBudget budget = testing::midpointEnergyBudget(
+            integrator, *wind, v, h, 1000,
+            [&](const Eigen::VectorXd& mid, const Eigen::VectorXd& dMid) {
+                const double outflow = wind->outflowPower(mid), shear = wind->shearPower(mid),
+                             power = outflow + shear;
+                worstPower = std::max(worstPower, std::abs(mid.dot(dMid) + power) /
+                                                      std::max(outflow + std::abs(shear), 1e-300));
+                if (spec.profile == WindProfile::Uniform) {
+                    EXPECT_EQ(shear, 0.0);
+                }
+                carriedOut += h * power;
+            });
         const double e1 = 0.5 * v.squaredNorm();
-        EXPECT_LE(worstStep, 1e-13);
-        EXPECT_LE(std::abs(drift) / e0, 1e-11);
+        EXPECT_LE(budget.worstStep, 1e-13);
+        EXPECT_LE(budget.drift, 1e-11);
         EXPECT_LE(worstPower, 1e-10) << "vᵀDv is the outflow's kinetic energy flux and the shear's";
         EXPECT_NEAR(e0 - e1, carriedOut, 1e-10 * e0);
         EXPECT_LT(e1, 0.8 * e0) << "the wind carries the disturbance out";
@@ -119,7 +104,7 @@ TEST(Wind, TheEnergyChangesByWhatTheWindCarriesOutToRoundOff) {
             "[ measured ] wind (%g, %g)%s, 1000 midpoint steps: energy %.4f -> %.4f, carried "
             "out and given to the shear %.4f; worst step |dE - h v.Dv| %.1e E0, drift %.1e E0\n",
             u[0], u[1], spec.profile == WindProfile::Uniform ? "" : " in a boundary layer", e0, e1,
-            carriedOut, worstStep, std::abs(drift) / e0);
+            carriedOut, budget.worstStep, budget.drift);
     }
 }
 
@@ -155,7 +140,7 @@ TEST(Wind, EveryIntegratorAdvancesTheWindsTerm) {
     FluidParameters parameters;
     parameters.linear = std::make_shared<WindTransport>(run.cache, WindSpec{{1.2, -0.4, 0.0}});
     const FluidSystem system(*run.coefficients, parameters);
-    const Eigen::VectorXd start = randomState(system.dimension(), 3);
+    const Eigen::VectorXd start = testing::unitEnergyState(system.dimension(), 3);
     const auto advance = [&](Integrator scheme, double h, int steps) {
         ModalIntegrator integrator(system, IntegratorSettings{scheme});
         Eigen::VectorXd v = start;
@@ -219,7 +204,7 @@ TEST(Wind, ABoundaryLayerSlowsTheAirOverTheFloorAndItsShearWorksOnTheDisturbance
     // The shear's term is there: D differs from the uniform wind's with the same factors, and
     // works on a disturbance (the energy identity with it: TheEnergyChangesByWhatTheWindCarries…).
     const WindTransport sheared(run.cache, layer);
-    const Eigen::VectorXd v = randomState(60, 9);
+    const Eigen::VectorXd v = testing::unitEnergyState(60, 9);
     EXPECT_GT(std::abs(sheared.shearPower(v)), 1e-3 * sheared.outflowPower(v));
     WindSpec uniform = layer;
     uniform.profile = WindProfile::Uniform;

@@ -231,9 +231,10 @@ const std::vector<Refusal> kRefusals = {
      {"[wind].velocity: speed 1.4e+300 is beyond 1e+06"}},
     {"WindUnknownKey", k2d, {}, "[wind]\nvelocity = [1, 0]\nprofil = 1\n",
      {"[wind]", "profil"}},
-    {"WindAroundADomain", k2d, {},
-     "[[domain]]\nshape = \"ball\"\ncenter = [0, 0]\nradius = 1\n[wind]\nvelocity = [1, 0]\n",
-     {"[wind]: the wind blows through a whole grid box", "[[obstacle]]"}},
+    {"BoundaryLayerAroundADomain", k2d, {},
+     "[[domain]]\nshape = \"ball\"\ncenter = [0, 0]\nradius = 1\n[wind]\nvelocity = [1, 0]\n"
+     "profile = \"boundary-layer\"\nthickness = 0.2\n",
+     {"[wind].profile: a boundary layer blows through a whole grid box", "[[obstacle]]"}},
     {"WindWithMhd", k2d, {}, "[simulation]\nmhd = true\n[wind]\nvelocity = [1, 0]\n",
      {"[wind]: a wind does not carry a magnetic field"}},
     {"WindMisspelledTable", k2d, {}, "[wnd]\nvelocity = [1, 0]\n", {"wnd", "did you mean wind?"}},

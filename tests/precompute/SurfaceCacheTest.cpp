@@ -64,28 +64,29 @@ TEST(SurfaceCache, RefusesASurfaceBlockThatDoesNotFit) {
     EXPECT_NE(readError(folder / "edges.mfbasis").find("is corrupt"), std::string::npos);
 }
 
-TEST(SurfaceCache, RefusesAQuadratureOrMissingCoefficients) {
+TEST(SurfaceCache, RefusesAQuadratureWindFlowsOrMissingCoefficients) {
     testing::TestFolder folder;
     const BasisCache good = torusCache(folder);
     ASSERT_EQ(good.quadrature.curl.rows(), 0);
     ASSERT_NE(good.coefficients.storage, BasisCache::Coefficients::Storage::None);
+    const std::string refusal = "holds a vorticity quadrature, wind base flows or no coefficients";
+    const auto expectRefused = [&](const char* name, const BasisCache& bad) {
+        writeCache(folder / name, bad);
+        EXPECT_NE(readError(folder / name).find(refusal), std::string::npos)
+            << readError(folder / name);
+    };
     BasisCache bad = good;
     bad.quadrature.curl.start.push_back(0);  // one element without entries
     bad.quadrature.velocityB.start.push_back(0);
     bad.quadrature.velocityC.start.push_back(0);
-    writeCache(folder / "quadrature.mfbasis", bad);
-    EXPECT_NE(readError(folder / "quadrature.mfbasis")
-                  .find("holds a vorticity quadrature or no coefficients"),
-              std::string::npos)
-        << readError(folder / "quadrature.mfbasis");
+    expectRefused("quadrature.mfbasis", bad);
     bad = good;
     bad.coefficients = BasisCache::Coefficients{};
     bad.coefficients.storage = BasisCache::Coefficients::Storage::None;
-    writeCache(folder / "none.mfbasis", bad);
-    EXPECT_NE(
-        readError(folder / "none.mfbasis").find("holds a vorticity quadrature or no coefficients"),
-        std::string::npos)
-        << readError(folder / "none.mfbasis");
+    expectRefused("none.mfbasis", bad);
+    bad = good;
+    bad.windBase.assign(3, std::vector<double>(4, 1.0));  // a surface has no sides to blow at
+    expectRefused("wind.mfbasis", bad);
 }
 
 }  // namespace

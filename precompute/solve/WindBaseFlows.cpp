@@ -1,0 +1,162 @@
+#include "precompute/solve/WindBaseFlows.h"
+
+#include <algorithm>
+#include <numeric>
+#include <string>
+
+#include <Eigen/IterativeLinearSolvers>
+#include <Eigen/SparseCore>
+
+#include "engine/core/Error.h"
+
+namespace modeflow {
+namespace {
+
+using ColMatrix = Eigen::SparseMatrix<double>;
+
+/// |face ∩ Ω| of the face DOF `dof`: its dual edge over its ⋆.
+double fluidArea(const CubicalComplex& cx, const CutCellDec& dec, std::int64_t dof) {
+    const Element f = cx.element(cx.dim() - 1, dec.faces.toGlobal[std::size_t(dof)]);
+    return dualMeasure(cx.grid(), f) / dec.faceStar[dof];
+}
+
+/// The normal axis of a face (its one missing axis).
+int normalOf(const Element& face, int dim) {
+    for (int a = 0; a < dim; ++a)
+        if (!((face.axes >> a) & 1u)) return a;
+    return dim - 1;
+}
+
+/// The connected parts of the fluid: per cell DOF, the representative of its component (cells
+/// joined by a face DOF).
+std::vector<Eigen::Index> components(const ColMatrix& d) {
+    std::vector<Eigen::Index> parent(std::size_t(d.rows()));
+    std::iota(parent.begin(), parent.end(), Eigen::Index(0));
+    const auto root = [&](Eigen::Index c) {
+        while (parent[std::size_t(c)] != c)
+            c = parent[std::size_t(c)] = parent[std::size_t(parent[std::size_t(c)])];
+        return c;
+    };
+    for (Eigen::Index f = 0; f < d.cols(); ++f) {
+        Eigen::Index first = -1;
+        for (ColMatrix::InnerIterator it(d, f); it; ++it) {
+            if (first < 0)
+                first = root(it.row());
+            else
+                parent[std::size_t(root(it.row()))] = first;
+        }
+    }
+    for (Eigen::Index c = 0; c < d.rows(); ++c) parent[std::size_t(c)] = root(c);
+    return parent;
+}
+
+/// One face on a side of the box the wind crosses, and the cell DOF inside it.
+struct SideFace {
+    std::int64_t face, cell;
+    double area, dual;  ///< |face ∩ Ω| and its dual edge (half a cell)
+    bool inflow;        ///< the upstream side
+};
+
+/// The faces of the box's two sides along `a` with fluid, for a wind along `direction` · e_a.
+std::vector<SideFace> sideFaces(const CubicalComplex& cx, const CutCellMeasures& measures,
+                                const CutCellDec& dec, int a, int direction) {
+    const GridSpec& grid = cx.grid();
+    std::vector<SideFace> sides;
+    cx.forEachSideFace(a, [&](const Element& face, const Element& cell) {
+        const std::int64_t g = cx.index(face);
+        const double area = primalMeasure(grid, face.axes) * measures.sideFraction[std::size_t(g)];
+        const std::int64_t c = dec.cells.toLocal[std::size_t(cx.index(cell))];
+        if (area <= 0.0 || c < 0) return;
+        sides.push_back(
+            {g, c, area, dualMeasure(grid, face), (face.pos[a] == 0) == (direction > 0)});
+    });
+    return sides;
+}
+
+}  // namespace
+
+std::vector<std::vector<double>> windBaseFlows(const CubicalComplex& cx,
+                                               const CutCellMeasures& measures,
+                                               const CutCellDec& dec) {
+    const GridSpec& grid = cx.grid();
+    const int n = grid.dim;
+    const ColMatrix d(dec.div);  // outward fluxes of the cells
+    const Eigen::VectorXd conductance = dec.faceStar.cwiseInverse();
+    const ColMatrix poisson = d * conductance.asDiagonal() * d.transpose();
+    const Eigen::Index cells = d.rows(), faces = d.cols();
+    const std::vector<Eigen::Index> component = components(d);
+
+    std::vector<std::vector<double>> flows;
+    for (int a = 0; a < n; ++a)
+        for (const int direction : {1, -1}) {
+            if (direction < 0 && grid.isPeriodic(a)) {  // no sides: the flow is linear in U
+                std::vector<double> reversed = flows.back();
+                for (double& u : reversed) u = -u;
+                flows.push_back(std::move(reversed));
+                continue;
+            }
+            // The unit wind's fluxes through the face DOFs, and what its divergence asks of φ:
+            // (d ⋆⁻¹ dᵀ) φ = d F(wind) + what the sides let out.
+            Eigen::VectorXd wind = Eigen::VectorXd::Zero(faces);
+            for (Eigen::Index f = 0; f < faces; ++f)
+                if (normalOf(cx.element(n - 1, dec.faces.toGlobal[std::size_t(f)]), n) == a)
+                    wind[f] = direction * fluidArea(cx, dec, f);
+            Eigen::VectorXd rhs = d * wind;
+            // Upstream the air comes in at the wind's speed; downstream it leaves at
+            // 1 − φ/dual along the wind (φ = 0 on the side, half a cell from the cell inside).
+            Eigen::VectorXd sideConductance = Eigen::VectorXd::Zero(cells);
+            const std::vector<SideFace> sides = sideFaces(cx, measures, dec, a, direction);
+            std::vector<bool> drained(std::size_t(cells), false);  // by component
+            for (const SideFace& s : sides) {
+                rhs[s.cell] += s.inflow ? -s.area : s.area;
+                if (!s.inflow) {
+                    sideConductance[s.cell] += s.area / s.dual;
+                    drained[std::size_t(component[std::size_t(s.cell)])] = true;
+                }
+            }
+            // Air that enters a part of the fluid with no downstream side has no way out.
+            std::vector<double> net(std::size_t(cells), 0.0);
+            for (Eigen::Index c = 0; c < cells; ++c)
+                net[std::size_t(component[std::size_t(c)])] += rhs[c];
+            bool blocked = false;
+            for (Eigen::Index c = 0; c < cells; ++c)
+                blocked |=
+                    !drained[std::size_t(c)] && component[std::size_t(c)] == c &&
+                    std::abs(net[std::size_t(c)]) > 1e-9 * primalMeasure(grid, (1u << n) - 1);
+            if (blocked) {
+                flows.emplace_back();
+                continue;
+            }
+            ColMatrix system = poisson;
+            system += ColMatrix(sideConductance.asDiagonal());
+            // A component no downstream side reaches (a periodic axis, a pocket) has φ up to a
+            // constant, which its consistent right-hand side does not see; a tiny shift keeps the
+            // solver definite.
+            const double shift = 1e-13 * system.diagonal().cwiseAbs().maxCoeff();
+            for (Eigen::Index i = 0; i < cells; ++i) system.coeffRef(i, i) += shift;
+            Eigen::ConjugateGradient<ColMatrix, Eigen::Lower | Eigen::Upper,
+                                     Eigen::IncompleteCholesky<double>>
+                solver;
+            solver.setTolerance(1e-13);
+            solver.setMaxIterations(int(std::min<Eigen::Index>(20 * cells + 100, 1 << 30)));
+            solver.compute(system);
+            const Eigen::VectorXd phi = solver.solve(rhs);
+            if (solver.info() != Eigen::Success)
+                throw Error("wind base flow along axis " + std::to_string(a) +
+                            ": the Poisson solve over " + std::to_string(cells) +
+                            " cells did not converge (residual " + std::to_string(solver.error()) +
+                            ")");
+            const Eigen::VectorXd fluxes = wind - conductance.cwiseProduct(d.transpose() * phi);
+            std::vector<double> flow(std::size_t(cx.count(n - 1)), 0.0);
+            for (Eigen::Index f = 0; f < faces; ++f)
+                flow[std::size_t(dec.faces.toGlobal[std::size_t(f)])] =
+                    fluxes[f] / fluidArea(cx, dec, f);
+            for (const SideFace& s : sides)
+                flow[std::size_t(s.face)] =
+                    direction * (s.inflow ? 1.0 : 1.0 - phi[s.cell] / s.dual);
+            flows.push_back(std::move(flow));
+        }
+    return flows;
+}
+
+}  // namespace modeflow

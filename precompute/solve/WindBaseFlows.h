@@ -1,0 +1,29 @@
+#pragma once
+/// @file WindBaseFlows.h
+/// The held flows a wind makes around [[domain]] walls (engine/README.md, "Wind"): per axis a and
+/// direction ±, the potential flow B = ±e_a + ∇φ of a unit wind, with no flux through the walls
+/// (cut-cell faces carry |face ∩ Ω|·B). The air enters through the upstream side at the wind's
+/// speed, uniform over the side's fluid part, and leaves through the downstream side, where
+/// φ = 0 (the potential's disturbance dies there, and the outflow takes whatever shape the walls
+/// give it); along a periodic axis it wraps. A wind U blows as Σ_a |U_a| B_(a, sign U_a):
+/// divergence-free in every cut cell, irrotational, tangent to the walls, and the constant U in a
+/// whole box.
+
+#include <vector>
+
+#include "precompute/dec/CubicalComplex.h"
+#include "precompute/dec/CutCellDec.h"
+#include "precompute/dec/CutCellMeasures.h"
+
+namespace modeflow {
+
+/// 2·dim flows, entry 2a + 0 for a unit wind along +a (entering at the low side) and 2a + 1 along
+/// −a: the face-normal velocity on every face of the complex (0 where the face has no fluid), in
+/// CubicalComplex (= MacGrid) face numbering. An entry is empty where no such wind can blow: air
+/// entering the upstream side with no way to the downstream one (walls between).
+/// @throw modeflow::Error when a Poisson solve does not converge.
+std::vector<std::vector<double>> windBaseFlows(const CubicalComplex& complex,
+                                               const CutCellMeasures& measures,
+                                               const CutCellDec& dec);
+
+}  // namespace modeflow
