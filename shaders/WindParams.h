@@ -15,7 +15,7 @@ struct WindParams {
     uint faceTotal;
     uint periodic; /* bit a: axis a is periodic (its faces have no wall) */
     uint cells[3];
-    uint pad0;
+    uint open; /* bit 2a + (0 low, 1 high): that side is open (its faces are DOFs, no wall) */
 };
 
 #ifdef __cplusplus

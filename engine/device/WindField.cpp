@@ -40,6 +40,8 @@ void WindField::record(vulkan::CommandSequence& sequence,
     params.faceTotal = std::uint32_t(mGrid.faceTotal());
     params.periodic = mGrid.periodicBits();
     for (int a = 0; a < 3; ++a) params.cells[a] = std::uint32_t(mGrid.cells[a]);
+    for (int side = 0; side < 6; ++side)
+        if (mGrid.open[std::size_t(side)]) params.open |= 1u << side;
     const std::array<const vulkan::DeviceBuffer*, 2> buffers{&faceField, &mBase};
     sequence.dispatch(mKernel, buffers, params, mGroups);
 }

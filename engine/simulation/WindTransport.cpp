@@ -89,13 +89,17 @@ double WindTransport::upVelocityBeside(const std::vector<double>& fluxes, int a,
 }
 
 void WindTransport::samplePotentialPart(const std::vector<double>& base) {
-    // The fluxes of B − U through the face DOFs (none lies on a wall: |face ∩ Ω| = h_c / ⋆).
+    // The fluxes of B − U through the face DOFs: |face ∩ Ω| = |dual edge| / ⋆, the dual edge
+    // h_c, or half of it on an open side.
     Eigen::VectorXd potential(Eigen::Index(mCache.faces.size()));
     for (std::size_t d = 0; d < mCache.faces.size(); ++d) {
         const std::int64_t face = mCache.faces[d];
-        const int c = locateFace(mGrid, face).axis;
+        const FaceLocation at = locateFace(mGrid, face);
+        const int c = at.axis;
+        const bool onSide = !mGrid.periodic[c] && (at.pos[c] == 0 || at.pos[c] == mGrid.cells[c]);
         potential[Eigen::Index(d)] = (base[std::size_t(face)] - mWind.velocity[c]) *
-                                     mGrid.spacing[c] / mCache.faceStar[Eigen::Index(d)];
+                                     (onSide ? 0.5 : 1.0) * mGrid.spacing[c] /
+                                     mCache.faceStar[Eigen::Index(d)];
     }
     mPotentialB = sample(mCache.quadrature.velocityB, potential);
     mPotentialC = sample(mCache.quadrature.velocityC, potential);

@@ -16,12 +16,6 @@ WindSpec readWind(const TomlReader& reader, const Section& s, const SceneSpec& s
     reader.checkKeys(s, kWindKeys);
     if (scene.isSurface())
         reader.fail(s.name, "a surface is closed: no wind blows through it", &s.table);
-    // The wind's modes are a closed box's: its own sides are where it enters and leaves.
-    if (scene.grid.anyOpen())
-        reader.fail(s.name,
-                    "a wind opens the box's upstream and downstream sides itself: leave out "
-                    "[grid].open",
-                    &s.table);
     if (scene.simulation.mhd)
         reader.fail(s.name, "a wind does not carry a magnetic field ([simulation] mhd)", &s.table);
     WindSpec wind;
@@ -33,6 +27,15 @@ WindSpec readWind(const TomlReader& reader, const Section& s, const SceneSpec& s
                     "speed " + roughNumber(speed) + " is beyond " + roughNumber(kMaxInitialSpeed) +
                         " scene units per unit time",
                     s.table.get("velocity"));
+    // The wind enters and leaves through the sides along it, which hold it to its own flow; the
+    // other sides may be open (an open top over a fire in a breeze).
+    for (int a = 0; a < scene.grid.dim; ++a)
+        if (v[std::size_t(a)] != 0.0 && scene.grid.opensAxis(a))
+            reader.fail(s, "velocity",
+                        std::string("the wind blows along ") + axisName(a) +
+                            ", whose sides it opens itself: leave " + axisName(a) + "_min and " +
+                            axisName(a) + "_max out of [grid].open",
+                        s.table.get("velocity"));
     // What comes in with the air, as a source's rates are read.
     wind.density = readSmokeValue(reader, s, "density", 0.0, Sign::NonNegative);
     wind.temperature = readSmokeValue(reader, s, "temperature", 0.0);
@@ -59,6 +62,11 @@ WindSpec readWind(const TomlReader& reader, const Section& s, const SceneSpec& s
         reader.fail(s, "profile",
                     std::string("a boundary layer grows over the floor, and this scene's ") +
                         (up == 1 ? "y" : "z") + " axis (up) is periodic: it has none",
+                    s.table.get("profile"));
+    if (scene.grid.open[std::size_t(2 * up)])
+        reader.fail(s, "profile",
+                    std::string("a boundary layer grows over the floor, and this scene's ") +
+                        axisName(up) + "_min is open",
                     s.table.get("profile"));
     if (v[std::size_t(up)] != 0.0)
         reader.fail(s, "velocity",

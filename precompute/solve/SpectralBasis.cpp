@@ -2,13 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/SparseCholesky>
 
 #include "engine/core/Error.h"
 #include "engine/core/KappaSquared.h"
+#include "precompute/dec/FluidComponents.h"
 #include "precompute/solve/Laplacians.h"
 #include "precompute/solve/ProcessGroup.h"
 #include "precompute/solve/SlicedEigensolver.h"
@@ -18,11 +18,6 @@ namespace {
 
 /// Below this size a dense solve is cheaper and exact for any count.
 constexpr Eigen::Index kDenseLimit = 1200;
-
-int find(std::vector<int>& parent, int i) {
-    while (parent[i] != i) i = parent[i] = parent[parent[i]];
-    return i;
-}
 
 std::string plural(std::int64_t n, const char* word) {
     return std::to_string(n) + " " + word + (n == 1 ? "" : "s");
@@ -58,25 +53,7 @@ double referenceEigenvalue(const GridSpec& grid) {
 }
 
 int closedComponents(const CutCellDec& dec) {
-    std::vector<int> parent(size_t(dec.cells.size()));
-    std::iota(parent.begin(), parent.end(), 0);
-    const SparseMatrix faceRows = dec.div.transpose();
-    std::vector<int> openFaceCells;  // a face on an open side has one cell
-    for (std::int64_t f = 0; f < faceRows.outerSize(); ++f) {
-        int first = -1, cells = 0;
-        for (SparseMatrix::InnerIterator it(faceRows, f); it; ++it, ++cells) {
-            if (first < 0)
-                first = int(it.col());
-            else
-                parent[find(parent, int(it.col()))] = find(parent, first);
-        }
-        if (cells == 1) openFaceCells.push_back(first);
-    }
-    std::vector<bool> open(parent.size(), false);
-    for (int c : openFaceCells) open[size_t(find(parent, c))] = true;
-    int count = 0;
-    for (size_t i = 0; i < parent.size(); ++i) count += find(parent, int(i)) == int(i) && !open[i];
-    return count;
+    return fluidComponents(dec).closedCount();
 }
 
 std::int64_t divergenceFreeDimension(const CutCellDec& dec) {

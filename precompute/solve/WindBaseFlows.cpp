@@ -1,13 +1,13 @@
 #include "precompute/solve/WindBaseFlows.h"
 
 #include <algorithm>
-#include <numeric>
 #include <string>
 
 #include <Eigen/IterativeLinearSolvers>
 #include <Eigen/SparseCore>
 
 #include "engine/core/Error.h"
+#include "precompute/dec/FluidComponents.h"
 
 namespace modeflow {
 namespace {
@@ -25,29 +25,6 @@ int normalOf(const Element& face, int dim) {
     for (int a = 0; a < dim; ++a)
         if (!((face.axes >> a) & 1u)) return a;
     return dim - 1;
-}
-
-/// The connected parts of the fluid: per cell DOF, the representative of its component (cells
-/// joined by a face DOF).
-std::vector<Eigen::Index> components(const ColMatrix& d) {
-    std::vector<Eigen::Index> parent(std::size_t(d.rows()));
-    std::iota(parent.begin(), parent.end(), Eigen::Index(0));
-    const auto root = [&](Eigen::Index c) {
-        while (parent[std::size_t(c)] != c)
-            c = parent[std::size_t(c)] = parent[std::size_t(parent[std::size_t(c)])];
-        return c;
-    };
-    for (Eigen::Index f = 0; f < d.cols(); ++f) {
-        Eigen::Index first = -1;
-        for (ColMatrix::InnerIterator it(d, f); it; ++it) {
-            if (first < 0)
-                first = root(it.row());
-            else
-                parent[std::size_t(root(it.row()))] = first;
-        }
-    }
-    for (Eigen::Index c = 0; c < d.rows(); ++c) parent[std::size_t(c)] = root(c);
-    return parent;
 }
 
 /// One face on a side of the box the wind crosses, and the cell DOF inside it.
@@ -84,7 +61,7 @@ std::vector<std::vector<double>> windBaseFlows(const CubicalComplex& cx,
     const Eigen::VectorXd conductance = dec.faceStar.cwiseInverse();
     const ColMatrix poisson = d * conductance.asDiagonal() * d.transpose();
     const Eigen::Index cells = d.rows(), faces = d.cols();
-    const std::vector<Eigen::Index> component = components(d);
+    const FluidComponents parts = fluidComponents(dec);
 
     std::vector<std::vector<double>> flows;
     for (int a = 0; a < n; ++a)
@@ -106,22 +83,23 @@ std::vector<std::vector<double>> windBaseFlows(const CubicalComplex& cx,
             // 1 − φ/dual along the wind (φ = 0 on the side, half a cell from the cell inside).
             Eigen::VectorXd sideConductance = Eigen::VectorXd::Zero(cells);
             const std::vector<SideFace> sides = sideFaces(cx, measures, dec, a, direction);
-            std::vector<bool> drained(std::size_t(cells), false);  // by component
+            // By component: whether the air may leave it (a downstream side, an open side).
+            std::vector<bool> drained = parts.open;
             for (const SideFace& s : sides) {
                 rhs[s.cell] += s.inflow ? -s.area : s.area;
                 if (!s.inflow) {
                     sideConductance[s.cell] += s.area / s.dual;
-                    drained[std::size_t(component[std::size_t(s.cell)])] = true;
+                    drained[std::size_t(parts.of[std::size_t(s.cell)])] = true;
                 }
             }
             // Air that enters a part of the fluid with no downstream side has no way out.
             std::vector<double> net(std::size_t(cells), 0.0);
             for (Eigen::Index c = 0; c < cells; ++c)
-                net[std::size_t(component[std::size_t(c)])] += rhs[c];
+                net[std::size_t(parts.of[std::size_t(c)])] += rhs[c];
             bool blocked = false;
             for (Eigen::Index c = 0; c < cells; ++c)
                 blocked |=
-                    !drained[std::size_t(c)] && component[std::size_t(c)] == c &&
+                    !drained[std::size_t(c)] && parts.of[std::size_t(c)] == c &&
                     std::abs(net[std::size_t(c)]) > 1e-9 * primalMeasure(grid, (1u << n) - 1);
             if (blocked) {
                 flows.emplace_back();

@@ -5,9 +5,10 @@
 /// (cut-cell faces carry |face ∩ Ω|·B). The air enters through the upstream side at the wind's
 /// speed, uniform over the side's fluid part, and leaves through the downstream side, where
 /// φ = 0 (the potential's disturbance dies there, and the outflow takes whatever shape the walls
-/// give it); along a periodic axis it wraps. A wind U blows as Σ_a |U_a| B_(a, sign U_a):
-/// divergence-free in every cut cell, irrotational, tangent to the walls, and the constant U in a
-/// whole box.
+/// give it); along a periodic axis it wraps, and through the box's open sides ([grid] open, on
+/// other axes) it may leave as the modes do (φ = 0 there too). A wind U blows as Σ_a |U_a| B_(a,
+/// sign U_a): divergence-free in every cut cell, irrotational, tangent to the walls, and the
+/// constant U in a whole box.
 
 #include <vector>
 

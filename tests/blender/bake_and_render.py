@@ -100,14 +100,19 @@ domain.modeflow.domain_shape = 'BOX'
 domain.modeflow.wind = (0.0, 0.0, 0.0)
 if "wind" in windy_scene():
     fail("still air was written as a wind")
-# Open Sides are written as [grid] open, in the box's order; not with a wind.
+# Open Sides are written as [grid] open, in the box's order; with a wind, none along it.
 if "open" in windy_scene()["grid"]:
     fail("a closed box was written with open sides")
 domain.modeflow.open_sides = {'z_max', 'x_min'}
 if windy_scene()["grid"].get("open") != ["x_min", "z_max"]:
     fail(f"the open sides were written as {windy_scene()['grid'].get('open')}")
 domain.modeflow.wind = (1.0, 0.0, 0.0)
-expect_refused("open sides with a wind", "Open Sides")
+expect_refused("an open side along the wind", "Open Sides x_min")
+domain.modeflow.open_sides = {'z_max'}
+breezy = windy_scene()
+if breezy["grid"].get("open") != ["z_max"] or breezy.get("wind") != {"velocity": [1.0, 0.0, 0.0]}:
+    fail(f"a breeze under an open top was written as {breezy['grid'].get('open')}, "
+         f"{breezy.get('wind')}")
 domain.modeflow.wind = (0.0, 0.0, 0.0)
 domain.modeflow.open_sides = set()
 

@@ -570,8 +570,9 @@ TEST_P(SimulationTest, AWindMatchesTheCpuReference) {
     // tracers: the modes' D v, the wind added to each reconstruction, the open sides and the
     // clean air coming in upstream, on the device as on the CPU. The wind crosses two axes, so
     // inflow and outflow meet at the corners; a boundary layer over the floor; and a uniform wind
-    // round a [[domain]] hole (the cache's potential flow, its vorticity-form term).
-    for (const int variant : {0, 1, 2, 3}) {
+    // round a [[domain]] hole (the cache's potential flow, its vorticity-form term); and under an
+    // open top.
+    for (const int variant : {0, 1, 2, 3, 4}) {
         const int dim = variant == 1 ? 3 : 2;
         SceneSpec scene =
             dim == 2 ? testing::gridScene({32, 16, 1}, {0.0, 0.0, 0.0}, {2.0, 1.0, 0.0}, 2)
@@ -585,17 +586,21 @@ TEST_P(SimulationTest, AWindMatchesTheCpuReference) {
                      : variant == 1 ? WindSpec{{0.5, 0.0, -0.4}}
                      : variant == 2 ? WindSpec{{0.8, 0.0, 0.0}, WindProfile::BoundaryLayer, 0.4}
                                     : WindSpec{{0.8, 0.2, 0.0}};
-        if (variant == 3)
+        if (variant >= 3)
             scene.domain = {testing::box({-1.0, -1.0, 0.0}, {3.0, 2.0, 0.0}),
                             testing::ball({1.45, 0.55, 0.0}, 0.17, CsgOp::Subtract)};
+        if (variant == 4) {
+            scene.grid.open[3] = true;
+            scene.wind = WindSpec{{0.8, 0.0, 0.0}};
+        }
         SourceSpec source;
         source.shape = testing::ball(dim == 2 ? Vec3{0.3, 0.5, 0.0} : Vec3{0.25, 0.5, 0.6}, 0.12);
         source.density = source.temperature = 1.0;
         scene.sources = {source};
         const RunInputs run = testing::sharedRun(scene);
         ASSERT_EQ(run.cache.velocity.source,
-                  variant == 3 ? BasisSource::Eigensolve : BasisSource::ClosedForm);
-        ASSERT_EQ(run.cache.windBase.size(), variant == 3 ? 4u : 0u);
+                  variant >= 3 ? BasisSource::Eigensolve : BasisSource::ClosedForm);
+        ASSERT_EQ(run.cache.windBase.size(), variant >= 3 ? 4u : 0u);
         SimulationSettings settings = run.settings;
         ASSERT_TRUE(settings.wind.has_value());
         // Off the face lattice: a face centre at exactly the radius is covered or not by the
@@ -631,6 +636,7 @@ TEST_P(SimulationTest, AWindMatchesTheCpuReference) {
             std::cout << dim << "D wind"
                       << (variant == 2   ? " in a boundary layer"
                           : variant == 3 ? " round a domain hole"
+                          : variant == 4 ? " round a domain hole under an open top"
                                          : "")
                       << ", 10 steps: relative max differences: modes " << d.modes
                       << ", grid velocity " << d.faceVelocity << ", density " << d.density

@@ -583,10 +583,14 @@ const std::vector<Refusal> kRefusals = {
                                "open = [\"x_min\"]\n"},
       basis("velocity_modes = 4")},
      "", {"[grid].open[0]: \"x_min\" lies across a periodic axis"}},
-    {"OpenWithWind", kSquare, {openSides("[\"y_max\"]"), basis("velocity_modes = 4")},
+    {"OpenAlongTheWind", kSquare, {openSides("[\"y_max\", \"x_min\"]"), basis("velocity_modes = 4")},
      "[wind]\nvelocity = [1, 0]\n",
-     {"[wind]: a wind opens the box's upstream and downstream sides itself: leave out "
-      "[grid].open"}},
+     {"[wind].velocity: the wind blows along x, whose sides it opens itself: leave x_min and "
+      "x_max out of [grid].open"}},
+    {"BoundaryLayerOverAnOpenFloor", kSquare,
+     {openSides("[\"y_min\"]"), basis("velocity_modes = 4")},
+     "[wind]\nvelocity = [1, 0]\nprofile = \"boundary-layer\"\nthickness = 0.2\n",
+     {"[wind].profile: a boundary layer grows over the floor, and this scene's y_min is open"}},
     // A 4 × 4 torus has 32 faces (a walled 4 × 4 box 40): mode 36 lies beyond it.
     {"ModeBeyondTheFacesOfATorus", kSquare,
      {{"[8, 8]", "[4, 4]"}, periodicFlags("[true, true]"),

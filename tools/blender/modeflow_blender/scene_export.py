@@ -138,9 +138,15 @@ def scene_of(domain, context, folder):
                                  "its Z must be 0")
             description["wind"].update(profile="boundary-layer", thickness=float(settings.wind_layer))
     if settings.open_sides:
-        if any(settings.wind):
-            raise ValueError("modeflow: a wind opens the box's upstream and downstream sides "
-                             "itself: clear Open Sides, or the wind")
+        for axis, name in enumerate("xyz"):
+            along = {f"{name}_min", f"{name}_max"} & set(settings.open_sides)
+            if settings.wind[axis] != 0.0 and along:
+                raise ValueError(f"modeflow: the wind blows along {name.upper()}, whose sides it "
+                                 f"opens itself: clear Open Sides {', '.join(sorted(along))}, "
+                                 "or the wind")
+        if settings.wind_layer > 0.0 and any(settings.wind) and "z_min" in settings.open_sides:
+            raise ValueError("modeflow: a boundary layer grows over the floor: clear Open Sides "
+                             "z_min, or the Wind Layer")
         order = ["x_min", "x_max", "y_min", "y_max", "z_min", "z_max"]
         description["grid"]["open"] = [side for side in order if side in settings.open_sides]
     if settings.domain_shape == 'MESH':
