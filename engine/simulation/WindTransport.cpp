@@ -47,14 +47,7 @@ WindTransport::WindTransport(const BasisCache& cache, const WindSpec& wind)
             throw Error("wind: face DOF " + std::to_string(face) + " is not a face of the grid");
         mStar[std::size_t(face)] = cache.faceStar[Eigen::Index(d)];
     }
-    if (!cache.windBase.empty()) {
-        if (wind.profile != WindProfile::Uniform)
-            throw Error(
-                "wind: a boundary layer over [[domain]] walls is not built (its held flow is "
-                "not a potential flow); blow a uniform wind, or stand the solids in it as "
-                "[[obstacle]]s");
-        samplePotentialPart(windBaseFlow(cache, wind));
-    }
+    if (!cache.windBase.empty()) samplePotentialPart(windBaseFlow(cache, wind));
     // f and f' at each row height, per face lattice: the evaluations read these, not pow().
     const int up = upAxis(mGrid);
     for (int c = 0; c < mGrid.dim; ++c)
@@ -236,7 +229,9 @@ std::vector<double> windBaseFlow(const BasisCache& cache, const WindSpec& wind) 
         return base;
     }
     if (wind.profile != WindProfile::Uniform)
-        throw Error("wind: a boundary layer over [[domain]] walls is not built");
+        throw Error(
+            "wind: a boundary layer over [[domain]] walls is not built (its held flow is not a "
+            "potential flow); blow a uniform wind, or stand the solids in it as [[obstacle]]s");
     const char* axisName[] = {"x", "y", "z"};
     for (int a = 0; a < grid.dim; ++a) {
         if (wind.velocity[a] == 0.0) continue;
