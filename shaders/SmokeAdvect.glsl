@@ -13,8 +13,9 @@
    renormalized; no fluid weight left: the cell keeps its own value. Along periodic axes traces
    leave through one end and come in through the other: the stencils wrap (MacSampling.glsl).
    With a wind the sides it crosses are open (their faces carry its velocity) and the upstream
-   ones bring in its air: ghost cells beyond them hold the inflow's values in the sample and its
-   clamp range. Open sides ([grid] open) are inflow sides of clean air. MacCormack's traces ahead
+   ones bring in its air: ghost cells beyond them hold the outside air's values (OutsideAir: the
+   wind's, or an [[inflow]]'s where it meets the side) in the sample and its clamp range. Open
+   sides ([grid] open) are inflow sides of clean air. MacCormack's traces ahead
    read no ghosts: they leave the box only where the air leaves it.
    smoke_face_pairs.comp runs first each step. Cells outside the fluid mask are never written:
    SmokeState keeps them 0.
@@ -77,6 +78,7 @@ layout(std430, set = 0, binding = 5) writeonly buffer Record { uint64_t record[]
 #endif
 layout(std430, set = 0, binding = 6) writeonly buffer FieldsOut { uint64_t fieldsOut[]; };
 layout(std430, set = 0, binding = 7) writeonly buffer TemperatureOut { float temperatureOut[]; };
+layout(set = 0, binding = 8) uniform usamplerBuffer ghosts;  // OutsideAir's, one a texel
 layout(push_constant) uniform Push { SmokeAdvectParams params; };
 
 // The 64-bit word `index` of a word texel buffer (RG32UI) as two floats.
@@ -143,6 +145,42 @@ vec3 traceEnd(vec3 start, vec3 u0, vec3 step) {
     return start - velocityAt(mid) * step;
 }
 
+// What the ghost cell a sample at `g` reaches beyond the inflow sides (`sides`, SMOKE_INFLOW_*
+// bits) holds for this pair, as OutsideAir::ghostOf picks it: beyond the side it reaches
+// farthest past (the first on a tie), at the cell its other coordinates fall in (clamped to the
+// box, wrapped along periodic axes; a non-finite one at 0).
+vec2 ghostAt(vec3 g, uint sides) {
+    const ivec3 cells = ivec3(params.cellsX, params.cellsY, params.cellsZ);
+    int side = 0;
+    float least = 2.0;
+    [[unroll]] for (int a = 0; a < SMOKE_DIM; ++a) {
+        const float low = clamp(g[a] + 0.5, 0.0, 1.0);
+        if ((sides & (1u << (SMOKE_INFLOW_LOW + uint(a)))) != 0u && low < least) {
+            least = low;
+            side = 2 * a;
+        }
+        const float high = clamp(float(cells[a]) + 0.5 - g[a], 0.0, 1.0);
+        if ((sides & (1u << (SMOKE_INFLOW_HIGH + uint(a)))) != 0u && high < least) {
+            least = high;
+            side = 2 * a + 1;
+        }
+    }
+    const int axis = side / 2;
+    const ivec2 along = ivec2(axis == 0 ? 1 : 0, axis == 2 ? 1 : 2);
+    ivec2 at;
+    [[unroll]] for (int k = 0; k < 2; ++k) {
+        const int b = along[k], n = cells[b];
+        const float x = isnan(g[b]) || isinf(g[b]) ? 0.0 : clamp(floor(g[b]), -float(n), 2.0 * float(n));
+        at[k] = isPeriodic(params.boundary, b) ? ((int(x) % n) + n) % n : clamp(int(x), 0, n - 1);
+    }
+    // The sides' ghosts one after the other: x_min, x_max, y_min, ...
+    const int total = cells.x * cells.y * cells.z;
+    int first = (side & 1) * (total / cells[axis]);
+    for (int a = 0; a < axis; ++a) first += 2 * (total / cells[a]);
+    const uvec4 ghost = texelFetch(ghosts, first + at.x + cells[along.x] * at.y);
+    return params.ghostPair == 0u ? uintBitsToFloat(ghost.xy) : vec2(uintBitsToFloat(ghost.z), 0.0);
+}
+
 // A masked trilinear sample of (density, temperature) from `fields` (in or hat), and the range of the
 // fluid cells of its stencil (lo > hi: none).
 struct FluidSample {
@@ -184,7 +222,7 @@ FluidSample sampleFluid(usamplerBuffer fields, vec3 g, vec2 fallback, bool ghost
             }
     taken.value = weight > 0.0 ? sum / weight : fallback;
     // Within a cell of an inflow side the trilinear weights reach the ghost cells beyond it,
-    // which hold what the inflow brings: the in-box share of the sample, as on the CPU.
+    // which hold what the outside air brings: the in-box share of the sample, as on the CPU.
     float share = 1.0;
     const uint inflowSides = ghosts ? params.boundary : 0u;
     [[unroll]] for (int a = 0; a < SMOKE_DIM; ++a) {
@@ -194,7 +232,7 @@ FluidSample sampleFluid(usamplerBuffer fields, vec3 g, vec2 fallback, bool ghost
             share *= clamp(float(cells[a]) + 0.5 - g[a], 0.0, 1.0);
     }
     if (share < 1.0) {
-        const vec2 inflow = vec2(params.inflowFirst, params.inflowSecond);
+        const vec2 inflow = ghostAt(g, inflowSides);
         taken.value = share * taken.value + (1.0 - share) * inflow;
         if (weight > 0.0) {  // the clamp range takes the inflow's value in (none without fluid)
             taken.lo = min(taken.lo, inflow);

@@ -60,8 +60,9 @@ struct SmokeAdvectParams {
     float stepY;
     float stepZ;
     float dt;
-    float inflowFirst;  /* what the ghost cells beyond the inflow sides hold: the pair's first */
-    float inflowSecond; /* and second field (the wind's density and temperature; no fuel) */
+    uint ghostPair; /* the fields of the ghosts (binding 8, OutsideAir) this pair reads: 0 its
+                       (density, temperature), 1 its (fuel, 0) */
+    uint pad2;
     uint pad0;
     uint pad1;
 };

@@ -8,7 +8,7 @@
 // exact inverse of the reconstruction) reads it as it is, with no gather over the whole grid,
 // and modal_correct.comp subtracts the result from v. One invocation per face
 // of the box of cells around the regions (the host's ObstacleCorrection: no face beyond it is in
-// any region's reach), wall faces left at 0; the first covering obstacle decides. Along periodic
+// any region's reach), faces that are no DOF (walls) skipped; the first covering obstacle decides. Along periodic
 // axes an obstacle covers at the minimum-image offset (it reaches over the seam), and the box
 // wraps.
 #extension GL_GOOGLE_include_directive : require
@@ -41,8 +41,8 @@ void main() {
     const uvec3 cells = uvec3(params.cells[0], params.cells[1], params.cells[2]);
     for (uint a = 0u; a < 3u; ++a)
         if ((params.periodic & (1u << a)) != 0u) p[a] = (p[a] % int(cells[a]) + int(cells[a])) % int(cells[a]);
+    // A side's faces are DOFs where it is open (a jet through it); walls are none.
     const bool periodicAxis = (params.periodic & (1u << axis)) != 0u;
-    if (!periodicAxis && (p[axis] == 0 || p[axis] == int(cells[axis]))) return;  // a wall
     uvec3 extent = cells;
     if (!periodicAxis) extent[axis] += 1u;
     const uint start = axis == 0u ? 0u : (axis == 1u ? params.faceStart1 : params.faceStart2);

@@ -13,9 +13,12 @@ inline constexpr int maxSmokeEmitters = 64;
 /// obstacle in turn).
 inline constexpr int maxObstacles = 64;
 
-/// The most regions the velocity correction holds at once: every obstacle and every source
-/// that drives the air (`velocity`).
-inline constexpr int maxVelocityRegions = maxObstacles + maxSmokeEmitters;
+/// The most `[[inflow]]` patches one scene takes (they share the box's sides).
+inline constexpr int maxInflows = 16;
+
+/// The most regions the velocity correction holds at once: every obstacle, every source and
+/// every inflow that drives the air (`velocity`).
+inline constexpr int maxVelocityRegions = maxObstacles + maxSmokeEmitters + maxInflows;
 
 /// The most `[[particles]]` sets one scene takes.
 inline constexpr int maxParticleSets = 64;

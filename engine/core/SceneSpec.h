@@ -235,6 +235,21 @@ struct WindSpec {
     bool operator==(const WindSpec&) const = default;
 };
 
+/// `[[inflow]]`: air let in through part of a side the air crosses — an open side (`[grid] open`)
+/// or a wind's upstream side (engine/README.md, "Inflows"). Where its ball or box meets the side,
+/// the air coming in carries its `density`, `temperature` and `fuel` (elsewhere: clean air, or
+/// the wind's); with a `velocity`, the air inside the shape is driven to it, as a jet source's.
+struct InflowSpec {
+    int side = 0;     ///< 2·axis + (0: the `_min` side, 1: the `_max` side)
+    ShapeSpec shape;  ///< a ball or a box that meets the side's plane
+    std::optional<Vec3> velocity = std::nullopt;
+    double density = 0.0;  ///< concentrations of the air it lets in (0: clean, cool air)
+    double temperature = 0.0;
+    double fuel = 0.0;
+    double start = 0.0;  ///< lets air in while start ≤ t < end (simulated seconds)
+    double end = std::numeric_limits<double>::infinity();
+};
+
 /// `[forcing]`: velocity modes held at their initial amplitudes for the whole run. Held low modes
 /// keep feeding energy to the others, the forcing of turbulence studies (seed §6.4, Fig. 6.9).
 struct ForcingSpec {
@@ -292,6 +307,7 @@ struct SceneSpec {
     SmokeSpec smoke;
     std::optional<FireSpec> fire;  ///< none: no `[fire]`, no fuel
     std::optional<WindSpec> wind;  ///< none: still air, sealed in the box
+    std::vector<InflowSpec> inflows;
     ForcingSpec forcing;
     OutputSpec output;
 

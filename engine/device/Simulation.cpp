@@ -85,6 +85,7 @@ Simulation::Simulation(const vulkan::VulkanContext& context, const BasisCache& c
         mWind->record(mSequence, mFaceVelocity);
         mSequence.submitAndWait();
     }
+    requireInflowsMeetFluid(mSmoke.outsideAir(), mSettings.inflows, smokeMask);
 }
 
 void Simulation::restore(double time, const Eigen::VectorXd& v, const SmokeFields& smoke) {
@@ -172,6 +173,13 @@ void Simulation::recordStep(std::vector<std::size_t>& boundaries) {
     if (active != mActiveEmitters || moving) {
         mSmoke.setEmitters(activeEmitters(mSettings.emitters, mTime));
         mActiveEmitters = std::move(active);
+    }
+    std::vector<bool> letIn(mSettings.inflows.size());
+    for (std::size_t i = 0; i < letIn.size(); ++i)
+        letIn[i] = mSettings.inflows[i].region.activeAt(mTime);
+    if (letIn != mActiveInflows) {
+        mSmoke.setInflows(activeInflows(mSettings.inflows, mTime));
+        mActiveInflows = std::move(letIn);
     }
     boundaries.push_back(mSequence.dispatchCount());
     if (forcesActive()) {

@@ -109,6 +109,7 @@ private:
     mutable vulkan::CommandSequence
         mSequence;                      ///< also records faceMagneticField()'s reconstruction
     std::vector<bool> mActiveEmitters;  ///< what the device's emitter list holds now
+    std::vector<bool> mActiveInflows;   ///< the inflows the device's ghosts hold now
     /// Modal substeps per step: doubled when an implicit solve fails to converge, halved again
     /// after a long run of easy steps (see advanceFrame()).
     int mSubsteps = 1;

@@ -57,14 +57,14 @@ shaders::SmokeFacePairsParams pairParams(const MacGrid& basis) {
     return p;
 }
 
-/// One of the smoke_advect_<stage>_<dim>d kernels (bindings 0-7 of shaders/SmokeAdvect.glsl):
+/// One of the smoke_advect_<stage>_<dim>d kernels (bindings 0-8 of shaders/SmokeAdvect.glsl):
 /// the read-only inputs as texels, and MacCormack's hat and record too in the correction, which
 /// reads what the forward stage wrote.
 /// `unitScale`: the variant for a smoke grid equal to the basis grid (SmokeAdvect.glsl).
 vulkan::ComputeKernel advectKernel(const vulkan::VulkanContext& context, const char* name,
                                    std::span<const std::uint32_t> spirv, std::uint32_t stage,
                                    std::uint32_t workgroupSize, bool unitScale) {
-    std::vector<std::uint32_t> texels{1}, words{0, 3}, floats{2};
+    std::vector<std::uint32_t> texels{1, 8}, words{0, 3}, floats{2};
     if (stage == SMOKE_STAGE_MACCORMACK_CORRECT) {
         texels.push_back(5);
         words.push_back(4);
@@ -72,7 +72,7 @@ vulkan::ComputeKernel advectKernel(const vulkan::VulkanContext& context, const c
     return vulkan::ComputeKernel(context,
                                  vulkan::ComputeKernelSpec{name,
                                                            spirv,
-                                                           8,
+                                                           9,
                                                            sizeof(shaders::SmokeAdvectParams),
                                                            workgroupSize,
                                                            {unitScale ? 1u : 0u},
@@ -176,18 +176,17 @@ void SmokeAdvectionKernels::record(vulkan::CommandSequence& sequence, SmokeState
     // Each pair in turn, through the shared MacCormack buffers.
     for (int p = 0; p < state.pairCount(); ++p) {
         const auto pair = SmokePair(p);
-        const std::array<float, 2> inflow = state.inflowValues(pair);
-        params.inflowFirst = inflow[0];
-        params.inflowSecond = inflow[1];
-        // Bindings 0-7 of shaders/SmokeAdvect.glsl.
-        const std::array<const vulkan::DeviceBuffer*, 8> buffers{&state.facePairs(),
+        params.ghostPair = std::uint32_t(p);
+        // Bindings 0-8 of shaders/SmokeAdvect.glsl.
+        const std::array<const vulkan::DeviceBuffer*, 9> buffers{&state.facePairs(),
                                                                  &state.fluidCells(pair),
                                                                  &state.stencilMask(),
                                                                  &state.fields(pair),
                                                                  &state.hat(),
                                                                  &state.record(),
                                                                  &state.nextFields(pair),
-                                                                 &state.second(pair)};
+                                                                 &state.second(pair),
+                                                                 &state.ghosts()};
         const auto stage = [&](std::uint32_t s) {
             dispatchAll(sequence, stageKernel(s, state.smokeGrid().dim, state.scale() == 1),
                         buffers, params, &shaders::SmokeAdvectParams::firstCell,

@@ -104,26 +104,27 @@ std::vector<std::uint32_t> cellList(const MacGrid& smoke, const std::vector<std:
     return words;
 }
 
-/// Per-side inflow flags (inflowSides) as SmokeAdvectParams::boundary's SMOKE_INFLOW_* bits.
-std::uint32_t inflowBitsOf(const std::array<bool, 6>& sides) {
+}  // namespace
+
+std::uint32_t SmokeState::inflowBits() const {
     std::uint32_t bits = 0;
     for (std::uint32_t a = 0; a < 3; ++a) {
-        if (sides[2 * a]) bits |= 1u << (SMOKE_INFLOW_LOW + a);
-        if (sides[2 * a + 1]) bits |= 1u << (SMOKE_INFLOW_HIGH + a);
+        if (mOutside.sides()[2 * a]) bits |= 1u << (SMOKE_INFLOW_LOW + a);
+        if (mOutside.sides()[2 * a + 1]) bits |= 1u << (SMOKE_INFLOW_HIGH + a);
     }
     return bits;
 }
 
-}  // namespace
-
-std::array<float, 2> SmokeState::inflowValues(SmokePair pair) const {
-    return pair == SmokePair::Smoke ? mInflowSmoke : std::array<float, 2>{0.0f, 0.0f};
-}
-
 void SmokeState::setWind(const WindSpec& wind) {
     mBasis = withWindThrough(mBasis, wind.velocity);
-    mInflowSmoke = {float(wind.density), float(wind.temperature)};
-    mInflowBits = inflowBitsOf(inflowSides(mSmoke, wind.velocity));
+    mOutside = OutsideAir(mSmoke, inflowSides(mSmoke, wind.velocity),
+                          {wind.density, wind.temperature, 0.0});  // the wind brings no fuel
+    mGhosts.upload<float>(mOutside.texels());
+}
+
+void SmokeState::setInflows(std::span<const InflowPatch> active) {
+    mOutside.setInflows(active);
+    mGhosts.upload<float>(mOutside.texels());
 }
 
 SmokeState::SmokeState(const vulkan::VulkanContext& context, const MacGrid& basisGrid, int scale,
@@ -134,14 +135,15 @@ SmokeState::SmokeState(const vulkan::VulkanContext& context, const MacGrid& basi
       mFluid(fluidFlags(mSmoke, fluidMask)),
       mFluidIndex(fluidIndices(mFluid)),
       mFluidCount(std::uint32_t(mFluidIndex.size())),
-      mInflowBits(inflowBitsOf(mSmoke.open)),  // open sides take in clean air
+      mOutside(mSmoke, mSmoke.open),  // open sides take in clean air
       mMask(texelBuffer(context, mFluid, "smoke fluid mask")),
       mStencilMask(texelBuffer(context, stencilFlags(mSmoke, mFluid), "smoke stencil mask")),
       mHat(zeroBuffer(context, std::size_t(mSmoke.cellCount()) * 8, "MacCormack fields")),
       mRecord(zeroBuffer(context, std::size_t(mFluidCount) * SMOKE_RECORD_WORDS * 8,
                          "MacCormack record")),
       mFacePairs(
-          zeroBuffer(context, std::size_t(mBasis.faceTotal() + 3) / 4 * 32, "smoke face pairs")) {
+          zeroBuffer(context, std::size_t(mBasis.faceTotal() + 3) / 4 * 32, "smoke face pairs")),
+      mGhosts(texelBuffer(context, mOutside.texels(), "smoke ghosts")) {
     // Each pair's fields 0, its emitters' rates none yet.
     const auto cells = std::size_t(mSmoke.cellCount());
     const auto addPair = [&](const std::string& name) {

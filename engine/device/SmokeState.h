@@ -24,6 +24,7 @@
 
 #include "engine/core/MacGrid.h"
 #include "engine/core/SceneSpec.h"
+#include "engine/simulation/OutsideAir.h"
 #include "engine/simulation/SmokeEmitter.h"
 #include "engine/vulkan/DeviceBuffer.h"
 
@@ -48,12 +49,17 @@ public:
 
     /// The wind blowing through the box ([wind]), as reference::SmokeAdvection::setWind: the
     /// basis grid's sides it crosses open (MacGrid::flowThrough), its upstream sides inflows of
-    /// its air (inflowBits, inflowValues).
+    /// its air (inflowBits, ghosts). Before setInflows; between submissions only.
     void setWind(const WindSpec& wind);
-    /// The inflow sides as SmokeAdvectParams::boundary's SMOKE_INFLOW_* bits, and what comes in
-    /// through them: `pair`'s two fields (the wind's density and temperature; no fuel).
-    std::uint32_t inflowBits() const { return mInflowBits; }
-    std::array<float, 2> inflowValues(SmokePair pair) const;
+    /// The `[[inflow]]` patches letting air in from now on, as the reference's setInflows.
+    /// Between submissions only.
+    void setInflows(std::span<const InflowPatch> active);
+    /// The inflow sides as SmokeAdvectParams::boundary's SMOKE_INFLOW_* bits, and what the air
+    /// coming in across them carries: OutsideAir's ghosts as RGBA32 texels (density,
+    /// temperature, fuel, 0).
+    std::uint32_t inflowBits() const;
+    const OutsideAir& outsideAir() const { return mOutside; }
+    const vulkan::DeviceBuffer& ghosts() const { return mGhosts; }
 
     const MacGrid& basisGrid() const { return mBasis; }
     const MacGrid& smokeGrid() const { return mSmoke; }
@@ -129,14 +135,14 @@ private:
     std::vector<std::uint8_t> mFluid;       ///< the mask as 0 and 1, for setEmitters
     std::vector<std::int64_t> mFluidIndex;  ///< cellIndex of each fluid cell, list order
     std::uint32_t mFluidCount = 0;
-    std::uint32_t mInflowBits = 0;  ///< SMOKE_INFLOW_* bits: open sides, a wind's upstream ones
-    std::array<float, 2> mInflowSmoke{0.0f, 0.0f};  ///< the wind's density and temperature
+    OutsideAir mOutside;  ///< open sides, a wind's upstream ones, and what comes in there
     std::vector<Pair> mPairs;
     vulkan::DeviceBuffer mMask;
     vulkan::DeviceBuffer mStencilMask;
     vulkan::DeviceBuffer mHat;
     vulkan::DeviceBuffer mRecord;
     vulkan::DeviceBuffer mFacePairs;
+    vulkan::DeviceBuffer mGhosts;
     std::uint32_t mEmitterCount = 0;
     int mCurrent = 0;
 };

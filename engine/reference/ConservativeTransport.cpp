@@ -20,11 +20,11 @@ double minmod(double a, double b) {
 
 ConservativeTransport::ConservativeTransport(const MacGrid& air, const MacGrid& smokeGrid,
                                              std::span<const std::uint8_t> fluidMask,
-                                             std::array<bool, 6> inflow)
+                                             const OutsideAir& outside)
     : mAir(air),
       mSmoke(smokeGrid),
       mMask(fluidMask),
-      mInflow(inflow),
+      mOutside(outside),
       mCrossable(air.crossableSideBits()) {}
 
 bool ConservativeTransport::moves(int axis, const std::array<int, 3>& p) const {
@@ -79,7 +79,8 @@ int ConservativeTransport::substeps(std::span<const double> u, double dt) const 
 }
 
 double ConservativeTransport::advect(std::span<const double> u, double dt, int substeps,
-                                     std::vector<double>& field, double inflowValue) const {
+                                     std::vector<double>& field,
+                                     std::optional<OutsideAir::Field> which) const {
     const double h = dt / substeps;
     std::vector<double> flux(std::size_t(mSmoke.faceTotal()), 0.0);
     double crossed = 0.0;
@@ -108,7 +109,9 @@ double ConservativeTransport::advect(std::span<const double> u, double dt, int s
                 double value;
                 if (!hasUp) {  // the air comes in across a side
                     const int side = 2 * axis + (upwind == 0 ? 1 : 0);
-                    value = mInflow[std::size_t(side)] ? inflowValue : field[down];
+                    value = mOutside.sides()[std::size_t(side)]
+                                ? mOutside.value(mOutside.ghostIndex(side, p), which)
+                                : field[down];
                 } else {
                     const int away = velocity > 0.0 ? -2 : 1;
                     const double slope =

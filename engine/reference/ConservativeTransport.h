@@ -10,16 +10,18 @@
 /// wind's) beside a fluid cell; walls and faces beside cells outside Ω move none. Its flux is
 /// u·φ_face·area, φ_face the upwind cell's value plus half its minmod-limited slope along the
 /// face's normal (MUSCL; first order where a neighbour the slope needs is missing), or beyond an
-/// inflow side (inflowSides) the ghost value the inflow brings. Forward Euler substeps keep
+/// inflow side the value its ghost holds (OutsideAir::ghostIndex). Forward Euler substeps keep
 /// Σ_a |u_a| h / h_a ≤ ½ in every cell (a TVD step: no new extrema but those the velocity's own
 /// divergence makes, which a reduced basis keeps to round-off).
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <vector>
 
 #include "engine/core/MacGrid.h"
+#include "engine/simulation/OutsideAir.h"
 
 namespace modeflow::reference {
 
@@ -27,10 +29,9 @@ class ConservativeTransport {
 public:
     /// `air`: the basis grid the velocity lives on (its open sides and a wind's);
     /// `smokeGrid`: air.refined(scale); `fluidMask`: one entry per smoke cell, non-zero inside Ω;
-    /// `inflow`: per side, 2·axis + (0 low, 1 high), whether ghost cells beyond it hold outside
-    /// air.
+    /// `outside`: what the ghost cells beyond the inflow sides hold (kept by reference).
     ConservativeTransport(const MacGrid& air, const MacGrid& smokeGrid,
-                          std::span<const std::uint8_t> fluidMask, std::array<bool, 6> inflow);
+                          std::span<const std::uint8_t> fluidMask, const OutsideAir& outside);
 
     /// The smoke grid's face velocities for a face field `velocity` of the air grid, in
     /// MacGrid::faceIndex order of the smoke grid (0 on faces that move no smoke, and where the
@@ -43,10 +44,11 @@ public:
     /// @throw modeflow::Error when that takes more than kMaxSubsteps.
     int substeps(std::span<const double> faceVelocity, double dt) const;
 
-    /// Advects `field` over dt in `substeps` steps; ghost cells beyond inflow sides hold
-    /// `inflowValue`. Returns the mass that crossed the box's sides outwards (negative: inwards).
+    /// Advects `field` over dt in `substeps` steps; ghost cells beyond inflow sides hold the
+    /// outside air's `which` (none: clean air). Returns the mass that crossed the box's sides
+    /// outwards (negative: inwards).
     double advect(std::span<const double> faceVelocity, double dt, int substeps,
-                  std::vector<double>& field, double inflowValue) const;
+                  std::vector<double>& field, std::optional<OutsideAir::Field> which) const;
 
 private:
     /// Whether the normal-`axis` smoke face at `p` moves smoke.
@@ -54,7 +56,7 @@ private:
 
     MacGrid mAir, mSmoke;
     std::span<const std::uint8_t> mMask;
-    std::array<bool, 6> mInflow;
+    const OutsideAir& mOutside;
     std::uint32_t mCrossable;  ///< mAir.crossableSideBits()
 };
 

@@ -35,6 +35,7 @@ Simulation::Simulation(const BasisCache& cache, const StructuralCoefficients& co
         mWindField = windBaseFlow(cache, *mSettings.wind);
         mFaceVelocity = mWindField;
     }
+    requireInflowsMeetFluid(mAdvection.outsideAir(), mSettings.inflows, mAdvection.fluidMask());
     const auto cells = std::size_t(mAdvection.smokeGrid().cellCount());
     mFields.density.assign(cells, 0.0);
     mFields.temperature.assign(cells, 0.0);
@@ -119,6 +120,8 @@ FrameStats Simulation::advanceSteps(int steps) {
                 -obstacleCorrection(mBasis, mFaceVelocity, regions, mTime + dt));
             reconstructAirVelocity();
         }
+        if (!mSettings.inflows.empty())
+            mAdvection.setInflows(activeInflows(mSettings.inflows, mTime));
         mAdvection.step(std::span<const double>(mFaceVelocity), dt, mSettings.advection,
                         activeEmitters(mSettings.emitters, mTime), mFields);
         mDisplacement.step(mSettings.obstacles, mTime, dt, mFields);

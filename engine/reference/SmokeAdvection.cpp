@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <limits>
+#include <optional>
 #include <string>
 
 #include "engine/core/Error.h"
@@ -13,6 +14,8 @@
 namespace modeflow::reference {
 namespace {
 
+using Field = OutsideAir::Field;
+
 /// A masked trilinear sample: the renormalized value over fluid cells, and the range of the
 /// fluid cells of the stencil (for MacCormack's clamp).
 struct FluidSample {
@@ -22,22 +25,9 @@ struct FluidSample {
     bool anyFluid = false;
 };
 
-/// The share of a sample at `gridPoint` that its in-box stencil gives: below 1 within a cell of
-/// an inflow side, where ghost cells beyond the side (centres half a cell out) hold the inflow's
-/// clean air and the trilinear weights reach them.
-double inBoxShare(const MacGrid& grid, const std::array<bool, 6>& inflow, const Vec3& gridPoint) {
-    double share = 1.0;
-    for (int a = 0; a < grid.dim; ++a) {
-        if (inflow[std::size_t(2 * a)]) share *= std::clamp(gridPoint[a] + 0.5, 0.0, 1.0);
-        if (inflow[std::size_t(2 * a + 1)])
-            share *= std::clamp(grid.cells[a] + 0.5 - gridPoint[a], 0.0, 1.0);
-    }
-    return share;
-}
-
 FluidSample sampleFluid(const MacGrid& grid, std::span<const std::uint8_t> mask,
                         std::span<const double> field, const Vec3& gridPoint, double fallback,
-                        const std::array<bool, 6>& inflow, double inflowValue) {
+                        const OutsideAir* outside, std::optional<OutsideAir::Field> which) {
     const CellStencil stencil = cellStencil(grid, gridPoint);
     FluidSample sample;
     double sum = 0.0, weight = 0.0;
@@ -51,11 +41,12 @@ FluidSample sampleFluid(const MacGrid& grid, std::span<const std::uint8_t> mask,
         sample.anyFluid = true;
     }
     sample.value = weight > 0.0 ? sum / weight : fallback;
-    const double share = inBoxShare(grid, inflow, gridPoint);
-    if (share < 1.0) {  // the ghost cells hold the inflow's value
-        sample.value = share * sample.value + (1.0 - share) * inflowValue;
-        sample.lo = std::min(sample.lo, inflowValue);
-        sample.hi = std::max(sample.hi, inflowValue);
+    const double share = outside ? outside->inBoxShare(gridPoint) : 1.0;
+    if (share < 1.0) {  // the ghost cells hold what the outside air brings
+        const double ghost = outside->value(outside->ghostOf(gridPoint), which);
+        sample.value = share * sample.value + (1.0 - share) * ghost;
+        sample.lo = std::min(sample.lo, ghost);
+        sample.hi = std::max(sample.hi, ghost);
     }
     return sample;
 }
@@ -68,15 +59,18 @@ SmokeAdvection::SmokeAdvection(const MacGrid& basisGrid, int scale,
       mScale(scale),
       mSmoke(basisGrid.refined(scale)),
       mMask(std::move(fluidMask)),
-      mInflow(mSmoke.open) {  // open sides take in clean air
+      mOutside(mSmoke, mSmoke.open) {  // open sides take in clean air
     requireCellField(mMask.size(), "the fluid mask");
 }
 
 void SmokeAdvection::setWind(const WindSpec& wind) {
     mBasis = withWindThrough(mBasis, wind.velocity);
-    mInflow = inflowSides(mSmoke, wind.velocity);
-    mInflowDensity = wind.density;
-    mInflowTemperature = wind.temperature;
+    mOutside = OutsideAir(mSmoke, inflowSides(mSmoke, wind.velocity),
+                          {wind.density, wind.temperature, 0.0});  // the wind brings no fuel
+}
+
+void SmokeAdvection::setInflows(std::span<const InflowPatch> active) {
+    mOutside.setInflows(active);
 }
 
 void SmokeAdvection::requireCellField(std::size_t size, const char* what) const {
@@ -116,34 +110,35 @@ std::vector<Vec3> SmokeAdvection::backtrace(std::span<const double> velocity, do
 
 std::vector<double> SmokeAdvection::semiLagrangian(std::span<const double> field,
                                                    const std::vector<Vec3>& traces,
-                                                   double inflowValue, bool ghosts) const {
+                                                   std::optional<OutsideAir::Field> outside,
+                                                   bool ghosts) const {
     std::vector<double> result(field.size(), 0.0);
     const auto cells = std::int64_t(field.size());
-    const std::array<bool, 6> inflow = ghosts ? mInflow : std::array<bool, 6>{};
+    const OutsideAir* air = ghosts ? &mOutside : nullptr;
 #pragma omp parallel for schedule(static)
     for (std::int64_t c = 0; c < cells; ++c)
         if (mMask[c])
-            result[c] =
-                sampleFluid(mSmoke, mMask, field, traces[c], field[c], inflow, inflowValue).value;
+            result[c] = sampleFluid(mSmoke, mMask, field, traces[c], field[c], air, outside).value;
     return result;
 }
 
 std::vector<double> SmokeAdvection::advectAlong(std::span<const double> field,
                                                 const std::vector<Vec3>& back,
                                                 const std::vector<Vec3>& ahead,
-                                                AdvectionScheme scheme, double inflowValue) const {
-    std::vector<double> forward = semiLagrangian(field, back, inflowValue, true);
+                                                AdvectionScheme scheme,
+                                                std::optional<OutsideAir::Field> outside) const {
+    std::vector<double> forward = semiLagrangian(field, back, outside, true);
     if (scheme == AdvectionScheme::SemiLagrangian) return forward;
     // The traces ahead leave the box where the air leaves it, and the air there has no ghost
     // of outside air: they read the box's own edge (where the air comes in they point inwards).
-    const std::vector<double> backward = semiLagrangian(forward, ahead, inflowValue, false);
+    const std::vector<double> backward = semiLagrangian(forward, ahead, outside, false);
     std::vector<double> result(field.size(), 0.0);
     const auto cells = std::int64_t(field.size());
 #pragma omp parallel for schedule(static)
     for (std::int64_t c = 0; c < cells; ++c) {
         if (!mMask[c]) continue;
         const FluidSample bounds =
-            sampleFluid(mSmoke, mMask, field, back[c], field[c], mInflow, inflowValue);
+            sampleFluid(mSmoke, mMask, field, back[c], field[c], &mOutside, outside);
         const double corrected = forward[c] + 0.5 * (field[c] - backward[c]);
         result[c] = bounds.anyFluid ? std::clamp(corrected, bounds.lo, bounds.hi) : forward[c];
     }
@@ -156,22 +151,22 @@ void SmokeAdvection::step(std::span<const double> velocity, double dt, Advection
     requireCellField(fields.temperature.size(), "the temperature");
     if (!fields.fuel.empty()) requireCellField(fields.fuel.size(), "the fuel");
     if (scheme == AdvectionScheme::Conservative) {
-        const ConservativeTransport transport(mBasis, mSmoke, mMask, mInflow);
+        const ConservativeTransport transport(mBasis, mSmoke, mMask, mOutside);
         const std::vector<double> u = transport.faceVelocity(velocity);
         const int substeps = transport.substeps(u, dt);
-        transport.advect(u, dt, substeps, fields.density, mInflowDensity);
-        transport.advect(u, dt, substeps, fields.temperature, mInflowTemperature);
-        if (!fields.fuel.empty()) transport.advect(u, dt, substeps, fields.fuel, 0.0);
+        transport.advect(u, dt, substeps, fields.density, Field::Density);
+        transport.advect(u, dt, substeps, fields.temperature, Field::Temperature);
+        if (!fields.fuel.empty()) transport.advect(u, dt, substeps, fields.fuel, Field::Fuel);
         applyEmitters(mSmoke, mMask, emitters, dt, fields.density, fields.temperature, fields.fuel);
         return;
     }
     const std::vector<Vec3> back = backtrace(velocity, dt);
     const std::vector<Vec3> ahead =
         scheme == AdvectionScheme::MacCormack ? backtrace(velocity, -dt) : std::vector<Vec3>{};
-    fields.density = advectAlong(fields.density, back, ahead, scheme, mInflowDensity);
-    fields.temperature = advectAlong(fields.temperature, back, ahead, scheme, mInflowTemperature);
-    if (!fields.fuel.empty())  // the wind brings in no fuel
-        fields.fuel = advectAlong(fields.fuel, back, ahead, scheme, 0.0);
+    fields.density = advectAlong(fields.density, back, ahead, scheme, Field::Density);
+    fields.temperature = advectAlong(fields.temperature, back, ahead, scheme, Field::Temperature);
+    if (!fields.fuel.empty())
+        fields.fuel = advectAlong(fields.fuel, back, ahead, scheme, Field::Fuel);
     applyEmitters(mSmoke, mMask, emitters, dt, fields.density, fields.temperature, fields.fuel);
 }
 
@@ -183,20 +178,21 @@ void SmokeAdvection::step(std::span<const float> velocity, double dt, AdvectionS
 
 std::vector<double> SmokeAdvection::advect(std::span<const double> velocity,
                                            std::span<const double> field, double dt,
-                                           AdvectionScheme scheme, double* crossed) const {
+                                           AdvectionScheme scheme, double* crossed,
+                                           std::optional<Field> outside) const {
     requireCellField(field.size(), "the advected field");
     if (scheme == AdvectionScheme::Conservative) {
-        const ConservativeTransport transport(mBasis, mSmoke, mMask, mInflow);
+        const ConservativeTransport transport(mBasis, mSmoke, mMask, mOutside);
         const std::vector<double> u = transport.faceVelocity(velocity);
         std::vector<double> result(field.begin(), field.end());
-        const double out = transport.advect(u, dt, transport.substeps(u, dt), result, 0.0);
+        const double out = transport.advect(u, dt, transport.substeps(u, dt), result, outside);
         if (crossed) *crossed = out;
         return result;
     }
     const std::vector<Vec3> back = backtrace(velocity, dt);
     const std::vector<Vec3> ahead =
         scheme == AdvectionScheme::MacCormack ? backtrace(velocity, -dt) : std::vector<Vec3>{};
-    return advectAlong(field, back, ahead, scheme, 0.0);
+    return advectAlong(field, back, ahead, scheme, outside);
 }
 
 double SmokeAdvection::mass(std::span<const double> field) const {

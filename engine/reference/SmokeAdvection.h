@@ -18,10 +18,11 @@
 ///   φ̂ + (φ − φ̃)/2, clamped to the min and max of φ over the fluid cells of the forward trace's
 ///   stencil: second order where the field is smooth, and no new extrema where it is not.
 ///
-/// With a wind (setWind), the box's upstream sides let its air in: ghost cells half a cell
-/// beyond them hold what it brings (WindSpec::density and temperature: 0, clean air, unless
-/// set; no fuel) and take their trilinear share of a trace that ends within a cell of the side
-/// (and of MacCormack's clamp range). Downstream, traces come from inside the box and the
+/// Open sides, and with a wind (setWind) the box's upstream sides, let outside air in: ghost
+/// cells half a cell beyond them hold what it brings (OutsideAir.h: clean air, or the wind's
+/// density and temperature, or an `[[inflow]]`'s values where it meets the side; setInflows)
+/// and take their trilinear share of a trace that ends within a cell of the side (and of
+/// MacCormack's clamp range). Downstream, traces come from inside the box and the
 /// smoke leaves; the clamp to the box there is a zero-gradient outflow.
 ///
 /// Cells outside Ω always come out exactly 0 (nothing leaks out of Ω). Emitters are applied
@@ -35,11 +36,13 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <vector>
 
 #include "engine/core/MacGrid.h"
 #include "engine/core/SceneSpec.h"
+#include "engine/simulation/OutsideAir.h"
 #include "engine/simulation/SmokeEmitter.h"
 #include "engine/simulation/SmokeFields.h"
 
@@ -65,14 +68,20 @@ public:
     void step(std::span<const float> velocity, double dt, AdvectionScheme scheme,
               std::span<const SmokeEmitter> emitters, SmokeFields& fields) const;
 
-    /// One field advected (no emitters; a wind's inflow brings 0). `crossed`, with the
-    /// conservative scheme: where the mass that crossed the box's sides outwards is put.
+    /// One field advected (no emitters), the ghosts holding the outside air's `outside` (none:
+    /// clean air). `crossed`, with the conservative scheme: where the mass that crossed the box's
+    /// sides outwards is put.
     std::vector<double> advect(std::span<const double> velocity, std::span<const double> field,
-                               double dt, AdvectionScheme scheme, double* crossed = nullptr) const;
+                               double dt, AdvectionScheme scheme, double* crossed = nullptr,
+                               std::optional<OutsideAir::Field> outside = std::nullopt) const;
 
     /// The wind blowing through the box ([wind]): the sides it crosses carry the velocity they
-    /// hold (MacGrid::flowThrough), and its upstream sides become inflows of its air.
+    /// hold (MacGrid::flowThrough), and its upstream sides become inflows of its air. Before
+    /// setInflows.
     void setWind(const WindSpec& wind);
+    /// The `[[inflow]]` patches letting air in from now on (OutsideAir::setInflows).
+    void setInflows(std::span<const InflowPatch> active);
+    const OutsideAir& outsideAir() const { return mOutside; }
 
     /// Σ concentration × smoke cell volume.
     double mass(std::span<const double> field) const;
@@ -80,24 +89,23 @@ public:
 private:
     /// Where the RK2 trace from each fluid cell centre ends after −dt·u (smoke-grid units).
     std::vector<Vec3> backtrace(std::span<const double> velocity, double dt) const;
-    /// `inflowValue`: what the ghost cells beyond the inflow sides hold, when `ghosts`; without,
-    /// the stencils clamp to the box on every side.
+    /// `outside`: the field of the outside air the ghost cells beyond the inflow sides hold
+    /// (none: clean air), when `ghosts`; without, the stencils clamp to the box on every side.
     std::vector<double> semiLagrangian(std::span<const double> field,
-                                       const std::vector<Vec3>& traces, double inflowValue,
-                                       bool ghosts) const;
+                                       const std::vector<Vec3>& traces,
+                                       std::optional<OutsideAir::Field> outside, bool ghosts) const;
     /// `ahead`: the traces over −dt (MacCormack's backward step), unused by semi-Lagrangian.
     std::vector<double> advectAlong(std::span<const double> field, const std::vector<Vec3>& back,
                                     const std::vector<Vec3>& ahead, AdvectionScheme scheme,
-                                    double inflowValue) const;
+                                    std::optional<OutsideAir::Field> outside) const;
     void requireCellField(std::size_t size, const char* what) const;
 
     MacGrid mBasis;
     int mScale;
     MacGrid mSmoke;
     std::vector<std::uint8_t> mMask;
-    /// Per side, 2·axis + (0 min, 1 max): outside air comes in there (inflowSides).
-    std::array<bool, 6> mInflow{};
-    double mInflowDensity = 0.0, mInflowTemperature = 0.0;  ///< what the inflow brings
+    /// What the air coming in across the inflow sides (inflowSides) carries.
+    OutsideAir mOutside;
 };
 
 }  // namespace modeflow::reference

@@ -36,6 +36,11 @@ SimulationSettings SimulationSettings::fromScene(const SceneSpec& scene, const B
                     " [[obstacle]] entries; the runtime takes at most " +
                     std::to_string(maxObstacles));
     for (const ObstacleSpec& obstacle : scene.obstacles) settings.obstacles.push_back({obstacle});
+    if (scene.inflows.size() > std::size_t(maxInflows))
+        throw Error(scene.sourceFile.string() + ": " + std::to_string(scene.inflows.size()) +
+                    " [[inflow]] entries; the runtime takes at most " + std::to_string(maxInflows));
+    for (const InflowSpec& inflow : scene.inflows)
+        settings.inflows.push_back(inflowFromSpec(inflow));
     settings.particles = scene.particles;
     settings.shotEnd = double(scene.output.frames) * scene.output.stepsPerFrame * sim.dt;
     return settings;
@@ -71,8 +76,8 @@ std::vector<int> heldModes(const SceneSpec& scene, const BasisCache& cache) {
 
 std::vector<MovingObstacle> SimulationSettings::velocityRegions(double t) const {
     std::vector<MovingObstacle> regions = obstacles;
-    for (const SmokeEmitter& emitter : emitters) {
-        if (!emitter.velocity || !emitter.activeAt(t)) continue;
+    const auto drive = [&](const SmokeEmitter& emitter) {
+        if (!emitter.velocity || !emitter.activeAt(t)) return;
         // Its shape about its rest centre, moved and turned by its own key frames.
         ObstacleSpec region;
         std::shared_ptr<const SolidLevelSet> levelSet;
@@ -98,7 +103,9 @@ std::vector<MovingObstacle> SimulationSettings::velocityRegions(double t) const 
         MovingObstacle jet(region, levelSet);
         jet.drive = emitter.velocity;
         regions.push_back(std::move(jet));
-    }
+    };
+    for (const SmokeEmitter& emitter : emitters) drive(emitter);
+    for (const InflowPatch& inflow : inflows) drive(inflow.region);
     return regions;
 }
 

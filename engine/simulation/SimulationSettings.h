@@ -12,6 +12,7 @@
 #include "engine/dynamics/FluidSystem.h"
 #include "engine/format/BasisCache.h"
 #include "engine/simulation/FrameStats.h"
+#include "engine/simulation/InflowPatch.h"
 #include "engine/simulation/MovingObstacle.h"
 #include "engine/simulation/SmokeEmitter.h"
 
@@ -36,6 +37,9 @@ struct SimulationSettings {
     std::optional<WindSpec> wind;
     ModePrecision basisPrecision = ModePrecision::Float32;  ///< device only
     std::vector<SmokeEmitter> emitters;
+    /// `[[inflow]]` patches: what the air coming in through them carries (OutsideAir.h), and
+    /// their regions driving it where they have a velocity.
+    std::vector<InflowPatch> inflows;
     std::vector<MovingObstacle> obstacles;
     /// `[[particles]]` sets (ParticleEmission.h, ParticleMotion.h), emitting until shotEnd at most:
     /// frames × steps per frame × dt.
@@ -43,9 +47,9 @@ struct SimulationSettings {
     double shotEnd = 0.0;
 
     /// What the velocity correction holds during the step starting at t (seed §6.3.5): the
-    /// obstacles, then the sources with a `velocity` active at t, as regions of their shape whose
-    /// material moves at that velocity (MovingObstacle::drive). The first region covering a face
-    /// sets its velocity, so a solid wins over a jet.
+    /// obstacles, then the sources and inflows with a `velocity` active at t, as regions of their
+    /// shape whose material moves at that velocity (MovingObstacle::drive). The first region
+    /// covering a face sets its velocity, so a solid wins over a jet.
     std::vector<MovingObstacle> velocityRegions(double t) const;
 
     /// Whether the run simulates temperature: a source heats, buoyancy reads it, or a fire burns.

@@ -110,16 +110,11 @@ void readOpenSides(const TomlReader& reader, const Section& s, GridSpec& grid) {
         const toml::node& entry = (*array)[i];
         const std::string where = s.name + ".open[" + std::to_string(i) + "]";
         const std::optional<std::string> name = entry.value<std::string>();
-        int side = -1;
-        for (int a = 0; a < grid.dim && name; ++a)
-            for (int high = 0; high < 2; ++high)
-                if (*name == std::string(axisName(a)) + (high ? "_max" : "_min"))
-                    side = 2 * a + high;
+        const int side = name ? sideNamed(*name, grid.dim) : -1;
         if (side < 0)
             reader.fail(where,
                         "expected a side of the " + std::to_string(grid.dim) +
-                            "D box: x_min, x_max, y_min, y_max" +
-                            (grid.dim == 3 ? ", z_min or z_max" : "") + ", got " +
+                            "D box: " + sideNames(grid.dim) + ", got " +
                             (name ? "\"" + *name + "\"" : describeType(entry)),
                         &entry);
         if (grid.open[std::size_t(side)])

@@ -18,9 +18,7 @@ ParticleSetSpec readParticleSet(const TomlReader& reader, const toml::table& tab
                                 double shotEnd, std::int64_t& emitted) {
     ParticleSetSpec set;
     set.region = readShape(reader, table, "[[particles]]", index, ShapeUse::Particles);
-    const Section s{
-        table, "[[particles]] #" + std::to_string(index) + " (" +
-                   std::string(keywordOf(Choices<ShapeKind>(kShapeKinds), set.region.kind)) + ")"};
+    const Section s{table, shapeEntryName("[[particles]]", index, set.region.kind)};
     const toml::node* count = table.get("count");
     const toml::node* rate = table.get("rate");
     if ((count == nullptr) == (rate == nullptr))

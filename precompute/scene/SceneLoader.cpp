@@ -101,6 +101,10 @@ SceneSpec readScene(std::string_view text, const std::filesystem::path& origin) 
     if (const toml::table* t = reader.optionalTable(root, "wind")) {
         scene.wind = readWind(reader, {*t, "[wind]"}, scene);
     }
+    checkEntryCount(reader, root, "inflow", maxInflows, "inflows");
+    reader.forEachEntry(root, "inflow", [&](const toml::table& t, int index) {
+        scene.inflows.push_back(readInflow(reader, t, index, scene));
+    });
     if (const toml::table* t = reader.optionalTable(root, "forcing")) {
         const Section forcing{*t, "[forcing]"};
         scene.forcing = readForcing(reader, forcing);

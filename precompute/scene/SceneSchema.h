@@ -18,8 +18,8 @@ using keywords::keywordOf;
 using namespace keywords;
 
 inline constexpr std::string_view kTopLevelTables[] = {
-    "grid",     "domain",    "surface", "basis", "simulation", "initial", "source",
-    "obstacle", "particles", "smoke",   "fire",  "wind",       "forcing", "output"};
+    "grid",      "domain", "surface", "basis", "simulation", "initial", "source", "obstacle",
+    "particles", "smoke",  "fire",    "wind",  "inflow",     "forcing", "output"};
 inline constexpr std::string_view kGridKeys[] = {"resolution", "bounds_min", "bounds_max",
                                                  "periodic", "open"};
 inline constexpr std::string_view kSurfaceKeys[] = {"mesh"};
@@ -61,6 +61,8 @@ inline constexpr std::string_view kOutputKeys[] = {"frames", "steps_per_frame"};
 inline constexpr std::string_view kSourceExtraKeys[] = {
     "density", "temperature", "fuel", "start", "end", "velocity", "thickness", "path", "rotation"};
 
+inline constexpr std::string_view kInflowExtraKeys[] = {
+    "side", "velocity", "density", "temperature", "fuel", "start", "end"};
 inline constexpr std::string_view kParticleExtraKeys[] = {"count", "rate",    "start", "end",
                                                           "drag",  "gravity", "seed"};
 

@@ -19,12 +19,15 @@ GridSpec readGrid(TomlReader& reader, const Section& s);
 /// What a shape read by readShape is for: a `[[domain]]` entry (any shape, combined by `op`), a
 /// `[[source]]` (a ball, box or mesh) or a `[[particles]]` set's seeding region (a ball or box);
 /// the entry's other keys are the source's or the set's.
-enum class ShapeUse { Domain, Source, Particles };
+enum class ShapeUse { Domain, Source, Particles, Inflow };
 
 /// The shape of one entry of `section` ("[[domain]]", "[[source]]" or "[[particles]]"), `index`
 /// 1-based.
 ShapeSpec readShape(const TomlReader& reader, const toml::table& table, const std::string& section,
                     int index, ShapeUse use);
+
+/// "[[source]] #2 (ball)": how messages name entry `index` (1-based) of `section`, of that shape.
+std::string shapeEntryName(const std::string& section, int index, ShapeKind kind);
 
 /// An OBJ file named by `key` of `s`: resolved against the scene's folder, a regular file.
 std::filesystem::path readMeshFile(const TomlReader& reader, const Section& s, std::string_view key,
@@ -73,6 +76,9 @@ double readSmokeValue(const TomlReader& reader, const Section& s, std::string_vi
                       double fallback, Sign sign = Sign::Any);
 SmokeSpec readSmoke(const TomlReader& reader, const Section& s);
 FireSpec readFire(const TomlReader& reader, const Section& s);
+/// One `[[inflow]]` of a grid scene (`scene` read up to [wind]: its sides and wind).
+InflowSpec readInflow(const TomlReader& reader, const toml::table& table, int index,
+                      const SceneSpec& scene);
 /// `[wind]` of a grid scene whose domain is the whole box (`scene` read up to [fire]).
 WindSpec readWind(const TomlReader& reader, const Section& s, const SceneSpec& scene);
 ForcingSpec readForcing(const TomlReader& reader, const Section& s);

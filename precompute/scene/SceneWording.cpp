@@ -89,4 +89,18 @@ const char* axisName(int axis) {
     return names[axis];
 }
 
+std::string sideName(int side) {
+    return std::string(axisName(side / 2)) + (side % 2 ? "_max" : "_min");
+}
+
+int sideNamed(std::string_view name, int dim) {
+    for (int side = 0; side < 2 * dim; ++side)
+        if (name == sideName(side)) return side;
+    return -1;
+}
+
+std::string sideNames(int dim) {
+    return dim == 3 ? "x_min, x_max, y_min, y_max, z_min or z_max" : "x_min, x_max, y_min or y_max";
+}
+
 }  // namespace modeflow::scene

@@ -29,4 +29,11 @@ std::string roughNumber(double x);
 /// "x", "y" or "z".
 const char* axisName(int axis);
 
+/// "x_min" ... "z_max" for side 2·axis + (0 low, 1 high).
+std::string sideName(int side);
+/// The side a name such as "y_max" names in a `dim`-D box; -1 for none.
+int sideNamed(std::string_view name, int dim);
+/// "x_min, x_max, y_min, y_max" (", z_min or z_max" in 3D): the sides of a `dim`-D box.
+std::string sideNames(int dim);
+
 }  // namespace modeflow::scene

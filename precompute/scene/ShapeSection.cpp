@@ -32,6 +32,8 @@ void checkShapeKeys(const TomlReader& reader, const Section& s, ShapeKind kind, 
         allowed.insert(allowed.end(), std::begin(kSourceExtraKeys), std::end(kSourceExtraKeys));
     if (use == ShapeUse::Particles)
         allowed.insert(allowed.end(), std::begin(kParticleExtraKeys), std::end(kParticleExtraKeys));
+    if (use == ShapeUse::Inflow)
+        allowed.insert(allowed.end(), std::begin(kInflowExtraKeys), std::end(kInflowExtraKeys));
     const auto own = shapeKeys(kind);
     allowed.insert(allowed.end(), own.begin(), own.end());
     for (const auto& [key, node] : s.table) {
@@ -90,6 +92,11 @@ fs::path readMeshFile(const TomlReader& reader, const Section& s, std::string_vi
     return path;
 }
 
+std::string shapeEntryName(const std::string& section, int index, ShapeKind kind) {
+    return section + " #" + std::to_string(index) + " (" +
+           std::string(keywordOf(Choices<ShapeKind>(kShapeKinds), kind)) + ")";
+}
+
 ShapeSpec readShape(const TomlReader& reader, const toml::table& table, const std::string& section,
                     int index, ShapeUse use) {
     const bool isDomain = use == ShapeUse::Domain;
@@ -98,10 +105,10 @@ ShapeSpec readShape(const TomlReader& reader, const toml::table& table, const st
     if (shapeNode == nullptr) {
         reader.fail(entry + ".shape",
                     "missing required key (one of " +
-                        std::string(isDomain ? "ball, box, ellipsoid, cylinder, "
-                                               "torus or mesh"
-                                    : use == ShapeUse::Particles ? "ball or box"
-                                                                 : "ball, box or mesh") +
+                        std::string(isDomain                  ? "ball, box, ellipsoid, cylinder, "
+                                                                "torus or mesh"
+                                    : use == ShapeUse::Source ? "ball, box or mesh"
+                                                              : "ball or box") +
                         ")",
                     &table);
     }
@@ -109,7 +116,7 @@ ShapeSpec readShape(const TomlReader& reader, const toml::table& table, const st
     shape.kind = reader.readChoice(Section{table, entry}, "shape", ShapeKind::Ball,
                                    Choices<ShapeKind>(kShapeKinds));
     const std::string_view kindName = keywordOf(Choices<ShapeKind>(kShapeKinds), shape.kind);
-    const Section s{table, entry + " (" + std::string(kindName) + ")"};
+    const Section s{table, shapeEntryName(section, index, shape.kind)};
 
     if (use == ShapeUse::Source && shape.kind != ShapeKind::Ball && shape.kind != ShapeKind::Box &&
         shape.kind != ShapeKind::Mesh) {
@@ -117,11 +124,13 @@ ShapeSpec readShape(const TomlReader& reader, const toml::table& table, const st
                     "a source must be a ball, a box or a mesh, got " + std::string(kindName),
                     shapeNode);
     }
-    if (use == ShapeUse::Particles && shape.kind != ShapeKind::Ball &&
+    if ((use == ShapeUse::Particles || use == ShapeUse::Inflow) && shape.kind != ShapeKind::Ball &&
         shape.kind != ShapeKind::Box) {
-        reader.fail(s, "shape",
-                    "particles are seeded in a ball or a box, got " + std::string(kindName),
-                    shapeNode);
+        reader.fail(
+            s, "shape",
+            std::string(use == ShapeUse::Particles ? "particles are seeded in" : "an inflow is") +
+                " a ball or a box, got " + std::string(kindName),
+            shapeNode);
     }
     checkShapeDimension(reader, s, shape.kind, shapeNode);
     checkShapeKeys(reader, s, shape.kind, use);

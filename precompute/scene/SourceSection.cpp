@@ -13,10 +13,7 @@ namespace modeflow::scene {
 SourceSpec readSource(const TomlReader& reader, const toml::table& table, int index) {
     SourceSpec source;
     source.shape = readShape(reader, table, "[[source]]", index, ShapeUse::Source);
-    const Section s{table,
-                    "[[source]] #" + std::to_string(index) + " (" +
-                        std::string(keywordOf(Choices<ShapeKind>(kShapeKinds), source.shape.kind)) +
-                        ")"};
+    const Section s{table, shapeEntryName("[[source]]", index, source.shape.kind)};
     source.density = readSmokeValue(reader, s, "density", source.density, Sign::NonNegative);
     source.temperature = readSmokeValue(reader, s, "temperature", source.temperature);
     source.fuel = readSmokeValue(reader, s, "fuel", source.fuel, Sign::NonNegative);

@@ -31,6 +31,8 @@ void checkSurfaceSceneTables(const TomlReader& reader, const toml::table& root) 
         reader.fail("[[obstacle]]",
                     "moving obstacles push on a grid's faces; a surface scene ([surface]) has none",
                     node);
+    if (const toml::node* node = root.get("inflow"))
+        reader.fail("[[inflow]]", "a surface is closed: no air comes in through it", node);
     if (const toml::node* node = root.get("particles"))
         reader.fail("[[particles]]",
                     "particles are carried by a grid's velocity; a surface scene ([surface]) has "

@@ -27,20 +27,11 @@ namespace {
 constexpr std::array<bool, 6> kTop{false, false, false, true, false, false};
 constexpr std::array<bool, 6> kBottomAndTop{false, false, true, true, false, false};
 
-/// A 2D box over [0, 1] × [0, 1.25] of 12 × 15 cells with `open` sides and `modes` modes.
-SceneSpec openBox(std::array<bool, 6> open, int modes) {
-    SceneSpec scene = testing::gridScene({12, 15, 1}, {0.0, 0.0, 0.0}, {1.0, 1.25, 0.0}, 2);
-    scene.grid.open = open;
-    scene.basis.velocityModes = {{1, modes}};
-    scene.basis.scalarModes = 0;
-    return scene;
-}
-
 TEST(OpenSides, TheMidpointRuleKeepsTheEnergyExactly) {
     // vᵀC(v, v) = ⟨u, ω × u⟩ = 0 whatever the sides: the open side holds the total pressure
     // p + ½|u|² at 0, so the energy it lets through is ∮(p + ½|u|²) u·n = 0.
     for (const auto& open : {kTop, kBottomAndTop}) {
-        const RunInputs run = testing::sharedRun(openBox(open, 30));
+        const RunInputs run = testing::sharedRun(testing::openBoxScene(open, 30));
         const FluidSystem system(*run.coefficients, FluidParameters{});
         ModalIntegrator integrator(system, IntegratorSettings{Integrator::Midpoint});
         std::mt19937 random(3);
@@ -64,7 +55,7 @@ TEST(OpenSides, TheMidpointRuleKeepsTheEnergyExactly) {
 TEST(OpenSides, ABoxOpenAtBothEndsLetsAFlowStraightThrough) {
     // The harmonic field of a box open at its bottom and top is the uniform upward flow: every
     // face normal to y (the open sides' included) carries the same flux, no other face any.
-    const RunInputs run = testing::sharedRun(openBox(kBottomAndTop, 10));
+    const RunInputs run = testing::sharedRun(testing::openBoxScene(kBottomAndTop, 10));
     ASSERT_EQ(run.cache.velocity.harmonic, 1);
     const VelocityBasis basis(run.cache);
     Eigen::VectorXd first = Eigen::VectorXd::Zero(basis.modeCount());
@@ -95,7 +86,7 @@ std::vector<double> upwardFlow(const MacGrid& grid, double speed) {
 }
 
 TEST(OpenSides, SmokeLeavesWithoutPilingUpAndCleanAirComesIn) {
-    const MacGrid open = MacGrid::fromSpec(openBox(kBottomAndTop, 10).grid);
+    const MacGrid open = MacGrid::fromSpec(testing::openBoxScene(kBottomAndTop, 10).grid);
     const std::vector<std::uint8_t> mask(std::size_t(open.cellCount()), 1);
     const std::vector<double> velocity = upwardFlow(open, 0.8);
     const double volume = 1.25;
@@ -133,7 +124,7 @@ TEST(OpenSides, SmokeLeavesWithoutPilingUpAndCleanAirComesIn) {
 TEST(OpenSides, AJetThroughAnOpenFloorDrawsAirInAndTheTopLetsItOut) {
     // A jet through a wall: a source with a velocity over a stretch of the open floor drives the
     // air in across it; the open top lets it out, the floor beside the jet lets air in too.
-    SceneSpec scene = openBox(kBottomAndTop, 40);
+    SceneSpec scene = testing::openBoxScene(kBottomAndTop, 40);
     scene.name = "jet";
     scene.simulation.dt = 0.02;
     SourceSpec jet;
@@ -168,7 +159,7 @@ TEST(OpenSides, AJetThroughAnOpenFloorDrawsAirInAndTheTopLetsItOut) {
 TEST(OpenSides, ParticlesCarriedThroughAnOpenSideLeaveTheRun) {
     // Tracers near the top of a box open at both ends, in the flow straight through: those the
     // air carries across the top leave for good (kParticleLeft, at rest); the others stay inside.
-    SceneSpec scene = openBox(kBottomAndTop, 10);
+    SceneSpec scene = testing::openBoxScene(kBottomAndTop, 10);
     scene.name = "leaving";
     scene.simulation.dt = 0.02;
     ParticleSetSpec tracers;
@@ -209,7 +200,7 @@ TEST(OpenSides, ParticlesCarriedThroughAnOpenSideLeaveTheRun) {
 TEST(OpenSides, TheWallSideOfAHalfOpenAxisStaysAWall) {
     // Open at the top only: sampling reads the open side's faces but still treats the floor as a
     // wall, whatever a field holds there.
-    const MacGrid grid = MacGrid::fromSpec(openBox(kTop, 10).grid);
+    const MacGrid grid = MacGrid::fromSpec(testing::openBoxScene(kTop, 10).grid);
     EXPECT_TRUE(grid.isWallFace(1, 0));
     EXPECT_FALSE(grid.isWallFace(1, grid.cells[1]));
     EXPECT_TRUE(grid.isWallFace(0, 0));

@@ -658,6 +658,83 @@ TEST_P(SimulationTest, AWindMatchesTheCpuReference) {
     }
 }
 
+TEST_P(SimulationTest, InflowsMatchTheCpuReference) {
+    // 2D: a burner jet through an open floor (its air hot, smoky and fuelled, burning) and a
+    // vent letting hazy air in at the open top; 3D: two smoke rakes upstream of a wind, the
+    // second switched on after three steps over the first (which wins where they overlap).
+    // The ghosts of both pairs, switched as the inflows start, and the jet's region over the
+    // open floor's faces (which the device's correction once skipped as walls), on the device as
+    // on the CPU.
+    for (const int dim : {2, 3}) {
+        SceneSpec scene =
+            dim == 2 ? testing::gridScene({12, 16, 1}, {0.0, 0.0, 0.0}, {0.75, 1.0, 0.0}, 2)
+                     : testing::gridScene({12, 8, 8}, {0.0, 0.0, 0.0}, {1.5, 1.0, 1.0}, 3);
+        scene.name = "inflows";
+        scene.basis.velocityModes = {{1, dim == 2 ? 40 : 60}};
+        scene.basis.scalarModes = 0;
+        scene.simulation.dt = 0.02;
+        scene.output.stepsPerFrame = 5;
+        InflowSpec first, second;
+        if (dim == 2) {
+            scene.grid.open = {false, false, true, true, false, false};
+            scene.fire = FireSpec{0.5, 4.0, 1.0, 0.5};
+            scene.smoke.buoyancy = 1.0;
+            first.side = 2;
+            first.shape = testing::box({0.271, -0.1, 0.0}, {0.477, 0.063, 0.0});
+            first.velocity = Vec3{0.0, 1.5, 0.0};
+            first.density = 1.0;
+            first.temperature = 1.0;
+            first.fuel = 0.5;
+            second.side = 3;
+            second.shape = testing::ball({0.203, 1.0, 0.0}, 0.171);
+            second.density = 0.3;
+        } else {
+            WindSpec wind;
+            wind.velocity = {1.0, 0.0, 0.0};
+            scene.wind = wind;
+            scene.smoke.buoyancy = 1.0;  // the second rake's warm air rises
+            first.side = second.side = 0;
+            first.shape = testing::ball({0.0, 0.413, 0.521}, 0.237);
+            first.density = 1.0;
+            second.shape = testing::box({-0.1, 0.287, 0.113}, {0.1, 0.713, 0.489});
+            second.density = 0.5;
+            second.temperature = 2.0;
+            second.start = 0.06;
+        }
+        scene.inflows = {first, second};
+        const RunInputs run = testing::sharedRun(scene);
+        {
+            device::Simulation device(context(), run.cache, *run.coefficients, run.settings,
+                                      run.smokeMask, true);
+            reference::Simulation cpu(run.cache, *run.coefficients, run.settings, run.smokeMask);
+            for (int frame = 0; frame < 2; ++frame) {
+                device.advanceFrame();
+                cpu.advanceFrame();
+            }
+            const BackendDifferences d = differences(device, cpu);
+            const SmokeFields smoke = cpu.smoke(), onDevice = device.smoke();
+            const double temperature =
+                maxDifference(onDevice.temperature, smoke.temperature) / maxAbs(smoke.temperature);
+            const double fuel =
+                dim == 2 ? maxDifference(onDevice.fuel, smoke.fuel) / maxAbs(smoke.fuel) : 0.0;
+            std::cout << dim << "D inflows, 10 steps: relative max differences: modes " << d.modes
+                      << ", grid velocity " << d.faceVelocity << ", density " << d.density
+                      << ", temperature " << temperature << ", fuel " << fuel << "; the most smoke "
+                      << maxAbs(smoke.density) << "\n";
+            EXPECT_LE(d.modes, 1e-4);
+            EXPECT_LE(d.faceVelocity, 1e-4);
+            EXPECT_LE(d.density, 1e-4);
+            EXPECT_LE(temperature, 1e-4);
+            EXPECT_LE(fuel, 1e-4);
+            EXPECT_GT(maxAbs(smoke.density), 0.5) << "the inflows' smoke came in";
+            if (dim == 2) {
+                EXPECT_GT(maxAbs(smoke.fuel), 0.1) << "and the burner's fuel";
+            }
+        }
+        expectNoValidationMessages();
+    }
+}
+
 TEST_P(SimulationTest, OpenSidesMatchTheCpuReference) {
     // A hot source under an open top (3D) and a box open at both ends with the flow straight
     // through it (2D), full of smoke: the open sides' faces in each reconstruction, the sampling

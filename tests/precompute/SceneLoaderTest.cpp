@@ -571,11 +571,11 @@ const std::vector<Refusal> kRefusals = {
     {"OpenNotAnArray", kSquare, {openSides("\"y_max\""), basis("velocity_modes = 4")}, "",
      {"[grid].open: expected an array of side names (\"x_min\" ... \"y_max\"), got a string"}},
     {"OpenUnknownSide", kSquare, {openSides("[\"top\"]"), basis("velocity_modes = 4")}, "",
-     {"[grid].open[0]: expected a side of the 2D box: x_min, x_max, y_min, y_max, got \"top\""}},
+     {"[grid].open[0]: expected a side of the 2D box: x_min, x_max, y_min or y_max, got \"top\""}},
     {"OpenZSideIn2D", kSquare, {openSides("[\"y_max\", \"z_max\"]"), basis("velocity_modes = 4")},
      "", {"[grid].open[1]: expected a side of the 2D box"}},
     {"OpenNotAString", kSquare, {openSides("[1]"), basis("velocity_modes = 4")}, "",
-     {"[grid].open[0]: expected a side of the 2D box: x_min, x_max, y_min, y_max, got an integer"}},
+     {"[grid].open[0]: expected a side of the 2D box: x_min, x_max, y_min or y_max, got an integer"}},
     {"OpenTwice", kSquare, {openSides("[\"y_max\", \"y_max\"]"), basis("velocity_modes = 4")},
      "", {"[grid].open[1]: \"y_max\" is listed twice"}},
     {"OpenAcrossAPeriodicAxis", kSquare,
@@ -591,6 +591,55 @@ const std::vector<Refusal> kRefusals = {
      {openSides("[\"y_min\"]"), basis("velocity_modes = 4")},
      "[wind]\nvelocity = [1, 0]\nprofile = \"boundary-layer\"\nthickness = 0.2\n",
      {"[wind].profile: a boundary layer grows over the floor, and this scene's y_min is open"}},
+    // Inflows: through a side the air crosses, where their shape meets it.
+    {"InflowWithoutASide", kSquare, {openSides("[\"y_min\"]"), basis("velocity_modes = 4")},
+     "[[inflow]]\nshape = \"ball\"\ncenter = [0.5, 0]\nradius = 0.2\n",
+     {"[[inflow]] #1 (ball).side: missing required key (x_min, x_max, y_min or y_max)"}},
+    {"InflowOnAnUnknownSide", kSquare, {openSides("[\"y_min\"]"), basis("velocity_modes = 4")},
+     "[[inflow]]\nshape = \"ball\"\nside = \"floor\"\ncenter = [0.5, 0]\nradius = 0.2\n",
+     {"[[inflow]] #1 (ball).side: expected a side of the 2D box: x_min, x_max, y_min or y_max, "
+      "got \"floor\""}},
+    {"InflowThroughAWall", kSquare, {openSides("[\"y_max\"]"), basis("velocity_modes = 4")},
+     "[[inflow]]\nshape = \"ball\"\nside = \"y_min\"\ncenter = [0.5, 0]\nradius = 0.2\n",
+     {"[[inflow]] #1 (ball).side: y_min is a wall: open it ([grid] open = [\"y_min\"]) or let a "
+      "[wind] blow in through it"}},
+    {"InflowWhereTheWindLeaves", kSquare, {basis("velocity_modes = 4")},
+     "[wind]\nvelocity = [1, 0]\n[[inflow]]\nshape = \"ball\"\nside = \"x_max\"\n"
+     "center = [1, 0.5]\nradius = 0.2\n",
+     {"[[inflow]] #1 (ball).side: the wind leaves the box through x_max; it comes in through "
+      "x_min"}},
+    {"InflowAcrossAPeriodicAxis", kSquare,
+     {{"bounds_max = [1, 1]\n", "bounds_max = [1, 1]\nperiodic = [true, false]\n"
+                                "open = [\"y_min\"]\n"},
+      basis("velocity_modes = 4")},
+     "[[inflow]]\nshape = \"ball\"\nside = \"x_min\"\ncenter = [0, 0.5]\nradius = 0.2\n",
+     {"[[inflow]] #1 (ball).side: \"x_min\" lies across a periodic axis"}},
+    {"InflowAwayFromItsSide", kSquare, {openSides("[\"y_min\"]"), basis("velocity_modes = 4")},
+     "[[inflow]]\nshape = \"box\"\nside = \"y_min\"\nmin = [0.4, 0.1]\nmax = [0.6, 0.2]\n",
+     {"[[inflow]] #1 (box).min: the box does not reach across the plane of y_min"}},
+    {"InflowOfAMesh", kSquare, {openSides("[\"y_min\"]"), basis("velocity_modes = 4")},
+     "[[inflow]]\nshape = \"mesh\"\nside = \"y_min\"\n",
+     {"[[inflow]] #1 (mesh).shape: an inflow is a ball or a box, got mesh"}},
+    {"InflowOfFuelWithoutAFire", kSquare, {openSides("[\"y_min\"]"), basis("velocity_modes = 4")},
+     "[[inflow]]\nshape = \"ball\"\nside = \"y_min\"\ncenter = [0.5, 0]\nradius = 0.2\n"
+     "fuel = 1\n",
+     {"[[inflow]] #1 (ball).fuel: fuel burns by a [fire] table"}},
+    {"InflowOfNegativeDensity", kSquare, {openSides("[\"y_min\"]"), basis("velocity_modes = 4")},
+     "[[inflow]]\nshape = \"ball\"\nside = \"y_min\"\ncenter = [0.5, 0]\nradius = 0.2\n"
+     "density = -1\n",
+     {"[[inflow]] #1 (ball).density"}},
+    {"InflowEndingBeforeItStarts", kSquare, {openSides("[\"y_min\"]"), basis("velocity_modes = 4")},
+     "[[inflow]]\nshape = \"ball\"\nside = \"y_min\"\ncenter = [0.5, 0]\nradius = 0.2\n"
+     "start = 1\nend = 0.5\n",
+     {"[[inflow]] #1 (ball).end: must be later than start (1)"}},
+    {"InflowTooFast", kSquare, {openSides("[\"y_min\"]"), basis("velocity_modes = 4")},
+     "[[inflow]]\nshape = \"ball\"\nside = \"y_min\"\ncenter = [0.5, 0]\nradius = 0.2\n"
+     "velocity = [0, 1e300]\n",
+     {"[[inflow]] #1 (ball).velocity: speed 1e+300 is beyond"}},
+    {"InflowWithAnUnknownKey", kSquare, {openSides("[\"y_min\"]"), basis("velocity_modes = 4")},
+     "[[inflow]]\nshape = \"ball\"\nside = \"y_min\"\ncenter = [0.5, 0]\nradius = 0.2\n"
+     "speed = 2\n",
+     {"[[inflow]] #1 (ball).speed"}},
     // A 4 × 4 torus has 32 faces (a walled 4 × 4 box 40): mode 36 lies beyond it.
     {"ModeBeyondTheFacesOfATorus", kSquare,
      {{"[8, 8]", "[4, 4]"}, periodicFlags("[true, true]"),
@@ -741,6 +790,68 @@ thickness = 0.3
                                             "\"boundary-layer\"\nthickness = 0.5\nexponent = 1\n",
                                         "linear.toml");
     EXPECT_EQ(linear.wind->exponent, 1.0);
+}
+
+TEST_F(SceneLoaderTest, InflowsLetAirInThroughOpenSidesAndTheWindsUpstreamOne) {
+    const std::string open = replaced(sceneFixture(kSquare), "bounds_max = [1, 1]\n",
+                                      "bounds_max = [1, 1]\nopen = [\"y_min\", \"y_max\"]\n");
+    const SceneSpec scene = parseScene(open + R"([[inflow]]
+shape = "box"
+side = "y_min"
+min = [0.4, -0.1]
+max = [0.6, 0.05]
+velocity = [0, 2]
+density = 1
+temperature = 0.5
+start = 0.25
+end = 2
+[[inflow]]
+shape = "ball"
+side = "y_max"
+center = [0.2, 1]
+radius = 0.1
+)",
+                                       "inflow.toml");
+    ASSERT_EQ(scene.inflows.size(), 2u);
+    const InflowSpec& jet = scene.inflows[0];
+    EXPECT_EQ(jet.side, 2);
+    EXPECT_EQ(jet.shape.kind, ShapeKind::Box);
+    EXPECT_EQ(jet.shape.min, (Vec3{0.4, -0.1, 0.0}));
+    ASSERT_TRUE(jet.velocity.has_value());
+    EXPECT_EQ(*jet.velocity, (Vec3{0.0, 2.0, 0.0}));
+    EXPECT_EQ(jet.density, 1.0);
+    EXPECT_EQ(jet.temperature, 0.5);
+    EXPECT_EQ(jet.start, 0.25);
+    EXPECT_EQ(jet.end, 2.0);
+    const InflowSpec& vent = scene.inflows[1];
+    EXPECT_EQ(vent.side, 3);
+    EXPECT_FALSE(vent.velocity.has_value());
+    EXPECT_EQ(vent.density, 0.0) << "clean air by default";
+    EXPECT_EQ(vent.fuel, 0.0);
+    EXPECT_EQ(vent.end, std::numeric_limits<double>::infinity());
+    // Upstream of a wind, with no side open; fuel with a fire.
+    const SceneSpec rake = parseScene(sceneFixture(kSquare) + R"([wind]
+velocity = [-1, 0]
+[fire]
+[[inflow]]
+shape = "ball"
+side = "x_max"
+center = [1, 0.5]
+radius = 0.05
+density = 2
+fuel = 1
+)",
+                                      "rake.toml");
+    ASSERT_EQ(rake.inflows.size(), 1u);
+    EXPECT_EQ(rake.inflows[0].side, 1);
+    EXPECT_EQ(rake.inflows[0].fuel, 1.0);
+    // No more than the runtime takes.
+    std::string many = open;
+    for (int i = 0; i <= maxInflows; ++i)
+        many +=
+            "[[inflow]]\nshape = \"ball\"\nside = \"y_min\"\ncenter = [0.5, 0]\nradius = "
+            "0.1\n";
+    EXPECT_CONTAINS(errorOf(many), "[[inflow]]: 17 entries; at most 16 inflows take part");
 }
 
 TEST_F(SceneLoaderTest, AFireBurnsTheFuelOfItsSources) {
@@ -1493,6 +1604,7 @@ TEST_F(SceneLoaderTest, SurfaceSceneRefusesTheGridsTablesAndKeys) {
         {std::string(kSurface) + "[basis]\nvelocity_modes = 4\nwall = \"no-slip\"\n",
          "[basis].wall: only for grid scenes"},
         {surface + "[wind]\nvelocity = [1, 0, 0]\n", "[wind]: a surface is closed"},
+        {surface + "[[inflow]]\nshape = \"ball\"\n", "[[inflow]]: a surface is closed"},
         {surface + "[simulation]\nmhd = true\n",
          "[simulation].mhd: MHD is simulated in grid scenes only"},
         {surface + "[initial]\nvelocity = \"vortices\"\n",

@@ -32,6 +32,14 @@ SceneSpec periodicChannelScene(int nx, std::array<bool, 3> periodic) {
     return s;
 }
 
+SceneSpec openBoxScene(std::array<bool, 6> open, int modes) {
+    SceneSpec scene = gridScene({12, 15, 1}, {0.0, 0.0, 0.0}, {1.0, 1.25, 0.0}, 2);
+    scene.grid.open = open;
+    scene.basis.velocityModes = {{1, modes}};
+    scene.basis.scalarModes = 0;
+    return scene;
+}
+
 ShapeSpec ball(const Vec3& centre, double radius, CsgOp op) {
     ShapeSpec s;
     s.kind = ShapeKind::Ball;

@@ -22,6 +22,10 @@ SceneSpec unitBallScene(int dim, int cells, int velocityModes = 10, int scalarMo
 /// past the grid along x, so the walls are the grid's y bounds.
 SceneSpec periodicChannelScene(int nx, std::array<bool, 3> periodic = {true, false, false});
 
+/// A 2D box over [0, 1] × [0, 1.25] of 12 × 15 cells with `open` sides, `modes` velocity modes
+/// and no scalar ones.
+SceneSpec openBoxScene(std::array<bool, 6> open, int modes);
+
 ShapeSpec ball(const Vec3& centre, double radius, CsgOp op = CsgOp::Union);
 ShapeSpec box(const Vec3& min, const Vec3& max, CsgOp op = CsgOp::Union);
 ShapeSpec ellipsoid(const Vec3& centre, const Vec3& radii);

@@ -1,0 +1,101 @@
+/// @file InflowSection.cpp
+/// `[[inflow]]`: a ball or box across a side the air crosses, through which the air coming in
+/// carries a density, temperature and fuel of its own, and which may drive it (a jet through an
+/// open wall, a smoke rake in a wind tunnel).
+
+#include <cmath>
+#include <string>
+
+#include "precompute/scene/SceneLoader.h"
+#include "precompute/scene/SceneSections.h"
+#include "precompute/scene/SceneWording.h"
+
+namespace modeflow::scene {
+namespace {
+
+/// The side named by `side` of `s`, one the air comes in through: open, or the wind's upstream
+/// side.
+int readInflowSide(const TomlReader& reader, const Section& s, const SceneSpec& scene) {
+    const toml::node* node = s.table.get("side");
+    if (node == nullptr)
+        reader.fail(s, "side", "missing required key (" + sideNames(scene.grid.dim) + ")",
+                    &s.table);
+    const std::optional<std::string> name = node->value<std::string>();
+    const int side = name ? sideNamed(*name, scene.grid.dim) : -1;
+    if (side < 0)
+        reader.fail(s, "side",
+                    "expected a side of the " + std::to_string(scene.grid.dim) +
+                        "D box: " + sideNames(scene.grid.dim) + ", got " +
+                        (name ? "\"" + *name + "\"" : describeType(*node)),
+                    node);
+    const int axis = side / 2;
+    const bool high = side % 2 != 0;
+    if (scene.grid.isPeriodic(axis))
+        reader.fail(s, "side",
+                    "\"" + *name + "\" lies across a periodic axis, whose ends are one plane " +
+                        "with no side to let air in",
+                    node);
+    if (scene.grid.isOpen(axis, high)) return side;
+    if (scene.wind && scene.wind->velocity[std::size_t(axis)] != 0.0) {
+        const bool upstream = (scene.wind->velocity[std::size_t(axis)] < 0.0) == high;
+        if (upstream) return side;
+        reader.fail(s, "side",
+                    "the wind leaves the box through " + *name + "; it comes in through " +
+                        sideName(side ^ 1),
+                    node);
+    }
+    reader.fail(s, "side",
+                *name + " is a wall: open it ([grid] open = [\"" + *name +
+                    "\"]) or let a [wind] blow in through it",
+                node);
+}
+
+/// Whether the shape reaches across the plane of `side`, where its patch lies.
+bool meetsSide(const ShapeSpec& shape, int side, const GridSpec& grid) {
+    const int axis = side / 2;
+    const double plane = side % 2 ? grid.boundsMax[axis] : grid.boundsMin[axis];
+    if (shape.kind == ShapeKind::Ball) return std::abs(shape.center[axis] - plane) < shape.radius;
+    return shape.min[axis] <= plane && plane <= shape.max[axis];
+}
+
+}  // namespace
+
+InflowSpec readInflow(const TomlReader& reader, const toml::table& table, int index,
+                      const SceneSpec& scene) {
+    InflowSpec inflow;
+    inflow.shape = readShape(reader, table, "[[inflow]]", index, ShapeUse::Inflow);
+    const Section s{table, shapeEntryName("[[inflow]]", index, inflow.shape.kind)};
+    inflow.side = readInflowSide(reader, s, scene);
+    if (!meetsSide(inflow.shape, inflow.side, scene.grid))
+        reader.fail(s, inflow.shape.kind == ShapeKind::Ball ? "center" : "min",
+                    "the " + std::string(inflow.shape.kind == ShapeKind::Ball ? "ball" : "box") +
+                        " does not reach across the plane of " + sideName(inflow.side) +
+                        ", where the air it lets in comes through",
+                    &table);
+    inflow.density = readSmokeValue(reader, s, "density", inflow.density, Sign::NonNegative);
+    inflow.temperature = readSmokeValue(reader, s, "temperature", inflow.temperature);
+    inflow.fuel = readSmokeValue(reader, s, "fuel", inflow.fuel, Sign::NonNegative);
+    if (inflow.fuel > 0.0 && !scene.fire)
+        reader.fail(s, "fuel",
+                    "fuel burns by a [fire] table (ignition, burn_rate, heat, smoke), which the "
+                    "scene lacks",
+                    table.get("fuel"));
+    inflow.velocity = reader.vector(s, "velocity");
+    if (inflow.velocity) {
+        const Vec3& v = *inflow.velocity;
+        const double speed = std::hypot(v[0], v[1], v[2]);  // no overflow in the squares
+        if (!(speed <= kMaxInitialSpeed))
+            reader.fail(s, "velocity",
+                        "speed " + roughNumber(speed) + " is beyond " +
+                            roughNumber(kMaxInitialSpeed) + " scene units per unit time",
+                        table.get("velocity"));
+    }
+    inflow.start = reader.readNumber(s, "start", inflow.start, Sign::NonNegative);
+    inflow.end = reader.readNumber(s, "end", inflow.end, Sign::Positive);
+    if (inflow.end <= inflow.start)
+        reader.fail(s, "end", "must be later than start (" + formatNumber(inflow.start) + ")",
+                    table.get("end"));
+    return inflow;
+}
+
+}  // namespace modeflow::scene
