@@ -60,6 +60,7 @@
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
 #extension GL_EXT_control_flow_attributes : require
 #include "SmokeAdvectParams.h"
+#include "OutsideAir.glsl"
 
 layout(local_size_x = 128, local_size_x_id = 0) in;
 
@@ -165,20 +166,13 @@ vec2 ghostAt(vec3 g, uint sides) {
             side = 2 * a + 1;
         }
     }
-    const int axis = side / 2;
-    const ivec2 along = ivec2(axis == 0 ? 1 : 0, axis == 2 ? 1 : 2);
-    ivec2 at;
-    [[unroll]] for (int k = 0; k < 2; ++k) {
-        const int b = along[k], n = cells[b];
+    ivec3 at = ivec3(0);
+    [[unroll]] for (int b = 0; b < SMOKE_DIM; ++b) {
+        const int n = cells[b];
         const float x = isnan(g[b]) || isinf(g[b]) ? 0.0 : clamp(floor(g[b]), -float(n), 2.0 * float(n));
-        at[k] = isPeriodic(params.boundary, b) ? ((int(x) % n) + n) % n : clamp(int(x), 0, n - 1);
+        at[b] = isPeriodic(params.boundary, b) ? ((int(x) % n) + n) % n : clamp(int(x), 0, n - 1);
     }
-    // The sides' ghosts one after the other: x_min, x_max, y_min, ...
-    const int total = cells.x * cells.y * cells.z;
-    int first = (side & 1) * (total / cells[axis]);
-    for (int a = 0; a < axis; ++a) first += 2 * (total / cells[a]);
-    const uvec4 ghost = texelFetch(ghosts, first + at.x + cells[along.x] * at.y);
-    return params.ghostPair == 0u ? uintBitsToFloat(ghost.xy) : vec2(uintBitsToFloat(ghost.z), 0.0);
+    return ghostPairOf(texelFetch(ghosts, ghostIndex(side, at, cells)), params.ghostPair);
 }
 
 // A masked trilinear sample of (density, temperature) from `fields` (in or hat), and the range of the

@@ -173,7 +173,7 @@ struct SourceSpec {
 
 /// How smoke is carried (engine/README.md): RK2 semi-Lagrangian, MacCormack with clamping (less
 /// diffusive; engine/reference/SmokeAdvection.h), or the flux form that keeps the smoke's mass
-/// (engine/reference/ConservativeTransport.h; the CPU reference only).
+/// (engine/reference/ConservativeTransport.h; both backends).
 enum class AdvectionScheme { SemiLagrangian, MacCormack, Conservative };
 
 /// A solid moving through the fluid on a key-framed path (`[[obstacle]]`); the fluid's normal

@@ -8,6 +8,7 @@
 #include "engine/core/FaceLocation.h"
 #include "engine/core/RuntimeLimits.h"
 #include "engine/dynamics/ModalDivergence.h"
+#include "engine/simulation/FluxSubsteps.h"
 #include "engine/simulation/SmokeDisplacement.h"
 #include "engine/simulation/WindTransport.h"
 
@@ -26,7 +27,8 @@ SimulationSettings supported(SimulationSettings settings) {
 }
 
 /// Dispatches one step may record, for the timestamp pool: the midpoint iterations dominate.
-std::uint32_t maxDispatchesPerStep(const ModalStepper& stepper, const SmokeState& smoke) {
+std::uint32_t maxDispatchesPerStep(const ModalStepper& stepper, const SmokeState& smoke,
+                                   AdvectionScheme advection) {
     // The displacement a substep: a fill, the cover over a box (or a box a solid) of at most
     // every smoke cell in dispatches of at least 65535 groups of 64 (the least
     // maxComputeWorkGroupCount), then four dispatches; two fills when its stamps wrap.
@@ -35,9 +37,12 @@ std::uint32_t maxDispatchesPerStep(const ModalStepper& stepper, const SmokeState
     const std::int64_t particleDispatches = (maxParticles + 65535 * 64 - 1) / (65535 * 64);
     // The fuel's push and gather a substep, and the burn a dispatch per 65535 groups of 128.
     const std::int64_t burnDispatches = (smoke.cellCount() + 65535 * 128 - 1) / (65535 * 128);
+    // The conservative smoke's substeps, a dispatch a pair each (its second submission).
+    const std::int64_t fluxDispatches =
+        advection == AdvectionScheme::Conservative ? 2 * std::int64_t(maxFluxSubsteps) : 0;
     return std::uint32_t(kMaxSubsteps * stepper.dispatchesPerStep() + 64 +
                          (boxDispatches * maxObstacles + 7) * maxDisplacementSubsteps + 2 +
-                         particleDispatches + burnDispatches);
+                         particleDispatches + burnDispatches + fluxDispatches);
 }
 
 std::vector<double> widened(const std::vector<float>& values) {
@@ -73,11 +78,12 @@ Simulation::Simulation(const vulkan::VulkanContext& context, const BasisCache& c
       mAdvection(context),
       mDisplacement(context, mSmoke),
       mParticles(context, mSmoke, smokeMask, mSettings.particles, mSettings.shotEnd),
-      mSequence(context, timestamps, maxDispatchesPerStep(mStepper, mSmoke)) {
+      mSequence(context, timestamps, maxDispatchesPerStep(mStepper, mSmoke, mSettings.advection)) {
     if (!(mSettings.dt > 0.0)) throw Error("simulation: dt must be positive");
     if (mSettings.stepsPerFrame < 1) throw Error("simulation: steps per frame must be at least 1");
     requireDisplaceableMotion(mSettings.obstacles, mSettings.dt, mSmoke.smokeGrid());
     if (mSettings.fire) mBurn.emplace(context);
+    if (mSettings.advection == AdvectionScheme::Conservative) mFlux.emplace(context, mSmoke);
     if (mSettings.wind) {
         mWind.emplace(context, mReconstruction.grid(), windBaseFlow(cache, *mSettings.wind));
         mSmoke.setWind(*mSettings.wind);
@@ -181,7 +187,7 @@ void Simulation::recordStep(std::vector<std::size_t>& boundaries) {
         mSmoke.setInflows(activeInflows(mSettings.inflows, mTime));
         mActiveInflows = std::move(letIn);
     }
-    boundaries.push_back(mSequence.dispatchCount());
+    boundaries.push_back(dispatchMark());
     if (forcesActive()) {
         // Without solid smoke cells the mask leaves every weight as it is: skip its loads.
         const bool solidCells = std::int64_t(mSmoke.fluidCellCount()) < mSmoke.cellCount();
@@ -198,11 +204,11 @@ void Simulation::recordStep(std::vector<std::size_t>& boundaries) {
         else
             mProjection.record(mSequence, *mModes, mForceDensity, mStepper.forceBuffer());
     }
-    boundaries.push_back(mSequence.dispatchCount());
+    boundaries.push_back(dispatchMark());
     mStepper.recordStep(mSequence, dt, mSubsteps);
-    boundaries.push_back(mSequence.dispatchCount());
+    boundaries.push_back(dispatchMark());
     recordReconstruction();
-    boundaries.push_back(mSequence.dispatchCount());
+    boundaries.push_back(dispatchMark());
     const std::vector<MovingObstacle> regions = mSettings.velocityRegions(mTime);
     if (!regions.empty()) {
         // Where the obstacles are at the end of the step, which the advection then sees.
@@ -213,15 +219,34 @@ void Simulation::recordStep(std::vector<std::size_t>& boundaries) {
             mObstacles.record(mSequence, *mModes, mFaceVelocity, mStepper.stateBuffer());
         recordReconstruction();
     }
-    boundaries.push_back(mSequence.dispatchCount());
-    mAdvection.record(mSequence, mSmoke, mFaceVelocity, dt, mSettings.advection);
-    boundaries.push_back(mSequence.dispatchCount());
+    boundaries.push_back(dispatchMark());
+    if (mFlux) {
+        // The substeps come from the step's velocity: read them between two submissions.
+        mFlux->recordCourant(mSequence, mAdvection, mSmoke, mFaceVelocity, dt);
+        submitWithinStep();
+        mFlux->record(mSequence, mSmoke, dt, mFlux->substeps());
+    } else {
+        mAdvection.record(mSequence, mSmoke, mFaceVelocity, dt, mSettings.advection);
+    }
+    boundaries.push_back(dispatchMark());
     mDisplacement.record(mSequence, mSmoke, mSettings.obstacles, mTime, dt);
-    boundaries.push_back(mSequence.dispatchCount());
+    boundaries.push_back(dispatchMark());
     if (mBurn) mBurn->record(mSequence, mSmoke, *mSettings.fire, dt);
-    boundaries.push_back(mSequence.dispatchCount());
+    boundaries.push_back(dispatchMark());
     mParticles.record(mSequence, mSmoke, mSettings.obstacles, mTime, dt);
-    boundaries.push_back(mSequence.dispatchCount());
+    boundaries.push_back(dispatchMark());
+}
+
+std::size_t Simulation::dispatchMark() const {
+    return mStepDispatches + mSequence.dispatchCount();
+}
+
+void Simulation::submitWithinStep() {
+    const std::size_t recorded = mSequence.dispatchCount();
+    mSequence.submitAndWait();
+    const std::vector<double>& times = mSequence.dispatchTimesMs();
+    mStepTimesMs.insert(mStepTimesMs.end(), times.begin(), times.end());
+    mStepDispatches += recorded;
 }
 
 void Simulation::recordReconstruction() {
@@ -241,8 +266,10 @@ FrameStats Simulation::advanceSteps(int steps) {
     FrameStats stats;
     for (int s = 0; s < steps; ++s) {
         std::vector<std::size_t> boundaries;
+        mStepDispatches = 0;
+        mStepTimesMs.clear();
         recordStep(boundaries);
-        mSequence.submitAndWait();
+        submitWithinStep();
         mTime += mSettings.dt;
         ++stats.steps;
         // N floats: as cheap as the status read below (measured in engine/README.md).
@@ -263,7 +290,7 @@ FrameStats Simulation::advanceSteps(int steps) {
             mEasySteps = 0;
         }
         stats.substeps = std::max(stats.substeps, mSubsteps);
-        const std::vector<double>& times = mSequence.dispatchTimesMs();
+        const std::vector<double>& times = mStepTimesMs;
         if (times.empty()) continue;
         ++stats.timedSteps;
         // The smoke pushed out of solids counts to the obstacles, the burn to the advection.

@@ -17,6 +17,7 @@
 #include <optional>
 #include <vector>
 
+#include "engine/device/ConservativeTransport.h"
 #include "engine/device/FireBurn.h"
 #include "engine/device/ForceField.h"
 #include "engine/device/ForceProjection.h"
@@ -81,6 +82,10 @@ public:
 private:
     /// Records one whole step; adds each stage's dispatch range to `ranges`.
     void recordStep(std::vector<std::size_t>& boundaries);
+    /// Dispatches of the step so far, in the submissions made and the one being recorded.
+    std::size_t dispatchMark() const;
+    /// Submits what is recorded and waits, keeping its dispatch times for the step's stats.
+    void submitWithinStep();
     /// The grid velocity of the modal state.
     void recordReconstruction();
     /// The face field of the modal vector `modal` (v, or MHD's F) into `field`.
@@ -102,6 +107,7 @@ private:
     ObstacleCorrection mObstacles;
     SmokeState mSmoke;
     SmokeAdvectionKernels mAdvection;
+    std::optional<ConservativeTransport> mFlux;  ///< with [smoke] advection = "conservative"
     SmokeDisplacement mDisplacement;
     ParticleAdvection mParticles;
     std::optional<FireBurnKernel> mBurn;  ///< with [fire]
@@ -110,6 +116,8 @@ private:
         mSequence;                      ///< also records faceMagneticField()'s reconstruction
     std::vector<bool> mActiveEmitters;  ///< what the device's emitter list holds now
     std::vector<bool> mActiveInflows;   ///< the inflows the device's ghosts hold now
+    std::size_t mStepDispatches = 0;    ///< dispatches of the step's earlier submissions
+    std::vector<double> mStepTimesMs;   ///< their times, and the last submission's
     /// Modal substeps per step: doubled when an implicit solve fails to converge, halved again
     /// after a long run of easy steps (see advanceFrame()).
     int mSubsteps = 1;

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "engine/core/Error.h"
+#include "engine/device/ChunkedDispatch.h"
 #include "engine/device/SmokeState.h"
 #include "engine/vulkan/CommandSequence.h"
 #include "engine/vulkan/DeviceBuffer.h"
@@ -28,20 +29,10 @@ namespace modeflow::device {
 namespace {
 
 shaders::SmokeAdvectParams stepParams(const SmokeState& state, double dt) {
-    const MacGrid& basis = state.basisGrid();
     const MacGrid& smoke = state.smokeGrid();
     shaders::SmokeAdvectParams p{};
-    p.cellsX = std::uint32_t(smoke.cells[0]);
-    p.cellsY = std::uint32_t(smoke.cells[1]);
-    p.cellsZ = std::uint32_t(smoke.cells[2]);
+    setGridParams(p, state);
     p.fluidCount = state.fluidCellCount();
-    p.basisX = std::uint32_t(basis.cells[0]);
-    p.basisY = std::uint32_t(basis.cells[1]);
-    p.basisZ = std::uint32_t(basis.cells[2]);
-    p.scale = std::uint32_t(state.scale());
-    p.faceOffsetY = std::uint32_t(basis.faceOffset(1));
-    p.faceOffsetZ = std::uint32_t(basis.faceOffset(2));
-    p.boundary = basis.boundaryBits() | state.inflowBits();
     // Velocity times dt / spacing: smoke cells per step, as in the CPU reference.
     p.stepX = float(dt / smoke.spacing[0]);
     p.stepY = float(dt / smoke.spacing[1]);
@@ -127,51 +118,37 @@ const vulkan::ComputeKernel& SmokeAdvectionKernels::stageKernel(std::uint32_t st
     return *kernel;
 }
 
-template <typename Params>
-void SmokeAdvectionKernels::dispatchAll(vulkan::CommandSequence& sequence,
-                                        const vulkan::ComputeKernel& kernel,
-                                        std::span<const vulkan::DeviceBuffer* const> buffers,
-                                        Params& params, std::uint32_t Params::*first,
-                                        std::int64_t count, std::uint32_t firstScale) const {
-    const std::int64_t groupSize = kernel.workgroupSize();
-    const std::int64_t perDispatch =
-        std::int64_t(mContext.properties().limits.maxComputeWorkGroupCount[0]) * groupSize;
-    for (std::int64_t start = 0; start < count; start += perDispatch) {
-        params.*first = std::uint32_t(start) * firstScale;
-        const std::int64_t chunk = std::min(perDispatch, count - start);
-        sequence.dispatch(kernel, buffers, params,
-                          std::uint32_t((chunk + groupSize - 1) / groupSize));
-    }
-}
-
-void SmokeAdvectionKernels::record(vulkan::CommandSequence& sequence, SmokeState& state,
-                                   const vulkan::DeviceBuffer& velocity, double dt,
-                                   AdvectionScheme scheme) const {
+void SmokeAdvectionKernels::recordFacePairs(vulkan::CommandSequence& sequence,
+                                            const SmokeState& state,
+                                            const vulkan::DeviceBuffer& velocity) const {
     const std::int64_t faces = state.basisGrid().faceTotal();
     if (velocity.bytes() < VkDeviceSize(faces) * sizeof(float))
         throw Error("smoke_advect: velocity buffer \"" + velocity.name() + "\" holds " +
                     std::to_string(velocity.bytes()) + " bytes, the basis grid's " +
                     std::to_string(faces) + " faces need " + std::to_string(faces * sizeof(float)));
-    if (!std::isfinite(dt))
-        throw Error("smoke_advect: time step " + std::to_string(dt) + " is not finite");
-    if (scheme == AdvectionScheme::Conservative)
-        throw Error(
-            "smoke_advect: the conservative scheme runs on the CPU reference only "
-            "(BackendCapabilities)");
-    const std::int64_t cells = state.cellCount();
-    if (cells >= (std::int64_t(1) << 32))
-        throw Error("smoke_advect: " + std::to_string(cells) +
-                    " smoke cells, at most 2^32 - 1 supported");
-
     shaders::SmokeFacePairsParams pairs = pairParams(state.basisGrid());
     // Bindings 0-2 of shaders/smoke_face_pairs.comp: the velocity as texels and as floats.
     const std::array<const vulkan::DeviceBuffer*, 3> pairBuffers{&velocity, &velocity,
                                                                  &state.facePairs()};
     std::optional<vulkan::ComputeKernel>& facePairs = mFacePairs[pairs.wrapX != 0 ? 1 : 0];
     if (!facePairs) facePairs.emplace(facePairsKernel(mContext, mWorkgroupSize, pairs.wrapX != 0));
-    dispatchAll(sequence, *facePairs, pairBuffers, pairs, &shaders::SmokeFacePairsParams::firstFace,
-                (faces + 3) / 4, 4);
+    dispatchInChunks(mContext, sequence, *facePairs, pairBuffers, pairs,
+                     &shaders::SmokeFacePairsParams::firstFace, (faces + 3) / 4, 4);
+}
 
+void SmokeAdvectionKernels::record(vulkan::CommandSequence& sequence, SmokeState& state,
+                                   const vulkan::DeviceBuffer& velocity, double dt,
+                                   AdvectionScheme scheme) const {
+    if (!std::isfinite(dt))
+        throw Error("smoke_advect: time step " + std::to_string(dt) + " is not finite");
+    if (scheme == AdvectionScheme::Conservative)
+        throw Error("smoke_advect: the conservative scheme is device::ConservativeTransport's");
+    const std::int64_t cells = state.cellCount();
+    if (cells >= (std::int64_t(1) << 32))
+        throw Error("smoke_advect: " + std::to_string(cells) +
+                    " smoke cells, at most 2^32 - 1 supported");
+
+    recordFacePairs(sequence, state, velocity);
     shaders::SmokeAdvectParams params = stepParams(state, dt);
     // Each pair in turn, through the shared MacCormack buffers.
     for (int p = 0; p < state.pairCount(); ++p) {
@@ -188,9 +165,9 @@ void SmokeAdvectionKernels::record(vulkan::CommandSequence& sequence, SmokeState
                                                                  &state.second(pair),
                                                                  &state.ghosts()};
         const auto stage = [&](std::uint32_t s) {
-            dispatchAll(sequence, stageKernel(s, state.smokeGrid().dim, state.scale() == 1),
-                        buffers, params, &shaders::SmokeAdvectParams::firstCell,
-                        state.fluidCellCount());
+            dispatchInChunks(
+                mContext, sequence, stageKernel(s, state.smokeGrid().dim, state.scale() == 1),
+                buffers, params, &shaders::SmokeAdvectParams::firstCell, state.fluidCellCount());
         };
         if (scheme == AdvectionScheme::SemiLagrangian) {
             stage(SMOKE_STAGE_SEMI_LAGRANGIAN);

@@ -49,16 +49,13 @@ public:
     /// 2^32 cells or more, or a kernel's pipeline cannot be created.
     void record(vulkan::CommandSequence& sequence, SmokeState& state,
                 const vulkan::DeviceBuffer& velocity, double dt, AdvectionScheme scheme) const;
+    /// Records the step's first dispatch alone: the velocity as face pairs
+    /// (SmokeState::facePairs, shaders/smoke_face_pairs.comp), which record() does first and
+    /// the conservative transport samples too.
+    void recordFacePairs(vulkan::CommandSequence& sequence, const SmokeState& state,
+                         const vulkan::DeviceBuffer& velocity) const;
 
 private:
-    /// Dispatches `kernel` over `count` invocations in chunks of at most the group count limit,
-    /// each with its first invocation times `firstScale` in params.*first.
-    template <typename Params>
-    void dispatchAll(vulkan::CommandSequence& sequence, const vulkan::ComputeKernel& kernel,
-                     std::span<const vulkan::DeviceBuffer* const> buffers, Params& params,
-                     std::uint32_t Params::*first, std::int64_t count,
-                     std::uint32_t firstScale = 1) const;
-
     /// The kernel of `stage` (SMOKE_STAGE_*) for a `dim`-dimensional smoke grid, made on first
     /// use; `unitScale`: the smoke grid is the basis grid.
     const vulkan::ComputeKernel& stageKernel(std::uint32_t stage, int dim, bool unitScale) const;

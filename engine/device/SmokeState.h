@@ -34,6 +34,14 @@ class VulkanContext;
 
 namespace modeflow::device {
 
+class SmokeState;
+
+/// The grids' shape in a smoke kernel's push constants (SmokeAdvectParams, SmokeFluxParams):
+/// the smoke and basis cells per axis, the scale, the basis grid's face offsets, and its
+/// boundary bits with the state's inflow sides.
+template <typename Params>
+void setGridParams(Params& p, const SmokeState& state);
+
 /// The pairs of fields a step carries: (density, temperature) always, (fuel, flame) with fire.
 enum class SmokePair { Smoke = 0, Fuel = 1 };
 
@@ -146,5 +154,21 @@ private:
     std::uint32_t mEmitterCount = 0;
     int mCurrent = 0;
 };
+
+template <typename Params>
+void setGridParams(Params& p, const SmokeState& state) {
+    const MacGrid& basis = state.basisGrid();
+    const MacGrid& smoke = state.smokeGrid();
+    p.cellsX = std::uint32_t(smoke.cells[0]);
+    p.cellsY = std::uint32_t(smoke.cells[1]);
+    p.cellsZ = std::uint32_t(smoke.cells[2]);
+    p.basisX = std::uint32_t(basis.cells[0]);
+    p.basisY = std::uint32_t(basis.cells[1]);
+    p.basisZ = std::uint32_t(basis.cells[2]);
+    p.scale = std::uint32_t(state.scale());
+    p.faceOffsetY = std::uint32_t(basis.faceOffset(1));
+    p.faceOffsetZ = std::uint32_t(basis.faceOffset(2));
+    p.boundary = basis.boundaryBits() | state.inflowBits();
+}
 
 }  // namespace modeflow::device

@@ -7,6 +7,7 @@
 #include "engine/core/Error.h"
 #include "engine/core/FaceLocation.h"
 #include "engine/core/MacSampling.h"
+#include "engine/simulation/FluxSubsteps.h"
 
 namespace modeflow::reference {
 namespace {
@@ -70,12 +71,7 @@ int ConservativeTransport::substeps(std::span<const double> u, double dt) const 
                 }
                 worst = std::max(worst, courant);
             }
-    // Σ_a |u_a| h / h_a ≤ ½ per substep.
-    if (2.0 * worst > kMaxSubsteps)
-        throw Error("conservative smoke advection: the air crosses " + std::to_string(worst) +
-                    " smoke cells in a step, beyond the " + std::to_string(kMaxSubsteps / 2) +
-                    " its substeps allow; lower [simulation].dt or use another [smoke].advection");
-    return std::max(1, int(std::ceil(2.0 * worst)));
+    return fluxSubsteps(worst);
 }
 
 double ConservativeTransport::advect(std::span<const double> u, double dt, int substeps,

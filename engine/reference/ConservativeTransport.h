@@ -37,11 +37,9 @@ public:
     /// MacGrid::faceIndex order of the smoke grid (0 on faces that move no smoke, and where the
     /// velocity is not finite).
     std::vector<double> faceVelocity(std::span<const double> velocity) const;
-    /// The most substeps a step may take (a CFL of 2048 smoke cells a step).
-    static constexpr int kMaxSubsteps = 4096;
-
-    /// Forward Euler substeps that keep the step within the TVD limit for `faceVelocity`.
-    /// @throw modeflow::Error when that takes more than kMaxSubsteps.
+    /// Forward Euler substeps that keep the step within the TVD limit for `faceVelocity`
+    /// (simulation/FluxSubsteps.h).
+    /// @throw modeflow::Error when that takes more than maxFluxSubsteps.
     int substeps(std::span<const double> faceVelocity, double dt) const;
 
     /// Advects `field` over dt in `substeps` steps; ghost cells beyond inflow sides hold the

@@ -7,8 +7,8 @@
 namespace modeflow {
 namespace {
 
-constexpr BackendCapabilities kCpuReference{"the CPU reference", "cpu", false, true, true};
-constexpr BackendCapabilities kVulkan{"a Vulkan device", "vulkan", true, false, false};
+constexpr BackendCapabilities kCpuReference{"the CPU reference", "cpu", false, true};
+constexpr BackendCapabilities kVulkan{"a Vulkan device", "vulkan", true, false};
 
 }  // namespace
 
@@ -20,11 +20,6 @@ void requireSupport(const SceneSpec& scene, BackendKind kind) {
     const std::string file = scene.sourceFile.empty() ? scene.name : scene.sourceFile.string();
     if (scene.isSurface() && !capabilitiesOf(kind).surfaces)
         throw Error(file + ": [surface] scenes run on the CPU reference only; use --device cpu");
-    if (!scene.isSurface() && scene.smoke.advection == AdvectionScheme::Conservative &&
-        !capabilitiesOf(kind).conservativeSmoke)
-        throw Error(file +
-                    ": [smoke].advection = \"conservative\" runs on the CPU reference only; use "
-                    "--device cpu");
 }
 
 }  // namespace modeflow

@@ -1,0 +1,7 @@
+#version 450
+// The conservative smoke transport's courant stage on a 2D smoke grid: SmokeFlux.glsl with its
+// stage and dimension fixed at compile time.
+#extension GL_GOOGLE_include_directive : require
+#define SMOKE_DIM 2
+#define SMOKE_FLUX_STAGE 1
+#include "SmokeFlux.glsl"

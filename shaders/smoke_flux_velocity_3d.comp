@@ -1,0 +1,7 @@
+#version 450
+// The conservative smoke transport's velocity stage on a 3D smoke grid: SmokeFlux.glsl with its
+// stage and dimension fixed at compile time.
+#extension GL_GOOGLE_include_directive : require
+#define SMOKE_DIM 3
+#define SMOKE_FLUX_STAGE 0
+#include "SmokeFlux.glsl"
