@@ -3,6 +3,7 @@
 /// carries a density, temperature and fuel of its own, and which may drive it (a jet through an
 /// open wall, a smoke rake in a wind tunnel).
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -58,6 +59,40 @@ bool meetsSide(const ShapeSpec& shape, int side, const GridSpec& grid) {
     return shape.min[axis] <= plane && plane <= shape.max[axis];
 }
 
+/// Whether the shape holds the centre of some smoke cell's face on `side` (where the air it lets
+/// in comes through; the run checks the fluid's cells again): per axis along the side, the face
+/// centres nearest the shape, any of them along a periodic axis. A hair of slack, so that a
+/// centre on the shape's edge, which the run takes, is not refused here.
+bool coversASmokeFace(const ShapeSpec& shape, int side, const SceneSpec& scene) {
+    const GridSpec& grid = scene.grid;
+    const int axis = side / 2;
+    const double plane = side % 2 ? grid.boundsMax[axis] : grid.boundsMin[axis];
+    const double across = shape.center[axis] - plane;
+    double reach = shape.radius * shape.radius - across * across;
+    for (int b = 0; b < grid.dim; ++b) {
+        if (b == axis) continue;
+        const int n = grid.resolution[b] * scene.smoke.resolutionScale;
+        const double h = (grid.boundsMax[b] - grid.boundsMin[b]) / n;
+        const double slack = 1e-9;
+        // Centres lo + (k + ½) h, k in 0 … n − 1 (every k along a periodic axis).
+        const auto inBox = [&](double k) {
+            return grid.periodic[b] ? k : std::clamp(k, 0.0, double(n - 1));
+        };
+        if (shape.kind == ShapeKind::Box) {
+            const double first =
+                inBox(std::ceil((shape.min[b] - grid.boundsMin[b]) / h - 0.5 - slack));
+            const double centre = grid.boundsMin[b] + (first + 0.5) * h;
+            if (centre < shape.min[b] - slack * h || centre > shape.max[b] + slack * h)
+                return false;
+        } else {
+            const double k = inBox(std::round((shape.center[b] - grid.boundsMin[b]) / h - 0.5));
+            const double offset = grid.boundsMin[b] + (k + 0.5) * h - shape.center[b];
+            reach -= offset * offset;
+        }
+    }
+    return shape.kind == ShapeKind::Box || reach >= -1e-9 * shape.radius * shape.radius;
+}
+
 }  // namespace
 
 InflowSpec readInflow(const TomlReader& reader, const toml::table& table, int index,
@@ -71,6 +106,13 @@ InflowSpec readInflow(const TomlReader& reader, const toml::table& table, int in
                     "the " + std::string(inflow.shape.kind == ShapeKind::Ball ? "ball" : "box") +
                         " does not reach across the plane of " + sideName(inflow.side) +
                         ", where the air it lets in comes through",
+                    &table);
+    if (!coversASmokeFace(inflow.shape, inflow.side, scene))
+        reader.fail(s, inflow.shape.kind == ShapeKind::Ball ? "radius" : "max",
+                    "where the " +
+                        std::string(inflow.shape.kind == ShapeKind::Ball ? "ball" : "box") +
+                        " meets " + sideName(inflow.side) +
+                        " it holds the centre of no smoke cell's face there: make it larger",
                     &table);
     inflow.density = readSmokeValue(reader, s, "density", inflow.density, Sign::NonNegative);
     inflow.temperature = readSmokeValue(reader, s, "temperature", inflow.temperature);

@@ -617,6 +617,14 @@ const std::vector<Refusal> kRefusals = {
     {"InflowAwayFromItsSide", kSquare, {openSides("[\"y_min\"]"), basis("velocity_modes = 4")},
      "[[inflow]]\nshape = \"box\"\nside = \"y_min\"\nmin = [0.4, 0.1]\nmax = [0.6, 0.2]\n",
      {"[[inflow]] #1 (box).min: the box does not reach across the plane of y_min"}},
+    {"InflowCoveringNoFace", kSquare, {openSides("[\"y_min\"]"), basis("velocity_modes = 4")},
+     "[[inflow]]\nshape = \"ball\"\nside = \"y_min\"\ncenter = [0.5, 0]\nradius = 0.01\n",
+     {"[[inflow]] #1 (ball).radius: where the ball meets y_min it holds the centre of no smoke "
+      "cell's face there: make it larger"}},
+    {"InflowBoxBetweenFaces", kSquare, {openSides("[\"y_min\"]"), basis("velocity_modes = 4")},
+     "[[inflow]]\nshape = \"box\"\nside = \"y_min\"\nmin = [0.51, -0.1]\nmax = [0.55, 0.1]\n",
+     {"[[inflow]] #1 (box).max: where the box meets y_min it holds the centre of no smoke cell's "
+      "face there"}},
     {"InflowOfAMesh", kSquare, {openSides("[\"y_min\"]"), basis("velocity_modes = 4")},
      "[[inflow]]\nshape = \"mesh\"\nside = \"y_min\"\n",
      {"[[inflow]] #1 (mesh).shape: an inflow is a ball or a box, got mesh"}},
@@ -837,7 +845,7 @@ velocity = [-1, 0]
 shape = "ball"
 side = "x_max"
 center = [1, 0.5]
-radius = 0.05
+radius = 0.1
 density = 2
 fuel = 1
 )",
