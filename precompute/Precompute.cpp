@@ -286,6 +286,8 @@ BasisCache computeStages(const SceneSpec& scene, std::string key, Progress& prog
     if (!scene.domain.empty()) {
         progress.begin("wind base flows");
         cache.windBase = windBaseFlows(complex, measures, dec);
+        cache.windStokes = windStokesCorrections(complex, dec, cache.velocity.modes,
+                                                 cache.velocity.eigenvalues, cache.windBase);
         cache.timings.emplace_back("wind_base_flows", progress.end());
     }
     return cache;

@@ -5,7 +5,8 @@
 // the weighted point modal_pair_sums.comp contracts next, f the modal force (constant over the
 // step), M the diagonal mass (1 + alpha^2 kappa^2 for LANS-alpha), d the decay rates (nu kappa^2).
 // As in engine/dynamics/ModalIntegrator.h the decay is Strang-split: x_i <- exp(-d_i h/2) x_i
-// before (BEGIN) and after the step.
+// before (BEGIN) and after the step; below, exp(-d h/2) v stands for t + exp(-d h/2) (v - t),
+// t what the value decays toward (0 but in a wind round [[domain]] walls).
 //
 //   BEGIN         x <- exp(-d h/2) x;  y = x, or for a midpoint step after converged implicit
 //                 steps the warm start y = x + h/2 M^-1 (R~ + f) (see main());
@@ -48,6 +49,8 @@ layout(std430, set = 0, binding = 2) buffer Weighted { float a[]; };
 layout(std430, set = 0, binding = 3) readonly buffer Rhs { float r[]; };
 layout(std430, set = 0, binding = 4) readonly buffer Force { float f[]; };
 layout(std430, set = 0, binding = 5) readonly buffer Mass { float mass[]; };
+// The decay rates d, then (from parts * stride on) what each value decays toward: 0, or a
+// wind's held flow's Stokes correction (engine/dynamics/FluidSystem.h).
 layout(std430, set = 0, binding = 6) readonly buffer Decay { float decay[]; };
 layout(std430, set = 0, binding = 7) buffer Accumulator { float acc[]; };
 layout(std430, set = 0, binding = 8) buffer Status { ModalStatus status; };
@@ -245,21 +248,22 @@ void main() {
     for (uint k = lane; k < params.parts * params.stride; k += size) {
         if (!inState(k)) continue;
         const float halfDecay = exp(-0.5 * h * decay[k]);
+        const float target = decay[params.parts * params.stride + k];
         const float rk = rhs(k);
         if (op == MODAL_OP_BEGIN) {
-            x[k] *= halfDecay;
+            x[k] = target + halfDecay * (x[k] - target);
             const uint before = at(2u * ANDERSON_DEPTH + 2u, k);
             const float extrapolated = held >= 2u ? 2.0 * rk - history[before] : rk;
             setPoint(k, warm ? x[k] + 0.5 * h * (extrapolated + f[k]) * inverseMass[k] : x[k]);
             if (held >= 1u) history[before] = rk;
         } else if (op == MODAL_OP_EXPLICIT) {
-            x[k] = halfDecay * (x[k] + h * (rk + f[k]) * inverseMass[k]);
+            x[k] = target + halfDecay * (x[k] + h * (rk + f[k]) * inverseMass[k] - target);
         } else if (op == MODAL_OP_RK4_STAGE) {
             const float slope = (rk + f[k]) * inverseMass[k];
             const uint s = params.stage;
             acc[k] = (s == 0 ? 0.0 : acc[k]) + (s == 0 || s == 3 ? 1.0 : 2.0) * slope;
             if (s < 3) setPoint(k, x[k] + (s == 2 ? 1.0 : 0.5) * h * slope);
-            else x[k] = halfDecay * (x[k] + h / 6.0 * acc[k]);
+            else x[k] = target + halfDecay * (x[k] + h / 6.0 * acc[k] - target);
         } else if (op == MODAL_OP_LINEARIZED_START) {
             const float rate = status.heldRate != 0u ? history[at(HELD_RATE_SLOT, k)] : rk * inverseMass[k];
             setPoint(k, x[k] + 0.5 * h * (rate + f[k] * inverseMass[k]));
@@ -268,12 +272,12 @@ void main() {
                 history[at(HELD_RATE_SLOT, k)] = 2.0 * (y[k] - x[k]) / h - f[k] * inverseMass[k];
             // An iteration that did not converge may be diverging (h |dR/dv| / 2 > 1): keep the
             // state rather than step to a wild iterate; the host then takes smaller substeps.
-            x[k] = halfDecay * (status.converged != 0u ? 2.0 * y[k] - x[k] : x[k]);
+            x[k] = target + halfDecay * ((status.converged != 0u ? 2.0 * y[k] - x[k] : x[k]) - target);
         } else if (op == MODAL_OP_TRAPEZOIDAL_START) {
             acc[k] = rk;
             setPoint(k, x[k] + h * (rk + f[k]) * inverseMass[k]);
         } else if (op == MODAL_OP_TRAPEZOIDAL_END) {
-            x[k] = halfDecay * (status.converged != 0u ? y[k] : x[k]);  // as MIDPOINT_END
+            x[k] = target + halfDecay * ((status.converged != 0u ? y[k] : x[k]) - target);  // as MIDPOINT_END
         }
     }
 

@@ -83,7 +83,8 @@ ModalStepper::ModalStepper(const vulkan::VulkanContext& context,
       mRhs(zeros(context, (mMhd ? 3 : 1) * mStride, "modal right-hand side")),
       mForce(zeros(context, mParts * mStride, "modal force")),
       mMass(zeros(context, mParts * mStride, "modal mass")),
-      mDecay(zeros(context, mParts * mStride, "modal decay rates")),
+      // The rates, then what each part decays toward (modal_update.comp).
+      mDecay(zeros(context, 2 * mParts * mStride, "modal decay rates")),
       mInverseMass(zeros(context, mParts * mStride, "modal inverse mass")),
       mAccumulator(zeros(context, mParts * mStride, "modal accumulator")),
       // Anderson's 2 ANDERSON_DEPTH + 2 vectors, the warm start's R and the linearized rule's
@@ -161,6 +162,9 @@ void ModalStepper::uploadModel(const DeviceModel& model) {
         upload(mMass, mass, 0, "mass");
         upload(mInverseMass, inverse, 0, "inverse mass");
         upload(mDecay, decay, 0, "decay rates");
+        upload(mDecay,
+               fluid->viscousTarget.size() != 0 ? fluid->viscousTarget : Eigen::VectorXd::Zero(n),
+               mParts, "viscous targets");
         return;
     }
     const MhdParameters& mhd = std::get<MhdParameters>(model);

@@ -54,8 +54,12 @@ FluidSystem::FluidSystem(const StructuralCoefficients& coefficients, FluidParame
       mFiltered(parameters.alpha != 0.0),
       mMass(massOf(parameters, coefficients.size())),
       mDecay(decayRatesOf(parameters, coefficients.size())),
+      mTarget(std::move(parameters.viscousTarget)),
       mHeld(std::move(parameters.held)),
       mLinear(std::move(parameters.linear)) {
+    if (mTarget.size() != 0 && mTarget.size() != coefficients.size())
+        throw Error("fluid dynamics: viscous targets for " + std::to_string(mTarget.size()) +
+                    " modes, the system has " + std::to_string(coefficients.size()));
     if (mLinear && mLinear->size() != coefficients.size())
         throw Error("fluid dynamics: a linear term over " + std::to_string(mLinear->size()) +
                     " modes for " + std::to_string(coefficients.size()) + " modes");

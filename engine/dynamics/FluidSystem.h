@@ -3,12 +3,17 @@
 /// The reduced Euler / Navier–Stokes / LANS-α model over the modal velocity v (engine/README.md,
 /// "Reduced dynamics"):
 ///
-///     (1 + α²κ_k²) v̇_k = Σ_ij (1 + α²κ_i²) C[k][i][j] v_i v_j + f_k,  then  v_k ← e^{−νκ_k²h} v_k.
+///     (1 + α²κ_k²) v̇_k = Σ_ij (1 + α²κ_i²) C[k][i][j] v_i v_j + f_k,
+///     then  v_k ← c_k + e^{−νκ_k²h} (v_k − c_k).
 ///
 /// With α = 0 this is seed eq. 6.6. With α > 0 it is the LANS-α model of seed §6.3.5: the left side
 /// is the momentum m_k = (1 + α²κ_k²) v_k, forces act on m, and the energy ½Σ(1 + α²κ_i²)v_i² is
 /// conserved because vᵀ apply(m, v) = 0 by the k↔j antisymmetry — for the midpoint rule too, as the
 /// identity holds at the midpoint state. κ² may come in any order (frequency-shaped bases).
+///
+/// c = 0, or the Stokes correction of a wind's held flow round [[domain]] walls: viscosity acts on
+/// the whole velocity B + Ψv, and ν Δ B projected on the modes is νκ²c (B's slip along a no-slip
+/// wall is vorticity; engine/README.md "Wind").
 ///
 /// A linear term D v (a wind's advection of the modes, LinearModalTerm.h) joins the right-hand
 /// side: (1 + α²κ_k²) v̇_k = … + (D v)_k. The energy then changes by exactly h v̄ᵀ D v̄ a midpoint
@@ -36,6 +41,8 @@ struct FluidParameters {
     std::vector<int> held{};
     /// A constant linear term D v of the right-hand side (a wind), or none.
     std::shared_ptr<const LinearModalTerm> linear{};
+    /// c, what viscosity relaxes each mode toward (a wind's held flow), or empty for 0.
+    Eigen::VectorXd viscousTarget{};
 };
 
 class FluidSystem final : public ModalSystem {
@@ -55,6 +62,7 @@ public:
     int dimension() const override { return mCoefficients.size(); }
     const Eigen::VectorXd& mass() const override { return mMass; }
     const Eigen::VectorXd& decayRates() const override { return mDecay; }
+    const Eigen::VectorXd& decayTargets() const override { return mTarget; }
     void rhs(const Eigen::VectorXd& v, Eigen::VectorXd& out) const override;
     void linearize(const Eigen::VectorXd& v, Eigen::VectorXd& out,
                    Eigen::MatrixXd& jac) const override;
@@ -74,6 +82,7 @@ private:
     bool mFiltered = false;  ///< α > 0, so the mass is not the identity
     Eigen::VectorXd mMass;
     Eigen::VectorXd mDecay;
+    Eigen::VectorXd mTarget;
     std::vector<int> mHeld;
     std::shared_ptr<const LinearModalTerm> mLinear;
 };

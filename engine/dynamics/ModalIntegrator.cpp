@@ -285,7 +285,13 @@ Eigen::VectorXd ModalIntegrator::forceAt(double t, const ForceFunction* force) c
 }
 
 void ModalIntegrator::decay(Eigen::VectorXd& x, double h) const {
-    if (mDecays) x.array() *= (-h * mSystem.decayRates().array()).exp();
+    if (!mDecays) return;
+    const Eigen::ArrayXd factor = (-h * mSystem.decayRates().array()).exp();
+    const Eigen::VectorXd& target = mSystem.decayTargets();
+    if (target.size() == 0)
+        x.array() *= factor;
+    else
+        x.array() = target.array() + factor * (x - target).array();
 }
 
 }  // namespace modeflow

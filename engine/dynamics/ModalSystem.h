@@ -2,11 +2,12 @@
 /// @file ModalSystem.h
 /// A reduced model in the form the integrators advance:
 ///
-///     M ẋ = R(x) + f(t),   then   ẋ_i = −r_i x_i   (operator split)
+///     M ẋ = R(x) + f(t),   then   ẋ_i = −r_i (x_i − t_i)   (operator split)
 ///
 /// with a constant diagonal mass M (ones for Euler and MHD, 1 + α²κ² for LANS-α), a quadratic
 /// right-hand side R built from the structural coefficients (seed eq. 6.6), its analytic Jacobian
-/// for Newton, and decay rates r (νκ² for viscosity, seed §6.3.5) applied as exact exponentials.
+/// for Newton, and decay rates r (νκ² for viscosity, seed §6.3.5) towards targets t (0, or a
+/// wind's held flow's Stokes correction: FluidSystem.h) applied as exact exponentials.
 
 #include <Eigen/Core>
 
@@ -24,6 +25,8 @@ public:
     virtual const Eigen::VectorXd& mass() const = 0;
     /// Decay rates r_i ≥ 0.
     virtual const Eigen::VectorXd& decayRates() const = 0;
+    /// What each x_i decays toward; empty for all 0.
+    virtual const Eigen::VectorXd& decayTargets() const { return kNoTargets; }
     /// out = R(x).
     virtual void rhs(const Eigen::VectorXd& x, Eigen::VectorXd& out) const = 0;
     /// out = R(x) and jac = ∂R/∂x, in as few passes over the coefficients as possible.
@@ -45,6 +48,9 @@ public:
     /// Whether linearize costs about a contraction (stored coefficients); false when forming the
     /// Jacobian costs far more (tensor-free: O(E·N²)), so that solvers use jacobianProduct.
     virtual bool formsJacobiansCheaply() const { return true; }
+
+private:
+    static inline const Eigen::VectorXd kNoTargets{};
 };
 
 inline void ModalSystem::frozenRhs(const Eigen::VectorXd&, const Eigen::VectorXd&,

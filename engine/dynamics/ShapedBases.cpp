@@ -32,6 +32,8 @@ BasisCache leadingModes(const BasisCache& cache, int modes) {
     if (!cache.velocity.separable.empty()) out.velocity.separable.resize(std::size_t(modes));
     out.velocity.eigenvalues = cache.velocity.eigenvalues.head(modes);
     out.velocity.modeNumbers.resize(std::size_t(modes));
+    for (std::vector<double>& stokes : out.windStokes)
+        if (!stokes.empty()) stokes.resize(std::size_t(modes));
     // The stored coefficients belong to the whole basis; leadingCoefficients gives the rest.
     out.coefficients = {};
     return out;

@@ -93,6 +93,10 @@ struct BasisCache {
     /// wind through). Bases with [[domain]] shapes hold 2·dim; a whole box none (its flow is the
     /// constant wind).
     std::vector<std::vector<double>> windBase;
+    /// Per held flow, one amplitude per velocity mode: c with B + Ψc its Stokes flow within the
+    /// basis, what viscosity relaxes the disturbance toward (the wall's condition; ≈ 0 at
+    /// free-slip walls). Empty where windBase is, entry by entry.
+    std::vector<std::vector<double>> windStokes;
 
     /// Structural coefficients C[k][i][j] of the velocity modes (seed eq. 6.7), k < j only.
     struct Coefficients {

@@ -165,7 +165,7 @@ void requireConsistentSurface(const BasisCache& c, const Require& require) {
     require(wellFormed(q.curl, 0) && wellFormed(q.velocityB, 0) && wellFormed(q.velocityC, 0) &&
                 q.curl.rows() == 0 && q.velocityB.rows() == 0 && q.velocityC.rows() == 0 &&
                 c.coefficients.storage != BasisCache::Coefficients::Storage::None &&
-                c.windBase.empty(),
+                c.windBase.empty() && c.windStokes.empty(),
             "its surface basis holds a vorticity quadrature, wind base flows or no coefficients");
     requireConsistentSpectrum(c, n, require);
 }
@@ -224,12 +224,19 @@ void requireConsistentGrid(const BasisCache& c, const Require& require) {
     // eigensolved basis, whose transport the quadrature evaluates.
     bool flowsHold = c.windBase.empty() || (c.windBase.size() == std::size_t(2 * c.grid.dim) &&
                                             !closed && q.curl.rows() > 0);
-    for (const std::vector<double>& flow : c.windBase) {
+    flowsHold &= c.windStokes.size() == c.windBase.size();
+    for (std::size_t f = 0; f < c.windBase.size() && flowsHold; ++f) {
+        const std::vector<double>& flow = c.windBase[f];
+        const std::vector<double>& stokes = c.windStokes[f];
         flowsHold &=
             flow.empty() || flow.size() == std::size_t(MacGrid::fromSpec(c.grid).faceTotal());
+        flowsHold &= flow.empty() ? stokes.empty() : stokes.size() == std::size_t(n);
         for (const double u : flow) flowsHold &= std::isfinite(u);
+        for (const double u : stokes) flowsHold &= std::isfinite(u);
     }
-    require(flowsHold, "its wind base flows are not one finite face field per axis and direction");
+    require(flowsHold,
+            "its wind base flows are not one finite face field per axis and direction, with one "
+            "finite Stokes correction per mode");
     requireConsistentSpectrum(c, n, require);
 }
 

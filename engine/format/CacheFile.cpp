@@ -176,6 +176,8 @@ void serialize(const BasisCache& c, Payload& p) {
     putRows(p, c.quadrature.velocityC);
     p.small().pod<std::uint64_t>(c.windBase.size());
     for (const std::vector<double>& flow : c.windBase) p.array(flow.data(), flow.size());
+    p.small().pod<std::uint64_t>(c.windStokes.size());
+    for (const std::vector<double>& modes : c.windStokes) p.array(modes.data(), modes.size());
     p.small().pod<std::int32_t>(int(c.coefficients.storage));
     p.array(c.coefficients.packed.data(), c.coefficients.packed.size());
     p.array(c.coefficients.k.data(), c.coefficients.k.size());
@@ -255,6 +257,9 @@ BasisCache deserialize(ByteReader& r) {
     const auto windFlows = r.pod<std::uint64_t>();
     if (windFlows > 6) r.fail("it holds wind base flows for more than three axes");
     for (std::uint64_t a = 0; a < windFlows; ++a) c.windBase.push_back(r.vector<double>());
+    const auto windCorrections = r.pod<std::uint64_t>();
+    if (windCorrections > 6) r.fail("it holds Stokes corrections for more than three axes");
+    for (std::uint64_t a = 0; a < windCorrections; ++a) c.windStokes.push_back(r.vector<double>());
     c.coefficients.storage = BasisCache::Coefficients::Storage(r.pod<std::int32_t>());
     c.coefficients.packed = r.vector<double>();
     c.coefficients.k = r.vector<std::int32_t>();

@@ -18,7 +18,8 @@ namespace modeflow {
 /// 3: periodic axes; 4: closed-form bases; 5: surface bases; 6: the vorticity quadrature of every
 /// eigensolved grid basis and coefficient storage "none" (tensor-free advection); 7: XXH3
 /// checksum.
-inline constexpr std::uint32_t kCacheFormatVersion = 9;  ///< 9: wind base flows
+inline constexpr std::uint32_t kCacheFormatVersion =
+    10;  ///< 10: the wind base flows' Stokes corrections
 
 /// Writes to a temporary file beside `path` (AtomicFile.h), then renames it over `path`, so
 /// readers see the old file or the whole new one.

@@ -259,9 +259,28 @@ std::vector<double> windBaseFlow(const BasisCache& cache, const WindSpec& wind) 
     return base;
 }
 
+Eigen::VectorXd windStokesTarget(const BasisCache& cache, const WindSpec& wind) {
+    if (cache.windStokes.empty()) return {};
+    Eigen::VectorXd target = Eigen::VectorXd::Zero(cache.velocity.eigenvalues.size());
+    for (int a = 0; a < cache.grid.dim; ++a) {
+        if (wind.velocity[a] == 0.0) continue;
+        const std::vector<double>& c =
+            cache.windStokes[std::size_t(2 * a + (wind.velocity[a] < 0.0))];
+        if (c.size() != std::size_t(target.size()))
+            throw Error("wind: the cache's Stokes correction along axis " + std::to_string(a) +
+                        " has " + std::to_string(c.size()) + " modes, the basis " +
+                        std::to_string(target.size()));
+        target +=
+            std::abs(wind.velocity[a]) * Eigen::Map<const Eigen::VectorXd>(c.data(), target.size());
+    }
+    return target;
+}
+
 SimulationSettings withWindTransport(SimulationSettings settings, const BasisCache& cache) {
-    if (settings.wind)
+    if (settings.wind) {
         settings.fluid.linear = std::make_shared<WindTransport>(cache, *settings.wind);
+        settings.fluid.viscousTarget = windStokesTarget(cache, *settings.wind);
+    }
     return settings;
 }
 

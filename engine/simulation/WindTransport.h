@@ -99,9 +99,16 @@ private:
 /// @throw modeflow::Error for a non-finite wind, or a boundary layer over domain walls.
 std::vector<double> windBaseFlow(const BasisCache& cache, const WindSpec& wind);
 
+/// What viscosity relaxes the modes toward in `wind` round `cache`'s [[domain]] walls:
+/// Σ_a |U_a| c_(a,±), the held flow's Stokes correction (BasisCache::windStokes; at a no-slip
+/// wall the held flow's slip diffuses into the modes); empty for a whole box (B = U f(h): its
+/// slip along the box's walls is the free stream's). Call after windBaseFlow's checks.
+/// @throw modeflow::Error when a correction is not one value per mode.
+Eigen::VectorXd windStokesTarget(const BasisCache& cache, const WindSpec& wind);
+
 /// `settings` with their wind's advection of the modes over `cache`'s basis as the fluid's linear
-/// term (none without a wind). What a CPU simulation or modal stepper of a run is made with;
-/// `cache` must outlive what uses the settings.
+/// term and its Stokes correction as the viscous target (none without a wind). What a CPU
+/// simulation or modal stepper of a run is made with; `cache` must outlive what uses the settings.
 SimulationSettings withWindTransport(SimulationSettings settings, const BasisCache& cache);
 
 /// `grid` with the sides the wind crosses open to the air (MacGrid::flowThrough): every

@@ -17,12 +17,15 @@ ColMatrix weightedGram(const SparseMatrix& b, const Eigen::VectorXd& outer,
 
 }  // namespace
 
+Eigen::SparseMatrix<double> velocityCurlCurl(const CutCellDec& dec) {
+    return weightedGram(dec.curl, dec.faceStar, dec.vorticityStarInverse);
+}
+
 Eigen::SparseMatrix<double> velocityLaplacian(const CutCellDec& dec, double penalty) {
     const Eigen::VectorXd unit = Eigen::VectorXd::Ones(dec.faces.size());
     const SparseMatrix divT = dec.div.transpose();
     ColMatrix gradDiv = weightedGram(divT, unit, dec.cellStar);
-    ColMatrix curlCurl = weightedGram(dec.curl, dec.faceStar, dec.vorticityStarInverse);
-    ColMatrix k = (1.0 + penalty) * gradDiv + curlCurl;
+    ColMatrix k = (1.0 + penalty) * gradDiv + velocityCurlCurl(dec);
     k.makeCompressed();
     return k;
 }

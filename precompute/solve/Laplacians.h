@@ -16,6 +16,10 @@ namespace modeflow {
 /// low spectrum. s = 0 gives the plain L2. Mass: ⋆(n-1).
 Eigen::SparseMatrix<double> velocityLaplacian(const CutCellDec& dec, double penalty);
 
+/// Its curl part alone, ⋆(n-1) δ ⋆(n-2)⁻¹ δᵀ ⋆(n-1): xᵀ K x = ∫|∇×x|², the wall's vorticity
+/// included at a no-slip wall (what viscosity dissipates).
+Eigen::SparseMatrix<double> velocityCurlCurl(const CutCellDec& dec);
+
 /// L3 = ⋆n d ⋆(n-1)⁻¹ dᵀ ⋆n with no flux through walls (Neumann). Mass: ⋆n.
 Eigen::SparseMatrix<double> neumannScalarLaplacian(const CutCellDec& dec);
 

@@ -3,11 +3,13 @@
 #include <algorithm>
 #include <string>
 
+#include <Eigen/Dense>
 #include <Eigen/IterativeLinearSolvers>
 #include <Eigen/SparseCore>
 
 #include "engine/core/Error.h"
 #include "precompute/dec/FluidComponents.h"
+#include "precompute/solve/Laplacians.h"
 
 namespace modeflow {
 namespace {
@@ -135,6 +137,63 @@ std::vector<std::vector<double>> windBaseFlows(const CubicalComplex& cx,
             flows.push_back(std::move(flow));
         }
     return flows;
+}
+
+namespace {
+
+/// Per periodic axis a column: each mode's net flux through the cross-section at the seam (the
+/// same through every cross-section: the modes are divergence-free).
+Eigen::MatrixXd periodicFluxes(const CubicalComplex& cx, const CutCellDec& dec,
+                               const Eigen::MatrixXd& modes) {
+    const int n = cx.dim();
+    std::vector<Eigen::VectorXd> columns;
+    for (int a = 0; a < n; ++a) {
+        if (!cx.grid().isPeriodic(a)) continue;
+        Eigen::VectorXd section = Eigen::VectorXd::Zero(modes.rows());
+        for (Eigen::Index f = 0; f < section.size(); ++f) {
+            const Element face = cx.element(n - 1, dec.faces.toGlobal[std::size_t(f)]);
+            if (normalOf(face, n) == a && face.pos[a] == 0) section[f] = 1.0;
+        }
+        columns.push_back(modes.transpose() * section);
+    }
+    Eigen::MatrixXd q(modes.cols(), Eigen::Index(columns.size()));
+    for (std::size_t c = 0; c < columns.size(); ++c) q.col(Eigen::Index(c)) = columns[c];
+    return q;
+}
+
+}  // namespace
+
+std::vector<std::vector<double>> windStokesCorrections(
+    const CubicalComplex& cx, const CutCellDec& dec, const Eigen::MatrixXd& modes,
+    const Eigen::VectorXd& eigenvalues, const std::vector<std::vector<double>>& flows) {
+    const ColMatrix curlCurl = velocityCurlCurl(dec);
+    // Λ⁻¹ on the modes with Λ > 0 (a harmonic mode's c is 0), and the fluxes a correction must
+    // not change: along a periodic axis the held flow's flux is the wind's, kept as a pressure
+    // drop keeps a channel's (Stokes with no-slip walls and no drop is rest).
+    Eigen::VectorXd inverse = Eigen::VectorXd::Zero(eigenvalues.size());
+    for (Eigen::Index k = 0; k < eigenvalues.size(); ++k)
+        if (eigenvalues[k] > 0.0) inverse[k] = 1.0 / eigenvalues[k];
+    const Eigen::MatrixXd q = periodicFluxes(cx, dec, modes);
+    const Eigen::MatrixXd gram = q.transpose() * inverse.asDiagonal() * q;
+    std::vector<std::vector<double>> corrections;
+    for (const std::vector<double>& flow : flows) {
+        if (flow.empty()) {
+            corrections.emplace_back();
+            continue;
+        }
+        Eigen::VectorXd fluxes(modes.rows());
+        for (Eigen::Index f = 0; f < fluxes.size(); ++f)
+            fluxes[f] =
+                flow[std::size_t(dec.faces.toGlobal[std::size_t(f)])] * fluidArea(cx, dec, f);
+        // c = −Λ⁻¹(Ψᵀ K B + Q μ) with Qᵀ c = 0.
+        Eigen::VectorXd drive = modes.transpose() * (curlCurl * fluxes);
+        if (q.cols() > 0)
+            drive -= q * gram.completeOrthogonalDecomposition().solve(q.transpose() *
+                                                                      inverse.cwiseProduct(drive));
+        const Eigen::VectorXd c = -inverse.cwiseProduct(drive);
+        corrections.emplace_back(c.data(), c.data() + c.size());
+    }
+    return corrections;
 }
 
 }  // namespace modeflow

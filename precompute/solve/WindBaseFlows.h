@@ -27,4 +27,17 @@ std::vector<std::vector<double>> windBaseFlows(const CubicalComplex& complex,
                                                const CutCellMeasures& measures,
                                                const CutCellDec& dec);
 
+/// Per flow of windBaseFlows, the modal amplitudes c with B + Ψc the flow's Stokes flow within
+/// the basis: the state viscosity relaxes a held flow's disturbance toward (engine/README.md,
+/// "Wind"). ν Δ(B + Ψv) projected on the modes is −νΛv − ν Ψᵀ K B (K = velocityCurlCurl, the
+/// wall's vorticity included at a no-slip wall), so v̇ = −νΛ(v − c) with c = −Λ⁻¹ Ψᵀ K B: B's
+/// slip along a no-slip wall is vorticity the modes take up; a free-slip wall's potential flow is
+/// irrotational, and c ≈ 0. Along a periodic axis c carries no flux (Qᵀc = 0, Q the modes'
+/// fluxes through a cross-section): the wind's flux is held there as a pressure drop holds a
+/// channel's. `modes` are ⋆-orthonormal fluxes on `dec`'s faces with `eigenvalues` Λ; a mode of
+/// Λ = 0 gets 0 (K is semi-definite: KΨ = 0 there). An empty flow gets an empty entry.
+std::vector<std::vector<double>> windStokesCorrections(
+    const CubicalComplex& complex, const CutCellDec& dec, const Eigen::MatrixXd& modes,
+    const Eigen::VectorXd& eigenvalues, const std::vector<std::vector<double>>& flows);
+
 }  // namespace modeflow

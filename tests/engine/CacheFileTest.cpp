@@ -51,6 +51,8 @@ TEST(CacheFileTest, ARealBasisRoundTrips) {
     EXPECT_EQ(read.coefficients.packed, smallBasis().coefficients.packed);
     ASSERT_EQ(smallBasis().windBase.size(), 4u);  // a disk is [[domain]] walls
     EXPECT_EQ(read.windBase, smallBasis().windBase);
+    ASSERT_EQ(smallBasis().windStokes.size(), 4u);
+    EXPECT_EQ(read.windStokes, smallBasis().windStokes);
     EXPECT_EQ(readCacheKeyHash(folder / "disk.mfbasis"), fnv1a64(smallBasis().key));
 }
 
@@ -199,6 +201,9 @@ TEST(CacheFileTest, AQuadratureOrStorageThatDoesNotFitIsRefused) {
     EXPECT_TRUE(windFlows([](BasisCache& c) { c.windBase.pop_back(); }));
     EXPECT_TRUE(windFlows([](BasisCache& c) { c.windBase[1].pop_back(); }));
     EXPECT_TRUE(windFlows([](BasisCache& c) { c.windBase[0][3] = std::nan(""); }));
+    EXPECT_TRUE(windFlows([](BasisCache& c) { c.windStokes.pop_back(); }));
+    EXPECT_TRUE(windFlows([](BasisCache& c) { c.windStokes[2].pop_back(); }));
+    EXPECT_TRUE(windFlows([](BasisCache& c) { c.windStokes[1][0] = std::nan(""); }));
     EXPECT_NE(errorOfDamaged([](BasisCache& c) {
                   c.coefficients.storage = BasisCache::Coefficients::Storage(7);
               }).find("coefficient storage"),

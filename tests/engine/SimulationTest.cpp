@@ -570,9 +570,10 @@ TEST_P(SimulationTest, AWindMatchesTheCpuReference) {
     // tracers: the modes' D v, the wind added to each reconstruction, the open sides and the
     // clean air coming in upstream, on the device as on the CPU. The wind crosses two axes, so
     // inflow and outflow meet at the corners; a boundary layer over the floor; and a uniform wind
-    // round a [[domain]] hole (the cache's potential flow, its vorticity-form term); and under an
-    // open top.
-    for (const int variant : {0, 1, 2, 3, 4}) {
+    // round a [[domain]] hole (the cache's potential flow, its vorticity-form term); under an
+    // open top; and round a no-slip hole in a viscous fluid (the modes relax toward the held
+    // flow's Stokes correction).
+    for (const int variant : {0, 1, 2, 3, 4, 5}) {
         const int dim = variant == 1 ? 3 : 2;
         SceneSpec scene =
             dim == 2 ? testing::gridScene({32, 16, 1}, {0.0, 0.0, 0.0}, {2.0, 1.0, 0.0}, 2)
@@ -592,6 +593,10 @@ TEST_P(SimulationTest, AWindMatchesTheCpuReference) {
         if (variant == 4) {
             scene.grid.open[3] = true;
             scene.wind = WindSpec{{0.8, 0.0, 0.0}};
+        }
+        if (variant == 5) {
+            scene.basis.wall = WallKind::NoSlip;
+            scene.simulation.viscosity = 0.05;
         }
         SourceSpec source;
         source.shape = testing::ball(dim == 2 ? Vec3{0.3, 0.5, 0.0} : Vec3{0.25, 0.5, 0.6}, 0.12);
@@ -637,6 +642,7 @@ TEST_P(SimulationTest, AWindMatchesTheCpuReference) {
                       << (variant == 2   ? " in a boundary layer"
                           : variant == 3 ? " round a domain hole"
                           : variant == 4 ? " round a domain hole under an open top"
+                          : variant == 5 ? " round a no-slip domain hole, viscous"
                                          : "")
                       << ", 10 steps: relative max differences: modes " << d.modes
                       << ", grid velocity " << d.faceVelocity << ", density " << d.density
