@@ -9,6 +9,7 @@ show the smoke against the empty background, glowing flame-coloured where it bur
 
 import os
 import shutil
+import subprocess
 import sys
 
 import bpy
@@ -114,6 +115,56 @@ if breezy["grid"].get("open") != ["z_max"] or breezy.get("wind") != {"velocity":
     fail(f"a breeze under an open top was written as {breezy['grid'].get('open')}, "
          f"{breezy.get('wind')}")
 domain.modeflow.wind = (0.0, 0.0, 0.0)
+domain.modeflow.open_sides = set()
+# Walls and Viscosity are written as [basis] wall and [simulation] viscosity.
+domain.modeflow.wall = 'no-slip'
+domain.modeflow.viscosity = 0.01
+sticky = windy_scene()
+if sticky["basis"].get("wall") != "no-slip" or abs(sticky["simulation"].get("viscosity", 0.0) - 0.01) > 1e-8:
+    fail(f"the walls were written as {sticky['basis']}, {sticky['simulation']}")
+domain.modeflow.wall = 'free-slip'
+domain.modeflow.viscosity = 0.0
+
+# An Inflow object is written as [[inflow]]: its bounding box, on the one side of the domain's
+# box it crosses (a burner through an open floor), and modeflow reads the scene; through a wall
+# modeflow refuses it by name, and a box across two sides the add-on refuses.
+lo, hi, _ = modeflow_blender.scene_export.grid_of(domain)
+centre = [0.5 * (lo[a] + hi[a]) for a in range(3)]
+bpy.ops.mesh.primitive_cube_add(size=0.4, location=(centre[0], centre[1], lo[2]))
+burner = bpy.context.active_object
+burner.name = "Burner"
+burner.modeflow.role = 'INFLOW'
+burner.modeflow.density = 2.0
+burner.modeflow.temperature = 3.0
+burner.modeflow.fuel = 1.0
+burner.modeflow.jet = (0.0, 0.0, 1.5)
+domain.modeflow.open_sides = {'z_min', 'z_max'}
+inflows = windy_scene().get("inflow", [])
+expected = {"side": "z_min", "shape": "box", "density": 2.0, "temperature": 3.0, "fuel": 1.0,
+            "velocity": [0.0, 0.0, 1.5]}
+if len(inflows) != 1 or any(inflows[0].get(key) != value for key, value in expected.items()) \
+        or abs(inflows[0]["min"][2] - (lo[2] - 0.2)) > 1e-6 or abs(inflows[0]["max"][0] - (centre[0] + 0.2)) > 1e-6:
+    fail(f"the inflow was written as {inflows}")
+if "fire" not in windy_scene():
+    fail("an inflow's fuel was written without a [fire]")
+
+
+def modeflow_reads(folder):
+    path, _ = modeflow_blender.scene_export.write_scene(domain, bpy.context, os.path.join(out, folder))
+    checked = subprocess.run([os.environ["MODEFLOW_BIN"], "precompute", path], capture_output=True, text=True)
+    return checked.returncode, checked.stderr
+
+
+status, errors = modeflow_reads("inflow")
+if status != 0:
+    fail(f"modeflow refused the inflow's scene: {errors}")
+domain.modeflow.open_sides = {'z_max'}
+status, errors = modeflow_reads("inflow_walled")
+if status == 0 or "z_min is a wall" not in errors:
+    fail(f"an inflow through a wall was not refused by name: {status}, {errors}")
+burner.location = (lo[0], lo[1], lo[2])
+expect_refused("an inflow across a corner", "crosses 3 sides")
+bpy.data.objects.remove(burner)
 domain.modeflow.open_sides = set()
 
 # Cycles, white background: the smoke darkens what it covers.

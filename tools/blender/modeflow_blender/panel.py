@@ -26,6 +26,8 @@ class MODEFLOW_PT_physics(bpy.types.Panel):
             row.prop(settings, "frame_start")
             row.prop(settings, "frame_end")
             layout.prop(settings, "buoyancy")
+            layout.prop(settings, "viscosity")
+            layout.prop(settings, "wall")
             layout.prop(settings, "integrator")
             layout.prop(settings, "wind")
             layout.prop(settings, "wind_layer")
@@ -38,10 +40,12 @@ class MODEFLOW_PT_physics(bpy.types.Panel):
             fire.prop(settings, "smoke")
             layout.prop(settings, "device")
             layout.operator("modeflow.bake", icon='PHYSICS')
-        elif settings.role == 'EMITTER':
+        elif settings.role in {'EMITTER', 'INFLOW'}:
             layout.prop(settings, "density")
             layout.prop(settings, "temperature")
             layout.prop(settings, "fuel")
+            if settings.role == 'INFLOW':
+                layout.prop(settings, "jet")
 
 
 def register():

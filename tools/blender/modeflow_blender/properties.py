@@ -16,6 +16,8 @@ class ModeflowObjectSettings(bpy.types.PropertyGroup):
             ('DOMAIN', "Domain", "The box (its bounds) or the mesh the fluid fills"),
             ('OBSTACLE', "Obstacle", "A solid the air flows around; moves and turns with its animation"),
             ('EMITTER', "Emitter", "Emits smoke and heat from its volume; moves with its animation"),
+            ('INFLOW', "Inflow", "Lets smoke, heat and fuel in where its bounding box crosses a side of "
+                                 "the domain's box (an open side, or the wind's upstream side)"),
         ],
         default='NONE',
     )
@@ -31,6 +33,16 @@ class ModeflowObjectSettings(bpy.types.PropertyGroup):
     frame_start: IntProperty(name="Start", default=1)
     frame_end: IntProperty(name="End", default=50)
     buoyancy: FloatProperty(name="Buoyancy", description="Lift per unit of temperature", default=1.0)
+    viscosity: FloatProperty(name="Viscosity", description="Kinematic viscosity of the air (scene units² "
+                                                           "per second)", default=0.0, min=0.0, max=1e6)
+    wall: EnumProperty(
+        name="Walls",
+        description="What the walls of a mesh domain do to the air along them (with a viscosity)",
+        items=[('free-slip', "Free-slip", "The air slides along the walls"),
+               ('no-slip', "No-slip", "The air sticks to the walls: a boundary layer grows as fast "
+                                      "as the viscosity diffuses it")],
+        default='free-slip',
+    )
     integrator: EnumProperty(
         name="Integrator",
         items=[('MIDPOINT', "Midpoint", "Energy-preserving (the default)"),
@@ -82,6 +94,10 @@ class ModeflowObjectSettings(bpy.types.PropertyGroup):
                                min=-SMOKE_LIMIT, max=SMOKE_LIMIT)
     fuel: FloatProperty(name="Fuel", description="Fuel emitted per unit of time (it burns where hot)",
                         default=0.0, min=0.0, max=SMOKE_LIMIT)
+    # Inflow (its smoke values are the emitter's: density, temperature, fuel of the air let in)
+    jet: FloatVectorProperty(name="Jet", size=3, subtype='VELOCITY', default=(0.0, 0.0, 0.0),
+                             description="Velocity the inflow drives the air at inside its box, "
+                                         "across the side (0: the air comes in at its own speed)")
 
 
 def register():

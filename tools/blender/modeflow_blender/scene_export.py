@@ -1,6 +1,6 @@
 """The modeflow scene of a Blender scene: the domain's box (or mesh), obstacles and emitters as
-mesh obstacles and mesh sources with their animation sampled into key frames, and the OBJ files
-they name.
+mesh obstacles and mesh sources with their animation sampled into key frames, inflows as boxes
+on the domain's sides, and the OBJ files they name.
 
 Time: Blender frame f is simulated time (f - frame_start + 1) / fps, so frame k of the bake
 (NAME_000k.vdb) is shown at Blender frame frame_start + k - 1, and an object's pose at frame
@@ -107,6 +107,29 @@ def sample_motion(obj, scene, first, last):
     return path, rotation
 
 
+SIDES = ["x_min", "x_max", "y_min", "y_max", "z_min", "z_max"]
+
+
+def inflow_of(obj, domain_lo, domain_hi):
+    """The [[inflow]] of an Inflow object: its world bounding box (at the current frame: inflows
+    stand still) and the one side of the domain's box whose plane it crosses."""
+    lo, hi = _bounds(obj)
+    crossed = [SIDES[2 * a + high] for a in range(3) for high in (0, 1)
+               if lo[a] < (domain_hi if high else domain_lo)[a] < hi[a]]
+    if len(crossed) != 1:
+        where = "no side" if not crossed else f"{len(crossed)} sides ({', '.join(crossed)})"
+        raise ValueError(f"modeflow: the inflow {obj.name!r} crosses {where} of the domain's box: "
+                         "move it to reach across one side")
+    settings = obj.modeflow
+    entry = {"side": crossed[0], "shape": "box", "min": lo, "max": hi,
+             "density": settings.density, "temperature": settings.temperature}
+    if settings.fuel > 0.0:
+        entry["fuel"] = settings.fuel
+    if any(settings.jet):
+        entry["velocity"] = [float(u) for u in settings.jet]
+    return entry
+
+
 def scene_of(domain, context, folder):
     """The scene (as dicts) of `domain` and the objects with a role, writing their meshes into
     `folder`/meshes; the frames to bake."""
@@ -122,8 +145,9 @@ def scene_of(domain, context, folder):
     lo, hi, cells = grid_of(domain)
     description = {
         "grid": {"resolution": cells, "bounds_min": lo, "bounds_max": hi},
-        "basis": {"velocity_modes": settings.modes, "scalar_modes": 0},
-        "simulation": {"dt": 1.0 / (fps * STEPS_PER_FRAME), "integrator": settings.integrator.lower()},
+        "basis": {"velocity_modes": settings.modes, "scalar_modes": 0, "wall": settings.wall},
+        "simulation": {"dt": 1.0 / (fps * STEPS_PER_FRAME), "integrator": settings.integrator.lower(),
+                       "viscosity": settings.viscosity},
         "initial": {"velocity": "zero"},
         "smoke": {"buoyancy": settings.buoyancy},
     }
@@ -147,16 +171,18 @@ def scene_of(domain, context, folder):
         if settings.wind_layer > 0.0 and any(settings.wind) and "z_min" in settings.open_sides:
             raise ValueError("modeflow: a boundary layer grows over the floor: clear Open Sides "
                              "z_min, or the Wind Layer")
-        order = ["x_min", "x_max", "y_min", "y_max", "z_min", "z_max"]
-        description["grid"]["open"] = [side for side in order if side in settings.open_sides]
+        description["grid"]["open"] = [side for side in SIDES if side in settings.open_sides]
     if settings.domain_shape == 'MESH':
         name = _file_name(domain)
         write_obj(os.path.join(meshes, name), domain, depsgraph, in_world=True)
         description["domain"] = [{"shape": "mesh", "file": f"meshes/{name}"}]
-    obstacles, sources = [], []
+    obstacles, sources, inflows = [], [], []
     for obj in scene.objects:
         role = obj.modeflow.role
-        if obj.type != 'MESH' or role not in {'OBSTACLE', 'EMITTER'}:
+        if obj.type != 'MESH' or role not in {'OBSTACLE', 'EMITTER', 'INFLOW'}:
+            continue
+        if role == 'INFLOW':
+            inflows.append(inflow_of(obj, lo, hi))
             continue
         name = _file_name(obj)
         write_obj(os.path.join(meshes, name), obj, depsgraph, in_world=False)
@@ -174,7 +200,9 @@ def scene_of(domain, context, folder):
         description["obstacle"] = obstacles
     if sources:
         description["source"] = sources
-    if any("fuel" in source for source in sources):
+    if inflows:
+        description["inflow"] = inflows
+    if any("fuel" in entry for entry in sources + inflows):
         description["fire"] = {"ignition": settings.ignition, "burn_rate": settings.burn_rate,
                                "heat": settings.heat, "smoke": settings.smoke}
     description["output"] = {"frames": last - first + 1, "steps_per_frame": STEPS_PER_FRAME}
