@@ -63,6 +63,9 @@ inline constexpr std::pair<std::string_view, AdvectionScheme> kAdvectionSchemes[
     {"conservative", AdvectionScheme::Conservative}};
 inline constexpr std::pair<std::string_view, bool> kBasisPrecisions[] = {{"float32", false},
                                                                          {"float16", true}};
+/// The grid box's sides by index 2·axis + (0 low, 1 high).
+inline constexpr std::string_view kSideNames[] = {"x_min", "x_max", "y_min",
+                                                  "y_max", "z_min", "z_max"};
 
 template <typename T>
 std::string_view keywordOf(Choices<T> choices, T value) {

@@ -180,13 +180,8 @@ void Simulation::recordStep(std::vector<std::size_t>& boundaries) {
         mSmoke.setEmitters(activeEmitters(mSettings.emitters, mTime));
         mActiveEmitters = std::move(active);
     }
-    std::vector<bool> letIn(mSettings.inflows.size());
-    for (std::size_t i = 0; i < letIn.size(); ++i)
-        letIn[i] = mSettings.inflows[i].region.activeAt(mTime);
-    if (letIn != mActiveInflows) {
+    if (mActiveInflows.changes(mSettings.inflows, mTime))
         mSmoke.setInflows(activeInflows(mSettings.inflows, mTime));
-        mActiveInflows = std::move(letIn);
-    }
     boundaries.push_back(dispatchMark());
     if (forcesActive()) {
         // Without solid smoke cells the mask leaves every weight as it is: skip its loads.

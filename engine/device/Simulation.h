@@ -31,6 +31,7 @@
 #include "engine/device/SmokeState.h"
 #include "engine/device/VelocityReconstruction.h"
 #include "engine/device/WindField.h"
+#include "engine/simulation/InflowPatch.h"
 #include "engine/simulation/Simulator.h"
 #include "engine/vulkan/CommandSequence.h"
 #include "engine/vulkan/DeviceBuffer.h"
@@ -115,7 +116,7 @@ private:
     mutable vulkan::CommandSequence
         mSequence;                      ///< also records faceMagneticField()'s reconstruction
     std::vector<bool> mActiveEmitters;  ///< what the device's emitter list holds now
-    std::vector<bool> mActiveInflows;   ///< the inflows the device's ghosts hold now
+    ActiveInflowSet mActiveInflows;     ///< the inflows the device's ghosts hold now
     std::size_t mStepDispatches = 0;    ///< dispatches of the step's earlier submissions
     std::vector<double> mStepTimesMs;   ///< their times, and the last submission's
     /// Modal substeps per step: doubled when an implicit solve fails to converge, halved again

@@ -120,7 +120,7 @@ FrameStats Simulation::advanceSteps(int steps) {
                 -obstacleCorrection(mBasis, mFaceVelocity, regions, mTime + dt));
             reconstructAirVelocity();
         }
-        if (!mSettings.inflows.empty())
+        if (mActiveInflows.changes(mSettings.inflows, mTime))
             mAdvection.setInflows(activeInflows(mSettings.inflows, mTime));
         mAdvection.step(std::span<const double>(mFaceVelocity), dt, mSettings.advection,
                         activeEmitters(mSettings.emitters, mTime), mFields);

@@ -14,6 +14,7 @@
 #include "engine/reference/ParticleAdvection.h"
 #include "engine/reference/SmokeAdvection.h"
 #include "engine/reference/SmokeDisplacement.h"
+#include "engine/simulation/InflowPatch.h"
 #include "engine/simulation/Simulator.h"
 
 namespace modeflow::reference {
@@ -64,6 +65,7 @@ private:
     std::vector<double> mFaceVelocity;
     /// A wind's base flow B on the faces (addWind, made once; empty without a wind).
     std::vector<double> mWindField;
+    ActiveInflowSet mActiveInflows;  ///< the inflows the smoke's ghosts hold now
     SmokeFields mFields;
     double mTime = 0.0;
     long mStep = 0;  ///< steps since t = 0, for the divergence message

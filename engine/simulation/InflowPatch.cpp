@@ -24,4 +24,12 @@ std::vector<InflowPatch> activeInflows(std::span<const InflowPatch> all, double 
     return active;
 }
 
+bool ActiveInflowSet::changes(std::span<const InflowPatch> all, double t) {
+    std::vector<bool> on(all.size());
+    for (std::size_t i = 0; i < on.size(); ++i) on[i] = all[i].region.activeAt(t);
+    if (mOn == on) return false;
+    mOn = std::move(on);
+    return true;
+}
+
 }  // namespace modeflow

@@ -5,6 +5,7 @@
 /// (OutsideAir.h), and with a velocity its shape drives the air as a jet source's does
 /// (SimulationSettings::velocityRegions). A plain value.
 
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -27,5 +28,17 @@ InflowPatch inflowFromSpec(const InflowSpec& spec);
 
 /// The patches of `all` that let air in during the step starting at t.
 std::vector<InflowPatch> activeInflows(std::span<const InflowPatch> all, double t);
+
+/// Which inflows are on, remembered from step to step, so that a backend rebuilds what the air
+/// coming in carries (OutsideAir's ghosts) only when one starts or stops.
+class ActiveInflowSet {
+public:
+    /// Whether the patches of `all` on at t differ from those of the last call (the first call:
+    /// always).
+    bool changes(std::span<const InflowPatch> all, double t);
+
+private:
+    std::optional<std::vector<bool>> mOn;
+};
 
 }  // namespace modeflow

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "engine/core/Error.h"
+#include "engine/core/SceneKeywords.h"
 
 namespace modeflow {
 namespace {
@@ -12,11 +13,6 @@ namespace {
 /// The two axes along a side across `axis`, in increasing order.
 std::array<int, 2> alongSide(int axis) {
     return {axis == 0 ? 1 : 0, axis == 2 ? 1 : 2};
-}
-
-const char* sideNameOf(int side) {
-    static constexpr const char* names[] = {"x_min", "x_max", "y_min", "y_max", "z_min", "z_max"};
-    return names[side];
 }
 
 }  // namespace
@@ -124,8 +120,8 @@ std::int64_t OutsideAir::coveredFluidCells(const InflowPatch& patch,
 void requireInflowsMeetFluid(const OutsideAir& outside, std::span<const InflowPatch> patches,
                              std::span<const std::uint8_t> fluidMask) {
     for (std::size_t p = 0; p < patches.size(); ++p) {
-        const std::string name =
-            "[[inflow]] #" + std::to_string(p + 1) + " (" + sideNameOf(patches[p].side) + ")";
+        const std::string name = "[[inflow]] #" + std::to_string(p + 1) + " (" +
+                                 std::string(keywords::kSideNames[patches[p].side]) + ")";
         if (!outside.sides()[std::size_t(patches[p].side)])
             throw Error(name + ": no air comes in across that side");
         if (outside.coveredFluidCells(patches[p], fluidMask) == 0)

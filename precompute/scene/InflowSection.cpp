@@ -117,11 +117,7 @@ InflowSpec readInflow(const TomlReader& reader, const toml::table& table, int in
     inflow.density = readSmokeValue(reader, s, "density", inflow.density, Sign::NonNegative);
     inflow.temperature = readSmokeValue(reader, s, "temperature", inflow.temperature);
     inflow.fuel = readSmokeValue(reader, s, "fuel", inflow.fuel, Sign::NonNegative);
-    if (inflow.fuel > 0.0 && !scene.fire)
-        reader.fail(s, "fuel",
-                    "fuel burns by a [fire] table (ignition, burn_rate, heat, smoke), which the "
-                    "scene lacks",
-                    table.get("fuel"));
+    if (inflow.fuel > 0.0 && !scene.fire) reader.fail(s, "fuel", kFuelNeedsFire, table.get("fuel"));
     inflow.velocity = reader.vector(s, "velocity");
     if (inflow.velocity) {
         const Vec3& v = *inflow.velocity;

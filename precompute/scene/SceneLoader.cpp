@@ -12,6 +12,7 @@
 #include "engine/core/RuntimeLimits.h"
 #include "precompute/scene/SceneSections.h"
 #include "precompute/scene/SceneValidation.h"
+#include "precompute/scene/SceneWording.h"
 #include "precompute/scene/TomlReader.h"
 
 namespace modeflow {
@@ -93,9 +94,7 @@ SceneSpec readScene(std::string_view text, const std::filesystem::path& origin) 
     for (std::size_t i = 0; i < scene.sources.size() && !scene.fire; ++i)
         if (scene.sources[i].fuel > 0.0) {
             const toml::table& source = *root["source"].as_array()->at(i).as_table();
-            reader.fail({source, "[[source]] #" + std::to_string(i + 1)}, "fuel",
-                        "fuel burns by a [fire] table (ignition, burn_rate, heat, smoke), which "
-                        "the scene lacks",
+            reader.fail({source, "[[source]] #" + std::to_string(i + 1)}, "fuel", kFuelNeedsFire,
                         source.get("fuel"));
         }
     if (const toml::table* t = reader.optionalTable(root, "wind")) {

@@ -8,6 +8,8 @@
 #include <cstdio>
 #include <vector>
 
+#include "engine/core/SceneKeywords.h"
+
 namespace modeflow::scene {
 namespace {
 
@@ -90,7 +92,7 @@ const char* axisName(int axis) {
 }
 
 std::string sideName(int side) {
-    return std::string(axisName(side / 2)) + (side % 2 ? "_max" : "_min");
+    return std::string(keywords::kSideNames[side]);
 }
 
 int sideNamed(std::string_view name, int dim) {

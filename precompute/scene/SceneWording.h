@@ -36,4 +36,8 @@ int sideNamed(std::string_view name, int dim);
 /// "x_min, x_max, y_min, y_max" (", z_min or z_max" in 3D): the sides of a `dim`-D box.
 std::string sideNames(int dim);
 
+/// Why fuel (a source's, an inflow's) is refused without a [fire] table.
+inline constexpr const char* kFuelNeedsFire =
+    "fuel burns by a [fire] table (ignition, burn_rate, heat, smoke), which the scene lacks";
+
 }  // namespace modeflow::scene
