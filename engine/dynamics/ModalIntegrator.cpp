@@ -286,7 +286,7 @@ Eigen::VectorXd ModalIntegrator::forceAt(double t, const ForceFunction* force) c
 
 void ModalIntegrator::decay(Eigen::VectorXd& x, double h) const {
     if (!mDecays) return;
-    const Eigen::ArrayXd factor = (-h * mSystem.decayRates().array()).exp();
+    const auto factor = (-h * mSystem.decayRates().array()).exp();
     const Eigen::VectorXd& target = mSystem.decayTargets();
     if (target.size() == 0)
         x.array() *= factor;

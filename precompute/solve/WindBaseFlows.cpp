@@ -1,6 +1,7 @@
 #include "precompute/solve/WindBaseFlows.h"
 
 #include <algorithm>
+#include <optional>
 #include <string>
 
 #include <Eigen/Dense>
@@ -174,7 +175,8 @@ std::vector<std::vector<double>> windStokesCorrections(
     for (Eigen::Index k = 0; k < eigenvalues.size(); ++k)
         if (eigenvalues[k] > 0.0) inverse[k] = 1.0 / eigenvalues[k];
     const Eigen::MatrixXd q = periodicFluxes(cx, dec, modes);
-    const Eigen::MatrixXd gram = q.transpose() * inverse.asDiagonal() * q;
+    std::optional<Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd>> held;
+    if (q.cols() > 0) held.emplace(q.transpose() * inverse.asDiagonal() * q);
     std::vector<std::vector<double>> corrections;
     for (const std::vector<double>& flow : flows) {
         if (flow.empty()) {
@@ -187,9 +189,7 @@ std::vector<std::vector<double>> windStokesCorrections(
                 flow[std::size_t(dec.faces.toGlobal[std::size_t(f)])] * fluidArea(cx, dec, f);
         // c = −Λ⁻¹(Ψᵀ K B + Q μ) with Qᵀ c = 0.
         Eigen::VectorXd drive = modes.transpose() * (curlCurl * fluxes);
-        if (q.cols() > 0)
-            drive -= q * gram.completeOrthogonalDecomposition().solve(q.transpose() *
-                                                                      inverse.cwiseProduct(drive));
+        if (held) drive -= q * held->solve(q.transpose() * inverse.cwiseProduct(drive));
         const Eigen::VectorXd c = -inverse.cwiseProduct(drive);
         corrections.emplace_back(c.data(), c.data() + c.size());
     }
