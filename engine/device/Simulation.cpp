@@ -15,10 +15,6 @@
 namespace modeflow::device {
 namespace {
 
-constexpr int kMaxSubsteps = 16;
-/// Steps of at most 8 iterations after which the substeps are halved again.
-constexpr int kEasyStepsToHalve = 50;
-
 /// What the device cannot run, checked before any upload.
 SimulationSettings supported(SimulationSettings settings) {
     if (settings.mhd && settings.fluid.alpha > 0.0)
@@ -40,7 +36,7 @@ std::uint32_t maxDispatchesPerStep(const ModalStepper& stepper, const SmokeState
     // The conservative smoke's substeps, a dispatch a pair each (its second submission).
     const std::int64_t fluxDispatches =
         advection == AdvectionScheme::Conservative ? 2 * std::int64_t(maxFluxSubsteps) : 0;
-    return std::uint32_t(kMaxSubsteps * stepper.dispatchesPerStep() + 64 +
+    return std::uint32_t(SubstepSchedule::kMaxSubsteps * stepper.dispatchesPerStep() + 64 +
                          (boxDispatches * maxObstacles + 7) * maxDisplacementSubsteps + 2 +
                          particleDispatches + burnDispatches + fluxDispatches);
 }
@@ -109,26 +105,15 @@ void Simulation::restore(double time, const Eigen::VectorXd& v, const SmokeField
     mParticles.restore({});
     mTime = time;
     mStep = std::lround(time / mSettings.dt);
-    mSubsteps = 1;
-    mEasySteps = 0;
+    mSchedule.reset();
 }
 
 StepCarry Simulation::carry() const {
-    return {mStepper.heldRate(), mStepper.warmStart(), mSubsteps, mEasySteps};
+    return carryOf(mStepper, mSchedule);
 }
 
 void Simulation::setCarry(const StepCarry& carry) {
-    // A power of two up to kMaxSubsteps, as advanceSteps makes them.
-    const bool schedule = carry.substeps >= 1 && carry.substeps <= kMaxSubsteps &&
-                          (carry.substeps & (carry.substeps - 1)) == 0 && carry.easySteps >= 0 &&
-                          carry.easySteps < kEasyStepsToHalve;
-    if (!schedule)
-        throw Error("simulation: " + std::to_string(carry.substeps) + " modal substeps and " +
-                    std::to_string(carry.easySteps) + " easy steps are no schedule of this device");
-    mStepper.setHeldRate(carry.heldRate);
-    mStepper.setWarmStart(carry.warmRhs);
-    mSubsteps = carry.substeps;
-    mEasySteps = carry.easySteps;
+    restoreCarry(carry, mStepper, mSchedule);
 }
 
 void Simulation::setSplats(std::span<const ForceSplat> splats) {
@@ -200,7 +185,7 @@ void Simulation::recordStep(std::vector<std::size_t>& boundaries) {
             mProjection.record(mSequence, *mModes, mForceDensity, mStepper.forceBuffer());
     }
     boundaries.push_back(dispatchMark());
-    mStepper.recordStep(mSequence, dt, mSubsteps);
+    mStepper.recordStep(mSequence, dt, mSchedule.substeps());
     boundaries.push_back(dispatchMark());
     recordReconstruction();
     boundaries.push_back(dispatchMark());
@@ -272,19 +257,8 @@ FrameStats Simulation::advanceSteps(int steps) {
 
         const DeviceStepStatus status = mStepper.status();
         stats.maxIterations = std::max(stats.maxIterations, status.iterations);
-        const int failed = status.unconvergedSteps - mUnconverged;
-        mUnconverged = status.unconvergedSteps;
-        stats.unconvergedSteps += failed;
-        // A failed substep kept its state (no blow-up); take smaller ones from now on, and go
-        // back to larger ones once the flow has calmed down for a while.
-        if (failed > 0) {
-            mSubsteps = std::min(2 * mSubsteps, kMaxSubsteps);
-            mEasySteps = 0;
-        } else if (mSubsteps > 1 && status.iterations <= 8 && ++mEasySteps >= kEasyStepsToHalve) {
-            mSubsteps /= 2;
-            mEasySteps = 0;
-        }
-        stats.substeps = std::max(stats.substeps, mSubsteps);
+        stats.unconvergedSteps += mSchedule.advance(status);
+        stats.substeps = std::max(stats.substeps, mSchedule.substeps());
         const std::vector<double>& times = mStepTimesMs;
         if (times.empty()) continue;
         ++stats.timedSteps;

@@ -29,6 +29,7 @@
 #include "engine/device/SmokeAdvection.h"
 #include "engine/device/SmokeDisplacement.h"
 #include "engine/device/SmokeState.h"
+#include "engine/device/SubstepSchedule.h"
 #include "engine/device/VelocityReconstruction.h"
 #include "engine/device/WindField.h"
 #include "engine/simulation/InflowPatch.h"
@@ -119,11 +120,7 @@ private:
     ActiveInflowSet mActiveInflows;     ///< the inflows the device's ghosts hold now
     std::size_t mStepDispatches = 0;    ///< dispatches of the step's earlier submissions
     std::vector<double> mStepTimesMs;   ///< their times, and the last submission's
-    /// Modal substeps per step: doubled when an implicit solve fails to converge, halved again
-    /// after a long run of easy steps (see advanceFrame()).
-    int mSubsteps = 1;
-    int mEasySteps = 0;
-    int mUnconverged = 0;  ///< the stepper's count of failed substeps so far
+    SubstepSchedule mSchedule;
     double mTime = 0.0;
     long mStep = 0;  ///< steps since t = 0, for the divergence message
 };

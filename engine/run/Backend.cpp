@@ -8,10 +8,12 @@
 #include "engine/device/DeviceCoefficients.h"
 #include "engine/device/ModalStepper.h"
 #include "engine/device/Simulation.h"
+#include "engine/device/SurfaceSimulation.h"
 #include "engine/reference/ModalStepper.h"
 #include "engine/reference/Simulation.h"
 #include "engine/run/RunInputs.h"
 #include "engine/simulation/WindTransport.h"
+#include "engine/surface/SurfaceSimulation.h"
 
 namespace modeflow {
 
@@ -59,7 +61,8 @@ void Backend::requireFits(const SceneSpec& scene) const {
 }
 
 std::unique_ptr<Simulator> Backend::makeSimulator(const RunInputs& run, bool stageTimes) const {
-    requireSupport(run.scene, mKind);
+    if (run.cache.kind == BasisKind::Surface)
+        throw Error(run.scene.name + ": a surface scene runs as a SurfaceSimulator");
     std::unique_ptr<Simulator> simulator;
     if (mKind == BackendKind::Vulkan)
         simulator = std::make_unique<device::Simulation>(*mContext, run.cache, *run.coefficients,
@@ -74,7 +77,6 @@ std::unique_ptr<Simulator> Backend::makeSimulator(const RunInputs& run, bool sta
 
 std::unique_ptr<ModalStepping> Backend::makeModalStepper(const RunInputs& run,
                                                          Integrator scheme) const {
-    requireSupport(run.scene, mKind);
     // A wind's advection of the modes is part of the dynamics on either backend.
     SimulationSettings settings = withWindTransport(run.settings, run.cache);
     settings.integrator = scheme;
@@ -93,6 +95,16 @@ std::unique_ptr<ModalStepping> Backend::makeModalStepper(const RunInputs& run,
         stepper = std::move(reference);
     }
     return stepper;
+}
+
+std::unique_ptr<SurfaceSimulator> Backend::makeSurfaceSimulator(const RunInputs& run) const {
+    if (run.cache.kind != BasisKind::Surface)
+        throw Error(run.scene.name + ": a grid scene runs as a Simulator");
+    if (mKind == BackendKind::Vulkan)
+        return std::make_unique<device::SurfaceSimulation>(*mContext, run.cache, *run.coefficients,
+                                                           run.settings, run.initialVelocity);
+    return std::make_unique<SurfaceSimulation>(run.cache, *run.coefficients, run.settings,
+                                               run.initialVelocity);
 }
 
 void Backend::requireCleanValidation() const {

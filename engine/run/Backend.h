@@ -2,7 +2,8 @@
 /// @file Backend.h
 /// The backend a command simulates on, chosen once from `--device`, opened before any
 /// precompute (so a device index that is not there is refused at once), and the one factory of
-/// what runs on it: a Simulator (`run`, `stir`, tests, benchmarks) or a ModalStepping (`modes`).
+/// what runs on it: a Simulator (`run`, `stir`, tests, benchmarks), a SurfaceSimulator (surface
+/// scenes) or a ModalStepping (`modes`).
 /// What each backend can do is BackendCapabilities' table.
 
 #include <memory>
@@ -12,6 +13,7 @@
 #include "engine/simulation/BackendCapabilities.h"
 #include "engine/simulation/ModalStepping.h"
 #include "engine/simulation/Simulator.h"
+#include "engine/simulation/SurfaceSimulator.h"
 #include "engine/vulkan/VulkanContext.h"
 
 namespace modeflow {
@@ -61,8 +63,13 @@ public:
 
     /// A simulation of the prepared run, at its initial state. It keeps references into `run`,
     /// which must outlive it and stay where it is. `stageTimes`: time each stage (device only).
-    /// @throw modeflow::Error for settings the model refuses, or a device error.
+    /// @throw modeflow::Error for a surface scene (makeSurfaceSimulator), settings the model
+    ///        refuses, or a device error.
     std::unique_ptr<Simulator> makeSimulator(const RunInputs& run, bool stageTimes = false) const;
+    /// A surface scene's simulation of the prepared run, at its initial state, keeping
+    /// references into `run` as makeSimulator's.
+    /// @throw modeflow::Error for a grid scene, settings the model refuses, or a device error.
+    std::unique_ptr<SurfaceSimulator> makeSurfaceSimulator(const RunInputs& run) const;
     /// The reduced dynamics of the prepared run alone, with `scheme`, at its initial state
     /// ([v; F] with MHD).
     std::unique_ptr<ModalStepping> makeModalStepper(const RunInputs& run, Integrator scheme) const;

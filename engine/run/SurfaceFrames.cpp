@@ -9,20 +9,18 @@
 
 namespace modeflow {
 
-SurfaceFrames::SurfaceFrames(const RunInputs& run, std::filesystem::path folder,
-                             std::string sceneName, std::string sceneHash)
-    : mRun(run),
-      mSimulation(run.cache, *run.coefficients, run.settings, run.initialVelocity),
+SurfaceFrames::SurfaceFrames(SurfaceSimulator& simulator, const RunInputs& run,
+                             std::filesystem::path folder, std::string sceneName,
+                             std::string sceneHash)
+    : mSimulation(simulator),
+      mRun(run),
       mFolder(std::move(folder)),
       mSceneName(std::move(sceneName)),
       mSceneHash(std::move(sceneHash)),
       mDyeScale(dyeColourScale(run.settings)) {}
 
 FrameStats SurfaceFrames::advanceFrame() {
-    mSimulation.advanceFrame();
-    FrameStats stats;
-    stats.steps = mRun.settings.stepsPerFrame;
-    return stats;
+    return mSimulation.advanceSteps(mRun.settings.stepsPerFrame);
 }
 
 std::filesystem::path SurfaceFrames::frameFile(int frame) const {
@@ -32,15 +30,14 @@ std::filesystem::path SurfaceFrames::frameFile(int frame) const {
 FrameOutput SurfaceFrames::readFrame(int frame, const std::filesystem::path& picture,
                                      FrameProgress& bar) {
     FrameOutput out;
+    const Eigen::VectorXd modalDye = mSimulation.dye(), modalVelocity = mSimulation.velocity();
     std::vector<double> dye =
-        bar.timed("reading fields", [&] { return mSimulation.dye().vertexValues(); });
-    std::vector<double> velocity =
-        bar.timed("reading fields", [&] { return mSimulation.vertexVelocity(); });
-    out.checkpoint = {frame, mSimulation.time(),  0,  mSimulation.velocity(),
-                      {},    mSimulation.carry(), {}, {}};
-    const Eigen::VectorXd& state = mSimulation.dye().state();
-    out.checkpoint.smoke.density.assign(state.data(), state.data() + state.size());
-    out.checkpoint.smoke.temperature.assign(state.size(), 0.0);  // dye has none
+        bar.timed("reading fields", [&] { return surfaceDyeAtVertices(mRun.cache, modalDye); });
+    std::vector<double> velocity = bar.timed(
+        "reading fields", [&] { return surfaceVelocityAtVertices(mRun.cache, modalVelocity); });
+    out.checkpoint = {frame, mSimulation.time(), 0, modalVelocity, {}, mSimulation.carry(), {}, {}};
+    out.checkpoint.smoke.density.assign(modalDye.data(), modalDye.data() + modalDye.size());
+    out.checkpoint.smoke.temperature.assign(modalDye.size(), 0.0);  // dye has none
     out.writeFiles = [this, dye = std::move(dye), velocity = std::move(velocity), picture,
                       file = frameFile(frame)](const Checkpoint& state, FrameProgress& bar) {
         PlyFrame ply;

@@ -1,25 +1,26 @@
 #pragma once
 /// @file SurfaceFrames.h
-/// The frames of a surface scene's run (scenes/README.md, "Curved surfaces"): the CPU simulation
-/// of the flow and its dye, one PLY file per frame (engine/output/PlyFrame.h), a picture of the
-/// dye when asked, and the checkpoint (the dye's modal state [mean, f] in its density, zeros in
-/// its temperature).
+/// The frames of a surface scene's run (scenes/README.md, "Curved surfaces"): the simulation of
+/// the flow and its dye on either backend (SurfaceSimulator), one PLY file per frame
+/// (engine/output/PlyFrame.h), a picture of the dye when asked, and the checkpoint (the dye's modal
+/// state [mean, f] in its density, zeros in its temperature).
 
 #include <filesystem>
+#include <memory>
 #include <string>
 
 #include "engine/run/FramedRun.h"
 #include "engine/run/RunInputs.h"
-#include "engine/surface/SurfaceSimulation.h"
+#include "engine/simulation/SurfaceSimulator.h"
 
 namespace modeflow {
 
 class SurfaceFrames final : public FramedRun {
 public:
-    /// Simulates `run` (which must outlive this) from its initial state; frames are
+    /// Advances `simulator` of `run` (both must outlive this) from its initial state; frames are
     /// `folder`/NAME_0001.ply, … with `sceneHash` in their header.
-    SurfaceFrames(const RunInputs& run, std::filesystem::path folder, std::string sceneName,
-                  std::string sceneHash);
+    SurfaceFrames(SurfaceSimulator& simulator, const RunInputs& run, std::filesystem::path folder,
+                  std::string sceneName, std::string sceneHash);
 
     const SimulationSettings& settings() const override { return mRun.settings; }
     double time() const override { return mSimulation.time(); }
@@ -30,8 +31,8 @@ public:
     void restore(const Checkpoint& from) override;
 
 private:
+    SurfaceSimulator& mSimulation;
     const RunInputs& mRun;
-    SurfaceSimulation mSimulation;
     std::filesystem::path mFolder;
     std::string mSceneName, mSceneHash;
     double mDyeScale;

@@ -12,9 +12,8 @@ namespace modeflow::stir {
 std::unique_ptr<StirScene> makeStirScene(const Backend& backend, const RunInputs& run,
                                          const StirSettings& settings,
                                          const vulkan::VulkanContext& context) {
-    requireSupport(run.scene, backend.kind());
     if (run.cache.kind == BasisKind::Surface)
-        return std::make_unique<SurfaceStirScene>(run, settings, context);
+        return std::make_unique<SurfaceStirScene>(backend, run, settings, context);
     return std::make_unique<GridStirScene>(backend, run, settings, context);
 }
 

@@ -71,8 +71,7 @@ public:
 
 /// The scene of a prepared run on `backend`, drawn on `context` (the screen's device); all three
 /// must outlive it.
-/// @throw modeflow::Error for a surface on a backend that does not simulate surfaces
-///        (BackendCapabilities), or as the scene's parts do.
+/// @throw modeflow::Error as the scene's parts do.
 std::unique_ptr<StirScene> makeStirScene(const Backend& backend, const RunInputs& run,
                                          const StirSettings& settings,
                                          const vulkan::VulkanContext& context);

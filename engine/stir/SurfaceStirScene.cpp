@@ -9,16 +9,18 @@
 #include "engine/core/SceneKeywords.h"
 #include "engine/dynamics/Diagnostics.h"
 #include "engine/preview/SurfaceImage.h"
+#include "engine/run/Backend.h"
 #include "engine/stir/StrokeSplats.h"
 
 namespace modeflow::stir {
 
-SurfaceStirScene::SurfaceStirScene(const RunInputs& run, const StirSettings& settings,
+SurfaceStirScene::SurfaceStirScene(const Backend& backend, const RunInputs& run,
+                                   const StirSettings& settings,
                                    const vulkan::VulkanContext& context)
     : mRun(run),
       mStir(settings),
       mSettings(run.settings),
-      mSimulation(run.cache, *run.coefficients, mSettings, run.initialVelocity),
+      mSimulation(backend.makeSurfaceSimulator(run)),
       mForce(run.cache),
       mView(run.cache.surface.mesh),
       mDyeScale(dyeColourScale(run.settings)),
@@ -46,19 +48,19 @@ void SurfaceStirScene::moveTo(double x, double y, VkExtent2D window) {
 }
 
 void SurfaceStirScene::reset() {
-    mSimulation.restore(0.0, mRun.initialVelocity,
-                        Eigen::VectorXd::Zero(mSimulation.dye().state().size()));
+    mSimulation->restore(0.0, mRun.initialVelocity,
+                         Eigen::VectorXd::Zero(mSimulation->dye().size()));
 }
 
 void SurfaceStirScene::toggleIntegrator() {
     mSettings.integrator = otherIntegrator(mSettings.integrator);
-    mSimulation.setIntegrator(mSettings.integrator);
+    mSimulation->setIntegrator(mSettings.integrator);
 }
 
 void SurfaceStirScene::scaleViscosity(bool up) {
     mSettings.fluid.viscosity = scaledViscosity(
         mSettings.fluid.viscosity, up, mRun.cache.velocity.eigenvalues.maxCoeff(), mSettings.dt);
-    mSimulation.setViscosity(mSettings.fluid.viscosity);
+    mSimulation->setViscosity(mSettings.fluid.viscosity);
 }
 
 FrameStats SurfaceStirScene::advance(int steps, double elapsed) {
@@ -67,17 +69,15 @@ FrameStats SurfaceStirScene::advance(int steps, double elapsed) {
     const std::vector<ForceSplat> splats =
         mDragging ? strokeSplats(mStrokeFrom, mPointer, mStrokeTime, mSplatRadius, mStir.force)
                   : std::vector<ForceSplat>{};
-    mSimulation.setForce(mForce.project(splats));
-    mSimulation.advanceSteps(steps);
+    mSimulation->setForce(mForce.project(splats));
+    const FrameStats stats = mSimulation->advanceSteps(steps);
     mStrokeFrom = mPointer;
     mStrokeTime = 0.0;
-    FrameStats stats;
-    stats.steps = steps;
     return stats;
 }
 
 double SurfaceStirScene::energy() const {
-    return modeflow::energy(mSimulation.velocity());
+    return modeflow::energy(mSimulation->velocity());
 }
 
 std::string SurfaceStirScene::status() const {
@@ -89,12 +89,12 @@ std::string SurfaceStirScene::status() const {
 }
 
 SmokeFields SurfaceStirScene::smoke() const {
-    return {mSimulation.dye().vertexValues(), {}};
+    return {surfaceDyeAtVertices(mRun.cache, mSimulation->dye()), {}};
 }
 
 void SurfaceStirScene::draw(const PictureExtras& extras, VkExtent2D size, bool blueFirst) {
     const preview::Image image = preview::surfaceImage(
-        mRun.cache.surface.mesh, mSimulation.dye().vertexValues(), mDyeScale,
+        mRun.cache.surface.mesh, surfaceDyeAtVertices(mRun.cache, mSimulation->dye()), mDyeScale,
         SurfaceView::kPictureWidth, SurfaceView::kPictureHeight, mView.camera());
     // Packed as the kernels read them: red in the lowest byte.
     std::vector<std::uint32_t> words(image.rgba.size() / 4);

@@ -2,7 +2,6 @@
 
 #include "engine/surface/SurfaceDye.h"
 
-#include <algorithm>
 #include <string>
 
 #include "engine/core/Error.h"
@@ -11,30 +10,13 @@
 namespace modeflow {
 
 SurfaceDye::SurfaceDye(const BasisCache& cache, std::span<const SmokeEmitter> emitters)
-    : mCache(cache), mScalars(int(cache.scalar.modes.cols())) {
-    if (cache.kind != BasisKind::Surface) throw Error("surface dye: the basis is not a surface's");
-    const Eigen::VectorXd& area = cache.scalar.cellStar;  // ⋆0
-    mState = Eigen::VectorXd::Zero(mScalars + 1);
-    for (std::size_t e = 0; e < emitters.size(); ++e) {
-        Eigen::VectorXd inside = Eigen::VectorXd::Zero(area.size());
-        for (Eigen::Index v = 0; v < inside.size(); ++v)
-            inside[v] =
-                emitters[e].contains(cache.surface.mesh.vertices[std::size_t(v)], 3) ? 1.0 : 0.0;
-        if (inside.sum() == 0.0)
-            throw Error("[[source]] #" + std::to_string(e + 1) +
-                        " covers no vertex of the surface: move it onto the surface or enlarge it");
-        Source source{emitters[e], Eigen::VectorXd(mScalars + 1)};
-        const Eigen::VectorXd weighted = area.cwiseProduct(inside);
-        source.projection[0] = weighted.sum() / area.sum();
-        source.projection.tail(mScalars) = cache.scalar.modes.transpose() * weighted;
-        mSources.push_back(std::move(source));
-    }
-}
+    : mCache(cache),
+      mScalars(int(cache.scalar.modes.cols())),
+      mSources(cache, emitters),
+      mState(Eigen::VectorXd::Zero(mScalars + 1)) {}
 
 void SurfaceDye::step(const Eigen::VectorXd& v0, const Eigen::VectorXd& v1, double t, double h) {
-    Eigen::VectorXd source = Eigen::VectorXd::Zero(mScalars + 1);
-    for (const Source& s : mSources)
-        if (s.emitter.activeAt(t)) source += s.emitter.densityRate * s.projection;
+    const Eigen::VectorXd source = mSources.rateAt(t);
     mState[0] += h * source[0];
     if (mScalars == 0) return;
     const Eigen::VectorXd pairs = mCache.surface.advection * (0.5 * (v0 + v1));
@@ -57,19 +39,6 @@ void SurfaceDye::setState(const Eigen::VectorXd& state) {
         throw Error("surface dye: a state of " + std::to_string(state.size()) +
                     " values, expected " + std::to_string(mState.size()));
     mState = state;
-}
-
-std::vector<double> SurfaceDye::vertexValues() const {
-    const Eigen::VectorXd values =
-        Eigen::VectorXd::Constant(mCache.scalar.modes.rows(), mState[0]) +
-        mCache.scalar.modes * mState.tail(mScalars);
-    return {values.data(), values.data() + values.size()};
-}
-
-double dyeColourScale(const SimulationSettings& settings) {
-    double rate = 0.0;
-    for (const SmokeEmitter& e : settings.emitters) rate = std::max(rate, e.densityRate);
-    return rate > 0.0 ? rate * settings.dt * settings.stepsPerFrame * 4.0 : 1.0;
 }
 
 }  // namespace modeflow

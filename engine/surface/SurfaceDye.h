@@ -3,7 +3,7 @@
 /// Dye carried by the flow on a surface, in the surface's scalar basis (seed eq. 6.2): the dye is
 /// its mean plus Σ f_i Φ_i, and advection is ḟ = −A(v) f with A(v) = Σ_m v_m A_m antisymmetric,
 /// so the midpoint (Cayley) step keeps |f| (the dye's variance) exactly; the mean never moves.
-/// [[source]] balls and boxes add their rate at the vertices inside them, projected on the basis.
+/// [[source]] balls and boxes add their rate at the vertices inside them (SurfaceSources.h).
 /// Like any truncated spectral field, the dye rings (Gibbs) near sharp edges, and may dip below 0.
 
 #include <span>
@@ -13,8 +13,8 @@
 #include <Eigen/LU>
 
 #include "engine/format/BasisCache.h"
-#include "engine/simulation/SimulationSettings.h"
 #include "engine/simulation/SmokeEmitter.h"
+#include "engine/simulation/SurfaceSources.h"
 
 namespace modeflow {
 
@@ -28,26 +28,16 @@ public:
     /// (I − h/2 K) f + h s, K = A((v0 + v1)/2), s the emitters active at t.
     void step(const Eigen::VectorXd& v0, const Eigen::VectorXd& v1, double t, double h);
 
-    /// [mean, f_1, …, f_M]: what a checkpoint keeps.
+    /// [mean, f_1, …, f_M]: what a checkpoint keeps (surfaceDyeAtVertices gives the vertices').
     const Eigen::VectorXd& state() const { return mState; }
     /// @throw modeflow::Error on a wrong size.
     void setState(const Eigen::VectorXd& state);
-    /// The dye at each vertex.
-    std::vector<double> vertexValues() const;
 
 private:
     const BasisCache& mCache;
     int mScalars = 0;
-    struct Source {
-        SmokeEmitter emitter;
-        Eigen::VectorXd projection;  ///< [mean rate, Φᵀ⋆0 s] per unit of density rate
-    };
-    std::vector<Source> mSources;
+    SurfaceSources mSources;
     Eigen::VectorXd mState;
 };
-
-/// The dye shown in full colour: four frames' worth of the strongest source's rate (1 without
-/// sources), one scale for a whole run so that its pictures compare.
-double dyeColourScale(const SimulationSettings& settings);
 
 }  // namespace modeflow

@@ -2,6 +2,7 @@
 
 #include "engine/surface/SurfaceSimulation.h"
 
+#include <algorithm>
 #include <string>
 
 #include "engine/core/Error.h"
@@ -13,23 +14,25 @@ SurfaceSimulation::SurfaceSimulation(const BasisCache& cache,
                                      const StructuralCoefficients& coefficients,
                                      const SimulationSettings& settings,
                                      const Eigen::VectorXd& velocity)
-    : mCache(cache),
-      mSettings(settings),
-      mStepper(coefficients, settings),
-      mDye(cache, settings.emitters) {
+    : mDt(settings.dt), mStepper(coefficients, settings), mDye(cache, settings.emitters) {
     mStepper.setVelocity(velocity);
 }
 
-void SurfaceSimulation::advanceSteps(int steps) {
+FrameStats SurfaceSimulation::advanceSteps(int steps) {
+    FrameStats stats;
     for (int s = 0; s < steps; ++s) {
         const Eigen::VectorXd before = mStepper.velocity();
-        mStepper.step(mSettings.dt);
+        const StepReport report = mStepper.step(mDt);
         ++mStep;
         const Eigen::VectorXd after = mStepper.velocity();
-        requireFiniteModalState(after, mStep, mTime + mSettings.dt);
-        mDye.step(before, after, mTime, mSettings.dt);
-        mTime += mSettings.dt;
+        requireFiniteModalState(after, mStep, mTime + mDt);
+        mDye.step(before, after, mTime, mDt);
+        mTime += mDt;
+        ++stats.steps;
+        stats.maxIterations = std::max(stats.maxIterations, report.iterations);
+        if (!report.converged) ++stats.unconvergedSteps;
     }
+    return stats;
 }
 
 void SurfaceSimulation::restore(double time, const Eigen::VectorXd& velocity,
@@ -41,11 +44,6 @@ void SurfaceSimulation::restore(double time, const Eigen::VectorXd& velocity,
     mDye.setState(dye);
     mStepper.setVelocity(velocity);
     mTime = time;
-}
-
-std::vector<double> SurfaceSimulation::vertexVelocity() const {
-    const Eigen::VectorXd u = mCache.surface.vertexVelocity * mStepper.velocity();
-    return {u.data(), u.data() + u.size()};
 }
 
 }  // namespace modeflow

@@ -1,57 +1,41 @@
 #pragma once
 /// @file SurfaceSimulation.h
-/// A surface scene advancing step by step on the CPU (scenes/README.md, "Curved surfaces"): the
-/// modal velocity with the same integrators, viscosity and LANS-α as a grid scene's (the CPU
-/// reference's modal stage, reference::ModalStepper), a modal force (stirring, SurfaceForce.h)
-/// held over the following steps, and the dye it carries (SurfaceDye). `run` writes its frames
-/// (engine/output/PlyFrame.h); `stir` stirs it.
-
-#include <vector>
+/// A surface scene on the CPU reference (SurfaceSimulator.h): the modal velocity advanced by the
+/// CPU reference's modal stage (reference::ModalStepper) and the dye it carries (SurfaceDye), in
+/// double precision. The reference of device::SurfaceSimulation.
 
 #include <Eigen/Core>
 
 #include "engine/format/BasisCache.h"
 #include "engine/reference/ModalStepper.h"
 #include "engine/simulation/SimulationSettings.h"
+#include "engine/simulation/SurfaceSimulator.h"
 #include "engine/surface/SurfaceDye.h"
 
 namespace modeflow {
 
-class SurfaceSimulation {
+class SurfaceSimulation final : public SurfaceSimulator {
 public:
-    /// Keeps references to `cache`, `coefficients` and `settings`, which must outlive it.
+    /// Keeps references to `cache` and `coefficients`, which must outlive it.
     /// @throw modeflow::Error as SurfaceDye does, or for settings FluidSystem refuses.
     SurfaceSimulation(const BasisCache& cache, const StructuralCoefficients& coefficients,
                       const SimulationSettings& settings, const Eigen::VectorXd& velocity);
 
-    /// settings.stepsPerFrame steps.
-    /// @throw ModalStateDiverged when a step leaves the modal state non-finite.
-    void advanceFrame() { advanceSteps(mSettings.stepsPerFrame); }
-    /// `steps` steps of settings.dt. @throw ModalStateDiverged as advanceFrame().
-    void advanceSteps(int steps);
-    /// Continues from a saved state (a resumed run).
-    /// @throw modeflow::Error on wrong sizes.
-    void restore(double time, const Eigen::VectorXd& velocity, const Eigen::VectorXd& dye);
+    FrameStats advanceSteps(int steps) override;
+    void restore(double time, const Eigen::VectorXd& velocity, const Eigen::VectorXd& dye) override;
+    StepCarry carry() const override { return mStepper.carry(); }
+    void setCarry(const StepCarry& carry) override { mStepper.setCarry(carry); }
 
-    /// The modal force of the following steps (N values; zero: none).
-    /// @throw modeflow::Error on a wrong size.
-    void setForce(const Eigen::VectorXd& force) { mStepper.setForce(force); }
-    /// Interactive changes between steps (`stir`). @throw modeflow::Error for a negative ν.
-    void setViscosity(double viscosity) { mStepper.setViscosity(viscosity); }
-    void setIntegrator(Integrator integrator) { mStepper.setIntegrator(integrator); }
+    void setForce(const Eigen::VectorXd& force) override { mStepper.setForce(force); }
+    void setViscosity(double viscosity) override { mStepper.setViscosity(viscosity); }
+    void setIntegrator(Integrator integrator) override { mStepper.setIntegrator(integrator); }
 
-    double time() const { return mTime; }
-    Eigen::VectorXd velocity() const { return mStepper.velocity(); }
-    /// What the steps carry (Simulator::carry), and its restore after restore().
-    StepCarry carry() const { return mStepper.carry(); }
-    void setCarry(const StepCarry& carry) { mStepper.setCarry(carry); }
-    const SurfaceDye& dye() const { return mDye; }
-    /// The velocity at the vertices, x, y, z per vertex.
-    std::vector<double> vertexVelocity() const;
+    double time() const override { return mTime; }
+    Eigen::VectorXd velocity() const override { return mStepper.velocity(); }
+    Eigen::VectorXd dye() const override { return mDye.state(); }
 
 private:
-    const BasisCache& mCache;
-    const SimulationSettings& mSettings;
+    double mDt;
     reference::ModalStepper mStepper;
     SurfaceDye mDye;
     double mTime = 0.0;

@@ -88,6 +88,15 @@ void CommandSequence::fill(const DeviceBuffer& buffer, VkDeviceSize bytes, std::
     recordTimed([&] { vkCmdFillBuffer(mCommandBuffer, buffer.handle(), 0, bytes, word); });
 }
 
+void CommandSequence::copy(const DeviceBuffer& from, const DeviceBuffer& to, VkDeviceSize bytes) {
+    if (bytes == 0 || bytes > from.bytes() || bytes > to.bytes())
+        throw Error("CommandSequence: cannot copy " + std::to_string(bytes) + " bytes from \"" +
+                    from.name() + "\" (" + std::to_string(from.bytes()) + " bytes) to \"" +
+                    to.name() + "\" (" + std::to_string(to.bytes()) + " bytes)");
+    const VkBufferCopy region{0, 0, bytes};
+    recordTimed([&] { vkCmdCopyBuffer(mCommandBuffer, from.handle(), to.handle(), 1, &region); });
+}
+
 void CommandSequence::recordTimed(const std::function<void()>& recordDispatch) {
     if (isTiming() && mDispatchCount >= mMaxTimed)
         throw Error("CommandSequence: more than " + std::to_string(mMaxTimed) +
@@ -101,7 +110,8 @@ void CommandSequence::recordTimed(const std::function<void()>& recordDispatch) {
                   VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT |
                       VK_PIPELINE_STAGE_TRANSFER_BIT,
                   VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT |
-                      VK_ACCESS_INDIRECT_COMMAND_READ_BIT | VK_ACCESS_TRANSFER_WRITE_BIT);
+                      VK_ACCESS_INDIRECT_COMMAND_READ_BIT | VK_ACCESS_TRANSFER_READ_BIT |
+                      VK_ACCESS_TRANSFER_WRITE_BIT);
     const auto query = std::uint32_t(2 * mDispatchCount);
     if (isTiming())
         vkCmdWriteTimestamp(mCommandBuffer, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, mQueryPool.get(),

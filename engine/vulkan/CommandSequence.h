@@ -61,6 +61,11 @@ public:
     /// @throw modeflow::Error if `bytes` is 0, not a multiple of 4 or beyond the buffer.
     void fill(const DeviceBuffer& buffer, VkDeviceSize bytes, std::uint32_t word);
 
+    /// Records copying the first `bytes` of `from` to the start of `to` (vkCmdCopyBuffer), after
+    /// the same barrier as a dispatch, timed and counted as one.
+    /// @throw modeflow::Error if `bytes` is 0 or beyond either buffer.
+    void copy(const DeviceBuffer& from, const DeviceBuffer& to, VkDeviceSize bytes);
+
     /// Ends recording, submits once, waits on the fence (then the host may read the buffers),
     /// reads the timestamps and makes the sequence ready for new recording.
     /// @throw modeflow::Error if nothing was recorded or a call fails (e.g. VK_ERROR_DEVICE_LOST).

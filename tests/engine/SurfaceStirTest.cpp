@@ -1,8 +1,8 @@
 /// `modeflow stir` on a surface (engine/stir/SurfaceStirScene), without a window: the pointer's
 /// ray picks the sphere where the picture shows it, a splat's force is tangent to the surface
 /// and drives the flow along its direction, a scripted drag over the sphere (the stir loop on a
-/// NullScreen, the CPU reference) sets a fluid at rest moving and carries the dye along the drag,
-/// while a drag off the mesh adds nothing.
+/// NullScreen) sets a fluid at rest moving and carries the dye along the drag, while a drag off
+/// the mesh adds nothing; on both backends.
 
 #include <gtest/gtest.h>
 
@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "engine/display/NullScreen.h"
+#include "engine/run/Backend.h"
 #include "engine/stir/StirApp.h"
 #include "engine/stir/SurfaceStirScene.h"
 #include "engine/surface/SurfaceForce.h"
@@ -73,17 +74,18 @@ std::string dragAt(double y, double x0, double x1) {
     return s.str();
 }
 
-class SurfaceStir : public ::testing::Test {
+class SurfaceStir : public ::testing::TestWithParam<BackendKind> {
 protected:
     void SetUp() override {
         mContext = makeVulkanContext(true);
         ASSERT_NE(mContext, nullptr);
+        mBackend = std::make_unique<Backend>(GetParam(), *mContext);
     }
 
-    /// 40 frames of the sphere on the CPU reference with `script`, on `screen`.
+    /// 40 frames of the sphere on the backend with `script`, on `screen`.
     stir::StirReport run(display::NullScreen& screen, const std::string& script) {
         stir::StirOptions options;
-        options.backend.kind = BackendKind::CpuReference;
+        options.backend.kind = GetParam();
         options.frames = 40;
         options.statistics = false;
         options.script = stir::parseInputScript(script, "test script");
@@ -92,10 +94,11 @@ protected:
     }
 
     std::unique_ptr<vulkan::VulkanContext> mContext;
+    std::unique_ptr<Backend> mBackend;
 };
 
-TEST_F(SurfaceStir, PointerPicksTheSphereWhereThePictureShowsIt) {
-    stir::SurfaceStirScene scene(sphereRun(), {}, *mContext);
+TEST_P(SurfaceStir, PointerPicksTheSphereWhereThePictureShowsIt) {
+    stir::SurfaceStirScene scene(*mBackend, sphereRun(), {}, *mContext);
     const stir::SurfaceView& view = scene.view();
     // The picture's centre: the sphere's point facing the viewer (a vertex-free spot of a
     // 642-vertex sphere lies within 0.02 of the unit sphere).
@@ -112,7 +115,7 @@ TEST_F(SurfaceStir, PointerPicksTheSphereWhereThePictureShowsIt) {
     EXPECT_TRUE(view.pick(0.5, 0.5, 1280, 480));
 }
 
-TEST_F(SurfaceStir, SplatForceIsTangentAndDrivesTheFlowAlongIt) {
+TEST_P(SurfaceStir, SplatForceIsTangentAndDrivesTheFlowAlongIt) {
     const BasisCache& cache = sphereRun().cache;
     const SurfaceForce force(cache);
     // On the equator at +x: east (+y) is tangent, +x is the normal.
@@ -133,7 +136,7 @@ TEST_F(SurfaceStir, SplatForceIsTangentAndDrivesTheFlowAlongIt) {
     EXPECT_EQ(force.project({}).norm(), 0.0);
 }
 
-TEST_F(SurfaceStir, DragOverTheSphereStirsTheFluidAndCarriesTheDyeAlong) {
+TEST_P(SurfaceStir, DragOverTheSphereStirsTheFluidAndCarriesTheDyeAlong) {
     // The drag passes the north pole's dye from left to right across the picture (the pole
     // shows near the top, at y ≈ 0.09).
     display::NullScreen still(*mContext, 640, 480), stirred(*mContext, 640, 480);
@@ -142,7 +145,7 @@ TEST_F(SurfaceStir, DragOverTheSphereStirsTheFluidAndCarriesTheDyeAlong) {
     EXPECT_EQ(none.validationMessages + drag.validationMessages, 0u);
     ASSERT_EQ(drag.smoke.density.size(), sphereRun().cache.surface.mesh.vertices.size());
     // Along the picture's right, in the scene.
-    stir::SurfaceStirScene scene(sphereRun(), {}, *mContext);
+    stir::SurfaceStirScene scene(*mBackend, sphereRun(), {}, *mContext);
     const preview::SurfaceProjection p = scene.view().projection();
     const auto right = [&](const Vec3& x) { return p.toPicture(x)[0]; };
     const double moved =
@@ -155,8 +158,8 @@ TEST_F(SurfaceStir, DragOverTheSphereStirsTheFluidAndCarriesTheDyeAlong) {
     EXPECT_GT(differing, 1000u);
 }
 
-TEST_F(SurfaceStir, DragStartsAFluidAtRestAndADragOffTheMeshAddsNothing) {
-    stir::SurfaceStirScene scene(sphereRun(), {}, *mContext);
+TEST_P(SurfaceStir, DragStartsAFluidAtRestAndADragOffTheMeshAddsNothing) {
+    stir::SurfaceStirScene scene(*mBackend, sphereRun(), {}, *mContext);
     const VkExtent2D window{640, 480};
     // Off the sphere, in the corner: no energy, however the pointer moves.
     scene.press(0.02, 0.02, window);
@@ -180,6 +183,12 @@ TEST_F(SurfaceStir, DragStartsAFluidAtRestAndADragOffTheMeshAddsNothing) {
     const stir::StirReport offMesh = run(missed, dragAt(0.03, 0.05, 0.25));
     EXPECT_EQ(offMesh.smoke.density, none.smoke.density);
 }
+
+INSTANTIATE_TEST_SUITE_P(Backends, SurfaceStir,
+                         ::testing::Values(BackendKind::CpuReference, BackendKind::Vulkan),
+                         [](const auto& info) {
+                             return info.param == BackendKind::Vulkan ? "Vulkan" : "Cpu";
+                         });
 
 }  // namespace
 }  // namespace modeflow::testing

@@ -11,7 +11,6 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <optional>
 #include <regex>
 #include <sstream>
 #include <string>
@@ -206,32 +205,11 @@ inline SceneUnderTest sceneUnderTest(const fs::path& relative, const fs::path& f
     return chosen;
 }
 
-/// The --device values of the backends, every one of which runs every grid scene.
+/// The --device values of the backends, every one of which runs every scene.
 inline std::vector<std::string> backendOptions() {
     std::vector<std::string> options;
     for (BackendKind kind : kBackends) options.emplace_back(capabilitiesOf(kind).option);
     return options;
-}
-
-/// The backends that run `scene`, and for each the refusal of the others (empty when it runs).
-struct BackendVerdict {
-    BackendKind kind;
-    std::string option;                  ///< "cpu", "vulkan"
-    std::optional<std::string> refusal;  ///< requireSupport's message
-};
-
-inline std::vector<BackendVerdict> backendVerdicts(const SceneSpec& scene) {
-    std::vector<BackendVerdict> verdicts;
-    for (BackendKind kind : kBackends) {
-        BackendVerdict v{kind, std::string(capabilitiesOf(kind).option), std::nullopt};
-        try {
-            requireSupport(scene, kind);
-        } catch (const Error& e) {
-            v.refusal = e.what();
-        }
-        verdicts.push_back(v);
-    }
-    return verdicts;
 }
 
 }  // namespace modeflow::testing

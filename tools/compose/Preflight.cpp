@@ -2,7 +2,6 @@
 
 #include <utility>
 
-#include "engine/simulation/BackendCapabilities.h"
 #include "precompute/scene/SceneLoader.h"
 #include "tools/compose/MemoryPreflight.h"
 
@@ -11,7 +10,6 @@ namespace {
 
 Preflight checkedRun(SceneSpec scene, BackendChoice backend, RunParts parts) {
     Preflight checked{std::move(backend), std::move(scene), {}};
-    requireSupport(checked.scene, checked.backend.kind);
     if (parts == RunParts::DynamicsAndSmoke)
         checked.memory = requireRunMemory(checked.scene, checked.backend.kind);
     return checked;

@@ -65,13 +65,10 @@ Command addRun(CLI::App& app) {
         const Preflight checked = preflight(opts->scene, opts->device, RunParts::DynamicsAndSmoke);
         const SceneSpec& scene = checked.scene;
         // The device is opened, and what it cannot hold refused, before the output folder is made.
-        std::optional<Backend> backend;
-        if (!scene.isSurface()) {
-            backend.emplace(checked.backend);
-            backend->requireFits(scene);
-        } else if (opts->half) {
+        if (scene.isSurface() && opts->half)
             throw Error("--half: surface scenes write PLY frames, in 32-bit floats");
-        }
+        const Backend backend(checked.backend);
+        backend.requireFits(scene);
         const int frames = opts->frames.value_or(scene.output.frames);
         // The run's length as --frames sets it: a deforming obstacle's files are read (and a
         // missing one refused) as far as the run goes.
@@ -95,7 +92,7 @@ Command addRun(CLI::App& app) {
             previews ? opts->previewEvery.value_or(std::max(1, frames / 24)) : 0,
             checked.memory,
             opts->checkpointEvery};
-        if (backend) std::cerr << backend->describe();
+        std::cerr << backend.describe();
 
         Progress progress = Progress::toStderr();
         const RunInputs run =
@@ -107,18 +104,21 @@ Command addRun(CLI::App& app) {
                                scene.isSurface() ? RunParts::Dynamics : RunParts::DynamicsAndSmoke);
                        });
         if (scene.isSurface()) {
-            SurfaceFrames surface(run, out, scene.name, id.sceneHash);
+            const std::unique_ptr<SurfaceSimulator> simulator =
+                inRunStage("setting up the simulation", checked.memory,
+                           [&] { return backend.makeSurfaceSimulator(run); });
+            SurfaceFrames surface(*simulator, run, out, scene.name, id.sceneHash);
             runFrames(surface, loop);
         } else {
             const std::unique_ptr<Simulator> simulator =
                 inRunStage("setting up the simulation", checked.memory,
-                           [&] { return backend->makeSimulator(run); });
+                           [&] { return backend.makeSimulator(run); });
             GridFrames grid(
                 *simulator, run,
-                {out, scene.name, id.sceneHash, opts->half, previews, backend->vulkanContext()});
+                {out, scene.name, id.sceneHash, opts->half, previews, backend.vulkanContext()});
             runFrames(grid, loop);
-            backend->requireCleanValidation();
         }
+        backend.requireCleanValidation();
         std::printf("%s\n", out.string().c_str());
         return 0;
     };

@@ -1,0 +1,74 @@
+#include "engine/device/SurfaceSimulation.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "engine/core/Error.h"
+#include "engine/dynamics/ModalDivergence.h"
+
+namespace modeflow::device {
+
+SurfaceSimulation::SurfaceSimulation(const vulkan::VulkanContext& context, const BasisCache& cache,
+                                     const StructuralCoefficients& coefficients,
+                                     const SimulationSettings& settings,
+                                     const Eigen::VectorXd& velocity)
+    : mSettings(settings),
+      mStepper(context, coefficients, modelOf(settings), DeviceStepSettings{settings.integrator}),
+      mDye(context, cache, settings.emitters),
+      mBefore(context, std::size_t(std::max(mStepper.size(), 1)) * sizeof(float),
+              "velocity before the step"),
+      mSequence(context) {
+    if (!(mSettings.dt > 0.0)) throw Error("simulation: dt must be positive");
+    mStepper.setVelocity(velocity);
+    mStepper.setForce(Eigen::VectorXd::Zero(mStepper.size()));
+}
+
+FrameStats SurfaceSimulation::advanceSteps(int steps) {
+    FrameStats stats;
+    const auto velocityBytes = VkDeviceSize(mStepper.size()) * sizeof(float);
+    for (int s = 0; s < steps; ++s) {
+        if (velocityBytes > 0) mSequence.copy(mStepper.stateBuffer(), mBefore, velocityBytes);
+        mStepper.recordStep(mSequence, mSettings.dt, mSchedule.substeps());
+        mDye.recordStep(mSequence, mBefore, mStepper.stateBuffer(), mTime, mSettings.dt);
+        mSequence.submitAndWait();
+        mTime += mSettings.dt;
+        ++stats.steps;
+        requireFiniteModalState(mStepper.state(), ++mStep, mTime);
+        const DeviceStepStatus status = mStepper.status();
+        stats.maxIterations = std::max(stats.maxIterations, status.iterations);
+        stats.unconvergedSteps += mSchedule.advance(status);
+        stats.substeps = std::max(stats.substeps, mSchedule.substeps());
+    }
+    return stats;
+}
+
+void SurfaceSimulation::restore(double time, const Eigen::VectorXd& velocity,
+                                const Eigen::VectorXd& dye) {
+    mDye.setState(dye);
+    mStepper.setVelocity(velocity);
+    mTime = time;
+    mStep = std::lround(time / mSettings.dt);
+    mSchedule.reset();
+}
+
+StepCarry SurfaceSimulation::carry() const {
+    return carryOf(mStepper, mSchedule);
+}
+
+void SurfaceSimulation::setCarry(const StepCarry& carry) {
+    restoreCarry(carry, mStepper, mSchedule);
+}
+
+void SurfaceSimulation::setViscosity(double viscosity) {
+    SimulationSettings changed = mSettings;
+    changed.fluid.viscosity = viscosity;
+    mStepper.setParameters(modelOf(changed));
+    mSettings = changed;
+}
+
+void SurfaceSimulation::setIntegrator(Integrator integrator) {
+    mStepper.setIntegrator(integrator);
+    mSettings.integrator = integrator;
+}
+
+}  // namespace modeflow::device

@@ -1,0 +1,54 @@
+#pragma once
+/// @file SurfaceSimulation.h
+/// A surface scene on a Vulkan device (SurfaceSimulator.h), in float32: the modal velocity
+/// advanced by the grids' ModalStepper (every integrator, viscosity, LANS-α; its substeps
+/// scheduled as for grids, SubstepSchedule.h) and the dye it carries (device::SurfaceDye), one
+/// submission a step. CPU reference: engine/surface/SurfaceSimulation.h.
+
+#include <Eigen/Core>
+
+#include "engine/device/ModalStepper.h"
+#include "engine/device/SubstepSchedule.h"
+#include "engine/device/SurfaceDye.h"
+#include "engine/simulation/SurfaceSimulator.h"
+#include "engine/vulkan/CommandSequence.h"
+#include "engine/vulkan/DeviceBuffer.h"
+
+namespace modeflow::device {
+
+class SurfaceSimulation final : public SurfaceSimulator {
+public:
+    /// Uploads the coefficients and the dye's; `context` must outlive the simulation.
+    /// @throw modeflow::Error for settings the model refuses, as SurfaceDye, or a device error.
+    SurfaceSimulation(const vulkan::VulkanContext& context, const BasisCache& cache,
+                      const StructuralCoefficients& coefficients,
+                      const SimulationSettings& settings, const Eigen::VectorXd& velocity);
+
+    FrameStats advanceSteps(int steps) override;
+    void restore(double time, const Eigen::VectorXd& velocity, const Eigen::VectorXd& dye) override;
+    StepCarry carry() const override;
+    void setCarry(const StepCarry& carry) override;
+
+    void setForce(const Eigen::VectorXd& force) override { mStepper.setForce(force); }
+    void setViscosity(double viscosity) override;
+    void setIntegrator(Integrator integrator) override;
+
+    double time() const override { return mTime; }
+    Eigen::VectorXd velocity() const override { return mStepper.velocity(); }
+    Eigen::VectorXd dye() const override { return mDye.state(); }
+
+    /// The last step's dye solve (tests).
+    SurfaceDyeStatus dyeStatus() const { return mDye.status(); }
+
+private:
+    SimulationSettings mSettings;  ///< with the user's viscosity and integrator
+    ModalStepper mStepper;
+    SurfaceDye mDye;
+    vulkan::DeviceBuffer mBefore;  ///< the velocity at the start of the step
+    vulkan::CommandSequence mSequence;
+    SubstepSchedule mSchedule;
+    double mTime = 0.0;
+    long mStep = 0;  ///< steps since t = 0, for the divergence message
+};
+
+}  // namespace modeflow::device
