@@ -11,12 +11,12 @@ namespace modeflow::shaders {
 using uint = std::uint32_t;
 #endif
 
-/* pairs[p] = sum_m A[p][m] (v0_m + v1_m) / 2 over the velocity modes m < n: the advection's rows
-   (one per scalar pair i < j, engine/core/PackedLayout.h's order), each rowFloats floats. */
+/* pairs[p] = sum_m A[p][m] (v0_m + v1_m) / 2 over the velocity modes m < n: one value per scalar
+   pair i < j (engine/core/PackedLayout.h's order), A stored by columns of columnTexels texels. */
 struct SurfaceDyePairsParams {
     uint pairCount;
     uint n;
-    uint rowFloats;
+    uint columnTexels; /* pairCount rounded up to a multiple of 4, over 4 */
     uint pad0;
 };
 

@@ -5,23 +5,28 @@
 //
 //     pairs[p] = sum_m A[p][m] (v0_m + v1_m) / 2.
 //
-// One invocation per pair; the velocity vectors are read to n only (their padding is not ours).
+// A is stored by columns, one per velocity mode, each of columnTexels texels (the pairs, zero-
+// padded to a multiple of 4) and read as texels (TexelAccess.glsl has why): invocation t sums
+// pairs 4t ... 4t + 3, so the lanes of a workgroup read consecutive texels. The velocity vectors
+// are read to n only (their padding is not ours).
 #extension GL_GOOGLE_include_directive : require
 #include "SurfaceDyeParams.h"
+#include "TexelAccess.glsl"
 
 layout(local_size_x = 64, local_size_x_id = 0) in;
 
-layout(std430, set = 0, binding = 0) readonly buffer Advection { float advection[]; };
+layout(set = 0, binding = 0) uniform usamplerBuffer advection;
 layout(std430, set = 0, binding = 1) readonly buffer Before { float before[]; };
 layout(std430, set = 0, binding = 2) readonly buffer After { float after[]; };
 layout(std430, set = 0, binding = 3) writeonly buffer Pairs { float pairs[]; };
 layout(push_constant) uniform Push { SurfaceDyePairsParams params; };
 
 void main() {
-    const uint p = gl_GlobalInvocationID.x;
-    if (p >= params.pairCount) return;
-    const uint row = p * params.rowFloats;
-    float sum = 0.0;
-    for (uint m = 0u; m < params.n; ++m) sum += advection[row + m] * (before[m] + after[m]);
-    pairs[p] = 0.5 * sum;
+    const uint t = gl_GlobalInvocationID.x;
+    if (t >= params.columnTexels) return;
+    vec4 sum = vec4(0.0);
+    for (uint m = 0u; m < params.n; ++m)
+        sum += floatTexel(advection, m * params.columnTexels + t) * (before[m] + after[m]);
+    for (uint k = 0u; k < 4u; ++k)
+        if (4u * t + k < params.pairCount) pairs[4u * t + k] = 0.5 * sum[k];
 }

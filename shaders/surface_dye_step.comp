@@ -8,9 +8,10 @@
 // keeps |f| when s = 0, as the CPU's does. One workgroup solves it: I + aK is not symmetric, but
 // (I - aK)(I + aK) = I - a^2 K^2 = I + a^2 K^T K is symmetric positive definite, so conjugate
 // gradients on these normal equations converge for any step (in at most about M/2 iterations:
-// the eigenvalues +-i s of K give the same 1 + a^2 s^2), from f, the best guess there is. The
-// vectors live in `work` (any M fits), each matrix product reads the packed pairs once, and the
-// dot products are reduced in shared memory; every branch and loop bound is uniform.
+// the eigenvalues +-i s of K give the same 1 + a^2 s^2), from f, the best guess there is. K is
+// unpacked once into `work` as a dense M x M matrix beside the iteration's vectors (any M fits),
+// read by columns in each product so that the lanes (rows) read consecutive words; the dot
+// products are reduced in shared memory; every branch and loop bound is uniform.
 #extension GL_GOOGLE_include_directive : require
 #include "SurfaceDyeParams.h"
 
@@ -19,14 +20,14 @@ layout(local_size_x = 64, local_size_x_id = 0) in;
 layout(std430, set = 0, binding = 0) readonly buffer Pairs { float pairs[]; };
 layout(std430, set = 0, binding = 1) buffer State { float state[]; };  // [mean, f_1 ... f_M]
 layout(std430, set = 0, binding = 2) readonly buffer Rate { float rate[]; };  // s, as the state
-layout(std430, set = 0, binding = 3) coherent buffer Work { float work[]; };  // 5 M floats
+layout(std430, set = 0, binding = 3) coherent buffer Work { float work[]; };  // 5 M + M^2 floats
 layout(std430, set = 0, binding = 4) writeonly buffer Status { SurfaceDyeStatus status; };
 layout(push_constant) uniform Push { SurfaceDyeStepParams params; };
 
 shared float partial[gl_WorkGroupSize.x];
 
-// The five vectors of the iteration, M floats apart in `work`.
-const uint X = 0u, R = 1u, P = 2u, T = 3u, U = 4u;
+// The five vectors of the iteration, M floats apart in `work`, then K (row-major).
+const uint X = 0u, R = 1u, P = 2u, T = 3u, U = 4u, MATRIX = 5u;
 
 uint at(uint vector, uint i) { return vector * params.m + i; }
 
@@ -50,13 +51,27 @@ float total(float value) {
     return sum;
 }
 
-// (K x)_i for the vector x at `from`: K_ij = pairs(i, j) above the diagonal, -pairs(j, i) below.
+// K_ij = pairs(i, j) above the diagonal, -pairs(j, i) below, into `work`.
+void unpack() {
+    const uint m = params.m, base = at(MATRIX, 0u);
+    for (uint i = gl_LocalInvocationID.x; i < m; i += gl_WorkGroupSize.x) {
+        work[base + i * m + i] = 0.0;
+        const uint first = i * m - i * (i + 1u) / 2u - i - 1u;  // pairIndex(m, i, j) - j
+        for (uint j = i + 1u; j < m; ++j) {
+            const float k = pairs[first + j];
+            work[base + i * m + j] = k;
+            work[base + j * m + i] = -k;
+        }
+    }
+    sync();
+}
+
+// (K x)_i for the vector x at `from`, as -(K^T x)_i = -sum_j K_ji x_j: column i of K^T is row i
+// of K read across rows, consecutive in i.
 float productRow(uint from, uint i) {
-    const uint m = params.m;
+    const uint m = params.m, base = at(MATRIX, 0u);
     float sum = 0.0;
-    for (uint j = 0u; j < i; ++j) sum -= pairs[j * m - j * (j + 1u) / 2u + (i - j - 1u)] * work[at(from, j)];
-    const uint first = i * m - i * (i + 1u) / 2u - i - 1u;  // pairIndex(m, i, j) - j
-    for (uint j = i + 1u; j < m; ++j) sum += pairs[first + j] * work[at(from, j)];
+    for (uint j = 0u; j < m; ++j) sum -= work[base + j * m + i] * work[at(from, j)];
     return sum;
 }
 
@@ -75,6 +90,7 @@ void main() {
 
     // b = f - a K f + h s (in T), then the normal equations' right-hand side c = b - a K b (in U),
     // and x = f.
+    unpack();
     for (uint i = lane; i < m; i += lanes) work[at(X, i)] = state[1u + i];
     sync();
     product(X, U);

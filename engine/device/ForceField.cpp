@@ -7,6 +7,7 @@
 #include "engine/core/Error.h"
 #include "engine/core/FaceLocation.h"
 #include "engine/device/DofFaces.h"
+#include "engine/device/SplatRecords.h"
 #include "engine/vulkan/CommandSequence.h"
 #include "engine/vulkan/VulkanContext.h"
 #include "shaders/ForceFieldParams.h"
@@ -71,20 +72,8 @@ const vulkan::ComputeKernel& ForceFieldKernel::kernel(std::uint32_t stage, bool 
 }
 
 void ForceFieldKernel::setSplats(std::span<const ForceSplat> splats) {
-    if (splats.size() > mMaxSplats)
-        throw Error("force_field: " + std::to_string(splats.size()) + " splats, room for " +
-                    std::to_string(mMaxSplats));
-    std::vector<shaders::ForceSplatRecord> records(splats.size());
-    for (std::size_t k = 0; k < splats.size(); ++k) {
-        if (!(splats[k].radius > 0.0))
-            throw Error("force_field: a splat radius must be positive, got " +
-                        std::to_string(splats[k].radius));
-        for (int a = 0; a < 3; ++a) {
-            records[k].centre[a] = float(splats[k].centre[a]);
-            records[k].force[a] = float(splats[k].force[a]);
-        }
-        records[k].radius = float(splats[k].radius);
-    }
+    const std::vector<shaders::ForceSplatRecord> records =
+        splatRecords(splats, mMaxSplats, "force_field");
     mSplats.upload<shaders::ForceSplatRecord>(records);
     mSplatCount = std::uint32_t(splats.size());
 }

@@ -28,7 +28,7 @@ public:
     /// and up to `maxSplats` splats at once.
     /// @throw modeflow::Error if scale < 1, maxSplats < 1, or a creation call fails.
     ForceFieldKernel(const vulkan::VulkanContext& context, const BasisCache& cache, int scale,
-                     std::uint32_t maxSplats = 16, std::uint32_t workgroupSize = 64);
+                     std::uint32_t maxSplats = maxForceSplats, std::uint32_t workgroupSize = 64);
 
     /// The splats of the following submissions (float32 on the device). Between submissions only.
     /// @throw modeflow::Error on more than maxSplats splats or a radius that is not positive.

@@ -34,6 +34,11 @@ int scalarModes(const BasisCache& cache) {
     return int(cache.scalar.modes.cols());
 }
 
+/// Texels of a column of the advection coefficients: the pairs, in whole texels.
+std::size_t columnTexels(int scalars) {
+    return (pairCount(std::size_t(scalars)) + 3) / 4;
+}
+
 std::size_t floatBytes(std::size_t count) {
     return std::max<std::size_t>(count, 1) * sizeof(float);
 }
@@ -45,30 +50,37 @@ SurfaceDye::SurfaceDye(const vulkan::VulkanContext& context, const BasisCache& c
     : mScalars(scalarModes(cache)),
       mModes(int(cache.surface.advection.cols())),
       mSources(cache, emitters),
-      mPairsKernel(context, {"surface_dye_pairs", surface_dye_pairs_spv, 4,
-                             sizeof(shaders::SurfaceDyePairsParams), kPairsWorkgroup}),
+      mPairsKernel(context, {"surface_dye_pairs",
+                             surface_dye_pairs_spv,
+                             4,
+                             sizeof(shaders::SurfaceDyePairsParams),
+                             kPairsWorkgroup,
+                             {},
+                             {0}}),
       mStepKernel(context, {"surface_dye_step", surface_dye_step_spv, 5,
                             sizeof(shaders::SurfaceDyeStepParams), stepWorkgroupSize(context)}),
       mPairs(context, floatBytes(pairCount(std::size_t(mScalars))), "surface dye pairs"),
       mState(context, floatBytes(std::size_t(mScalars) + 1), "surface dye"),
       mRate(context, floatBytes(std::size_t(mScalars) + 1), "surface dye rate"),
-      mWork(context, floatBytes(5 * std::size_t(mScalars)), "surface dye solve"),
+      mWork(context, floatBytes((5 + std::size_t(mScalars)) * std::size_t(mScalars)),
+            "surface dye solve"),
       mStatus(context, sizeof(shaders::SurfaceDyeStatus), "surface dye status",
               vulkan::DeviceBuffer::Placement::HostVisible) {
-    const std::size_t pairs = pairCount(std::size_t(mScalars));
-    const std::size_t groups = (pairs + kPairsWorkgroup - 1) / kPairsWorkgroup;
-    const std::size_t bytes = pairs * std::size_t(mModes) * sizeof(float);
+    const std::size_t texels = columnTexels(mScalars);
+    const std::size_t groups = (texels + kPairsWorkgroup - 1) / kPairsWorkgroup;
+    const std::size_t bytes = texels * 4 * std::size_t(mModes) * sizeof(float);
     if (groups > context.properties().limits.maxComputeWorkGroupCount[0] ||
-        bytes > context.storageBufferLimit())
+        bytes > context.texelBufferLimit())
         throw Error("surface dye: " + std::to_string(mScalars) + " scalar modes by " +
                     std::to_string(mModes) + " velocity modes (" + std::to_string(bytes) +
                     " bytes of advection coefficients) exceed the limits of " +
                     context.deviceName() + "; use fewer scalar_modes or --device cpu");
-    if (pairs > 0 && mModes > 0) {
-        // Row p of A, the pair's coefficients over the velocity modes, contiguous.
-        const Eigen::MatrixXf rows = cache.surface.advection.cast<float>().transpose();
+    if (texels > 0 && mModes > 0) {
+        // One column of the pairs' coefficients per velocity mode, zero-padded to whole texels.
+        Eigen::MatrixXf columns = Eigen::MatrixXf::Zero(Eigen::Index(4 * texels), mModes);
+        columns.topRows(cache.surface.advection.rows()) = cache.surface.advection.cast<float>();
         mAdvection.emplace(vulkan::DeviceBuffer::fromValues<float>(
-            context, std::span<const float>(rows.data(), std::size_t(rows.size())),
+            context, std::span<const float>(columns.data(), std::size_t(columns.size())),
             "surface dye advection"));
     }
     setState(Eigen::VectorXd::Zero(mScalars + 1));
@@ -81,14 +93,14 @@ void SurfaceDye::recordStep(vulkan::CommandSequence& sequence, const vulkan::Dev
         return std::vector<float>(r.begin(), r.end());
     }();
     mRate.upload<float>(rate);
-    const auto pairs = std::uint32_t(pairCount(std::size_t(mScalars)));
     if (mAdvection) {
         const std::array<const vulkan::DeviceBuffer*, 4> buffers{&*mAdvection, &before, &after,
                                                                  &mPairs};
-        sequence.dispatch(
-            mPairsKernel, buffers,
-            shaders::SurfaceDyePairsParams{pairs, std::uint32_t(mModes), std::uint32_t(mModes), 0},
-            (pairs + kPairsWorkgroup - 1) / kPairsWorkgroup);
+        const auto pairs = std::uint32_t(pairCount(std::size_t(mScalars)));
+        const auto texels = std::uint32_t(columnTexels(mScalars));
+        sequence.dispatch(mPairsKernel, buffers,
+                          shaders::SurfaceDyePairsParams{pairs, std::uint32_t(mModes), texels, 0},
+                          (texels + kPairsWorkgroup - 1) / kPairsWorkgroup);
     } else {
         sequence.fill(mPairs, mPairs.bytes(), 0);  // no motion: K = 0
     }

@@ -15,12 +15,18 @@ SurfaceSimulation::SurfaceSimulation(const vulkan::VulkanContext& context, const
     : mSettings(settings),
       mStepper(context, coefficients, modelOf(settings), DeviceStepSettings{settings.integrator}),
       mDye(context, cache, settings.emitters),
+      mForce(context, cache),
       mBefore(context, std::size_t(std::max(mStepper.size(), 1)) * sizeof(float),
               "velocity before the step"),
       mSequence(context) {
     if (!(mSettings.dt > 0.0)) throw Error("simulation: dt must be positive");
     mStepper.setVelocity(velocity);
-    mStepper.setForce(Eigen::VectorXd::Zero(mStepper.size()));
+    setSplats({});
+}
+
+void SurfaceSimulation::setSplats(std::span<const ForceSplat> splats) {
+    mForce.record(mSequence, splats, mStepper.forceBuffer());
+    mSequence.submitAndWait();
 }
 
 FrameStats SurfaceSimulation::advanceSteps(int steps) {

@@ -2,14 +2,16 @@
 /// @file SurfaceSimulation.h
 /// A surface scene on a Vulkan device (SurfaceSimulator.h), in float32: the modal velocity
 /// advanced by the grids' ModalStepper (every integrator, viscosity, LANS-α; its substeps
-/// scheduled as for grids, SubstepSchedule.h) and the dye it carries (device::SurfaceDye), one
-/// submission a step. CPU reference: engine/surface/SurfaceSimulation.h.
+/// scheduled as for grids, SubstepSchedule.h), stirred by splats (device::SurfaceForce), and the
+/// dye it carries (device::SurfaceDye), one submission a step. CPU reference:
+/// engine/surface/SurfaceSimulation.h.
 
 #include <Eigen/Core>
 
 #include "engine/device/ModalStepper.h"
 #include "engine/device/SubstepSchedule.h"
 #include "engine/device/SurfaceDye.h"
+#include "engine/device/SurfaceForce.h"
 #include "engine/simulation/SurfaceSimulator.h"
 #include "engine/vulkan/CommandSequence.h"
 #include "engine/vulkan/DeviceBuffer.h"
@@ -29,7 +31,7 @@ public:
     StepCarry carry() const override;
     void setCarry(const StepCarry& carry) override;
 
-    void setForce(const Eigen::VectorXd& force) override { mStepper.setForce(force); }
+    void setSplats(std::span<const ForceSplat> splats) override;
     void setViscosity(double viscosity) override;
     void setIntegrator(Integrator integrator) override;
 
@@ -44,6 +46,7 @@ private:
     SimulationSettings mSettings;  ///< with the user's viscosity and integrator
     ModalStepper mStepper;
     SurfaceDye mDye;
+    SurfaceForce mForce;
     vulkan::DeviceBuffer mBefore;  ///< the velocity at the start of the step
     vulkan::CommandSequence mSequence;
     SubstepSchedule mSchedule;

@@ -7,11 +7,13 @@
 /// on the CPU reference (double) and device::SurfaceSimulation on a Vulkan device (float32);
 /// `run`, `stir` and the tests drive them through this interface alone.
 
+#include <span>
 #include <vector>
 
 #include <Eigen/Core>
 
 #include "engine/format/BasisCache.h"
+#include "engine/simulation/ForceSplat.h"
 #include "engine/simulation/FrameStats.h"
 #include "engine/simulation/SimulationSettings.h"
 #include "engine/simulation/StepCarry.h"
@@ -34,9 +36,11 @@ public:
     virtual StepCarry carry() const = 0;
     virtual void setCarry(const StepCarry& carry) = 0;
 
-    /// The modal force of the following steps (N values; zero: none).
-    /// @throw modeflow::Error on a wrong size.
-    virtual void setForce(const Eigen::VectorXd& force) = 0;
+    /// The stirring splats of the following steps (none: no force), each turned into the
+    /// surface's tangent planes and projected on the velocity basis (SurfaceForce.h).
+    /// @throw modeflow::Error for more than maxForceSplats splats or a radius that is not
+    ///        positive.
+    virtual void setSplats(std::span<const ForceSplat> splats) = 0;
     /// Interactive changes between steps (`stir`). @throw modeflow::Error for a negative ν.
     virtual void setViscosity(double viscosity) = 0;
     virtual void setIntegrator(Integrator integrator) = 0;

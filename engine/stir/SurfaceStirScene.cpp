@@ -21,7 +21,6 @@ SurfaceStirScene::SurfaceStirScene(const Backend& backend, const RunInputs& run,
       mStir(settings),
       mSettings(run.settings),
       mSimulation(backend.makeSurfaceSimulator(run)),
-      mForce(run.cache),
       mView(run.cache.surface.mesh),
       mDyeScale(dyeColourScale(run.settings)),
       mPicture(context),
@@ -69,7 +68,7 @@ FrameStats SurfaceStirScene::advance(int steps, double elapsed) {
     const std::vector<ForceSplat> splats =
         mDragging ? strokeSplats(mStrokeFrom, mPointer, mStrokeTime, mSplatRadius, mStir.force)
                   : std::vector<ForceSplat>{};
-    mSimulation->setForce(mForce.project(splats));
+    mSimulation->setSplats(splats);
     const FrameStats stats = mSimulation->advanceSteps(steps);
     mStrokeFrom = mPointer;
     mStrokeTime = 0.0;

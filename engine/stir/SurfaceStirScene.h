@@ -15,7 +15,6 @@
 #include "engine/simulation/SurfaceSimulator.h"
 #include "engine/stir/StirScene.h"
 #include "engine/stir/SurfaceView.h"
-#include "engine/surface/SurfaceForce.h"
 #include "engine/vulkan/DeviceBuffer.h"
 
 namespace modeflow::stir {
@@ -60,7 +59,6 @@ private:
     StirSettings mStir;
     SimulationSettings mSettings;  ///< the run's, with the user's integrator and viscosity
     std::unique_ptr<SurfaceSimulator> mSimulation;
-    SurfaceForce mForce;
     SurfaceView mView;
     double mSplatRadius = 0.0;
     double mDyeScale = 1.0;

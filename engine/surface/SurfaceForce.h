@@ -4,7 +4,7 @@
 /// grid's stirring splats), each vertex's share turned into the vertex's tangent plane, projected
 /// on the velocity basis as f_k = ∫ g·u_k dA ≈ Σ_v ⋆0_v g(x_v)·u_k(x_v), u_k the mode's velocity
 /// at the vertices (BasisCache::Surface::vertexVelocity). As on a grid, the power the force puts
-/// in is v·f = ∫ g·u dA.
+/// in is v·f = ∫ g·u dA. The CPU reference of device::SurfaceForce.
 
 #include <span>
 #include <vector>
@@ -23,15 +23,13 @@ public:
     explicit SurfaceForce(const BasisCache& cache);
 
     /// The modal force of `splats` (zero for none).
-    /// @throw modeflow::Error for a radius that is not positive.
+    /// @throw modeflow::Error for more than maxForceSplats splats or a radius that is not
+    ///        positive.
     Eigen::VectorXd project(std::span<const ForceSplat> splats) const;
-
-    /// The unit normal at each vertex (the triangles' area-weighted normals, outwards).
-    const std::vector<Vec3>& normals() const { return mNormals; }
 
 private:
     const BasisCache& mCache;
-    std::vector<Vec3> mNormals;
+    std::vector<Vec3> mNormals;  ///< VertexNormals.h
 };
 
 }  // namespace modeflow

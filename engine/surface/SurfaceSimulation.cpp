@@ -14,7 +14,10 @@ SurfaceSimulation::SurfaceSimulation(const BasisCache& cache,
                                      const StructuralCoefficients& coefficients,
                                      const SimulationSettings& settings,
                                      const Eigen::VectorXd& velocity)
-    : mDt(settings.dt), mStepper(coefficients, settings), mDye(cache, settings.emitters) {
+    : mDt(settings.dt),
+      mStepper(coefficients, settings),
+      mDye(cache, settings.emitters),
+      mForce(cache) {
     mStepper.setVelocity(velocity);
 }
 
@@ -33,6 +36,10 @@ FrameStats SurfaceSimulation::advanceSteps(int steps) {
         if (!report.converged) ++stats.unconvergedSteps;
     }
     return stats;
+}
+
+void SurfaceSimulation::setSplats(std::span<const ForceSplat> splats) {
+    mStepper.setForce(mForce.project(splats));
 }
 
 void SurfaceSimulation::restore(double time, const Eigen::VectorXd& velocity,

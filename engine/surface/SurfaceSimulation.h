@@ -1,8 +1,9 @@
 #pragma once
 /// @file SurfaceSimulation.h
 /// A surface scene on the CPU reference (SurfaceSimulator.h): the modal velocity advanced by the
-/// CPU reference's modal stage (reference::ModalStepper) and the dye it carries (SurfaceDye), in
-/// double precision. The reference of device::SurfaceSimulation.
+/// CPU reference's modal stage (reference::ModalStepper), stirred by splats (SurfaceForce), and
+/// the dye it carries (SurfaceDye), in double precision. The reference of
+/// device::SurfaceSimulation.
 
 #include <Eigen/Core>
 
@@ -11,6 +12,7 @@
 #include "engine/simulation/SimulationSettings.h"
 #include "engine/simulation/SurfaceSimulator.h"
 #include "engine/surface/SurfaceDye.h"
+#include "engine/surface/SurfaceForce.h"
 
 namespace modeflow {
 
@@ -26,7 +28,7 @@ public:
     StepCarry carry() const override { return mStepper.carry(); }
     void setCarry(const StepCarry& carry) override { mStepper.setCarry(carry); }
 
-    void setForce(const Eigen::VectorXd& force) override { mStepper.setForce(force); }
+    void setSplats(std::span<const ForceSplat> splats) override;
     void setViscosity(double viscosity) override { mStepper.setViscosity(viscosity); }
     void setIntegrator(Integrator integrator) override { mStepper.setIntegrator(integrator); }
 
@@ -38,6 +40,7 @@ private:
     double mDt;
     reference::ModalStepper mStepper;
     SurfaceDye mDye;
+    SurfaceForce mForce;
     double mTime = 0.0;
     long mStep = 0;
 };

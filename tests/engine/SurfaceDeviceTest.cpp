@@ -1,9 +1,9 @@
 /// Surface scenes on the device (engine/device/SurfaceSimulation) against the CPU reference
 /// (engine/surface/SurfaceSimulation), with and without the validation layer: every integrator's
-/// velocity and the dye it carries agree to float32's precision; the device's dye step keeps the
-/// dye's variance (its Cayley step), its sources raise the mean at their rate, a step far past
-/// the dye's explicit limit still solves; and a run resumed from a checkpoint's state and carry
-/// gives the uninterrupted run's states bit for bit.
+/// velocity, the dye it carries and the stirring splats' force agree to float32's precision; the
+/// device's dye step keeps the dye's variance (its Cayley step), its sources raise the mean at
+/// their rate, a step far past the dye's explicit limit still solves; and a run resumed from a
+/// checkpoint's state and carry gives the uninterrupted run's states bit for bit.
 
 #include <gtest/gtest.h>
 
@@ -13,11 +13,13 @@
 
 #include "engine/core/SceneKeywords.h"
 #include "engine/device/SurfaceDye.h"
+#include "engine/device/SurfaceForce.h"
 #include "engine/device/SurfaceSimulation.h"
 #include "engine/dynamics/InitialConditions.h"
 #include "engine/dynamics/ModalDivergence.h"
 #include "engine/simulation/SurfaceSources.h"
 #include "engine/surface/SurfaceDye.h"
+#include "engine/surface/SurfaceForce.h"
 #include "engine/surface/SurfaceSimulation.h"
 #include "engine/vulkan/CommandSequence.h"
 #include "precompute/Precompute.h"
@@ -142,6 +144,49 @@ TEST_P(SurfaceDevice, DyeStepFarPastTheExplicitLimitSolves) {
     EXPECT_GT(status.iterations, 5);
     EXPECT_LT(relativeGap(gpu.state(), cpu.state()), 1e-4);
     EXPECT_GT((cpu.state() - spreadDye()).norm(), 0.5) << "a step that moves the dye";
+}
+
+TEST_P(SurfaceDevice, SplatForceFollowsTheCpuReference) {
+    const RunInputs& run = sphereRun();
+    // East on the equator, and a push along the normal at the south pole (its tangent part
+    // only counts), together.
+    const std::vector<ForceSplat> splats{{{1.0, 0.0, 0.0}, {0.0, 2.0, 0.0}, 0.3},
+                                         {{0.0, 0.0, -1.0}, {0.5, 0.0, -1.0}, 0.5}};
+    const Eigen::VectorXd reference = SurfaceForce(run.cache).project(splats);
+    device::SurfaceForce force(context(), run.cache);
+    vulkan::DeviceBuffer modal(context(), std::size_t(run.modeCount()) * sizeof(float), "f");
+    vulkan::CommandSequence sequence(context());
+    force.record(sequence, splats, modal);
+    sequence.submitAndWait();
+    std::vector<float> values(std::size_t(run.modeCount()));
+    modal.download<float>(values);
+    const Eigen::VectorXd onDevice =
+        Eigen::Map<const Eigen::VectorXf>(values.data(), run.modeCount()).cast<double>();
+    EXPECT_GT(reference.norm(), 0.1);
+    EXPECT_LT(relativeGap(onDevice, reference), 1e-5);
+    // No splats: no force.
+    force.record(sequence, {}, modal);
+    sequence.submitAndWait();
+    modal.download<float>(values);
+    for (const float f : values) EXPECT_EQ(f, 0.0f);
+    // What neither backend takes.
+    const std::vector<ForceSplat> many(maxForceSplats + 1, splats[0]);
+    const ForceSplat flat{{1.0, 0.0, 0.0}, {0.0, 1.0, 0.0}, 0.0};
+    EXPECT_THROW(force.record(sequence, many, modal), Error);
+    EXPECT_THROW(SurfaceForce(run.cache).project(many), Error);
+    EXPECT_THROW(force.record(sequence, std::span(&flat, 1), modal), Error);
+    // Stirred flows: the force held over the steps moves both backends' fluids alike.
+    SurfaceSimulation cpu(run.cache, *run.coefficients, run.settings, run.initialVelocity);
+    device::SurfaceSimulation gpu(context(), run.cache, *run.coefficients, run.settings,
+                                  run.initialVelocity);
+    cpu.setSplats(splats);
+    gpu.setSplats(splats);
+    cpu.advanceSteps(10);
+    gpu.advanceSteps(10);
+    SurfaceSimulation still(run.cache, *run.coefficients, run.settings, run.initialVelocity);
+    still.advanceSteps(10);
+    EXPECT_GT((cpu.velocity() - still.velocity()).norm(), 0.05) << "the splats stirred";
+    EXPECT_LT(relativeGap(gpu.velocity(), cpu.velocity()), 1e-5);
 }
 
 TEST_P(SurfaceDevice, ResumedRunsEqualUninterruptedOnes) {
