@@ -9,6 +9,8 @@
 
 #include <cmath>
 #include <limits>
+#include <memory>
+#include <string>
 #include <vector>
 
 #include "engine/core/SceneKeywords.h"
@@ -230,6 +232,50 @@ TEST_P(SurfaceDevice, BadStatesAndSchedulesAreRefused) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Validation, SurfaceDevice, ::testing::Bool());
+
+TEST(SurfaceDeviceMemory, StagedBuffersGiveTheSameRun) {
+    // Device-local buffers reached through staging copies, as on a discrete GPU.
+    vulkan::VulkanContextOptions options;
+    options.forceStaging = true;
+    options.validation = true;
+    const vulkan::VulkanContext staged(options);
+    const std::unique_ptr<vulkan::VulkanContext> mapped = makeVulkanContext(false);
+    ASSERT_NE(mapped, nullptr);
+    const RunInputs& run = sphereRun();
+    {
+        device::SurfaceSimulation a(staged, run.cache, *run.coefficients, run.settings,
+                                    run.initialVelocity);
+        device::SurfaceSimulation b(*mapped, run.cache, *run.coefficients, run.settings,
+                                    run.initialVelocity);
+        const std::vector<ForceSplat> splat{{{1.0, 0.0, 0.0}, {0.0, 2.0, 0.0}, 0.3}};
+        a.setSplats(splat);
+        b.setSplats(splat);
+        a.advanceSteps(6);
+        b.advanceSteps(6);
+        EXPECT_EQ(a.velocity(), b.velocity());
+        EXPECT_EQ(a.dye(), b.dye());
+    }
+    EXPECT_EQ(staged.validationMessageCount(), 0u);
+}
+
+TEST(SurfaceDeviceMemory, ADyeLargerThanTheDeviceHoldsIsRefusedNamingTheKey) {
+    // 40 scalar modes: 780 pairs (195 texels) by 20 velocity modes, 62.4 kB of coefficients.
+    vulkan::VulkanContextOptions options;
+    options.storageBufferLimit = 10'000;
+    const vulkan::VulkanContext small(options);
+    const RunInputs& run = sphereRun();
+    try {
+        const device::SurfaceDye dye(small, run.cache, run.settings.emitters);
+        ADD_FAILURE() << "62.4 kB of advection coefficients under a 10 kB limit were accepted";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("40 scalar modes by 20 velocity modes (62400 bytes"),
+                  std::string::npos)
+            << e.what();
+        EXPECT_NE(std::string(e.what()).find("use fewer scalar_modes or --device cpu"),
+                  std::string::npos)
+            << e.what();
+    }
+}
 
 }  // namespace
 }  // namespace modeflow::testing
