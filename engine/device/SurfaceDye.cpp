@@ -86,13 +86,13 @@ SurfaceDye::SurfaceDye(const vulkan::VulkanContext& context, const BasisCache& c
     setState(Eigen::VectorXd::Zero(mScalars + 1));
 }
 
+void SurfaceDye::setRate(double t) {
+    const Eigen::VectorXd rate = mSources.rateAt(t);
+    mRate.upload<float>(std::vector<float>(rate.begin(), rate.end()));
+}
+
 void SurfaceDye::recordStep(vulkan::CommandSequence& sequence, const vulkan::DeviceBuffer& before,
-                            const vulkan::DeviceBuffer& after, double t, double h) {
-    const std::vector<float> rate = [&] {
-        const Eigen::VectorXd r = mSources.rateAt(t);
-        return std::vector<float>(r.begin(), r.end());
-    }();
-    mRate.upload<float>(rate);
+                            const vulkan::DeviceBuffer& after, double h) const {
     if (mAdvection) {
         const std::array<const vulkan::DeviceBuffer*, 4> buffers{&*mAdvection, &before, &after,
                                                                  &mPairs};

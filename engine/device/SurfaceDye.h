@@ -39,11 +39,12 @@ public:
     SurfaceDye(const vulkan::VulkanContext& context, const BasisCache& cache,
                std::span<const SmokeEmitter> emitters);
 
-    /// Records one step of h from time t, the velocity going from `before` to `after` (the modal
-    /// stepper's vectors: N floats each). The sources' rate at t is written at once: one step per
-    /// submission.
+    /// The sources' rate of the next step, from time t (written at once: between submissions).
+    void setRate(double t);
+    /// Records one step of h, the velocity going from `before` to `after` (the modal stepper's
+    /// vectors: N floats each), with the rate set last: a recording that serves every step.
     void recordStep(vulkan::CommandSequence& sequence, const vulkan::DeviceBuffer& before,
-                    const vulkan::DeviceBuffer& after, double t, double h);
+                    const vulkan::DeviceBuffer& after, double h) const;
 
     /// [mean, f_1, …, f_M], between submissions. @throw modeflow::Error on a wrong size.
     Eigen::VectorXd state() const;

@@ -11,13 +11,15 @@ namespace modeflow::device {
 SurfaceSimulation::SurfaceSimulation(const vulkan::VulkanContext& context, const BasisCache& cache,
                                      const StructuralCoefficients& coefficients,
                                      const SimulationSettings& settings,
-                                     const Eigen::VectorXd& velocity)
+                                     const Eigen::VectorXd& velocity, StepRecording recording)
     : mSettings(settings),
       mStepper(context, coefficients, modelOf(settings), DeviceStepSettings{settings.integrator}),
       mDye(context, cache, settings.emitters),
       mForce(context, cache),
       mBefore(context, std::size_t(std::max(mStepper.size(), 1)) * sizeof(float),
               "velocity before the step"),
+      mRecording(recording),
+      mStepSequence(context),
       mSequence(context) {
     if (!(mSettings.dt > 0.0)) throw Error("simulation: dt must be positive");
     mStepper.setVelocity(velocity);
@@ -33,10 +35,18 @@ FrameStats SurfaceSimulation::advanceSteps(int steps) {
     FrameStats stats;
     const auto velocityBytes = VkDeviceSize(mStepper.size()) * sizeof(float);
     for (int s = 0; s < steps; ++s) {
-        if (velocityBytes > 0) mSequence.copy(mStepper.stateBuffer(), mBefore, velocityBytes);
-        mStepper.recordStep(mSequence, mSettings.dt, mSchedule.substeps());
-        mDye.recordStep(mSequence, mBefore, mStepper.stateBuffer(), mTime, mSettings.dt);
-        mSequence.submitAndWait();
+        mDye.setRate(mTime);
+        if (mStepSequence.hasKeptRecording() && mRecordedSubsteps == mSchedule.substeps()) {
+            mStepSequence.resubmit();
+        } else {
+            if (mRecording == StepRecording::Once) mStepSequence.keepNextRecording();
+            if (velocityBytes > 0)
+                mStepSequence.copy(mStepper.stateBuffer(), mBefore, velocityBytes);
+            mStepper.recordStep(mStepSequence, mSettings.dt, mSchedule.substeps());
+            mDye.recordStep(mStepSequence, mBefore, mStepper.stateBuffer(), mSettings.dt);
+            mStepSequence.submitAndWait();
+            mRecordedSubsteps = mSchedule.substeps();
+        }
         mTime += mSettings.dt;
         ++stats.steps;
         requireFiniteModalState(mStepper.state(), ++mStep, mTime);
@@ -70,11 +80,13 @@ void SurfaceSimulation::setViscosity(double viscosity) {
     changed.fluid.viscosity = viscosity;
     mStepper.setParameters(modelOf(changed));
     mSettings = changed;
+    mStepSequence.dropKeptRecording();  // the mass may change what a step records
 }
 
 void SurfaceSimulation::setIntegrator(Integrator integrator) {
     mStepper.setIntegrator(integrator);
     mSettings.integrator = integrator;
+    mStepSequence.dropKeptRecording();
 }
 
 }  // namespace modeflow::device

@@ -3,8 +3,10 @@
 /// A surface scene on a Vulkan device (SurfaceSimulator.h), in float32: the modal velocity
 /// advanced by the grids' ModalStepper (every integrator, viscosity, LANS-α; its substeps
 /// scheduled as for grids, SubstepSchedule.h), stirred by splats (device::SurfaceForce), and the
-/// dye it carries (device::SurfaceDye), one submission a step. CPU reference:
-/// engine/surface/SurfaceSimulation.h.
+/// dye it carries (device::SurfaceDye), one submission a step. A step is recorded once and
+/// resubmitted (CommandSequence::keepNextRecording) until its substeps, integrator or parameters
+/// change; the sources' rate, the one thing that changes from step to step, is a buffer. CPU
+/// reference: engine/surface/SurfaceSimulation.h.
 
 #include <Eigen/Core>
 
@@ -18,13 +20,17 @@
 
 namespace modeflow::device {
 
+/// How steps are recorded: once and resubmitted, or afresh every step (for comparisons).
+enum class StepRecording { Once, EveryStep };
+
 class SurfaceSimulation final : public SurfaceSimulator {
 public:
     /// Uploads the coefficients and the dye's; `context` must outlive the simulation.
     /// @throw modeflow::Error for settings the model refuses, as SurfaceDye, or a device error.
     SurfaceSimulation(const vulkan::VulkanContext& context, const BasisCache& cache,
                       const StructuralCoefficients& coefficients,
-                      const SimulationSettings& settings, const Eigen::VectorXd& velocity);
+                      const SimulationSettings& settings, const Eigen::VectorXd& velocity,
+                      StepRecording recording = StepRecording::Once);
 
     FrameStats advanceSteps(int steps) override;
     void restore(double time, const Eigen::VectorXd& velocity, const Eigen::VectorXd& dye) override;
@@ -48,7 +54,10 @@ private:
     SurfaceDye mDye;
     SurfaceForce mForce;
     vulkan::DeviceBuffer mBefore;  ///< the velocity at the start of the step
-    vulkan::CommandSequence mSequence;
+    StepRecording mRecording;
+    vulkan::CommandSequence mStepSequence;  ///< a step, kept (StepRecording::Once)
+    int mRecordedSubsteps = 0;              ///< the substeps of the kept step
+    vulkan::CommandSequence mSequence;      ///< the splats' force
     SubstepSchedule mSchedule;
     double mTime = 0.0;
     long mStep = 0;  ///< steps since t = 0, for the divergence message

@@ -56,11 +56,30 @@ void CommandSequence::setTiming(bool on) {
     mTimingOn = on;
 }
 
+void CommandSequence::keepNextRecording() {
+    if (mRecording) throw Error("CommandSequence: a recording under way cannot be kept");
+    mKeepNext = true;
+}
+
+void CommandSequence::dropKeptRecording() {
+    if (!mKept) return;
+    check(vkResetCommandPool(mContext.device(), mPool.get(), 0), "vkResetCommandPool");
+    mKept = false;
+}
+
+void CommandSequence::resubmit() {
+    if (!mKept || mRecording)
+        throw Error(mRecording ? "CommandSequence: resubmitted while recording"
+                               : "CommandSequence: no kept recording to resubmit");
+    submitRecorded(mKeptDispatches, mKeptTimed);
+}
+
 void CommandSequence::beginIfNeeded() {
     if (mRecording) return;
+    dropKeptRecording();
     VkCommandBufferBeginInfo begin{};
     begin.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO;
-    begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+    begin.flags = mKeepNext ? 0 : VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
     check(vkBeginCommandBuffer(mCommandBuffer, &begin), "vkBeginCommandBuffer");
     if (isTiming()) vkCmdResetQueryPool(mCommandBuffer, mQueryPool.get(), 0, 2 * mMaxTimed);
     mRecording = true;
@@ -131,12 +150,25 @@ void CommandSequence::submitAndWait() {
     mRecording = false;
     check(vkEndCommandBuffer(mCommandBuffer), "vkEndCommandBuffer");
 
+    submitRecorded(mDispatchCount, isTiming());
+    if (mKeepNext) {
+        mKept = true;
+        mKeptDispatches = mDispatchCount;
+        mKeptTimed = isTiming();
+        mKeepNext = false;
+    } else {
+        check(vkResetCommandPool(mContext.device(), mPool.get(), 0), "vkResetCommandPool");
+    }
+    mDispatchCount = 0;
+}
+
+void CommandSequence::submitRecorded(std::size_t dispatches, bool timed) {
     vulkan::submitAndWait(mContext, mCommandBuffer, mFence.get());
     const VkDevice device = mContext.device();
 
     mTimesMs.clear();
-    if (isTiming()) {
-        std::vector<std::uint64_t> ticks(2 * mDispatchCount);
+    if (timed) {
+        std::vector<std::uint64_t> ticks(2 * dispatches);
         check(vkGetQueryPoolResults(device, mQueryPool.get(), 0, std::uint32_t(ticks.size()),
                                     ticks.size() * sizeof(std::uint64_t), ticks.data(),
                                     sizeof(std::uint64_t),
@@ -145,12 +177,10 @@ void CommandSequence::submitAndWait() {
         const unsigned bits = mContext.timestampValidBits();
         const std::uint64_t mask = bits >= 64 ? ~std::uint64_t(0) : (std::uint64_t(1) << bits) - 1;
         const double msPerTick = double(mContext.properties().limits.timestampPeriod) * 1e-6;
-        for (std::size_t d = 0; d < mDispatchCount; ++d)
+        for (std::size_t d = 0; d < dispatches; ++d)
             mTimesMs.push_back(double(((ticks[2 * d + 1] & mask) - (ticks[2 * d] & mask)) & mask) *
                                msPerTick);
     }
-    check(vkResetCommandPool(device, mPool.get(), 0), "vkResetCommandPool");
-    mDispatchCount = 0;
 }
 
 }  // namespace modeflow::vulkan

@@ -4,7 +4,9 @@
 /// (every dispatch sees what the previous ones wrote), submitted once and waited on with a fence
 /// (Kompute's Sequence). With timestamps on, each dispatch is bracketed by two GPU timestamps and
 /// dispatchTimesMs() gives its duration after the submission. After submitAndWait() the sequence
-/// is empty again and can be recorded anew.
+/// is empty again and can be recorded anew; or, kept (keepNextRecording()), the recording can be
+/// submitted again and again without recording it anew (resubmit()): a step recorded once, what
+/// changes from step to step living in buffers the host writes between submissions.
 
 #include <cstddef>
 #include <cstdint>
@@ -71,6 +73,19 @@ public:
     /// @throw modeflow::Error if nothing was recorded or a call fails (e.g. VK_ERROR_DEVICE_LOST).
     void submitAndWait();
 
+    /// Keeps the next recording (from its first command to its submitAndWait()) for resubmit().
+    /// Recording anything after it drops it.
+    /// @throw modeflow::Error while a recording is under way.
+    void keepNextRecording();
+    /// Whether a kept recording is there to resubmit.
+    bool hasKeptRecording() const { return mKept; }
+    /// Submits the kept recording again and waits, as submitAndWait() does (with its dispatch
+    /// times when it was recorded timed).
+    /// @throw modeflow::Error without a kept recording, while recording, or if a call fails.
+    void resubmit();
+    /// Drops the kept recording, if any: the next commands start a new one.
+    void dropKeptRecording();
+
     /// Times the following submissions, or not. A timestamp costs lavapipe about as much as a
     /// small dispatch (timing every one made a stir step far slower: tools/README.md), so a
     /// caller that shows times a few times a second times a sample of its submissions. Between
@@ -87,6 +102,9 @@ private:
     void beginIfNeeded();
     /// The barrier after the previous dispatch, the timestamps around this one, the count.
     void recordTimed(const std::function<void()>& recordDispatch);
+    /// Submits the ended command buffer, waits, and reads the times of its first `dispatches`
+    /// dispatches when `timed`.
+    void submitRecorded(std::size_t dispatches, bool timed);
 
     const VulkanContext& mContext;
     std::uint32_t mMaxTimed;
@@ -96,6 +114,10 @@ private:
     DeviceHandle<VkQueryPool> mQueryPool;
     bool mRecording = false;
     bool mTimingOn = true;
+    bool mKeepNext = false;  ///< the recording under way (or the next) is kept
+    bool mKept = false;      ///< the command buffer holds a kept recording
+    std::size_t mKeptDispatches = 0;
+    bool mKeptTimed = false;
     std::size_t mDispatchCount = 0;
     std::vector<double> mTimesMs;
 };

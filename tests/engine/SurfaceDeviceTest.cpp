@@ -137,7 +137,8 @@ TEST_P(SurfaceDevice, DyeStepFarPastTheExplicitLimitSolves) {
     gpu.setState(spreadDye());
     cpu.setState(spreadDye());
     vulkan::CommandSequence sequence(context());
-    gpu.recordStep(sequence, before, after, 0.1, h);
+    gpu.setRate(0.1);
+    gpu.recordStep(sequence, before, after, h);
     sequence.submitAndWait();
     cpu.step(v0, v1, 0.1, h);
     const device::SurfaceDyeStatus status = gpu.status();
@@ -213,6 +214,34 @@ TEST_P(SurfaceDevice, ResumedRunsEqualUninterruptedOnes) {
         EXPECT_EQ(resumed.velocity(), whole.velocity()) << sceneKeyword(scheme);
         EXPECT_EQ(resumed.dye(), whole.dye()) << sceneKeyword(scheme);
     }
+}
+
+TEST_P(SurfaceDevice, StepsRecordedOnceGiveTheTrajectoriesOfStepsRecordedEachTime) {
+    const RunInputs& run = sphereRun();
+    const auto trajectory = [&](device::StepRecording recording) {
+        device::SurfaceSimulation gpu(context(), run.cache, *run.coefficients, run.settings,
+                                      run.initialVelocity, recording);
+        std::vector<Eigen::VectorXd> states;
+        const auto record = [&] {
+            states.push_back(gpu.velocity());
+            states.push_back(gpu.dye());
+        };
+        gpu.advanceSteps(6);  // the source still emits: its rate changes from step to step
+        record();
+        gpu.setIntegrator(Integrator::Rk4);  // what a step records changes
+        gpu.advanceSteps(5);
+        record();
+        gpu.setViscosity(0.01);
+        gpu.setIntegrator(Integrator::Linearized);
+        gpu.advanceSteps(5);
+        record();
+        gpu.setSplats(std::vector<ForceSplat>{{{1.0, 0.0, 0.0}, {0.0, 2.0, 0.0}, 0.3}});
+        gpu.advanceSteps(5);
+        record();
+        return states;
+    };
+    EXPECT_EQ(trajectory(device::StepRecording::Once),
+              trajectory(device::StepRecording::EveryStep));
 }
 
 TEST_P(SurfaceDevice, BadStatesAndSchedulesAreRefused) {

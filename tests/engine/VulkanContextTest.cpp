@@ -274,6 +274,44 @@ TEST_P(VulkanContextTest, FillSetsTheFirstWordsOfABufferOrView) {
     expectNoValidationMessages();
 }
 
+TEST_P(VulkanContextTest, KeptRecordingsResubmitWithWhatTheHostWroteSince) {
+    std::vector<float> values{1.0f, 2.0f, 3.0f, 4.0f};
+    DeviceBuffer from = DeviceBuffer::fromValues<float>(context(), values, "from");
+    DeviceBuffer to(context(), 4 * sizeof(float), "to");
+    vulkan::CommandSequence sequence(context());
+    EXPECT_THROW(sequence.resubmit(), Error) << "nothing kept yet";
+    sequence.keepNextRecording();
+    sequence.copy(from, to, 3 * sizeof(float));
+    EXPECT_THROW(sequence.keepNextRecording(), Error) << "while recording";
+    EXPECT_THROW(sequence.resubmit(), Error) << "while recording";
+    sequence.submitAndWait();
+    ASSERT_TRUE(sequence.hasKeptRecording());
+    std::vector<float> read(4);
+    to.download<float>(read);
+    EXPECT_EQ(std::vector<float>(read.begin(), read.begin() + 3),
+              std::vector<float>(values.begin(), values.begin() + 3));
+    // The step recorded once sees what the host writes between its submissions.
+    for (float step = 1.0f; step <= 3.0f; ++step) {
+        const std::vector<float> next{10.0f * step, 20.0f * step, 30.0f * step, -1.0f};
+        from.upload<float>(next);
+        sequence.resubmit();
+        to.download<float>(read);
+        EXPECT_EQ(read[0], 10.0f * step);
+        EXPECT_EQ(read[2], 30.0f * step);
+    }
+    // Recording anything new drops it; a plain recording is not kept.
+    sequence.fill(to, 4 * sizeof(float), 0u);
+    EXPECT_FALSE(sequence.hasKeptRecording());
+    sequence.submitAndWait();
+    EXPECT_FALSE(sequence.hasKeptRecording());
+    EXPECT_THROW(sequence.resubmit(), Error);
+    to.download<float>(read);
+    EXPECT_EQ(read[0], 0.0f);
+    EXPECT_THROW(sequence.copy(from, to, 5 * sizeof(float)), Error);  // past `to`
+    EXPECT_THROW(sequence.copy(from, to, 0), Error);
+    expectNoValidationMessages();
+}
+
 INSTANTIATE_TEST_SUITE_P(Vulkan, VulkanContextTest, ::testing::Bool(), testing::validationName);
 
 TEST(VulkanValidationTest, MisuseIsCountedSoZeroCountsMeanSomething) {
