@@ -53,6 +53,8 @@ FrameStats SurfaceSimulation::advanceSteps(int steps) {
         const DeviceStepStatus status = mStepper.status();
         stats.maxIterations = std::max(stats.maxIterations, status.iterations);
         stats.unconvergedSteps += mSchedule.advance(status);
+        // A dye solve that met no tolerance in its budget keeps its last iterate: counted too.
+        if (!mDye.status().converged) ++stats.unconvergedSteps;
         stats.substeps = std::max(stats.substeps, mSchedule.substeps());
     }
     return stats;

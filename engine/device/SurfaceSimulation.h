@@ -5,7 +5,8 @@
 /// scheduled as for grids, SubstepSchedule.h), stirred by splats (device::SurfaceForce), and the
 /// dye it carries (device::SurfaceDye), one submission a step. A step is recorded once and
 /// resubmitted (CommandSequence::keepNextRecording) until its substeps, integrator or parameters
-/// change; the sources' rate, the one thing that changes from step to step, is a buffer. CPU
+/// change; the sources' rate, the one thing that changes from step to step, is a buffer. A step
+/// whose dye solve met no tolerance within its budget counts as unconverged (FrameStats). CPU
 /// reference: engine/surface/SurfaceSimulation.h.
 
 #include <Eigen/Core>
