@@ -12,10 +12,11 @@ SurfaceSimulation::SurfaceSimulation(const vulkan::VulkanContext& context, const
                                      const StructuralCoefficients& coefficients,
                                      const SimulationSettings& settings,
                                      const Eigen::VectorXd& velocity, StepRecording recording)
-    : mSettings(settings),
+    : mContext(context),
+      mCache(cache),
+      mSettings(settings),
       mStepper(context, coefficients, modelOf(settings), DeviceStepSettings{settings.integrator}),
       mDye(context, cache, settings.emitters),
-      mForce(context, cache),
       mBefore(context, std::size_t(std::max(mStepper.size(), 1)) * sizeof(float),
               "velocity before the step"),
       mRecording(recording),
@@ -27,7 +28,12 @@ SurfaceSimulation::SurfaceSimulation(const vulkan::VulkanContext& context, const
 }
 
 void SurfaceSimulation::setSplats(std::span<const ForceSplat> splats) {
-    mForce.record(mSequence, splats, mStepper.forceBuffer());
+    if (splats.empty()) {
+        mSequence.fill(mStepper.forceBuffer(), VkDeviceSize(mStepper.size()) * sizeof(float), 0);
+    } else {
+        if (!mForce) mForce.emplace(mContext, mCache);
+        mForce->record(mSequence, splats, mStepper.forceBuffer());
+    }
     mSequence.submitAndWait();
 }
 

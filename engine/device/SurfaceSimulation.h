@@ -9,6 +9,8 @@
 /// whose dye solve met no tolerance within its budget counts as unconverged (FrameStats). CPU
 /// reference: engine/surface/SurfaceSimulation.h.
 
+#include <optional>
+
 #include <Eigen/Core>
 
 #include "engine/device/ModalStepper.h"
@@ -26,7 +28,7 @@ enum class StepRecording { Once, EveryStep };
 
 class SurfaceSimulation final : public SurfaceSimulator {
 public:
-    /// Uploads the coefficients and the dye's; `context` must outlive the simulation.
+    /// Uploads the coefficients and the dye's; `context` and `cache` must outlive the simulation.
     /// @throw modeflow::Error for settings the model refuses, as SurfaceDye, or a device error.
     SurfaceSimulation(const vulkan::VulkanContext& context, const BasisCache& cache,
                       const StructuralCoefficients& coefficients,
@@ -50,10 +52,13 @@ public:
     SurfaceDyeStatus dyeStatus() const { return mDye.status(); }
 
 private:
+    const vulkan::VulkanContext& mContext;
+    const BasisCache& mCache;
     SimulationSettings mSettings;  ///< with the user's viscosity and integrator
     ModalStepper mStepper;
     SurfaceDye mDye;
-    SurfaceForce mForce;
+    /// Made by the first splats (`stir`): a run never holds the modes' vertex velocities.
+    std::optional<SurfaceForce> mForce;
     vulkan::DeviceBuffer mBefore;  ///< the velocity at the start of the step
     StepRecording mRecording;
     vulkan::CommandSequence mStepSequence;  ///< a step, kept (StepRecording::Once)
