@@ -24,11 +24,8 @@
 #include "engine/surface/SurfaceForce.h"
 #include "engine/surface/SurfaceSimulation.h"
 #include "engine/vulkan/CommandSequence.h"
-#include "precompute/Precompute.h"
-#include "precompute/geometry/MeshGenerator.h"
-#include "tests/support/TestFolder.h"
+#include "tests/support/SurfaceRuns.h"
 #include "tests/support/VulkanTestContext.h"
-#include "tools/compose/RunPreparation.h"
 
 namespace modeflow::testing {
 namespace {
@@ -37,23 +34,7 @@ namespace {
 /// north pole for the first 0.3 s, a random flow of energy 0.5; once per process.
 const RunInputs& sphereRun() {
     static const RunInputs run = [] {
-        static TestFolder folder;
-        writeObj(folder / "sphere.obj", makeIcosphere(3));
-        SceneSpec scene;
-        scene.name = "sphere";
-        scene.surface = SurfaceSpec{folder / "sphere.obj"};
-        scene.basis.velocityModes = {{1, 20}};
-        scene.basis.scalarModes = 40;
-        scene.simulation.dt = 0.02;
-        scene.simulation.viscosity = 0.002;
-        SourceSpec source;
-        source.shape.center = {0.0, 0.0, 1.0};
-        source.shape.radius = 0.3;
-        source.density = 1.0;
-        source.end = 0.3;
-        scene.sources.push_back(source);
-        Progress quiet = Progress::silent();
-        RunInputs prepared = prepareRun(scene, computeBasis(scene, quiet), RunParts::Dynamics);
+        RunInputs prepared = icosphereRun({20, 40, 0.002, 0.3});
         prepared.initialVelocity = randomVelocity(prepared.modeCount(), {0, -1, 0.5, 7});
         return prepared;
     }();

@@ -14,11 +14,8 @@
 #include "engine/stir/StirApp.h"
 #include "engine/stir/SurfaceStirScene.h"
 #include "engine/surface/SurfaceForce.h"
-#include "precompute/Precompute.h"
-#include "precompute/geometry/MeshGenerator.h"
-#include "tests/support/TestFolder.h"
+#include "tests/support/SurfaceRuns.h"
 #include "tests/support/VulkanTestContext.h"
-#include "tools/compose/RunPreparation.h"
 
 namespace modeflow::testing {
 namespace {
@@ -26,27 +23,7 @@ namespace {
 /// The unit sphere (642 vertices), modes l = 1..3, a dye source at the north pole for the first
 /// 0.4 s, the fluid at rest; once per process.
 const RunInputs& sphereRun() {
-    static const RunInputs run = [] {
-        static TestFolder folder;
-        writeObj(folder / "sphere.obj", makeIcosphere(3));
-        SceneSpec scene;
-        scene.name = "sphere";
-        scene.surface = SurfaceSpec{folder / "sphere.obj"};
-        scene.basis.velocityModes = {{1, 15}};
-        scene.basis.scalarModes = 35;
-        scene.simulation.dt = 0.02;
-        scene.output.stepsPerFrame = 2;
-        SourceSpec source;
-        source.shape.center = {0.0, 0.0, 1.0};
-        source.shape.radius = 0.3;
-        source.density = 1.0;
-        source.end = 0.4;
-        scene.sources.push_back(source);
-        Progress quiet = Progress::silent();
-        RunInputs prepared = prepareRun(scene, computeBasis(scene, quiet), RunParts::Dynamics);
-        prepared.initialVelocity.setZero();
-        return prepared;
-    }();
+    static const RunInputs run = icosphereRun({});
     return run;
 }
 
