@@ -55,7 +55,7 @@ struct ObstacleMismatchParams {
     uint periodic; /* bit a: axis a is periodic (MacGrid::periodic) */
     float spacing[3];
     uint faceStart1;  /* first normal-y face */
-    int boxFirst[3];  /* the box's first cell (on a periodic axis it may wrap) */
+    int boxFirst[3];  /* the box's first cell (on the grid; along a periodic axis the box wraps) */
     uint faceStart2;  /* first normal-z face (the face total in 2D) */
     uint boxCount[9]; /* per normal axis a, positions along each axis: boxCount[3 a + b] */
     uint first;       /* the dispatch's first face of the box */

@@ -117,6 +117,25 @@ float meshDepth(ObstacleRecord o, vec3 p) {
     return sum;
 }
 
+// The same with its gradient, the trilinear interpolant's own from the same eight samples
+// (SolidLevelSet::depthAt with a gradient); 0 outside the lattice.
+float meshDepth(ObstacleRecord o, vec3 p, out vec3 gradient) {
+    gradient = vec3(0.0);
+    uvec3 i;
+    vec3 f;
+    if (!onLattice(o, p, i, f)) return -o.latticeSpacing;
+    float sum = 0.0;
+    for (uint corner = 0u; corner < 8u; ++corner) {
+        uvec3 d;
+        const vec3 w = cornerWeights(f, corner, d);
+        const vec3 slope = mix(vec3(-1.0), vec3(1.0), vec3(d)) / o.latticeSpacing;
+        const float value = latticeValue(o.latticeStart + latticeSample(o, i + d));
+        sum += w.x * w.y * w.z * value;
+        gradient += vec3(slope.x * w.y * w.z, w.x * slope.y * w.z, w.x * w.y * slope.z) * value;
+    }
+    return sum;
+}
+
 // A deforming mesh's material velocity at `p` in its own frame, mesh units per unit time
 // (SolidLevelSet::velocityAt): trilinear, 0 outside the lattice.
 vec3 meshVelocity(ObstacleRecord o, vec3 p) {
@@ -158,7 +177,8 @@ bool covers(ObstacleRecord o, vec3 r) {
 
 // Where `r` (from the centre, covered) leaves the solid, `margin` past its surface, and the
 // outward normal there, both in the world frame (engine/simulation/SolidExit.cpp): the nearest
-// surface point of a ball, box or capsule; Newton steps down a mesh's depth gradient.
+// surface point of a ball, box or capsule; Newton steps down a mesh's depth gradient (its
+// lattice cell's own: eight texel fetches a step, where central differences took 56).
 vec3 solidExit(ObstacleRecord o, vec3 r, uint dim, float margin, out vec3 normal) {
     vec3 d = intoShapeFrame(o, r);
     vec3 place = d;
@@ -168,15 +188,9 @@ vec3 solidExit(ObstacleRecord o, vec3 r, uint dim, float margin, out vec3 normal
         const float m = margin / o.scale;
         n = vec3(0.0, 0.0, 1.0);
         for (int step = 0; step < 4; ++step) {  // kMeshExitSteps
-            const float depthHere = meshDepth(o, p);
-            if (depthHere < 0.0) break;
-            const float h = 0.5 * o.latticeSpacing;
             vec3 gradient;
-            for (int a = 0; a < 3; ++a) {
-                vec3 e = vec3(0.0);
-                e[a] = h;
-                gradient[a] = (meshDepth(o, p + e) - meshDepth(o, p - e)) / (2.0 * h);
-            }
+            const float depthHere = meshDepth(o, p, gradient);
+            if (depthHere < 0.0) break;
             if (length(gradient) > 0.0) n = -normalize(gradient);
             p += n * (depthHere + m);
         }

@@ -31,6 +31,21 @@ struct SeparablePassParams {
     uint tableTexel; /* first texel of the table in the tables buffer */
     uint outRow;     /* values between the starts of two output rows (i2 -> i2 + 1) */
     uint outPlane;   /* values between the starts of two output planes (q -> q + 1) */
+    /* The window of lines and inputs the pass takes, the other inputs being 0 (a projection of
+       a field that vanishes outside a box of cells): lines i1 in [i1First, i1First + i1Count),
+       i2 in [i2First, i2First + i2Count), inputs j in [jFirst, jFirst + jCount). The lines
+       outside are not written: the next pass's window reads none of them. The whole tensor:
+       0, d1, 0, d2, 0, inLength. */
+    uint i1First;
+    uint i1Count;
+    uint i2First;
+    uint i2Count;
+    uint jFirst;
+    uint jCount;
+    /* The outputs q in [outFirst, outFirst + outCount) at least (a reconstruction needed only on
+       a box of cells; those outside may be written too). All: 0, outLength. */
+    uint outFirst;
+    uint outCount;
     uint pad0;
     uint pad1;
     uint pad2;
@@ -46,7 +61,7 @@ struct SeparableGatherParams {
 };
 
 #ifdef __cplusplus
-static_assert(sizeof(SeparablePassParams) == 48, "push constants are padded to 16 bytes");
+static_assert(sizeof(SeparablePassParams) == 80, "push constants are padded to 16 bytes");
 static_assert(sizeof(SeparableGatherParams) == 16, "push constants are padded to 16 bytes");
 }  // namespace modeflow::shaders
 #endif

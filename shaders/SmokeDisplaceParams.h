@@ -18,6 +18,9 @@ using uint = std::uint32_t;
 #define SMOKE_DISPLACE_STASH                                           \
     4u /* covered cells: a second pair's values stashed, then 0, to go \
           where the push sent the first pair's (its target words) */
+/* The cover stage's cells per invocation, consecutive in the box: on lavapipe an invocation
+   costs about 20 ns before it does anything, as much as testing a cell against a solid. */
+#define SMOKE_DISPLACE_CELLS_PER_INVOCATION 8u
 /* A target word's low byte when a covered cell has no free neighbour: its smoke is removed. */
 #define SMOKE_DISPLACE_NOWHERE 255u
 /* A free cell's target word's low byte once it is listed to receive smoke in the substep. */

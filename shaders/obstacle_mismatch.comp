@@ -39,8 +39,10 @@ void main() {
     ivec3 p = ivec3(params.boxFirst[0], params.boxFirst[1], params.boxFirst[2]) +
               ivec3(uvec3(inPlane - y * count.x, y, z));
     const uvec3 cells = uvec3(params.cells[0], params.cells[1], params.cells[2]);
+    // The box starts on the grid and is at most a grid long: one length back along periodic
+    // axes at most (a select: lavapipe runs both sides of a branch and divides lane by lane).
     for (uint a = 0u; a < 3u; ++a)
-        if ((params.periodic & (1u << a)) != 0u) p[a] = (p[a] % int(cells[a]) + int(cells[a])) % int(cells[a]);
+        p[a] -= (params.periodic & (1u << a)) != 0u && p[a] >= int(cells[a]) ? int(cells[a]) : 0;
     // A side's faces are DOFs where it is open (a jet through it); walls are none.
     const bool periodicAxis = (params.periodic & (1u << axis)) != 0u;
     uvec3 extent = cells;

@@ -9,7 +9,9 @@
 //     out[q outPlane + i2 outRow + i1] = sum_j table(q, j) in[(i2 d1 + i1) inLength + j]
 //
 // (outRow = d1, outPlane = d1 d2 for a packed tensor; a reconstruction's last pass writes the
-// face field's rows and planes, which have the walls' faces between them).
+// face field's rows and planes, which have the walls' faces between them), over the window of
+// lines and inputs the host gives (all of them, or those of a box a projected field vanishes
+// outside).
 // One invocation per line and GROUP blocks of four consecutive outputs q (grid-stride),
 // neighbouring lanes on neighbouring lines. The table is stored j-major, four outputs a texel
 // (entry (q, j) at float j * 4 blocks + q, blocks = ceil(outLength / 4), zero-padded), so one
@@ -36,25 +38,32 @@ layout(push_constant) uniform Push { SeparablePassParams params; };
 #define GROUP SEPARABLE_BLOCKS_PER_INVOCATION
 
 void main() {
-    const uint lines = params.d1 * params.d2;
+    const uint lines = params.i1Count * params.i2Count;
     const uint blocks = (params.outLength + 3u) / 4u;
-    const uint groups = (blocks + GROUP - 1u) / GROUP;
+    // The groups of 4 GROUP outputs that hold the outputs asked for.
+    const uint firstGroup = params.outFirst / (4u * GROUP);
+    const uint groups =
+        (params.outFirst + params.outCount + 4u * GROUP - 1u) / (4u * GROUP) - firstGroup;
     const uint total = lines * groups;
     const uint lastTexel = params.tableTexel + params.inLength * blocks - 1u;
     const uint stride = gl_NumWorkGroups.x * gl_WorkGroupSize.x;
     for (uint e = gl_GlobalInvocationID.x; e < total; e += stride) {
-        const uint group = quotientOf(e, lines), line = e - group * lines;  // line = i2 d1 + i1
-        const uint first = params.inOffset + line * params.inLength;
-        uint texel = params.tableTexel + GROUP * group;
+        const uint inGroups = quotientOf(e, lines), inWindow = e - inGroups * lines;
+        const uint group = firstGroup + inGroups;
+        const uint i2Local = quotientOf(inWindow, params.i1Count);
+        const uint i1 = params.i1First + inWindow - i2Local * params.i1Count;
+        const uint i2 = params.i2First + i2Local;
+        const uint first = params.inOffset + (i2 * params.d1 + i1) * params.inLength;
+        uint texel = params.tableTexel + GROUP * group + params.jFirst * blocks;
         vec4 sum[GROUP];
         [[unroll]] for (uint g = 0; g < GROUP; ++g) sum[g] = vec4(0.0);
-        for (uint j = 0; j < params.inLength; ++j, texel += blocks) {
+        const uint jEnd = params.jFirst + params.jCount;
+        for (uint j = params.jFirst; j < jEnd; ++j, texel += blocks) {
             const float v = uintBitsToFloat(texelFetch(values, int(first + j)).x);
             [[unroll]] for (uint g = 0; g < GROUP; ++g)
                 sum[g] += floatTexel(tables, min(texel + g, lastTexel)) * v;
         }
-        const uint i2 = quotientOf(line, params.d1);
-        const uint at = params.outOffset + i2 * params.outRow + (line - i2 * params.d1);
+        const uint at = params.outOffset + i2 * params.outRow + i1;
         [[unroll]] for (uint g = 0; g < GROUP; ++g)
             [[unroll]] for (uint c = 0; c < 4u; ++c) {
                 const uint q = 4u * (GROUP * group + g) + c;

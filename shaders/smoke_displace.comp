@@ -3,8 +3,8 @@
 // SmokeDisplacement.h; CPU reference engine/reference/SmokeDisplacement.cpp; host side
 // engine/device/SmokeDisplacement.cpp), the stage a specialization constant:
 //   cover:  over every cell of the box around the solids (or of a box each): which solid (the
-//           first) covers each fluid cell, cover word = stamp << 8 | solid; covered cells go to a
-//           list, once each;
+//           first) covers each fluid cell, cover word = stamp << 8 | solid; covered cells holding
+//           anything go to a list, once each;
 //   args:   one invocation: the indirect dispatch arguments of the lists' stages;
 //   push:   over the covered cells' list: each picks the free fluid neighbour most nearly along
 //           the solid's material velocity (outward where it is still), stashes its smoke and holds
@@ -42,6 +42,8 @@ layout(std430, set = 0, binding = 8) buffer Work {
 };
 layout(std430, set = 0, binding = 9) buffer Covered { uint covered[]; };
 layout(std430, set = 0, binding = 10) buffer Receivers { uint receivers[]; };
+// The other pair's fields (fire's fuel and flame beside the smoke), else the same pair again.
+layout(std430, set = 0, binding = 11) readonly buffer Other { vec2 other[]; };
 layout(push_constant) uniform Push { SmokeDisplaceParams params; };
 #include "ObstacleShape.glsl"
 
@@ -52,11 +54,14 @@ bool isCovered(uint cell) { return (cover[cell] >> 8u) == params.stamp; }
 
 ivec3 gridCells() { return ivec3(params.cells[0], params.cells[1], params.cells[2]); }
 
-// `p` moved onto the grid along periodic axes (MacGrid::wrap).
+// `p`, at most one grid length off it, moved onto the grid along periodic axes (MacGrid::wrap).
+// Selects, not %: lavapipe runs both sides of a branch and divides lane by lane.
 ivec3 wrapped(ivec3 p) {
     const ivec3 n = gridCells();
-    for (int a = 0; a < 3; ++a)
-        if ((params.periodic & (1u << uint(a))) != 0u) p[a] = ((p[a] % n[a]) + n[a]) % n[a];
+    for (int a = 0; a < 3; ++a) {
+        const bool periodic = (params.periodic & (1u << uint(a))) != 0u;
+        p[a] += periodic && p[a] < 0 ? n[a] : (periodic && p[a] >= n[a] ? -n[a] : 0);
+    }
     return p;
 }
 
@@ -94,9 +99,13 @@ void coverStage(uint cell, ivec3 p) {
             continue;
         const ObstacleRecord solid = obstacleAt(params.firstRecord + o);
         if (covers(solid, r)) {
-            // Boxes may overlap: a cell a box before covered already is listed once.
+            // Boxes may overlap: a cell a box before covered already is listed once. Only cells
+            // holding something are listed: most covered cells were emptied by earlier substeps,
+            // and pushing zeros adds nothing anywhere.
             const uint word = (params.stamp << 8u) | o;
-            if (atomicExchange(cover[cell], word) != word) covered[atomicAdd(coveredCount, 1u)] = cell;
+            if (atomicExchange(cover[cell], word) != word &&
+                (fields[cell] != vec2(0.0) || other[cell] != vec2(0.0)))
+                covered[atomicAdd(coveredCount, 1u)] = cell;
             return;
         }
     }
@@ -157,9 +166,12 @@ void gatherStage(uint cell, ivec3 p) {
     }
 }
 
+// Quotients of at most an axis's positions (quotientOf's bound).
 ivec3 positionOf(uint cell) {
-    const uint x = cell % params.cells[0], rest = cell / params.cells[0];
-    return ivec3(int(x), int(rest % params.cells[1]), int(rest / params.cells[1]));
+    const uint plane = params.cells[0] * params.cells[1];
+    const uint z = quotientOf(cell, plane), inPlane = cell - z * plane;
+    const uint y = quotientOf(inPlane, params.cells[0]);
+    return ivec3(int(inPlane - y * params.cells[0]), int(y), int(z));
 }
 
 uint groupsFor(uint count) { return min((count + 63u) / 64u, params.maxGroups); }
@@ -172,13 +184,27 @@ void main() {
         return;
     }
     if (stage == SMOKE_DISPLACE_COVER) {
-        const uint i = params.firstInvocation + gl_GlobalInvocationID.x;
-        if (i >= params.boxCells) return;
-        const uint x = i % params.boxCount[0], rest = i / params.boxCount[0];
-        const uint y = rest % params.boxCount[1], z = rest / params.boxCount[1];
-        const ivec3 p = wrapped(ivec3(params.boxFirst[0] + int(x), params.boxFirst[1] + int(y),
-                                      params.boxFirst[2] + int(z)));
-        coverStage(uint(cellAt(p)), p);  // the box lies on the grid once wrapped
+        const uint first =
+            SMOKE_DISPLACE_CELLS_PER_INVOCATION * (params.firstInvocation + gl_GlobalInvocationID.x);
+        const uint end = min(first + SMOKE_DISPLACE_CELLS_PER_INVOCATION, params.boxCells);
+        // The first cell's place in the box, then the next ones' by counting on (integer
+        // division is a loop over the lanes on lavapipe).
+        const uint plane = params.boxCount[0] * params.boxCount[1];
+        const uint z = quotientOf(first, plane), inPlane = first - z * plane;
+        const uint y = quotientOf(inPlane, params.boxCount[0]);
+        uvec3 b = uvec3(inPlane - y * params.boxCount[0], y, z);
+        const ivec3 boxFirst = ivec3(params.boxFirst[0], params.boxFirst[1], params.boxFirst[2]);
+        for (uint i = first; i < end; ++i) {
+            const ivec3 p = wrapped(boxFirst + ivec3(b));
+            coverStage(uint(cellAt(p)), p);  // the box lies on the grid once wrapped
+            if (++b.x == params.boxCount[0]) {
+                b.x = 0u;
+                if (++b.y == params.boxCount[1]) {
+                    b.y = 0u;
+                    ++b.z;
+                }
+            }
+        }
         return;
     }
     const uint stride = gl_NumWorkGroups.x * gl_WorkGroupSize.x;

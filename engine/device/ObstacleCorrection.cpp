@@ -133,7 +133,8 @@ void ObstacleCorrection::recordWith(vulkan::CommandSequence& sequence,
             faces *= std::uint64_t(count);
         }
         params.boxFaces[axis] = std::uint32_t(faces);
-        params.boxFirst[axis] = mBoxFirst[axis];
+        // Onto the grid along a periodic axis (the shader then wraps by one length at most).
+        params.boxFirst[axis] = mGrid.wrap(axis, mBoxFirst[axis]);
         total += faces;
     }
     // The DOFs the box leaves out hold 0.
@@ -164,8 +165,11 @@ void ObstacleCorrection::record(vulkan::CommandSequence& sequence,
                                 const SeparableTransformKernels& transforms,
                                 const vulkan::DeviceBuffer& faceField,
                                 const vulkan::DeviceBuffer& v) const {
-    recordWith(sequence, faceField, v,
-               [&] { transforms.recordFaceFieldProjection(sequence, mMismatch, mCorrection); });
+    // The mismatch is 0 off the box's faces: the passes take the box's lines alone.
+    const CellBox box = cellBox();
+    recordWith(sequence, faceField, v, [&] {
+        transforms.recordFaceFieldProjection(sequence, mMismatch, mCorrection, &box);
+    });
 }
 
 }  // namespace modeflow::device

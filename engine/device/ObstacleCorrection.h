@@ -15,6 +15,7 @@
 #include "engine/device/ObstacleLattices.h"
 #include "engine/format/BasisCache.h"
 #include "engine/simulation/MovingObstacle.h"
+#include "engine/simulation/SmokeDisplacement.h"
 #include "engine/vulkan/ComputeKernel.h"
 #include "engine/vulkan/DeviceBuffer.h"
 #include "engine/vulkan/KernelVariants.h"
@@ -40,6 +41,10 @@ public:
     /// @throw modeflow::Error for more than maxVelocityRegions, or a mesh obstacle without its
     ///        level set.
     void setObstacles(std::span<const MovingObstacle> obstacles, double t);
+
+    /// The cells within reach of the obstacles set (their faces are those the mismatch reads;
+    /// along periodic axes the box may wrap).
+    CellBox cellBox() const { return {mBoxFirst, mBoxCount}; }
 
     /// Records v −= Ψᵀ⋆(mismatch of `faceField`) with the basis in `modes`; nothing without
     /// obstacles.

@@ -86,6 +86,7 @@ SeparableTransformKernels::SeparableTransformKernels(const vulkan::VulkanContext
         for (int a = 0; a < 3; ++a)
             p[std::size_t(a)] = std::uint32_t(host.positionCount(normal, a));
         start += std::uint64_t(p[0]) * p[1] * p[2];
+        mPositions[std::size_t(normal)] = p;
         for (int axis = 0; axis < 3; ++axis) {
             const std::vector<double> table = host.factorTable(normal, axis);  // P × K
             const std::uint32_t rows = p[std::size_t(axis)], cols = k[std::size_t(axis)];
@@ -134,6 +135,8 @@ SeparableTransformKernels::SeparableTransformKernels(const vulkan::VulkanContext
     std::array<std::vector<float>, 2> gatherWeights{std::vector<float>(gatherIndex.size()),
                                                     std::vector<float>(gatherIndex.size())};
     const MacGrid mac = MacGrid::fromSpec(cache.grid);
+    mCells = mac.cells;
+    mPeriodic = mac.periodic;
     // Component a's DOFs are its faces off the walls in grid order (SeparableTransform checked:
     // wholeBoxFaces), x fastest as the last synthesis pass leaves them: position (x, y, z) is
     // face (x, y, z) + 1 along a walled normal axis.
@@ -197,8 +200,8 @@ SeparableTransformKernels::SeparableTransformKernels(const vulkan::VulkanContext
 void SeparableTransformKernels::recordPasses(vulkan::CommandSequence& sequence, int normal,
                                              bool synthesis, const vulkan::DeviceBuffer& in,
                                              std::uint32_t inOffset,
-                                             const vulkan::DeviceBuffer& out,
-                                             Placement placement) const {
+                                             const vulkan::DeviceBuffer& out, Placement placement,
+                                             const std::array<Range, 3>* window) const {
     const std::array<const vulkan::DeviceBuffer*, 4> chain{&in, &mScratchA, &mScratchB, &out};
     for (int axis = 0; axis < 3; ++axis) {
         const Pass& pass =
@@ -214,20 +217,69 @@ void SeparableTransformKernels::recordPasses(vulkan::CommandSequence& sequence, 
         params.tableTexel = pass.tableTexel;
         params.outRow = last && placement.row != 0 ? placement.row : pass.d1;
         params.outPlane = last && placement.plane != 0 ? placement.plane : pass.d1 * pass.d2;
+        Range i1{0, pass.d1}, i2{0, pass.d2}, j{0, pass.inLength}, q{0, pass.outLength};
+        if (window && !synthesis) {
+            // Analysis lines run along x, then y, then z, the other axes rotated into (d1, d2):
+            // (y, z) positions, then (z, x slots), then (x slots, y slots). Each pass reads only
+            // the lines the one before wrote: the window's positions.
+            const auto& w = *window;
+            j = w[std::size_t(axis)];
+            if (axis == 0) i1 = w[1], i2 = w[2];
+            if (axis == 1) i1 = w[2];
+        } else if (window) {
+            // Synthesis lines run along x, then y, then z: (y, z slots), then (z slots, x
+            // positions), then (x, y positions); each pass writes the window's positions along
+            // its axis, the next one reads only those.
+            const auto& w = *window;
+            q = w[std::size_t(axis)];
+            if (axis == 1) i2 = w[0];
+            if (axis == 2) i1 = w[0], i2 = w[1];
+        }
+        params.i1First = i1.first;
+        params.i1Count = i1.count;
+        params.i2First = i2.first;
+        params.i2Count = i2.count;
+        params.jFirst = j.first;
+        params.jCount = j.count;
+        params.outFirst = q.first;
+        params.outCount = q.count;
         const std::array<const vulkan::DeviceBuffer*, 3> buffers{&mTables, chain[std::size_t(axis)],
                                                                  chain[std::size_t(axis) + 1]};
         const std::uint64_t outputsPerInvocation = 4 * SEPARABLE_BLOCKS_PER_INVOCATION;
-        const std::uint64_t invocations =
-            std::uint64_t(pass.d1) * pass.d2 *
-            ((pass.outLength + outputsPerInvocation - 1) / outputsPerInvocation);
+        const std::uint64_t groups =
+            (std::uint64_t(q.first) + q.count + outputsPerInvocation - 1) / outputsPerInvocation -
+            q.first / outputsPerInvocation;
+        const std::uint64_t invocations = std::uint64_t(i1.count) * i2.count * groups;
+        if (invocations == 0) continue;
         sequence.dispatch(mPassKernel, buffers, params,
                           groupsFor(mContext, invocations, kWorkgroup));
     }
 }
 
+std::array<SeparableTransformKernels::Range, 3> SeparableTransformKernels::dofWindow(
+    int normal, const CellBox& cells) const {
+    std::array<Range, 3> window{};
+    for (int a = 0; a < 3; ++a) {
+        const std::uint32_t positions = mPositions[std::size_t(normal)][std::size_t(a)];
+        window[std::size_t(a)] = {0, positions};
+        if (a >= mDim) continue;
+        // Along the normal the box's faces are one more than its cells; a walled axis's DOFs
+        // start at its first inner face.
+        const int faces = cells.count[std::size_t(a)] + (a == normal ? 1 : 0);
+        const int first = cells.first[std::size_t(a)] - (a == normal && !mPeriodic[std::size_t(a)]);
+        if (mPeriodic[std::size_t(a)] && (first < 0 || first + faces > mCells[std::size_t(a)]))
+            continue;  // the box wraps: the whole axis
+        const int from = std::clamp(first, 0, int(positions));
+        const int to = std::clamp(first + faces, from, int(positions));
+        window[std::size_t(a)] = {std::uint32_t(from), std::uint32_t(to - from)};
+    }
+    return window;
+}
+
 void SeparableTransformKernels::recordReconstruction(vulkan::CommandSequence& sequence,
                                                      const vulkan::DeviceBuffer& v,
-                                                     const vulkan::DeviceBuffer& faceField) const {
+                                                     const vulkan::DeviceBuffer& faceField,
+                                                     const CellBox* needed) const {
     requireWords("separable_gather", v, mModeCount);
     requireWords("separable_pass", faceField, mFaceTotal);
     const std::uint32_t slots = std::uint32_t(mDim) * mSlotCount;
@@ -235,22 +287,31 @@ void SeparableTransformKernels::recordReconstruction(vulkan::CommandSequence& se
                                                              &mSlots};
     sequence.dispatch(mGatherKernel, scatter, shaders::SeparableGatherParams{slots, 2, 0, 0},
                       groupsFor(mContext, slots, kWorkgroup));
-    for (int normal = 0; normal < mDim; ++normal)
+    for (int normal = 0; normal < mDim; ++normal) {
+        // A component's DOF positions are its face field positions (off the walls): the same
+        // window as a projection's.
+        const std::array<Range, 3> window =
+            needed ? dofWindow(normal, *needed) : std::array<Range, 3>{};
         recordPasses(sequence, normal, true, mSlots, std::uint32_t(normal) * mSlotCount, faceField,
-                     mFacePlacement[std::size_t(normal)]);
+                     mFacePlacement[std::size_t(normal)], needed ? &window : nullptr);
+    }
 }
 
 void SeparableTransformKernels::recordAnalysis(vulkan::CommandSequence& sequence,
                                                const vulkan::DeviceBuffer& q, FaceQuantity quantity,
-                                               const vulkan::DeviceBuffer& f, int component) const {
+                                               const vulkan::DeviceBuffer& f, int component,
+                                               const CellBox* nonZero) const {
     requireWords("separable_pass", q, mDofCount);
     requireWords("separable_gather", f, mModeCount);
     // The skipped components' slots read as 0 in the gather (a fill of a few thousand words).
     if (component >= 0) sequence.fill(mSlots, VkDeviceSize(mDim) * mSlotCount * sizeof(float), 0u);
     for (int normal = 0; normal < mDim; ++normal)
-        if (component < 0 || normal == component)
+        if (component < 0 || normal == component) {
+            const std::array<Range, 3> window =
+                nonZero ? dofWindow(normal, *nonZero) : std::array<Range, 3>{};
             recordPasses(sequence, normal, false, q, mDofStart[std::size_t(normal)], mSlots,
-                         {std::uint32_t(normal) * mSlotCount});
+                         {std::uint32_t(normal) * mSlotCount}, nonZero ? &window : nullptr);
+        }
     const auto& weights = mGatherWeights[quantity == FaceQuantity::Density ? 0 : 1];
     const std::array<const vulkan::DeviceBuffer*, 4> gather{&mGatherIndex, &weights, &mSlots, &f};
     sequence.dispatch(mGatherKernel, gather,
@@ -276,8 +337,9 @@ void SeparableTransformKernels::recordComponentProjection(vulkan::CommandSequenc
 
 void SeparableTransformKernels::recordFaceFieldProjection(vulkan::CommandSequence& sequence,
                                                           const vulkan::DeviceBuffer& q,
-                                                          const vulkan::DeviceBuffer& f) const {
-    recordAnalysis(sequence, q, FaceQuantity::FaceField, f);
+                                                          const vulkan::DeviceBuffer& f,
+                                                          const CellBox* nonZero) const {
+    recordAnalysis(sequence, q, FaceQuantity::FaceField, f, -1, nonZero);
 }
 
 }  // namespace modeflow::device

@@ -17,6 +17,7 @@
 
 #include "engine/format/BasisCache.h"
 #include "engine/simulation/ProjectionWeights.h"
+#include "engine/simulation/SmokeDisplacement.h"
 #include "engine/vulkan/ComputeKernel.h"
 #include "engine/vulkan/DeviceBuffer.h"
 
@@ -36,9 +37,12 @@ public:
     SeparableTransformKernels(const vulkan::VulkanContext& context, const BasisCache& cache);
 
     /// Records faceField = the face field of Σ v_i Ψ_i (v: N floats at least; faces that are not
-    /// DOFs are not written).
+    /// DOFs are not written). With `needed`, at least the faces on the sides of its cells
+    /// (recordFaceFieldProjection's box): the passes take only the lines those need, and other
+    /// faces may keep what they held.
     void recordReconstruction(vulkan::CommandSequence& sequence, const vulkan::DeviceBuffer& v,
-                              const vulkan::DeviceBuffer& faceField) const;
+                              const vulkan::DeviceBuffer& faceField,
+                              const CellBox* needed = nullptr) const;
     /// Records f = Ψᵀ (w ∘ q): q one force density per DOF (DOF order), w = projectionWeights
     /// for FaceQuantity::Density.
     void recordProjection(vulkan::CommandSequence& sequence, const vulkan::DeviceBuffer& q,
@@ -51,8 +55,12 @@ public:
                                    int component, const vulkan::DeviceBuffer& f) const;
     /// The same for q a face field's values at the DOFs (DOF order), w for
     /// FaceQuantity::FaceField: the exact inverse of the reconstruction.
+    /// With `nonZero`, q is 0 on every face but those on the sides of its cells (first may lie
+    /// off the grid along periodic axes, where the box wraps), and the passes take only the
+    /// lines and inputs of that box (an obstacle's mismatch: a box around the solid).
     void recordFaceFieldProjection(vulkan::CommandSequence& sequence, const vulkan::DeviceBuffer& q,
-                                   const vulkan::DeviceBuffer& f) const;
+                                   const vulkan::DeviceBuffer& f,
+                                   const CellBox* nonZero = nullptr) const;
 
     std::uint32_t modeCount() const { return mModeCount; }
     std::uint32_t dofCount() const { return mDofCount; }
@@ -66,20 +74,33 @@ private:
     struct Placement {
         std::uint32_t offset = 0, row = 0, plane = 0;  ///< row, plane 0: packed
     };
-    /// Records the three passes of component `normal` (synthesis or analysis).
+    /// DOF positions [first, first + count) along one axis.
+    struct Range {
+        std::uint32_t first = 0, count = 0;
+    };
+    /// Records the three passes of component `normal` (synthesis or analysis); `window`: the DOF
+    /// positions per axis outside which an analysis's input is 0, or a synthesis's output is not
+    /// needed.
     void recordPasses(vulkan::CommandSequence& sequence, int normal, bool synthesis,
                       const vulkan::DeviceBuffer& in, std::uint32_t inOffset,
-                      const vulkan::DeviceBuffer& out, Placement placement) const;
+                      const vulkan::DeviceBuffer& out, Placement placement,
+                      const std::array<Range, 3>* window = nullptr) const;
     /// f from the DOF values in `q` (mGatherWeights[quantity]); `component` ≥ 0: that
-    /// component's DOFs alone, the others' slots zeroed.
+    /// component's DOFs alone, the others' slots zeroed; `nonZero` as recordFaceFieldProjection.
     void recordAnalysis(vulkan::CommandSequence& sequence, const vulkan::DeviceBuffer& q,
-                        FaceQuantity quantity, const vulkan::DeviceBuffer& f,
-                        int component = -1) const;
+                        FaceQuantity quantity, const vulkan::DeviceBuffer& f, int component = -1,
+                        const CellBox* nonZero = nullptr) const;
+    /// The DOF positions of component `normal` on the sides of `cells` (all of an axis the box
+    /// wraps along).
+    std::array<Range, 3> dofWindow(int normal, const CellBox& cells) const;
 
     const vulkan::VulkanContext& mContext;
     int mDim = 3;
     std::uint32_t mModeCount = 0, mDofCount = 0, mSlotCount = 0, mFaceTotal = 0;
     std::array<std::uint32_t, 3> mDofStart{0, 0, 0};
+    std::array<std::array<std::uint32_t, 3>, 3> mPositions{};  ///< [normal][axis] DOF positions
+    std::array<int, 3> mCells{1, 1, 1};
+    std::array<bool, 3> mPeriodic{false, false, false};
     std::array<Placement, 3> mFacePlacement{};  ///< each component's faces in the face field
     std::array<std::array<Pass, 3>, 3> mSynthesis{}, mAnalysis{};  ///< [normal][axis]
     vulkan::DeviceBuffer mTables;

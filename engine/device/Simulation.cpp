@@ -187,18 +187,21 @@ void Simulation::recordStep(std::vector<std::size_t>& boundaries) {
     boundaries.push_back(dispatchMark());
     mStepper.recordStep(mSequence, dt, mSchedule.substeps());
     boundaries.push_back(dispatchMark());
-    recordReconstruction();
-    boundaries.push_back(dispatchMark());
     const std::vector<MovingObstacle> regions = mSettings.velocityRegions(mTime);
     if (!regions.empty()) {
-        // Where the obstacles are at the end of the step, which the advection then sees.
+        // Where the obstacles are at the end of the step, which the advection then sees. The
+        // mismatch reads the velocity on the obstacles' box alone (a closed-form basis
+        // reconstructs only that); the corrected velocity is the step's reconstruction.
         mObstacles.setObstacles(regions, mTime + dt);
+        const CellBox box = mObstacles.cellBox();
+        recordReconstruction(&box);
         if (mSeparable)
             mObstacles.record(mSequence, *mSeparable, mFaceVelocity, mStepper.stateBuffer());
         else
             mObstacles.record(mSequence, *mModes, mFaceVelocity, mStepper.stateBuffer());
-        recordReconstruction();
     }
+    boundaries.push_back(dispatchMark());
+    recordReconstruction();
     boundaries.push_back(dispatchMark());
     if (mFlux) {
         // The substeps come from the step's velocity: read them between two submissions.
@@ -229,15 +232,16 @@ void Simulation::submitWithinStep() {
     mStepDispatches += recorded;
 }
 
-void Simulation::recordReconstruction() {
-    recordReconstruction(mStepper.stateBuffer(), mFaceVelocity);
+void Simulation::recordReconstruction(const CellBox* needed) {
+    recordReconstruction(mStepper.stateBuffer(), mFaceVelocity, needed);
     if (mWind) mWind->record(mSequence, mFaceVelocity);
 }
 
 void Simulation::recordReconstruction(const vulkan::DeviceBuffer& modal,
-                                      const vulkan::DeviceBuffer& field) const {
+                                      const vulkan::DeviceBuffer& field,
+                                      const CellBox* needed) const {
     if (mSeparable)
-        mSeparable->recordReconstruction(mSequence, modal, field);
+        mSeparable->recordReconstruction(mSequence, modal, field, needed);
     else
         mReconstruction.record(mSequence, *mModes, modal, field);
 }
@@ -262,10 +266,11 @@ FrameStats Simulation::advanceSteps(int steps) {
         const std::vector<double>& times = mStepTimesMs;
         if (times.empty()) continue;
         ++stats.timedSteps;
-        // The smoke pushed out of solids counts to the obstacles, the burn to the advection.
+        // The velocity the mismatch reads and the smoke pushed out of solids count to the
+        // obstacles, the burn to the advection.
         const std::array<double*, 8> stages{
-            &stats.forcesMs,    &stats.modalMs,     &stats.reconstructionMs, &stats.obstaclesMs,
-            &stats.advectionMs, &stats.obstaclesMs, &stats.advectionMs,      &stats.particlesMs};
+            &stats.forcesMs,    &stats.modalMs,     &stats.obstaclesMs, &stats.reconstructionMs,
+            &stats.advectionMs, &stats.obstaclesMs, &stats.advectionMs, &stats.particlesMs};
         for (std::size_t stage = 0; stage < stages.size(); ++stage)
             for (std::size_t d = boundaries[stage]; d < boundaries[stage + 1]; ++d)
                 *stages[stage] += times[d];

@@ -88,11 +88,12 @@ private:
     std::size_t dispatchMark() const;
     /// Submits what is recorded and waits, keeping its dispatch times for the step's stats.
     void submitWithinStep();
-    /// The grid velocity of the modal state.
-    void recordReconstruction();
-    /// The face field of the modal vector `modal` (v, or MHD's F) into `field`.
-    void recordReconstruction(const vulkan::DeviceBuffer& modal,
-                              const vulkan::DeviceBuffer& field) const;
+    /// The grid velocity of the modal state; `needed`: at least on the faces of those cells.
+    void recordReconstruction(const CellBox* needed = nullptr);
+    /// The face field of the modal vector `modal` (v, or MHD's F) into `field` (`needed` as
+    /// above).
+    void recordReconstruction(const vulkan::DeviceBuffer& modal, const vulkan::DeviceBuffer& field,
+                              const CellBox* needed = nullptr) const;
     bool forcesActive() const { return mSettings.buoyancy != 0.0 || mForceField.splatCount() > 0; }
 
     SimulationSettings mSettings;

@@ -45,7 +45,7 @@ SmokeDisplacement::SmokeDisplacement(const vulkan::VulkanContext& context, const
       // as values (1, 2): shaders/ObstacleShape.glsl.
       mStages(context, {"smoke_displace",
                         smoke_displace_spv,
-                        11,
+                        12,
                         sizeof(shaders::SmokeDisplaceParams),
                         kWorkgroupSize,
                         {},
@@ -90,12 +90,14 @@ void SmokeDisplacement::record(vulkan::CommandSequence& sequence, SmokeState& st
     params.dt = float(dt);
     const std::uint32_t maxGroups = mContext.properties().limits.maxComputeWorkGroupCount[0];
     params.maxGroups = maxGroups;
-    // Bindings 0-10 of shaders/smoke_displace.comp, for each pair of fields.
+    // Bindings 0-11 of shaders/smoke_displace.comp, for each pair of fields.
     const auto buffersOf = [&](SmokePair pair) {
-        return std::array<const vulkan::DeviceBuffer*, 11>{
+        const SmokePair other =
+            state.fire() && pair == SmokePair::Smoke ? SmokePair::Fuel : SmokePair::Smoke;
+        return std::array<const vulkan::DeviceBuffer*, 12>{
             &mPoses,  &mLattices.buffer(), &state.mask(),       &mCover,
             &mTarget, &state.fields(pair), &state.second(pair), &state.hat(),
-            &mWork,   &mCovered,           &mReceivers};
+            &mWork,   &mCovered,           &mReceivers,         &state.fields(other)};
     };
     const auto buffers = buffersOf(SmokePair::Smoke);
     const std::int64_t perDispatch = std::int64_t(maxGroups) * kWorkgroupSize;
@@ -112,12 +114,17 @@ void SmokeDisplacement::record(vulkan::CommandSequence& sequence, SmokeState& st
         for (const CellBox& box : boxes[std::size_t(k)]) {
             params.boxCells = std::uint32_t(box.cellCount());
             for (int a = 0; a < 3; ++a) {
-                params.boxFirst[a] = box.first[a];
+                // Onto the grid along periodic axes: the box's cells are then less than two
+                // grid lengths from its start (the shader's wrapped()).
+                params.boxFirst[a] = grid.wrap(a, box.first[a]);
                 params.boxCount[a] = std::uint32_t(box.count[a]);
             }
-            for (std::int64_t first = 0; first < box.cellCount(); first += perDispatch) {
+            const std::int64_t invocations =
+                (box.cellCount() + SMOKE_DISPLACE_CELLS_PER_INVOCATION - 1) /
+                SMOKE_DISPLACE_CELLS_PER_INVOCATION;
+            for (std::int64_t first = 0; first < invocations; first += perDispatch) {
                 params.firstInvocation = std::uint32_t(first);
-                const std::int64_t chunk = std::min(perDispatch, box.cellCount() - first);
+                const std::int64_t chunk = std::min(perDispatch, invocations - first);
                 sequence.dispatch(mStages.with({SMOKE_DISPLACE_COVER, kinds}), buffers, params,
                                   std::uint32_t((chunk + kWorkgroupSize - 1) / kWorkgroupSize));
             }

@@ -3,10 +3,10 @@
 /// Smoke pushed out of solids on the device, after each step's advection (the rule:
 /// engine/simulation/SmokeDisplacement.h; CPU reference engine/reference/SmokeDisplacement.h):
 /// per substep shaders/smoke_displace.comp covers the box around the solids, listing the covered
-/// cells; pushes from those (listing the cells receiving smoke) and gathers into those, both
-/// dispatched indirectly over their lists; with fire, the fuel pushed and gathered the same way
-/// after the smoke. The smoke's hat buffer (MacCormack's, free once the advection is done) holds
-/// what the covered cells push.
+/// cells that hold smoke; pushes from those (listing the cells receiving smoke) and gathers into
+/// those, both dispatched indirectly over their lists; with fire, the fuel pushed and gathered the
+/// same way after the smoke. The smoke's hat buffer (MacCormack's, free once the advection is done)
+/// holds what the covered cells push.
 
 #include <array>
 #include <cstdint>

@@ -12,9 +12,9 @@ struct FrameStats {
     int substeps = 1;          ///< most modal substeps a step took (the device adapts them)
     int timedSteps = 0;        ///< steps whose device times were measured (Simulation::setTiming)
     /// Device time per stage summed over the timed steps, milliseconds (0 on the CPU reference or
-    /// without timestamps): forces (force field + projection), modal step, reconstruction, moving
-    /// obstacles (their correction and the reconstruction after it, and smoke pushed out of
-    /// them), advection, particles.
+    /// without timestamps): forces (force field + projection), modal step, reconstruction (of
+    /// the velocity the smoke moves in), moving obstacles (the velocity their mismatch reads,
+    /// their correction, and smoke pushed out of them), advection, particles.
     double forcesMs = 0.0, modalMs = 0.0, reconstructionMs = 0.0, obstaclesMs = 0.0,
            advectionMs = 0.0, particlesMs = 0.0;
 };

@@ -61,15 +61,12 @@ std::pair<Vector3d, Vector3d> analyticExit(const ObstacleSpec& spec, Vector3d d,
 std::pair<Vector3d, Vector3d> meshExit(const SolidLevelSet& set, Vector3d p, double margin) {
     Vector3d normal = Vector3d::UnitZ();
     for (int step = 0; step < kMeshExitSteps; ++step) {
-        const double depth = set.depthAt(arr(p));
+        // The gradient from the depth's own samples: one lattice cell's eight a step (the device
+        // reads each sample as a texel fetch).
+        Vec3 slope;
+        const double depth = set.depthAt(arr(p), slope);
         if (depth < 0.0) break;
-        const double h = 0.5 * set.spacing;
-        Vector3d gradient;
-        for (int a = 0; a < 3; ++a) {
-            Vector3d e = Vector3d::Zero();
-            e[a] = h;
-            gradient[a] = (set.depthAt(arr(p + e)) - set.depthAt(arr(p - e))) / (2.0 * h);
-        }
+        const Vector3d gradient = vec(slope);
         // Depth grows inwards: out is down its gradient.
         if (gradient.norm() > 0.0) normal = -gradient.normalized();
         p += normal * (depth + margin);

@@ -3,8 +3,9 @@
 /// Where a point inside a solid leaves it, for particles pushed out of obstacles (both
 /// backends; the device's twin is solidExit in shaders/ObstacleShape.glsl): the nearest point of
 /// a ball's, box's or capsule's surface, and for a mesh the point its level set's gradient leads
-/// to (Newton steps on the depth, a few at most), each then `margin` further out along the
-/// outward normal, so the solid no longer covers it.
+/// to (Newton steps on the depth, a few at most; the gradient the trilinear depth's own in the
+/// lattice cell, from the same eight samples), each then `margin` further out along the outward
+/// normal, so the solid no longer covers it.
 
 #include <optional>
 

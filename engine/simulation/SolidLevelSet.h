@@ -30,6 +30,9 @@ struct SolidLevelSet {
     /// The depth at `p`, trilinear between the samples; outside the lattice −spacing (outside:
     /// the lattice reaches beyond the solid on every side).
     double depthAt(const Vec3& p) const;
+    /// The same, with the depth's gradient at `p`: the trilinear interpolant's own in the
+    /// lattice cell holding `p` (the same eight samples); 0 outside the lattice.
+    double depthAt(const Vec3& p, Vec3& gradient) const;
     /// The material's velocity at `p`, trilinear; 0 outside the lattice or when rigid.
     Vec3 velocityAt(const Vec3& p) const;
 };

@@ -21,6 +21,7 @@
 #include "engine/reference/VelocityReconstruction.h"
 #include "engine/vulkan/CommandSequence.h"
 #include "tests/support/RealBases.h"
+#include "tests/support/TestSolids.h"
 #include "tests/support/VulkanTestContext.h"
 
 namespace modeflow {
@@ -51,29 +52,6 @@ Eigen::VectorXd deviceCorrected(const vulkan::VulkanContext& context, const Basi
     return got;
 }
 
-/// A lattice of an L-shaped solid's depth (positive inside; two boxes' union, exact enough for
-/// the sign): what a mesh obstacle samples, with no mesh to read.
-std::shared_ptr<const SolidLevelSet> lShapedLattice() {
-    auto solid = std::make_shared<SolidLevelSet>();
-    solid->spacing = 0.02;
-    solid->origin = {-0.3, -0.3, -0.1};
-    solid->samples = {31, 31, 11};
-    const auto boxDepth = [](const Vec3& p, const Vec3& centre, const Vec3& half) {
-        double depth = 1e9;
-        for (int a = 0; a < 3; ++a) depth = std::min(depth, half[a] - std::abs(p[a] - centre[a]));
-        return depth;
-    };
-    for (int z = 0; z < 11; ++z)
-        for (int y = 0; y < 31; ++y)
-            for (int x = 0; x < 31; ++x) {
-                const Vec3 p{-0.3 + 0.02 * x, -0.3 + 0.02 * y, -0.1 + 0.02 * z};
-                solid->depth.push_back(
-                    float(std::max(boxDepth(p, {0.0, -0.1, 0.0}, {0.25, 0.06, 0.08}),
-                                   boxDepth(p, {-0.18, 0.05, 0.0}, {0.06, 0.2, 0.08}))));
-            }
-    return solid;
-}
-
 TEST_P(ObstacleKernelTest, CorrectionEqualsTheCpuReference) {
     // In the disk, and on the seam of the periodic channel over [0, 2] × [0, 1] (the centre at
     // x = 2.05 at t = 0.5: it covers faces at both ends).
@@ -97,7 +75,7 @@ TEST_P(ObstacleKernelTest, CorrectionEqualsTheCpuReference) {
                 if (turning)
                     spec.rotation = {{0.0, {0.0, 0.0, 1.0}, 10.0}, {1.0, {0.0, 0.0, 1.0}, 190.0}};
                 std::vector<MovingObstacle> obstacles{MovingObstacle{spec}};
-                if (shape == ObstacleShape::Mesh) obstacles[0].levelSet = lShapedLattice();
+                if (shape == ObstacleShape::Mesh) obstacles[0].levelSet = testing::lShapedLattice();
                 const Eigen::VectorXd expected =
                     v - reference::obstacleCorrection(
                             cache, reference::reconstructFaceField(cache, v), obstacles, 0.5);
@@ -122,7 +100,7 @@ TEST_P(ObstacleKernelTest, ADeformingMeshsOwnVelocityEqualsTheCpuReference) {
     const Eigen::VectorXd v =
         randomVelocity(int(cache.velocity.modes.cols()), random).cast<float>().cast<double>();
     const auto file = [](double shear, double swirl) {
-        auto set = std::make_shared<SolidLevelSet>(*lShapedLattice());
+        auto set = std::make_shared<SolidLevelSet>(*testing::lShapedLattice());
         set->velocity.resize(3 * set->depth.size());
         for (int z = 0; z < set->samples[2]; ++z)
             for (int y = 0; y < set->samples[1]; ++y)
@@ -157,7 +135,7 @@ TEST_P(ObstacleKernelTest, ADeformingMeshsOwnVelocityEqualsTheCpuReference) {
                                           obstacles, 0.5);
     // Its own velocity counts: the correction differs from the rigid one's.
     MovingObstacle rigid = obstacle;
-    rigid.sequence = {lShapedLattice(), lShapedLattice()};
+    rigid.sequence = {testing::lShapedLattice(), testing::lShapedLattice()};
     const Eigen::VectorXd rigidExpected =
         v - reference::obstacleCorrection(cache, reference::reconstructFaceField(cache, v),
                                           std::vector<MovingObstacle>{rigid}, 0.5);

@@ -14,6 +14,7 @@
 #include <gtest/gtest.h>
 
 #include "engine/core/Error.h"
+#include "engine/core/FaceLocation.h"
 #include "engine/core/MacGrid.h"
 #include "engine/device/SeparableTransform.h"
 #include "engine/reference/ForceProjection.h"
@@ -163,6 +164,93 @@ TEST_P(SeparableTransformKernelTest, AComponentsProjectionEqualsTheWholeOneOfIts
         DeviceBuffer f(context(), std::size_t(modes) * sizeof(float), "f");
         EXPECT_THROW(kernels.recordComponentProjection(sequence, field, c.cache.grid.dim, f),
                      Error);
+    }
+    expectNoValidationMessages();
+}
+
+/// Whether `face` lies on a side of a cell of `box` (wrapping along periodic axes).
+bool onBoxSide(const MacGrid& grid, const CellBox& box, std::int64_t face) {
+    const FaceLocation at = locateFace(grid, face);
+    for (int a = 0; a < grid.dim; ++a) {
+        const int n = grid.cells[a], extent = box.count[a] + (a == at.axis ? 1 : 0);
+        int offset = at.pos[a] - box.first[a];
+        if (grid.periodic[a]) offset = ((offset % n) + n) % n;
+        if (offset < 0 || offset >= extent) return false;
+    }
+    return true;
+}
+
+TEST_P(SeparableTransformKernelTest, TransformsOnABoxEqualTheWholeOnes) {
+    // An obstacle's mismatch, zero off a box, and the velocity it needs, on that box: the
+    // passes take the box's lines (and inputs, or outputs) alone. Boxes inside,
+    // against the low and the high sides, past the high side, and across periodic seams; the
+    // scratch first holds a reconstruction's values.
+    for (const Case& c : cases()) {
+        const auto modes = Eigen::Index(c.cache.velocity.separable.size());
+        const auto dofs = Eigen::Index(c.cache.faces.size());
+        const device::SeparableTransformKernels kernels(context(), c.cache);
+        const MacGrid grid = MacGrid::fromSpec(c.cache.grid);
+        const DeviceBuffer state =
+            testing::stateBuffer(context(), testing::randomVector(modes, 19));
+        DeviceBuffer field(context(), std::size_t(grid.faceTotal()) * sizeof(float), "field");
+        const int z = grid.dim == 3 ? 1 : 0;
+        const std::vector<CellBox> boxes{
+            {{2, 1, z}, {3, 4, grid.dim == 3 ? 3 : 1}},
+            {{0, 0, 0}, {2, 3, grid.dim == 3 ? 2 : 1}},
+            {{grid.cells[0] - 2, grid.cells[1] - 3, 0}, {2, 3, grid.cells[2]}},
+            {{grid.cells[0] - 1, 1, 0}, {4, 2, grid.dim == 3 ? 2 : 1}},
+            {{-2, -1, -z}, {4, 3, grid.dim == 3 ? 3 : 1}}};
+        for (std::size_t b = 0; b < boxes.size(); ++b) {
+            CellBox box = boxes[b];
+            for (int a = 0; a < 3; ++a) {
+                // A walled axis's box stays on the grid; a periodic one's wraps.
+                if (grid.periodic[a]) continue;
+                const int last = std::min(box.first[a] + box.count[a], grid.cells[a]);
+                box.first[a] = std::max(box.first[a], 0);
+                box.count[a] = std::max(last - box.first[a], 1);
+            }
+            Eigen::VectorXd q = testing::randomVector(dofs, 23 + int(b));
+            Eigen::Index inside = 0;
+            for (Eigen::Index d = 0; d < dofs; ++d) {
+                if (onBoxSide(grid, box, c.cache.faces[std::size_t(d)]))
+                    ++inside;
+                else
+                    q[d] = 0.0;
+            }
+            ASSERT_GT(inside, 0) << c.name << ", box " << b;
+            const DeviceBuffer values =
+                DeviceBuffer::fromValues<float>(context(), testing::toFloat(q), "mismatch");
+            DeviceBuffer whole(context(), std::size_t(modes) * sizeof(float), "whole");
+            DeviceBuffer windowed(context(), std::size_t(modes) * sizeof(float), "windowed");
+            CommandSequence sequence(context());
+            kernels.recordFaceFieldProjection(sequence, values, whole);
+            kernels.recordReconstruction(sequence, state, field);
+            kernels.recordFaceFieldProjection(sequence, values, windowed, &box);
+            sequence.submitAndWait();
+            const Eigen::VectorXd expected = testing::downloadFloats(whole, std::size_t(modes));
+            EXPECT_LE(testing::relativeError(testing::downloadFloats(windowed, std::size_t(modes)),
+                                             expected),
+                      1e-6)
+                << c.name << ", box " << b;
+            EXPECT_GT(expected.norm(), 0.0);
+
+            // A reconstruction needed on the box alone: its faces as the whole one's, to the bit.
+            std::vector<float> nan(std::size_t(grid.faceTotal()),
+                                   std::numeric_limits<float>::quiet_NaN());
+            DeviceBuffer part = DeviceBuffer::fromValues<float>(context(), nan, "part");
+            CommandSequence again(context());
+            kernels.recordReconstruction(again, state, field);
+            kernels.recordReconstruction(again, state, part, &box);
+            again.submitAndWait();
+            const Eigen::VectorXd all = testing::downloadFloats(field, nan.size());
+            const Eigen::VectorXd some = testing::downloadFloats(part, nan.size());
+            for (const std::int64_t face : c.cache.faces) {
+                if (onBoxSide(grid, box, face)) {
+                    EXPECT_EQ(some[face], all[face])
+                        << c.name << ", box " << b << ", face " << face;
+                }
+            }
+        }
     }
     expectNoValidationMessages();
 }

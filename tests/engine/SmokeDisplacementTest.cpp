@@ -18,6 +18,7 @@
 #include "engine/simulation/SmokeDisplacement.h"
 #include "engine/vulkan/CommandSequence.h"
 #include "tests/support/SmokeTestFields.h"
+#include "tests/support/TestSolids.h"
 #include "tests/support/ThrownMessage.h"
 #include "tests/support/VulkanTestContext.h"
 
@@ -250,9 +251,10 @@ SmokeFields randomSmoke(const MacGrid& grid, const std::vector<MovingObstacle>& 
 class SmokeDisplacementKernelTest : public testing::VulkanTest {};
 
 TEST_P(SmokeDisplacementKernelTest, DeviceEqualsTheCpuReference) {
-    // A ball and a turning box in a walled 3D box, a ball across the seam of a periodic 2D
-    // square, and two balls far apart in a 3D box (covered box by box), several substeps a step,
-    // six steps each.
+    // A ball and a turning box in a walled 3D box, a turning mesh, a box across the seams of a
+    // periodic 3D box, a ball across the seam of a periodic 2D square, and two balls far apart
+    // in a 3D box (covered box by box), several substeps a step (the device's band), six steps
+    // each.
     struct Case {
         MacGrid grid;
         std::vector<MovingObstacle> solids;
@@ -262,10 +264,25 @@ TEST_P(SmokeDisplacementKernelTest, DeviceEqualsTheCpuReference) {
     paddle.halfSize = {0.2, 0.03, 0.15};
     paddle.path = {{0.0, {0.31, 0.52, 0.47}}};
     paddle.rotation = {{0.0, {0.0, 0.0, 1.0}, 3.0}, {1.0, {0.0, 0.0, 1.0}, 723.0}};
+    // A mesh's lattice (an L) turning fast about a tilted axis while it crosses the box.
+    ObstacleSpec turning;
+    turning.shape = ObstacleShape::Mesh;
+    turning.path = {{0.0, {0.4, 0.45, 0.5}}, {1.0, {0.7, 0.55, 0.45}}};
+    turning.rotation = {{0.0, {0.3, 0.2, 1.0}, 0.0}, {1.0, {0.3, 0.2, 1.0}, 900.0}};
+    MovingObstacle mesh{turning};
+    mesh.levelSet = testing::lShapedLattice();
+    ObstacleSpec seam;
+    seam.shape = ObstacleShape::Box;
+    seam.halfSize = {0.2, 0.05, 0.1};
+    seam.path = {{0.0, {0.95, 0.9, 0.05}}, {1.0, {1.3, 1.2, -0.2}}};
+    seam.rotation = {{0.0, {0.0, 0.0, 1.0}, 0.0}, {1.0, {0.0, 0.0, 1.0}, 900.0}};
     const std::vector<Case> cases{
         {unitGrid(3, 24),
          {ball(0.17, {{0.0, {0.71, 0.33, 0.52}}, {1.0, {0.21, 0.71, 0.48}}}),
           MovingObstacle{paddle}}},
+        {unitGrid(3, 24), {mesh}},
+        // Across the periodic seams of a 3D torus, turning.
+        {unitGrid(3, 20, true), {MovingObstacle{seam}}},
         {unitGrid(2, 40, true), {ball(0.13, {{0.0, {0.83, 0.47, 0.0}}, {1.0, {2.03, 0.62, 0.0}}})}},
         // Two balls in far corners, overlapping at the end: a box each, then one.
         {unitGrid(3, 24),
@@ -303,6 +320,57 @@ TEST_P(SmokeDisplacementKernelTest, DeviceEqualsTheCpuReference) {
                              6 * dt),
                   0.0);
     }
+    expectNoValidationMessages();
+}
+
+TEST_P(SmokeDisplacementKernelTest, FuelInCellsWithoutSmokeIsPushedToo) {
+    // The device pushes only cells holding something: with fire, a cell holding fuel and no
+    // smoke must still be pushed (and one holding smoke and no fuel). Smoke in the left half of
+    // the box, fuel in the right half, a ball sweeping across both.
+    const MacGrid grid = unitGrid(3, 20);
+    const std::vector<MovingObstacle> solids{
+        ball(0.15, {{0.0, {0.2, 0.45, 0.5}}, {1.0, {0.85, 0.55, 0.5}}})};
+    const std::vector<std::uint8_t> fluid(std::size_t(grid.cellCount()), 1);
+    SmokeFields cpu = randomSmoke(grid, solids, 11);
+    cpu.fuel.assign(cpu.density.size(), 0.0);
+    for (std::int64_t c = 0; c < grid.cellCount(); ++c) {
+        const auto i = std::size_t(c);
+        if (c % grid.cells[0] >= grid.cells[0] / 2) {
+            cpu.fuel[i] = cpu.density[i] + 0.25 * cpu.temperature[i];
+            cpu.density[i] = cpu.temperature[i] = 0.0;
+        }
+    }
+    const auto floats = [](const std::vector<double>& v) {
+        return std::vector<float>(v.begin(), v.end());
+    };
+    device::SmokeState state(context(), grid, 1, fluid, true);
+    state.upload(floats(cpu.density), floats(cpu.temperature));
+    state.upload(floats(cpu.fuel), std::vector<float>(cpu.fuel.size(), 0.0f),
+                 device::SmokePair::Fuel);
+    cpu.flame.assign(cpu.fuel.size(), 0.0);
+    const double fuelBefore = total(cpu.fuel);
+    reference::SmokeDisplacement reference(grid, fluid);
+    device::SmokeDisplacement displacement(context(), state);
+    const double dt = 0.05;
+    for (int step = 0; step < 20; ++step) {
+        reference.step(solids, step * dt, dt, cpu);
+        vulkan::CommandSequence sequence(context());
+        displacement.record(sequence, state, solids, step * dt, dt);
+        sequence.submitAndWait();
+    }
+    std::vector<float> density(cpu.density.size()), temperature(density.size()),
+        fuel(density.size()), flame(density.size());
+    state.download(density, temperature);
+    state.download(fuel, flame, device::SmokePair::Fuel);
+    double worst = 0.0;
+    for (std::size_t i = 0; i < density.size(); ++i)
+        worst = std::max({worst, std::abs(density[i] - cpu.density[i]),
+                          std::abs(temperature[i] - cpu.temperature[i]),
+                          std::abs(fuel[i] - cpu.fuel[i])});
+    EXPECT_LE(worst, 1e-5);
+    EXPECT_NEAR(total(cpu.fuel), fuelBefore, 1e-9 * fuelBefore) << "the fuel is conserved";
+    EXPECT_EQ(maxCovered(grid, solids, std::vector<double>(fuel.begin(), fuel.end()), 20 * dt),
+              0.0);
     expectNoValidationMessages();
 }
 
