@@ -103,22 +103,8 @@ vec3 cornerWeights(vec3 f, uint corner, out uvec3 d) {
 }
 
 // A mesh's depth (positive inside) at `p` in its own frame: trilinear between the lattice's
-// samples, -spacing outside the lattice (SolidLevelSet::depthAt).
-float meshDepth(ObstacleRecord o, vec3 p) {
-    uvec3 i;
-    vec3 f;
-    if (!onLattice(o, p, i, f)) return -o.latticeSpacing;
-    float sum = 0.0;
-    for (uint corner = 0u; corner < 8u; ++corner) {
-        uvec3 d;
-        const vec3 w = cornerWeights(f, corner, d);
-        sum += w.x * w.y * w.z * latticeValue(o.latticeStart + latticeSample(o, i + d));
-    }
-    return sum;
-}
-
-// The same with its gradient, the trilinear interpolant's own from the same eight samples
-// (SolidLevelSet::depthAt with a gradient); 0 outside the lattice.
+// samples, -spacing outside the lattice (SolidLevelSet::depthAt); with its gradient, the
+// trilinear interpolant's own from the same eight samples, 0 outside the lattice.
 float meshDepth(ObstacleRecord o, vec3 p, out vec3 gradient) {
     gradient = vec3(0.0);
     uvec3 i;
@@ -134,6 +120,11 @@ float meshDepth(ObstacleRecord o, vec3 p, out vec3 gradient) {
         gradient += vec3(slope.x * w.y * w.z, w.x * slope.y * w.z, w.x * w.y * slope.z) * value;
     }
     return sum;
+}
+// Without the gradient (its arithmetic folds away where it is not read).
+float meshDepth(ObstacleRecord o, vec3 p) {
+    vec3 unused;
+    return meshDepth(o, p, unused);
 }
 
 // A deforming mesh's material velocity at `p` in its own frame, mesh units per unit time

@@ -68,6 +68,20 @@ Eigen::VectorXd asVector(const std::vector<double>& values) {
 
 class SeparableTransformKernelTest : public testing::VulkanTest {};
 
+/// A case's sizes, its kernels and a random modal state on the device.
+struct WithState {
+    WithState(const vulkan::VulkanContext& context, const Case& c, int seed)
+        : modes(Eigen::Index(c.cache.velocity.separable.size())),
+          dofs(Eigen::Index(c.cache.faces.size())),
+          kernels(context, c.cache),
+          grid(MacGrid::fromSpec(c.cache.grid)),
+          state(testing::stateBuffer(context, testing::randomVector(modes, seed))) {}
+    Eigen::Index modes, dofs;
+    device::SeparableTransformKernels kernels;
+    MacGrid grid;
+    DeviceBuffer state;
+};
+
 TEST_P(SeparableTransformKernelTest, ReconstructionEqualsTheCpuReference) {
     for (const Case& c : cases()) {
         const auto modes = Eigen::Index(c.cache.velocity.separable.size());
@@ -134,12 +148,8 @@ TEST_P(SeparableTransformKernelTest, AComponentsProjectionEqualsTheWholeOneOfIts
     // Buoyancy without splats: q on one component's DOFs only, the others' passes skipped and
     // their slots zeroed (a reconstruction first leaves the slots full of other values).
     for (const Case& c : cases()) {
-        const auto modes = Eigen::Index(c.cache.velocity.separable.size());
-        const auto dofs = Eigen::Index(c.cache.faces.size());
-        const device::SeparableTransformKernels kernels(context(), c.cache);
-        const MacGrid grid = MacGrid::fromSpec(c.cache.grid);
-        const DeviceBuffer state =
-            testing::stateBuffer(context(), testing::randomVector(modes, 13));
+        const WithState setup(context(), c, 13);
+        const auto& [modes, dofs, kernels, grid, state] = setup;
         DeviceBuffer field(context(), std::size_t(grid.faceTotal()) * sizeof(float), "field");
         for (int component = 0; component < c.cache.grid.dim; ++component) {
             Eigen::VectorXd q = testing::randomVector(dofs, 17 + component);
@@ -186,12 +196,8 @@ TEST_P(SeparableTransformKernelTest, TransformsOnABoxEqualTheWholeOnes) {
     // against the low and the high sides, past the high side, and across periodic seams; the
     // scratch first holds a reconstruction's values.
     for (const Case& c : cases()) {
-        const auto modes = Eigen::Index(c.cache.velocity.separable.size());
-        const auto dofs = Eigen::Index(c.cache.faces.size());
-        const device::SeparableTransformKernels kernels(context(), c.cache);
-        const MacGrid grid = MacGrid::fromSpec(c.cache.grid);
-        const DeviceBuffer state =
-            testing::stateBuffer(context(), testing::randomVector(modes, 19));
+        const WithState setup(context(), c, 19);
+        const auto& [modes, dofs, kernels, grid, state] = setup;
         DeviceBuffer field(context(), std::size_t(grid.faceTotal()) * sizeof(float), "field");
         const int z = grid.dim == 3 ? 1 : 0;
         const std::vector<CellBox> boxes{
