@@ -1,6 +1,7 @@
 /// @file FrameWriterTest.cpp
 /// FrameWriter writes a frame's files and then its checkpoint beside the simulation, one frame at
-/// a time, and what a frame's writing throws comes out of the next call.
+/// a time in frame order, up to kFramesAhead frames behind the caller, and what a frame's writing
+/// throws comes out of a later call, no frame after it written.
 
 #include <gtest/gtest.h>
 
@@ -75,18 +76,52 @@ TEST(FrameWriter, WritesOneFrameAtATimeInFrameOrder) {
     EXPECT_EQ(readCheckpoint(folder / "run.checkpoint").frame, 5);
 }
 
-TEST(FrameWriter, AFailedFrameComesOutOfTheNextCallAndKeepsTheLastGoodCheckpoint) {
+TEST(FrameWriter, TheCallerRunsUpToTwoFramesAheadOfTheFiles) {
+    const testing::TestFolder folder;
+    FrameProgress bar(0, 4, 1);
+    FrameWriter writer(folder / "run.checkpoint", bar);
+    std::promise<void> release;
+    std::shared_future<void> released = release.get_future().share();
+    std::vector<int> written;
+    const auto write = [&](const Checkpoint& state, FrameProgress&) {
+        released.wait();
+        written.push_back(state.frame);
+    };
+    // Frame 1 is being written and frame 2 waits: both handed over at once.
+    writer.start(frameOutput(1, write));
+    writer.start(frameOutput(2, write));
+    ASSERT_EQ(FrameWriter::kFramesAhead, 2);
+    // A third waits for frame 1's files.
+    std::future<void> third =
+        std::async(std::launch::async, [&] { writer.start(frameOutput(3, write)); });
+    EXPECT_EQ(third.wait_for(std::chrono::milliseconds(100)), std::future_status::timeout);
+    release.set_value();
+    third.get();
+    writer.start(frameOutput(4, write));
+    writer.finish();
+    EXPECT_EQ(written, (std::vector<int>{1, 2, 3, 4}));
+    EXPECT_EQ(readCheckpoint(folder / "run.checkpoint").frame, 4);
+}
+
+TEST(FrameWriter, AFailedFrameComesOutOfALaterCallAndNoFrameAfterItIsWritten) {
     const testing::TestFolder folder;
     const std::filesystem::path checkpoint = folder / "run.checkpoint";
     FrameProgress bar(0, 3, 1);
     FrameWriter writer(checkpoint, bar);
     const auto fine = [](const Checkpoint&, FrameProgress&) {};
+    bool thirdWritten = false;
     writer.start(frameOutput(1, fine));
     writer.start(frameOutput(2, [](const Checkpoint&, FrameProgress&) {
         throw Error("cannot write VDB frame f_0002.vdb: No space left on device");
     }));
-    EXPECT_EQ(testing::thrownMessage([&] { writer.start(frameOutput(3, fine)); }),
+    // The error comes out of start(3) if frame 2 failed before it, else out of finish().
+    EXPECT_EQ(testing::thrownMessage([&] {
+                  writer.start(frameOutput(
+                      3, [&](const Checkpoint&, FrameProgress&) { thirdWritten = true; }));
+                  writer.finish();
+              }),
               "cannot write VDB frame f_0002.vdb: No space left on device");
+    EXPECT_FALSE(thirdWritten);
     // Frame 2's checkpoint was never written: a resumed run starts after frame 1.
     EXPECT_EQ(readCheckpoint(checkpoint).frame, 1);
 
