@@ -49,7 +49,8 @@ std::vector<double> widened(const std::vector<float>& values) {
 
 Simulation::Simulation(const vulkan::VulkanContext& context, const BasisCache& cache,
                        const StructuralCoefficients& coefficients, SimulationSettings settings,
-                       std::span<const std::uint8_t> smokeMask, bool timestamps)
+                       std::span<const std::uint8_t> smokeMask, bool timestamps,
+                       StepRecording recording)
     : mSettings(supported(withWindTransport(std::move(settings), cache))),
       mModes(cache.velocity.source == BasisSource::ClosedForm
                  ? nullptr
@@ -74,7 +75,11 @@ Simulation::Simulation(const vulkan::VulkanContext& context, const BasisCache& c
       mAdvection(context),
       mDisplacement(context, mSmoke),
       mParticles(context, mSmoke, smokeMask, mSettings.particles, mSettings.shotEnd),
-      mSequence(context, timestamps, maxDispatchesPerStep(mStepper, mSmoke, mSettings.advection)) {
+      mSequence(context, timestamps, maxDispatchesPerStep(mStepper, mSmoke, mSettings.advection)),
+      mStepRecording(recording) {
+    for (std::unique_ptr<KeptStep>& kept : mKept)
+        kept = std::make_unique<KeptStep>(
+            context, timestamps, maxDispatchesPerStep(mStepper, mSmoke, mSettings.advection));
     if (!(mSettings.dt > 0.0)) throw Error("simulation: dt must be positive");
     if (mSettings.stepsPerFrame < 1) throw Error("simulation: steps per frame must be at least 1");
     requireDisplaceableMotion(mSettings.obstacles, mSettings.dt, mSmoke.smokeGrid());
@@ -103,6 +108,7 @@ void Simulation::restore(double time, const Eigen::VectorXd& v, const SmokeField
     mSmoke.upload(narrowed(smoke.density), narrowed(smoke.temperature));
     if (mSmoke.fire()) mSmoke.upload(narrowed(smoke.fuel), narrowed(smoke.flame), SmokePair::Fuel);
     mParticles.restore({});
+    dropKeptSteps();
     mTime = time;
     mStep = std::lround(time / mSettings.dt);
     mSchedule.reset();
@@ -117,6 +123,7 @@ void Simulation::setCarry(const StepCarry& carry) {
 }
 
 void Simulation::setSplats(std::span<const ForceSplat> splats) {
+    dropKeptSteps();  // the force stage records the splats' count
     mForceField.setSplats(splats);
     // Without forces the step reads the force buffer as it is: make it zero.
     if (!forcesActive()) mStepper.setForce(Eigen::VectorXd::Zero(mStepper.size()));
@@ -127,11 +134,13 @@ void Simulation::setObstacles(std::vector<MovingObstacle> obstacles) {
         throw Error("simulation: " + std::to_string(obstacles.size()) + " obstacles, at most " +
                     std::to_string(maxObstacles) + " move at once");
     requireDisplaceableMotion(obstacles, mSettings.dt, mSmoke.smokeGrid());
+    dropKeptSteps();
     mSettings.obstacles = std::move(obstacles);
 }
 
 void Simulation::setEmitters(std::vector<SmokeEmitter> emitters) {
     requireEmitterCount(emitters);
+    dropKeptSteps();
     mSettings.emitters = std::move(emitters);
     // A list no step can match: the next one uploads the new emitters.
     mActiveEmitters.assign(mSettings.emitters.size() + 1, false);
@@ -143,16 +152,24 @@ void Simulation::setViscosity(double viscosity) {
     SimulationSettings settings = mSettings;
     settings.fluid = fluid;
     mStepper.setParameters(modelOf(settings));
+    dropKeptSteps();
     mSettings.fluid = std::move(fluid);
 }
 
 void Simulation::setIntegrator(Integrator integrator) {
     mStepper.setIntegrator(integrator);
+    dropKeptSteps();
     mSettings.integrator = integrator;
 }
 
-void Simulation::recordStep(std::vector<std::size_t>& boundaries) {
-    const double dt = mSettings.dt;
+void Simulation::setTiming(bool on) {
+    // A kept step writes timestamps or not as it was recorded.
+    if (on != mSequence.isTiming()) dropKeptSteps();
+    mSequence.setTiming(on);
+    for (const std::unique_ptr<KeptStep>& kept : mKept) kept->sequence.setTiming(on);
+}
+
+bool Simulation::prepareStep() {
     // Emitters switch on and off at step boundaries; the device list changes only when they do,
     // or when an active one moves.
     std::vector<bool> active(mSettings.emitters.size());
@@ -161,12 +178,28 @@ void Simulation::recordStep(std::vector<std::size_t>& boundaries) {
         active[e] = mSettings.emitters[e].activeAt(mTime);
         moving = moving || (active[e] && mSettings.emitters[e].moves());
     }
+    bool same = true;
     if (active != mActiveEmitters || moving) {
         mSmoke.setEmitters(activeEmitters(mSettings.emitters, mTime));
         mActiveEmitters = std::move(active);
+        same = false;
     }
-    if (mActiveInflows.changes(mSettings.inflows, mTime))
+    if (mActiveInflows.changes(mSettings.inflows, mTime)) {
         mSmoke.setInflows(activeInflows(mSettings.inflows, mTime));
+        same = false;
+    }
+    // Solids, jets and particles record where they are and how many there are, and conservative
+    // smoke its substeps read mid-step: those steps are recorded afresh.
+    return same && !mFlux && mSettings.obstacles.empty() && mParticles.empty() &&
+           mSettings.velocityRegions(mTime).empty();
+}
+
+void Simulation::dropKeptSteps() {
+    for (const std::unique_ptr<KeptStep>& kept : mKept) kept->sequence.dropKeptRecording();
+}
+
+void Simulation::recordStep(std::vector<std::size_t>& boundaries) {
+    const double dt = mSettings.dt;
     boundaries.push_back(dispatchMark());
     if (forcesActive()) {
         // Without solid smoke cells the mask leaves every weight as it is: skip its loads.
@@ -174,18 +207,19 @@ void Simulation::recordStep(std::vector<std::size_t>& boundaries) {
         // Buoyancy alone acts on the up faces only: the other components' passes would
         // transform zeros, so they are not recorded and those DOFs of g not written.
         const bool upOnly = mSeparable && mForceField.splatCount() == 0;
-        mForceField.record(mSequence, mSettings.buoyancy, mSmoke.temperature(),
+        mForceField.record((*mRecordingInto), mSettings.buoyancy, mSmoke.temperature(),
                            solidCells ? &mSmoke.mask() : nullptr, mForceDensity, upOnly);
         if (upOnly)
-            mSeparable->recordComponentProjection(
-                mSequence, mForceDensity, upAxis(mReconstruction.grid()), mStepper.forceBuffer());
+            mSeparable->recordComponentProjection((*mRecordingInto), mForceDensity,
+                                                  upAxis(mReconstruction.grid()),
+                                                  mStepper.forceBuffer());
         else if (mSeparable)
-            mSeparable->recordProjection(mSequence, mForceDensity, mStepper.forceBuffer());
+            mSeparable->recordProjection((*mRecordingInto), mForceDensity, mStepper.forceBuffer());
         else
-            mProjection.record(mSequence, *mModes, mForceDensity, mStepper.forceBuffer());
+            mProjection.record((*mRecordingInto), *mModes, mForceDensity, mStepper.forceBuffer());
     }
     boundaries.push_back(dispatchMark());
-    mStepper.recordStep(mSequence, dt, mSchedule.substeps());
+    mStepper.recordStep((*mRecordingInto), dt, mSchedule.substeps());
     boundaries.push_back(dispatchMark());
     const std::vector<MovingObstacle> regions = mSettings.velocityRegions(mTime);
     if (!regions.empty()) {
@@ -196,54 +230,55 @@ void Simulation::recordStep(std::vector<std::size_t>& boundaries) {
         const CellBox box = mObstacles.cellBox();
         recordReconstruction(&box);
         if (mSeparable)
-            mObstacles.record(mSequence, *mSeparable, mFaceVelocity, mStepper.stateBuffer());
+            mObstacles.record((*mRecordingInto), *mSeparable, mFaceVelocity,
+                              mStepper.stateBuffer());
         else
-            mObstacles.record(mSequence, *mModes, mFaceVelocity, mStepper.stateBuffer());
+            mObstacles.record((*mRecordingInto), *mModes, mFaceVelocity, mStepper.stateBuffer());
     }
     boundaries.push_back(dispatchMark());
     recordReconstruction();
     boundaries.push_back(dispatchMark());
     if (mFlux) {
         // The substeps come from the step's velocity: read them between two submissions.
-        mFlux->recordCourant(mSequence, mAdvection, mSmoke, mFaceVelocity, dt);
+        mFlux->recordCourant((*mRecordingInto), mAdvection, mSmoke, mFaceVelocity, dt);
         submitWithinStep();
-        mFlux->record(mSequence, mSmoke, dt, mFlux->substeps());
+        mFlux->record((*mRecordingInto), mSmoke, dt, mFlux->substeps());
     } else {
-        mAdvection.record(mSequence, mSmoke, mFaceVelocity, dt, mSettings.advection);
+        mAdvection.record((*mRecordingInto), mSmoke, mFaceVelocity, dt, mSettings.advection);
     }
     boundaries.push_back(dispatchMark());
-    mDisplacement.record(mSequence, mSmoke, mSettings.obstacles, mTime, dt);
+    mDisplacement.record((*mRecordingInto), mSmoke, mSettings.obstacles, mTime, dt);
     boundaries.push_back(dispatchMark());
-    if (mBurn) mBurn->record(mSequence, mSmoke, *mSettings.fire, dt);
+    if (mBurn) mBurn->record((*mRecordingInto), mSmoke, *mSettings.fire, dt);
     boundaries.push_back(dispatchMark());
-    mParticles.record(mSequence, mSmoke, mSettings.obstacles, mTime, dt);
+    mParticles.record((*mRecordingInto), mSmoke, mSettings.obstacles, mTime, dt);
     boundaries.push_back(dispatchMark());
 }
 
 std::size_t Simulation::dispatchMark() const {
-    return mStepDispatches + mSequence.dispatchCount();
+    return mStepDispatches + (*mRecordingInto).dispatchCount();
 }
 
 void Simulation::submitWithinStep() {
-    const std::size_t recorded = mSequence.dispatchCount();
-    mSequence.submitAndWait();
-    const std::vector<double>& times = mSequence.dispatchTimesMs();
+    const std::size_t recorded = (*mRecordingInto).dispatchCount();
+    (*mRecordingInto).submitAndWait();
+    const std::vector<double>& times = (*mRecordingInto).dispatchTimesMs();
     mStepTimesMs.insert(mStepTimesMs.end(), times.begin(), times.end());
     mStepDispatches += recorded;
 }
 
 void Simulation::recordReconstruction(const CellBox* needed) {
     recordReconstruction(mStepper.stateBuffer(), mFaceVelocity, needed);
-    if (mWind) mWind->record(mSequence, mFaceVelocity);
+    if (mWind) mWind->record((*mRecordingInto), mFaceVelocity);
 }
 
 void Simulation::recordReconstruction(const vulkan::DeviceBuffer& modal,
                                       const vulkan::DeviceBuffer& field,
                                       const CellBox* needed) const {
     if (mSeparable)
-        mSeparable->recordReconstruction(mSequence, modal, field, needed);
+        mSeparable->recordReconstruction((*mRecordingInto), modal, field, needed);
     else
-        mReconstruction.record(mSequence, *mModes, modal, field);
+        mReconstruction.record((*mRecordingInto), *mModes, modal, field);
 }
 
 FrameStats Simulation::advanceSteps(int steps) {
@@ -252,8 +287,28 @@ FrameStats Simulation::advanceSteps(int steps) {
         std::vector<std::size_t> boundaries;
         mStepDispatches = 0;
         mStepTimesMs.clear();
-        recordStep(boundaries);
-        submitWithinStep();
+        const bool keepable = prepareStep();
+        // The advection writes the other fields of each pair each step: a kept step per parity.
+        KeptStep& kept = *mKept[std::size_t(mSmoke.parity())];
+        if (keepable && kept.sequence.hasKeptRecording() && kept.substeps == mSchedule.substeps()) {
+            kept.sequence.resubmit();
+            mStepTimesMs = kept.sequence.dispatchTimesMs();
+            boundaries = kept.boundaries;
+            if (mSmoke.parity() != kept.endParity) mSmoke.flip();
+        } else {
+            if (keepable && mStepRecording == StepRecording::Once) {
+                kept.sequence.keepNextRecording();
+                mRecordingInto = &kept.sequence;
+            }
+            recordStep(boundaries);
+            submitWithinStep();
+            if (mRecordingInto == &kept.sequence) {
+                kept.boundaries = boundaries;
+                kept.substeps = mSchedule.substeps();
+                kept.endParity = mSmoke.parity();
+            }
+            mRecordingInto = &mSequence;
+        }
         mTime += mSettings.dt;
         ++stats.steps;
         // N floats: as cheap as the status read below (measured in engine/README.md).

@@ -12,6 +12,7 @@
 /// with nothing read back; the host reads the velocity, smoke or grid velocity only when it asks
 /// (display, export). CPU reference of the whole chain: reference::Simulation.
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -29,6 +30,7 @@
 #include "engine/device/SmokeAdvection.h"
 #include "engine/device/SmokeDisplacement.h"
 #include "engine/device/SmokeState.h"
+#include "engine/device/StepRecording.h"
 #include "engine/device/SubstepSchedule.h"
 #include "engine/device/VelocityReconstruction.h"
 #include "engine/device/WindField.h"
@@ -45,9 +47,12 @@ public:
     /// (basis grid refined by settings.smokeScale), non-zero inside Ω (precompute's fluidMask).
     /// `timestamps`: time each stage on the device (FrameStats), where the queue can.
     /// @throw modeflow::Error for LANS-α with MHD, a mask of the wrong size, or a device error.
+    /// `recording`: a step whose commands stay the same (no solids, jets, particles or
+    /// conservative smoke; its emitters and inflows unchanged) is recorded once and resubmitted.
     Simulation(const vulkan::VulkanContext& context, const BasisCache& cache,
                const StructuralCoefficients& coefficients, SimulationSettings settings,
-               std::span<const std::uint8_t> smokeMask, bool timestamps = false);
+               std::span<const std::uint8_t> smokeMask, bool timestamps = false,
+               StepRecording recording = StepRecording::Once);
 
     void setVelocity(const Eigen::VectorXd& v) override { mStepper.setVelocity(v); }
     Eigen::VectorXd velocity() const override { return mStepper.velocity(); }
@@ -75,14 +80,30 @@ public:
     /// Timestamps (constructed with `timestamps`; on by default then) cost lavapipe about as much
     /// as the step itself, so a window showing times a few times a second times a sample
     /// (FrameStats::timedSteps).
-    void setTiming(bool on) override { mSequence.setTiming(on); }
+    void setTiming(bool on) override;
     /// The smoke and the grid velocity on the device, for kernels that draw them (valid between
     /// frames; the velocity is a face field of the basis grid).
     const SmokeState& smokeState() const { return mSmoke; }
     const vulkan::DeviceBuffer& faceVelocityBuffer() const { return mFaceVelocity; }
 
 private:
-    /// Records one whole step; adds each stage's dispatch range to `ranges`.
+    /// A step recorded once and resubmitted while what it records stays the same, for one parity
+    /// of the smoke's fields (the advection swaps them each step).
+    struct KeptStep {
+        KeptStep(const vulkan::VulkanContext& context, bool timestamps, std::uint32_t dispatches)
+            : sequence(context, timestamps, dispatches) {}
+        vulkan::CommandSequence sequence;
+        std::vector<std::size_t> boundaries;  ///< its stages' dispatch ranges
+        int substeps = 0;
+        int endParity = 0;  ///< the smoke's parity after it
+    };
+
+    /// Uploads the emitters and inflows of the step from mTime where they changed; whether the
+    /// step records what a kept step of its parity recorded.
+    bool prepareStep();
+    /// Forgets the kept steps (what a step records changed).
+    void dropKeptSteps();
+    /// Records one whole step into *mRecordingInto; adds each stage's dispatch range to `ranges`.
     void recordStep(std::vector<std::size_t>& boundaries);
     /// Dispatches of the step so far, in the submissions made and the one being recorded.
     std::size_t dispatchMark() const;
@@ -116,7 +137,10 @@ private:
     std::optional<FireBurnKernel> mBurn;  ///< with [fire]
     std::optional<WindField> mWind;       ///< with [wind]: U added to each reconstruction
     mutable vulkan::CommandSequence
-        mSequence;                      ///< also records faceMagneticField()'s reconstruction
+        mSequence;  ///< steps recorded afresh; also faceMagneticField()'s reconstruction
+    StepRecording mStepRecording;
+    std::array<std::unique_ptr<KeptStep>, 2> mKept;        ///< by the smoke's parity
+    vulkan::CommandSequence* mRecordingInto = &mSequence;  ///< where recordStep() records
     std::vector<bool> mActiveEmitters;  ///< what the device's emitter list holds now
     ActiveInflowSet mActiveInflows;     ///< the inflows the device's ghosts hold now
     std::size_t mStepDispatches = 0;    ///< dispatches of the step's earlier submissions

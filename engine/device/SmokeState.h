@@ -124,6 +124,9 @@ public:
 
     /// Makes the next fields current (SmokeAdvectionKernels::record() calls it).
     void flip() { mCurrent = 1 - mCurrent; }
+    /// Which of each pair's two fields is current (0 or 1): a step recorded once reads and
+    /// writes the same ones each time it is submitted.
+    int parity() const { return mCurrent; }
 
 private:
     /// One pair: its fields now and next, its second field alone, and the fluid cell list with

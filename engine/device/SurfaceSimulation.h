@@ -14,6 +14,7 @@
 #include <Eigen/Core>
 
 #include "engine/device/ModalStepper.h"
+#include "engine/device/StepRecording.h"
 #include "engine/device/SubstepSchedule.h"
 #include "engine/device/SurfaceDye.h"
 #include "engine/device/SurfaceForce.h"
@@ -22,9 +23,6 @@
 #include "engine/vulkan/DeviceBuffer.h"
 
 namespace modeflow::device {
-
-/// How steps are recorded: once and resubmitted, or afresh every step (for comparisons).
-enum class StepRecording { Once, EveryStep };
 
 class SurfaceSimulation final : public SurfaceSimulator {
 public:

@@ -16,12 +16,15 @@
 ///   device_wall       the same step as a run takes it, without timestamps: the wall time of
 ///                     advanceSteps(1), submission, waiting and the host's status reads included
 ///                     (lavapipe flushes its work at every timestamp, so device_step's sum of
-///                     dispatch times is not the time a run sees)
+///                     dispatch times is not the time a run sees), with the step recorded once
+///                     and resubmitted (recorded_once:1, as runs do) or afresh every step
 ///   device_obstacle   device_step of the box with a rigid mesh obstacle of 10 000 triangles (a
 ///                     torus, makeTorus(100, 50, ...), turning once a second) and 100 000 tracer
-///                     particles: obstacles_ms (the mismatch on its level set, projection,
-///                     correction, reconstruction again, smoke pushed out), particles_ms, and
-///                     solids_particles_share, the two's part of the whole step
+///                     particles, its box as the scene leaves it (smoke_filled:0) or full of
+///                     smoke (1): obstacles_ms (the velocity the mismatch reads on the solid's
+///                     box, the mismatch on its level set, projection, correction, smoke pushed
+///                     out), particles_ms, and solids_particles_share, the two's part of the
+///                     whole step
 /// The state is the torus scene's initial vortices, and for the box (which starts at rest) a swirl
 /// of a twentieth of a turnover per step, so the midpoint rule iterates as in a run. Run:
 /// bench_closed_form [--device N] [--benchmark_filter=...].
@@ -39,6 +42,7 @@
 #include "engine/device/DeviceCoefficients.h"
 #include "engine/device/ModalKernels.h"
 #include "engine/device/SeparableTransform.h"
+#include "engine/device/Simulation.h"
 #include "engine/reference/ForceProjection.h"
 #include "engine/reference/Simulation.h"
 #include "engine/reference/SmokeAdvection.h"
@@ -187,16 +191,19 @@ void deviceStep(benchmark::State& state, const char* file, Integrator integrator
     state.counters["iterations"] = iterations;
 }
 
+/// Wall time per step, with steps recorded once (recorded:1) or afresh every step (recorded:0).
 void deviceWall(benchmark::State& state, const char* file, Integrator integrator) {
     const RunInputs& run = sceneRun(file, int(state.range(0)));
-    const std::unique_ptr<Simulator> simulation = benchBackend().makeSimulator(run);
-    simulation->setIntegrator(integrator);
-    simulation->setVelocity(startingVelocity(run));
-    simulation->advanceSteps(3);
+    device::Simulation simulation(
+        benchContext(), run.cache, *run.coefficients, run.settings, run.smokeMask, false,
+        state.range(1) != 0 ? device::StepRecording::Once : device::StepRecording::EveryStep);
+    simulation.setIntegrator(integrator);
+    simulation.setVelocity(startingVelocity(run));
+    simulation.advanceSteps(3);
     int iterations = 0;
     for (auto _ : state) {
         const auto start = Clock::now();
-        const FrameStats stats = simulation->advanceSteps(1);
+        const FrameStats stats = simulation.advanceSteps(1);
         state.SetIterationTime(msSince(start) * 1e-3);
         iterations = std::max(iterations, stats.maxIterations);
     }
@@ -267,6 +274,15 @@ void boxSizes(benchmark::internal::Benchmark* b) {
 void torusSizes(benchmark::internal::Benchmark* b) {
     b->ArgName("N")->Arg(500)->Unit(benchmark::kMillisecond);
 }
+/// The same, each with steps recorded once and every step.
+void boxRecordings(benchmark::internal::Benchmark* b) {
+    b->ArgNames({"N", "recorded_once"})->ArgsProduct({{1000, 2000}, {1, 0}});
+    b->Unit(benchmark::kMillisecond);
+}
+void torusRecordings(benchmark::internal::Benchmark* b) {
+    b->ArgNames({"N", "recorded_once"})->ArgsProduct({{500}, {1, 0}});
+    b->Unit(benchmark::kMillisecond);
+}
 
 BENCHMARK_CAPTURE(precompute, box_3d, kBox)->Apply(boxSizes)->Iterations(1);
 BENCHMARK_CAPTURE(precompute, torus_2d, kTorus)->Apply(torusSizes)->Iterations(1);
@@ -310,19 +326,19 @@ BENCHMARK(deviceObstacleStep)
     ->Iterations(5)
     ->UseManualTime();
 BENCHMARK_CAPTURE(deviceWall, box_3d, kBox, Integrator::Midpoint)
-    ->Apply(boxSizes)
+    ->Apply(boxRecordings)
     ->Iterations(10)
     ->UseManualTime();
 BENCHMARK_CAPTURE(deviceWall, box_3d_linearized, kBox, Integrator::Linearized)
-    ->Apply(boxSizes)
+    ->Apply(boxRecordings)
     ->Iterations(10)
     ->UseManualTime();
 BENCHMARK_CAPTURE(deviceWall, torus_2d, kTorus, Integrator::Midpoint)
-    ->Apply(torusSizes)
+    ->Apply(torusRecordings)
     ->Iterations(40)
     ->UseManualTime();
 BENCHMARK_CAPTURE(deviceWall, torus_2d_linearized, kTorus, Integrator::Linearized)
-    ->Apply(torusSizes)
+    ->Apply(torusRecordings)
     ->Iterations(40)
     ->UseManualTime();
 
