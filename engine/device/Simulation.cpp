@@ -188,6 +188,8 @@ bool Simulation::prepareStep() {
         mSmoke.setInflows(activeInflows(mSettings.inflows, mTime));
         same = false;
     }
+    // The kept steps recorded the lists as they were (their counts, their ghosts' sides).
+    if (!same) dropKeptSteps();
     // Solids, jets and particles record where they are and how many there are, and conservative
     // smoke its substeps read mid-step: those steps are recorded afresh.
     return same && !mFlux && mSettings.obstacles.empty() && mParticles.empty() &&

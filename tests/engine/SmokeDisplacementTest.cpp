@@ -251,10 +251,10 @@ SmokeFields randomSmoke(const MacGrid& grid, const std::vector<MovingObstacle>& 
 class SmokeDisplacementKernelTest : public testing::VulkanTest {};
 
 TEST_P(SmokeDisplacementKernelTest, DeviceEqualsTheCpuReference) {
-    // A ball and a turning box in a walled 3D box, a turning mesh, a box across the seams of a
-    // periodic 3D box, a ball across the seam of a periodic 2D square, and two balls far apart
-    // in a 3D box (covered box by box), several substeps a step (the device's band), six steps
-    // each.
+    // A ball and a turning box in a walled 3D box, a turning mesh, a small ball crossing six
+    // cells a step, a box across the seams of a periodic 3D box, a ball across the seam of a
+    // periodic 2D square, and two balls far apart in a 3D box (covered box by box), several
+    // substeps a step, six steps each.
     struct Case {
         MacGrid grid;
         std::vector<MovingObstacle> solids;
@@ -281,6 +281,10 @@ TEST_P(SmokeDisplacementKernelTest, DeviceEqualsTheCpuReference) {
          {ball(0.17, {{0.0, {0.71, 0.33, 0.52}}, {1.0, {0.21, 0.71, 0.48}}}),
           MovingObstacle{paddle}}},
         {unitGrid(3, 24), {mesh}},
+        // A small ball crossing six cells a step, there and back.
+        {unitGrid(3, 24),
+         {ball(0.08,
+               {{0.0, {0.12, 0.5, 0.45}}, {0.12, {0.88, 0.55, 0.5}}, {0.24, {0.12, 0.5, 0.45}}})}},
         // Across the periodic seams of a 3D torus, turning.
         {unitGrid(3, 20, true), {MovingObstacle{seam}}},
         {unitGrid(2, 40, true), {ball(0.13, {{0.0, {0.83, 0.47, 0.0}}, {1.0, {2.03, 0.62, 0.0}}})}},
