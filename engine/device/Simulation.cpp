@@ -209,19 +209,18 @@ void Simulation::recordStep(std::vector<std::size_t>& boundaries) {
         // Buoyancy alone acts on the up faces only: the other components' passes would
         // transform zeros, so they are not recorded and those DOFs of g not written.
         const bool upOnly = mSeparable && mForceField.splatCount() == 0;
-        mForceField.record((*mRecordingInto), mSettings.buoyancy, mSmoke.temperature(),
+        mForceField.record(recording(), mSettings.buoyancy, mSmoke.temperature(),
                            solidCells ? &mSmoke.mask() : nullptr, mForceDensity, upOnly);
         if (upOnly)
-            mSeparable->recordComponentProjection((*mRecordingInto), mForceDensity,
-                                                  upAxis(mReconstruction.grid()),
-                                                  mStepper.forceBuffer());
+            mSeparable->recordComponentProjection(
+                recording(), mForceDensity, upAxis(mReconstruction.grid()), mStepper.forceBuffer());
         else if (mSeparable)
-            mSeparable->recordProjection((*mRecordingInto), mForceDensity, mStepper.forceBuffer());
+            mSeparable->recordProjection(recording(), mForceDensity, mStepper.forceBuffer());
         else
-            mProjection.record((*mRecordingInto), *mModes, mForceDensity, mStepper.forceBuffer());
+            mProjection.record(recording(), *mModes, mForceDensity, mStepper.forceBuffer());
     }
     boundaries.push_back(dispatchMark());
-    mStepper.recordStep((*mRecordingInto), dt, mSchedule.substeps());
+    mStepper.recordStep(recording(), dt, mSchedule.substeps());
     boundaries.push_back(dispatchMark());
     const std::vector<MovingObstacle> regions = mSettings.velocityRegions(mTime);
     if (!regions.empty()) {
@@ -232,55 +231,54 @@ void Simulation::recordStep(std::vector<std::size_t>& boundaries) {
         const CellBox box = mObstacles.cellBox();
         recordReconstruction(&box);
         if (mSeparable)
-            mObstacles.record((*mRecordingInto), *mSeparable, mFaceVelocity,
-                              mStepper.stateBuffer());
+            mObstacles.record(recording(), *mSeparable, mFaceVelocity, mStepper.stateBuffer());
         else
-            mObstacles.record((*mRecordingInto), *mModes, mFaceVelocity, mStepper.stateBuffer());
+            mObstacles.record(recording(), *mModes, mFaceVelocity, mStepper.stateBuffer());
     }
     boundaries.push_back(dispatchMark());
     recordReconstruction();
     boundaries.push_back(dispatchMark());
     if (mFlux) {
         // The substeps come from the step's velocity: read them between two submissions.
-        mFlux->recordCourant((*mRecordingInto), mAdvection, mSmoke, mFaceVelocity, dt);
+        mFlux->recordCourant(recording(), mAdvection, mSmoke, mFaceVelocity, dt);
         submitWithinStep();
-        mFlux->record((*mRecordingInto), mSmoke, dt, mFlux->substeps());
+        mFlux->record(recording(), mSmoke, dt, mFlux->substeps());
     } else {
-        mAdvection.record((*mRecordingInto), mSmoke, mFaceVelocity, dt, mSettings.advection);
+        mAdvection.record(recording(), mSmoke, mFaceVelocity, dt, mSettings.advection);
     }
     boundaries.push_back(dispatchMark());
-    mDisplacement.record((*mRecordingInto), mSmoke, mSettings.obstacles, mTime, dt);
+    mDisplacement.record(recording(), mSmoke, mSettings.obstacles, mTime, dt);
     boundaries.push_back(dispatchMark());
-    if (mBurn) mBurn->record((*mRecordingInto), mSmoke, *mSettings.fire, dt);
+    if (mBurn) mBurn->record(recording(), mSmoke, *mSettings.fire, dt);
     boundaries.push_back(dispatchMark());
-    mParticles.record((*mRecordingInto), mSmoke, mSettings.obstacles, mTime, dt);
+    mParticles.record(recording(), mSmoke, mSettings.obstacles, mTime, dt);
     boundaries.push_back(dispatchMark());
 }
 
 std::size_t Simulation::dispatchMark() const {
-    return mStepDispatches + (*mRecordingInto).dispatchCount();
+    return mStepDispatches + recording().dispatchCount();
 }
 
 void Simulation::submitWithinStep() {
-    const std::size_t recorded = (*mRecordingInto).dispatchCount();
-    (*mRecordingInto).submitAndWait();
-    const std::vector<double>& times = (*mRecordingInto).dispatchTimesMs();
+    const std::size_t recorded = recording().dispatchCount();
+    recording().submitAndWait();
+    const std::vector<double>& times = recording().dispatchTimesMs();
     mStepTimesMs.insert(mStepTimesMs.end(), times.begin(), times.end());
     mStepDispatches += recorded;
 }
 
 void Simulation::recordReconstruction(const CellBox* needed) {
     recordReconstruction(mStepper.stateBuffer(), mFaceVelocity, needed);
-    if (mWind) mWind->record((*mRecordingInto), mFaceVelocity);
+    if (mWind) mWind->record(recording(), mFaceVelocity);
 }
 
 void Simulation::recordReconstruction(const vulkan::DeviceBuffer& modal,
                                       const vulkan::DeviceBuffer& field,
                                       const CellBox* needed) const {
     if (mSeparable)
-        mSeparable->recordReconstruction((*mRecordingInto), modal, field, needed);
+        mSeparable->recordReconstruction(recording(), modal, field, needed);
     else
-        mReconstruction.record((*mRecordingInto), *mModes, modal, field);
+        mReconstruction.record(recording(), *mModes, modal, field);
 }
 
 FrameStats Simulation::advanceSteps(int steps) {
@@ -298,18 +296,22 @@ FrameStats Simulation::advanceSteps(int steps) {
             boundaries = kept.boundaries;
             if (mSmoke.parity() != kept.endParity) mSmoke.flip();
         } else {
-            if (keepable && mStepRecording == StepRecording::Once) {
-                kept.sequence.keepNextRecording();
-                mRecordingInto = &kept.sequence;
-            }
+            const bool keep = keepable && mStepRecording == StepRecording::Once;
+            if (keep) kept.sequence.keepNextRecording();
+            // Back to the afresh sequence however the recording ends.
+            struct Restore {
+                vulkan::CommandSequence*& into;
+                vulkan::CommandSequence* afresh;
+                ~Restore() { into = afresh; }
+            } const restore{mRecordingInto, &mSequence};
+            mRecordingInto = keep ? &kept.sequence : &mSequence;
             recordStep(boundaries);
             submitWithinStep();
-            if (mRecordingInto == &kept.sequence) {
+            if (keep) {
                 kept.boundaries = boundaries;
                 kept.substeps = mSchedule.substeps();
                 kept.endParity = mSmoke.parity();
             }
-            mRecordingInto = &mSequence;
         }
         mTime += mSettings.dt;
         ++stats.steps;

@@ -46,9 +46,9 @@ public:
     /// Uploads the basis and coefficients. `smokeMask`: one byte per cell of the smoke grid
     /// (basis grid refined by settings.smokeScale), non-zero inside Ω (precompute's fluidMask).
     /// `timestamps`: time each stage on the device (FrameStats), where the queue can.
-    /// @throw modeflow::Error for LANS-α with MHD, a mask of the wrong size, or a device error.
     /// `recording`: a step whose commands stay the same (no solids, jets, particles or
     /// conservative smoke; its emitters and inflows unchanged) is recorded once and resubmitted.
+    /// @throw modeflow::Error for LANS-α with MHD, a mask of the wrong size, or a device error.
     Simulation(const vulkan::VulkanContext& context, const BasisCache& cache,
                const StructuralCoefficients& coefficients, SimulationSettings settings,
                std::span<const std::uint8_t> smokeMask, bool timestamps = false,
@@ -103,7 +103,9 @@ private:
     bool prepareStep();
     /// Forgets the kept steps (what a step records changed).
     void dropKeptSteps();
-    /// Records one whole step into *mRecordingInto; adds each stage's dispatch range to `ranges`.
+    /// Where a step records now.
+    vulkan::CommandSequence& recording() const { return *mRecordingInto; }
+    /// Records one whole step into recording(); adds each stage's dispatch range to `ranges`.
     void recordStep(std::vector<std::size_t>& boundaries);
     /// Dispatches of the step so far, in the submissions made and the one being recorded.
     std::size_t dispatchMark() const;
