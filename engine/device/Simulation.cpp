@@ -192,8 +192,8 @@ bool Simulation::prepareStep() {
     if (!same) dropKeptSteps();
     // Solids, jets and particles record where they are and how many there are, and conservative
     // smoke its substeps read mid-step: those steps are recorded afresh.
-    return same && !mFlux && mSettings.obstacles.empty() && mParticles.empty() &&
-           mSettings.velocityRegions(mTime).empty();
+    mRegions = mSettings.velocityRegions(mTime);
+    return same && !mFlux && mSettings.obstacles.empty() && mParticles.empty() && mRegions.empty();
 }
 
 void Simulation::dropKeptSteps() {
@@ -222,7 +222,7 @@ void Simulation::recordStep(std::vector<std::size_t>& boundaries) {
     boundaries.push_back(dispatchMark());
     mStepper.recordStep(recording(), dt, mSchedule.substeps());
     boundaries.push_back(dispatchMark());
-    const std::vector<MovingObstacle> regions = mSettings.velocityRegions(mTime);
+    const std::vector<MovingObstacle>& regions = mRegions;
     if (!regions.empty()) {
         // Where the obstacles are at the end of the step, which the advection then sees. The
         // mismatch reads the velocity on the obstacles' box alone (a closed-form basis

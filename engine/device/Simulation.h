@@ -98,8 +98,9 @@ private:
         int endParity = 0;  ///< the smoke's parity after it
     };
 
-    /// Uploads the emitters and inflows of the step from mTime where they changed; whether the
-    /// step records what a kept step of its parity recorded.
+    /// Uploads the emitters and inflows of the step from mTime where they changed, and takes the
+    /// step's velocity regions (mRegions); whether the step records what a kept step of its
+    /// parity recorded.
     bool prepareStep();
     /// Forgets the kept steps (what a step records changed).
     void dropKeptSteps();
@@ -143,10 +144,11 @@ private:
     StepRecording mStepRecording;
     std::array<std::unique_ptr<KeptStep>, 2> mKept;        ///< by the smoke's parity
     vulkan::CommandSequence* mRecordingInto = &mSequence;  ///< where recordStep() records
-    std::vector<bool> mActiveEmitters;  ///< what the device's emitter list holds now
-    ActiveInflowSet mActiveInflows;     ///< the inflows the device's ghosts hold now
-    std::size_t mStepDispatches = 0;    ///< dispatches of the step's earlier submissions
-    std::vector<double> mStepTimesMs;   ///< their times, and the last submission's
+    std::vector<MovingObstacle> mRegions;  ///< the step's obstacles and jets (prepareStep)
+    std::vector<bool> mActiveEmitters;     ///< what the device's emitter list holds now
+    ActiveInflowSet mActiveInflows;        ///< the inflows the device's ghosts hold now
+    std::size_t mStepDispatches = 0;       ///< dispatches of the step's earlier submissions
+    std::vector<double> mStepTimesMs;      ///< their times, and the last submission's
     SubstepSchedule mSchedule;
     double mTime = 0.0;
     long mStep = 0;  ///< steps since t = 0, for the divergence message
