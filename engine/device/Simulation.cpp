@@ -264,6 +264,8 @@ void Simulation::submitWithinStep() {
     recording().submitAndWait();
     const std::vector<double>& times = recording().dispatchTimesMs();
     mStepTimesMs.insert(mStepTimesMs.end(), times.begin(), times.end());
+    const std::vector<std::string>& labels = recording().dispatchLabels();
+    mStepLabels.insert(mStepLabels.end(), labels.begin(), labels.end());
     mStepDispatches += recorded;
 }
 
@@ -287,12 +289,14 @@ FrameStats Simulation::advanceSteps(int steps) {
         std::vector<std::size_t> boundaries;
         mStepDispatches = 0;
         mStepTimesMs.clear();
+        mStepLabels.clear();
         const bool keepable = prepareStep();
         // The advection writes the other fields of each pair each step: a kept step per parity.
         KeptStep& kept = *mKept[std::size_t(mSmoke.parity())];
         if (keepable && kept.sequence.hasKeptRecording() && kept.substeps == mSchedule.substeps()) {
             kept.sequence.resubmit();
             mStepTimesMs = kept.sequence.dispatchTimesMs();
+            mStepLabels = kept.sequence.dispatchLabels();
             boundaries = kept.boundaries;
             if (mSmoke.parity() != kept.endParity) mSmoke.flip();
         } else {
@@ -333,6 +337,7 @@ FrameStats Simulation::advanceSteps(int steps) {
         for (std::size_t stage = 0; stage < stages.size(); ++stage)
             for (std::size_t d = boundaries[stage]; d < boundaries[stage + 1]; ++d)
                 *stages[stage] += times[d];
+        for (std::size_t d = 0; d < times.size(); ++d) stats.kernelMs[mStepLabels[d]] += times[d];
     }
     return stats;
 }

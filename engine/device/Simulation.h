@@ -16,6 +16,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "engine/device/ConservativeTransport.h"
@@ -149,6 +150,7 @@ private:
     ActiveInflowSet mActiveInflows;        ///< the inflows the device's ghosts hold now
     std::size_t mStepDispatches = 0;       ///< dispatches of the step's earlier submissions
     std::vector<double> mStepTimesMs;      ///< their times, and the last submission's
+    std::vector<std::string> mStepLabels;  ///< what each timed one was
     SubstepSchedule mSchedule;
     double mTime = 0.0;
     long mStep = 0;  ///< steps since t = 0, for the divergence message

@@ -2,6 +2,9 @@
 /// @file FrameStats.h
 /// What advancing a simulation by one frame (or a few steps) did, whichever backend ran it.
 
+#include <map>
+#include <string>
+
 namespace modeflow {
 
 /// What advancing one frame did.
@@ -17,6 +20,10 @@ struct FrameStats {
     /// their correction, and smoke pushed out of them), advection, particles.
     double forcesMs = 0.0, modalMs = 0.0, reconstructionMs = 0.0, obstaclesMs = 0.0,
            advectionMs = 0.0, particlesMs = 0.0;
+    /// The same device time by what ran (vulkan::CommandSequence::dispatchLabels: a kernel's
+    /// name with its specialization constants, or the buffer a fill or copy wrote), for
+    /// profiles (`bench_closed_form --kernels`).
+    std::map<std::string, double> kernelMs;
 };
 
 }  // namespace modeflow

@@ -88,15 +88,17 @@ void CommandSequence::beginIfNeeded() {
 void CommandSequence::dispatch(const ComputeKernel& kernel,
                                std::span<const DeviceBuffer* const> buffers,
                                std::span<const std::byte> pushConstants, std::uint32_t groupCount) {
-    recordTimed([&] { kernel.record(mCommandBuffer, buffers, pushConstants, groupCount); });
+    recordTimed(kernel.name(),
+                [&] { kernel.record(mCommandBuffer, buffers, pushConstants, groupCount); });
 }
 
 void CommandSequence::dispatchIndirect(const ComputeKernel& kernel,
                                        std::span<const DeviceBuffer* const> buffers,
                                        std::span<const std::byte> pushConstants,
                                        const DeviceBuffer& arguments, VkDeviceSize offset) {
-    recordTimed(
-        [&] { kernel.recordIndirect(mCommandBuffer, buffers, pushConstants, arguments, offset); });
+    recordTimed(kernel.name(), [&] {
+        kernel.recordIndirect(mCommandBuffer, buffers, pushConstants, arguments, offset);
+    });
 }
 
 void CommandSequence::fill(const DeviceBuffer& buffer, VkDeviceSize bytes, std::uint32_t word) {
@@ -104,7 +106,8 @@ void CommandSequence::fill(const DeviceBuffer& buffer, VkDeviceSize bytes, std::
         throw Error("CommandSequence: cannot fill " + std::to_string(bytes) + " bytes of \"" +
                     buffer.name() + "\" (" + std::to_string(buffer.bytes()) +
                     " bytes; whole words only)");
-    recordTimed([&] { vkCmdFillBuffer(mCommandBuffer, buffer.handle(), 0, bytes, word); });
+    recordTimed("fill " + buffer.name(),
+                [&] { vkCmdFillBuffer(mCommandBuffer, buffer.handle(), 0, bytes, word); });
 }
 
 void CommandSequence::copy(const DeviceBuffer& from, const DeviceBuffer& to, VkDeviceSize bytes) {
@@ -113,14 +116,18 @@ void CommandSequence::copy(const DeviceBuffer& from, const DeviceBuffer& to, VkD
                     from.name() + "\" (" + std::to_string(from.bytes()) + " bytes) to \"" +
                     to.name() + "\" (" + std::to_string(to.bytes()) + " bytes)");
     const VkBufferCopy region{0, 0, bytes};
-    recordTimed([&] { vkCmdCopyBuffer(mCommandBuffer, from.handle(), to.handle(), 1, &region); });
+    recordTimed("copy " + to.name(),
+                [&] { vkCmdCopyBuffer(mCommandBuffer, from.handle(), to.handle(), 1, &region); });
 }
 
-void CommandSequence::recordTimed(const std::function<void()>& recordDispatch) {
+void CommandSequence::recordTimed(const std::string& label,
+                                  const std::function<void()>& recordDispatch) {
     if (isTiming() && mDispatchCount >= mMaxTimed)
         throw Error("CommandSequence: more than " + std::to_string(mMaxTimed) +
                     " timed dispatches in one submission (raise maxTimedDispatches)");
     beginIfNeeded();
+    if (mDispatchCount == 0) mRecordingLabels.clear();
+    if (isTiming()) mRecordingLabels.push_back(label);
     // Every dispatch may read what an earlier one wrote, as data or as indirect dispatch
     // arguments, in this submission or the previous ones (waiting on their fence does not make
     // their writes visible to this one; lavapipe really does read stale data without it). One
@@ -167,7 +174,9 @@ void CommandSequence::submitRecorded(std::size_t dispatches, bool timed) {
     const VkDevice device = mContext.device();
 
     mTimesMs.clear();
+    mLabels.clear();
     if (timed) {
+        mLabels = mRecordingLabels;
         std::vector<std::uint64_t> ticks(2 * dispatches);
         check(vkGetQueryPoolResults(device, mQueryPool.get(), 0, std::uint32_t(ticks.size()),
                                     ticks.size() * sizeof(std::uint64_t), ticks.data(),

@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <functional>
 #include <span>
+#include <string>
 #include <vector>
 
 #include <vulkan/vulkan.h>
@@ -97,11 +98,15 @@ public:
     std::size_t dispatchCount() const { return mDispatchCount; }
     /// Duration of each dispatch of the last submission, in milliseconds (empty without timing).
     const std::vector<double>& dispatchTimesMs() const { return mTimesMs; }
+    /// What each timed dispatch of the last submission was, beside dispatchTimesMs(): its
+    /// kernel's name (ComputeKernel::name), "fill NAME" or "copy NAME" (the buffer written).
+    const std::vector<std::string>& dispatchLabels() const { return mLabels; }
 
 private:
     void beginIfNeeded();
-    /// The barrier after the previous dispatch, the timestamps around this one, the count.
-    void recordTimed(const std::function<void()>& recordDispatch);
+    /// The barrier after the previous dispatch, the timestamps around this one (and its label),
+    /// the count.
+    void recordTimed(const std::string& label, const std::function<void()>& recordDispatch);
     /// Submits the ended command buffer, waits, and reads the times of its first `dispatches`
     /// dispatches when `timed`.
     void submitRecorded(std::size_t dispatches, bool timed);
@@ -120,6 +125,8 @@ private:
     bool mKeptTimed = false;
     std::size_t mDispatchCount = 0;
     std::vector<double> mTimesMs;
+    std::vector<std::string> mRecordingLabels;  ///< of the timed recording under way (or kept)
+    std::vector<std::string> mLabels;           ///< of the last submission's times
 };
 
 }  // namespace modeflow::vulkan

@@ -274,6 +274,32 @@ TEST_P(VulkanContextTest, FillSetsTheFirstWordsOfABufferOrView) {
     expectNoValidationMessages();
 }
 
+TEST_P(VulkanContextTest, TimedDispatchesAreLabelledWithWhatTheyRan) {
+    if (context().timestampValidBits() == 0) GTEST_SKIP() << "the queue writes no timestamps";
+    const std::vector<float> values{1.0f, 2.0f};
+    DeviceBuffer from = DeviceBuffer::fromValues<float>(context(), values, "from");
+    DeviceBuffer to(context(), 2 * sizeof(float), "to");
+    vulkan::CommandSequence sequence(context(), true, 4);
+    sequence.keepNextRecording();
+    sequence.fill(to, to.bytes(), 0u);
+    sequence.copy(from, to, from.bytes());
+    sequence.submitAndWait();
+    const std::vector<std::string> labels{"fill to", "copy to"};
+    EXPECT_EQ(sequence.dispatchLabels(), labels);
+    EXPECT_EQ(sequence.dispatchTimesMs().size(), labels.size());
+    sequence.resubmit();
+    EXPECT_EQ(sequence.dispatchLabels(), labels) << "a kept recording keeps its labels";
+    sequence.setTiming(false);
+    sequence.copy(from, to, from.bytes());
+    sequence.submitAndWait();
+    EXPECT_TRUE(sequence.dispatchLabels().empty()) << "untimed";
+    sequence.setTiming(true);
+    sequence.copy(to, from, to.bytes());
+    sequence.submitAndWait();
+    EXPECT_EQ(sequence.dispatchLabels(), std::vector<std::string>{"copy from"});
+    expectNoValidationMessages();
+}
+
 TEST_P(VulkanContextTest, KeptRecordingsResubmitWithWhatTheHostWroteSince) {
     std::vector<float> values{1.0f, 2.0f, 3.0f, 4.0f};
     DeviceBuffer from = DeviceBuffer::fromValues<float>(context(), values, "from");

@@ -160,9 +160,11 @@ void deviceStep(benchmark::State& state, const char* file, Integrator integrator
     const std::vector<float> density(run.cache.faces.size(), 1.0f);
     const vulkan::DeviceBuffer q = vulkan::DeviceBuffer::fromValues<float>(context, density, "q");
     std::vector<double> forces, modal, recon, advect, contraction, proj;
+    KernelProfile profile;
     int iterations = 0;
     for (auto _ : state) {
         const FrameStats stats = simulation->advanceSteps(1);
+        profile.add(stats);
         const double total =
             stats.forcesMs + stats.modalMs + stats.reconstructionMs + stats.advectionMs;
         state.SetIterationTime(total * 1e-3);
@@ -189,6 +191,7 @@ void deviceStep(benchmark::State& state, const char* file, Integrator integrator
     setMedian(state, "contraction_ms", contraction);
     setMedian(state, "proj_ms", proj);
     state.counters["iterations"] = iterations;
+    profile.report(std::string("deviceStep/") + file + "/N:" + std::to_string(state.range(0)));
 }
 
 /// Wall time per step, with steps recorded once (recorded:1) or afresh every step (recorded:0).
@@ -250,8 +253,10 @@ void deviceObstacleStep(benchmark::State& state) {
     }
     simulation->advanceSteps(3);
     std::vector<double> obstacles, particles, shares;
+    KernelProfile kernels;
     for (auto _ : state) {
         const FrameStats stats = simulation->advanceSteps(1);
+        kernels.add(stats);
         const double total = stats.forcesMs + stats.modalMs + stats.reconstructionMs +
                              stats.obstaclesMs + stats.advectionMs + stats.particlesMs;
         state.SetIterationTime(total * 1e-3);
@@ -262,6 +267,7 @@ void deviceObstacleStep(benchmark::State& state) {
     setMedian(state, "obstacles_ms", obstacles);
     setMedian(state, "particles_ms", particles);
     setMedian(state, "solids_particles_share", shares);
+    kernels.report("deviceObstacleStep/smoke_filled:" + std::to_string(state.range(1)));
 }
 
 constexpr const char* kBox = "box_closed_form_3d.toml";

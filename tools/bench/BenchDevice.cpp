@@ -2,11 +2,14 @@
 /// `--device=X`, then Google Benchmark's flags; an unknown flag or a bad device ends with a
 /// message and status 1.
 
+#include <algorithm>
 #include <cstdio>
 #include <cstring>
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <benchmark/benchmark.h>
 
@@ -21,7 +24,13 @@ std::unique_ptr<Backend>& openedBackend() {
     return backend;
 }
 
-/// Removes `--device X` / `--device=X` from argv and returns X; empty when absent.
+bool& kernelsWanted() {
+    static bool wanted = false;
+    return wanted;
+}
+
+/// Removes `--device X` / `--device=X` (and `--kernels`) from argv and returns X; empty when
+/// absent.
 /// @throw modeflow::Error when the value is missing.
 std::optional<std::string> takeDeviceFlag(int& argc, char** argv) {
     std::optional<std::string> value;
@@ -33,6 +42,8 @@ std::optional<std::string> takeDeviceFlag(int& argc, char** argv) {
             value = argv[++i];
         } else if (!std::strncmp(argv[i], "--device=", 9)) {
             value = argv[i] + 9;
+        } else if (!std::strcmp(argv[i], "--kernels")) {
+            kernelsWanted() = true;
         } else {
             argv[kept++] = argv[i];
         }
@@ -52,6 +63,27 @@ const Backend& benchBackend() {
 
 const vulkan::VulkanContext& benchContext() {
     return *benchBackend().vulkanContext();
+}
+
+void KernelProfile::add(const FrameStats& stats) {
+    for (const auto& [kernel, ms] : stats.kernelMs) mTotalMs[kernel] += ms;
+    mSteps += stats.timedSteps;
+}
+
+void KernelProfile::report(const std::string& title) const {
+    if (!kernelsWanted() || mSteps <= 0) return;
+    std::vector<std::pair<double, std::string>> rows;
+    double sum = 0.0;
+    for (const auto& [kernel, ms] : mTotalMs) {
+        rows.emplace_back(ms / mSteps, kernel);
+        sum += ms / mSteps;
+    }
+    std::sort(rows.rbegin(), rows.rend());
+    std::fprintf(stderr, "%s: device time per step by kernel (%d steps)\n", title.c_str(), mSteps);
+    for (const auto& [ms, kernel] : rows)
+        std::fprintf(stderr, "  %9.3f ms  %5.1f%%  %s\n", ms, sum > 0 ? 100.0 * ms / sum : 0.0,
+                     kernel.c_str());
+    std::fprintf(stderr, "  %9.3f ms  total\n", sum);
 }
 
 }  // namespace modeflow::bench
