@@ -15,6 +15,9 @@ using uint = std::uint32_t;
 #define OBSTACLE_CAPSULE 2u
 #define OBSTACLE_MESH 3u
 #define OBSTACLE_RIGID 0xffffffffu
+/* obstacle_mismatch.comp's faces per invocation, consecutive along one normal axis's part of the
+   box: each obstacle's record is read once for all of them. */
+#define OBSTACLE_MISMATCH_FACES_PER_INVOCATION 8u
 /* obstacle_mismatch.comp's DOF of a face that is none. */
 #define OBSTACLE_NO_DOF 0xffffffffu
 /* The solid kinds a kernel is compiled for (engine/device/SolidKernels.h): bit 1 << shape for
@@ -58,7 +61,7 @@ struct ObstacleMismatchParams {
     int boxFirst[3];  /* the box's first cell (on the grid; along a periodic axis the box wraps) */
     uint faceStart2;  /* first normal-z face (the face total in 2D) */
     uint boxCount[9]; /* per normal axis a, positions along each axis: boxCount[3 a + b] */
-    uint first;       /* the dispatch's first face of the box */
+    uint first; /* the dispatch's first run of faces (OBSTACLE_MISMATCH_FACES_PER_INVOCATION) */
     uint pad0;
     uint pad1;
 };

@@ -1,14 +1,23 @@
-/* ParticleStep.glsl: one step of every particle, one invocation each (the rule:
-   engine/simulation/ParticleMotion.h; CPU reference engine/reference/ParticleAdvection.cpp; host
-   side engine/device/ParticleAdvection.cpp). The includer defines MAC_DIM (2 or 3). The
-   velocity is the basis grid's face field as x-neighbour pairs (smoke_face_pairs.comp, written by
-   the step's smoke advection from the same velocity). */
+/* ParticleStep.glsl: one step of every particle (the rule: engine/simulation/ParticleMotion.h;
+   CPU reference engine/reference/ParticleAdvection.cpp; host side
+   engine/device/ParticleAdvection.cpp), in stages (a specialization constant):
+     move:   one invocation a particle: carried by the air; a particle then within reach of a
+             solid is stored as it is, with its start, and listed; the others are finished (open
+             sides, the box, sliding along walls);
+     args:   one invocation: the solids stage's indirect dispatch arguments;
+     solids: over the list: pushed out of the solids, then finished.
+   lavapipe runs both sides of every branch: with the solids in the move stage every particle
+   paid for the mesh exit's Newton steps, where the few near a solid need them.
+   The includer defines MAC_DIM (2 or 3). The velocity is the basis grid's face field as
+   x-neighbour pairs (smoke_face_pairs.comp, written by the step's smoke advection from the same
+   velocity). */
 #include "FaceLocation.glsl"
 #include "ObstacleParams.h"
 #include "ParticleStepParams.h"
 
 layout(local_size_x = 64, local_size_x_id = 0) in;
 layout(constant_id = 1) const uint solidKinds = SOLID_KINDS_ALL;  // ObstacleShape.glsl
+layout(constant_id = 2) const uint stage = PARTICLE_STEP_MOVE;
 
 layout(set = 0, binding = 0) uniform usamplerBuffer obstacleTexels;  // ten texels a record
 layout(set = 0, binding = 1) uniform usamplerBuffer latticeValues;   // one value a texel
@@ -17,6 +26,13 @@ layout(set = 0, binding = 3) uniform usamplerBuffer facePairs;  // one pair a wo
 layout(std430, set = 0, binding = 4) buffer Positions { vec4 positions[]; };  // xyz, w: set
 layout(std430, set = 0, binding = 5) buffer Velocities { vec4 velocities[]; };
 layout(std430, set = 0, binding = 6) readonly buffer Sets { ParticleSetRecord sets[]; };
+// The solids stage's dispatch arguments (x, y, z), then the list's length.
+layout(std430, set = 0, binding = 7) buffer Work {
+    uint solidGroups[3];
+    uint nearCount;
+};
+layout(std430, set = 0, binding = 8) buffer Near { uint near[]; };    // particles near a solid
+layout(std430, set = 0, binding = 9) buffer Starts { vec4 starts[]; };  // their starting points
 layout(push_constant) uniform Push { ParticleStepParams params; };
 
 vec2 macFacePair(uint face) { return uintBitsToFloat(texelFetch(facePairs, int(face)).xy); }
@@ -68,42 +84,23 @@ vec3 intoBox(vec3 p) {
     return p;
 }
 
-void main() {
-    const uint i = params.first + gl_GlobalInvocationID.x;
-    if (i >= params.count) return;
-    const vec4 stored = positions[i];
-    if (isnan(stored.x)) return;  // it left through an open side
-    const vec3 x0 = stored.xyz;
-    const vec3 v0 = velocities[i].xyz;
-    const ParticleSetRecord r = sets[floatBitsToUint(stored.w)];
-    const float dt = params.dt;
-    // A tracer steps as an inertial particle that takes the air's velocity at once (decay = reach
-    // = fall = 0) whose predictor is the air's velocity rather than its own: the two kinds share
-    // their samples, since lavapipe runs both sides of a branch (two samples, not three).
-    const bool tracer = r.inertial == 0u;
-    const vec3 ahead = tracer ? velocityAt(x0) : v0;
-    vec3 terminal = velocityAt(x0 + 0.5 * dt * ahead);
-    terminal[params.up] -= tracer ? 0.0 : r.fall;
-    const vec3 lag = v0 - terminal;
-    vec3 x1 = x0 + dt * terminal + lag * (tracer ? 0.0 : r.reach);
-    vec3 v1 = terminal + lag * (tracer ? 0.0 : r.decay);
-    const uint dim = uint(MAC_DIM);
+// Whether `p` is within reach of any solid (two texels a solid).
+bool nearSolid(vec3 p) {
+    bool near = false;
     for (uint o = 0u; o < params.obstacleCount; ++o) {
-        vec3 r0;
-        if (!withinReachOf(o, x1, dim, boxLength(), params.boundary, r0)) continue;
-        const ObstacleRecord solid = obstacleAt(o);
-        if (!covers(solid, r0)) continue;
-        vec3 normal;
-        x1 += solidExit(solid, r0, dim, params.margin, normal);
-        if (dim == 2u) x1.z = 0.0;
-        if (r.inertial == 0u) continue;
-        const vec3 r1 = obstacleOffset(solid, x1, dim, boxLength(), params.boundary);
-        const float into = dot(v1 - materialVelocity(solid, r1), normal);
-        if (into < 0.0) v1 -= into * normal;
+        vec3 r;
+        near = withinReachOf(o, p, uint(MAC_DIM), boxLength(), params.boundary, r) || near;
     }
+    return near;
+}
+
+// Particle i, from x0, at x1 with velocity v1 after the air and the solids: beyond an open side
+// it leaves the run; else it is kept in the box and, where it would end in a solid cell, slides
+// along the walls from x0.
+void finish(uint i, vec3 x0, vec3 x1, vec3 v1, ParticleSetRecord r, float setBits) {
     if (beyondOpenSide(x1)) {
         const float left = uintBitsToFloat(0x7fc00000u);  // a quiet NaN, kParticleLeft
-        positions[i] = vec4(left, left, left, stored.w);
+        positions[i] = vec4(left, left, left, setBits);
         velocities[i] = vec4(0.0);
         return;
     }
@@ -120,6 +117,74 @@ void main() {
         }
         x1 = slid;
     }
+    positions[i] = vec4(x1, setBits);
+    velocities[i] = vec4(v1, 0.0);
+}
+
+void moveStage(uint i) {
+    const vec4 stored = positions[i];
+    if (isnan(stored.x)) return;  // it left through an open side
+    const vec3 x0 = stored.xyz;
+    const vec3 v0 = velocities[i].xyz;
+    const ParticleSetRecord r = sets[floatBitsToUint(stored.w)];
+    const float dt = params.dt;
+    // A tracer steps as an inertial particle that takes the air's velocity at once (decay = reach
+    // = fall = 0) whose predictor is the air's velocity rather than its own: the two kinds share
+    // their samples, since lavapipe runs both sides of a branch (two samples, not three).
+    const bool tracer = r.inertial == 0u;
+    const vec3 ahead = tracer ? velocityAt(x0) : v0;
+    vec3 terminal = velocityAt(x0 + 0.5 * dt * ahead);
+    terminal[params.up] -= tracer ? 0.0 : r.fall;
+    const vec3 lag = v0 - terminal;
+    const vec3 x1 = x0 + dt * terminal + lag * (tracer ? 0.0 : r.reach);
+    const vec3 v1 = terminal + lag * (tracer ? 0.0 : r.decay);
+    // Away from every solid no push happens (a push needs a solid that reaches the point).
+    if (!nearSolid(x1)) {
+        finish(i, x0, x1, v1, r, stored.w);
+        return;
+    }
+    const uint slot = atomicAdd(nearCount, 1u);
+    near[slot] = i;
+    starts[slot] = vec4(x0, 0.0);
     positions[i] = vec4(x1, stored.w);
     velocities[i] = vec4(v1, 0.0);
+}
+
+// A listed particle pushed out of each solid covering it, in order, then finished.
+void solidsStage(uint slot) {
+    const uint i = near[slot];
+    const vec4 stored = positions[i];
+    vec3 x1 = stored.xyz;
+    vec3 v1 = velocities[i].xyz;
+    const ParticleSetRecord r = sets[floatBitsToUint(stored.w)];
+    const uint dim = uint(MAC_DIM);
+    for (uint o = 0u; o < params.obstacleCount; ++o) {
+        vec3 r0;
+        if (!withinReachOf(o, x1, dim, boxLength(), params.boundary, r0)) continue;
+        const ObstacleRecord solid = obstacleAt(o);
+        if (!covers(solid, r0)) continue;
+        vec3 normal;
+        x1 += solidExit(solid, r0, dim, params.margin, normal);
+        if (dim == 2u) x1.z = 0.0;
+        if (r.inertial == 0u) continue;
+        const vec3 r1 = obstacleOffset(solid, x1, dim, boxLength(), params.boundary);
+        const float into = dot(v1 - materialVelocity(solid, r1), normal);
+        if (into < 0.0) v1 -= into * normal;
+    }
+    finish(i, starts[slot].xyz, x1, v1, r, stored.w);
+}
+
+void main() {
+    if (stage == PARTICLE_STEP_ARGS) {
+        if (gl_GlobalInvocationID.x == 0u)
+            solidGroups = uint[3](min((nearCount + 63u) / 64u, params.maxGroups), 1u, 1u);
+        return;
+    }
+    if (stage == PARTICLE_STEP_SOLIDS) {
+        const uint stride = gl_NumWorkGroups.x * gl_WorkGroupSize.x;
+        for (uint slot = gl_GlobalInvocationID.x; slot < nearCount; slot += stride) solidsStage(slot);
+        return;
+    }
+    const uint i = params.first + gl_GlobalInvocationID.x;
+    if (i < params.count) moveStage(i);
 }

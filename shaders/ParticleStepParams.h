@@ -9,6 +9,13 @@ namespace modeflow::shaders {
 using uint = std::uint32_t;
 #endif
 
+/* The stages of a step, the kernel's specialization constant 2. */
+#define PARTICLE_STEP_MOVE                                                                       \
+    0u                          /* every particle carried by the air; those then within reach of \
+                                   a solid listed, the rest finished */
+#define PARTICLE_STEP_ARGS 1u   /* one invocation: the solids stage's indirect dispatch arguments */
+#define PARTICLE_STEP_SOLIDS 2u /* the listed particles pushed out of solids, then finished */
+
 /* A set's response over the step (engine/simulation/ParticleMotion.h). */
 struct ParticleSetRecord {
     uint inertial; /* 0: a tracer */
@@ -34,7 +41,7 @@ struct ParticleStepParams {
     uint openSides; /* MacGrid::crossableSideBits: bit 2 axis + (0 low, 1 high), the air crosses
                        that side (open, or a wind's) and what it carries across leaves */
     float smokeSpacing[3];
-    uint pad2;
+    uint maxGroups; /* the device's maxComputeWorkGroupCount[0] */
 };
 
 #ifdef __cplusplus

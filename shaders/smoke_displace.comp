@@ -90,23 +90,31 @@ vec3 centreOf(ivec3 p) {
 }
 vec3 gridBox() { return vec3(params.cells[0], params.cells[1], params.cells[2]) * spacing(); }
 
-void coverStage(uint cell, ivec3 p) {
-    if (!isFluid(cell)) return;
-    const vec3 centre = centreOf(p);
+// The cover stage over one invocation's cells `p` (`count` of them, consecutive in the box):
+// solid by solid, each solid's record read once for all of them (every lane reads all of it
+// whichever branch it takes: per cell it cost as much as the test), the first covering solid
+// deciding as in the CPU reference.
+void coverStage(ivec3 p[SMOKE_DISPLACE_CELLS_PER_INVOCATION], uint count) {
+    uint open = 0u;  // bit i: cell i is fluid and no earlier solid covers it
+    uint cell[SMOKE_DISPLACE_CELLS_PER_INVOCATION];
+    for (uint i = 0u; i < SMOKE_DISPLACE_CELLS_PER_INVOCATION; ++i) {
+        cell[i] = uint(max(cellAt(p[i]), 0));  // the box lies on the grid once wrapped
+        if (i < count && isFluid(cell[i])) open |= 1u << i;
+    }
     for (uint o = 0u; o < params.obstacleCount; ++o) {
-        vec3 r;
-        if (!withinReachOf(params.firstRecord + o, centre, params.dim, gridBox(), params.periodic, r))
-            continue;
         const ObstacleRecord solid = obstacleAt(params.firstRecord + o);
-        if (covers(solid, r)) {
+        const uint word = (params.stamp << 8u) | o;
+        for (uint i = 0u; i < SMOKE_DISPLACE_CELLS_PER_INVOCATION; ++i) {
+            if ((open & (1u << i)) == 0u) continue;
+            const vec3 r = obstacleOffset(solid, centreOf(p[i]), params.dim, gridBox(), params.periodic);
+            if (dot(r, r) > solid.reach * solid.reach || !covers(solid, r)) continue;
+            open &= ~(1u << i);
             // Boxes may overlap: a cell a box before covered already is listed once. Only cells
             // holding something are listed: most covered cells were emptied by earlier substeps,
             // and pushing zeros adds nothing anywhere.
-            const uint word = (params.stamp << 8u) | o;
-            if (atomicExchange(cover[cell], word) != word &&
-                (fields[cell] != vec2(0.0) || other[cell] != vec2(0.0)))
-                covered[atomicAdd(coveredCount, 1u)] = cell;
-            return;
+            if (atomicExchange(cover[cell[i]], word) != word &&
+                (fields[cell[i]] != vec2(0.0) || other[cell[i]] != vec2(0.0)))
+                covered[atomicAdd(coveredCount, 1u)] = cell[i];
         }
     }
 }
@@ -194,9 +202,9 @@ void main() {
         const uint y = quotientOf(inPlane, params.boxCount[0]);
         uvec3 b = uvec3(inPlane - y * params.boxCount[0], y, z);
         const ivec3 boxFirst = ivec3(params.boxFirst[0], params.boxFirst[1], params.boxFirst[2]);
-        for (uint i = first; i < end; ++i) {
-            const ivec3 p = wrapped(boxFirst + ivec3(b));
-            coverStage(uint(cellAt(p)), p);  // the box lies on the grid once wrapped
+        ivec3 p[SMOKE_DISPLACE_CELLS_PER_INVOCATION];
+        for (uint i = 0u; i < SMOKE_DISPLACE_CELLS_PER_INVOCATION; ++i) {
+            p[i] = wrapped(boxFirst + ivec3(b));
             if (++b.x == params.boxCount[0]) {
                 b.x = 0u;
                 if (++b.y == params.boxCount[1]) {
@@ -205,6 +213,7 @@ void main() {
                 }
             }
         }
+        coverStage(p, end > first ? end - first : 0u);
         return;
     }
     const uint stride = gl_NumWorkGroups.x * gl_WorkGroupSize.x;

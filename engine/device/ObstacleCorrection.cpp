@@ -2,8 +2,6 @@
 
 #include <algorithm>
 #include <array>
-#include <cmath>
-#include <utility>
 // The generated headers use uint32_t without including <cstdint>.
 #include <cstdint>
 #include <string>
@@ -26,19 +24,6 @@ namespace {
 vulkan::DeviceBuffer zeros(const vulkan::VulkanContext& context, std::size_t count,
                            const char* name) {
     return vulkan::DeviceBuffer::fromValues<float>(context, std::vector<float>(count, 0.0f), name);
-}
-
-/// Cells [lo, hi] along `axis` of `grid`: clamped to it along a walled axis, the whole axis along
-/// a periodic one when they reach round it (else they may wrap: lo < 0 or hi ≥ n).
-std::pair<int, int> onAxis(const MacGrid& grid, int axis, double lo, double hi) {
-    const int n = grid.cells[axis];
-    const auto cell = [&](double x) {
-        return int(std::clamp(std::floor((x - grid.origin[axis]) / grid.spacing[axis]), -1e9, 1e9));
-    };
-    int first = cell(lo) - 1, last = cell(hi) + 1;
-    if (!grid.periodic[axis]) return {std::max(first, 0), std::min(last, n - 1)};
-    if (last - first + 1 >= n) return {0, n - 1};
-    return {first, last};
 }
 
 }  // namespace
@@ -76,30 +61,19 @@ void ObstacleCorrection::setObstacles(std::span<const MovingObstacle> obstacles,
                     std::to_string(maxVelocityRegions));
     requireLevelSets(obstacles);
     mLattices.update(obstacles);
+    std::vector<ObstaclePose> poses;
     std::vector<shaders::ObstacleRecord> records;
-    for (const MovingObstacle& obstacle : obstacles)
-        records.push_back(obstacleRecord(obstacle, obstacle.poseAt(t), mLattices));
+    for (const MovingObstacle& obstacle : obstacles) {
+        poses.push_back(obstacle.poseAt(t));
+        records.push_back(obstacleRecord(obstacle, poses.back(), mLattices));
+    }
     if (!records.empty()) mObstacles.upload<shaders::ObstacleRecord>(records);
     mObstacleCount = std::uint32_t(records.size());
     mKinds = solidKinds(obstacles);
-    // The union of the regions' reach spheres, centres brought into the box along periodic axes.
-    for (int a = 0; a < 3; ++a) {
-        mBoxFirst[a] = 0;
-        mBoxCount[a] = a < mGrid.dim ? 0 : 1;
-    }
-    for (int a = 0; a < mGrid.dim && !records.empty(); ++a) {
-        double lo = 0.0, hi = 0.0;
-        for (std::size_t r = 0; r < records.size(); ++r) {
-            double c = records[r].centre[a];
-            if (mGrid.periodic[a])
-                c -= mGrid.length(a) * std::floor((c - mGrid.origin[a]) / mGrid.length(a));
-            lo = r == 0 ? c - records[r].reach : std::min(lo, c - records[r].reach);
-            hi = r == 0 ? c + records[r].reach : std::max(hi, c + records[r].reach);
-        }
-        const auto [first, last] = onAxis(mGrid, a, lo, hi);
-        mBoxFirst[a] = first;
-        mBoxCount[a] = std::max(last - first + 1, 0);
-    }
+    // The cells the regions may cover: each one's shape box turned, within its reach (a
+    // torus's flat box, not its reach's ball, bounds the faces the mismatch walks).
+    mBox = displacementBox(obstacles, poses, mGrid);
+    for (int a = mGrid.dim; a < 3; ++a) mBox.count[a] = 1;
 }
 
 template <typename Project>
@@ -122,20 +96,21 @@ void ObstacleCorrection::recordWith(vulkan::CommandSequence& sequence,
     }
     // The box's faces per normal axis: one more position along the axis than cells, as many as
     // the axis has along a periodic axis the box goes round.
-    std::uint64_t total = 0;
+    constexpr std::uint64_t kFacesPerRun = OBSTACLE_MISMATCH_FACES_PER_INVOCATION;
+    std::uint64_t runs = 0;  // an invocation's faces
     for (int axis = 0; axis < 3; ++axis) {
         std::uint64_t faces = axis < mGrid.dim ? 1 : 0;
         for (int b = 0; b < 3; ++b) {
-            int count = mBoxCount[b];
+            int count = mBox.count[b];
             if (b == axis)
                 count = mGrid.periodic[b] ? std::min(count + 1, mGrid.cells[b]) : count + 1;
             params.boxCount[3 * axis + b] = std::uint32_t(count);
             faces *= std::uint64_t(count);
         }
         params.boxFaces[axis] = std::uint32_t(faces);
+        runs += (faces + kFacesPerRun - 1) / kFacesPerRun;
         // Onto the grid along a periodic axis (the shader then wraps by one length at most).
-        params.boxFirst[axis] = mGrid.wrap(axis, mBoxFirst[axis]);
-        total += faces;
+        params.boxFirst[axis] = mGrid.wrap(axis, mBox.first[axis]);
     }
     // The DOFs the box leaves out hold 0.
     sequence.fill(mMismatch, mMismatch.bytes(), 0u);
@@ -143,10 +118,10 @@ void ObstacleCorrection::recordWith(vulkan::CommandSequence& sequence,
         &faceField, &mObstacles, &mMismatch, &mLattices.buffer(), &mDofOfFace};
     const std::uint64_t perDispatch =
         std::uint64_t(mContext.properties().limits.maxComputeWorkGroupCount[0]) * 64;
-    for (std::uint64_t first = 0; first < total; first += perDispatch) {
+    for (std::uint64_t first = 0; first < runs; first += perDispatch) {
         params.first = std::uint32_t(first);
         sequence.dispatch(mMismatchKernels.with({mKinds}), mismatchBuffers, params,
-                          std::uint32_t((std::min(perDispatch, total - first) + 63) / 64));
+                          std::uint32_t((std::min(perDispatch, runs - first) + 63) / 64));
     }
     project();
     const std::array<const vulkan::DeviceBuffer*, 2> correctBuffers{&v, &mCorrection};

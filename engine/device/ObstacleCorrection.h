@@ -42,9 +42,9 @@ public:
     ///        level set.
     void setObstacles(std::span<const MovingObstacle> obstacles, double t);
 
-    /// The cells within reach of the obstacles set (their faces are those the mismatch reads;
-    /// along periodic axes the box may wrap).
-    CellBox cellBox() const { return {mBoxFirst, mBoxCount}; }
+    /// The cells the obstacles set may cover, with one around them (displacementBox: their
+    /// faces are those the mismatch reads; along periodic axes the box may wrap).
+    CellBox cellBox() const { return mBox; }
 
     /// Records v −= Ψᵀ⋆(mismatch of `faceField`) with the basis in `modes`; nothing without
     /// obstacles.
@@ -65,8 +65,8 @@ private:
     std::uint32_t mModeCount = 0;
     std::uint32_t mObstacleCount = 0;
     std::uint32_t mKinds = 0;  ///< solidKinds of the obstacles now
-    /// The cells within reach of a region now: first cell and count per axis (setObstacles).
-    std::array<int, 3> mBoxFirst{0, 0, 0}, mBoxCount{1, 1, 1};
+    CellBox mBox;              ///< cellBox(), set by setObstacles
+
     vulkan::DeviceBuffer mObstacles;
     vulkan::DeviceBuffer mDofOfFace;  ///< per grid face its DOF, OBSTACLE_NO_DOF for none
     vulkan::DeviceBuffer mMismatch;   ///< per DOF (DOF order)

@@ -54,6 +54,11 @@ ParticleAdvection::ParticleAdvection(const vulkan::VulkanContext& context, const
             "particle sets"),
       mPoses(context, std::size_t(maxObstacles) * sizeof(shaders::ObstacleRecord),
              "particle solids"),
+      mWork(context, 4 * sizeof(std::uint32_t), "particles near solids: work"),
+      mNear(context,
+            std::size_t(std::max<std::int64_t>(mEmission.capacity(), 1)) * sizeof(std::uint32_t),
+            "particles near solids"),
+      mStarts(context, vec4Bytes(mEmission.capacity()), "particles near solids: starts"),
       mLattices(context) {
     if (empty()) return;
     mMask.assign(fluidMask.begin(), fluidMask.end());
@@ -62,7 +67,7 @@ ParticleAdvection::ParticleAdvection(const vulkan::VulkanContext& context, const
                                  flat ? "particle_step_2d" : "particle_step_3d",
                                  flat ? std::span<const std::uint32_t>(particle_step_2d_spv)
                                       : std::span<const std::uint32_t>(particle_step_3d_spv),
-                                 7,
+                                 10,
                                  sizeof(shaders::ParticleStepParams),
                                  kWorkgroupSize,
                                  // Records as texels, lattices and mask as values, the
@@ -121,18 +126,27 @@ void ParticleAdvection::record(vulkan::CommandSequence& sequence, const SmokeSta
         params.smokeCells[a] = std::uint32_t(smoke.cells[a]);
         params.smokeSpacing[a] = float(smoke.spacing[a]);
     }
-    // Bindings 0-6 of shaders/ParticleStep.glsl.
-    const std::array<const vulkan::DeviceBuffer*, 7> buffers{
-        &mPoses,     &mLattices.buffer(), &state.mask(), &state.facePairs(),
-        &mPositions, &mVelocities,        &mSets};
+    // Bindings 0-9 of shaders/ParticleStep.glsl.
+    const std::array<const vulkan::DeviceBuffer*, 10> buffers{&mPoses,       &mLattices.buffer(),
+                                                              &state.mask(), &state.facePairs(),
+                                                              &mPositions,   &mVelocities,
+                                                              &mSets,        &mWork,
+                                                              &mNear,        &mStarts};
     const std::uint32_t maxGroups = mContext.properties().limits.maxComputeWorkGroupCount[0];
+    params.maxGroups = maxGroups;
     const std::uint32_t perDispatch = maxGroups * kWorkgroupSize;
-    const vulkan::ComputeKernel& kernel = mKernel->with({solidKinds(solids)});
+    const std::uint32_t kinds = solidKinds(solids);
+    if (!solids.empty()) sequence.fill(mWork, mWork.bytes(), 0u);
     for (std::uint32_t first = 0; first < mCount; first += perDispatch) {
         params.first = first;
         const std::uint32_t chunk = std::min(perDispatch, mCount - first);
-        sequence.dispatch(kernel, buffers, params, (chunk + kWorkgroupSize - 1) / kWorkgroupSize);
+        sequence.dispatch(mKernel->with({kinds, PARTICLE_STEP_MOVE}), buffers, params,
+                          (chunk + kWorkgroupSize - 1) / kWorkgroupSize);
     }
+    if (solids.empty()) return;
+    sequence.dispatch(mKernel->with({kinds, PARTICLE_STEP_ARGS}), buffers, params, 1);
+    sequence.dispatchIndirect(mKernel->with({kinds, PARTICLE_STEP_SOLIDS}), buffers, params, mWork,
+                              0);
 }
 
 Particles ParticleAdvection::particles() const {

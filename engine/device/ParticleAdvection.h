@@ -56,8 +56,11 @@ private:
     std::uint32_t mCount = 0;
     vulkan::DeviceBuffer mPositions, mVelocities;  ///< vec4 each: xyz, a position's w its set
     vulkan::DeviceBuffer mSets, mPoses;
+    /// The particles near a solid after the move stage (shaders/ParticleStep.glsl): the solids
+    /// stage's arguments and the list's length, the list, their starting points.
+    vulkan::DeviceBuffer mWork, mNear, mStarts;
     ObstacleLattices mLattices;
-    /// Of the grid's dimension, by solid kinds; none without sets.
+    /// Of the grid's dimension, by solid kinds and stage; none without sets.
     std::optional<vulkan::KernelVariants> mKernel;
     double mSetsDt = 0.0;  ///< the step the set records are for
 };

@@ -109,7 +109,7 @@ void requireDisplaceableMotion(std::span<const MovingObstacle> solids, double dt
 }
 
 CellBox displacementBox(std::span<const MovingObstacle> solids, std::span<const ObstaclePose> poses,
-                        const MacGrid& smokeGrid) {
+                        const MacGrid& grid) {
     CellBox box;
     if (solids.empty()) return box;
     std::array<int, 3> lo{0, 0, 0}, hi{0, 0, 0};  // inclusive, unwrapped
@@ -119,12 +119,15 @@ CellBox displacementBox(std::span<const MovingObstacle> solids, std::span<const 
     }
     for (std::size_t o = 0; o < solids.size(); ++o) {
         const auto [near, far] = coveredOffsets(solids[o], poses[o]);
-        for (int a = 0; a < smokeGrid.dim; ++a) {
-            const double h = smokeGrid.spacing[a];
+        for (int a = 0; a < grid.dim; ++a) {
+            const double h = grid.spacing[a];
+            // Its centre in the grid along a periodic axis (a path may go round it many times).
+            double centre = poses[o].centre[a] - grid.origin[a];
+            if (grid.periodic[a]) centre -= grid.length(a) * std::floor(centre / grid.length(a));
             // The cell centres it may cover, and one cell around them.
-            const double from = (poses[o].centre[a] + near[a] - smokeGrid.origin[a]) / h - 0.5;
-            const double to = (poses[o].centre[a] + far[a] - smokeGrid.origin[a]) / h - 0.5;
-            const double cells = smokeGrid.cells[a];
+            const double from = (centre + near[a]) / h - 0.5;
+            const double to = (centre + far[a]) / h - 0.5;
+            const double cells = grid.cells[a];
             lo[a] =
                 std::min(lo[a], int(std::clamp(std::floor(from) - 1.0, -2.0 * cells, 2.0 * cells)));
             hi[a] =
@@ -132,11 +135,11 @@ CellBox displacementBox(std::span<const MovingObstacle> solids, std::span<const 
         }
     }
     for (int a = 0; a < 3; ++a) {
-        const int n = smokeGrid.cells[a];
-        if (a >= smokeGrid.dim) {
+        const int n = grid.cells[a];
+        if (a >= grid.dim) {
             box.first[a] = 0;
             box.count[a] = n;
-        } else if (smokeGrid.periodic[a]) {
+        } else if (grid.periodic[a]) {
             box.first[a] = lo[a];
             box.count[a] = std::min(n, hi[a] - lo[a] + 1);
         } else {

@@ -48,10 +48,11 @@ struct CellBox {
     std::int64_t cellCount() const { return std::int64_t(count[0]) * count[1] * count[2]; }
 };
 
-/// The cells the solids at `poses` may cover — each solid's shape box in its own frame (a mesh's
-/// lattice), turned, within its reach — with one cell around them (where their smoke goes).
+/// The cells of `grid` the solids at `poses` may cover — each solid's shape box in its own frame
+/// (a mesh's lattice), turned, within its reach — with one cell around them (where their smoke
+/// goes; on the basis grid, the faces the obstacle mismatch walks).
 CellBox displacementBox(std::span<const MovingObstacle> solids, std::span<const ObstaclePose> poses,
-                        const MacGrid& smokeGrid);
+                        const MacGrid& grid);
 
 /// The cells to cover as boxes: displacementBox of all the solids, or one box each where those
 /// hold fewer cells together (solids far apart).

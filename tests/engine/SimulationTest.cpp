@@ -240,12 +240,25 @@ TEST_P(SimulationTest, TimingSamplesOnlyTheStepsAskedFor) {
     const FrameStats timed = device.advanceSteps(2);
     EXPECT_EQ(timed.timedSteps, 2);
     EXPECT_GT(timed.modalMs, 0.0);
+    // The same time by kernel: every dispatch named, the stages' sum.
+    double byKernel = 0.0;
+    for (const auto& [kernel, ms] : timed.kernelMs) byKernel += ms;
+    EXPECT_NEAR(byKernel,
+                timed.forcesMs + timed.modalMs + timed.reconstructionMs + timed.obstaclesMs +
+                    timed.advectionMs + timed.particlesMs,
+                1e-9 * byKernel);
+    EXPECT_EQ(timed.kernelMs.count(""), 0u);
+    EXPECT_EQ(timed.kernelMs.count("modal_update"), 0u);
+    EXPECT_TRUE(std::any_of(timed.kernelMs.begin(), timed.kernelMs.end(), [](const auto& k) {
+        return k.first.rfind("modal_update(", 0) == 0;
+    })) << "a variant is named with its specialization constants";
     device.setTiming(false);
     const FrameStats untimed = device.advanceSteps(3);
     EXPECT_EQ(untimed.steps, 3);
     EXPECT_EQ(untimed.timedSteps, 0);
     EXPECT_EQ(untimed.forcesMs + untimed.modalMs + untimed.reconstructionMs + untimed.advectionMs,
               0.0);
+    EXPECT_TRUE(untimed.kernelMs.empty());
     device.setTiming(true);
     EXPECT_EQ(device.advanceSteps(1).timedSteps, 1);
     expectNoValidationMessages();
@@ -1015,6 +1028,51 @@ TEST_P(SimulationTest, ParticlesFollowTheCpuReference) {
             EXPECT_GT(fastest, 0.1) << "the air moved them";
             // A step across a wall cell's edge may go either way in float and double.
             EXPECT_LE(apart, 6);
+        }
+        expectNoValidationMessages();
+    }
+}
+
+TEST_P(SimulationTest, ParticlesASolidPushesIntoTheWallSlideBackIntoTheFluid) {
+    // A ball sweeps tracers against the curved wall: those it pushes out past the wall slide
+    // from where they started the step (the device lists them near the solid and finishes them
+    // apart from the rest: shaders/ParticleStep.glsl), as on the CPU.
+    for (const RunInputs* run : {&hotDisk(), &hotBall()}) {
+        const int dim = run->scene.grid.dim;
+        SimulationSettings settings = run->settings;
+        ParticleSetSpec tracers;
+        tracers.region = testing::ball({0.8, 0.0, 0.0}, 0.15);
+        tracers.count = 400;
+        settings.particles = {tracers};
+        ObstacleSpec ball;
+        ball.radius = 0.2;
+        ball.path = {{0.0, {0.5, 0.0, 0.0}}, {0.2, {0.9, 0.0, 0.0}}};
+        settings.obstacles = {MovingObstacle{ball}};
+        {
+            device::Simulation device(context(), run->cache, *run->coefficients, settings,
+                                      run->smokeMask, true);
+            reference::Simulation cpu(run->cache, *run->coefficients, settings, run->smokeMask);
+            for (int frame = 0; frame < 2; ++frame) {
+                device.advanceFrame();
+                cpu.advanceFrame();
+            }
+            const Particles onDevice = device.particles(), expected = cpu.particles();
+            ASSERT_EQ(onDevice.size(), expected.size());
+            int apart = 0, movedByTheBall = 0;
+            for (std::size_t i = 0; i < expected.size(); ++i) {
+                double distance = 0.0;
+                for (int a = 0; a < 3; ++a)
+                    distance = std::max(distance, std::abs(onDevice.position[3 * i + a] -
+                                                           expected.position[3 * i + a]));
+                apart += distance > 1e-4 ? 1 : 0;
+                const Vec3 x{onDevice.position[3 * i], onDevice.position[3 * i + 1],
+                             onDevice.position[3 * i + 2]};
+                EXPECT_TRUE(inFluidCell(cpu.smokeGrid(), run->smokeMask, x))
+                    << dim << "D particle " << i << " at " << x[0] << ", " << x[1];
+                movedByTheBall += std::hypot(x[1], x[2]) > 0.15 ? 1 : 0;
+            }
+            EXPECT_GT(movedByTheBall, 20) << dim << "D: the ball swept them aside";
+            EXPECT_LE(apart, 8) << dim << "D";
         }
         expectNoValidationMessages();
     }
