@@ -169,6 +169,33 @@ TEST(SmokeDisplacement, SmokeOnAPeriodicSeamIsPushedAcrossIt) {
     EXPECT_GT(fields.density[std::size_t(grid.cellIndex(int((0.25 + 0.12) * 32) + 1, 16, 0))], 0.3);
 }
 
+TEST(SmokeDisplacement, ASolidLengthsAwayRoundAPeriodicAxisCoversWhereItWraps) {
+    // A path that has gone round the periodic square five times: the box of cells it may cover
+    // is where its centre wraps to, and the smoke there is still pushed out.
+    const MacGrid grid = unitGrid(2, 32, true);
+    const std::vector<MovingObstacle> solids{
+        ball(0.12, {{0.0, {5.85, -4.5, 0.0}}, {1.0, {6.25, -4.5, 0.0}}})};
+    const std::vector<MovingObstacle> wrapped{
+        ball(0.12, {{0.0, {0.85, 0.5, 0.0}}, {1.0, {1.25, 0.5, 0.0}}})};
+    for (const double t : {0.0, 0.4, 0.9}) {
+        const std::vector<ObstaclePose> far{solids[0].poseAt(t)}, near{wrapped[0].poseAt(t)};
+        const CellBox a = displacementBox(solids, far, grid), b = displacementBox(wrapped, near, grid);
+        for (int axis = 0; axis < 2; ++axis) {
+            EXPECT_EQ(grid.wrap(axis, a.first[axis]), grid.wrap(axis, b.first[axis])) << t;
+            EXPECT_EQ(a.count[axis], b.count[axis]) << t;
+        }
+    }
+    const std::vector<std::uint8_t> fluid(std::size_t(grid.cellCount()), 1);
+    reference::SmokeDisplacement displacement(grid, fluid);
+    SmokeFields fields = smokeOutside(grid, solids, 0.3, 0.0);
+    const double before = total(fields.density);
+    for (int step = 0; step < 10; ++step) {
+        displacement.step(solids, step * 0.05, 0.05, fields);
+        ASSERT_EQ(maxCovered(grid, solids, fields.density, (step + 1) * 0.05), 0.0) << step;
+    }
+    EXPECT_NEAR(total(fields.density), before, 1e-12 * before);
+}
+
 TEST(SmokeDisplacement, AStillSolidPushesSmokeThatReachedItOutward) {
     // Smoke in the outer cells of a still ball (as advection leaves it) goes to the cells beside
     // them, outward; the outside of the ball gains exactly what the inside held.
