@@ -2,12 +2,15 @@
    CPU reference engine/reference/ParticleAdvection.cpp; host side
    engine/device/ParticleAdvection.cpp), in stages (a specialization constant):
      move:   one invocation a particle: carried by the air; a particle then within reach of a
-             solid is stored as it is, with its start, and listed; the others are finished (open
-             sides, the box, sliding along walls);
-     args:   one invocation: the solids stage's indirect dispatch arguments;
-     solids: over the list: pushed out of the solids, then finished.
+             solid is stored as it is, with its start, and listed as near; the others are
+             finished (open sides, the box, sliding along walls);
+     args:   one invocation: the next stage's indirect dispatch arguments;
+     near:   over the near list: a particle some solid covers is listed as inside, the others
+             finished;
+     inside: over the inside list: pushed out of the solids, in order, then finished.
    lavapipe runs both sides of every branch: with the solids in the move stage every particle
-   paid for the mesh exit's Newton steps, where the few near a solid need them.
+   paid for the cover test and the mesh exit's Newton steps, which only the few near a solid,
+   and fewer in one, need.
    The includer defines MAC_DIM (2 or 3). The velocity is the basis grid's face field as
    x-neighbour pairs (smoke_face_pairs.comp, written by the step's smoke advection from the same
    velocity). */
@@ -26,13 +29,16 @@ layout(set = 0, binding = 3) uniform usamplerBuffer facePairs;  // one pair a wo
 layout(std430, set = 0, binding = 4) buffer Positions { vec4 positions[]; };  // xyz, w: set
 layout(std430, set = 0, binding = 5) buffer Velocities { vec4 velocities[]; };
 layout(std430, set = 0, binding = 6) readonly buffer Sets { ParticleSetRecord sets[]; };
-// The solids stage's dispatch arguments (x, y, z), then the list's length.
+// The near and inside stages' dispatch arguments (x, y, z), each followed by its list's length.
 layout(std430, set = 0, binding = 7) buffer Work {
-    uint solidGroups[3];
+    uint nearGroups[3];
     uint nearCount;
+    uint insideGroups[3];
+    uint insideCount;
 };
-layout(std430, set = 0, binding = 8) buffer Near { uint near[]; };    // particles near a solid
+layout(std430, set = 0, binding = 8) buffer Near { uint near[]; };  // particles near a solid
 layout(std430, set = 0, binding = 9) buffer Starts { vec4 starts[]; };  // their starting points
+layout(std430, set = 0, binding = 10) buffer Inside { uint inside[]; };  // their near slots
 layout(push_constant) uniform Push { ParticleStepParams params; };
 
 vec2 macFacePair(uint face) { return uintBitsToFloat(texelFetch(facePairs, int(face)).xy); }
@@ -150,8 +156,28 @@ void moveStage(uint i) {
     velocities[i] = vec4(v1, 0.0);
 }
 
-// A listed particle pushed out of each solid covering it, in order, then finished.
-void solidsStage(uint slot) {
+// A near particle (its slot in the near list) some solid covers is listed as inside; the
+// others are finished where the air took them.
+void nearStage(uint slot) {
+    const uint i = near[slot];
+    const vec4 stored = positions[i];
+    const vec3 x1 = stored.xyz;
+    bool covered = false;
+    for (uint o = 0u; o < params.obstacleCount; ++o) {
+        vec3 r0;
+        if (withinReachOf(o, x1, uint(MAC_DIM), boxLength(), params.boundary, r0))
+            covered = covers(obstacleAt(o), r0) || covered;
+    }
+    // Covered by none, no solid pushes it (each push starts from a solid covering it).
+    if (covered)
+        inside[atomicAdd(insideCount, 1u)] = slot;
+    else
+        finish(i, starts[slot].xyz, x1, velocities[i].xyz, sets[floatBitsToUint(stored.w)], stored.w);
+}
+
+// A particle inside a solid (its slot in the near list) pushed out of each solid covering it,
+// in order, then finished.
+void insideStage(uint slot) {
     const uint i = near[slot];
     const vec4 stored = positions[i];
     vec3 x1 = stored.xyz;
@@ -174,15 +200,23 @@ void solidsStage(uint slot) {
     finish(i, starts[slot].xyz, x1, v1, r, stored.w);
 }
 
+uint groupsFor(uint count) { return min((count + 63u) / 64u, params.maxGroups); }
+
 void main() {
     if (stage == PARTICLE_STEP_ARGS) {
-        if (gl_GlobalInvocationID.x == 0u)
-            solidGroups = uint[3](min((nearCount + 63u) / 64u, params.maxGroups), 1u, 1u);
+        if (gl_GlobalInvocationID.x == 0u) {
+            nearGroups = uint[3](groupsFor(nearCount), 1u, 1u);
+            insideGroups = uint[3](groupsFor(insideCount), 1u, 1u);
+        }
         return;
     }
-    if (stage == PARTICLE_STEP_SOLIDS) {
-        const uint stride = gl_NumWorkGroups.x * gl_WorkGroupSize.x;
-        for (uint slot = gl_GlobalInvocationID.x; slot < nearCount; slot += stride) solidsStage(slot);
+    const uint stride = gl_NumWorkGroups.x * gl_WorkGroupSize.x;
+    if (stage == PARTICLE_STEP_NEAR) {
+        for (uint k = gl_GlobalInvocationID.x; k < nearCount; k += stride) nearStage(k);
+        return;
+    }
+    if (stage == PARTICLE_STEP_INSIDE) {
+        for (uint k = gl_GlobalInvocationID.x; k < insideCount; k += stride) insideStage(inside[k]);
         return;
     }
     const uint i = params.first + gl_GlobalInvocationID.x;

@@ -10,11 +10,15 @@ using uint = std::uint32_t;
 #endif
 
 /* The stages of a step, the kernel's specialization constant 2. */
-#define PARTICLE_STEP_MOVE                                                                       \
-    0u                          /* every particle carried by the air; those then within reach of \
-                                   a solid listed, the rest finished */
-#define PARTICLE_STEP_ARGS 1u   /* one invocation: the solids stage's indirect dispatch arguments */
-#define PARTICLE_STEP_SOLIDS 2u /* the listed particles pushed out of solids, then finished */
+/* every particle carried by the air; those then within reach of a solid listed, the rest
+   finished */
+#define PARTICLE_STEP_MOVE 0u
+/* one invocation: the next stages' indirect dispatch arguments from the lists' lengths */
+#define PARTICLE_STEP_ARGS 1u
+/* the particles near a solid: those in one listed, the rest finished */
+#define PARTICLE_STEP_NEAR 2u
+/* the particles in a solid pushed out of the solids, then finished */
+#define PARTICLE_STEP_INSIDE 3u
 
 /* A set's response over the step (engine/simulation/ParticleMotion.h). */
 struct ParticleSetRecord {

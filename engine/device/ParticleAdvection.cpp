@@ -19,6 +19,11 @@ namespace {
 
 constexpr std::uint32_t kWorkgroupSize = 64;
 
+/// Bytes of `count` 32-bit words (at least one).
+std::size_t wordBytes(std::int64_t count) {
+    return std::size_t(std::max<std::int64_t>(count, 1)) * sizeof(std::uint32_t);
+}
+
 /// Bytes of `count` vec4s (at least one).
 std::size_t vec4Bytes(std::int64_t count) {
     return std::size_t(std::max<std::int64_t>(count, 1)) * 4 * sizeof(float);
@@ -54,11 +59,10 @@ ParticleAdvection::ParticleAdvection(const vulkan::VulkanContext& context, const
             "particle sets"),
       mPoses(context, std::size_t(maxObstacles) * sizeof(shaders::ObstacleRecord),
              "particle solids"),
-      mWork(context, 4 * sizeof(std::uint32_t), "particles near solids: work"),
-      mNear(context,
-            std::size_t(std::max<std::int64_t>(mEmission.capacity(), 1)) * sizeof(std::uint32_t),
-            "particles near solids"),
+      mWork(context, 8 * sizeof(std::uint32_t), "particles near solids: work"),
+      mNear(context, wordBytes(mEmission.capacity()), "particles near solids"),
       mStarts(context, vec4Bytes(mEmission.capacity()), "particles near solids: starts"),
+      mInside(context, wordBytes(mEmission.capacity()), "particles in solids"),
       mLattices(context) {
     if (empty()) return;
     mMask.assign(fluidMask.begin(), fluidMask.end());
@@ -67,7 +71,7 @@ ParticleAdvection::ParticleAdvection(const vulkan::VulkanContext& context, const
                                  flat ? "particle_step_2d" : "particle_step_3d",
                                  flat ? std::span<const std::uint32_t>(particle_step_2d_spv)
                                       : std::span<const std::uint32_t>(particle_step_3d_spv),
-                                 10,
+                                 11,
                                  sizeof(shaders::ParticleStepParams),
                                  kWorkgroupSize,
                                  // Records as texels, lattices and mask as values, the
@@ -126,12 +130,13 @@ void ParticleAdvection::record(vulkan::CommandSequence& sequence, const SmokeSta
         params.smokeCells[a] = std::uint32_t(smoke.cells[a]);
         params.smokeSpacing[a] = float(smoke.spacing[a]);
     }
-    // Bindings 0-9 of shaders/ParticleStep.glsl.
-    const std::array<const vulkan::DeviceBuffer*, 10> buffers{&mPoses,       &mLattices.buffer(),
+    // Bindings 0-10 of shaders/ParticleStep.glsl.
+    const std::array<const vulkan::DeviceBuffer*, 11> buffers{&mPoses,       &mLattices.buffer(),
                                                               &state.mask(), &state.facePairs(),
                                                               &mPositions,   &mVelocities,
                                                               &mSets,        &mWork,
-                                                              &mNear,        &mStarts};
+                                                              &mNear,        &mStarts,
+                                                              &mInside};
     const std::uint32_t maxGroups = mContext.properties().limits.maxComputeWorkGroupCount[0];
     params.maxGroups = maxGroups;
     const std::uint32_t perDispatch = maxGroups * kWorkgroupSize;
@@ -144,9 +149,13 @@ void ParticleAdvection::record(vulkan::CommandSequence& sequence, const SmokeSta
                           (chunk + kWorkgroupSize - 1) / kWorkgroupSize);
     }
     if (solids.empty()) return;
-    sequence.dispatch(mKernel->with({kinds, PARTICLE_STEP_ARGS}), buffers, params, 1);
-    sequence.dispatchIndirect(mKernel->with({kinds, PARTICLE_STEP_SOLIDS}), buffers, params, mWork,
+    const vulkan::ComputeKernel& arguments = mKernel->with({kinds, PARTICLE_STEP_ARGS});
+    sequence.dispatch(arguments, buffers, params, 1);
+    sequence.dispatchIndirect(mKernel->with({kinds, PARTICLE_STEP_NEAR}), buffers, params, mWork,
                               0);
+    sequence.dispatch(arguments, buffers, params, 1);
+    sequence.dispatchIndirect(mKernel->with({kinds, PARTICLE_STEP_INSIDE}), buffers, params, mWork,
+                              4 * sizeof(std::uint32_t));
 }
 
 Particles ParticleAdvection::particles() const {

@@ -56,9 +56,10 @@ private:
     std::uint32_t mCount = 0;
     vulkan::DeviceBuffer mPositions, mVelocities;  ///< vec4 each: xyz, a position's w its set
     vulkan::DeviceBuffer mSets, mPoses;
-    /// The particles near a solid after the move stage (shaders/ParticleStep.glsl): the solids
-    /// stage's arguments and the list's length, the list, their starting points.
-    vulkan::DeviceBuffer mWork, mNear, mStarts;
+    /// The particles near a solid after the move stage, and those of them in one
+    /// (shaders/ParticleStep.glsl): the next stages' arguments and the lists' lengths, the near
+    /// list, their starting points, the inside list (of near slots).
+    vulkan::DeviceBuffer mWork, mNear, mStarts, mInside;
     ObstacleLattices mLattices;
     /// Of the grid's dimension, by solid kinds and stage; none without sets.
     std::optional<vulkan::KernelVariants> mKernel;

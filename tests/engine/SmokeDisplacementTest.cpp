@@ -179,7 +179,8 @@ TEST(SmokeDisplacement, ASolidLengthsAwayRoundAPeriodicAxisCoversWhereItWraps) {
         ball(0.12, {{0.0, {0.85, 0.5, 0.0}}, {1.0, {1.25, 0.5, 0.0}}})};
     for (const double t : {0.0, 0.4, 0.9}) {
         const std::vector<ObstaclePose> far{solids[0].poseAt(t)}, near{wrapped[0].poseAt(t)};
-        const CellBox a = displacementBox(solids, far, grid), b = displacementBox(wrapped, near, grid);
+        const CellBox a = displacementBox(solids, far, grid),
+                      b = displacementBox(wrapped, near, grid);
         for (int axis = 0; axis < 2; ++axis) {
             EXPECT_EQ(grid.wrap(axis, a.first[axis]), grid.wrap(axis, b.first[axis])) << t;
             EXPECT_EQ(a.count[axis], b.count[axis]) << t;
