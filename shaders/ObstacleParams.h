@@ -15,9 +15,6 @@ using uint = std::uint32_t;
 #define OBSTACLE_CAPSULE 2u
 #define OBSTACLE_MESH 3u
 #define OBSTACLE_RIGID 0xffffffffu
-/* obstacle_mismatch.comp's faces per invocation, consecutive along one normal axis's part of the
-   box: each obstacle's record is read once for all of them. */
-#define OBSTACLE_MISMATCH_FACES_PER_INVOCATION 8u
 /* obstacle_mismatch.comp's DOF of a face that is none. */
 #define OBSTACLE_NO_DOF 0xffffffffu
 /* The solid kinds a kernel is compiled for (engine/device/SolidKernels.h): bit 1 << shape for
@@ -50,7 +47,7 @@ struct ObstacleRecord {
 /* obstacle_mismatch.comp walks the faces of a box of cells around the regions (its faces along
    each normal axis), not every face of the grid. */
 struct ObstacleMismatchParams {
-    uint boxFaces[3]; /* faces of the box per normal axis */
+    uint boxLines[3]; /* lines of faces along x of the box per normal axis (an invocation each) */
     uint obstacleCount;
     uint cells[3];
     uint dim;

@@ -166,6 +166,49 @@ bool covers(ObstacleRecord o, vec3 r) {
     return dot(d, d) <= o.radius * o.radius;
 }
 
+// The least and greatest corners of the obstacle's shape box in its own frame, world units (a
+// mesh's lattice scaled, a box's, a capsule's or a ball's): it covers no point beyond it.
+void shapeBox(ObstacleRecord o, out vec3 lo, out vec3 hi) {
+    hi = vec3(o.radius);
+    if (mayHoldShape(OBSTACLE_CAPSULE) && o.shape == OBSTACLE_CAPSULE) hi = abs(v3(o.axis)) + o.radius;
+    if (mayHoldShape(OBSTACLE_BOX) && o.shape == OBSTACLE_BOX) hi = v3(o.halfSize);
+    lo = -hi;
+    if (mayHoldShape(OBSTACLE_MESH) && o.shape == OBSTACLE_MESH) {
+        const vec3 samples = vec3(o.latticeSamples[0], o.latticeSamples[1], o.latticeSamples[2]);
+        lo = o.scale * v3(o.latticeOrigin);
+        hi = lo + o.scale * o.latticeSpacing * (samples - 1.0);
+    }
+}
+
+// The positions k in [0, count) of the points `start` + k `step` (a line of cell or face centres
+// along x, k in cells; `start` at offset `r0` from the obstacle's centre, minimumImage) that the
+// obstacle may cover: those within its reach and its turned shape box, with one position of slack
+// on each side for rounding (the covers test decides each). Empty: x > y. A kernel that loops over
+// these instead of the whole line runs, on lavapipe, as long as the longest line of its lanes.
+ivec2 lineSpan(ObstacleRecord o, vec3 r0, float step, int count) {
+    float t0 = 0.0, t1 = float(count - 1);
+    // Within reach: |r0 + t step x| <= reach, a quadratic in t.
+    const float mid = r0.x / step;
+    const float disc = mid * mid - (dot(r0, r0) - o.reach * o.reach) / (step * step);
+    if (disc < 0.0) return ivec2(1, 0);
+    t0 = max(t0, -mid - sqrt(disc));
+    t1 = min(t1, -mid + sqrt(disc));
+    // Within the shape box: lo <= q0 + t dq <= hi, axis by axis of its own frame.
+    vec3 lo, hi;
+    shapeBox(o, lo, hi);
+    const vec3 q0 = intoShapeFrame(o, r0), dq = intoShapeFrame(o, vec3(step, 0.0, 0.0));
+    for (int k = 0; k < 3; ++k) {
+        const bool across = abs(dq[k]) > 1e-6 * step;
+        const float a = (lo[k] - step - q0[k]) / (across ? dq[k] : 1.0);
+        const float b = (hi[k] + step - q0[k]) / (across ? dq[k] : 1.0);
+        const bool outside = q0[k] < lo[k] - step || q0[k] > hi[k] + step;
+        t0 = across ? max(t0, min(a, b)) : t0;
+        t1 = across ? min(t1, max(a, b)) : (outside ? -1.0 : t1);
+    }
+    if (t1 < t0) return ivec2(1, 0);
+    return ivec2(max(int(floor(t0)) - 1, 0), min(int(ceil(t1)) + 1, count - 1));
+}
+
 // Where `r` (from the centre, covered) leaves the solid, `margin` past its surface, and the
 // outward normal there, both in the world frame (engine/simulation/SolidExit.cpp): the nearest
 // surface point of a ball, box or capsule; Newton steps down a mesh's depth gradient (its

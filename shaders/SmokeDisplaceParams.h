@@ -18,9 +18,6 @@ using uint = std::uint32_t;
 #define SMOKE_DISPLACE_STASH                                           \
     4u /* covered cells: a second pair's values stashed, then 0, to go \
           where the push sent the first pair's (its target words) */
-/* The cover stage's cells per invocation, consecutive in the box: on lavapipe an invocation
-   costs about 20 ns before it does anything, as much as testing a cell against a solid. */
-#define SMOKE_DISPLACE_CELLS_PER_INVOCATION 8u
 /* A target word's low byte when a covered cell has no free neighbour: its smoke is removed. */
 #define SMOKE_DISPLACE_NOWHERE 255u
 /* A free cell's target word's low byte once it is listed to receive smoke in the substep. */
@@ -28,7 +25,7 @@ using uint = std::uint32_t;
 
 struct SmokeDisplaceParams {
     int boxFirst[3]; /* the box's first cell; wraps along periodic axes */
-    uint boxCells;   /* its cell count, the invocations */
+    uint boxCells;   /* its cell count */
     uint boxCount[3];
     uint dim;
     uint cells[3]; /* the smoke grid */
@@ -39,7 +36,8 @@ struct SmokeDisplaceParams {
     uint firstRecord; /* this substep's first obstacle record */
     uint obstacleCount;
     float dt;
-    uint firstInvocation; /* of this dispatch, when a box needs several */
+    uint firstInvocation; /* of this dispatch (the cover's: its first line), when a box needs
+                             several */
     uint maxGroups;       /* the device's maxComputeWorkGroupCount[0] */
 };
 

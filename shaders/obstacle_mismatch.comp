@@ -6,10 +6,10 @@
 // written at the face's DOF (DOF order, filled with 0 before; faces that are not DOFs are
 // skipped). The projection (project_force.comp or the separable passes, face-field weights: the
 // exact inverse of the reconstruction) reads it as it is, with no gather over the whole grid,
-// and modal_correct.comp subtracts the result from v. One invocation per run of
-// OBSTACLE_MISMATCH_FACES_PER_INVOCATION faces along one normal axis of the box of cells around
-// the regions (the host's ObstacleCorrection: no face beyond it is in any region's reach), faces
-// that are no DOF (walls) skipped; the first covering obstacle decides. Along periodic
+// and modal_correct.comp subtracts the result from v. One invocation per line of faces
+// along x, for each normal axis, of the box of cells around the regions (the host's
+// ObstacleCorrection: no face beyond it is in any region's reach), each region tested on the part
+// of the line it may cover (lineSpan), faces that are no DOF (walls) skipped; the first covering obstacle decides. Along periodic
 // axes an obstacle covers at the minimum-image offset (it reaches over the seam), and the box
 // wraps.
 #extension GL_GOOGLE_include_directive : require
@@ -28,72 +28,52 @@ layout(set = 0, binding = 4) uniform usamplerBuffer dofOfFace;       // OBSTACLE
 layout(push_constant) uniform Push { ObstacleMismatchParams params; };
 #include "ObstacleShape.glsl"
 
-// The invocations' runs of faces along one normal axis's part of the box.
-uint runsOf(uint axis) {
-    return (params.boxFaces[axis] + OBSTACLE_MISMATCH_FACES_PER_INVOCATION - 1u) /
-           OBSTACLE_MISMATCH_FACES_PER_INVOCATION;
+// The centre of the normal-`axis` face at the low side of cell `p`.
+vec3 faceCentre(ivec3 p, uint axis) {
+    vec3 c = v3(params.origin) + (vec3(p) + vec3(0.5)) * v3(params.spacing);
+    c[axis] -= 0.5 * params.spacing[axis];
+    if (params.dim == 2u) c.z = 0.0;
+    return c;
 }
 
 void main() {
-    uint run = params.first + gl_GlobalInvocationID.x;
+    uint line = params.first + gl_GlobalInvocationID.x;
     uint axis = 0u;
-    while (axis < 2u && run >= runsOf(axis)) run -= runsOf(axis++);
-    if (run >= runsOf(axis)) return;
-    const uint first = OBSTACLE_MISMATCH_FACES_PER_INVOCATION * run;
-    const uint count = min(OBSTACLE_MISMATCH_FACES_PER_INVOCATION, params.boxFaces[axis] - first);
-    const uvec3 boxCount = uvec3(params.boxCount[3u * axis], params.boxCount[3u * axis + 1u],
-                                 params.boxCount[3u * axis + 2u]);
-    // The first face's place in the box, the next ones' by counting on (integer division is a
-    // loop over the lanes on lavapipe).
-    const uint z = quotientOf(first, boxCount.x * boxCount.y), inPlane = first - z * boxCount.x * boxCount.y;
-    const uint y = quotientOf(inPlane, boxCount.x);
-    uvec3 b = uvec3(inPlane - y * boxCount.x, y, z);
+    while (axis < 2u && line >= params.boxLines[axis]) line -= params.boxLines[axis++];
+    if (line >= params.boxLines[axis]) return;
+    const uint z = quotientOf(line, params.boxCount[3u * axis + 1u]);
+    const uint y = line - z * params.boxCount[3u * axis + 1u];
+    const int count = int(params.boxCount[3u * axis]);
     const uvec3 cells = uvec3(params.cells[0], params.cells[1], params.cells[2]);
     // A side's faces are DOFs where it is open (a jet through it); walls are none.
     uvec3 extent = cells;
     if ((params.periodic & (1u << axis)) == 0u) extent[axis] += 1u;
     const uint start = axis == 0u ? 0u : (axis == 1u ? params.faceStart1 : params.faceStart2);
     const vec3 box = vec3(cells) * v3(params.spacing);
-    uint face[OBSTACLE_MISMATCH_FACES_PER_INVOCATION];
-    uint dof[OBSTACLE_MISMATCH_FACES_PER_INVOCATION];
-    vec3 centre[OBSTACLE_MISMATCH_FACES_PER_INVOCATION];
-    float value[OBSTACLE_MISMATCH_FACES_PER_INVOCATION];
-    uint open = 0u;  // bit i: face i is a DOF no earlier obstacle covers
-    for (uint i = 0u; i < OBSTACLE_MISMATCH_FACES_PER_INVOCATION; ++i) {
-        ivec3 p = ivec3(params.boxFirst[0], params.boxFirst[1], params.boxFirst[2]) + ivec3(b);
-        // The box starts on the grid and is at most a grid long: one length back along
-        // periodic axes at most (a select: lavapipe runs both sides of a branch).
-        for (uint a = 0u; a < 3u; ++a)
-            p[a] -= (params.periodic & (1u << a)) != 0u && p[a] >= int(cells[a]) ? int(cells[a]) : 0;
-        face[i] = start + (uint(p.z) * extent.y + uint(p.y)) * extent.x + uint(p.x);
-        dof[i] = i < count ? texelFetch(dofOfFace, int(face[i])).x : OBSTACLE_NO_DOF;
-        if (dof[i] != OBSTACLE_NO_DOF) open |= 1u << i;
-        centre[i] = v3(params.origin) + (vec3(p) + vec3(0.5)) * v3(params.spacing);
-        centre[i][axis] -= 0.5 * params.spacing[axis];
-        if (params.dim == 2u) centre[i].z = 0.0;
-        value[i] = 0.0;
-        if (++b.x == boxCount.x) {
-            b.x = 0u;
-            if (++b.y == boxCount.y) {
-                b.y = 0u;
-                ++b.z;
-            }
-        }
-    }
-    // Obstacle by obstacle, its record read once for the run (every lane reads all of it
-    // whichever branch it takes: per face it cost as much as the test); the first covering
-    // obstacle decides.
-    for (uint o = 0u; o < params.obstacleCount; ++o) {
+    const ivec3 lineFirst = ivec3(params.boxFirst[0], params.boxFirst[1] + int(y), params.boxFirst[2] + int(z));
+    // Along a periodic x the line may wrap: every face of it is tested.
+    const bool periodicX = (params.periodic & 1u) != 0u;
+    // Obstacle by obstacle, last first, over the faces it may cover (lineSpan): the first
+    // covering obstacle's value is written last, and stands.
+    for (uint o = params.obstacleCount; o-- > 0u;) {
         const ObstacleRecord record = obstacleAt(o);
-        for (uint i = 0u; i < OBSTACLE_MISMATCH_FACES_PER_INVOCATION; ++i) {
-            if ((open & (1u << i)) == 0u) continue;
-            const vec3 r = obstacleOffset(record, centre[i], params.dim, box, params.periodic);
+        ivec2 span = ivec2(0, count - 1);
+        if (!periodicX)
+            span = lineSpan(record, obstacleOffset(record, faceCentre(lineFirst, axis), params.dim, box, params.periodic),
+                            params.spacing[0], count);
+        for (int x = span.x; x <= span.y; ++x) {
+            ivec3 p = lineFirst + ivec3(x, 0, 0);
+            // The box starts on the grid and is at most a grid long: one length back along
+            // periodic axes at most (a select: lavapipe runs both sides of a branch).
+            for (uint a = 0u; a < 3u; ++a)
+                p[a] -= (params.periodic & (1u << a)) != 0u && p[a] >= int(cells[a]) ? int(cells[a]) : 0;
+            const uint face = start + (uint(p.z) * extent.y + uint(p.y)) * extent.x + uint(p.x);
+            const uint dof = texelFetch(dofOfFace, int(face)).x;
+            if (dof == OBSTACLE_NO_DOF) continue;
+            const vec3 r = obstacleOffset(record, faceCentre(p, axis), params.dim, box, params.periodic);
             if (dot(r, r) > record.reach * record.reach || !covers(record, r)) continue;
-            open &= ~(1u << i);
             const vec3 solid = materialVelocity(record, r);
-            value[i] = uintBitsToFloat(texelFetch(velocity, int(face[i])).x) - solid[axis];
+            mismatch[dof] = uintBitsToFloat(texelFetch(velocity, int(face)).x) - solid[axis];
         }
     }
-    for (uint i = 0u; i < OBSTACLE_MISMATCH_FACES_PER_INVOCATION; ++i)
-        if (dof[i] != OBSTACLE_NO_DOF) mismatch[dof[i]] = value[i];
 }

@@ -2,7 +2,8 @@
 // Smoke pushed out of solids, one substep's stage (rule and reasons: engine/simulation/
 // SmokeDisplacement.h; CPU reference engine/reference/SmokeDisplacement.cpp; host side
 // engine/device/SmokeDisplacement.cpp), the stage a specialization constant:
-//   cover:  over every cell of the box around the solids (or of a box each): which solid (the
+//   cover:  over the box around the solids (or a box each), one invocation a line of cells
+//           along x, each solid tested on the part of the line it may reach: which solid (the
 //           first) covers each fluid cell, cover word = stamp << 8 | solid; covered cells holding
 //           anything go to a list, once each;
 //   args:   one invocation: the indirect dispatch arguments of the lists' stages;
@@ -90,31 +91,30 @@ vec3 centreOf(ivec3 p) {
 }
 vec3 gridBox() { return vec3(params.cells[0], params.cells[1], params.cells[2]) * spacing(); }
 
-// The cover stage over one invocation's cells `p` (`count` of them, consecutive in the box):
-// solid by solid, each solid's record read once for all of them (every lane reads all of it
-// whichever branch it takes: per cell it cost as much as the test), the first covering solid
-// deciding as in the CPU reference.
-void coverStage(ivec3 p[SMOKE_DISPLACE_CELLS_PER_INVOCATION], uint count) {
-    uint open = 0u;  // bit i: cell i is fluid and no earlier solid covers it
-    uint cell[SMOKE_DISPLACE_CELLS_PER_INVOCATION];
-    for (uint i = 0u; i < SMOKE_DISPLACE_CELLS_PER_INVOCATION; ++i) {
-        cell[i] = uint(max(cellAt(p[i]), 0));  // the box lies on the grid once wrapped
-        if (i < count && isFluid(cell[i])) open |= 1u << i;
-    }
-    for (uint o = 0u; o < params.obstacleCount; ++o) {
+// The cover stage over the box's line of cells along x at box position (y, z): solid by solid,
+// last first, over the cells it may cover (lineSpan), each covered fluid cell's word written with
+// the solid's number: the first covering solid writes last, and decides, as in the CPU reference.
+// A cell is listed when first stamped in the substep (boxes may overlap), if it holds something:
+// most covered cells were emptied by earlier substeps, and pushing zeros adds nothing anywhere.
+void coverStage(uint y, uint z) {
+    const ivec3 lineFirst = ivec3(params.boxFirst[0], params.boxFirst[1] + int(y), params.boxFirst[2] + int(z));
+    const int count = int(params.boxCount[0]);
+    // Along a periodic x the line may wrap: every cell of it is tested.
+    const bool periodicX = (params.periodic & 1u) != 0u;
+    for (uint o = params.obstacleCount; o-- > 0u;) {
         const ObstacleRecord solid = obstacleAt(params.firstRecord + o);
+        const vec3 r0 = obstacleOffset(solid, centreOf(wrapped(lineFirst)), params.dim, gridBox(), params.periodic);
+        const ivec2 span = periodicX ? ivec2(0, count - 1) : lineSpan(solid, r0, params.spacing[0], count);
         const uint word = (params.stamp << 8u) | o;
-        for (uint i = 0u; i < SMOKE_DISPLACE_CELLS_PER_INVOCATION; ++i) {
-            if ((open & (1u << i)) == 0u) continue;
-            const vec3 r = obstacleOffset(solid, centreOf(p[i]), params.dim, gridBox(), params.periodic);
+        for (int x = span.x; x <= span.y; ++x) {
+            const ivec3 p = wrapped(lineFirst + ivec3(x, 0, 0));
+            const uint cell = uint(cellAt(p));  // the box lies on the grid once wrapped
+            if (!isFluid(cell)) continue;
+            const vec3 r = obstacleOffset(solid, centreOf(p), params.dim, gridBox(), params.periodic);
             if (dot(r, r) > solid.reach * solid.reach || !covers(solid, r)) continue;
-            open &= ~(1u << i);
-            // Boxes may overlap: a cell a box before covered already is listed once. Only cells
-            // holding something are listed: most covered cells were emptied by earlier substeps,
-            // and pushing zeros adds nothing anywhere.
-            if (atomicExchange(cover[cell[i]], word) != word &&
-                (fields[cell[i]] != vec2(0.0) || other[cell[i]] != vec2(0.0)))
-                covered[atomicAdd(coveredCount, 1u)] = cell[i];
+            if ((atomicExchange(cover[cell], word) >> 8u) != params.stamp &&
+                (fields[cell] != vec2(0.0) || other[cell] != vec2(0.0)))
+                covered[atomicAdd(coveredCount, 1u)] = cell;
         }
     }
 }
@@ -192,28 +192,10 @@ void main() {
         return;
     }
     if (stage == SMOKE_DISPLACE_COVER) {
-        const uint first =
-            SMOKE_DISPLACE_CELLS_PER_INVOCATION * (params.firstInvocation + gl_GlobalInvocationID.x);
-        const uint end = min(first + SMOKE_DISPLACE_CELLS_PER_INVOCATION, params.boxCells);
-        // The first cell's place in the box, then the next ones' by counting on (integer
-        // division is a loop over the lanes on lavapipe).
-        const uint plane = params.boxCount[0] * params.boxCount[1];
-        const uint z = quotientOf(first, plane), inPlane = first - z * plane;
-        const uint y = quotientOf(inPlane, params.boxCount[0]);
-        uvec3 b = uvec3(inPlane - y * params.boxCount[0], y, z);
-        const ivec3 boxFirst = ivec3(params.boxFirst[0], params.boxFirst[1], params.boxFirst[2]);
-        ivec3 p[SMOKE_DISPLACE_CELLS_PER_INVOCATION];
-        for (uint i = 0u; i < SMOKE_DISPLACE_CELLS_PER_INVOCATION; ++i) {
-            p[i] = wrapped(boxFirst + ivec3(b));
-            if (++b.x == params.boxCount[0]) {
-                b.x = 0u;
-                if (++b.y == params.boxCount[1]) {
-                    b.y = 0u;
-                    ++b.z;
-                }
-            }
-        }
-        coverStage(p, end > first ? end - first : 0u);
+        const uint line = params.firstInvocation + gl_GlobalInvocationID.x;
+        if (line >= params.boxCount[1] * params.boxCount[2]) return;
+        const uint z = quotientOf(line, params.boxCount[1]);
+        coverStage(line - z * params.boxCount[1], z);
         return;
     }
     const uint stride = gl_NumWorkGroups.x * gl_WorkGroupSize.x;

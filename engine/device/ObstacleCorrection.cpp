@@ -95,20 +95,18 @@ void ObstacleCorrection::recordWith(vulkan::CommandSequence& sequence,
         params.spacing[a] = float(mGrid.spacing[a]);
     }
     // The box's faces per normal axis: one more position along the axis than cells, as many as
-    // the axis has along a periodic axis the box goes round.
-    constexpr std::uint64_t kFacesPerRun = OBSTACLE_MISMATCH_FACES_PER_INVOCATION;
-    std::uint64_t runs = 0;  // an invocation's faces
+    // the axis has along a periodic axis the box goes round; their lines along x.
+    std::uint64_t lines = 0;  // an invocation each
     for (int axis = 0; axis < 3; ++axis) {
-        std::uint64_t faces = axis < mGrid.dim ? 1 : 0;
         for (int b = 0; b < 3; ++b) {
             int count = mBox.count[b];
             if (b == axis)
                 count = mGrid.periodic[b] ? std::min(count + 1, mGrid.cells[b]) : count + 1;
             params.boxCount[3 * axis + b] = std::uint32_t(count);
-            faces *= std::uint64_t(count);
         }
-        params.boxFaces[axis] = std::uint32_t(faces);
-        runs += (faces + kFacesPerRun - 1) / kFacesPerRun;
+        params.boxLines[axis] =
+            axis < mGrid.dim ? params.boxCount[3 * axis + 1] * params.boxCount[3 * axis + 2] : 0u;
+        lines += params.boxLines[axis];
         // Onto the grid along a periodic axis (the shader then wraps by one length at most).
         params.boxFirst[axis] = mGrid.wrap(axis, mBox.first[axis]);
     }
@@ -118,10 +116,10 @@ void ObstacleCorrection::recordWith(vulkan::CommandSequence& sequence,
         &faceField, &mObstacles, &mMismatch, &mLattices.buffer(), &mDofOfFace};
     const std::uint64_t perDispatch =
         std::uint64_t(mContext.properties().limits.maxComputeWorkGroupCount[0]) * 64;
-    for (std::uint64_t first = 0; first < runs; first += perDispatch) {
+    for (std::uint64_t first = 0; first < lines; first += perDispatch) {
         params.first = std::uint32_t(first);
         sequence.dispatch(mMismatchKernels.with({mKinds}), mismatchBuffers, params,
-                          std::uint32_t((std::min(perDispatch, runs - first) + 63) / 64));
+                          std::uint32_t((std::min(perDispatch, lines - first) + 63) / 64));
     }
     project();
     const std::array<const vulkan::DeviceBuffer*, 2> correctBuffers{&v, &mCorrection};

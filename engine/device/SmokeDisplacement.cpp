@@ -119,9 +119,8 @@ void SmokeDisplacement::record(vulkan::CommandSequence& sequence, SmokeState& st
                 params.boxFirst[a] = grid.wrap(a, box.first[a]);
                 params.boxCount[a] = std::uint32_t(box.count[a]);
             }
-            const std::int64_t invocations =
-                (box.cellCount() + SMOKE_DISPLACE_CELLS_PER_INVOCATION - 1) /
-                SMOKE_DISPLACE_CELLS_PER_INVOCATION;
+            // One invocation a line of the box along x.
+            const std::int64_t invocations = std::int64_t(box.count[1]) * box.count[2];
             for (std::int64_t first = 0; first < invocations; first += perDispatch) {
                 params.firstInvocation = std::uint32_t(first);
                 const std::int64_t chunk = std::min(perDispatch, invocations - first);

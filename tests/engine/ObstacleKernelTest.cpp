@@ -181,6 +181,36 @@ TEST_P(ObstacleKernelTest, AsManyObstaclesAsTheSceneTakesEqualTheCpuReference) {
     expectNoValidationMessages();
 }
 
+TEST_P(ObstacleKernelTest, WhereObstaclesOverlapTheFirstOneDecides) {
+    // Two balls and a turning box overlapping, each moving its own way, in the disk and in the
+    // 3D ball: on the faces two cover, the first one's material velocity sets the mismatch.
+    for (const BasisCache* cache : {&testing::disk2d(), &testing::ball3d()}) {
+        RandomVelocitySpec random;
+        const Eigen::VectorXd v =
+            randomVelocity(int(cache->velocity.modes.cols()), random).cast<float>().cast<double>();
+        ObstacleSpec right, down, turning;
+        right.radius = 0.3;
+        right.path = {{0.0, {-0.2, 0.0, 0.0}}, {1.0, {0.8, 0.0, 0.0}}};
+        down.radius = 0.35;
+        down.path = {{0.0, {0.1, 0.5, 0.05}}, {1.0, {0.1, -1.5, 0.05}}};
+        turning.shape = ObstacleShape::Box;
+        turning.halfSize = {0.4, 0.1, 0.2};
+        turning.path = {{0.0, {0.05, 0.2, 0.0}}};
+        turning.rotation = {{0.0, {0.0, 0.0, 1.0}, 0.0}, {1.0, {0.0, 0.0, 1.0}, 300.0}};
+        const std::vector<MovingObstacle> obstacles{{right}, {down}, {turning}};
+        const std::vector<double> faces = reference::reconstructFaceField(*cache, v);
+        const Eigen::VectorXd expected =
+            v - reference::obstacleCorrection(*cache, faces, obstacles, 0.5);
+        const Eigen::VectorXd got = deviceCorrected(context(), *cache, v, obstacles, 0.5);
+        const double error =
+            (got - expected).lpNorm<Eigen::Infinity>() / expected.lpNorm<Eigen::Infinity>();
+        std::cout << cache->grid.dim << "D, three overlapping obstacles: relative error " << error
+                  << "\n";
+        EXPECT_LE(error, 1e-5) << cache->grid.dim << "D";
+        expectNoValidationMessages();
+    }
+}
+
 TEST_P(ObstacleKernelTest, AMeshObstacleWithoutItsLevelSetIsRefused) {
     const BasisCache& cache = testing::disk2d();
     ObstacleSpec spec;

@@ -279,8 +279,9 @@ SmokeFields randomSmoke(const MacGrid& grid, const std::vector<MovingObstacle>& 
 class SmokeDisplacementKernelTest : public testing::VulkanTest {};
 
 TEST_P(SmokeDisplacementKernelTest, DeviceEqualsTheCpuReference) {
-    // A ball and a turning box in a walled 3D box, a turning mesh, a small ball crossing six
-    // cells a step, a box across the seams of a periodic 3D box, a ball across the seam of a
+    // A ball and a turning box in a walled 3D box, a capsule across the seams of a box periodic
+    // sideways, a turning mesh, a small ball crossing six cells a step, a box across the seams
+    // of a periodic 3D box, a ball across the seam of a
     // periodic 2D square, and two balls far apart in a 3D box (covered box by box), several
     // substeps a step, six steps each.
     struct Case {
@@ -304,10 +305,21 @@ TEST_P(SmokeDisplacementKernelTest, DeviceEqualsTheCpuReference) {
     seam.halfSize = {0.2, 0.05, 0.1};
     seam.path = {{0.0, {0.95, 0.9, 0.05}}, {1.0, {1.3, 1.2, -0.2}}};
     seam.rotation = {{0.0, {0.0, 0.0, 1.0}, 0.0}, {1.0, {0.0, 0.0, 1.0}, 900.0}};
+    // A capsule turning about a tilted axis across the seams of a box periodic along y and z
+    // alone (each solid's span of a line of cells along x is found by its shape there).
+    ObstacleSpec capsule;
+    capsule.shape = ObstacleShape::Capsule;
+    capsule.radius = 0.07;
+    capsule.axis = {0.18, 0.05, 0.0};
+    capsule.path = {{0.0, {0.45, 0.92, 0.06}}, {1.0, {0.6, 1.3, -0.3}}};
+    capsule.rotation = {{0.0, {0.2, 1.0, 0.4}, 10.0}, {1.0, {0.2, 1.0, 0.4}, 700.0}};
+    MacGrid sidewaysPeriodic = unitGrid(3, 22);
+    sidewaysPeriodic.periodic = {false, true, true};
     const std::vector<Case> cases{
         {unitGrid(3, 24),
          {ball(0.17, {{0.0, {0.71, 0.33, 0.52}}, {1.0, {0.21, 0.71, 0.48}}}),
           MovingObstacle{paddle}}},
+        {sidewaysPeriodic, {MovingObstacle{capsule}}},
         {unitGrid(3, 24), {mesh}},
         // A small ball crossing six cells a step, there and back.
         {unitGrid(3, 24),
