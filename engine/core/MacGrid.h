@@ -115,6 +115,12 @@ struct MacGrid {
     }
     /// Length of the box along `axis`.
     double length(int axis) const { return cells[axis] * spacing[axis]; }
+    /// The smallest cell size over the grid's `dim` axes.
+    double smallestSpacing() const {
+        double h = spacing[0];
+        for (int a = 1; a < dim; ++a) h = spacing[a] < h ? spacing[a] : h;
+        return h;
+    }
     /// `position` along `axis` brought into 0 … cells − 1 on a periodic axis; as is on others.
     int wrap(int axis, int position) const {
         if (!periodic[axis]) return position;

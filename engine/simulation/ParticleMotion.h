@@ -57,9 +57,7 @@ inline ParticleResponse particleResponse(const ParticleSetSpec& set, double dt) 
 /// How far past a solid's surface a particle is put: a thousandth of the smoke grid's smallest
 /// cell (clear of the surface at float32 too).
 inline double particleExitMargin(const MacGrid& smokeGrid) {
-    double h = smokeGrid.spacing[0];
-    for (int a = 1; a < smokeGrid.dim; ++a) h = std::min(h, smokeGrid.spacing[a]);
-    return 1e-3 * h;
+    return 1e-3 * smokeGrid.smallestSpacing();
 }
 
 }  // namespace modeflow

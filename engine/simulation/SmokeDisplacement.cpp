@@ -13,15 +13,9 @@
 namespace modeflow {
 namespace {
 
-double smallestSpacing(const MacGrid& grid) {
-    double h = grid.spacing[0];
-    for (int a = 1; a < grid.dim; ++a) h = std::min(h, grid.spacing[a]);
-    return h;
-}
-
 /// Substeps that keep a surface moving at `speed` within half a cell per substep over dt.
 double substepsFor(double speed, double dt, const MacGrid& smokeGrid) {
-    return std::max(1.0, std::ceil(speed * dt / (0.5 * smallestSpacing(smokeGrid))));
+    return std::max(1.0, std::ceil(speed * dt / (0.5 * smokeGrid.smallestSpacing())));
 }
 
 /// The least and greatest offsets from its centre, per world axis, of the points `solid` may
@@ -88,7 +82,7 @@ int displacementSubsteps(std::span<const MovingObstacle> solids, double t, doubl
     const double substeps = substepsFor(speed, dt, smokeGrid);
     if (substeps > maxDisplacementSubsteps)
         throw Error("a solid's surface moves " +
-                    numberText(speed * dt / smallestSpacing(smokeGrid)) +
+                    numberText(speed * dt / smokeGrid.smallestSpacing()) +
                     " smoke cells in the step at t = " + numberText(t) + "; at most " +
                     std::to_string(maxDisplacementSubsteps / 2) + ": lower dt or slow it down");
     return int(substeps);
@@ -101,7 +95,7 @@ void requireDisplaceableMotion(std::span<const MovingObstacle> solids, double dt
         const double speed = solids[o].surfaceSpeedBound(-always, always);
         if (substepsFor(speed, dt, smokeGrid) > maxDisplacementSubsteps)
             throw Error("obstacle #" + std::to_string(o + 1) + "'s surface moves up to " +
-                        numberText(speed * dt / smallestSpacing(smokeGrid)) +
+                        numberText(speed * dt / smokeGrid.smallestSpacing()) +
                         " smoke cells a step; the smoke follows at most " +
                         std::to_string(maxDisplacementSubsteps / 2) +
                         ": lower dt or slow its key frames");
