@@ -200,7 +200,9 @@ void insideStage(uint slot) {
     finish(i, starts[slot].xyz, x1, v1, r, stored.w);
 }
 
-uint groupsFor(uint count) { return min((count + 63u) / 64u, params.maxGroups); }
+uint groupsFor(uint count) {
+    return min((count + gl_WorkGroupSize.x - 1u) / gl_WorkGroupSize.x, params.maxGroups);
+}
 
 void main() {
     if (stage == PARTICLE_STEP_ARGS) {

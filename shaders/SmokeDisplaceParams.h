@@ -25,7 +25,7 @@ using uint = std::uint32_t;
 
 struct SmokeDisplaceParams {
     int boxFirst[3]; /* the box's first cell; wraps along periodic axes */
-    uint boxCells;   /* its cell count */
+    uint boxLines;   /* its lines of cells along x: the cover's invocations */
     uint boxCount[3];
     uint dim;
     uint cells[3]; /* the smoke grid */

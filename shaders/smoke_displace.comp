@@ -182,7 +182,9 @@ ivec3 positionOf(uint cell) {
     return ivec3(int(inPlane - y * params.cells[0]), int(y), int(z));
 }
 
-uint groupsFor(uint count) { return min((count + 63u) / 64u, params.maxGroups); }
+uint groupsFor(uint count) {
+    return min((count + gl_WorkGroupSize.x - 1u) / gl_WorkGroupSize.x, params.maxGroups);
+}
 
 void main() {
     if (stage == SMOKE_DISPLACE_ARGS) {
@@ -193,7 +195,7 @@ void main() {
     }
     if (stage == SMOKE_DISPLACE_COVER) {
         const uint line = params.firstInvocation + gl_GlobalInvocationID.x;
-        if (line >= params.boxCount[1] * params.boxCount[2]) return;
+        if (line >= params.boxLines) return;
         const uint z = quotientOf(line, params.boxCount[1]);
         coverStage(line - z * params.boxCount[1], z);
         return;

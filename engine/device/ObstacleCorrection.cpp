@@ -104,8 +104,9 @@ void ObstacleCorrection::recordWith(vulkan::CommandSequence& sequence,
                 count = mGrid.periodic[b] ? std::min(count + 1, mGrid.cells[b]) : count + 1;
             params.boxCount[3 * axis + b] = std::uint32_t(count);
         }
-        params.boxLines[axis] =
-            axis < mGrid.dim ? params.boxCount[3 * axis + 1] * params.boxCount[3 * axis + 2] : 0u;
+        params.boxLines[axis] = axis < mGrid.dim && params.boxCount[3 * axis] > 0
+                                    ? params.boxCount[3 * axis + 1] * params.boxCount[3 * axis + 2]
+                                    : 0u;
         lines += params.boxLines[axis];
         // Onto the grid along a periodic axis (the shader then wraps by one length at most).
         params.boxFirst[axis] = mGrid.wrap(axis, mBox.first[axis]);

@@ -112,15 +112,14 @@ void SmokeDisplacement::record(vulkan::CommandSequence& sequence, SmokeState& st
         params.firstRecord = std::uint32_t(std::size_t(k) * solids.size());
         sequence.fill(mWork, mWork.bytes(), 0u);
         for (const CellBox& box : boxes[std::size_t(k)]) {
-            params.boxCells = std::uint32_t(box.cellCount());
+            params.boxLines = std::uint32_t(box.cellCount() > 0 ? box.count[1] * box.count[2] : 0);
             for (int a = 0; a < 3; ++a) {
                 // Onto the grid along periodic axes: the box's cells are then less than two
                 // grid lengths from its start (the shader's wrapped()).
                 params.boxFirst[a] = grid.wrap(a, box.first[a]);
                 params.boxCount[a] = std::uint32_t(box.count[a]);
             }
-            // One invocation a line of the box along x.
-            const std::int64_t invocations = std::int64_t(box.count[1]) * box.count[2];
+            const std::int64_t invocations = params.boxLines;
             for (std::int64_t first = 0; first < invocations; first += perDispatch) {
                 params.firstInvocation = std::uint32_t(first);
                 const std::int64_t chunk = std::min(perDispatch, invocations - first);
