@@ -73,7 +73,6 @@ void ObstacleCorrection::setObstacles(std::span<const MovingObstacle> obstacles,
     // The cells the regions may cover: each one's shape box turned, within its reach (a
     // torus's flat box, not its reach's ball, bounds the faces the mismatch walks).
     mBox = displacementBox(obstacles, poses, mGrid);
-    for (int a = mGrid.dim; a < 3; ++a) mBox.count[a] = 1;
 }
 
 template <typename Project>
