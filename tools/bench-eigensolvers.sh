@@ -1,15 +1,15 @@
 #!/usr/bin/env bash
 # Eigensolver benchmark: the velocity eigensolve of one scene (default scenes/bench/ball_48.toml)
-# at several mode counts, with one shift-invert Lanczos run (Spectra) and with spectrum slicing
-# (SLEPc) on 1 and on K MPI ranks, each from scratch in a throwaway cache folder. Prints the
+# at several mode counts, with one shift-invert Lanczos run (Spectra), block Lanczos (`block`) and
+# spectrum slicing (SLEPc) on 1 and on K MPI ranks, each from scratch in a throwaway cache folder. Prints the
 # eigensolve's wall time, the process's CPU time (all ranks), peak memory per rank and the CPU
 # seconds per mode. CPU time is the steadier figure on a shared machine.
-# Usage: tools/bench-eigensolvers.sh [-n "100 200 400"] [-k RANKS] [-s "spectra slepc mpi"] [SCENE]
+# Usage: tools/bench-eigensolvers.sh [-n "100 200 400"] [-k RANKS] [-s "spectra block slepc mpi"] [SCENE]
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 counts="100 200 400"
 ranks=2
-solvers="spectra slepc mpi"
+solvers="spectra block slepc mpi"
 while getopts "n:k:s:" option; do
     case $option in
         n) counts=$OPTARG ;;

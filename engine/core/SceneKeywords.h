@@ -38,6 +38,7 @@ inline constexpr std::pair<std::string_view, CoefficientStorage> kCoefficientSto
 inline constexpr std::pair<std::string_view, EigensolverChoice> kEigensolvers[] = {
     {"auto", EigensolverChoice::Automatic},
     {"spectra", EigensolverChoice::Spectra},
+    {"block", EigensolverChoice::Block},
     {"slepc", EigensolverChoice::Slepc}};
 inline constexpr std::pair<std::string_view, Integrator> kIntegrators[] = {
     {"explicit", Integrator::Explicit},

@@ -43,7 +43,7 @@ enum class BoundaryTreatment { CutCell, Staircase };
 /// How the eigenbases are solved (precompute/solve): one shift-invert Lanczos run (Spectra), or
 /// spectrum slicing (SLEPc), or chosen by the mode count and the number of MPI ranks. The bases
 /// are the same either way, so the choice is no part of the cache key.
-enum class EigensolverChoice { Automatic, Spectra, Slepc };
+enum class EigensolverChoice { Automatic, Spectra, Block, Slepc };
 
 /// How the runtime evaluates the advection Σ_ij C[k][i][j] v_i v_j: from a stored tensor (dense,
 /// or sparse for bases where most entries vanish), or straight from the modes and the vorticity

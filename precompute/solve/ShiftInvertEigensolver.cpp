@@ -12,6 +12,8 @@
 #include <Eigen/CholmodSupport>
 
 #include "engine/core/Error.h"
+#include "precompute/solve/BlockLanczos.h"
+#include "precompute/solve/HugePages.h"
 
 namespace modeflow {
 namespace {
@@ -47,12 +49,20 @@ void requireCholmodSuccess(const cholmod_common& common, const std::string& what
     }
 }
 
+/// Eigen's supernodal Cholesky with its factor at hand, for CHOLMOD's solve into reused arrays.
+class SupernodalCholesky
+    : public Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>, Eigen::Lower> {
+public:
+    cholmod_factor* factor() const { return m_cholmodFactor; }
+};
+
 /// The factorization of K − σM, made once and shared by every Lanczos run of a solve.
 class ShiftedFactor {
 public:
     ShiftedFactor(const Eigen::SparseMatrix<double>& k, const Eigen::VectorXd& m, double sigma,
                   const EigenRequest& request, SolverStats& stats)
         : mScale(m.cwiseSqrt()), mRequest(request), mStats(stats) {
+        useHugePagesForSuiteSparse();
         // CHOLMOD prints its warnings on stdout; its status becomes our message instead.
         mSolver.cholmod().print = 0;
         Eigen::SparseMatrix<double> shifted = k;
@@ -67,25 +77,47 @@ public:
         requireCholmodSuccess(mSolver.cholmod(), request.what, k.rows());
     }
 
+    ShiftedFactor(const ShiftedFactor&) = delete;
+    ShiftedFactor& operator=(const ShiftedFactor&) = delete;
+
+    ~ShiftedFactor() {
+        for (cholmod_dense** d : {&mSolution, &mWork, &mWorkE})
+            cholmod_free_dense(d, &mSolver.cholmod());
+    }
+
     Eigen::Index size() const { return mScale.size(); }
     /// M^{1/2} diagonal: scaled vectors are M^{1/2} x.
     const Eigen::VectorXd& scale() const { return mScale; }
 
-    /// y = M^{1/2} (K − σM)⁻¹ M^{1/2} x
-    Eigen::VectorXd apply(const Eigen::VectorXd& x) const {
+    /// y = M^{1/2} (K − σM)⁻¹ M^{1/2} x, for one vector or a block of them (one CHOLMOD solve
+    /// with several right-hand sides, into arrays kept from one call to the next: a fresh
+    /// block-sized array costs its page faults every time).
+    void apply(const Eigen::Ref<const Eigen::MatrixXd>& x, Eigen::Ref<Eigen::MatrixXd> y) const {
         const auto start = std::chrono::steady_clock::now();
-        Eigen::VectorXd y = mScale.cwiseProduct(mSolver.solve(mScale.cwiseProduct(x)));
+        mRight.noalias() = mScale.asDiagonal() * x;
+        cholmod_dense right = Eigen::viewAsCholmod(mRight);
+        cholmod_solve2(CHOLMOD_A, mSolver.factor(), &right, nullptr, &mSolution, nullptr, &mWork,
+                       &mWorkE, &mSolver.cholmod());
+        requireCholmodSuccess(mSolver.cholmod(), mRequest.what, size());
+        y.noalias() =
+            mScale.asDiagonal() * Eigen::Map<const Eigen::MatrixXd>(
+                                      static_cast<const double*>(mSolution->x), x.rows(), x.cols());
         mStats.solveSeconds += secondsSince(start);
-        ++mStats.operations;
-        if (mRequest.progress && mStats.operations % 16 == 0) mRequest.progress(mStats.operations);
-        return y;
+        const long before = mStats.operations;
+        mStats.operations += x.cols();
+        if (mRequest.progress && mStats.operations / 16 != before / 16)
+            mRequest.progress(mStats.operations);
     }
 
 private:
     Eigen::VectorXd mScale;
     const EigenRequest& mRequest;
     SolverStats& mStats;
-    Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>, Eigen::Lower> mSolver;
+    mutable SupernodalCholesky mSolver;
+    mutable Eigen::MatrixXd mRight;
+    mutable cholmod_dense* mSolution = nullptr;
+    mutable cholmod_dense* mWork = nullptr;
+    mutable cholmod_dense* mWorkE = nullptr;
 };
 
 /// (A − σI)⁻¹ for the symmetrically scaled A = M^{-1/2} K M^{-1/2}: a diagonal M turns the
@@ -107,8 +139,9 @@ public:
     void perform_op(const Scalar* xIn, Scalar* yOut) const {
         Eigen::Map<const Eigen::VectorXd> x(xIn, rows());
         Eigen::Map<Eigen::VectorXd> y(yOut, rows());
-        y = mFactor.apply(project(x));
-        y = project(y);
+        Eigen::MatrixXd image(rows(), 1);
+        mFactor.apply(project(x), image);
+        y = project(image);
     }
 
     Eigen::VectorXd project(const Eigen::VectorXd& x) const {
@@ -165,6 +198,26 @@ EigenPairs lanczos(const ShiftedFactor& factor, const Eigen::MatrixXd& deflated,
     return out;
 }
 
+/// The `nev` lowest pairs of the (deflated) operator in blocks (BlockLanczos.h): ascending values,
+/// scaled vectors.
+EigenPairs blockLanczos(const ShiftedFactor& factor, const Eigen::MatrixXd& deflated,
+                        Eigen::Index nev, const EigenRequest& request, long& restarts) {
+    BlockLanczosRequest block;
+    block.count = nev;
+    block.tolerance = request.tolerance;
+    block.what = request.what;
+    const BlockLanczosResult found =
+        largestEigenpairs([&](const Eigen::Ref<const Eigen::MatrixXd>& x,
+                              Eigen::Ref<Eigen::MatrixXd> y) { factor.apply(x, y); },
+                          factor.size(), deflated, block);
+    restarts += found.restarts;
+    // θ = 1/(λ − σ): the largest θ are the lowest λ, in order.
+    EigenPairs out;
+    out.values = (request.shift + found.values.array().inverse()).matrix();
+    out.vectors = found.vectors;
+    return out;
+}
+
 /// The `keep` lowest of two sets of pairs together, ascending.
 EigenPairs lowestOf(const EigenPairs& a, const EigenPairs& b, Eigen::Index keep) {
     const Eigen::Index total = a.values.size() + b.values.size();
@@ -189,20 +242,23 @@ EigenPairs lowestOf(const EigenPairs& a, const EigenPairs& b, Eigen::Index keep)
 
 /// Runs on the operator deflated by the pairs kept so far, while they find eigenvalues below the
 /// highest kept one: copies of degenerate eigenvalues that the first run missed.
+using KrylovRun = EigenPairs (*)(const ShiftedFactor&, const Eigen::MatrixXd&, Eigen::Index,
+                                 const EigenRequest&, long&);
+
 void findMissedCopies(const ShiftedFactor& factor, EigenPairs& pairs, const EigenRequest& request,
-                      long& restarts) {
+                      KrylovRun run, long& restarts) {
     const Eigen::Index nev = pairs.values.size();
     constexpr int kMaxRuns = 32;
-    for (int run = 0;; ++run) {
+    for (int rerun = 0;; ++rerun) {
         const Eigen::Index block =
             std::min<Eigen::Index>(std::max<Eigen::Index>(8, nev / 4), factor.size() - nev - 2);
         if (block < 1) return;
         const double top = pairs.values[nev - 1];
-        const EigenPairs more = lanczos(factor, pairs.vectors, block, request, restarts);
+        const EigenPairs more = run(factor, pairs.vectors, block, request, restarts);
         // Equal to the highest kept one is no miss: a cut through a degenerate eigenspace keeps
         // any part of it.
         if (more.values[0] >= top - 1e-9 * std::abs(top)) return;
-        if (run == kMaxRuns)
+        if (rerun == kMaxRuns)
             throw Error(request.what +
                         ": still finding missed copies of degenerate eigenvalues after " +
                         std::to_string(kMaxRuns) + " deflated Lanczos runs");
@@ -210,18 +266,22 @@ void findMissedCopies(const ShiftedFactor& factor, EigenPairs& pairs, const Eige
     }
 }
 
-/// Whether two of the ascending `values` are equal to round-off: the operator has symmetries, and
-/// a Lanczos run may have missed copies of their eigenvalues.
-bool hasEqualEigenvalues(const Eigen::VectorXd& values) {
-    for (Eigen::Index i = 1; i < values.size(); ++i)
-        if (values[i] - values[i - 1] <= 1e-9 * std::abs(values[i])) return true;
-    return false;
+/// The most of the ascending `values` equal to round-off. Copies mean symmetries: a Lanczos run
+/// may have missed some, and a block run more copies than half its block.
+Eigen::Index largestMultiplicity(const Eigen::VectorXd& values) {
+    Eigen::Index most = values.size() > 0 ? 1 : 0, copies = 1;
+    for (Eigen::Index i = 1; i < values.size(); ++i) {
+        copies = values[i] - values[i - 1] <= 1e-9 * std::abs(values[i]) ? copies + 1 : 1;
+        most = std::max(most, copies);
+    }
+    return most;
 }
 
 }  // namespace
 
 EigenPairs smallestEigenpairs(const Eigen::SparseMatrix<double>& stiffness,
-                              const Eigen::VectorXd& massDiagonal, const EigenRequest& request) {
+                              const Eigen::VectorXd& massDiagonal, const EigenRequest& request,
+                              KrylovMethod method) {
     const Eigen::Index n = stiffness.rows();
     if (request.count < 1 || request.count >= n)
         throw Error(request.what + ": asked for " + std::to_string(request.count) +
@@ -229,9 +289,13 @@ EigenPairs smallestEigenpairs(const Eigen::SparseMatrix<double>& stiffness,
     SolverStats stats;
     const ShiftedFactor factor(stiffness, massDiagonal, request.shift, request, stats);
     long restarts = 0;
-    EigenPairs out = lanczos(factor, Eigen::MatrixXd(n, 0), request.count, request, restarts);
-    if (request.findMissedCopies || hasEqualEigenvalues(out.values))
-        findMissedCopies(factor, out, request, restarts);
+    const bool blocks = method == KrylovMethod::BlockLanczos;
+    const KrylovRun run = blocks ? blockLanczos : lanczos;
+    EigenPairs out = run(factor, Eigen::MatrixXd(n, 0), request.count, request, restarts);
+    const Eigen::Index copies = largestMultiplicity(out.values);
+    if (blocks ? 2 * copies >= BlockLanczosRequest{}.blockSize
+               : request.findMissedCopies || copies > 1)
+        findMissedCopies(factor, out, request, run, restarts);
     out.vectors = factor.scale().cwiseInverse().asDiagonal() * out.vectors;
     out.stats = stats;
     out.stats.restarts = restarts;

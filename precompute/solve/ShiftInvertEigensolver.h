@@ -1,7 +1,8 @@
 #pragma once
 /// @file ShiftInvertEigensolver.h
 /// Lowest eigenpairs of K x = λ M x (K sparse symmetric positive semi-definite, M diagonal
-/// positive) by shift-invert Lanczos (Spectra) around a sparse Cholesky factorization (CHOLMOD).
+/// positive) by shift-invert Lanczos (Spectra, or block Lanczos) around a sparse Cholesky
+/// factorization (CHOLMOD).
 /// Spectra and CHOLMOD headers stay inside the .cpp.
 
 #include <filesystem>
@@ -72,8 +73,13 @@ struct EigenRequest {
     IntervalCheckpoints checkpoints{};  ///< used by the sliced solver only
 };
 
-/// @throw Error naming `what` when the factorization fails or Lanczos does not converge.
+/// How the shift-invert operator is searched: a vector at a time (Spectra's Lanczos) or a block
+/// at a time (BlockLanczos.h: several right-hand sides per solve, dense products on every core).
+enum class KrylovMethod { Lanczos, BlockLanczos };
+
+/// @throw Error naming `what` when the factorization fails or the search does not converge.
 EigenPairs smallestEigenpairs(const Eigen::SparseMatrix<double>& stiffness,
-                              const Eigen::VectorXd& massDiagonal, const EigenRequest& request);
+                              const Eigen::VectorXd& massDiagonal, const EigenRequest& request,
+                              KrylovMethod method = KrylovMethod::Lanczos);
 
 }  // namespace modeflow

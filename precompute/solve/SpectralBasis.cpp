@@ -31,7 +31,12 @@ EigenPairs lowestEigenpairs(const Eigen::SparseMatrix<double>& k, const Eigen::V
         const bool slice = choice == EigensolverChoice::Slepc ||
                            (choice == EigensolverChoice::Automatic &&
                             (request.count >= kSlicingFromCount || currentProcessGroup().size > 1));
-        return slice ? slicedEigenpairs(k, m, request) : smallestEigenpairs(k, m, request);
+        if (slice) return slicedEigenpairs(k, m, request);
+        const bool blocks =
+            choice == EigensolverChoice::Block ||
+            (choice == EigensolverChoice::Automatic && request.count >= kBlockLanczosFromCount);
+        return smallestEigenpairs(k, m, request,
+                                  blocks ? KrylovMethod::BlockLanczos : KrylovMethod::Lanczos);
     }
     const Eigen::VectorXd s = m.cwiseSqrt().cwiseInverse();
     const Eigen::MatrixXd a = s.asDiagonal() * Eigen::MatrixXd(k) * s.asDiagonal();

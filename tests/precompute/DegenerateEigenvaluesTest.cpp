@@ -1,6 +1,8 @@
 // Lanczos from one start vector finds one vector per eigenspace in exact arithmetic, so copies
 // of a degenerate eigenvalue need the deflated runs of findMissedCopies: periodic axes and
-// symmetric domains make many (ShiftInvertEigensolver.h).
+// symmetric domains make many (ShiftInvertEigensolver.h). Block Lanczos finds as many copies as
+// its block has vectors, and looks for more with the same deflated runs when it finds half as
+// many.
 
 #include <gtest/gtest.h>
 
@@ -43,6 +45,24 @@ TEST(DegenerateEigenvalues, TwoEqualEigenvaluesFoundStartTheSearchForMissedCopie
     const Eigen::VectorXd mass = Eigen::VectorXd::Constant(n, 2.0);
     EigenRequest request{count, -0.01, 1e-12, "test eigensolve", {}, false};
     expectEveryCopy(smallestEigenpairs(degenerate(n, copies), mass, request), copies, count);
+}
+
+/// The `count` lowest pairs of degenerate(n, copies) by block Lanczos, every copy found.
+void expectBlockRunsFindEveryCopy(int n, int copies, int count) {
+    const Eigen::VectorXd mass = Eigen::VectorXd::Constant(n, 2.0);
+    const EigenRequest request{count, -0.01, 1e-12, "test eigensolve", {}, false};
+    expectEveryCopy(
+        smallestEigenpairs(degenerate(n, copies), mass, request, KrylovMethod::BlockLanczos),
+        copies, count);
+}
+
+TEST(DegenerateEigenvalues, BlockRunsFindSixteenCopies) {
+    expectBlockRunsFindEveryCopy(300, 16, 30);
+}
+
+TEST(DegenerateEigenvalues, MoreCopiesThanABlockHoldsAreFoundByDeflatedBlockRuns) {
+    // 40 copies: a block of 16 vectors holds at most 16 of them in exact arithmetic.
+    expectBlockRunsFindEveryCopy(400, 40, 50);
 }
 
 }  // namespace

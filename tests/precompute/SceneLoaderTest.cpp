@@ -300,7 +300,7 @@ const std::vector<Refusal> kRefusals = {
     {"UnknownIntegrator", k2d, {}, "[simulation]\nintegrator = \"rk5\"\n",
      {"[simulation].integrator: unknown value \"rk5\"", "did you mean rk4?"}},
     {"UnknownEigensolver", k2d, {basis("velocity_modes = 4\neigensolver = \"arpack\"")}, "",
-     {"[basis].eigensolver: unknown value \"arpack\"", "expected auto, spectra or slepc"}},
+     {"[basis].eigensolver: unknown value \"arpack\"", "expected auto, spectra, block or slepc"}},
     // The grid.
     {"ResolutionBelowTwo", kSquare, {{"[8, 8]", "[64, 1]"}}, "",
      {"scenes/bad.toml: [grid].resolution[1]: must be between 2 and"}, true},

@@ -1,6 +1,6 @@
-// `[basis] eigensolver`: spectrum slicing (SLEPc) and shift-invert Lanczos (Spectra) give the same
-// bases on curved domains: the same eigenvalues and the same span for every group of (nearly)
-// equal eigenvalues, harmonic fields, frequency-shaping ranges and scalar bases included.
+// `[basis] eigensolver`: spectrum slicing (SLEPc), block Lanczos and shift-invert Lanczos (Spectra)
+// give the same bases on curved domains: the same eigenvalues and the same span for every group of
+// (nearly) equal eigenvalues, harmonic fields, frequency-shaping ranges and scalar bases included.
 
 #include <gtest/gtest.h>
 
@@ -18,27 +18,33 @@ BasisCache solveWith(SceneSpec scene, EigensolverChoice choice) {
     return computeBasis(scene, quiet);
 }
 
-void expectSameBases(const SceneSpec& scene) {
-    const BasisCache spectra = solveWith(scene, EigensolverChoice::Spectra);
-    const BasisCache sliced = solveWith(scene, EigensolverChoice::Slepc);
-    testing::expectValidVelocityBasis(sliced);
-    EXPECT_EQ(sliced.velocity.modeNumbers, spectra.velocity.modeNumbers);
-    EXPECT_EQ(sliced.velocity.harmonic, spectra.velocity.harmonic);
+void expectSameBases(const BasisCache& spectra, const BasisCache& other, const char* name) {
+    SCOPED_TRACE(name);
+    testing::expectValidVelocityBasis(other);
+    EXPECT_EQ(other.velocity.modeNumbers, spectra.velocity.modeNumbers);
+    EXPECT_EQ(other.velocity.harmonic, spectra.velocity.harmonic);
     EXPECT_LE(
-        testing::eigenvalueDifference(sliced.velocity.eigenvalues, spectra.velocity.eigenvalues),
+        testing::eigenvalueDifference(other.velocity.eigenvalues, spectra.velocity.eigenvalues),
         1e-9)
         << "velocity eigenvalues";
     EXPECT_LE(testing::spanDifference(spectra.velocity.eigenvalues, spectra.velocity.modes,
-                                      sliced.velocity.modes, spectra.faceStar),
+                                      other.velocity.modes, spectra.faceStar),
               1e-7)
         << "velocity spans";
-    EXPECT_LE(testing::eigenvalueDifference(sliced.scalar.eigenvalues, spectra.scalar.eigenvalues),
+    EXPECT_LE(testing::eigenvalueDifference(other.scalar.eigenvalues, spectra.scalar.eigenvalues),
               1e-9)
         << "scalar eigenvalues";
     EXPECT_LE(testing::spanDifference(spectra.scalar.eigenvalues, spectra.scalar.modes,
-                                      sliced.scalar.modes, spectra.scalar.cellStar),
+                                      other.scalar.modes, spectra.scalar.cellStar),
               1e-7)
         << "scalar spans";
+}
+
+/// Slicing and block Lanczos against Spectra's Lanczos.
+void expectSameBases(const SceneSpec& scene) {
+    const BasisCache spectra = solveWith(scene, EigensolverChoice::Spectra);
+    expectSameBases(spectra, solveWith(scene, EigensolverChoice::Slepc), "sliced");
+    expectSameBases(spectra, solveWith(scene, EigensolverChoice::Block), "block Lanczos");
 }
 
 TEST(SlicedBasis, DiskSameAsLanczos) {
