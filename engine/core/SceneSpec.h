@@ -40,9 +40,10 @@ enum class ScalarBoundary { Neumann, Dirichlet };
 enum class WallKind { FreeSlip, NoSlip };
 /// How primal measures see the domain: exact-for-piecewise-linear cut cells, or voxelized.
 enum class BoundaryTreatment { CutCell, Staircase };
-/// How the eigenbases are solved (precompute/solve): one shift-invert Lanczos run (Spectra), or
-/// spectrum slicing (SLEPc), or chosen by the mode count and the number of MPI ranks. The bases
-/// are the same either way, so the choice is no part of the cache key.
+/// How the eigenbases are solved (precompute/solve): one shift-invert Lanczos run (Spectra), block
+/// Lanczos around the same factorization, or spectrum slicing (SLEPc), or chosen by the mode count
+/// and the number of MPI ranks. The bases are the same either way, so the choice is no part of the
+/// cache key.
 enum class EigensolverChoice { Automatic, Spectra, Block, Slepc };
 
 /// How the runtime evaluates the advection Σ_ij C[k][i][j] v_i v_j: from a stored tensor (dense,
