@@ -56,8 +56,7 @@ std::uint32_t pixelGroups(const vulkan::ComputeKernel& kernel, const DisplayTarg
 }  // namespace
 
 DisplayKernels::DisplayKernels(const vulkan::VulkanContext& context)
-    : mContext(context),
-      mSmoke2D(context,
+    : mSmoke2D(context,
                {"display_smoke_2d", display_smoke_2d_spv, 6, sizeof(shaders::DisplayParams)}),
       mPicture(context,
                {"display_picture", display_picture_spv, 3, sizeof(shaders::DisplayParams)}),

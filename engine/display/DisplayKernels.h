@@ -81,7 +81,6 @@ public:
                     const vulkan::DeviceBuffer& pixels) const;
 
 private:
-    const vulkan::VulkanContext& mContext;
     vulkan::ComputeKernel mSmoke2D;
     vulkan::ComputeKernel mPicture;
     vulkan::ComputeKernel mDots;

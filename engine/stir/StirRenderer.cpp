@@ -88,9 +88,11 @@ void StirRenderer::draw(const StirSession& session, const StirView& view,
         mPicture.kernels().recordSmoke2D(mPicture.sequence(), fields, look, mPicture.overlay(),
                                          target, mPicture.pixels());
     }
-    if (!session.settings().particles.empty())
-        mPicture.kernels().recordDots(mPicture.sequence(), *mDots,
-                                      uploadDots(session, view, target), target, mPicture.pixels());
+    if (!session.settings().particles.empty()) {
+        // Before *mDots is read: the upload makes the buffer, or a larger one.
+        const std::uint32_t dots = uploadDots(session, view, target);
+        mPicture.kernels().recordDots(mPicture.sequence(), *mDots, dots, target, mPicture.pixels());
+    }
     mPicture.finish();
 }
 

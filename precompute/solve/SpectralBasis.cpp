@@ -67,7 +67,23 @@ std::int64_t divergenceFreeDimension(const CutCellDec& dec) {
 
 namespace {
 
+/// An eigenvector's sign is the solver's accident (its start vector, BLAS's threads, the
+/// compiler's rounding), and a scene that sets modal amplitudes, or a harmonic field's flow,
+/// would run the other way on another machine. Each column is turned so that its first entry of
+/// largest magnitude (to 1e-6 of it, so that round-off cannot pick between mirror images) is
+/// positive.
+void orientColumns(Eigen::MatrixXd& vectors) {
+    for (Eigen::Index c = 0; c < vectors.cols(); ++c) {
+        auto column = vectors.col(c);
+        const double largest = column.cwiseAbs().maxCoeff();
+        Eigen::Index at = 0;
+        while (std::abs(column[at]) < (1.0 - 1e-6) * largest) ++at;
+        if (column[at] < 0.0) column = -column;
+    }
+}
+
 ScalarBasisResult fromPairs(EigenPairs pairs, int skip) {
+    orientColumns(pairs.vectors);
     ScalarBasisResult r;
     const int count = int(pairs.values.size()) - skip;
     r.eigenvalues = pairs.values.tail(count);
@@ -201,6 +217,7 @@ VelocityBasisResult solveVelocityBasis(const CutCellDec& dec, const std::vector<
     }
 
     if (noSlip) projectAndRefine(dec, pairs);
+    orientColumns(pairs.vectors);
     // A harmonic field's κ² is exactly 0; the solve returns it as round-off of either sign. The
     // first non-zero κ² is the smallest above round-off of (π/L)², or (π/L)² itself when every
     // computed mode is harmonic.

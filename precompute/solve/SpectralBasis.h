@@ -14,8 +14,10 @@
 namespace modeflow {
 
 struct VelocityBasisResult {
-    Eigen::VectorXd eigenvalues;   ///< κ², ascending, one per selected mode (harmonic: 0)
-    Eigen::MatrixXd modes;         ///< face fluxes (DOFs × modes), ⋆(n-1)-orthonormal
+    Eigen::VectorXd eigenvalues;  ///< κ², ascending, one per selected mode (harmonic: 0)
+    /// Face fluxes (DOFs × modes), ⋆(n-1)-orthonormal; each mode's first entry of largest
+    /// magnitude is positive, so that its sign does not depend on the solver or the machine.
+    Eigen::MatrixXd modes;
     std::vector<int> modeNumbers;  ///< 1-based position of each mode in the div-free spectrum
     int harmonicCount = 0;         ///< selected modes with κ = 0
     double penalty = 0.0;          ///< grad-div penalty s that kept gradients out
@@ -24,7 +26,7 @@ struct VelocityBasisResult {
 
 struct ScalarBasisResult {
     Eigen::VectorXd eigenvalues;  ///< μ², ascending
-    Eigen::MatrixXd modes;        ///< cell values (n-forms), ⋆n-orthonormal
+    Eigen::MatrixXd modes;        ///< cell values (n-forms), ⋆n-orthonormal, signed as above
     int omittedConstants = 0;     ///< Neumann: one constant per connected component, left out
     SolverStats stats;
 };

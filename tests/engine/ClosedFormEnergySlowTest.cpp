@@ -1,7 +1,7 @@
 /// @file ClosedFormEnergySlowTest.cpp
 /// The midpoint rule on the sparse closed-form coefficients of a 3D box at N = 2000 (matrix-free
 /// implicit steps: no Jacobian is formed) conserves the energy to 1e-9 over 1000 steps. Slow: a
-/// few minutes on two cores (the time is printed).
+/// few minutes on the one thread a test gets in the suite (the time is printed).
 
 #include <gtest/gtest.h>
 
@@ -31,7 +31,6 @@ TEST(ClosedFormEnergy, MidpointConservesEnergyAtTwoThousandModesIn3D) {
     const auto c = coefficientsFromCache(cache);
     const FluidSystem system(*c);
     IntegratorSettings settings{Integrator::Midpoint};
-    settings.threads = 2;
     ModalIntegrator midpoint(system, settings);
 
     Eigen::VectorXd v = testing::randomVector(kModes, 11), r;

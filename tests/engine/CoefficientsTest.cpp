@@ -17,6 +17,7 @@
 #include "engine/dynamics/CachedCoefficients.h"
 #include "engine/dynamics/DenseCoefficients.h"
 #include "engine/dynamics/SparseCoefficients.h"
+#include "engine/dynamics/ThreadCount.h"
 #include "tests/support/RandomCoefficients.h"
 #include "tests/support/SyntheticBases.h"
 
@@ -166,6 +167,7 @@ void expectContractionsMatchDefinitions(const StructuralCoefficients& c, std::ui
 
 TEST(DenseCoefficients, ContractionsMatchDefinitions) {
     expectContractionsMatchDefinitions(randomDense(20, 4), 10);
+    const ThreadCount threads(2);  // the suite's tests run with one thread unless they ask
     expectContractionsMatchDefinitions(randomDense(70, 5), 11);  // large enough to use threads
 }
 

@@ -69,8 +69,9 @@ std::string refusal(Build build) {
 TEST(InitialStates, StatesTooLargeForAStepAreRefused) {
     // ½|v|² = 1e300 is finite, its square (every step takes norms of C·v·v) is not; 1e308
     // makes the state itself infinite.
-    for (const auto& [huge, why] :
-         {std::pair{1e300, "too large"}, std::pair{1e308, "not finite"}}) {
+    for (const auto& c : {std::pair{1e300, "too large"}, std::pair{1e308, "not finite"}}) {
+        const double huge = c.first;  // not a structured binding: clang 14 cannot capture one
+        const char* why = c.second;
         const std::string message = refusal([&] { randomVelocity(8, {0, -1, huge, 1}); });
         EXPECT_EQ(message.rfind("random velocity: ", 0), 0u) << huge << ": " << message;
         EXPECT_NE(message.find(why), std::string::npos) << huge << ": " << message;
