@@ -48,10 +48,10 @@ bool pairsSolveTheProblem(const Eigen::SparseMatrix<double>& k, const Eigen::Vec
     const double scale = std::max(std::abs(lo), std::abs(hi));
     const Eigen::MatrixXd residual =
         k * pairs.vectors - m.asDiagonal() * pairs.vectors * pairs.values.asDiagonal();
-    const Eigen::VectorXd root = m.cwiseSqrt();
+    const Eigen::VectorXd root = m.cwiseSqrt(), inverseRoot = root.cwiseInverse();
     for (Eigen::Index i = 0; i < pairs.values.size(); ++i) {
         const double value = pairs.values[i];
-        const double r = root.cwiseInverse().cwiseProduct(residual.col(i)).norm();
+        const double r = inverseRoot.cwiseProduct(residual.col(i)).norm();
         const double x = root.cwiseProduct(pairs.vectors.col(i)).norm();
         if (!(value >= lo && value <= hi && r <= kResidualLimit * scale * x)) return false;
     }
