@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include <cblas.h>
+
 #include <Eigen/SparseCore>
 
 #include "engine/core/PackedLayout.h"
@@ -109,8 +111,9 @@ ColSparse rowBlock(const SparseRows& rows, std::int64_t first, std::int64_t coun
     return m;
 }
 
-/// Elements whose samples are held at once: 3 × this × N doubles.
-constexpr std::int64_t kElementBlock = 1 << 16;
+/// Elements whose samples are held at once: 3 × this × N doubles, and the products of 256 pairs
+/// (32 MB; 128 MB at 2¹⁶ elements, whose writes and reads then took longer).
+constexpr std::int64_t kElementBlock = 1 << 14;
 
 }  // namespace
 
@@ -133,7 +136,11 @@ void accumulateCrossProducts(const Eigen::MatrixXd& omega, const Eigen::MatrixXd
             const int k = pairK[size_t(start + m)], j = pairJ[size_t(start + m)];
             r.col(m) = p.col(k).cwiseProduct(q.col(j)) - q.col(k).cwiseProduct(p.col(j));
         }
-        out.middleCols(start, count).noalias() += omega.transpose() * r.leftCols(count);
+        // out += ωᵀ r by OpenBLAS, on every core (with kElementBlock, 7% faster than Eigen's
+        // product on blocks of 2¹⁶ elements: N = 230, 147 k elements, 37 s against 40 s).
+        cblas_dgemm(CblasColMajor, CblasTrans, CblasNoTrans, modes, int(count), int(elements), 1.0,
+                    omega.data(), int(omega.outerStride()), r.data(), int(r.outerStride()), 1.0,
+                    out.col(start).data(), int(out.outerStride()));
     }
 }
 

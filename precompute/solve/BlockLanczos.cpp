@@ -6,6 +6,7 @@
 
 #include <cblas.h>
 
+#include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
 #include <Eigen/QR>
 
@@ -65,6 +66,26 @@ MatrixXd innerProducts(const Eigen::Ref<const MatrixXd>& a, const Eigen::Ref<con
 /// Removes from `block` its parts along the orthonormal columns of `basis`.
 void project(const Eigen::Ref<const MatrixXd>& basis, Eigen::Ref<MatrixXd> block) {
     if (basis.cols() > 0) gemm(false, -1.0, basis, innerProducts(basis, block), 1.0, block);
+}
+
+/// Cholesky QR trusts a column whose part outside the columns before it is at least this fraction
+/// of its length: its loss of orthogonality, about ε·cond², is then removed by a second pass.
+constexpr double kCholeskyTrust = 1e-5;
+
+/// x ← x R⁻¹ with RᵀR = xᵀx (Cholesky QR: a Gram matrix and a triangular solve, BLAS-3 on every
+/// core, where Householder QR works a column at a time on one core); returns R's diagonal, or an
+/// empty vector (x unchanged) when the Gram matrix is too ill-conditioned to trust
+/// (kCholeskyTrust).
+VectorXd choleskyQr(Eigen::Ref<MatrixXd> x) {
+    const MatrixXd gram = innerProducts(x, x);
+    const Eigen::LLT<MatrixXd> llt(gram);
+    if (llt.info() != Eigen::Success) return {};
+    const MatrixXd r = llt.matrixU();
+    for (Index c = 0; c < x.cols(); ++c)
+        if (!(r(c, c) >= kCholeskyTrust * std::sqrt(gram(c, c)))) return {};
+    cblas_dtrsm(CblasColMajor, CblasRight, CblasUpper, CblasNoTrans, CblasNonUnit, int(x.rows()),
+                int(x.cols()), 1.0, r.data(), int(r.outerStride()), x.data(), int(x.outerStride()));
+    return r.diagonal();
 }
 
 /// The search space of one run: orthonormal columns Q (orthogonal to the deflated ones) and the
@@ -150,7 +171,30 @@ private:
     /// The next block: an orthonormal basis of mImage (whose parts along the deflated columns
     /// and the space were removed once; `lengths` its columns' lengths before) orthogonal to
     /// both, and R = Nᵀ mImage. Columns with nothing left become random ones.
-    void findNext(VectorXd lengths) {
+    void findNext(const VectorXd& lengths) {
+        mScratch = mImage;
+        if (!nextByCholesky(lengths)) nextByHouseholder(lengths);
+    }
+
+    /// findNext by Cholesky QR (block Gram–Schmidt with it, BCGS2): normalize, project once more,
+    /// normalize twice. False, with only mScratch changed, where a column has too little left to
+    /// trust it (lost, or nearly in the span of the others: Householder QR decides then).
+    bool nextByCholesky(const VectorXd& lengths) {
+        const VectorXd diagonal = choleskyQr(mScratch);
+        if (diagonal.size() == 0) return false;
+        for (Index c = 0; c < diagonal.size(); ++c)
+            if (!(diagonal[c] > kLostFraction * lengths[c])) return false;
+        project(mDeflated, mScratch);
+        project(mQ.leftCols(mFilled), mScratch);
+        for (int pass = 0; pass < 2; ++pass)
+            if (choleskyQr(mScratch).size() == 0) return false;
+        mNext = mScratch;
+        mR = innerProducts(mNext, mImage);
+        return true;
+    }
+
+    /// findNext by Householder QR, which also replaces columns with nothing left by random ones.
+    void nextByHouseholder(VectorXd lengths) {
         const Index b = blockSize();
         mScratch = mImage;
         for (int attempt = 0; attempt < 8; ++attempt) {

@@ -71,6 +71,26 @@ TEST(BlockLanczos, LargestPairsOfAKnownSpectrumWithCopies) {
     EXPECT_GT(r.applied, 0);
 }
 
+// Two distinct eigenvalues: the Krylov space of a block of 8 is invariant after two blocks, so the
+// third has nothing left (Cholesky QR cannot resolve that; Householder QR finds it and starts
+// random directions), and the 30 pairs wanted are all copies of the top one.
+TEST(BlockLanczos, AnInvariantSpaceReachedGoesOnWithFreshDirections) {
+    const int n = 200, count = 30;
+    Eigen::VectorXd d = Eigen::VectorXd::Constant(n, 0.5);
+    d.head(100).setOnes();
+    const KnownSpectrum a(d);
+    const BlockLanczosResult r =
+        largestEigenpairs(a.apply(), n, Eigen::MatrixXd(n, 0), request(count));
+    ASSERT_EQ(r.values.size(), count);
+    for (int i = 0; i < count; ++i) EXPECT_NEAR(r.values[i], 1.0, 1e-12) << i;
+    EXPECT_LE((r.vectors.transpose() * r.vectors - Eigen::MatrixXd::Identity(count, count))
+                  .cwiseAbs()
+                  .maxCoeff(),
+              1e-12);
+    // In the top eigenspace: no part along the eigenvectors of 0.5.
+    EXPECT_LE((a.basis().rightCols(n - 100).transpose() * r.vectors).cwiseAbs().maxCoeff(), 1e-10);
+}
+
 TEST(BlockLanczos, DeflatedDirectionsStayOut) {
     const int n = 300, count = 10;
     const Eigen::VectorXd d = inverseSpectrum(n, 1);
