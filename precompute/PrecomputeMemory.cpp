@@ -12,6 +12,9 @@
 #include "precompute/closedform/ClosedFormCoefficients.h"
 #include "precompute/geometry/Domain.h"
 #include "precompute/geometry/ObjMesh.h"
+#include "precompute/solve/BlockLanczos.h"
+#include "precompute/solve/EigenMethod.h"
+#include "precompute/solve/ProcessGroup.h"
 
 namespace modeflow {
 namespace {
@@ -33,11 +36,21 @@ struct Counts {
     double scalarRequest = 0.0;  ///< scalar eigenpairs computed (the first Neumann ones at least)
     bool tensor = true;  ///< structural coefficients assembled (precompute/CoefficientChoice.h)
     bool closedForm = false;  ///< whole box, free slip: descriptors and sparse coefficients
+    EigensolverChoice choice = EigensolverChoice::Automatic;
+    int ranks = 1;  ///< MPI ranks of the precompute
 };
 
-/// Spectra's Krylov dimension (precompute/solve/ShiftInvertEigensolver.cpp).
-double krylovDimension(double n, double count) {
-    return std::min(n, std::max(std::floor(1.5 * count) + 1.0, count + 30.0));
+/// The n-vectors an eigensolve holds at its peak: Spectra's Krylov basis (its dimension in
+/// precompute/solve/ShiftInvertEigensolver.cpp; slicing's intervals measured alike), the Ritz
+/// vectors and their rescaled copy; or block Lanczos's search space of twice the count with its
+/// three working blocks (precompute/solve/BlockLanczos.cpp) and the Ritz vectors, rescaled in place
+/// once the space is freed.
+double heldVectors(double n, double count, EigenMethod method) {
+    if (method == EigenMethod::BlockLanczos) {
+        const double block = double(BlockLanczosRequest{}.blockSize);
+        return std::min(n, count + std::max(count, 4.0 * block)) + 3.0 * block + count;
+    }
+    return std::min(n, std::max(std::floor(1.5 * count) + 1.0, count + 30.0)) + 2.0 * count;
 }
 
 /// Entries of the Cholesky factor of an operator on n unknowns with CHOLMOD's fill-reducing
@@ -49,11 +62,18 @@ double factorEntries(int dim, double n, bool velocity) {
     return (velocity ? 4.0 : 2.0) * n * std::log2(std::max(n, 2.0));
 }
 
-double eigensolveBytes(int dim, double n, double count, bool velocity) {
+double eigensolveBytes(int dim, double n, double count, bool velocity, EigenMethod method) {
     if (n < 1.0 || count < 1.0) return 0.0;
+    if (method == EigenMethod::Dense) return 3.0 * n * n * 8.0;  // the matrix, its vectors, a copy
     const double operatorRow = dim == 3 ? (velocity ? 14.6 : 7.0) : (velocity ? 9.0 : 5.0);
-    return n * (krylovDimension(n, count) + 2.0 * count) * 8.0 +
-           13.0 * factorEntries(dim, n, velocity) + 24.0 * operatorRow * n;
+    return n * heldVectors(n, count, method) * 8.0 + 13.0 * factorEntries(dim, n, velocity) +
+           24.0 * operatorRow * n;
+}
+
+/// The eigensolve of n unknowns by the method the precompute will choose.
+double eigensolveBytes(const Counts& c, double n, double count, bool velocity) {
+    const auto method = chooseEigenMethod(std::int64_t(n), std::int64_t(count), c.choice, c.ranks);
+    return eigensolveBytes(c.dim, n, count, velocity, method);
 }
 
 struct Peak {
@@ -83,8 +103,8 @@ Peak peakOf(const Counts& c) {
                          quadrature + 8.0 * c.cells + 24.0 * c.velocity + 16.0 * c.scalar;
     const Peak stages[] = {
         {(three ? 430.0 : 280.0) * c.cells, "domain and cut-cell measures"},
-        {resident + eigensolveBytes(c.dim, c.scalar, c.scalarRequest, false), "scalar eigensolve"},
-        {resident + scalarModes + eigensolveBytes(c.dim, c.velocity, c.highest, true),
+        {resident + eigensolveBytes(c, c.scalar, c.scalarRequest, false), "scalar eigensolve"},
+        {resident + scalarModes + eigensolveBytes(c, c.velocity, c.highest, true),
          "velocity eigensolve"},
         {resident + scalarModes + 2.0 * c.velocity * c.kept * 8.0 + 1.6 * packed +
              2.0 * quadrature + elements * (3.0 * c.kept + 256.0) * 8.0,
@@ -182,6 +202,8 @@ PrecomputeMemory estimatePrecomputeMemory(const SceneSpec& scene) {
     // One constant per component is computed and dropped; the first Neumann modes always are.
     c.scalarRequest = std::max(basis.scalarModes, 1) + 1;
     c.closedForm = hasClosedFormVelocity(scene);
+    c.choice = basis.eigensolver;
+    c.ranks = currentProcessGroup().size;
     c.tensor =
         c.closedForm ||
         chooseTensor(basis.coefficients, basis.velocityCount(), std::int64_t(c.velocity)).assemble;

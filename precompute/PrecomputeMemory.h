@@ -8,10 +8,14 @@
 /// cells, N the highest velocity mode, K the modes kept, M the scalar modes):
 ///   measures      430·C (3D) or 280·C (2D), transient
 ///   resident      310·C + 490·V (3D) or 50·C + 300·V (2D): grid, measures, operators
-///   eigensolve    n·(ncv + 2·count)·8 (Krylov basis, Ritz vectors, their rescaled copy)
+///   eigensolve    n·(ncv + 2·count)·8 (Krylov basis, Ritz vectors, their rescaled copy; ncv =
+///                 max(1.5·count + 1, count + 30); slicing alike), or for block Lanczos
+///                 n·(count + max(count, 64) + 48 + count)·8 (search space, working blocks, Ritz
+///                 vectors; precompute/solve/EigenMethod.h says which)
 ///                 + 13·nnz(L) (CHOLMOD's peak) + 24·nnz(K) (operator and its shifted copy),
 ///                 nnz(L) ≈ 11·n^{4/3} (3D) or 4·n·log2(n) (2D) for the velocity operator,
-///                 5.5·n^{4/3} or 2·n·log2(n) for the scalar one
+///                 5.5·n^{4/3} or 2·n·log2(n) for the scalar one; up to 1200 unknowns 3·n²·8
+///                 (dense)
 ///   coefficients  2·V·K·8 (modes) + 1.6·K²(K−1)/2·8 (packed, sparse copy) + (V/dim)·(3K+256)·8
 ///                 + 2·120·V (the vorticity quadrature and its copy); without a tensor
 ///                 (precompute/CoefficientChoice.h) the packed and element terms are 0

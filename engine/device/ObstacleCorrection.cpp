@@ -73,6 +73,13 @@ void ObstacleCorrection::setObstacles(std::span<const MovingObstacle> obstacles,
     // The cells the regions may cover: each one's shape box turned, within its reach (a
     // torus's flat box, not its reach's ball, bounds the faces the mismatch walks).
     mBox = displacementBox(obstacles, poses, mGrid);
+    mRecordBox = mBox;
+}
+
+void ObstacleCorrection::widenRecordBox(const CellBox& box) {
+    if (!boxContains(box, mBox, mGrid))
+        throw Error("obstacle correction: the recorded box does not hold the obstacles' cells");
+    mRecordBox = box;
 }
 
 template <typename Project>
@@ -98,7 +105,7 @@ void ObstacleCorrection::recordWith(vulkan::CommandSequence& sequence,
     std::uint64_t lines = 0;  // an invocation each
     for (int axis = 0; axis < 3; ++axis) {
         for (int b = 0; b < 3; ++b) {
-            int count = mBox.count[b];
+            int count = mRecordBox.count[b];
             if (b == axis)
                 count = mGrid.periodic[b] ? std::min(count + 1, mGrid.cells[b]) : count + 1;
             params.boxCount[3 * axis + b] = std::uint32_t(count);
@@ -108,7 +115,7 @@ void ObstacleCorrection::recordWith(vulkan::CommandSequence& sequence,
                                     : 0u;
         lines += params.boxLines[axis];
         // Onto the grid along a periodic axis (the shader then wraps by one length at most).
-        params.boxFirst[axis] = mGrid.wrap(axis, mBox.first[axis]);
+        params.boxFirst[axis] = mGrid.wrap(axis, mRecordBox.first[axis]);
     }
     // The DOFs the box leaves out hold 0.
     sequence.fill(mMismatch, mMismatch.bytes(), 0u);
@@ -139,7 +146,7 @@ void ObstacleCorrection::record(vulkan::CommandSequence& sequence,
                                 const vulkan::DeviceBuffer& faceField,
                                 const vulkan::DeviceBuffer& v) const {
     // The mismatch is 0 off the box's faces: the passes take the box's lines alone.
-    const CellBox box = cellBox();
+    const CellBox box = recordBox();
     recordWith(sequence, faceField, v, [&] {
         transforms.recordFaceFieldProjection(sequence, mMismatch, mCorrection, &box);
     });

@@ -45,6 +45,19 @@ public:
     /// The cells the obstacles set may cover, with one around them (displacementBox: their
     /// faces are those the mismatch reads; along periodic axes the box may wrap).
     CellBox cellBox() const { return mBox; }
+    /// The cells whose faces the recordings walk: cellBox() as setObstacles leaves it, or a box
+    /// holding it (widenRecordBox). Faces the obstacles do not cover add zeros, so a recording
+    /// with a larger box gives the same correction while the obstacles stay inside it.
+    CellBox recordBox() const { return mRecordBox; }
+    /// Records from now on walk `box`, which must hold cellBox() (sweptDisplacementBox).
+    /// @throw modeflow::Error when it does not.
+    void widenRecordBox(const CellBox& box);
+    /// What a recording holds besides the buffers' contents: the obstacles' count, their kinds
+    /// (kernel variants) and the level sets' buffer.
+    std::uint32_t obstacleCount() const { return mObstacleCount; }
+    std::uint32_t kinds() const { return mKinds; }
+    std::uint64_t latticeGeneration() const { return mLattices.generation(); }
+    const MacGrid& grid() const { return mGrid; }
 
     /// Records v −= Ψᵀ⋆(mismatch of `faceField`) with the basis in `modes`; nothing without
     /// obstacles.
@@ -66,6 +79,7 @@ private:
     std::uint32_t mObstacleCount = 0;
     std::uint32_t mKinds = 0;  ///< solidKinds of the obstacles now
     CellBox mBox;              ///< cellBox(), set by setObstacles
+    CellBox mRecordBox;        ///< recordBox()
 
     vulkan::DeviceBuffer mObstacles;
     vulkan::DeviceBuffer mDofOfFace;  ///< per grid face its DOF, OBSTACLE_NO_DOF for none

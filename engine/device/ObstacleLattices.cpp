@@ -58,6 +58,7 @@ void ObstacleLattices::update(std::span<const MovingObstacle> obstacles) {
         mPlaces.emplace(set, place);
     }
     mBuffer = latticeBuffer(mContext, std::move(values));
+    ++mGeneration;
     mUploaded = std::move(sets);
 }
 

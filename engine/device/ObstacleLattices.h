@@ -39,11 +39,14 @@ public:
     /// Where `set` lies (one of the last update's; null: {0, kNoVelocity}).
     LatticePlace placeOf(const SolidLevelSet* set) const;
     const vulkan::DeviceBuffer& buffer() const { return mBuffer; }
+    /// Counts the buffers made: a recording that bound buffer() holds a stale one once it grows.
+    std::uint64_t generation() const { return mGeneration; }
 
 private:
     const vulkan::VulkanContext& mContext;
     vulkan::DeviceBuffer mBuffer;
     std::vector<const SolidLevelSet*> mUploaded;
+    std::uint64_t mGeneration = 0;
     std::unordered_map<const SolidLevelSet*, LatticePlace> mPlaces;
 };
 

@@ -171,29 +171,46 @@ void Simulation::setTiming(bool on) {
 
 bool Simulation::prepareStep() {
     // Emitters switch on and off at step boundaries; the device list changes only when they do,
-    // or when an active one moves.
+    // or when an active one moves. Their rates are uploaded in place, where kept steps read them.
     std::vector<bool> active(mSettings.emitters.size());
     bool moving = false;
     for (std::size_t e = 0; e < active.size(); ++e) {
         active[e] = mSettings.emitters[e].activeAt(mTime);
         moving = moving || (active[e] && mSettings.emitters[e].moves());
     }
-    bool same = true;
     if (active != mActiveEmitters || moving) {
         mSmoke.setEmitters(activeEmitters(mSettings.emitters, mTime));
         mActiveEmitters = std::move(active);
-        same = false;
     }
-    if (mActiveInflows.changes(mSettings.inflows, mTime)) {
+    // The ghosts too; the sides letting air in are in the step's shape.
+    if (mActiveInflows.changes(mSettings.inflows, mTime))
         mSmoke.setInflows(activeInflows(mSettings.inflows, mTime));
-        same = false;
-    }
-    // The kept steps recorded the lists as they were (their counts, their ghosts' sides).
-    if (!same) dropKeptSteps();
-    // Solids, jets and particles record where they are and how many there are, and conservative
-    // smoke its substeps read mid-step: those steps are recorded afresh.
+    // Obstacles and jets where they are at the end of the step, which the advection then sees.
     mRegions = mSettings.velocityRegions(mTime);
-    return same && !mFlux && mSettings.obstacles.empty() && mParticles.empty() && mRegions.empty();
+    if (!mRegions.empty()) mObstacles.setObstacles(mRegions, mTime + mSettings.dt);
+    // Solids and particles record where they are and how many there are, and conservative
+    // smoke its substeps read mid-step: those steps are recorded afresh.
+    return !mFlux && mSettings.obstacles.empty() && mParticles.empty();
+}
+
+Simulation::StepShape Simulation::stepShape() const {
+    StepShape shape;
+    shape.substeps = mSchedule.substeps();
+    shape.inflowBits = mSmoke.inflowBits();
+    shape.regionCount = std::uint32_t(mRegions.size());
+    if (!mRegions.empty()) {
+        shape.regionKinds = mObstacles.kinds();
+        shape.latticeGeneration = mObstacles.latticeGeneration();
+        shape.regionBox = mObstacles.cellBox();
+    }
+    return shape;
+}
+
+bool Simulation::recordedFor(const StepShape& kept, const StepShape& shape) const {
+    return kept.substeps == shape.substeps && kept.inflowBits == shape.inflowBits &&
+           kept.regionCount == shape.regionCount && kept.regionKinds == shape.regionKinds &&
+           kept.latticeGeneration == shape.latticeGeneration &&
+           boxContains(kept.regionBox, shape.regionBox, mObstacles.grid());
 }
 
 void Simulation::dropKeptSteps() {
@@ -222,13 +239,10 @@ void Simulation::recordStep(std::vector<std::size_t>& boundaries) {
     boundaries.push_back(dispatchMark());
     mStepper.recordStep(recording(), dt, mSchedule.substeps());
     boundaries.push_back(dispatchMark());
-    const std::vector<MovingObstacle>& regions = mRegions;
-    if (!regions.empty()) {
-        // Where the obstacles are at the end of the step, which the advection then sees. The
-        // mismatch reads the velocity on the obstacles' box alone (a closed-form basis
+    if (!mRegions.empty()) {
+        // The mismatch reads the velocity on the box it walks alone (a closed-form basis
         // reconstructs only that); the corrected velocity is the step's reconstruction.
-        mObstacles.setObstacles(regions, mTime + dt);
-        const CellBox box = mObstacles.cellBox();
+        const CellBox box = mObstacles.recordBox();
         recordReconstruction(&box);
         if (mSeparable)
             mObstacles.record(recording(), *mSeparable, mFaceVelocity, mStepper.stateBuffer());
@@ -291,17 +305,26 @@ FrameStats Simulation::advanceSteps(int steps) {
         mStepTimesMs.clear();
         mStepLabels.clear();
         const bool keepable = prepareStep();
+        const StepShape shape = stepShape();
         // The advection writes the other fields of each pair each step: a kept step per parity.
         KeptStep& kept = *mKept[std::size_t(mSmoke.parity())];
-        if (keepable && kept.sequence.hasKeptRecording() && kept.substeps == mSchedule.substeps()) {
+        if (keepable && kept.sequence.hasKeptRecording() && recordedFor(kept.shape, shape)) {
             kept.sequence.resubmit();
+            ++stats.resubmittedSteps;
             mStepTimesMs = kept.sequence.dispatchTimesMs();
             mStepLabels = kept.sequence.dispatchLabels();
             boundaries = kept.boundaries;
             if (mSmoke.parity() != kept.endParity) mSmoke.flip();
         } else {
             const bool keep = keepable && mStepRecording == StepRecording::Once;
-            if (keep) kept.sequence.keepNextRecording();
+            if (keep) {
+                kept.sequence.keepNextRecording();
+                // The regions' faces over the next steps, so that it serves them too.
+                if (!mRegions.empty())
+                    mObstacles.widenRecordBox(sweptDisplacementBox(mRegions, mTime + mSettings.dt,
+                                                                   mSettings.dt, kSweptSteps,
+                                                                   mObstacles.grid()));
+            }
             // Back to the afresh sequence however the recording ends.
             struct Restore {
                 vulkan::CommandSequence*& into;
@@ -313,7 +336,8 @@ FrameStats Simulation::advanceSteps(int steps) {
             submitWithinStep();
             if (keep) {
                 kept.boundaries = boundaries;
-                kept.substeps = mSchedule.substeps();
+                kept.shape = shape;
+                if (!mRegions.empty()) kept.shape.regionBox = mObstacles.recordBox();
                 kept.endParity = mSmoke.parity();
             }
         }

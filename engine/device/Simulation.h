@@ -47,8 +47,9 @@ public:
     /// Uploads the basis and coefficients. `smokeMask`: one byte per cell of the smoke grid
     /// (basis grid refined by settings.smokeScale), non-zero inside Ω (precompute's fluidMask).
     /// `timestamps`: time each stage on the device (FrameStats), where the queue can.
-    /// `recording`: a step whose commands stay the same (no solids, jets, particles or
-    /// conservative smoke; its emitters and inflows unchanged) is recorded once and resubmitted.
+    /// `recording`: a step whose commands stay the same (no solids, particles or conservative
+    /// smoke; its open sides letting in air unchanged, and jets within the box its recording
+    /// walks) is recorded once and resubmitted.
     /// @throw modeflow::Error for LANS-α with MHD, a mask of the wrong size, or a device error.
     Simulation(const vulkan::VulkanContext& context, const BasisCache& cache,
                const StructuralCoefficients& coefficients, SimulationSettings settings,
@@ -88,6 +89,17 @@ public:
     const vulkan::DeviceBuffer& faceVelocityBuffer() const { return mFaceVelocity; }
 
 private:
+    /// What a step records besides its buffers' contents (which are uploaded before each
+    /// submission): a kept step runs again for a step of the same shape whose regions lie in
+    /// its regions' box.
+    struct StepShape {
+        int substeps = 0;
+        std::uint32_t inflowBits = 0;  ///< the open sides letting air in (the advection's)
+        std::uint32_t regionCount = 0, regionKinds = 0;
+        std::uint64_t latticeGeneration = 0;
+        CellBox regionBox;  ///< the cells the regions' correction walks
+    };
+
     /// A step recorded once and resubmitted while what it records stays the same, for one parity
     /// of the smoke's fields (the advection swaps them each step).
     struct KeptStep {
@@ -95,14 +107,22 @@ private:
             : sequence(context, timestamps, dispatches) {}
         vulkan::CommandSequence sequence;
         std::vector<std::size_t> boundaries;  ///< its stages' dispatch ranges
-        int substeps = 0;
+        StepShape shape;
         int endParity = 0;  ///< the smoke's parity after it
     };
 
-    /// Uploads the emitters and inflows of the step from mTime where they changed, and takes the
-    /// step's velocity regions (mRegions); whether the step records what a kept step of its
-    /// parity recorded.
+    /// Steps whose regions' box a kept step's recording covers: it walks the faces of where
+    /// the regions are over this many steps, and is recorded again when they leave it.
+    static constexpr int kSweptSteps = 8;
+
+    /// Uploads the emitters and inflows of the step from mTime where they changed, and the
+    /// step's velocity regions (mRegions) where they are at its end; whether the step may run as
+    /// a kept one (no solids, particles or conservative smoke: those record afresh).
     bool prepareStep();
+    /// The shape of the step prepareStep() prepared.
+    StepShape stepShape() const;
+    /// Whether `kept` recorded a step of this shape.
+    bool recordedFor(const StepShape& kept, const StepShape& shape) const;
     /// Forgets the kept steps (what a step records changed).
     void dropKeptSteps();
     /// Where a step records now.

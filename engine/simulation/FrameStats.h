@@ -14,6 +14,8 @@ struct FrameStats {
     int unconvergedSteps = 0;  ///< steps whose implicit solve missed its tolerance
     int substeps = 1;          ///< most modal substeps a step took (the device adapts them)
     int timedSteps = 0;        ///< steps whose device times were measured (Simulation::setTiming)
+    /// Steps the device ran as recorded for an earlier step (device::StepRecording::Once).
+    int resubmittedSteps = 0;
     /// Device time per stage summed over the timed steps, milliseconds (0 on the CPU reference or
     /// without timestamps): forces (force field + projection), modal step, reconstruction (of
     /// the velocity the smoke moves in), moving obstacles (the velocity their mismatch reads,

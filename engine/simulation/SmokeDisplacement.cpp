@@ -144,6 +144,35 @@ CellBox displacementBox(std::span<const MovingObstacle> solids, std::span<const 
     return box;
 }
 
+bool boxContains(const CellBox& outer, const CellBox& inner, const MacGrid& grid) {
+    if (inner.cellCount() == 0) return true;
+    for (int a = 0; a < 3; ++a) {
+        const int n = grid.cells[a];
+        if (a < grid.dim && grid.periodic[a]) {
+            if (outer.count[a] >= n) continue;
+            const int offset = ((inner.first[a] - outer.first[a]) % n + n) % n;
+            if (offset + inner.count[a] > outer.count[a]) return false;
+        } else if (inner.first[a] < outer.first[a] ||
+                   inner.first[a] + inner.count[a] > outer.first[a] + outer.count[a]) {
+            return false;
+        }
+    }
+    return true;
+}
+
+CellBox sweptDisplacementBox(std::span<const MovingObstacle> solids, double t, double dt, int steps,
+                             const MacGrid& grid) {
+    // Each solid once per step: the box's extremes over all of them.
+    std::vector<MovingObstacle> each;
+    std::vector<ObstaclePose> poses;
+    for (int s = 0; s < steps; ++s)
+        for (const MovingObstacle& solid : solids) {
+            each.push_back(solid);
+            poses.push_back(solid.poseAt(t + dt * double(s)));
+        }
+    return displacementBox(each, poses, grid);
+}
+
 std::vector<CellBox> displacementBoxes(std::span<const MovingObstacle> solids,
                                        std::span<const ObstaclePose> poses,
                                        const MacGrid& smokeGrid) {

@@ -54,6 +54,14 @@ struct CellBox {
 CellBox displacementBox(std::span<const MovingObstacle> solids, std::span<const ObstaclePose> poses,
                         const MacGrid& grid);
 
+/// Whether every cell of `inner` lies in `outer` (along a periodic axis either may go round).
+bool boxContains(const CellBox& outer, const CellBox& inner, const MacGrid& grid);
+
+/// displacementBox of the solids at t, t + dt, …, t + (steps − 1)·dt: a box that holds each of
+/// those steps' boxes, for work recorded once and run while the solids stay inside it.
+CellBox sweptDisplacementBox(std::span<const MovingObstacle> solids, double t, double dt, int steps,
+                             const MacGrid& grid);
+
 /// The cells to cover as boxes: displacementBox of all the solids, or one box each where those
 /// hold fewer cells together (solids far apart).
 std::vector<CellBox> displacementBoxes(std::span<const MovingObstacle> solids,

@@ -16,9 +16,6 @@
 namespace modeflow {
 namespace {
 
-/// Below this size a dense solve is cheaper and exact for any count.
-constexpr Eigen::Index kDenseLimit = 1200;
-
 std::string plural(std::int64_t n, const char* word) {
     return std::to_string(n) + " " + word + (n == 1 ? "" : "s");
 }
@@ -27,16 +24,15 @@ std::string plural(std::int64_t n, const char* word) {
 
 EigenPairs lowestEigenpairs(const Eigen::SparseMatrix<double>& k, const Eigen::VectorXd& m,
                             const EigenRequest& request, EigensolverChoice choice) {
-    if (k.rows() > kDenseLimit) {
-        const bool slice = choice == EigensolverChoice::Slepc ||
-                           (choice == EigensolverChoice::Automatic &&
-                            (request.count >= kSlicingFromCount || currentProcessGroup().size > 1));
-        if (slice) return slicedEigenpairs(k, m, request);
-        const bool blocks =
-            choice == EigensolverChoice::Block ||
-            (choice == EigensolverChoice::Automatic && request.count >= kBlockLanczosFromCount);
-        return smallestEigenpairs(k, m, request,
-                                  blocks ? KrylovMethod::BlockLanczos : KrylovMethod::Lanczos);
+    switch (chooseEigenMethod(k.rows(), request.count, choice, currentProcessGroup().size)) {
+        case EigenMethod::Slicing:
+            return slicedEigenpairs(k, m, request);
+        case EigenMethod::BlockLanczos:
+            return smallestEigenpairs(k, m, request, KrylovMethod::BlockLanczos);
+        case EigenMethod::Lanczos:
+            return smallestEigenpairs(k, m, request, KrylovMethod::Lanczos);
+        case EigenMethod::Dense:
+            break;
     }
     const Eigen::VectorXd s = m.cwiseSqrt().cwiseInverse();
     const Eigen::MatrixXd a = s.asDiagonal() * Eigen::MatrixXd(k) * s.asDiagonal();

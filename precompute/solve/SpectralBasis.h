@@ -9,6 +9,7 @@
 
 #include "precompute/dec/CutCellDec.h"
 #include "precompute/dec/DirichletScalarDec.h"
+#include "precompute/solve/EigenMethod.h"
 #include "precompute/solve/ShiftInvertEigensolver.h"
 
 namespace modeflow {
@@ -33,22 +34,10 @@ struct ScalarBasisResult {
 
 /// The lowest `request.count` eigenpairs of K x = λ M x (M diagonal, positive): a dense solve
 /// below 1200 unknowns (exact for any count), above it shift-invert Lanczos (Spectra), block
-/// Lanczos or spectrum slicing (SLEPc) as `choice` says; Automatic slices from
-/// kSlicingFromCount eigenpairs on, or whenever the precompute runs on several MPI ranks, and
-/// uses block Lanczos from kBlockLanczosFromCount. Slicing needs `request.estimate`.
+/// Lanczos or spectrum slicing (SLEPc), as chooseEigenMethod (EigenMethod.h) picks from `choice`
+/// and the precompute's MPI ranks. Slicing needs `request.estimate`.
 EigenPairs lowestEigenpairs(const Eigen::SparseMatrix<double>& k, const Eigen::VectorXd& m,
                             const EigenRequest& request, EigensolverChoice choice);
-
-/// From this many eigenpairs on, Automatic slices the spectrum (measured: at 140 k DOFs the two
-/// tie at 200 eigenpairs, and one factorization wins by 1.6× at 230 on the seed's sphere scene;
-/// precompute/README.md, "Sliced eigensolves and MPI").
-inline constexpr int kSlicingFromCount = 300;
-
-/// From this many eigenpairs on (below kSlicingFromCount), Automatic searches in blocks: on the
-/// seed's sphere scene (147 k unknowns, 230 eigenpairs) block Lanczos took 65 s where Spectra's
-/// Lanczos took 132–138 s. Below four blocks of vectors a block run mostly restarts (the first
-/// Neumann eigenvalue alone took 160 solves), where one vector at a time needs a few dozen.
-inline constexpr int kBlockLanczosFromCount = 64;
 
 /// |Ω| as the DOF cells measure it (Σ 1/⋆n).
 double domainMeasure(const Eigen::VectorXd& cellStar);

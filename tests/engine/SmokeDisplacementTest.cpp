@@ -197,6 +197,35 @@ TEST(SmokeDisplacement, ASolidLengthsAwayRoundAPeriodicAxisCoversWhereItWraps) {
     EXPECT_NEAR(total(fields.density), before, 1e-12 * before);
 }
 
+TEST(SmokeDisplacement, ASweptBoxHoldsEachStepsBoxAndNoLaterOne) {
+    // What a kept step records its solids' correction over (engine/device/Simulation.h): the
+    // box of 8 steps holds each of those steps' boxes and not the box two steps after them; round
+    // a periodic axis too, where the path wraps.
+    for (const bool periodic : {false, true}) {
+        SCOPED_TRACE(periodic ? "periodic" : "walls");
+        const MacGrid grid = unitGrid(2, 32, periodic);
+        const std::vector<MovingObstacle> solids{
+            ball(0.1, {{0.0, {0.2, 0.5, 0.0}}, {1.0, {1.2, 0.5, 0.0}}}),
+            box({0.05, 0.1, 0.0}, {{0.0, {0.5, 0.3, 0.0}}, {1.0, {0.5, 0.4, 0.0}}})};
+        const double t = periodic ? 0.6 : 0.1, dt = 0.02;  // periodic: its box wraps
+        const CellBox swept = sweptDisplacementBox(solids, t, dt, 8, grid);
+        const auto boxAt = [&](double time) {
+            const std::vector<ObstaclePose> poses{solids[0].poseAt(time), solids[1].poseAt(time)};
+            return displacementBox(solids, poses, grid);
+        };
+        for (int s = 0; s < 8; ++s) EXPECT_TRUE(boxContains(swept, boxAt(t + s * dt), grid)) << s;
+        EXPECT_FALSE(boxContains(swept, boxAt(t + 10 * dt), grid));
+        EXPECT_TRUE(boxContains(swept, swept, grid));
+        EXPECT_TRUE(boxContains(swept, CellBox{}, grid)) << "an empty box lies in any";
+    }
+    // Along a periodic axis a box going round holds one that starts past the seam.
+    const MacGrid grid = unitGrid(2, 32, true);
+    const CellBox round{{30, 4, 0}, {6, 5, 1}}, past{{1, 5, 0}, {3, 2, 1}},
+        beyond{{2, 5, 0}, {3, 2, 1}};
+    EXPECT_TRUE(boxContains(round, past, grid));
+    EXPECT_FALSE(boxContains(round, beyond, grid));
+}
+
 TEST(SmokeDisplacement, AStillSolidPushesSmokeThatReachedItOutward) {
     // Smoke in the outer cells of a still ball (as advection leaves it) goes to the cells beside
     // them, outward; the outside of the ball gains exactly what the inside held.
